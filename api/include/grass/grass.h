@@ -1,0 +1,391 @@
+/*
+ * grass.h - the stable C interface of the grass renderer.
+ *
+ * One generated grass patch is tiled over the cells of a field, each cell randomly
+ * mirrored; per-blade density thresholds against a density map thin the grass. The host
+ * owns the GPU device, the frame and the rest of the scene; this library owns grass.
+ *
+ * This header is backend-neutral: it includes no GL or Vulkan header. The calls that
+ * hand over a GL context or a Vulkan device, and that draw, are in grass_gl.h and
+ * grass_vk.h.
+ *
+ * Conventions
+ *   - C99; every type and function is prefixed grass_, every macro and enum GRASS_.
+ *   - Objects made from a context are small id structs with a generation: a stale id (its
+ *     object was destroyed), a foreign id (made by another context) or the zero id is
+ *     refused with GRASS_ERROR_INVALID_HANDLE, never dereferenced.
+ *   - Every create call takes a *_desc struct that begins with its type tag and a next
+ *     pointer (reserved for extensions; must be NULL today). Fill a desc with its
+ *     grass_default_*_desc() and change what you need. Structs only grow at the end.
+ *   - Calls that can fail return grass_result. Bad input is refused with an error, a log
+ *     message names the argument and its value, and the earlier state stays intact.
+ *   - Units: metres, seconds, radians, linear RGB. Patch geometry is in *patch units*:
+ *     the ground square of a patch is 1 x 1 and a field scales it to its cell size.
+ *
+ * Thread safety
+ *   A context is externally synchronized: calls on one context must not overlap. Separate
+ *   contexts share nothing and may be used from separate threads. The library has no
+ *   global mutable state. Allocation and log callbacks are per context and are called on
+ *   the thread that made the call that triggered them.
+ *
+ * Ownership
+ *   Pointers passed in descs are read during the call only and never kept (map pixels are
+ *   copied). Strings passed to callbacks live until the callback returns.
+ */
+#ifndef GRASS_GRASS_H
+#define GRASS_GRASS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Version ---------------------------------------------------------------------- */
+
+#define GRASS_VERSION_MAJOR 0
+#define GRASS_VERSION_MINOR 1
+#define GRASS_VERSION_PATCH 0
+/* The version this header declares. Pass it to the create-context calls: the library
+ * refuses a header whose major version differs from its own, or whose minor is newer. */
+#define GRASS_HEADER_VERSION \
+    ((uint32_t)((GRASS_VERSION_MAJOR << 22) | (GRASS_VERSION_MINOR << 12) | GRASS_VERSION_PATCH))
+
+#if defined(_WIN32) && defined(GRASS_SHARED)
+#  ifdef GRASS_BUILDING
+#    define GRASS_API __declspec(dllexport)
+#  else
+#    define GRASS_API __declspec(dllimport)
+#  endif
+#elif defined(__GNUC__)
+#  define GRASS_API __attribute__((visibility("default")))
+#else
+#  define GRASS_API
+#endif
+
+/* The version of the library that is linked (same encoding as GRASS_HEADER_VERSION). */
+GRASS_API uint32_t grass_library_version(void);
+
+/* ---- Results ---------------------------------------------------------------------- */
+
+typedef enum grass_result {
+    GRASS_SUCCESS = 0,
+    GRASS_ERROR_INVALID_ARGUMENT = -1,  /* a value is out of range, NaN, infinite or NULL */
+    GRASS_ERROR_INVALID_HANDLE = -2,    /* a stale, foreign or zero id */
+    GRASS_ERROR_WRONG_STRUCT_TYPE = -3, /* a desc whose type tag is not the one expected */
+    GRASS_ERROR_INVALID_STATE = -4,     /* a call in the wrong order (e.g. drawing outside a frame) */
+    GRASS_ERROR_OUT_OF_MEMORY = -5,     /* host or GPU memory could not be allocated */
+    GRASS_ERROR_VERSION_MISMATCH = -6,  /* the header and the library do not match */
+    GRASS_ERROR_BACKEND = -7,           /* the GPU API failed; the log says which call */
+    GRASS_ERROR_UNSUPPORTED = -8,       /* the device or the build lacks what is needed */
+    GRASS_ERROR_IN_USE = -9             /* the object is still used by another object */
+} grass_result;
+
+/* A static English name for a result code, e.g. "GRASS_ERROR_INVALID_HANDLE". */
+GRASS_API const char* grass_result_string(grass_result result);
+
+typedef uint32_t grass_bool; /* 0 = false, anything else = true */
+
+/* ---- Struct type tags ------------------------------------------------------------- */
+
+typedef enum grass_struct_type {
+    GRASS_STRUCT_TYPE_CONTEXT_DESC = 0x67720001,
+    GRASS_STRUCT_TYPE_PATCH_DESC = 0x67720002,
+    GRASS_STRUCT_TYPE_FIELD_DESC = 0x67720003,
+    GRASS_STRUCT_TYPE_MAP_DESC = 0x67720004,
+    GRASS_STRUCT_TYPE_VIEW_DESC = 0x67720005,
+    GRASS_STRUCT_TYPE_GL_DESC = 0x67720101,
+    GRASS_STRUCT_TYPE_VK_DESC = 0x67720201,
+    GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202
+} grass_struct_type;
+
+/* ---- Logging ---------------------------------------------------------------------- */
+
+typedef enum grass_log_level {
+    GRASS_LOG_ERROR = 0,   /* a call was refused or failed */
+    GRASS_LOG_WARNING = 1, /* a call succeeded but something looks wrong */
+    GRASS_LOG_INFO = 2     /* lifetime events (context, device, patch baked) */
+} grass_log_level;
+
+/* Numbered message ids: stable across versions, so hosts and tests can match them. */
+typedef enum grass_message_id {
+    GRASS_MSG_NONE = 0,
+    /* 1xx: arguments */
+    GRASS_MSG_NULL_ARGUMENT = 100,
+    GRASS_MSG_WRONG_STRUCT_TYPE = 101,
+    GRASS_MSG_NEXT_NOT_NULL = 102,
+    GRASS_MSG_NOT_FINITE = 103,       /* NaN or infinity in a number */
+    GRASS_MSG_OUT_OF_RANGE = 104,     /* a number outside its documented range */
+    GRASS_MSG_RANGE_INVERTED = 105,   /* a min greater than its max */
+    GRASS_MSG_ZERO_CELLS = 106,
+    GRASS_MSG_BAD_TRANSFORM = 107,    /* a matrix that is not rigid + uniform scale, or NaN */
+    GRASS_MSG_BAD_MAP = 108,          /* a design map of bad size, pitch or format */
+    GRASS_MSG_BAD_ENUM = 109,
+    GRASS_MSG_ZERO_VECTOR = 110,
+    /* 2xx: handles and lifetime */
+    GRASS_MSG_STALE_HANDLE = 200,
+    GRASS_MSG_FOREIGN_HANDLE = 201,
+    GRASS_MSG_NULL_HANDLE = 202,
+    GRASS_MSG_PATCH_IN_USE = 203,
+    GRASS_MSG_TOO_MANY_OBJECTS = 204,
+    /* 3xx: call order */
+    GRASS_MSG_FRAME_NOT_BEGUN = 300,
+    GRASS_MSG_FRAME_ALREADY_BEGUN = 301,
+    GRASS_MSG_WRONG_BACKEND = 302,
+    GRASS_MSG_UPLOAD_NOT_RECORDED = 303,
+    /* 4xx: version and environment */
+    GRASS_MSG_VERSION_MISMATCH = 400,
+    GRASS_MSG_DEVICE_UNSUPPORTED = 401,
+    GRASS_MSG_BACKEND_CALL_FAILED = 402,
+    GRASS_MSG_OUT_OF_MEMORY = 403,
+    /* 5xx: information */
+    GRASS_MSG_CONTEXT_CREATED = 500,
+    GRASS_MSG_PATCH_GENERATED = 501
+} grass_message_id;
+
+/* Called for every message the context emits. `message` is one English sentence that
+ * names the call, the argument and the value. */
+typedef void (*grass_log_fn)(void* user_data, grass_log_level level, grass_message_id id,
+                             const char* message);
+
+/* ---- Allocation ------------------------------------------------------------------- */
+
+/* Host-memory hooks. All three are set or all are NULL (then malloc/free are used).
+ * `alignment` is a power of two no larger than 64. free_fn receives NULL never. */
+typedef struct grass_allocator {
+    void* (*alloc_fn)(void* user_data, size_t size, size_t alignment);
+    void (*free_fn)(void* user_data, void* ptr);
+    void* user_data;
+} grass_allocator;
+
+/* ---- Context ---------------------------------------------------------------------- */
+
+typedef struct grass_context grass_context; /* opaque */
+
+typedef enum grass_depth_mode {
+    GRASS_DEPTH_LESS = 0,    /* depth 0 is near: classic, the default */
+    GRASS_DEPTH_GREATER = 1  /* depth 1 is near: reversed-Z hosts */
+} grass_depth_mode;
+
+typedef struct grass_context_desc {
+    grass_struct_type type;     /* GRASS_STRUCT_TYPE_CONTEXT_DESC */
+    const void* next;           /* NULL */
+    grass_allocator allocator;  /* default: all NULL = malloc/free */
+    grass_log_fn log_fn;        /* default NULL: messages are dropped */
+    void* log_user_data;
+    grass_log_level log_level;  /* highest level passed to log_fn; default GRASS_LOG_WARNING */
+    grass_depth_mode depth_mode; /* the host's depth convention; default GRASS_DEPTH_LESS */
+} grass_context_desc;
+
+GRASS_API grass_context_desc grass_default_context_desc(void);
+
+/* A context with no GPU backend: it generates patches, plans frames and reports stats,
+ * and draws nothing. For tools, tests and servers. The GPU contexts are made by
+ * grass_gl_create_context() and grass_vk_create_context(). */
+GRASS_API grass_result grass_create_context(uint32_t header_version, const grass_context_desc* desc,
+                                            grass_context** out_context);
+
+/* Destroys every object of the context and the context. NULL is accepted. For a GPU
+ * context the host's device must be idle with respect to grass work (Vulkan) or its GL
+ * context current (GL). */
+GRASS_API void grass_destroy_context(grass_context* context);
+
+typedef enum grass_backend {
+    GRASS_BACKEND_NONE = 0,
+    GRASS_BACKEND_GL = 1,
+    GRASS_BACKEND_VULKAN = 2
+} grass_backend;
+
+GRASS_API grass_backend grass_context_backend(const grass_context* context);
+
+/* The message of the last error this context reported, or "" if none. Valid until the
+ * next call on the context. */
+GRASS_API const char* grass_last_error(const grass_context* context);
+
+typedef struct grass_memory_stats {
+    uint64_t host_bytes;       /* host memory the context holds now, through its allocator */
+    uint64_t host_allocations; /* live host allocations */
+    uint64_t gpu_bytes;        /* GPU memory the backend holds (buffers + textures) */
+} grass_memory_stats;
+
+GRASS_API grass_result grass_get_memory_stats(const grass_context* context, grass_memory_stats* out_stats);
+
+/* ---- Handles ---------------------------------------------------------------------- */
+
+/* A zero-initialised id is the null id. Compare ids with grass_*_id_equal(). */
+typedef struct grass_patch_id {
+    uint32_t index;      /* slot + 1; 0 = null */
+    uint16_t generation; /* bumped when the slot is reused */
+    uint16_t owner;      /* tag of the context that made it */
+} grass_patch_id;
+
+typedef struct grass_field_id {
+    uint32_t index;
+    uint16_t generation;
+    uint16_t owner;
+} grass_field_id;
+
+/* ---- Patch: a grass type ---------------------------------------------------------- */
+
+typedef enum grass_threshold_mode {
+    /* Density thresholds spread at random over the patch: thinning keeps isolated blades. */
+    GRASS_THRESHOLD_UNIFORM = 0,
+    /* Thresholds follow equalised Perlin noise plus a Gaussian of width cluster_sigma
+     * (lemme2012 4.1.3): thin grass grows in clumps. */
+    GRASS_THRESHOLD_CLUSTERED = 1
+} grass_threshold_mode;
+
+/* One grass type. The generated blades are rooted on the unit ground square of the
+ * patch; tips may reach outside it. All lengths are in patch units (cell edge = 1).
+ * Every min/max pair must satisfy 0 <= min <= max. */
+typedef struct grass_patch_desc {
+    grass_struct_type type;     /* GRASS_STRUCT_TYPE_PATCH_DESC */
+    const void* next;           /* NULL */
+    uint32_t blade_count;       /* blades per patch, 1..65536; default 384 */
+    uint32_t subdivisions;      /* quads along a blade, 1..32; default 4 */
+    float length_min, length_max; /* blade arc length; default 0.45 .. 0.85 */
+    float width_min, width_max;   /* blade width at the root; default 0.018 .. 0.032 */
+    float tilt_min, tilt_max;     /* radians from vertical at the root, 0..1.5; default 0.05 .. 0.55 */
+    float bend_min, bend_max;     /* gravity pull on the trajectory, relative to length, 0..2; default 0.2 .. 0.7 */
+    float root_color[3];          /* linear RGB at the root; default (0.05, 0.12, 0.02) */
+    float tip_color[3];           /* linear RGB at the tip; default (0.28, 0.45, 0.09) */
+    float blade_color_variation;  /* 0..1: per-blade darkening and hue shift; default 0.35 */
+    float vertex_color_variation; /* 0..1: per-vertex modulation; default 0.08 */
+    grass_threshold_mode threshold_mode; /* default GRASS_THRESHOLD_CLUSTERED */
+    float cluster_sigma;          /* clustered mode: Gaussian width, 0..1; default 0.12 */
+    uint32_t cluster_frequency;   /* clustered mode: noise periods per patch, 1..64; default 3 */
+    float ao_impact;              /* B_impact of lemme eq. 6.11, 0..1; default 0.65 */
+    float ao_height;              /* B_height of eq. 6.11 in patch units, > 0; default 0.55 */
+    uint64_t seed;                /* default 1; the same desc and seed give identical blades */
+} grass_patch_desc;
+
+GRASS_API grass_patch_desc grass_default_patch_desc(void);
+
+/* Generates the patch. GPU contexts upload it at once (GL: the host's GL context must be
+ * current; Vulkan: it is copied to the device by the next grass_vk_prepare_frame()). */
+GRASS_API grass_result grass_create_patch(grass_context* context, const grass_patch_desc* desc,
+                                          grass_patch_id* out_patch);
+
+/* Fails with GRASS_ERROR_IN_USE while a field uses the patch. */
+GRASS_API grass_result grass_destroy_patch(grass_context* context, grass_patch_id patch);
+
+typedef struct grass_patch_info {
+    uint32_t blade_count;
+    uint32_t vertex_count;
+    uint32_t triangle_count;   /* per patch instance, all blades drawn */
+    float bounds_min[3];       /* patch units; tips may leave the unit square */
+    float bounds_max[3];
+    uint64_t content_hash;     /* FNV-1a 64 of the generated blade data: pins determinism */
+} grass_patch_info;
+
+GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_patch_id patch,
+                                            grass_patch_info* out_info);
+
+/* Reads the generated per-blade density thresholds, in blade order (for tools and tests).
+ * `capacity` is the number of floats `out_thresholds` holds; at least blade_count. */
+GRASS_API grass_result grass_get_patch_thresholds(const grass_context* context, grass_patch_id patch,
+                                                  float* out_thresholds, uint32_t capacity);
+
+/* ---- Design maps ------------------------------------------------------------------ */
+
+typedef enum grass_map_format {
+    GRASS_MAP_FORMAT_R8_UNORM = 1,  /* uint8, 0..255 -> 0..1 */
+    GRASS_MAP_FORMAT_R16_UNORM = 2, /* uint16, 0..65535 -> 0..1 */
+    GRASS_MAP_FORMAT_R32_FLOAT = 3  /* float, finite, 0..1 for density */
+} grass_map_format;
+
+/* A single-channel image in host memory, copied at creation. The map spans the whole
+ * field: texel centres are spread over the cells, (0,0) at the field's cell (0,0) corner,
+ * sampled bilinearly with edge clamping. */
+typedef struct grass_map_desc {
+    grass_struct_type type;  /* GRASS_STRUCT_TYPE_MAP_DESC */
+    const void* next;        /* NULL */
+    const void* pixels;      /* row 0 first; rows run along +z, texels along +x */
+    uint32_t width, height;  /* 1..16384 */
+    uint32_t row_pitch;      /* bytes between rows; 0 = tightly packed */
+    grass_map_format format;
+} grass_map_desc;
+
+GRASS_API grass_map_desc grass_default_map_desc(void);
+
+/* ---- Field: a grid of cells covered by one patch ---------------------------------- */
+
+/* Field space: cell (i, j) covers [i, i+1] x [j, j+1] cell edges along x and z, y up.
+ * base_transform maps field space scaled by cell_size (metres) to world space. */
+typedef struct grass_field_desc {
+    grass_struct_type type;      /* GRASS_STRUCT_TYPE_FIELD_DESC */
+    const void* next;            /* NULL */
+    grass_patch_id patch;        /* required */
+    uint32_t cells_x, cells_z;   /* 1 .. 2^30 each; no default (0 is refused) */
+    double cell_size;            /* metres per cell edge, 1e-4 .. 1e4; default 0.25 */
+    double base_transform[16];   /* column-major, rotation + translation only; default identity */
+    float density;               /* uniform density 0..1 where no map is given, or the map's
+                                    multiplier; default 1 */
+    const grass_map_desc* density_map; /* optional, NULL = uniform density */
+    grass_bool mirror_tiling;    /* mirror each cell along x and/or z at random; default 1 */
+    uint32_t mirror_seed;        /* selects the mirror pattern; default 0 */
+    float draw_distance;         /* metres from the camera to the farthest drawn cell, > 0;
+                                    default 20 */
+} grass_field_desc;
+
+GRASS_API grass_field_desc grass_default_field_desc(void);
+
+GRASS_API grass_result grass_create_field(grass_context* context, const grass_field_desc* desc,
+                                          grass_field_id* out_field);
+GRASS_API grass_result grass_destroy_field(grass_context* context, grass_field_id field);
+
+/* ---- Frames ----------------------------------------------------------------------- */
+
+typedef enum grass_view_flags {
+    GRASS_VIEW_FLAG_NONE = 0,
+    /* Debugging: draw without the depth test (grass is drawn over the host's scene). */
+    GRASS_VIEW_FLAG_NO_DEPTH_TEST = 1u << 0
+} grass_view_flags;
+
+/* The camera and lights of one frame. */
+typedef struct grass_view_desc {
+    grass_struct_type type;      /* GRASS_STRUCT_TYPE_VIEW_DESC */
+    const void* next;            /* NULL */
+    double camera_position[3];   /* world space, metres */
+    /* World-to-eye matrix, column-major. Only its rotation is used: translation comes
+     * from camera_position, so a host may pass a view built at the origin. */
+    float view[16];
+    /* Eye-to-clip matrix, column-major, exactly as the host uses it for its own scene
+     * (GL: z in -1..1; Vulkan: z in 0..1 and y down). */
+    float projection[16];
+    int32_t viewport[4];         /* x, y, width, height in pixels; width and height > 0 */
+    float sun_direction[3];      /* world-space direction towards the sun; not zero;
+                                    default (0.35, 0.8, 0.25) */
+    float sun_color[3];          /* linear RGB irradiance; default (1.0, 0.95, 0.85) */
+    float ambient_color[3];      /* linear RGB; default (0.30, 0.36, 0.45) */
+    double time;                 /* seconds; reserved for wind, default 0 */
+    uint32_t flags;              /* grass_view_flags; default 0 */
+} grass_view_desc;
+
+GRASS_API grass_view_desc grass_default_view_desc(void);
+
+/* Starts a frame: validates the view and plans what every field draws. Then draw with
+ * grass_gl_render() or grass_vk_record(), and close with grass_end_frame(). */
+GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_view_desc* view);
+GRASS_API grass_result grass_end_frame(grass_context* context);
+
+typedef struct grass_frame_stats {
+    uint64_t fields_drawn;
+    uint64_t cells_considered;   /* cells tested against the draw distance and frustum */
+    uint64_t cells_drawn;        /* patch instances drawn */
+    uint64_t blades_submitted;   /* cells_drawn x blades per patch */
+    uint64_t blades_drawn;       /* blades whose threshold passes the density at their cell's
+                                    centre: exact without a map, an estimate with one */
+    uint64_t triangles;          /* triangles of the drawn blades */
+    double plan_ms;              /* CPU time of the frame plan */
+} grass_frame_stats;
+
+/* Stats of the last begun frame. */
+GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass_frame_stats* out_stats);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* GRASS_GRASS_H */

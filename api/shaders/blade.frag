@@ -1,0 +1,28 @@
+#version 450
+// Blade tier: two-sided Lambert + ambient with blade ambient occlusion; the blade's edges
+// give alpha for alpha-to-coverage when the host's target is multisampled.
+#include "blade_interface.glsl"
+#include "lighting.glsl"
+
+layout(location = 0) in vec3 v_position;
+layout(location = 1) in vec3 v_normal;
+layout(location = 2) in vec3 v_albedo;
+layout(location = 3) in vec2 v_shape;
+layout(location = 4) in float v_density;
+
+layout(location = 0) out vec4 out_color;
+
+void main() {
+    vec3 n = normalize(v_normal);
+    vec3 to_camera = -v_position;
+    if (dot(n, to_camera) < 0.0) n = -n; // two-sided: light the side that faces the camera
+
+    float ao = blade_ambient_occlusion(v_density, v_shape.y, field.blade_params.x, field.blade_params.y);
+    vec3 color = grass_lighting(v_albedo, n, ao);
+
+    // Distance to the nearest blade edge in pixels -> coverage. Without multisampling the
+    // alpha is ignored (no blending); with alpha-to-coverage it antialiases the edges.
+    float edge = 0.5 - abs(v_shape.x - 0.5);
+    float alpha = clamp(edge / max(fwidth(v_shape.x), 1e-6) + 0.5, 0.0, 1.0);
+    out_color = vec4(color, alpha);
+}

@@ -1,0 +1,50 @@
+#version 450
+// Blade tier (lemme2012 5.1): instanced patch geometry, one instance per planned cell.
+#include "blade_interface.glsl"
+#include "lighting.glsl"
+
+layout(location = 0) in vec3 a_position;     // patch units
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec4 a_root_shape;   // root x, root z, u across, v along
+layout(location = 3) in vec4 a_color;        // unorm8 modulation, linear
+layout(location = 4) in float a_threshold;   // density threshold in (0, 1]
+layout(location = 5) in vec4 i_origin_mirror; // cell corner relative to the camera (m), mirror bits
+layout(location = 6) in vec4 i_map;           // xy: cell corner in density-map uv
+
+layout(location = 0) out vec3 v_position;    // camera-relative world position
+layout(location = 1) out vec3 v_normal;
+layout(location = 2) out vec3 v_albedo;
+layout(location = 3) out vec2 v_shape;       // x: u across the blade, y: height in patch units
+layout(location = 4) out float v_density;
+
+// A threshold of exactly 1 must pass a density of exactly 1 after bilinear filtering;
+// the smallest threshold (1 / 65536) must still fail a density of 0.
+const float kThresholdEpsilon = 1.0 / 1048576.0;
+
+void main() {
+    // Mirrored aperiodic tiling (eq. 6.7): mirror about the cell centre; roots stay inside.
+    vec2 s = mirror_signs(i_origin_mirror.w);
+    vec3 p = a_position;
+    p.xz = (p.xz - 0.5) * s + 0.5;
+    vec2 root = (a_root_shape.xy - 0.5) * s + 0.5;
+    vec3 n = a_normal;
+    n.xz *= s;
+
+    // Density thresholds (lemme 3.3): a blade whose threshold exceeds the local density at
+    // its root is not drawn. Looked up at the root so that the whole blade agrees.
+    float density = field.map_params.z;
+    if (field.map_params.w > 0.5) {
+        density *= textureLod(density_map, i_map.xy + root * field.map_params.xy, 0.0).r;
+    }
+
+    vec3 position = mat3(field.patch_to_world) * p + i_origin_mirror.xyz;
+    v_position = position;
+    v_normal = mat3(field.patch_to_world) * n;
+    v_albedo = a_color.rgb;
+    v_shape = vec2(a_root_shape.z, p.y);
+    v_density = density;
+    gl_Position = frame.view_projection * vec4(position, 1.0);
+    if (a_threshold > density + kThresholdEpsilon) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // outside the clip volume: the blade is culled
+    }
+}

@@ -1,0 +1,23 @@
+// The lighting of every tier (lemme2012 6.4.3): Lambert plus ambient, with the ambient
+// occlusion of neighbouring blades (eq. 6.9-6.11). One function, so a cell's colour does
+// not change when it changes tier.
+
+// AO_blade = 1 - B_impact * density * smoothstep(B_height, 0, P_y)   (eq. 6.11)
+// GLSL leaves smoothstep undefined for edge0 >= edge1, so the falling edge is written as
+// 1 - smoothstep(0, B_height, P_y).
+float blade_ambient_occlusion(float density, float height_over_ground, float impact, float ao_height) {
+    return 1.0 - impact * density * (1.0 - smoothstep(0.0, ao_height, height_over_ground));
+}
+
+// light = I_ambient * AO * albedo + I_diffuse * albedo * max(0, N.L)   (eq. 6.9)
+// `n` is the normal of the side that faces the camera (two-sided material).
+vec3 grass_lighting(vec3 albedo, vec3 n, float ambient_occlusion) {
+    float n_dot_l = max(dot(n, frame.sun_direction.xyz), 0.0);
+    return albedo * (frame.ambient_color.rgb * ambient_occlusion + frame.sun_color.rgb * n_dot_l);
+}
+
+// The mirror signs of a cell (lemme eq. 6.4): bit 0 mirrors x, bit 1 mirrors z.
+vec2 mirror_signs(float bits) {
+    uint b = uint(bits + 0.5);
+    return vec2((b & 1u) != 0u ? -1.0 : 1.0, (b & 2u) != 0u ? -1.0 : 1.0);
+}

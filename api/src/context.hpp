@@ -1,0 +1,94 @@
+// The context: the root object behind the opaque grass_context pointer. Internal header,
+// shared by the core and the backends (which never see each other).
+#pragma once
+
+#include "allocator.hpp"
+#include "backend.hpp"
+#include "frame_plan.hpp"
+#include "handle_pool.hpp"
+#include "patch_data.hpp"
+
+#include <grass/grass.h>
+
+#include <cstdarg>
+#include <cstdint>
+
+namespace grass {
+
+struct Patch {
+    explicit Patch(HostAllocator* host) : data(host) {}
+    PatchData data;
+    grass_patch_desc desc{};
+    uint32_t field_users = 0; // fields that use this patch
+};
+
+struct Field {
+    explicit Field(HostAllocator* host) : density_texels(StlAllocator<uint16_t>(host)) {}
+    grass_field_desc desc{};          // pointers in it are cleared; maps are copied below
+    uint32_t patch_slot = 0;
+    Vector<uint16_t> density_texels;  // empty: uniform density
+    uint32_t density_width = 0;
+    uint32_t density_height = 0;
+    double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}; // base transform's rotation, column-major
+    double translation[3] = {0, 0, 0};
+};
+
+// Creates the backend of a new context; the context's allocator and log are ready.
+using BackendFactory = grass_result (*)(grass_context* context, void* user_data, Backend** out_backend);
+
+} // namespace grass
+
+struct grass_context {
+    grass_context(const grass_context_desc& desc, uint16_t owner_tag);
+    ~grass_context();
+
+    grass::HostAllocator host;
+    grass_context_desc desc;
+    uint16_t owner;
+    grass::Backend* backend = nullptr;
+    grass::HandlePool<grass::Patch> patches;
+    grass::HandlePool<grass::Field> fields;
+    grass::FramePlan plan;
+    bool in_frame = false;
+    uint64_t frame_number = 0;
+    char last_error[512] = {0};
+
+    // Logs `message` (printf format) at error level with `id`, keeps it as the last error,
+    // and returns `result`: `return ctx->fail(GRASS_ERROR_..., GRASS_MSG_..., "...", ...);`
+    grass_result fail(grass_result result, grass_message_id id, const char* format, ...)
+#if defined(__GNUC__)
+        __attribute__((format(printf, 4, 5)))
+#endif
+        ;
+    void warn(grass_message_id id, const char* format, ...)
+#if defined(__GNUC__)
+        __attribute__((format(printf, 3, 4)))
+#endif
+        ;
+    void info(grass_message_id id, const char* format, ...)
+#if defined(__GNUC__)
+        __attribute__((format(printf, 3, 4)))
+#endif
+        ;
+
+private:
+    void emit(grass_log_level level, grass_message_id id, const char* format, va_list args);
+};
+
+namespace grass {
+
+// Makes a context with the backend `factory` creates (used by grass_create_context,
+// grass_gl_create_context and grass_vk_create_context). `function` names the public call
+// for messages. On failure *out_context stays untouched and nothing leaks.
+grass_result create_context(const char* function, uint32_t header_version, const grass_context_desc* desc,
+                            BackendFactory factory, void* factory_user_data, grass_context** out_context);
+void destroy_context(grass_context* context);
+
+// Runs `body` and turns C++ exceptions into result codes (std::bad_alloc into
+// GRASS_ERROR_OUT_OF_MEMORY), so that no exception crosses the C boundary.
+template <class Body>
+grass_result guarded(grass_context* ctx, const char* function, Body&& body) noexcept;
+
+} // namespace grass
+
+#include "context_guard.inl"

@@ -1,0 +1,32 @@
+# Script mode: cmake -DINPUTS="a.vert;b.frag" -DINCLUDE_DIR=dir -DOUTPUT=out.cpp -DNAMESPACE=ns -P EmbedGlsl.cmake
+# Writes each shader as a C++ string with its #include lines inlined (the GL driver has
+# no include support), as `extern const char* const ns::<name>` (blade.vert -> blade_vert).
+
+function(inline_includes path out_var depth)
+  if(depth GREATER 8)
+    message(FATAL_ERROR "EmbedGlsl: includes nested too deep in ${path}")
+  endif()
+  file(STRINGS "${path}" lines)
+  set(result "")
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^[ \t]*#[ \t]*include[ \t]+\"([^\"]+)\"")
+      math(EXPR next "${depth} + 1")
+      inline_includes("${INCLUDE_DIR}/${CMAKE_MATCH_1}" included ${next})
+      string(APPEND result "${included}")
+    else()
+      string(APPEND result "${line}\n")
+    endif()
+  endforeach()
+  set(${out_var} "${result}" PARENT_SCOPE)
+endfunction()
+
+set(body "// Generated from api/shaders by cmake/EmbedGlsl.cmake. Do not edit.\nnamespace ${NAMESPACE} {\n")
+foreach(input IN LISTS INPUTS)
+  get_filename_component(name "${input}" NAME)
+  string(REPLACE "." "_" name "${name}")
+  inline_includes("${input}" source 0)
+  string(APPEND body "extern const char* const ${name};\nconst char* const ${name} = R\"glsl(${source})glsl\";\n")
+endforeach()
+string(APPEND body "} // namespace ${NAMESPACE}\n")
+file(WRITE "${OUTPUT}.tmp" "${body}")
+execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different "${OUTPUT}.tmp" "${OUTPUT}")

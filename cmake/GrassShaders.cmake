@@ -1,0 +1,44 @@
+# The shaders live once in api/shaders. The GL backend embeds their source (compiled by
+# the driver at run time); the Vulkan backend embeds SPIR-V compiled at build time by glslc.
+
+set(GRASS_SHADER_DIR "${PROJECT_SOURCE_DIR}/api/shaders")
+file(GLOB GRASS_SHADER_INCLUDES CONFIGURE_DEPENDS "${GRASS_SHADER_DIR}/*.glsl")
+
+# grass_embed_glsl(<out_cpp> <namespace> <shader>...): shader source strings for GL.
+function(grass_embed_glsl out_cpp namespace)
+  set(inputs "")
+  foreach(s IN LISTS ARGN)
+    list(APPEND inputs "${GRASS_SHADER_DIR}/${s}")
+  endforeach()
+  string(REPLACE ";" "\\;" inputs_arg "${inputs}")
+  add_custom_command(
+    OUTPUT "${out_cpp}"
+    COMMAND ${CMAKE_COMMAND} "-DINPUTS=${inputs_arg}" "-DINCLUDE_DIR=${GRASS_SHADER_DIR}"
+            "-DOUTPUT=${out_cpp}" "-DNAMESPACE=${namespace}" -P "${PROJECT_SOURCE_DIR}/cmake/EmbedGlsl.cmake"
+    DEPENDS ${inputs} ${GRASS_SHADER_INCLUDES} "${PROJECT_SOURCE_DIR}/cmake/EmbedGlsl.cmake"
+    COMMENT "Embedding GLSL for the GL backend"
+    VERBATIM)
+endfunction()
+
+# grass_compile_spirv(<out_cpp_list_var> <namespace> <shader>...): SPIR-V word arrays.
+function(grass_compile_spirv out_var namespace)
+  find_program(GRASS_GLSLC glslc REQUIRED)
+  set(outputs "")
+  foreach(s IN LISTS ARGN)
+    string(REPLACE "." "_" name "${s}")
+    set(inc "${CMAKE_CURRENT_BINARY_DIR}/spirv/${s}.inc")
+    set(cpp "${CMAKE_CURRENT_BINARY_DIR}/spirv/${name}.cpp")
+    add_custom_command(
+      OUTPUT "${cpp}"
+      COMMAND ${CMAKE_COMMAND} -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/spirv"
+      COMMAND ${GRASS_GLSLC} --target-env=vulkan1.1 -Werror -O -mfmt=c -I "${GRASS_SHADER_DIR}"
+              -o "${inc}" "${GRASS_SHADER_DIR}/${s}"
+      COMMAND ${CMAKE_COMMAND} "-DINPUT=${inc}" "-DNAME=${name}" "-DOUTPUT=${cpp}" "-DNAMESPACE=${namespace}"
+              -P "${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake"
+      DEPENDS "${GRASS_SHADER_DIR}/${s}" ${GRASS_SHADER_INCLUDES} "${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake"
+      COMMENT "Compiling ${s} to SPIR-V"
+      VERBATIM)
+    list(APPEND outputs "${cpp}")
+  endforeach()
+  set(${out_var} "${outputs}" PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,188 @@
+#include "scene.hpp"
+
+#include <nlohmann/json.hpp>
+#include <png.h>
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace grass_render {
+
+Scene demo_scene() {
+    Scene s;
+    s.field.cells_x = 48;
+    s.field.cells_z = 48;
+    s.field.cell_size = 0.25;
+    s.field.base_transform[12] = -6.0; // centre the 12 m field on the origin
+    s.field.base_transform[14] = -6.0;
+    s.field.draw_distance = 14.0f;
+    // A winding path where the grass thins out, to show the density thresholds.
+    s.density_width = 96;
+    s.density_height = 96;
+    s.density_texels.resize(size_t(s.density_width) * s.density_height);
+    for (uint32_t z = 0; z < s.density_height; ++z) {
+        for (uint32_t x = 0; x < s.density_width; ++x) {
+            const double u = (x + 0.5) / s.density_width, v = (z + 0.5) / s.density_height;
+            const double centre = 0.5 + 0.18 * std::sin(v * 7.0);
+            const double d = std::fabs(u - centre) / 0.05;
+            const double density = 0.12 + 0.88 * std::min(1.0, d * d);
+            s.density_texels[size_t(z) * s.density_width + x] = static_cast<uint8_t>(std::lround(density * 255.0));
+        }
+    }
+    return s;
+}
+
+namespace {
+
+using nlohmann::json;
+
+template <class T>
+void read(const json& j, const char* key, T* out) {
+    if (j.contains(key)) *out = j.at(key).get<T>();
+}
+void read3(const json& j, const char* key, float out[3]) {
+    if (!j.contains(key)) return;
+    const auto v = j.at(key).get<std::vector<float>>();
+    if (v.size() != 3) throw std::runtime_error(std::string("\"") + key + "\" must have 3 numbers");
+    for (int k = 0; k < 3; ++k) out[k] = v[k];
+}
+void read3(const json& j, const char* key, double out[3]) {
+    if (!j.contains(key)) return;
+    const auto v = j.at(key).get<std::vector<double>>();
+    if (v.size() != 3) throw std::runtime_error(std::string("\"") + key + "\" must have 3 numbers");
+    for (int k = 0; k < 3; ++k) out[k] = v[k];
+}
+void check_keys(const json& j, const char* where, std::initializer_list<const char*> allowed) {
+    for (auto it = j.begin(); it != j.end(); ++it) {
+        bool known = false;
+        for (const char* a : allowed) known = known || it.key() == a;
+        if (!known) throw std::runtime_error(std::string("unknown key \"") + it.key() + "\" in " + where);
+    }
+}
+
+void load_density_png(const std::string& path, Scene* s) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&png, path.c_str())) throw std::runtime_error("cannot read " + path + ": " + png.message);
+    png.format = PNG_FORMAT_GRAY;
+    s->density_texels.resize(PNG_IMAGE_SIZE(png));
+    if (!png_image_finish_read(&png, nullptr, s->density_texels.data(), 0, nullptr)) {
+        throw std::runtime_error("cannot decode " + path + ": " + png.message);
+    }
+    s->density_width = png.width;
+    s->density_height = png.height;
+}
+
+} // namespace
+
+bool load_scene(const std::string& path, Scene* s, std::string* error) {
+    try {
+        std::ifstream in(path);
+        if (!in) throw std::runtime_error("cannot open " + path);
+        const json j = json::parse(in, nullptr, true, true);
+        check_keys(j, "the scene", {"patch", "field", "camera", "light", "image"});
+        if (j.contains("patch")) {
+            const json& p = j["patch"];
+            check_keys(p, "\"patch\"", {"blade_count", "subdivisions", "length", "width", "tilt", "bend", "root_color",
+                                        "tip_color", "blade_color_variation", "vertex_color_variation", "threshold_mode",
+                                        "cluster_sigma", "cluster_frequency", "ao_impact", "ao_height", "seed"});
+            auto& d = s->patch;
+            read(p, "blade_count", &d.blade_count);
+            read(p, "subdivisions", &d.subdivisions);
+            auto range = [&](const char* key, float* lo, float* hi) {
+                if (!p.contains(key)) return;
+                const auto v = p.at(key).get<std::vector<float>>();
+                if (v.size() != 2) throw std::runtime_error(std::string("\"patch.") + key + "\" must be [min, max]");
+                *lo = v[0];
+                *hi = v[1];
+            };
+            range("length", &d.length_min, &d.length_max);
+            range("width", &d.width_min, &d.width_max);
+            range("tilt", &d.tilt_min, &d.tilt_max);
+            range("bend", &d.bend_min, &d.bend_max);
+            read3(p, "root_color", d.root_color);
+            read3(p, "tip_color", d.tip_color);
+            read(p, "blade_color_variation", &d.blade_color_variation);
+            read(p, "vertex_color_variation", &d.vertex_color_variation);
+            if (p.contains("threshold_mode")) {
+                const auto mode = p["threshold_mode"].get<std::string>();
+                if (mode == "uniform") d.threshold_mode = GRASS_THRESHOLD_UNIFORM;
+                else if (mode == "clustered") d.threshold_mode = GRASS_THRESHOLD_CLUSTERED;
+                else throw std::runtime_error("\"patch.threshold_mode\" must be \"uniform\" or \"clustered\", not \"" + mode + "\"");
+            }
+            read(p, "cluster_sigma", &d.cluster_sigma);
+            read(p, "cluster_frequency", &d.cluster_frequency);
+            read(p, "ao_impact", &d.ao_impact);
+            read(p, "ao_height", &d.ao_height);
+            read(p, "seed", &d.seed);
+        }
+        if (j.contains("field")) {
+            const json& f = j["field"];
+            check_keys(f, "\"field\"", {"cells", "cell_size", "origin", "density", "density_map", "mirror_tiling",
+                                        "mirror_seed", "draw_distance"});
+            auto& d = s->field;
+            if (f.contains("cells")) {
+                const auto v = f["cells"].get<std::vector<uint32_t>>();
+                if (v.size() != 2) throw std::runtime_error("\"field.cells\" must be [cells_x, cells_z]");
+                d.cells_x = v[0];
+                d.cells_z = v[1];
+            }
+            read(f, "cell_size", &d.cell_size);
+            if (f.contains("origin")) {
+                double o[3];
+                read3(f, "origin", o);
+                d.base_transform[12] = o[0];
+                d.base_transform[13] = o[1];
+                d.base_transform[14] = o[2];
+            }
+            read(f, "density", &d.density);
+            if (f.contains("density_map")) {
+                const auto& m = f["density_map"];
+                if (m.is_null()) {
+                    s->density_texels.clear();
+                    s->density_width = s->density_height = 0;
+                } else {
+                    std::string file = m.get<std::string>();
+                    if (!file.empty() && file[0] != '/') {
+                        const auto slash = path.find_last_of('/');
+                        if (slash != std::string::npos) file = path.substr(0, slash + 1) + file;
+                    }
+                    load_density_png(file, s);
+                }
+            }
+            bool mirror = d.mirror_tiling != 0;
+            read(f, "mirror_tiling", &mirror);
+            d.mirror_tiling = mirror ? 1u : 0u;
+            read(f, "mirror_seed", &d.mirror_seed);
+            read(f, "draw_distance", &d.draw_distance);
+        }
+        if (j.contains("camera")) {
+            const json& c = j["camera"];
+            check_keys(c, "\"camera\"", {"position", "target", "fov"});
+            read3(c, "position", s->eye);
+            read3(c, "target", s->target);
+            read(c, "fov", &s->fov_degrees);
+        }
+        if (j.contains("light")) {
+            const json& l = j["light"];
+            check_keys(l, "\"light\"", {"sun_direction", "sun_color", "ambient_color"});
+            read3(l, "sun_direction", s->sun_direction);
+            read3(l, "sun_color", s->sun_color);
+            read3(l, "ambient_color", s->ambient_color);
+        }
+        if (j.contains("image")) {
+            const json& im = j["image"];
+            check_keys(im, "\"image\"", {"width", "height", "samples"});
+            read(im, "width", &s->width);
+            read(im, "height", &s->height);
+            read(im, "samples", &s->samples);
+        }
+    } catch (const std::exception& e) {
+        if (error) *error = path + ": " + e.what();
+        return false;
+    }
+    return true;
+}
+
+} // namespace grass_render

@@ -1,0 +1,35 @@
+// A scene for grass-render: one patch, one field, a camera and the sun. The built-in demo
+// or a small JSON file (see docs/scene-format.md).
+#pragma once
+
+#include <grass/grass.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace grass_render {
+
+struct Scene {
+    grass_patch_desc patch = grass_default_patch_desc();
+    grass_field_desc field = grass_default_field_desc();
+    // Density map texels (R8), empty for uniform density.
+    std::vector<uint8_t> density_texels;
+    uint32_t density_width = 0, density_height = 0;
+    double eye[3] = {0.0, 1.2, -6.0};
+    double target[3] = {0.0, 0.0, 0.0};
+    float fov_degrees = 55.0f;
+    float sun_direction[3] = {0.35f, 0.8f, 0.25f};
+    float sun_color[3] = {1.0f, 0.95f, 0.85f};
+    float ambient_color[3] = {0.30f, 0.36f, 0.45f};
+    uint32_t width = 640, height = 360, samples = 4;
+};
+
+// The demo: a 12 m x 12 m lawn of 0.25 m cells centred on the origin, clustered blades,
+// a winding path of thin grass in the density map, seen from 1.2 m.
+Scene demo_scene();
+
+// Reads a scene file over the demo's defaults. False and *error on a bad file or key.
+bool load_scene(const std::string& path, Scene* scene, std::string* error);
+
+} // namespace grass_render

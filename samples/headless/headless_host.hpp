@@ -1,0 +1,81 @@
+// A minimal headless host: what an engine does around grass, without a window. It owns
+// the device (EGL/OSMesa GL 4.5 context or a lavapipe Vulkan device with the validation
+// layers on), an offscreen colour + depth target, and the frame. Used by grass-render and
+// by the rendering tests. It talks to grass only through the public C headers.
+#pragma once
+
+#include <grass/grass.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace grass_host {
+
+struct TargetDesc {
+    uint32_t width = 256;
+    uint32_t height = 256;
+    uint32_t samples = 1;                          // 1 or 4 (multisampled target, resolved for read-back)
+    float clear_color[4] = {0.55f, 0.70f, 0.90f, 1.0f}; // linear RGB sky
+    bool vk_dynamic_rendering = false;             // Vulkan: dynamic rendering instead of a render pass
+};
+
+// An opaque camera-facing rectangle the host draws into its own colour and depth before
+// grass draws: a box face `distance` metres in front of the camera. Pixel rectangle with
+// the origin at the top-left of the image, x1/y1 exclusive.
+struct Occluder {
+    int32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    float distance = 1.0f;                          // metres along the view axis
+    float color[3] = {0.8f, 0.1f, 0.1f};            // linear RGB
+};
+
+struct Image {
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba;                      // sRGB-encoded RGBA8, top row first
+    const uint8_t* pixel(uint32_t x, uint32_t y) const { return &rgba[(size_t(y) * width + x) * 4]; }
+};
+
+class Host {
+public:
+    virtual ~Host() = default;
+
+    // GRASS_BACKEND_GL (EGL surfaceless, falling back to OSMesa) or GRASS_BACKEND_VULKAN
+    // (lavapipe or any Vulkan device, validation layers on when installed). nullptr and
+    // *error set when the device cannot be had.
+    static std::unique_ptr<Host> create(grass_backend backend, const TargetDesc& target, std::string* error);
+
+    virtual grass_backend backend() const = 0;
+    virtual std::string device_name() const = 0;
+    const TargetDesc& target() const { return target_; }
+
+    // Creates a grass context on this host's device.
+    virtual grass_result create_context(const grass_context_desc& desc, grass_context** out) = 0;
+
+    // The host's projection for its clip-space convention (GL: z -1..1, y up; Vulkan:
+    // z 0..1, y down), column-major. Both give the same picture.
+    virtual void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const = 0;
+
+    // Renders one frame: clear, the occluder if given, grass_begin_frame(view), the
+    // backend's draw, grass_end_frame, then reads the resolved colour back. Returns the
+    // first failing grass_result (or GRASS_ERROR_BACKEND for a host-side failure with
+    // *error set).
+    virtual grass_result render(grass_context* context, const grass_view_desc& view, const Occluder* occluder,
+                                Image* out, std::string* error) = 0;
+
+    // Vulkan: messages the validation layers printed (warnings and errors) since creation.
+    // GL: GL debug-output errors. 0 when silent.
+    virtual uint32_t validation_messages() const = 0;
+    virtual std::string validation_log() const = 0;
+
+protected:
+    explicit Host(const TargetDesc& target) : target_(target) {}
+    TargetDesc target_;
+};
+
+// Builds a look-at view (rotation only is used by grass) and a default view desc with this
+// host's projection for the target's aspect.
+grass_view_desc make_view(const Host& host, const double eye[3], const double target[3], float fovy_degrees,
+                          float near_m = 0.05f, float far_m = 500.0f);
+
+} // namespace grass_host

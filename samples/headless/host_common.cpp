@@ -1,0 +1,61 @@
+#include "headless_host.hpp"
+#include "host_factories.hpp"
+
+#include <cmath>
+
+namespace grass_host {
+
+std::unique_ptr<Host> Host::create(grass_backend backend, const TargetDesc& target, std::string* error) {
+    switch (backend) {
+    case GRASS_BACKEND_GL:
+#ifdef GRASS_HOST_HAS_GL
+        return create_gl_host(target, error);
+#else
+        break;
+#endif
+    case GRASS_BACKEND_VULKAN:
+#ifdef GRASS_HOST_HAS_VULKAN
+        return create_vk_host(target, error);
+#else
+        break;
+#endif
+    case GRASS_BACKEND_NONE:
+        break;
+    }
+    if (error) *error = "this build has no headless host for that backend";
+    return nullptr;
+}
+
+grass_view_desc make_view(const Host& host, const double eye[3], const double target[3], float fovy_degrees,
+                          float near_m, float far_m) {
+    grass_view_desc v = grass_default_view_desc();
+    for (int c = 0; c < 3; ++c) v.camera_position[c] = eye[c];
+    double f[3] = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]};
+    const double fl = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    for (double& x : f) x /= fl;
+    // Looking straight up or down: take -z as "up" for the image.
+    const double up[3] = {0.0, 1.0, 0.0}, alt_up[3] = {0.0, 0.0, -1.0};
+    const double* u0 = std::fabs(f[1]) > 0.9999 ? alt_up : up;
+    double r[3] = {f[1] * u0[2] - f[2] * u0[1], f[2] * u0[0] - f[0] * u0[2], f[0] * u0[1] - f[1] * u0[0]};
+    const double rl = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (double& x : r) x /= rl;
+    const double u[3] = {r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2], r[0] * f[1] - r[1] * f[0]};
+    float* m = v.view;
+    for (int k = 0; k < 16; ++k) m[k] = 0.0f;
+    for (int c = 0; c < 3; ++c) {
+        m[4 * c + 0] = static_cast<float>(r[c]);
+        m[4 * c + 1] = static_cast<float>(u[c]);
+        m[4 * c + 2] = static_cast<float>(-f[c]);
+    }
+    m[15] = 1.0f;
+    const TargetDesc& t = host.target();
+    host.projection(fovy_degrees * 3.14159265358979f / 180.0f, static_cast<float>(t.width) / static_cast<float>(t.height),
+                    near_m, far_m, v.projection);
+    v.viewport[0] = 0;
+    v.viewport[1] = 0;
+    v.viewport[2] = static_cast<int32_t>(t.width);
+    v.viewport[3] = static_cast<int32_t>(t.height);
+    return v;
+}
+
+} // namespace grass_host

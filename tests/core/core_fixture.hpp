@@ -1,0 +1,40 @@
+// A context with no GPU backend plus a log recorder, for the core tests.
+#pragma once
+
+#include <grass/grass.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+struct LogRecord {
+    grass_log_level level;
+    grass_message_id id;
+    std::string message;
+};
+
+class CoreTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        grass_context_desc d = grass_default_context_desc();
+        d.log_fn = [](void* user, grass_log_level level, grass_message_id id, const char* message) {
+            static_cast<std::vector<LogRecord>*>(user)->push_back({level, id, message});
+        };
+        d.log_user_data = &log;
+        ASSERT_EQ(grass_create_context(GRASS_HEADER_VERSION, &d, &ctx), GRASS_SUCCESS);
+    }
+    void TearDown() override { grass_destroy_context(ctx); }
+
+    grass_message_id last_id() const { return log.empty() ? GRASS_MSG_NONE : log.back().id; }
+    std::string last_message() const { return log.empty() ? std::string() : log.back().message; }
+
+    grass_patch_id make_patch(grass_patch_desc d = grass_default_patch_desc()) {
+        grass_patch_id p{};
+        EXPECT_EQ(grass_create_patch(ctx, &d, &p), GRASS_SUCCESS) << last_message();
+        return p;
+    }
+
+    grass_context* ctx = nullptr;
+    std::vector<LogRecord> log;
+};

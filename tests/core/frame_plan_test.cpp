@@ -1,0 +1,172 @@
+// The frame plan for flat fields: cells, camera-relative origins, mirror bits, stats.
+#include "core_fixture.hpp"
+#include "view_helpers.hpp"
+
+#include "context.hpp"
+
+#include <cmath>
+#include <set>
+
+namespace {
+
+class PlanTest : public CoreTest {
+protected:
+    grass_field_id make_field(grass_field_desc d) {
+        grass_field_id f{};
+        EXPECT_EQ(grass_create_field(ctx, &d, &f), GRASS_SUCCESS) << last_message();
+        return f;
+    }
+    grass_field_desc field_desc(uint32_t cells) {
+        grass_field_desc d = grass_default_field_desc();
+        d.patch = patch;
+        d.cells_x = d.cells_z = cells;
+        return d;
+    }
+    void plan(const grass_view_desc& v) {
+        ASSERT_EQ(grass_begin_frame(ctx, &v), GRASS_SUCCESS) << last_message();
+        ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+    }
+    const grass::FramePlan& the_plan() const { return ctx->plan; }
+    void SetUp() override {
+        CoreTest::SetUp();
+        patch = make_patch();
+    }
+    grass_patch_id patch{};
+};
+
+TEST_F(PlanTest, AllFourMirrorStatesOccurOnAnEightByEightField) {
+    make_field(field_desc(8)); // 2 m x 2 m
+    const double eye[3] = {1.0, 6.0, 1.0}, target[3] = {1.0, 0.0, 1.0};
+    plan(test_view(eye, target));
+    ASSERT_EQ(the_plan().blade_instances.size(), 64u);
+    std::set<int> states;
+    for (const auto& inst : the_plan().blade_instances) states.insert(static_cast<int>(inst.mirror));
+    EXPECT_EQ(states, (std::set<int>{0, 1, 2, 3}));
+}
+
+TEST_F(PlanTest, MirrorTilingOffDrawsEveryCellUnmirroredAndTheSeedChangesThePattern) {
+    grass_field_desc d = field_desc(8);
+    d.mirror_tiling = 0;
+    const grass_field_id f = make_field(d);
+    const double eye[3] = {1.0, 6.0, 1.0}, target[3] = {1.0, 0.0, 1.0};
+    plan(test_view(eye, target));
+    for (const auto& inst : the_plan().blade_instances) EXPECT_EQ(inst.mirror, 0.0f);
+    ASSERT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
+
+    std::vector<float> a, b;
+    d.mirror_tiling = 1;
+    const grass_field_id f1 = make_field(d);
+    plan(test_view(eye, target));
+    for (const auto& inst : the_plan().blade_instances) a.push_back(inst.mirror);
+    ASSERT_EQ(grass_destroy_field(ctx, f1), GRASS_SUCCESS);
+    d.mirror_seed = 7;
+    make_field(d);
+    plan(test_view(eye, target));
+    for (const auto& inst : the_plan().blade_instances) b.push_back(inst.mirror);
+    EXPECT_NE(a, b);
+}
+
+TEST_F(PlanTest, OnlyCellsInFrontOfTheCameraWithinTheDrawDistanceAreDrawnFrontToBack) {
+    grass_field_desc d = field_desc(200); // 50 m x 50 m
+    d.draw_distance = 6.0f;
+    make_field(d);
+    const double eye[3] = {25.0, 1.5, 25.0}, target[3] = {30.0, 1.0, 25.0}; // looking along +x
+    plan(test_view(eye, target));
+    const auto& p = the_plan();
+    ASSERT_GT(p.blade_instances.size(), 50u);
+    const double overhang = 0.5; // generous bound on blade tips leaving the cell, in cells
+    double last = 0.0;
+    for (const auto& inst : p.blade_instances) {
+        // Behind the camera (x relative < 0) only cells whose box still reaches forward.
+        EXPECT_GT(inst.origin[0] + (1.0 + overhang) * 0.25, 0.0);
+        // Within the draw distance: the cell's nearest point.
+        const double nx = std::max(0.0, std::max(double(inst.origin[0]), -(inst.origin[0] + 0.25)));
+        const double nz = std::max(0.0, std::max(double(inst.origin[2]), -(inst.origin[2] + 0.25)));
+        EXPECT_LE(std::sqrt(nx * nx + nz * nz), 6.0 + 1e-3);
+        const double cx = inst.origin[0] + 0.125, cz = inst.origin[2] + 0.125, cy = inst.origin[1];
+        const double dist = std::sqrt(cx * cx + cy * cy + cz * cz);
+        EXPECT_GE(dist, last - 1e-4) << "front to back";
+        last = dist;
+    }
+    EXPECT_EQ(p.stats.cells_drawn, p.blade_instances.size());
+    EXPECT_LT(p.stats.cells_drawn, p.stats.cells_considered);
+
+    // Turned around, the camera sees other cells.
+    const double back[3] = {20.0, 1.0, 25.0};
+    plan(test_view(eye, back));
+    for (const auto& inst : the_plan().blade_instances) EXPECT_LT(inst.origin[0] - overhang * 0.25, 0.0);
+}
+
+TEST_F(PlanTest, AFieldTenThousandKilometresOutPlansTheSameCameraRelativeOrigins) {
+    grass_field_desc d = field_desc(16);
+    const grass_field_id near_field = make_field(d);
+    const double eye[3] = {2.0, 1.2, -1.0}, target[3] = {2.0, 0.0, 2.0};
+    plan(test_view(eye, target));
+    const auto near_instances = the_plan().blade_instances;
+    ASSERT_GT(near_instances.size(), 10u);
+    ASSERT_EQ(grass_destroy_field(ctx, near_field), GRASS_SUCCESS);
+
+    const double far = 1e7; // 10,000 km
+    d.base_transform[12] = far;
+    d.base_transform[14] = -far;
+    make_field(d);
+    const double eye_far[3] = {far + 2.0, 1.2, -far - 1.0}, target_far[3] = {far + 2.0, 0.0, -far + 2.0};
+    plan(test_view(eye_far, target_far));
+    const auto& far_instances = the_plan().blade_instances;
+    ASSERT_EQ(far_instances.size(), near_instances.size());
+    for (size_t k = 0; k < far_instances.size(); ++k) {
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(far_instances[k].origin[c], near_instances[k].origin[c], 1e-6f);
+        EXPECT_EQ(far_instances[k].mirror, near_instances[k].mirror);
+    }
+}
+
+TEST_F(PlanTest, StatsCountBladesThroughTheDensityThresholds) {
+    grass_field_desc d = field_desc(8);
+    d.density = 0.5f;
+    make_field(d);
+    const double eye[3] = {1.0, 6.0, 1.0}, target[3] = {1.0, 0.0, 1.0};
+    plan(test_view(eye, target));
+    grass_frame_stats s{};
+    ASSERT_EQ(grass_get_frame_stats(ctx, &s), GRASS_SUCCESS);
+    EXPECT_EQ(s.cells_drawn, 64u);
+    EXPECT_EQ(s.blades_submitted, 64u * 384u);
+    EXPECT_EQ(s.blades_drawn, 64u * 192u);
+    EXPECT_EQ(s.triangles, s.blades_drawn * 8u);
+    EXPECT_EQ(s.fields_drawn, 1u);
+}
+
+TEST_F(PlanTest, ZeroDensityDrawsNoBlades) {
+    grass_field_desc d = field_desc(8);
+    d.density = 0.0f;
+    make_field(d);
+    const double eye[3] = {1.0, 6.0, 1.0}, target[3] = {1.0, 0.0, 1.0};
+    plan(test_view(eye, target));
+    grass_frame_stats s{};
+    ASSERT_EQ(grass_get_frame_stats(ctx, &s), GRASS_SUCCESS);
+    EXPECT_EQ(s.blades_drawn, 0u);
+    EXPECT_EQ(s.triangles, 0u);
+}
+
+TEST_F(PlanTest, RotatedBaseTransformPlacesCellsInWorldSpace) {
+    grass_field_desc d = field_desc(4);
+    // 90 degrees about y: field x -> world -z, field z -> world x.
+    double* m = d.base_transform;
+    for (int k = 0; k < 16; ++k) m[k] = 0.0;
+    m[2] = -1.0; // column 0 = (0, 0, -1)
+    m[5] = 1.0;  // column 1 = (0, 1, 0)
+    m[8] = 1.0;  // column 2 = (1, 0, 0)
+    m[15] = 1.0;
+    make_field(d);
+    const double eye[3] = {0.5, 5.0, -0.5}, target[3] = {0.5, 0.0, -0.5};
+    plan(test_view(eye, target));
+    ASSERT_EQ(the_plan().blade_instances.size(), 16u);
+    for (const auto& inst : the_plan().blade_instances) {
+        // Field cells lie in world x in [0, 1], z in [-1, 0].
+        EXPECT_GE(inst.origin[0] + 0.5, -1e-6);
+        EXPECT_LE(inst.origin[0] + 0.5, 1.0 + 1e-6);
+        EXPECT_LE(inst.origin[2] - 0.5, 1e-6);
+        EXPECT_GE(inst.origin[2] - 0.5, -1.0 - 1e-6);
+    }
+}
+
+} // namespace

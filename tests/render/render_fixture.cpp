@@ -1,0 +1,108 @@
+#include "render_fixture.hpp"
+
+#include "image_io.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace grass_test {
+
+std::string backend_name(grass_backend b) { return b == GRASS_BACKEND_GL ? "gl" : b == GRASS_BACKEND_VULKAN ? "vk" : "none"; }
+
+void RenderTest::SetUp() {
+    grass_host::TargetDesc t;
+    t.width = 128;
+    t.height = 128;
+    start(t);
+}
+
+void RenderTest::start(const grass_host::TargetDesc& target) {
+    if (ctx) grass_destroy_context(ctx);
+    ctx = nullptr;
+    host.reset();
+    std::string error;
+    host = grass_host::Host::create(GetParam(), target, &error);
+    ASSERT_TRUE(host) << "cannot create the " << backend_name(GetParam()) << " host: " << error;
+    grass_context_desc d = grass_default_context_desc();
+    d.log_fn = [](void* user, grass_log_level, grass_message_id id, const char* message) {
+        *static_cast<std::string*>(user) += std::to_string(static_cast<int>(id)) + ": " + message + "\n";
+    };
+    d.log_user_data = &log;
+    ASSERT_EQ(host->create_context(d, &ctx), GRASS_SUCCESS) << log;
+    grass_patch_desc p = grass_default_patch_desc();
+    ASSERT_EQ(grass_create_patch(ctx, &p, &patch), GRASS_SUCCESS) << log;
+}
+
+void RenderTest::TearDown() {
+    if (ctx) grass_destroy_context(ctx);
+    ctx = nullptr;
+    if (host) {
+        EXPECT_EQ(host->validation_messages(), 0u) << host->validation_log();
+    }
+    host.reset();
+}
+
+grass_field_desc RenderTest::field_desc(uint32_t cells) const {
+    grass_field_desc d = grass_default_field_desc();
+    d.patch = patch;
+    d.cells_x = d.cells_z = cells;
+    return d;
+}
+
+grass_field_id RenderTest::make_field(grass_field_desc d) {
+    grass_field_id f{};
+    EXPECT_EQ(grass_create_field(ctx, &d, &f), GRASS_SUCCESS) << log;
+    return f;
+}
+
+grass_view_desc RenderTest::view(const double eye[3], const double target[3], float fovy_degrees) const {
+    return grass_host::make_view(*host, eye, target, fovy_degrees, 0.05f, 100.0f);
+}
+
+grass_host::Image RenderTest::render(const grass_view_desc& v, const grass_host::Occluder* occluder) {
+    grass_host::Image image;
+    std::string error;
+    const grass_result r = host->render(ctx, v, occluder, &image, &error);
+    EXPECT_EQ(r, GRASS_SUCCESS) << grass_result_string(r) << " " << error << "\n" << log;
+    return image;
+}
+
+void RenderTest::save(const grass_host::Image& image, const std::string& tag) const {
+    const char* dir = std::getenv("GRASS_TEST_IMAGE_DIR");
+    if (!dir || image.rgba.empty()) return;
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(info->test_suite_name()) + "." + info->name() + "." + tag + ".png";
+    for (char& c : name) {
+        if (c == '/') c = '_';
+    }
+    grass_host::write_png(std::string(dir) + "/" + name, image, nullptr);
+}
+
+void expected_sky(const grass_host::TargetDesc& t, uint8_t out[3]) {
+    for (int c = 0; c < 3; ++c) {
+        const double l = t.clear_color[c];
+        const double s = l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
+        out[c] = static_cast<uint8_t>(std::lround(s * 255.0));
+    }
+}
+
+bool is_grass(const uint8_t* p, const uint8_t sky[3], int tolerance) {
+    for (int c = 0; c < 3; ++c) {
+        if (std::abs(int(p[c]) - int(sky[c])) > tolerance) return true;
+    }
+    return false;
+}
+
+double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_t x0, uint32_t y0, uint32_t x1,
+                   uint32_t y1) {
+    uint64_t n = 0, g = 0;
+    for (uint32_t y = y0; y < y1; ++y) {
+        for (uint32_t x = x0; x < x1; ++x) {
+            ++n;
+            g += is_grass(image.pixel(x, y), sky);
+        }
+    }
+    return n ? double(g) / double(n) : 0.0;
+}
+
+} // namespace grass_test

@@ -1,0 +1,48 @@
+// Rendering tests run in both backends through the headless hosts. Each test gets a fresh
+// host, a context and the default patch; Vulkan tests fail if the validation layers said
+// anything. Images of failing tests go to GRASS_TEST_IMAGE_DIR for a look.
+#pragma once
+
+#include <grass/grass.h>
+#include <grass/grass_gl.h>
+#include <grass/grass_vk.h>
+
+#include "headless_host.hpp"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+namespace grass_test {
+
+std::string backend_name(grass_backend b);
+
+class RenderTest : public ::testing::TestWithParam<grass_backend> {
+protected:
+    void SetUp() override;
+    void TearDown() override;
+
+    // Makes the host, the context and the default patch (call again to change the target).
+    void start(const grass_host::TargetDesc& target);
+    grass_field_id make_field(grass_field_desc d);
+    grass_field_desc field_desc(uint32_t cells) const;
+    grass_view_desc view(const double eye[3], const double target[3], float fovy_degrees = 50.0f) const;
+    grass_host::Image render(const grass_view_desc& v, const grass_host::Occluder* occluder = nullptr);
+    void save(const grass_host::Image& image, const std::string& tag) const;
+
+    std::unique_ptr<grass_host::Host> host;
+    grass_context* ctx = nullptr;
+    grass_patch_id patch{};
+    std::string log;
+};
+
+// The clear colour as the hosts write it (linear -> sRGB 8-bit).
+void expected_sky(const grass_host::TargetDesc& t, uint8_t out[3]);
+// A pixel differs from the sky by more than `tolerance` levels in some channel.
+bool is_grass(const uint8_t* pixel, const uint8_t sky[3], int tolerance = 6);
+// Share of pixels in [x0, x1) x [y0, y1) that are grass.
+double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_t x0, uint32_t y0, uint32_t x1,
+                   uint32_t y1);
+
+} // namespace grass_test

@@ -1,0 +1,66 @@
+// Drawing calls in the wrong order or on the wrong backend are refused, and the context
+// still renders afterwards.
+#include "render_fixture.hpp"
+
+namespace grass_test {
+namespace {
+
+class RenderMisuseTest : public RenderTest {
+protected:
+    grass_result draw_outside_a_frame() {
+        if (GetParam() == GRASS_BACKEND_GL) return grass_gl_render(ctx);
+        grass_vk_record_desc r = grass_vk_default_record_desc();
+        r.command_buffer = nullptr;
+        return grass_vk_record(ctx, &r);
+    }
+    grass_result draw_with_the_other_backend() {
+        if (GetParam() == GRASS_BACKEND_GL) {
+            grass_vk_record_desc r = grass_vk_default_record_desc();
+            return grass_vk_record(ctx, &r);
+        }
+        return grass_gl_render(ctx);
+    }
+};
+
+TEST_P(RenderMisuseTest, RenderingBeforeAFrameHasBegunIsRefused) {
+    make_field(field_desc(4));
+    log.clear();
+    EXPECT_EQ(draw_outside_a_frame(), GRASS_ERROR_INVALID_STATE);
+    EXPECT_NE(log.find(std::to_string(int(GRASS_MSG_FRAME_NOT_BEGUN)) + ":"), std::string::npos) << log;
+    // Still usable: a real frame renders grass.
+    const double eye[3] = {0.5, 2.0, 0.5}, target[3] = {0.5, 0.0, 0.5001};
+    const auto image = render(view(eye, target));
+    uint8_t sky[3];
+    expected_sky(host->target(), sky);
+    EXPECT_GT(grass_share(image, sky, 0, 0, image.width, image.height), 0.1);
+}
+
+TEST_P(RenderMisuseTest, DrawingWithTheOtherBackendsCallIsRefused) {
+    EXPECT_EQ(draw_with_the_other_backend(), GRASS_ERROR_INVALID_STATE);
+    EXPECT_NE(log.find(std::to_string(int(GRASS_MSG_WRONG_BACKEND)) + ":"), std::string::npos) << log;
+}
+
+TEST_P(RenderMisuseTest, ObjectsCanBeDestroyedAndRecreatedBetweenFrames) {
+    const double eye[3] = {0.5, 2.0, 0.5}, target[3] = {0.5, 0.0, 0.5001};
+    uint8_t sky[3];
+    expected_sky(host->target(), sky);
+    for (int round = 0; round < 3; ++round) {
+        const grass_field_id f = make_field(field_desc(4));
+        const auto image = render(view(eye, target));
+        EXPECT_GT(grass_share(image, sky, 0, 0, image.width, image.height), 0.1) << "round " << round;
+        ASSERT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
+        ASSERT_EQ(grass_destroy_patch(ctx, patch), GRASS_SUCCESS);
+        grass_patch_desc p = grass_default_patch_desc();
+        p.seed = 10u + static_cast<uint64_t>(round);
+        ASSERT_EQ(grass_create_patch(ctx, &p, &patch), GRASS_SUCCESS);
+    }
+    // A frame with no field draws nothing and is fine.
+    const auto empty = render(view(eye, target));
+    EXPECT_EQ(grass_share(empty, sky, 0, 0, empty.width, empty.height), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, RenderMisuseTest, ::testing::Values(GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN),
+                         [](const auto& p) { return backend_name(p.param); });
+
+} // namespace
+} // namespace grass_test
