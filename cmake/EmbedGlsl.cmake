@@ -1,23 +1,26 @@
 # Script mode: cmake -DINPUTS="a.vert;b.frag" -DINCLUDE_DIR=dir -DOUTPUT=out.cpp -DNAMESPACE=ns -P EmbedGlsl.cmake
 # Writes each shader as a C++ string with its #include lines inlined (the GL driver has
 # no include support), as `extern const char* const ns::<name>` (blade.vert -> blade_vert).
+#
+# Sources are handled as whole strings, never as CMake lists: GLSL is full of ';' and an
+# unbalanced ']' in a comment would stop a list from splitting.
+
+# The caller escapes the list separators so the list survives the command line.
+string(REPLACE "\\;" ";" INPUTS "${INPUTS}")
 
 function(inline_includes path out_var depth)
   if(depth GREATER 8)
     message(FATAL_ERROR "EmbedGlsl: includes nested too deep in ${path}")
   endif()
-  file(STRINGS "${path}" lines)
-  set(result "")
-  foreach(line IN LISTS lines)
-    if(line MATCHES "^[ \t]*#[ \t]*include[ \t]+\"([^\"]+)\"")
-      math(EXPR next "${depth} + 1")
-      inline_includes("${INCLUDE_DIR}/${CMAKE_MATCH_1}" included ${next})
-      string(APPEND result "${included}")
-    else()
-      string(APPEND result "${line}\n")
-    endif()
+  file(READ "${path}" text)
+  string(REGEX MATCHALL "#[ \t]*include[ \t]+\"[^\"]+\"" directives "${text}")
+  foreach(directive IN LISTS directives)
+    string(REGEX REPLACE "#[ \t]*include[ \t]+\"([^\"]+)\"" "\\1" name "${directive}")
+    math(EXPR next "${depth} + 1")
+    inline_includes("${INCLUDE_DIR}/${name}" included ${next})
+    string(REPLACE "${directive}" "${included}" text "${text}")
   endforeach()
-  set(${out_var} "${result}" PARENT_SCOPE)
+  set(${out_var} "${text}" PARENT_SCOPE)
 endfunction()
 
 set(body "// Generated from api/shaders by cmake/EmbedGlsl.cmake. Do not edit.\nnamespace ${NAMESPACE} {\n")

@@ -22,7 +22,9 @@ void main() {
 
     // Distance to the nearest blade edge in pixels -> coverage. Without multisampling the
     // alpha is ignored (no blending); with alpha-to-coverage it antialiases the edges.
+    // Blades narrower than a pixel already lose coverage to the rasteriser: their centre
+    // stays opaque (the scale is at least 2), or far grass would wash out to the sky.
     float edge = 0.5 - abs(v_shape.x - 0.5);
-    float alpha = clamp(edge / max(fwidth(v_shape.x), 1e-6) + 0.5, 0.0, 1.0);
+    float alpha = clamp(edge * max(1.0 / max(fwidth(v_shape.x), 1e-6), 2.0) + 0.5, 0.0, 1.0);
     out_color = vec4(color, alpha);
 }

@@ -1,4 +1,6 @@
 // Entry points of backends left out of this build: they exist and say so.
+#include "context.hpp"
+
 #include <grass/grass_gl.h>
 #include <grass/grass_vk.h>
 
@@ -20,7 +22,11 @@ GRASS_API grass_result grass_gl_create_context(uint32_t, const grass_context_des
     }
     return GRASS_ERROR_UNSUPPORTED;
 }
-GRASS_API grass_result grass_gl_render(grass_context*) { return GRASS_ERROR_UNSUPPORTED; }
+GRASS_API grass_result grass_gl_render(grass_context* context) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+                         "grass_gl_render: the context is not a GL context (this build has no GL backend)");
+}
 #endif
 
 #ifndef GRASS_HAS_VULKAN
@@ -45,8 +51,16 @@ GRASS_API grass_result grass_vk_create_context(uint32_t, const grass_context_des
     }
     return GRASS_ERROR_UNSUPPORTED;
 }
-GRASS_API grass_result grass_vk_prepare_frame(grass_context*, void*) { return GRASS_ERROR_UNSUPPORTED; }
-GRASS_API grass_result grass_vk_record(grass_context*, const grass_vk_record_desc*) { return GRASS_ERROR_UNSUPPORTED; }
+GRASS_API grass_result grass_vk_prepare_frame(grass_context* context, void*) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+                         "grass_vk_prepare_frame: the context is not a Vulkan context (this build has no Vulkan backend)");
+}
+GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc*) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+                         "grass_vk_record: the context is not a Vulkan context (this build has no Vulkan backend)");
+}
 #endif
 
 } // extern "C"

@@ -68,6 +68,13 @@ public:
     virtual uint32_t validation_messages() const = 0;
     virtual std::string validation_log() const = 0;
 
+    // GL hosts: the address of a GL entry point in the host's context, which stays current
+    // on the creating thread (for tests that inspect GL state). Others return nullptr.
+    virtual void* gl_proc_address(const char* name) const {
+        (void)name;
+        return nullptr;
+    }
+
 protected:
     explicit Host(const TargetDesc& target) : target_(target) {}
     TargetDesc target_;

@@ -143,7 +143,7 @@ TEST_P(DensityTest, TheZeroHalfOfADensityMapIsEmptyAndTheFullHalfIsNot) {
     EXPECT_GT(grass_share(image, sky, px(1.15), 0, 128, 128), 0.5);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, DensityTest, ::testing::Values(GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN),
+INSTANTIATE_TEST_SUITE_P(Backends, DensityTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });
 
 } // namespace

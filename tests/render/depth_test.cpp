@@ -56,7 +56,7 @@ TEST_P(DepthTest, GrassHidesAHostBoxBehindIt) {
     EXPECT_NEAR(high[0], 231, 3) << "the wall above the grass";
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, DepthTest, ::testing::Values(GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN),
+INSTANTIATE_TEST_SUITE_P(Backends, DepthTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });
 
 } // namespace

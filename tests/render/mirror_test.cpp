@@ -37,7 +37,7 @@ TEST_P(MirrorTest, AnEightByEightFieldRendersDifferentlyWithoutMirroring) {
     EXPECT_NEAR(ga, gb, 0.05) << "the same amount of grass";
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, MirrorTest, ::testing::Values(GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN),
+INSTANTIATE_TEST_SUITE_P(Backends, MirrorTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });
 
 } // namespace

@@ -9,6 +9,17 @@ namespace grass_test {
 
 std::string backend_name(grass_backend b) { return b == GRASS_BACKEND_GL ? "gl" : b == GRASS_BACKEND_VULKAN ? "vk" : "none"; }
 
+std::vector<grass_backend> enabled_backends() {
+    std::vector<grass_backend> b;
+#ifdef GRASS_HOST_HAS_GL
+    b.push_back(GRASS_BACKEND_GL);
+#endif
+#ifdef GRASS_HOST_HAS_VULKAN
+    b.push_back(GRASS_BACKEND_VULKAN);
+#endif
+    return b;
+}
+
 void RenderTest::SetUp() {
     grass_host::TargetDesc t;
     t.width = 128;

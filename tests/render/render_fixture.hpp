@@ -13,10 +13,13 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace grass_test {
 
 std::string backend_name(grass_backend b);
+// The backends this build has hosts for.
+std::vector<grass_backend> enabled_backends();
 
 class RenderTest : public ::testing::TestWithParam<grass_backend> {
 protected:

@@ -59,7 +59,7 @@ TEST_P(RenderMisuseTest, ObjectsCanBeDestroyedAndRecreatedBetweenFrames) {
     EXPECT_EQ(grass_share(empty, sky, 0, 0, empty.width, empty.height), 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, RenderMisuseTest, ::testing::Values(GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN),
+INSTANTIATE_TEST_SUITE_P(Backends, RenderMisuseTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });
 
 } // namespace

@@ -1,0 +1,79 @@
+// The C entry points of grass_gl.h.
+#include "gl_backend.hpp"
+
+#include <context.hpp>
+#include <grass/grass_gl.h>
+
+namespace {
+
+constexpr const char* kCreate = "grass_gl_create_context";
+
+// Runs inside grass::create_context once the context (and so its log) exists, so that
+// gl_desc errors are reported with message ids like every other argument error.
+grass_result gl_backend_factory(grass_context* ctx, void* user_data, grass::Backend** out_backend) {
+    const auto* gl_desc = static_cast<const grass_gl_desc*>(user_data);
+    if (gl_desc == nullptr) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: gl_desc is NULL", kCreate);
+    }
+    if (gl_desc->type != GRASS_STRUCT_TYPE_GL_DESC) {
+        return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                         "%s: gl_desc->type is 0x%08X, expected GRASS_STRUCT_TYPE_GL_DESC (0x%08X); fill it with "
+                         "grass_gl_default_desc()",
+                         kCreate, static_cast<unsigned>(gl_desc->type),
+                         static_cast<unsigned>(GRASS_STRUCT_TYPE_GL_DESC));
+    }
+    if (gl_desc->next != nullptr) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL,
+                         "%s: gl_desc->next is %p; it is reserved and must be NULL", kCreate, gl_desc->next);
+    }
+    if (gl_desc->get_proc_address == nullptr) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+                         "%s: gl_desc->get_proc_address is NULL; pass the GL loader (e.g. eglGetProcAddress)",
+                         kCreate);
+    }
+    return grass::GlBackend::create(ctx, *gl_desc, out_backend);
+}
+
+const char* creator_of(grass_backend kind) {
+    switch (kind) {
+    case GRASS_BACKEND_NONE: return "grass_create_context";
+    case GRASS_BACKEND_GL: return "grass_gl_create_context";
+    case GRASS_BACKEND_VULKAN: return "grass_vk_create_context";
+    }
+    return "an unknown backend";
+}
+
+} // namespace
+
+extern "C" {
+
+GRASS_API grass_gl_desc grass_gl_default_desc(void) {
+    grass_gl_desc desc{};
+    desc.type = GRASS_STRUCT_TYPE_GL_DESC;
+    return desc;
+}
+
+GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const grass_context_desc* desc,
+                                               const grass_gl_desc* gl_desc, grass_context** out_context) {
+    return grass::create_context(kCreate, header_version, desc, gl_backend_factory,
+                                 const_cast<grass_gl_desc*>(gl_desc), out_context);
+}
+
+GRASS_API grass_result grass_gl_render(grass_context* context) {
+    if (context == nullptr) return GRASS_ERROR_INVALID_ARGUMENT;
+    return grass::guarded(context, "grass_gl_render", [&] {
+        const grass_backend kind = context->backend ? context->backend->kind() : GRASS_BACKEND_NONE;
+        if (kind != GRASS_BACKEND_GL) {
+            return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+                                 "grass_gl_render: the context was made by %s, not grass_gl_create_context",
+                                 creator_of(kind));
+        }
+        if (!context->in_frame) {
+            return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
+                                 "grass_gl_render: no frame has begun; call grass_begin_frame first");
+        }
+        return static_cast<grass::GlBackend*>(context->backend)->render("grass_gl_render");
+    });
+}
+
+} // extern "C"

@@ -1,0 +1,250 @@
+#include "gl_backend.hpp"
+
+#include "gl_program.hpp"
+#include "gl_state_guard.hpp"
+
+#include <cstddef>
+
+namespace grass {
+
+namespace {
+
+constexpr const char* kCreateFunction = "grass_gl_create_context";
+
+struct VertexAttribute {
+    GLuint location;
+    GLint size;
+    GLenum type;
+    GLboolean normalized;
+    GLuint offset;
+    GLuint binding;
+};
+
+// The vertex input of blade.vert: patch vertices on binding 0, instances on binding 1.
+constexpr GLuint kVertexBinding = 0;
+constexpr GLuint kInstanceBinding = 1;
+const VertexAttribute kBladeAttributes[] = {
+    {0, 3, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, position), kVertexBinding},
+    {1, 3, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, normal), kVertexBinding},
+    {2, 4, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, root_shape), kVertexBinding},
+    {3, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(BladeVertex, color), kVertexBinding},
+    {4, 1, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, threshold), kVertexBinding},
+    {5, 4, GL_FLOAT, GL_FALSE, offsetof(BladeInstance, origin), kInstanceBinding},
+    {6, 4, GL_FLOAT, GL_FALSE, offsetof(BladeInstance, map_uv), kInstanceBinding},
+};
+
+const char* gl_error_name(GLenum error) {
+    switch (error) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
+    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
+    default: return "an unknown GL error";
+    }
+}
+
+} // namespace
+
+GlBackend::GlBackend(grass_context* ctx)
+    : ctx_(ctx),
+      uniform_staging_(StlAllocator<unsigned char>(&ctx->host)),
+      field_uniform_offsets_(StlAllocator<GLintptr>(&ctx->host)),
+      patches_(StlAllocator<PatchGpu>(&ctx->host)),
+      fields_(StlAllocator<FieldGpu>(&ctx->host)) {}
+
+grass_result GlBackend::create(grass_context* ctx, const grass_gl_desc& desc, Backend** out_backend) {
+    GlBackend* backend = nullptr;
+    const grass_result result = guarded(ctx, kCreateFunction, [&] {
+        backend = ctx->host.create<GlBackend>(ctx);
+        return backend->init(desc);
+    });
+    if (result != GRASS_SUCCESS) {
+        ctx->host.destroy(backend);
+        return result;
+    }
+    *out_backend = backend;
+    return GRASS_SUCCESS;
+}
+
+grass_result GlBackend::init(const grass_gl_desc& desc) {
+    if (const char* missing = gl_.load(desc.get_proc_address, desc.get_proc_address_user_data)) {
+        return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                          "%s: gl_desc->get_proc_address returned NULL for %s; an OpenGL 4.5 context is required",
+                          kCreateFunction, missing);
+    }
+    loaded_ = true;
+
+    GLint major = 0;
+    GLint minor = 0;
+    gl_.GetIntegerv(GL_MAJOR_VERSION, &major);
+    gl_.GetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major < 4 || (major == 4 && minor < 5)) {
+        return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                          "%s: the current GL context is version %d.%d; OpenGL 4.5 is required (is a context current "
+                          "on this thread?)",
+                          kCreateFunction, major, minor);
+    }
+    gl_.GetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniform_alignment_);
+    if (uniform_alignment_ < 1) uniform_alignment_ = 256;
+    gl_.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture_size_);
+
+    grass_result result = create_blade_program(ctx_, gl_, kCreateFunction, &program_);
+    if (result != GRASS_SUCCESS) return result;
+
+    gl_.CreateTextures(GL_TEXTURE_2D, 1, &white_texture_);
+    gl_.TextureStorage2D(white_texture_, 1, GL_R16, 1, 1);
+    {
+        const uint16_t white = 0xFFFF;
+        GlUnpackStateGuard unpack(gl_, 2);
+        gl_.TextureSubImage2D(white_texture_, 0, 0, 0, 1, 1, GL_RED, GL_UNSIGNED_SHORT, &white);
+    }
+
+    gl_.CreateSamplers(1, &sampler_);
+    gl_.SamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl_.SamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl_.SamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl_.SamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+
+    instances_.create(gl_);
+    uniforms_.create(gl_);
+    result = check_errors(kCreateFunction, "creating the blade program, white texture and sampler");
+    if (result != GRASS_SUCCESS) return result;
+
+    return GRASS_SUCCESS;
+}
+
+GlBackend::~GlBackend() {
+    if (!loaded_) return;
+    for (uint32_t slot = 0; slot < patches_.size(); ++slot) release_patch(slot);
+    for (uint32_t slot = 0; slot < fields_.size(); ++slot) release_field(slot);
+    instances_.destroy(gl_);
+    uniforms_.destroy(gl_);
+    if (sampler_ != 0) gl_.DeleteSamplers(1, &sampler_);
+    if (white_texture_ != 0) gl_.DeleteTextures(1, &white_texture_);
+    if (program_ != 0) gl_.DeleteProgram(program_);
+}
+
+// Drains the GL error flags. glGetError is the only way to see GL_OUT_OF_MEMORY; it is
+// called on the (rare) upload paths only, never while drawing.
+grass_result GlBackend::check_errors(const char* function, const char* what) {
+    GLenum first = GL_NO_ERROR;
+    bool out_of_memory = false;
+    for (int i = 0; i < 32; ++i) {
+        const GLenum error = gl_.GetError();
+        if (error == GL_NO_ERROR) break;
+        if (first == GL_NO_ERROR) first = error;
+        out_of_memory = out_of_memory || error == GL_OUT_OF_MEMORY;
+    }
+    if (out_of_memory) {
+        return ctx_->fail(GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: GL_OUT_OF_MEMORY while %s",
+                          function, what);
+    }
+    if (first != GL_NO_ERROR) {
+        return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED, "%s: %s (0x%04X) while %s", function,
+                          gl_error_name(first), first, what);
+    }
+    return GRASS_SUCCESS;
+}
+
+grass_result GlBackend::upload_patch(uint32_t slot, const PatchData& patch) {
+    if (slot >= patches_.size()) patches_.resize(slot + 1);
+    release_patch(slot);
+    PatchGpu& gpu = patches_[slot];
+
+    const size_t vertex_bytes = patch.vertices.size() * sizeof(BladeVertex);
+    const size_t index_bytes = patch.indices.size() * sizeof(uint32_t);
+    gl_.CreateBuffers(1, &gpu.vertices);
+    gl_.CreateBuffers(1, &gpu.indices);
+    if (vertex_bytes > 0) {
+        gl_.NamedBufferStorage(gpu.vertices, static_cast<GLsizeiptr>(vertex_bytes), patch.vertices.data(), 0);
+    }
+    if (index_bytes > 0) {
+        gl_.NamedBufferStorage(gpu.indices, static_cast<GLsizeiptr>(index_bytes), patch.indices.data(), 0);
+    }
+
+    gl_.CreateVertexArrays(1, &gpu.vertex_array);
+    const GLuint vao = gpu.vertex_array;
+    gl_.VertexArrayVertexBuffer(vao, kVertexBinding, gpu.vertices, 0, sizeof(BladeVertex));
+    gl_.VertexArrayVertexBuffer(vao, kInstanceBinding, instances_.name(), 0, sizeof(BladeInstance));
+    gl_.VertexArrayBindingDivisor(vao, kInstanceBinding, 1);
+    gl_.VertexArrayElementBuffer(vao, gpu.indices);
+    for (const VertexAttribute& a : kBladeAttributes) {
+        gl_.EnableVertexArrayAttrib(vao, a.location);
+        gl_.VertexArrayAttribFormat(vao, a.location, a.size, a.type, a.normalized, a.offset);
+        gl_.VertexArrayAttribBinding(vao, a.location, a.binding);
+    }
+
+    const grass_result result = check_errors("grass_create_patch", "uploading the patch's blade geometry");
+    if (result != GRASS_SUCCESS) {
+        release_patch(slot);
+        return result;
+    }
+    gpu.index_count = static_cast<uint32_t>(patch.indices.size());
+    gpu.bytes = vertex_bytes + index_bytes;
+    return GRASS_SUCCESS;
+}
+
+void GlBackend::release_patch(uint32_t slot) {
+    if (slot >= patches_.size()) return;
+    PatchGpu& gpu = patches_[slot];
+    if (gpu.vertex_array != 0) gl_.DeleteVertexArrays(1, &gpu.vertex_array);
+    if (gpu.vertices != 0) gl_.DeleteBuffers(1, &gpu.vertices);
+    if (gpu.indices != 0) gl_.DeleteBuffers(1, &gpu.indices);
+    gpu = PatchGpu{};
+}
+
+grass_result GlBackend::upload_field(uint32_t slot, const MapTexels& density) {
+    if (slot >= fields_.size()) fields_.resize(slot + 1);
+    release_field(slot);
+    if (density.texels == nullptr) return GRASS_SUCCESS;
+
+    if (density.width > static_cast<uint32_t>(max_texture_size_) ||
+        density.height > static_cast<uint32_t>(max_texture_size_)) {
+        return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                          "grass_create_field: density_map is %ux%u texels; this GL device's GL_MAX_TEXTURE_SIZE is %d",
+                          density.width, density.height, max_texture_size_);
+    }
+    FieldGpu& gpu = fields_[slot];
+    gl_.CreateTextures(GL_TEXTURE_2D, 1, &gpu.density_map);
+    gl_.TextureStorage2D(gpu.density_map, 1, GL_R16, static_cast<GLsizei>(density.width),
+                         static_cast<GLsizei>(density.height));
+    {
+        GlUnpackStateGuard unpack(gl_, 2);
+        gl_.TextureSubImage2D(gpu.density_map, 0, 0, 0, static_cast<GLsizei>(density.width),
+                              static_cast<GLsizei>(density.height), GL_RED, GL_UNSIGNED_SHORT, density.texels);
+    }
+    const grass_result result = check_errors("grass_create_field", "uploading the density map");
+    if (result != GRASS_SUCCESS) {
+        release_field(slot);
+        return result;
+    }
+    gpu.bytes = uint64_t(density.width) * density.height * sizeof(uint16_t);
+    return GRASS_SUCCESS;
+}
+
+void GlBackend::release_field(uint32_t slot) {
+    if (slot >= fields_.size()) return;
+    FieldGpu& gpu = fields_[slot];
+    if (gpu.density_map != 0) gl_.DeleteTextures(1, &gpu.density_map);
+    gpu = FieldGpu{};
+}
+
+grass_result GlBackend::begin_frame(const FramePlan&) {
+    // The plan is uploaded by the first grass_gl_render of the frame, where the host's
+    // GL context is current by contract.
+    frame_uploaded_ = false;
+    return GRASS_SUCCESS;
+}
+
+uint64_t GlBackend::gpu_bytes() const {
+    uint64_t bytes = instances_.capacity() + uniforms_.capacity();
+    if (white_texture_ != 0) bytes += sizeof(uint16_t);
+    for (const PatchGpu& p : patches_) bytes += p.bytes;
+    for (const FieldGpu& f : fields_) bytes += f.bytes;
+    return bytes;
+}
+
+} // namespace grass

@@ -1,0 +1,73 @@
+// The GL 4.5 backend: owns the blade program, one vertex array per patch, one density
+// texture per field and the per-frame streaming buffers, all made with DSA in the host's
+// GL context. Drawing is grass_gl_render -> GlBackend::render.
+#pragma once
+
+#include "gl_functions.hpp"
+#include "gl_stream_buffer.hpp"
+
+#include <backend.hpp>
+#include <context.hpp>
+
+#include <cstdint>
+
+namespace grass {
+
+class GlBackend final : public Backend {
+public:
+    // Makes the backend of a new context from a validated desc (grass_gl_create_context).
+    // The host's GL 4.5 context must be current. On failure nothing is left behind.
+    static grass_result create(grass_context* ctx, const grass_gl_desc& desc, Backend** out_backend);
+
+    // Use create(); public only for HostAllocator::create.
+    explicit GlBackend(grass_context* ctx);
+    ~GlBackend() override;
+    GlBackend(const GlBackend&) = delete;
+    GlBackend& operator=(const GlBackend&) = delete;
+
+    grass_backend kind() const override { return GRASS_BACKEND_GL; }
+    grass_result upload_patch(uint32_t slot, const PatchData& patch) override;
+    void release_patch(uint32_t slot) override;
+    grass_result upload_field(uint32_t slot, const MapTexels& density) override;
+    void release_field(uint32_t slot) override;
+    grass_result begin_frame(const FramePlan& plan) override;
+    uint64_t gpu_bytes() const override;
+
+    // Draws the context's plan into the bound draw framebuffer (gl_draw.cpp).
+    grass_result render(const char* function);
+
+private:
+    struct PatchGpu {
+        GLuint vertex_array = 0;
+        GLuint vertices = 0;
+        GLuint indices = 0;
+        uint32_t index_count = 0;
+        uint64_t bytes = 0;
+    };
+    struct FieldGpu {
+        GLuint density_map = 0; // 0: the field samples the 1x1 white texture
+        uint64_t bytes = 0;
+    };
+
+    grass_result init(const grass_gl_desc& desc);
+    grass_result check_errors(const char* function, const char* what);
+    void upload_frame(); // gl_draw.cpp
+
+    grass_context* ctx_;
+    bool loaded_ = false; // gl_ holds every entry point
+    GlFunctions gl_;
+    GLuint program_ = 0;
+    GLuint white_texture_ = 0;
+    GLuint sampler_ = 0;
+    GLint uniform_alignment_ = 256;
+    GLint max_texture_size_ = 0;
+    GlStreamBuffer instances_;
+    GlStreamBuffer uniforms_;
+    Vector<unsigned char> uniform_staging_;
+    Vector<GLintptr> field_uniform_offsets_; // per blade draw, into uniforms_
+    bool frame_uploaded_ = false;
+    Vector<PatchGpu> patches_;
+    Vector<FieldGpu> fields_;
+};
+
+} // namespace grass

@@ -1,0 +1,97 @@
+// Executing a frame plan: upload its instances and uniforms once per frame, then one
+// instanced draw per field, inside a guard that restores the host's GL state.
+#include "gl_backend.hpp"
+
+#include "gl_state_guard.hpp"
+
+#include <cstring>
+
+namespace grass {
+
+namespace {
+
+size_t align_up(size_t value, size_t alignment) {
+    return (value + alignment - 1) / alignment * alignment;
+}
+
+} // namespace
+
+// Uniform buffer layout: Frame at offset 0, then one Field block per draw, each at
+// GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT.
+void GlBackend::upload_frame() {
+    const FramePlan& plan = ctx_->plan;
+    const size_t alignment = static_cast<size_t>(uniform_alignment_);
+
+    field_uniform_offsets_.resize(plan.blade_draws.size());
+    size_t size = sizeof(FrameUniforms);
+    for (size_t i = 0; i < plan.blade_draws.size(); ++i) {
+        field_uniform_offsets_[i] = static_cast<GLintptr>(align_up(size, alignment));
+        size = static_cast<size_t>(field_uniform_offsets_[i]) + sizeof(FieldUniforms);
+    }
+    uniform_staging_.assign(size, 0);
+    std::memcpy(uniform_staging_.data(), &plan.frame, sizeof(FrameUniforms));
+    for (size_t i = 0; i < plan.blade_draws.size(); ++i) {
+        std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &plan.blade_draws[i].uniforms,
+                    sizeof(FieldUniforms));
+    }
+    uniforms_.upload(gl_, uniform_staging_.data(), uniform_staging_.size());
+    instances_.upload(gl_, plan.blade_instances.data(), plan.blade_instances.size() * sizeof(BladeInstance));
+    frame_uploaded_ = true;
+}
+
+grass_result GlBackend::render(const char* function) {
+    const FramePlan& plan = ctx_->plan;
+    if (plan.blade_draws.empty()) return GRASS_SUCCESS;
+
+    // Check the plan against what was uploaded before touching any GL state.
+    for (const BladeDraw& draw : plan.blade_draws) {
+        const bool patch_ok = draw.patch_slot < patches_.size() && patches_[draw.patch_slot].vertex_array != 0;
+        const bool instances_ok = uint64_t(draw.first_instance) + draw.instance_count <= plan.blade_instances.size();
+        if (!patch_ok || draw.field_slot >= fields_.size() || !instances_ok) {
+            return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+                              "%s: the frame plan refers to patch slot %u, field slot %u, instances %u+%u, which the "
+                              "GL backend does not hold (internal error)",
+                              function, draw.patch_slot, draw.field_slot, draw.first_instance, draw.instance_count);
+        }
+    }
+    if (!frame_uploaded_) upload_frame();
+
+    GlDrawStateGuard guard(gl_); // also makes texture unit 0 active
+    gl_.UseProgram(program_);
+    gl_.Viewport(plan.viewport[0], plan.viewport[1], plan.viewport[2], plan.viewport[3]);
+    if (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) {
+        gl_.Disable(GL_DEPTH_TEST);
+    } else {
+        gl_.Enable(GL_DEPTH_TEST);
+    }
+    gl_.DepthFunc(ctx_->desc.depth_mode == GRASS_DEPTH_GREATER ? GL_GEQUAL : GL_LEQUAL);
+    gl_.DepthMask(GL_TRUE);
+    gl_.Disable(GL_CULL_FACE); // blades are two-sided
+    gl_.Disable(GL_BLEND);
+    gl_.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    GLint sample_buffers = 0;
+    gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &sample_buffers); // of the bound draw framebuffer
+    if (sample_buffers > 0) {
+        gl_.Enable(GL_MULTISAMPLE);
+        gl_.Enable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    } else {
+        gl_.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    }
+    gl_.BindSampler(0, sampler_);
+    gl_.BindBufferRange(GL_UNIFORM_BUFFER, 0, uniforms_.name(), 0, sizeof(FrameUniforms));
+
+    for (size_t i = 0; i < plan.blade_draws.size(); ++i) {
+        const BladeDraw& draw = plan.blade_draws[i];
+        const PatchGpu& patch = patches_[draw.patch_slot];
+        const FieldGpu& field = fields_[draw.field_slot];
+        if (draw.instance_count == 0 || patch.index_count == 0) continue;
+        gl_.BindVertexArray(patch.vertex_array);
+        gl_.BindTexture(GL_TEXTURE_2D, field.density_map != 0 ? field.density_map : white_texture_);
+        gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
+        gl_.DrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(patch.index_count), GL_UNSIGNED_INT,
+                                              nullptr, static_cast<GLsizei>(draw.instance_count), draw.first_instance);
+    }
+    return GRASS_SUCCESS;
+}
+
+} // namespace grass

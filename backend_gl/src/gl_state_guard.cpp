@@ -1,0 +1,94 @@
+#include "gl_state_guard.hpp"
+
+namespace grass {
+
+namespace {
+
+void set_enabled(const GlFunctions& gl, GLenum capability, GLboolean enabled) {
+    if (enabled) {
+        gl.Enable(capability);
+    } else {
+        gl.Disable(capability);
+    }
+}
+
+constexpr GLenum kUnpackParameters[] = {
+    GL_UNPACK_ALIGNMENT,  GL_UNPACK_ROW_LENGTH,  GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS,
+    GL_UNPACK_SWAP_BYTES, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES,
+};
+
+static_assert(sizeof(kUnpackParameters) / sizeof(kUnpackParameters[0]) == 7, "GlUnpackStateGuard::kParameters");
+
+} // namespace
+
+GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl) : gl_(gl) {
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &program_);
+    gl.GetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array_);
+    gl.GetIntegerv(GL_ARRAY_BUFFER_BINDING, &array_buffer_);
+    gl.GetIntegerv(GL_UNIFORM_BUFFER_BINDING, &uniform_buffer_);
+    for (GLuint i = 0; i < kUniformBindings; ++i) {
+        gl.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, i, &uniform_bindings_[i].buffer);
+        gl.GetInteger64i_v(GL_UNIFORM_BUFFER_START, i, &uniform_bindings_[i].start);
+        gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, i, &uniform_bindings_[i].size);
+    }
+    gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
+    gl.ActiveTexture(GL_TEXTURE0);
+    gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d_unit0_);
+    gl.GetIntegerv(GL_SAMPLER_BINDING, &sampler_unit0_);
+    gl.GetIntegerv(GL_VIEWPORT, viewport_);
+    depth_test_ = gl.IsEnabled(GL_DEPTH_TEST);
+    gl.GetIntegerv(GL_DEPTH_FUNC, &depth_func_);
+    gl.GetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
+    cull_face_ = gl.IsEnabled(GL_CULL_FACE);
+    blend_ = gl.IsEnabled(GL_BLEND);
+    multisample_ = gl.IsEnabled(GL_MULTISAMPLE);
+    alpha_to_coverage_ = gl.IsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    gl.GetIntegerv(GL_POLYGON_MODE, polygon_mode_); // core profiles report front and back alike
+}
+
+GlDrawStateGuard::~GlDrawStateGuard() {
+    const GlFunctions& gl = gl_;
+    gl.UseProgram(static_cast<GLuint>(program_));
+    gl.BindVertexArray(static_cast<GLuint>(vertex_array_)); // brings back its element buffer
+    gl.BindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer_));
+    for (GLuint i = 0; i < kUniformBindings; ++i) {
+        const UniformBinding& b = uniform_bindings_[i];
+        // A whole-buffer binding (glBindBufferBase) reports start 0 and size 0.
+        if (b.buffer != 0 && b.size > 0) {
+            gl.BindBufferRange(GL_UNIFORM_BUFFER, i, static_cast<GLuint>(b.buffer), static_cast<GLintptr>(b.start),
+                               static_cast<GLsizeiptr>(b.size));
+        } else {
+            gl.BindBufferBase(GL_UNIFORM_BUFFER, i, static_cast<GLuint>(b.buffer));
+        }
+    }
+    gl.BindBuffer(GL_UNIFORM_BUFFER, static_cast<GLuint>(uniform_buffer_));
+    // Unit 0 is active (set in the constructor).
+    gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d_unit0_));
+    gl.BindSampler(0, static_cast<GLuint>(sampler_unit0_));
+    gl.ActiveTexture(static_cast<GLenum>(active_texture_));
+    gl.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    set_enabled(gl, GL_DEPTH_TEST, depth_test_);
+    gl.DepthFunc(static_cast<GLenum>(depth_func_));
+    gl.DepthMask(depth_mask_);
+    set_enabled(gl, GL_CULL_FACE, cull_face_);
+    set_enabled(gl, GL_BLEND, blend_);
+    set_enabled(gl, GL_MULTISAMPLE, multisample_);
+    set_enabled(gl, GL_SAMPLE_ALPHA_TO_COVERAGE, alpha_to_coverage_);
+    gl.PolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+}
+
+GlUnpackStateGuard::GlUnpackStateGuard(const GlFunctions& gl, GLint alignment) : gl_(gl) {
+    gl.GetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack_buffer_);
+    for (int i = 0; i < kParameters; ++i) gl.GetIntegerv(kUnpackParameters[i], &values_[i]);
+    if (unpack_buffer_ != 0) gl.BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+    for (int i = 0; i < kParameters; ++i) {
+        gl.PixelStorei(kUnpackParameters[i], kUnpackParameters[i] == GL_UNPACK_ALIGNMENT ? alignment : 0);
+    }
+}
+
+GlUnpackStateGuard::~GlUnpackStateGuard() {
+    for (int i = 0; i < kParameters; ++i) gl_.PixelStorei(kUnpackParameters[i], values_[i]);
+    if (unpack_buffer_ != 0) gl_.BindBuffer(GL_PIXEL_UNPACK_BUFFER, static_cast<GLuint>(unpack_buffer_));
+}
+
+} // namespace grass

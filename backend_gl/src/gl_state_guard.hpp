@@ -1,0 +1,64 @@
+// Saves the host's GL state that the backend changes and restores it on scope exit.
+#pragma once
+
+#include "gl_functions.hpp"
+
+#include <cstdint>
+
+namespace grass {
+
+// Around drawing: exactly the state grass_gl.h documents for grass_gl_render. On
+// construction texture unit 0 is made active (the unit the backend binds).
+class GlDrawStateGuard {
+public:
+    explicit GlDrawStateGuard(const GlFunctions& gl);
+    ~GlDrawStateGuard();
+    GlDrawStateGuard(const GlDrawStateGuard&) = delete;
+    GlDrawStateGuard& operator=(const GlDrawStateGuard&) = delete;
+
+private:
+    struct UniformBinding {
+        GLint buffer;
+        GLint64 start;
+        GLint64 size;
+    };
+    static constexpr GLuint kUniformBindings = 2; // Frame (0) and Field (1)
+
+    const GlFunctions& gl_;
+    GLint program_ = 0;
+    GLint vertex_array_ = 0;
+    GLint array_buffer_ = 0;
+    GLint uniform_buffer_ = 0; // the generic binding, which glBindBufferRange also changes
+    UniformBinding uniform_bindings_[kUniformBindings] = {};
+    GLint active_texture_ = 0;
+    GLint texture_2d_unit0_ = 0;
+    GLint sampler_unit0_ = 0;
+    GLint viewport_[4] = {0, 0, 0, 0};
+    GLboolean depth_test_ = GL_FALSE;
+    GLint depth_func_ = GL_LESS;
+    GLboolean depth_mask_ = GL_TRUE;
+    GLboolean cull_face_ = GL_FALSE;
+    GLboolean blend_ = GL_FALSE;
+    GLboolean multisample_ = GL_FALSE;
+    GLboolean alpha_to_coverage_ = GL_FALSE;
+    GLint polygon_mode_[2] = {GL_FILL, GL_FILL};
+};
+
+// Around texture uploads from client memory: the unpack pixel-store state and the pixel
+// unpack buffer (a host's bound PBO would turn our pointer into an offset). On
+// construction they are set for tightly packed rows of `alignment`-byte texels.
+class GlUnpackStateGuard {
+public:
+    GlUnpackStateGuard(const GlFunctions& gl, GLint alignment);
+    ~GlUnpackStateGuard();
+    GlUnpackStateGuard(const GlUnpackStateGuard&) = delete;
+    GlUnpackStateGuard& operator=(const GlUnpackStateGuard&) = delete;
+
+private:
+    static constexpr int kParameters = 7;
+    const GlFunctions& gl_;
+    GLint unpack_buffer_ = 0;
+    GLint values_[kParameters] = {};
+};
+
+} // namespace grass

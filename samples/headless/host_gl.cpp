@@ -1,0 +1,511 @@
+// The headless GL host: a GL 4.5 core context without a window (EGL surfaceless, or
+// OSMesa when EGL cannot give one or GRASS_HOST_GL=osmesa), an offscreen sRGB colour +
+// depth target, and the frame around grass_gl_render. Like grass, it links no GL
+// library: its own GL calls go through a table loaded from the context's proc loader.
+//
+// GRASS_HOST_GL: unset = EGL, then OSMesa; "egl" = EGL only; "osmesa" = OSMesa only.
+#include "host_factories.hpp"
+
+#include <grass/grass_gl.h>
+
+#define EGL_NO_X11 1 // keep Xlib's macros (None, Bool, Status) out
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/glcorearb.h>
+#include <dlfcn.h>
+#include <link.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace grass_host {
+
+namespace {
+
+#define GRASS_HOST_GL_FUNCTIONS(X)                                                  \
+    X(PFNGLGETERRORPROC, GetError)                                                  \
+    X(PFNGLGETSTRINGPROC, GetString)                                                \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                            \
+    X(PFNGLENABLEPROC, Enable)                                                      \
+    X(PFNGLDISABLEPROC, Disable)                                                    \
+    X(PFNGLVIEWPORTPROC, Viewport)                                                  \
+    X(PFNGLSCISSORPROC, Scissor)                                                    \
+    X(PFNGLDEPTHMASKPROC, DepthMask)                                                \
+    X(PFNGLCOLORMASKPROC, ColorMask)                                                \
+    X(PFNGLPIXELSTOREIPROC, PixelStorei)                                            \
+    X(PFNGLCREATERENDERBUFFERSPROC, CreateRenderbuffers)                            \
+    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                            \
+    X(PFNGLNAMEDRENDERBUFFERSTORAGEMULTISAMPLEPROC, NamedRenderbufferStorageMultisample) \
+    X(PFNGLCREATEFRAMEBUFFERSPROC, CreateFramebuffers)                              \
+    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                              \
+    X(PFNGLNAMEDFRAMEBUFFERRENDERBUFFERPROC, NamedFramebufferRenderbuffer)          \
+    X(PFNGLCHECKNAMEDFRAMEBUFFERSTATUSPROC, CheckNamedFramebufferStatus)            \
+    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                    \
+    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                                        \
+    X(PFNGLBLITNAMEDFRAMEBUFFERPROC, BlitNamedFramebuffer)                          \
+    X(PFNGLREADPIXELSPROC, ReadPixels)                                              \
+    X(PFNGLDEBUGMESSAGECALLBACKPROC, DebugMessageCallback)                          \
+    X(PFNGLDEBUGMESSAGECONTROLPROC, DebugMessageControl)
+
+struct HostGl {
+#define GRASS_HOST_GL_DECLARE(type, name) type name = nullptr;
+    GRASS_HOST_GL_FUNCTIONS(GRASS_HOST_GL_DECLARE)
+#undef GRASS_HOST_GL_DECLARE
+};
+
+// OSMesa, loaded at run time (osmesa.h would pull in the legacy gl.h).
+using OSMesaContext = void*;
+using OsMesaProc = void (*)();
+using OsMesaCreateContextAttribsFn = OSMesaContext (*)(const int* attributes, OSMesaContext share);
+using OsMesaMakeCurrentFn = unsigned char (*)(OSMesaContext, void* buffer, GLenum type, GLsizei width, GLsizei height);
+using OsMesaDestroyContextFn = void (*)(OSMesaContext);
+using OsMesaGetProcAddressFn = OsMesaProc (*)(const char* name);
+constexpr int kOsMesaFormat = 0x22;
+constexpr int kOsMesaRgba = 0x1908; // GL_RGBA
+constexpr int kOsMesaDepthBits = 0x30;
+constexpr int kOsMesaStencilBits = 0x31;
+constexpr int kOsMesaAccumBits = 0x32;
+constexpr int kOsMesaProfile = 0x33;
+constexpr int kOsMesaCoreProfile = 0x34;
+constexpr int kOsMesaContextMajorVersion = 0x36;
+constexpr int kOsMesaContextMinorVersion = 0x37;
+constexpr GLsizei kOsMesaDummySize = 16; // OSMesa needs a buffer to make current; we draw to FBOs
+
+// Mesa unloads its DRI driver (and LLVM with it) at eglTerminate. Keeping the loaded
+// drivers resident lets leak checkers name the driver's own allocations (so that
+// tests/sanitizer/lsan.supp can match them) and spares each new host a reload.
+void keep_gl_drivers_resident() {
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, size_t, void*) {
+            const char* path = info->dlpi_name;
+            if (path && (std::strstr(path, "_dri.so") || std::strstr(path, "libgallium"))) {
+                dlopen(path, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE); // only pins what is loaded
+            }
+            return 0;
+        },
+        nullptr);
+}
+
+std::string hex(unsigned value) {
+    char text[16];
+    std::snprintf(text, sizeof(text), "0x%04X", value);
+    return text;
+}
+
+class GlHost final : public Host {
+public:
+    explicit GlHost(const TargetDesc& target) : Host(target) {}
+    ~GlHost() override;
+    GlHost(const GlHost&) = delete;
+    GlHost& operator=(const GlHost&) = delete;
+
+    bool init(std::string* error);
+
+    grass_backend backend() const override { return GRASS_BACKEND_GL; }
+    std::string device_name() const override { return device_name_; }
+    grass_result create_context(const grass_context_desc& desc, grass_context** out) override;
+    void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const override;
+    grass_result render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
+                        std::string* error) override;
+    uint32_t validation_messages() const override { return messages_; }
+    std::string validation_log() const override { return log_; }
+    void* gl_proc_address(const char* name) const override;
+
+private:
+    enum class Path { none, egl, osmesa };
+
+    bool init_egl(std::string* error);
+    void release_egl();
+    bool init_osmesa(std::string* error);
+    static void* load_proc(void* user_data, const char* name);
+    bool load_functions(std::string* error);
+    bool create_target(std::string* error);
+    void clear_rect(const float color[4], float depth, const int32_t rect[4]);
+    uint32_t count_gl_errors(const char* where);
+    static void APIENTRY debug_callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
+                                         const GLchar* message, const void* user_param);
+
+    Path path_ = Path::none;
+    EGLDisplay egl_display_ = EGL_NO_DISPLAY;
+    EGLContext egl_context_ = EGL_NO_CONTEXT;
+    void* osmesa_library_ = nullptr;
+    OSMesaContext osmesa_context_ = nullptr;
+    OsMesaMakeCurrentFn osmesa_make_current_ = nullptr;
+    OsMesaDestroyContextFn osmesa_destroy_context_ = nullptr;
+    OsMesaGetProcAddressFn osmesa_get_proc_address_ = nullptr;
+    std::vector<uint8_t> osmesa_buffer_;
+
+    HostGl gl_;
+    bool gl_loaded_ = false;
+    bool debug_output_ = false;
+    std::string device_name_;
+    GLuint draw_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0; // multisampled when target.samples > 1
+    GLuint resolve_fbo_ = 0, resolve_rb_ = 0;           // only when multisampled
+    std::vector<uint8_t> readback_;
+    uint32_t messages_ = 0;
+    uint32_t debug_errors_ = 0;         // errors seen by debug_callback
+    uint32_t debug_errors_counted_ = 0; // debug_errors_ at the last count_gl_errors
+    std::string log_;
+};
+
+bool GlHost::init(std::string* error) {
+    const char* choice = std::getenv("GRASS_HOST_GL");
+    const std::string which = choice ? choice : "";
+    if (!which.empty() && which != "egl" && which != "osmesa") {
+        *error = "GRASS_HOST_GL is '" + which + "'; expected 'egl' or 'osmesa' (or unset)";
+        return false;
+    }
+    std::string egl_error, osmesa_error;
+    if (which != "osmesa") {
+        if (init_egl(&egl_error)) {
+            path_ = Path::egl;
+        } else {
+            release_egl();
+        }
+    }
+    if (path_ == Path::none && which != "egl" && init_osmesa(&osmesa_error)) path_ = Path::osmesa;
+    if (path_ == Path::none) {
+        *error = "no GL 4.5 core context:";
+        if (!egl_error.empty()) *error += " EGL surfaceless: " + egl_error + ";";
+        if (!osmesa_error.empty()) *error += " OSMesa: " + osmesa_error;
+        return false;
+    }
+    if (!load_functions(error)) return false;
+
+    GLint major = 0, minor = 0;
+    gl_.GetIntegerv(GL_MAJOR_VERSION, &major);
+    gl_.GetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major < 4 || (major == 4 && minor < 5)) {
+        *error = "the GL context is " + std::to_string(major) + "." + std::to_string(minor) + "; 4.5 is required";
+        return false;
+    }
+    const auto* renderer = reinterpret_cast<const char*>(gl_.GetString(GL_RENDERER));
+    device_name_ = std::string(renderer ? renderer : "unknown GL renderer") +
+                   (path_ == Path::egl ? " (EGL surfaceless)" : " (OSMesa)");
+
+    // KHR_debug is core in 4.3; a debug context reports everything, others at least errors.
+    gl_.DebugMessageCallback(&GlHost::debug_callback, this);
+    gl_.DebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
+    gl_.Enable(GL_DEBUG_OUTPUT);
+    gl_.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    debug_output_ = true;
+
+    if (!create_target(error)) return false;
+    count_gl_errors("host initialisation");
+    return true;
+}
+
+bool GlHost::init_egl(std::string* error) {
+    const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (!client_extensions || !std::strstr(client_extensions, "EGL_MESA_platform_surfaceless")) {
+        *error = "the EGL client does not offer EGL_MESA_platform_surfaceless";
+        return false;
+    }
+    auto get_platform_display =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (!get_platform_display) {
+        *error = "eglGetPlatformDisplayEXT is not available";
+        return false;
+    }
+    egl_display_ = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (egl_display_ == EGL_NO_DISPLAY) {
+        *error = "eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA) failed with " + hex(eglGetError());
+        return false;
+    }
+    EGLint major = 0, minor = 0;
+    if (!eglInitialize(egl_display_, &major, &minor)) {
+        *error = "eglInitialize failed with " + hex(eglGetError());
+        egl_display_ = EGL_NO_DISPLAY;
+        return false;
+    }
+    const char* extensions = eglQueryString(egl_display_, EGL_EXTENSIONS);
+    const bool configless = extensions && (std::strstr(extensions, "EGL_KHR_no_config_context") ||
+                                           std::strstr(extensions, "EGL_MESA_configless_context"));
+    const bool surfaceless = extensions && std::strstr(extensions, "EGL_KHR_surfaceless_context");
+    if (!configless || !surfaceless || !eglBindAPI(EGL_OPENGL_API)) {
+        *error = "the EGL display lacks EGL_KHR_no_config_context, EGL_KHR_surfaceless_context or desktop GL";
+        return false;
+    }
+    EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+        EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+        EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE,
+    };
+    egl_context_ = eglCreateContext(egl_display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    if (egl_context_ == EGL_NO_CONTEXT) {
+        attributes[6] = EGL_NONE; // retry without the debug flag
+        egl_context_ = eglCreateContext(egl_display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    }
+    if (egl_context_ == EGL_NO_CONTEXT) {
+        *error = "eglCreateContext(GL 4.5 core) failed with " + hex(eglGetError());
+        return false;
+    }
+    if (!eglMakeCurrent(egl_display_, EGL_NO_SURFACE, EGL_NO_SURFACE, egl_context_)) {
+        *error = "eglMakeCurrent(EGL_NO_SURFACE) failed with " + hex(eglGetError());
+        return false;
+    }
+    keep_gl_drivers_resident();
+    return true;
+}
+
+bool GlHost::init_osmesa(std::string* error) {
+    osmesa_library_ = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+    if (!osmesa_library_) {
+        const char* why = dlerror();
+        *error = std::string("dlopen(libOSMesa.so.8) failed: ") + (why ? why : "unknown reason");
+        return false;
+    }
+    auto create = reinterpret_cast<OsMesaCreateContextAttribsFn>(dlsym(osmesa_library_, "OSMesaCreateContextAttribs"));
+    osmesa_make_current_ = reinterpret_cast<OsMesaMakeCurrentFn>(dlsym(osmesa_library_, "OSMesaMakeCurrent"));
+    osmesa_destroy_context_ = reinterpret_cast<OsMesaDestroyContextFn>(dlsym(osmesa_library_, "OSMesaDestroyContext"));
+    osmesa_get_proc_address_ =
+        reinterpret_cast<OsMesaGetProcAddressFn>(dlsym(osmesa_library_, "OSMesaGetProcAddress"));
+    if (!create || !osmesa_make_current_ || !osmesa_destroy_context_ || !osmesa_get_proc_address_) {
+        *error = "libOSMesa.so.8 lacks OSMesaCreateContextAttribs, OSMesaMakeCurrent, OSMesaDestroyContext or "
+                 "OSMesaGetProcAddress";
+        return false;
+    }
+    const int attributes[] = {
+        kOsMesaFormat, kOsMesaRgba, kOsMesaDepthBits, 0, kOsMesaStencilBits, 0, kOsMesaAccumBits, 0,
+        kOsMesaProfile, kOsMesaCoreProfile, kOsMesaContextMajorVersion, 4, kOsMesaContextMinorVersion, 5, 0,
+    };
+    osmesa_context_ = create(attributes, nullptr);
+    if (!osmesa_context_) {
+        *error = "OSMesaCreateContextAttribs(GL 4.5 core) failed";
+        return false;
+    }
+    osmesa_buffer_.assign(size_t(kOsMesaDummySize) * kOsMesaDummySize * 4, 0);
+    if (!osmesa_make_current_(osmesa_context_, osmesa_buffer_.data(), GL_UNSIGNED_BYTE, kOsMesaDummySize,
+                              kOsMesaDummySize)) {
+        *error = "OSMesaMakeCurrent failed";
+        return false;
+    }
+    return true;
+}
+
+void* GlHost::gl_proc_address(const char* name) const {
+    if (path_ == Path::egl) return reinterpret_cast<void*>(eglGetProcAddress(name));
+    if (path_ == Path::osmesa) return reinterpret_cast<void*>(osmesa_get_proc_address_(name));
+    return nullptr;
+}
+
+void* GlHost::load_proc(void* user_data, const char* name) {
+    return static_cast<const GlHost*>(user_data)->gl_proc_address(name);
+}
+
+bool GlHost::load_functions(std::string* error) {
+#define GRASS_HOST_GL_LOAD(type, name)                                              \
+    gl_.name = reinterpret_cast<type>(gl_proc_address("gl" #name));                    \
+    if (!gl_.name) {                                                                \
+        *error = "the GL loader has no gl" #name;                                   \
+        return false;                                                               \
+    }
+    GRASS_HOST_GL_FUNCTIONS(GRASS_HOST_GL_LOAD)
+#undef GRASS_HOST_GL_LOAD
+    gl_loaded_ = true;
+    return true;
+}
+
+bool GlHost::create_target(std::string* error) {
+    const TargetDesc& t = target_;
+    GLint max_size = 0, max_samples = 0;
+    gl_.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+    gl_.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    if (t.width == 0 || t.height == 0 || t.width > uint32_t(max_size) || t.height > uint32_t(max_size)) {
+        *error = "target size " + std::to_string(t.width) + "x" + std::to_string(t.height) + " is outside 1.." +
+                 std::to_string(max_size);
+        return false;
+    }
+    if (t.samples == 0 || t.samples > uint32_t(max_samples)) {
+        *error = "target.samples is " + std::to_string(t.samples) + "; this device supports 1.." +
+                 std::to_string(max_samples);
+        return false;
+    }
+    const GLsizei w = GLsizei(t.width), h = GLsizei(t.height);
+    const GLsizei samples = t.samples > 1 ? GLsizei(t.samples) : 0;
+    gl_.CreateRenderbuffers(1, &color_rb_);
+    gl_.NamedRenderbufferStorageMultisample(color_rb_, samples, GL_SRGB8_ALPHA8, w, h);
+    gl_.CreateRenderbuffers(1, &depth_rb_);
+    gl_.NamedRenderbufferStorageMultisample(depth_rb_, samples, GL_DEPTH_COMPONENT32F, w, h);
+    gl_.CreateFramebuffers(1, &draw_fbo_);
+    gl_.NamedFramebufferRenderbuffer(draw_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb_);
+    gl_.NamedFramebufferRenderbuffer(draw_fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_rb_);
+    GLenum status = gl_.CheckNamedFramebufferStatus(draw_fbo_, GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        *error = "the offscreen framebuffer is incomplete: status " + hex(status);
+        return false;
+    }
+    if (samples > 0) {
+        gl_.CreateRenderbuffers(1, &resolve_rb_);
+        gl_.NamedRenderbufferStorageMultisample(resolve_rb_, 0, GL_SRGB8_ALPHA8, w, h);
+        gl_.CreateFramebuffers(1, &resolve_fbo_);
+        gl_.NamedFramebufferRenderbuffer(resolve_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_rb_);
+        status = gl_.CheckNamedFramebufferStatus(resolve_fbo_, GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE) {
+            *error = "the resolve framebuffer is incomplete: status " + hex(status);
+            return false;
+        }
+    }
+    return true;
+}
+
+GlHost::~GlHost() {
+    if (gl_loaded_) {
+        const GLuint framebuffers[] = {draw_fbo_, resolve_fbo_};
+        const GLuint renderbuffers[] = {color_rb_, depth_rb_, resolve_rb_};
+        gl_.DeleteFramebuffers(2, framebuffers); // zero names are ignored
+        gl_.DeleteRenderbuffers(3, renderbuffers);
+        if (debug_output_) gl_.DebugMessageCallback(nullptr, nullptr);
+    }
+    release_egl();
+    if (osmesa_context_) {
+        osmesa_make_current_(nullptr, nullptr, 0, 0, 0);
+        osmesa_destroy_context_(osmesa_context_);
+    }
+    if (osmesa_library_) dlclose(osmesa_library_);
+}
+
+void GlHost::release_egl() {
+    if (egl_display_ == EGL_NO_DISPLAY) return;
+    eglMakeCurrent(egl_display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (egl_context_ != EGL_NO_CONTEXT) eglDestroyContext(egl_display_, egl_context_);
+    eglTerminate(egl_display_);
+    eglReleaseThread();
+    egl_display_ = EGL_NO_DISPLAY;
+    egl_context_ = EGL_NO_CONTEXT;
+}
+
+grass_result GlHost::create_context(const grass_context_desc& desc, grass_context** out) {
+    grass_gl_desc gl_desc = grass_gl_default_desc();
+    gl_desc.get_proc_address = &GlHost::load_proc;
+    gl_desc.get_proc_address_user_data = this;
+    return grass_gl_create_context(GRASS_HEADER_VERSION, &desc, &gl_desc, out);
+}
+
+// Right-handed, looking down -z, clip z in -1..1 (gluPerspective).
+void GlHost::projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const {
+    const float f = 1.0f / std::tan(0.5f * fovy_radians);
+    for (int i = 0; i < 16; ++i) out[i] = 0.0f;
+    out[0] = f / aspect;
+    out[5] = f;
+    out[10] = (far_m + near_m) / (near_m - far_m);
+    out[11] = -1.0f;
+    out[14] = 2.0f * far_m * near_m / (near_m - far_m);
+}
+
+// Clears colour and depth inside `rect` (x, y, width, height; GL bottom-left origin).
+void GlHost::clear_rect(const float color[4], float depth, const int32_t rect[4]) {
+    gl_.Enable(GL_SCISSOR_TEST);
+    gl_.Scissor(rect[0], rect[1], rect[2], rect[3]);
+    gl_.ClearBufferfv(GL_COLOR, 0, color);
+    gl_.ClearBufferfv(GL_DEPTH, 0, &depth);
+    gl_.Disable(GL_SCISSOR_TEST);
+}
+
+grass_result GlHost::render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
+                            std::string* error) {
+    const int32_t w = int32_t(target_.width), h = int32_t(target_.height);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
+    gl_.Enable(GL_FRAMEBUFFER_SRGB); // linear shader output and clear colours are sRGB-encoded
+    gl_.Viewport(0, 0, w, h);
+    gl_.DepthMask(GL_TRUE);
+    gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    const int32_t whole[4] = {0, 0, w, h};
+    clear_rect(target_.clear_color, 1.0f, whole);
+
+    if (occluder) {
+        // The window depth of a camera-facing plane at view-space z = -distance.
+        const float* p = view.projection;
+        const float z = -occluder->distance;
+        const float clip_z = p[10] * z + p[14];
+        const float clip_w = p[11] * z + p[15];
+        const float depth = 0.5f * (clip_z / clip_w) + 0.5f;
+        const int32_t x0 = std::max(occluder->x0, 0), x1 = std::min(occluder->x1, w);
+        const int32_t y0 = std::max(occluder->y0, 0), y1 = std::min(occluder->y1, h);
+        if (x1 > x0 && y1 > y0) {
+            const float color[4] = {occluder->color[0], occluder->color[1], occluder->color[2], 1.0f};
+            const int32_t rect[4] = {x0, h - y1, x1 - x0, y1 - y0}; // top-left -> bottom-left origin
+            clear_rect(color, depth, rect);
+        }
+    }
+
+    grass_result result = grass_begin_frame(context, &view);
+    if (result == GRASS_SUCCESS) {
+        result = grass_gl_render(context);
+        const grass_result end = grass_end_frame(context);
+        if (result == GRASS_SUCCESS) result = end;
+    }
+    if (result != GRASS_SUCCESS) {
+        if (error) *error = grass_last_error(context);
+        gl_.Disable(GL_FRAMEBUFFER_SRGB);
+        return result;
+    }
+
+    GLuint read_fbo = draw_fbo_;
+    if (resolve_fbo_ != 0) {
+        gl_.BlitNamedFramebuffer(draw_fbo_, resolve_fbo_, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        read_fbo = resolve_fbo_;
+    }
+    gl_.Disable(GL_FRAMEBUFFER_SRGB); // read the stored sRGB bytes, unconverted
+    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, read_fbo);
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    const size_t row = size_t(w) * 4;
+    readback_.resize(row * size_t(h));
+    gl_.ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, readback_.data());
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, draw_fbo_); // stays bound, as a host's scene target would
+
+    out->width = target_.width;
+    out->height = target_.height;
+    out->rgba.resize(readback_.size());
+    for (int32_t y = 0; y < h; ++y) { // GL rows run bottom-up
+        std::memcpy(&out->rgba[size_t(y) * row], &readback_[size_t(h - 1 - y) * row], row);
+    }
+    if (count_gl_errors("the frame") != 0 && error) *error = log_;
+    return GRASS_SUCCESS;
+}
+
+// Drains glGetError. With debug output on, GL errors also arrive as debug messages; the
+// flags then count only when debug output missed them, so no error is counted twice.
+uint32_t GlHost::count_gl_errors(const char* where) {
+    const bool debug_reported = debug_errors_ != debug_errors_counted_;
+    debug_errors_counted_ = debug_errors_;
+    uint32_t errors = 0;
+    for (int i = 0; i < 64; ++i) {
+        const GLenum e = gl_.GetError();
+        if (e == GL_NO_ERROR) break;
+        ++errors;
+        if (!debug_reported) {
+            ++messages_;
+            log_ += "glGetError: " + hex(e) + " after " + where + "\n";
+        }
+    }
+    return errors;
+}
+
+void APIENTRY GlHost::debug_callback(GLenum, GLenum type, GLuint id, GLenum, GLsizei length, const GLchar* message,
+                                       const void* user_param) {
+    if (type != GL_DEBUG_TYPE_ERROR) return;
+    auto* host = static_cast<GlHost*>(const_cast<void*>(user_param));
+    ++host->debug_errors_;
+    ++host->messages_;
+    host->log_ += "GL debug error " + std::to_string(id) + ": ";
+    host->log_.append(message, length >= 0 ? size_t(length) : std::strlen(message));
+    host->log_ += "\n";
+}
+
+} // namespace
+
+std::unique_ptr<Host> create_gl_host(const TargetDesc& target, std::string* error) {
+    auto host = std::make_unique<GlHost>(target);
+    std::string why;
+    if (!host->init(&why)) {
+        if (error) *error = "GL headless host: " + why;
+        return nullptr;
+    }
+    return host;
+}
+
+} // namespace grass_host

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages grass needs to build, render headless and run its tests.
+# Idempotent: runs apt-get only when something is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libgl-dev libegl-dev libgl1-mesa-dri libegl-mesa0 libosmesa6-dev   # GL 4.5 via llvmpipe: EGL surfaceless + OSMesa
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers          # Vulkan loader, lavapipe, validation layers
+  glslc                                                              # GLSL -> SPIR-V at build time
+  libpng-dev nlohmann-json3-dev                                      # image I/O, JSON scenes
+  libgtest-dev libbenchmark-dev                                      # tests, benchmarks
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,142 @@
+// grass_gl_render restores every piece of GL state it changes (the list in grass_gl.h):
+// the host sets unusual values, grass draws, and every value must be back.
+#include "render_fixture.hpp"
+
+#include <GL/glcorearb.h>
+
+namespace grass_test {
+namespace {
+
+struct Gl {
+    PFNGLGETINTEGERVPROC GetIntegerv;
+    PFNGLGETINTEGERI_VPROC GetIntegeri_v;
+    PFNGLGETBOOLEANVPROC GetBooleanv;
+    PFNGLISENABLEDPROC IsEnabled;
+    PFNGLENABLEPROC Enable;
+    PFNGLDISABLEPROC Disable;
+    PFNGLVIEWPORTPROC Viewport;
+    PFNGLDEPTHFUNCPROC DepthFunc;
+    PFNGLDEPTHMASKPROC DepthMask;
+    PFNGLACTIVETEXTUREPROC ActiveTexture;
+    PFNGLCREATEVERTEXARRAYSPROC CreateVertexArrays;
+    PFNGLBINDVERTEXARRAYPROC BindVertexArray;
+    PFNGLDELETEVERTEXARRAYSPROC DeleteVertexArrays;
+    PFNGLCREATEBUFFERSPROC CreateBuffers;
+    PFNGLBINDBUFFERPROC BindBuffer;
+    PFNGLBINDBUFFERBASEPROC BindBufferBase;
+    PFNGLDELETEBUFFERSPROC DeleteBuffers;
+    PFNGLGETERRORPROC GetError;
+};
+
+template <class T>
+void load(const grass_host::Host& host, T* fn, const char* name) {
+    *fn = reinterpret_cast<T>(host.gl_proc_address(name));
+    ASSERT_NE(*fn, nullptr) << name;
+}
+
+struct Snapshot {
+    GLint program, vao, array_buffer, ubo0, ubo1, active_texture, viewport[4], depth_func, polygon_mode[2];
+    GLboolean depth_mask, depth_test, cull, blend, multisample, a2c;
+    bool operator==(const Snapshot& o) const {
+        return program == o.program && vao == o.vao && array_buffer == o.array_buffer && ubo0 == o.ubo0 &&
+               ubo1 == o.ubo1 && active_texture == o.active_texture && viewport[0] == o.viewport[0] &&
+               viewport[1] == o.viewport[1] && viewport[2] == o.viewport[2] && viewport[3] == o.viewport[3] &&
+               depth_func == o.depth_func && polygon_mode[0] == o.polygon_mode[0] && depth_mask == o.depth_mask &&
+               depth_test == o.depth_test && cull == o.cull && blend == o.blend && multisample == o.multisample &&
+               a2c == o.a2c;
+    }
+};
+
+Snapshot snapshot(const Gl& gl) {
+    Snapshot s{};
+    gl.GetIntegerv(GL_CURRENT_PROGRAM, &s.program);
+    gl.GetIntegerv(GL_VERTEX_ARRAY_BINDING, &s.vao);
+    gl.GetIntegerv(GL_ARRAY_BUFFER_BINDING, &s.array_buffer);
+    gl.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 0, &s.ubo0);
+    gl.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 1, &s.ubo1);
+    gl.GetIntegerv(GL_ACTIVE_TEXTURE, &s.active_texture);
+    gl.GetIntegerv(GL_VIEWPORT, s.viewport);
+    gl.GetIntegerv(GL_DEPTH_FUNC, &s.depth_func);
+    gl.GetIntegerv(GL_POLYGON_MODE, s.polygon_mode);
+    gl.GetBooleanv(GL_DEPTH_WRITEMASK, &s.depth_mask);
+    s.depth_test = gl.IsEnabled(GL_DEPTH_TEST);
+    s.cull = gl.IsEnabled(GL_CULL_FACE);
+    s.blend = gl.IsEnabled(GL_BLEND);
+    s.multisample = gl.IsEnabled(GL_MULTISAMPLE);
+    s.a2c = gl.IsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    return s;
+}
+
+class GlStateTest : public RenderTest {};
+
+TEST_P(GlStateTest, RenderRestoresTheHostsGlState) {
+    Gl gl{};
+    load(*host, &gl.GetIntegerv, "glGetIntegerv");
+    load(*host, &gl.GetIntegeri_v, "glGetIntegeri_v");
+    load(*host, &gl.GetBooleanv, "glGetBooleanv");
+    load(*host, &gl.IsEnabled, "glIsEnabled");
+    load(*host, &gl.Enable, "glEnable");
+    load(*host, &gl.Disable, "glDisable");
+    load(*host, &gl.Viewport, "glViewport");
+    load(*host, &gl.DepthFunc, "glDepthFunc");
+    load(*host, &gl.DepthMask, "glDepthMask");
+    load(*host, &gl.ActiveTexture, "glActiveTexture");
+    load(*host, &gl.CreateVertexArrays, "glCreateVertexArrays");
+    load(*host, &gl.BindVertexArray, "glBindVertexArray");
+    load(*host, &gl.DeleteVertexArrays, "glDeleteVertexArrays");
+    load(*host, &gl.CreateBuffers, "glCreateBuffers");
+    load(*host, &gl.BindBuffer, "glBindBuffer");
+    load(*host, &gl.BindBufferBase, "glBindBufferBase");
+    load(*host, &gl.DeleteBuffers, "glDeleteBuffers");
+
+    make_field(field_desc(4));
+    const double eye[3] = {0.5, 2.0, 0.5}, target[3] = {0.5, 0.0, 0.5001};
+    const grass_view_desc v = view(eye, target);
+    // A first frame through the host (its FBO stays bound afterwards).
+    render(v);
+
+    // The host's unusual state.
+    GLuint vao = 0, buffers[3] = {0, 0, 0};
+    gl.CreateVertexArrays(1, &vao);
+    gl.CreateBuffers(3, buffers);
+    gl.BindVertexArray(vao);
+    gl.BindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+    gl.BindBufferBase(GL_UNIFORM_BUFFER, 0, buffers[1]);
+    gl.BindBufferBase(GL_UNIFORM_BUFFER, 1, buffers[2]);
+    gl.ActiveTexture(GL_TEXTURE3);
+    gl.Viewport(3, 5, 17, 19);
+    gl.DepthFunc(GL_GREATER);
+    gl.DepthMask(GL_FALSE);
+    gl.Disable(GL_DEPTH_TEST);
+    gl.Enable(GL_CULL_FACE);
+    gl.Enable(GL_BLEND);
+    const Snapshot before = snapshot(gl);
+
+    ASSERT_EQ(grass_begin_frame(ctx, &v), GRASS_SUCCESS) << log;
+    ASSERT_EQ(grass_gl_render(ctx), GRASS_SUCCESS) << log;
+    ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+    const Snapshot after = snapshot(gl);
+    EXPECT_TRUE(before == after);
+    EXPECT_EQ(after.vao, static_cast<GLint>(vao));
+    EXPECT_EQ(after.viewport[2], 17);
+    EXPECT_EQ(after.depth_func, GL_GREATER);
+    EXPECT_EQ(after.blend, GL_TRUE);
+    EXPECT_EQ(after.active_texture, GL_TEXTURE3);
+    EXPECT_EQ(after.ubo1, static_cast<GLint>(buffers[2]));
+
+    gl.BindVertexArray(0);
+    gl.DeleteVertexArrays(1, &vao);
+    gl.DeleteBuffers(3, buffers);
+    gl.Disable(GL_CULL_FACE);
+    gl.Disable(GL_BLEND);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthMask(GL_TRUE);
+    gl.DepthFunc(GL_LESS);
+    gl.ActiveTexture(GL_TEXTURE0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, GlStateTest, ::testing::Values(GRASS_BACKEND_GL),
+                         [](const auto& p) { return backend_name(p.param); });
+
+} // namespace
+} // namespace grass_test
