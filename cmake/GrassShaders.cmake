@@ -4,16 +4,22 @@
 set(GRASS_SHADER_DIR "${PROJECT_SOURCE_DIR}/api/shaders")
 file(GLOB GRASS_SHADER_INCLUDES CONFIGURE_DEPENDS "${GRASS_SHADER_DIR}/*.glsl")
 
+# Both functions read shaders from GRASS_SHADER_DIR, or from SHADER_DIR when the caller sets
+# it (the sample hosts keep their own shaders).
+
 # grass_embed_glsl(<out_cpp> <namespace> <shader>...): shader source strings for GL.
 function(grass_embed_glsl out_cpp namespace)
+  if(NOT SHADER_DIR)
+    set(SHADER_DIR "${GRASS_SHADER_DIR}")
+  endif()
   set(inputs "")
   foreach(s IN LISTS ARGN)
-    list(APPEND inputs "${GRASS_SHADER_DIR}/${s}")
+    list(APPEND inputs "${SHADER_DIR}/${s}")
   endforeach()
   string(REPLACE ";" "\\;" inputs_arg "${inputs}")
   add_custom_command(
     OUTPUT "${out_cpp}"
-    COMMAND ${CMAKE_COMMAND} "-DINPUTS=${inputs_arg}" "-DINCLUDE_DIR=${GRASS_SHADER_DIR}"
+    COMMAND ${CMAKE_COMMAND} "-DINPUTS=${inputs_arg}" "-DINCLUDE_DIR=${SHADER_DIR}"
             "-DOUTPUT=${out_cpp}" "-DNAMESPACE=${namespace}" -P "${PROJECT_SOURCE_DIR}/cmake/EmbedGlsl.cmake"
     DEPENDS ${inputs} ${GRASS_SHADER_INCLUDES} "${PROJECT_SOURCE_DIR}/cmake/EmbedGlsl.cmake"
     COMMENT "Embedding GLSL for the GL backend"
@@ -22,6 +28,9 @@ endfunction()
 
 # grass_compile_spirv(<out_cpp_list_var> <namespace> <shader>...): SPIR-V word arrays.
 function(grass_compile_spirv out_var namespace)
+  if(NOT SHADER_DIR)
+    set(SHADER_DIR "${GRASS_SHADER_DIR}")
+  endif()
   find_program(GRASS_GLSLC glslc REQUIRED)
   set(outputs "")
   foreach(s IN LISTS ARGN)
@@ -31,11 +40,11 @@ function(grass_compile_spirv out_var namespace)
     add_custom_command(
       OUTPUT "${cpp}"
       COMMAND ${CMAKE_COMMAND} -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/spirv"
-      COMMAND ${GRASS_GLSLC} --target-env=vulkan1.1 -Werror -O -mfmt=c -I "${GRASS_SHADER_DIR}"
-              -o "${inc}" "${GRASS_SHADER_DIR}/${s}"
+      COMMAND ${GRASS_GLSLC} --target-env=vulkan1.1 -Werror -O -mfmt=c -I "${SHADER_DIR}"
+              -o "${inc}" "${SHADER_DIR}/${s}"
       COMMAND ${CMAKE_COMMAND} "-DINPUT=${inc}" "-DNAME=${name}" "-DOUTPUT=${cpp}" "-DNAMESPACE=${namespace}"
               -P "${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake"
-      DEPENDS "${GRASS_SHADER_DIR}/${s}" ${GRASS_SHADER_INCLUDES} "${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake"
+      DEPENDS "${SHADER_DIR}/${s}" ${GRASS_SHADER_INCLUDES} "${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake"
       COMMENT "Compiling ${s} to SPIR-V"
       VERBATIM)
     list(APPEND outputs "${cpp}")

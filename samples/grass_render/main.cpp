@@ -28,6 +28,7 @@ void usage(FILE* out) {
                  "  --fov DEGREES          vertical field of view\n"
                  "  --density D            uniform density multiplier 0..1\n"
                  "  --no-mirror            turn mirrored tiling off\n"
+                 "  --no-ground            the host draws no ground under the grass\n"
                  "  --help                 this text\n");
 }
 
@@ -53,7 +54,7 @@ int main(int argc, char** argv) {
     grass_render::Scene scene = grass_render::demo_scene();
     // Options that override the scene file are applied after it is loaded.
     double camera[3], target[3];
-    bool have_camera = false, have_target = false, no_mirror = false;
+    bool have_camera = false, have_target = false, no_mirror = false, no_ground = false;
     float fov = 0.0f, density = -1.0f;
     uint32_t width = 0, height = 0, samples = 0;
 
@@ -99,6 +100,8 @@ int main(int argc, char** argv) {
             if (!(density >= 0.0f && density <= 1.0f)) return fail("--density must be in [0, 1]");
         } else if (a == "--no-mirror") {
             no_mirror = true;
+        } else if (a == "--no-ground") {
+            no_ground = true;
         } else {
             usage(stderr);
             return fail("unknown option " + a);
@@ -112,6 +115,7 @@ int main(int argc, char** argv) {
     if (fov > 0.0f) scene.fov_degrees = fov;
     if (density >= 0.0f) scene.field.density = density;
     if (no_mirror) scene.field.mirror_tiling = 0;
+    if (no_ground) scene.ground = false;
     if (width) scene.width = width, scene.height = height;
     if (samples) scene.samples = samples;
 
@@ -119,6 +123,8 @@ int main(int argc, char** argv) {
     target_desc.width = scene.width;
     target_desc.height = scene.height;
     target_desc.samples = scene.samples;
+    target_desc.ground = scene.ground;
+    std::memcpy(target_desc.ground_color, scene.ground_color, sizeof(scene.ground_color));
     auto host = grass_host::Host::create(backend, target_desc, &error);
     if (!host) return fail("cannot create the headless host: " + error);
 

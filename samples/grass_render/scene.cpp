@@ -81,7 +81,17 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
         std::ifstream in(path);
         if (!in) throw std::runtime_error("cannot open " + path);
         const json j = json::parse(in, nullptr, true, true);
-        check_keys(j, "the scene", {"patch", "field", "camera", "light", "image"});
+        check_keys(j, "the scene", {"patch", "field", "camera", "light", "image", "ground"});
+        if (j.contains("ground")) {
+            const json& g = j["ground"];
+            if (g.is_boolean()) {
+                s->ground = g.get<bool>();
+            } else {
+                check_keys(g, "\"ground\"", {"color"});
+                s->ground = true;
+                read3(g, "color", s->ground_color);
+            }
+        }
         if (j.contains("patch")) {
             const json& p = j["patch"];
             check_keys(p, "\"patch\"", {"blade_count", "subdivisions", "length", "width", "tilt", "bend", "root_color",

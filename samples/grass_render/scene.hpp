@@ -16,17 +16,20 @@ struct Scene {
     // Density map texels (R8), empty for uniform density.
     std::vector<uint8_t> density_texels;
     uint32_t density_width = 0, density_height = 0;
-    double eye[3] = {0.0, 1.2, -6.0};
-    double target[3] = {0.0, 0.0, 0.0};
+    double eye[3] = {0.0, 1.7, -6.4};
+    double target[3] = {0.0, 0.0, 1.0};
     float fov_degrees = 55.0f;
     float sun_direction[3] = {0.35f, 0.8f, 0.25f};
     float sun_color[3] = {1.0f, 0.95f, 0.85f};
     float ambient_color[3] = {0.30f, 0.36f, 0.45f};
     uint32_t width = 640, height = 360, samples = 4;
+    // The host's ground under the grass (an engine's terrain stand-in).
+    bool ground = true;
+    float ground_color[3] = {0.040f, 0.042f, 0.016f};
 };
 
 // The demo: a 12 m x 12 m lawn of 0.25 m cells centred on the origin, clustered blades,
-// a winding path of thin grass in the density map, seen from 1.2 m.
+// a winding path of thin grass in the density map, seen from 1.7 m.
 Scene demo_scene();
 
 // Reads a scene file over the demo's defaults. False and *error on a bad file or key.

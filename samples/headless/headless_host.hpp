@@ -19,6 +19,10 @@ struct TargetDesc {
     uint32_t samples = 1;                          // 1 or 4 (multisampled target, resolved for read-back)
     float clear_color[4] = {0.55f, 0.70f, 0.90f, 1.0f}; // linear RGB sky
     bool vk_dynamic_rendering = false;             // Vulkan: dynamic rendering instead of a render pass
+    // The host's own terrain: a flat ground at world height 0 under the grass, drawn before
+    // grass like an engine's scene. Off for tests that count sky pixels.
+    bool ground = false;
+    float ground_color[3] = {0.045f, 0.036f, 0.018f};  // linear albedo: dark soil
 };
 
 // An opaque camera-facing rectangle the host draws into its own colour and depth before

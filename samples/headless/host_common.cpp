@@ -1,4 +1,5 @@
 #include "headless_host.hpp"
+#include "ground.hpp"
 #include "host_factories.hpp"
 
 #include <cmath>
@@ -56,6 +57,31 @@ grass_view_desc make_view(const Host& host, const double eye[3], const double ta
     v.viewport[2] = static_cast<int32_t>(t.width);
     v.viewport[3] = static_cast<int32_t>(t.height);
     return v;
+}
+
+GroundUniforms make_ground_uniforms(const grass_view_desc& view, const TargetDesc& target) {
+    GroundUniforms g{};
+    // projection * rotation (the view's translation is not used: camera-relative).
+    for (int col = 0; col < 4; ++col) {
+        for (int row = 0; row < 4; ++row) {
+            double s = 0.0;
+            for (int k = 0; k < 3; ++k) s += double(view.projection[4 * k + row]) * (col < 3 ? view.view[4 * col + k] : 0.0);
+            if (col == 3) s = view.projection[12 + row];
+            g.view_projection[4 * col + row] = static_cast<float>(s);
+        }
+    }
+    g.plane[0] = static_cast<float>(0.0 - view.camera_position[1]);
+    g.plane[1] = 2000.0f;
+    const double sun_len = std::sqrt(double(view.sun_direction[0]) * view.sun_direction[0] +
+                                     double(view.sun_direction[1]) * view.sun_direction[1] +
+                                     double(view.sun_direction[2]) * view.sun_direction[2]);
+    for (int c = 0; c < 3; ++c) {
+        g.color[c] = target.ground_color[c];
+        g.sun_direction[c] = static_cast<float>(view.sun_direction[c] / sun_len);
+        g.sun_color[c] = view.sun_color[c];
+        g.ambient_color[c] = view.ambient_color[c];
+    }
+    return g;
 }
 
 } // namespace grass_host

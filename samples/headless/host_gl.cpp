@@ -4,6 +4,7 @@
 // library: its own GL calls go through a table loaded from the context's proc loader.
 //
 // GRASS_HOST_GL: unset = EGL, then OSMesa; "egl" = EGL only; "osmesa" = OSMesa only.
+#include "ground.hpp"
 #include "host_factories.hpp"
 
 #include <grass/grass_gl.h>
@@ -20,6 +21,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+
+namespace grass_host_shaders {
+extern const char* const ground_vert;
+extern const char* const ground_frag;
+} // namespace grass_host_shaders
 
 namespace grass_host {
 
@@ -48,7 +54,29 @@ namespace {
     X(PFNGLBLITNAMEDFRAMEBUFFERPROC, BlitNamedFramebuffer)                          \
     X(PFNGLREADPIXELSPROC, ReadPixels)                                              \
     X(PFNGLDEBUGMESSAGECALLBACKPROC, DebugMessageCallback)                          \
-    X(PFNGLDEBUGMESSAGECONTROLPROC, DebugMessageControl)
+    X(PFNGLDEBUGMESSAGECONTROLPROC, DebugMessageControl)                            \
+    X(PFNGLCREATESHADERPROC, CreateShader)                                          \
+    X(PFNGLSHADERSOURCEPROC, ShaderSource)                                          \
+    X(PFNGLCOMPILESHADERPROC, CompileShader)                                        \
+    X(PFNGLGETSHADERIVPROC, GetShaderiv)                                            \
+    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                  \
+    X(PFNGLDELETESHADERPROC, DeleteShader)                                          \
+    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                        \
+    X(PFNGLATTACHSHADERPROC, AttachShader)                                          \
+    X(PFNGLLINKPROGRAMPROC, LinkProgram)                                            \
+    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                          \
+    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                \
+    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                        \
+    X(PFNGLUSEPROGRAMPROC, UseProgram)                                              \
+    X(PFNGLCREATEBUFFERSPROC, CreateBuffers)                                        \
+    X(PFNGLNAMEDBUFFERDATAPROC, NamedBufferData)                                    \
+    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                        \
+    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                      \
+    X(PFNGLCREATEVERTEXARRAYSPROC, CreateVertexArrays)                              \
+    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                              \
+    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                    \
+    X(PFNGLDRAWARRAYSPROC, DrawArrays)                                              \
+    X(PFNGLDEPTHFUNCPROC, DepthFunc)
 
 struct HostGl {
 #define GRASS_HOST_GL_DECLARE(type, name) type name = nullptr;
@@ -124,6 +152,9 @@ private:
     bool load_functions(std::string* error);
     bool create_target(std::string* error);
     void clear_rect(const float color[4], float depth, const int32_t rect[4]);
+    bool create_ground(std::string* error);
+    void draw_ground(const grass_view_desc& view);
+    GLuint ground_program_ = 0, ground_buffer_ = 0, ground_vao_ = 0;
     uint32_t count_gl_errors(const char* where);
     static void APIENTRY debug_callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                                          const GLchar* message, const void* user_param);
@@ -194,6 +225,7 @@ bool GlHost::init(std::string* error) {
     debug_output_ = true;
 
     if (!create_target(error)) return false;
+    if (target_.ground && !create_ground(error)) return false;
     count_gl_errors("host initialisation");
     return true;
 }
@@ -358,6 +390,9 @@ GlHost::~GlHost() {
         const GLuint renderbuffers[] = {color_rb_, depth_rb_, resolve_rb_};
         gl_.DeleteFramebuffers(2, framebuffers); // zero names are ignored
         gl_.DeleteRenderbuffers(3, renderbuffers);
+        if (ground_program_) gl_.DeleteProgram(ground_program_);
+        if (ground_buffer_) gl_.DeleteBuffers(1, &ground_buffer_);
+        if (ground_vao_) gl_.DeleteVertexArrays(1, &ground_vao_);
         if (debug_output_) gl_.DebugMessageCallback(nullptr, nullptr);
     }
     release_egl();
@@ -405,6 +440,56 @@ void GlHost::clear_rect(const float color[4], float depth, const int32_t rect[4]
     gl_.Disable(GL_SCISSOR_TEST);
 }
 
+// The host's terrain stand-in: a camera-relative ground square (shaders/ground.*).
+bool GlHost::create_ground(std::string* error) {
+    const char* sources[2] = {grass_host_shaders::ground_vert, grass_host_shaders::ground_frag};
+    const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+    ground_program_ = gl_.CreateProgram();
+    for (int k = 0; k < 2; ++k) {
+        const GLuint shader = gl_.CreateShader(stages[k]);
+        gl_.ShaderSource(shader, 1, &sources[k], nullptr);
+        gl_.CompileShader(shader);
+        GLint ok = 0;
+        gl_.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+        if (!ok) {
+            char log[1024] = {0};
+            gl_.GetShaderInfoLog(shader, sizeof(log), nullptr, log);
+            if (error) *error = std::string("ground shader: ") + log;
+            gl_.DeleteShader(shader);
+            return false;
+        }
+        gl_.AttachShader(ground_program_, shader);
+        gl_.DeleteShader(shader);
+    }
+    gl_.LinkProgram(ground_program_);
+    GLint linked = 0;
+    gl_.GetProgramiv(ground_program_, GL_LINK_STATUS, &linked);
+    if (!linked) {
+        char log[1024] = {0};
+        gl_.GetProgramInfoLog(ground_program_, sizeof(log), nullptr, log);
+        if (error) *error = std::string("ground program: ") + log;
+        return false;
+    }
+    gl_.CreateBuffers(1, &ground_buffer_);
+    gl_.NamedBufferData(ground_buffer_, sizeof(GroundUniforms), nullptr, GL_DYNAMIC_DRAW);
+    gl_.CreateVertexArrays(1, &ground_vao_);
+    return true;
+}
+
+void GlHost::draw_ground(const grass_view_desc& view) {
+    const GroundUniforms u = make_ground_uniforms(view, target_);
+    gl_.NamedBufferData(ground_buffer_, sizeof(u), &u, GL_DYNAMIC_DRAW);
+    gl_.UseProgram(ground_program_);
+    gl_.BindVertexArray(ground_vao_);
+    gl_.BindBufferBase(GL_UNIFORM_BUFFER, 0, ground_buffer_);
+    gl_.Enable(GL_DEPTH_TEST);
+    gl_.DepthFunc(GL_LESS);
+    gl_.DrawArrays(GL_TRIANGLES, 0, 6);
+    gl_.Disable(GL_DEPTH_TEST);
+    gl_.BindVertexArray(0);
+    gl_.UseProgram(0);
+}
+
 grass_result GlHost::render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
                             std::string* error) {
     const int32_t w = int32_t(target_.width), h = int32_t(target_.height);
@@ -415,6 +500,8 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     const int32_t whole[4] = {0, 0, w, h};
     clear_rect(target_.clear_color, 1.0f, whole);
+
+    if (target_.ground) draw_ground(view);
 
     if (occluder) {
         // The window depth of a camera-facing plane at view-space z = -distance.

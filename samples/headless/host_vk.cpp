@@ -1,0 +1,808 @@
+// The headless Vulkan host: an instance with the validation layers when installed (every
+// warning and error is counted), one graphics queue, an offscreen sRGB colour + depth
+// target (multisampled with a resolve image when asked), a render pass or dynamic
+// rendering, and the frame around grass_vk_prepare_frame / grass_vk_record. It links the
+// Vulkan loader; grass gets only vkGetInstanceProcAddr and the handles.
+//
+// GRASS_VK_DEVICE: pick the first physical device whose name contains this text.
+#include "host_factories.hpp"
+
+#include <grass/grass_vk.h>
+
+#include <vulkan/vulkan.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+namespace grass_host {
+
+namespace {
+
+constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB; // linear shader output is sRGB-encoded
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+std::string vk_error(const char* call, VkResult result) {
+    char text[128];
+    std::snprintf(text, sizeof(text), "%s failed with VkResult %d", call, static_cast<int>(result));
+    return text;
+}
+
+// An image with its memory and view.
+struct Attachment {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+};
+
+class VkHost final : public Host {
+public:
+    explicit VkHost(const TargetDesc& target) : Host(target) {}
+    ~VkHost() override;
+    VkHost(const VkHost&) = delete;
+    VkHost& operator=(const VkHost&) = delete;
+
+    bool init(std::string* error);
+
+    grass_backend backend() const override { return GRASS_BACKEND_VULKAN; }
+    std::string device_name() const override { return device_name_; }
+    grass_result create_context(const grass_context_desc& desc, grass_context** out) override;
+    void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const override;
+    grass_result render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
+                        std::string* error) override;
+    uint32_t validation_messages() const override { return messages_; }
+    std::string validation_log() const override { return log_; }
+
+private:
+    bool create_instance(std::string* error);
+    bool pick_device(std::string* error);
+    bool create_device(std::string* error);
+    bool create_target(std::string* error);
+    bool create_render_pass(std::string* error);
+    bool create_commands(std::string* error);
+    bool allocate_memory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags, VkDeviceMemory* out,
+                         std::string* error);
+    bool create_attachment(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
+                           VkImageAspectFlags aspect, Attachment* out, std::string* error);
+    void destroy_attachment(Attachment* a);
+    void begin_pass(VkCommandBuffer cmd);
+    void end_pass(VkCommandBuffer cmd);
+    void clear_occluder(VkCommandBuffer cmd, const grass_view_desc& view, const Occluder& occluder);
+    void copy_to_readback(VkCommandBuffer cmd);
+    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                     VkDebugUtilsMessageTypeFlagsEXT types,
+                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+
+    VkInstance instance_ = VK_NULL_HANDLE;
+    uint32_t api_version_ = VK_API_VERSION_1_1; // the instance's
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memory_properties_{};
+    VkDevice device_ = VK_NULL_HANDLE;
+    uint32_t queue_family_ = 0;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    bool dynamic_rendering_ = false; // the feature is enabled on the device
+    PFN_vkCmdBeginRendering begin_rendering_ = nullptr;
+    PFN_vkCmdEndRendering end_rendering_ = nullptr;
+
+    VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
+    Attachment color_;   // multisampled when samples_ > 1
+    Attachment depth_;
+    Attachment resolve_; // only when samples_ > 1
+    VkRenderPass render_pass_ = VK_NULL_HANDLE;   // null with dynamic rendering
+    VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+    VkBuffer readback_ = VK_NULL_HANDLE;
+    VkDeviceMemory readback_memory_ = VK_NULL_HANDLE;
+    void* readback_mapped_ = nullptr;
+    bool readback_coherent_ = true;
+
+    VkCommandPool command_pool_ = VK_NULL_HANDLE;
+    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+
+    std::string device_name_;
+    uint32_t messages_ = 0;
+    std::string log_;
+};
+
+VKAPI_ATTR VkBool32 VKAPI_CALL VkHost::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                  VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                  void* user) {
+    auto* host = static_cast<VkHost*>(user);
+    host->messages_ += 1;
+    host->log_ += severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "[error] " : "[warning] ";
+    host->log_ += data && data->pMessage ? data->pMessage : "(no message)";
+    host->log_ += '\n';
+    return VK_FALSE; // never abort the call
+}
+
+// ---- Creation -----------------------------------------------------------------------------
+
+bool VkHost::init(std::string* error) {
+    samples_ = static_cast<VkSampleCountFlagBits>(target_.samples);
+    if (target_.samples == 0 || (target_.samples & (target_.samples - 1)) != 0 || target_.samples > 64) {
+        *error = "target.samples must be 1, 2, 4, 8, 16, 32 or 64";
+        return false;
+    }
+    if (target_.width == 0 || target_.height == 0) {
+        *error = "target width and height must be at least 1";
+        return false;
+    }
+    return create_instance(error) && pick_device(error) && create_device(error) && create_target(error) &&
+           create_render_pass(error) && create_commands(error);
+}
+
+bool VkHost::create_instance(std::string* error) {
+    uint32_t loader_version = VK_API_VERSION_1_0;
+    vkEnumerateInstanceVersion(&loader_version);
+    if (loader_version < VK_API_VERSION_1_1) {
+        *error = "the Vulkan loader is older than 1.1";
+        return false;
+    }
+    api_version_ = loader_version >= VK_API_VERSION_1_3 ? VK_API_VERSION_1_3 : VK_API_VERSION_1_1;
+
+    uint32_t count = 0;
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    std::vector<VkLayerProperties> layers(count);
+    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    bool validation = false;
+    for (const VkLayerProperties& l : layers) validation |= std::strcmp(l.layerName, kValidationLayer) == 0;
+
+    count = 0;
+    vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateInstanceExtensionProperties(nullptr, &count, extensions.data());
+    bool debug_utils = false;
+    for (const VkExtensionProperties& e : extensions) {
+        debug_utils |= std::strcmp(e.extensionName, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0;
+    }
+    // The validation layer brings VK_EXT_debug_utils with it.
+    debug_utils |= validation;
+
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "grass headless host";
+    app.pEngineName = "grass";
+    app.apiVersion = api_version_;
+
+    // Warnings and errors of every type, also during vkCreateInstance/vkDestroyInstance.
+    VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messenger.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                            VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    messenger.pfnUserCallback = &VkHost::on_message;
+    messenger.pUserData = this;
+
+    const char* layer_names[] = {kValidationLayer};
+    const char* extension_names[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    info.pNext = debug_utils ? &messenger : nullptr;
+    info.pApplicationInfo = &app;
+    info.enabledLayerCount = validation ? 1 : 0;
+    info.ppEnabledLayerNames = layer_names;
+    info.enabledExtensionCount = debug_utils ? 1 : 0;
+    info.ppEnabledExtensionNames = extension_names;
+    VkResult r = vkCreateInstance(&info, nullptr, &instance_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateInstance", r);
+        return false;
+    }
+    if (debug_utils) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+        r = create ? create(instance_, &messenger, nullptr, &messenger_) : VK_ERROR_EXTENSION_NOT_PRESENT;
+        if (r != VK_SUCCESS) {
+            *error = vk_error("vkCreateDebugUtilsMessengerEXT", r);
+            return false;
+        }
+    }
+    return true;
+}
+
+bool VkHost::pick_device(std::string* error) {
+    uint32_t count = 0;
+    vkEnumeratePhysicalDevices(instance_, &count, nullptr);
+    std::vector<VkPhysicalDevice> devices(count);
+    vkEnumeratePhysicalDevices(instance_, &count, devices.data());
+    if (devices.empty()) {
+        *error = "no Vulkan physical device";
+        return false;
+    }
+    const char* wanted = std::getenv("GRASS_VK_DEVICE");
+    physical_device_ = VK_NULL_HANDLE;
+    for (VkPhysicalDevice d : devices) {
+        VkPhysicalDeviceProperties p{};
+        vkGetPhysicalDeviceProperties(d, &p);
+        if (wanted && *wanted && std::strstr(p.deviceName, wanted)) {
+            physical_device_ = d;
+            break;
+        }
+    }
+    if (!physical_device_) {
+        if (wanted && *wanted) {
+            *error = std::string("no Vulkan device name contains GRASS_VK_DEVICE=\"") + wanted + "\"";
+            return false;
+        }
+        physical_device_ = devices[0];
+    }
+    vkGetPhysicalDeviceProperties(physical_device_, &properties_);
+    vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
+    device_name_ = properties_.deviceName;
+    if (properties_.apiVersion < VK_API_VERSION_1_1) {
+        *error = "the Vulkan device \"" + device_name_ + "\" is older than Vulkan 1.1";
+        return false;
+    }
+
+    const VkSampleCountFlags supported = properties_.limits.framebufferColorSampleCounts &
+                                         properties_.limits.framebufferDepthSampleCounts;
+    if (!(supported & samples_)) {
+        *error = "the Vulkan device \"" + device_name_ + "\" cannot render with " + std::to_string(target_.samples) +
+                 " samples";
+        return false;
+    }
+
+    count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &count, families.data());
+    for (uint32_t i = 0; i < count; ++i) {
+        if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
+            queue_family_ = i;
+            return true;
+        }
+    }
+    *error = "the Vulkan device \"" + device_name_ + "\" has no graphics queue";
+    return false;
+}
+
+bool VkHost::create_device(std::string* error) {
+    // Vulkan 1.3 core needs both the instance and the device at 1.3.
+    const bool core13 = api_version_ >= VK_API_VERSION_1_3 && properties_.apiVersion >= VK_API_VERSION_1_3;
+    uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, extensions.data());
+    bool khr_dynamic_rendering = false;
+    for (const VkExtensionProperties& e : extensions) {
+        khr_dynamic_rendering |= std::strcmp(e.extensionName, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME) == 0;
+    }
+
+    // Is dynamicRendering there? (Vulkan 1.3 core, else the KHR extension.)
+    VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceDynamicRenderingFeaturesKHR features_khr{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};
+    VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    if (core13) {
+        features.pNext = &features13;
+    } else if (khr_dynamic_rendering) {
+        features.pNext = &features_khr;
+    }
+    vkGetPhysicalDeviceFeatures2(physical_device_, &features);
+    dynamic_rendering_ = core13 ? features13.dynamicRendering == VK_TRUE
+                                : khr_dynamic_rendering && features_khr.dynamicRendering == VK_TRUE;
+    if (target_.vk_dynamic_rendering && !dynamic_rendering_) {
+        *error = "the Vulkan device \"" + device_name_ + "\" has no dynamic rendering";
+        return false;
+    }
+
+    // Enable only dynamicRendering (when there), nothing else.
+    VkPhysicalDeviceVulkan13Features enable13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceDynamicRenderingFeaturesKHR enable_khr{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};
+    const char* extension_names[] = {VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME};
+    const float priority = 1.0f;
+    VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queue.queueFamilyIndex = queue_family_;
+    queue.queueCount = 1;
+    queue.pQueuePriorities = &priority;
+    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.queueCreateInfoCount = 1;
+    info.pQueueCreateInfos = &queue;
+    if (dynamic_rendering_ && core13) {
+        enable13.dynamicRendering = VK_TRUE;
+        info.pNext = &enable13;
+    } else if (dynamic_rendering_) {
+        enable_khr.dynamicRendering = VK_TRUE;
+        info.pNext = &enable_khr;
+        info.enabledExtensionCount = 1;
+        info.ppEnabledExtensionNames = extension_names;
+    }
+    const VkResult r = vkCreateDevice(physical_device_, &info, nullptr, &device_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateDevice", r);
+        return false;
+    }
+    vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+    if (dynamic_rendering_) {
+        const char* begin_name = core13 ? "vkCmdBeginRendering" : "vkCmdBeginRenderingKHR";
+        const char* end_name = core13 ? "vkCmdEndRendering" : "vkCmdEndRenderingKHR";
+        begin_rendering_ = reinterpret_cast<PFN_vkCmdBeginRendering>(vkGetDeviceProcAddr(device_, begin_name));
+        end_rendering_ = reinterpret_cast<PFN_vkCmdEndRendering>(vkGetDeviceProcAddr(device_, end_name));
+        if (!begin_rendering_ || !end_rendering_) {
+            *error = "the Vulkan device lacks vkCmdBeginRendering";
+            return false;
+        }
+    }
+    return true;
+}
+
+bool VkHost::allocate_memory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags,
+                             VkDeviceMemory* out, std::string* error) {
+    for (uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {
+        if ((requirements.memoryTypeBits & (1u << i)) &&
+            (memory_properties_.memoryTypes[i].propertyFlags & flags) == flags) {
+            VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+            info.allocationSize = requirements.size;
+            info.memoryTypeIndex = i;
+            const VkResult r = vkAllocateMemory(device_, &info, nullptr, out);
+            if (r != VK_SUCCESS) *error = vk_error("vkAllocateMemory", r);
+            return r == VK_SUCCESS;
+        }
+    }
+    *error = "no Vulkan memory type fits";
+    return false;
+}
+
+bool VkHost::create_attachment(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
+                               VkImageAspectFlags aspect, Attachment* out, std::string* error) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {target_.width, target_.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = samples;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkResult r = vkCreateImage(device_, &info, nullptr, &out->image);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateImage", r);
+        return false;
+    }
+    VkMemoryRequirements requirements{};
+    vkGetImageMemoryRequirements(device_, out->image, &requirements);
+    if (!allocate_memory(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &out->memory, error)) return false;
+    r = vkBindImageMemory(device_, out->image, out->memory, 0);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkBindImageMemory", r);
+        return false;
+    }
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = out->image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {aspect, 0, 1, 0, 1};
+    r = vkCreateImageView(device_, &view, nullptr, &out->view);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateImageView", r);
+        return false;
+    }
+    return true;
+}
+
+void VkHost::destroy_attachment(Attachment* a) {
+    if (a->view) vkDestroyImageView(device_, a->view, nullptr);
+    if (a->image) vkDestroyImage(device_, a->image, nullptr);
+    if (a->memory) vkFreeMemory(device_, a->memory, nullptr);
+    *a = Attachment{};
+}
+
+bool VkHost::create_target(std::string* error) {
+    const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
+    const VkImageUsageFlags color_usage =
+        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (msaa ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    if (!create_attachment(kColorFormat, samples_, color_usage, VK_IMAGE_ASPECT_COLOR_BIT, &color_, error) ||
+        !create_attachment(kDepthFormat, samples_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                           VK_IMAGE_ASPECT_DEPTH_BIT, &depth_, error)) {
+        return false;
+    }
+    if (msaa && !create_attachment(kColorFormat, VK_SAMPLE_COUNT_1_BIT,
+                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                   VK_IMAGE_ASPECT_COLOR_BIT, &resolve_, error)) {
+        return false;
+    }
+
+    // Read-back buffer: host-visible, cached when possible.
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = VkDeviceSize(target_.width) * target_.height * 4;
+    info.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VkResult r = vkCreateBuffer(device_, &info, nullptr, &readback_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateBuffer", r);
+        return false;
+    }
+    VkMemoryRequirements requirements{};
+    vkGetBufferMemoryRequirements(device_, readback_, &requirements);
+    std::string ignored;
+    if (allocate_memory(requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                        &readback_memory_, &ignored)) {
+        readback_coherent_ = true;
+    } else if (allocate_memory(requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, &readback_memory_, error)) {
+        readback_coherent_ = false;
+    } else {
+        return false;
+    }
+    r = vkBindBufferMemory(device_, readback_, readback_memory_, 0);
+    if (r == VK_SUCCESS) r = vkMapMemory(device_, readback_memory_, 0, VK_WHOLE_SIZE, 0, &readback_mapped_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkBindBufferMemory/vkMapMemory", r);
+        return false;
+    }
+    return true;
+}
+
+bool VkHost::create_render_pass(std::string* error) {
+    if (target_.vk_dynamic_rendering) return true;
+    const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
+    VkAttachmentDescription attachments[3] = {};
+    // 0: colour (multisampled or not). Single-sample: it is the image read back.
+    attachments[0].format = kColorFormat;
+    attachments[0].samples = samples_;
+    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    attachments[0].storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
+    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    attachments[0].finalLayout = msaa ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    // 1: depth.
+    attachments[1] = attachments[0];
+    attachments[1].format = kDepthFormat;
+    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    // 2: single-sample resolve target, read back.
+    attachments[2] = attachments[0];
+    attachments[2].samples = VK_SAMPLE_COUNT_1_BIT;
+    attachments[2].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachments[2].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    attachments[2].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+
+    const VkAttachmentReference color_ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    const VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    const VkAttachmentReference resolve_ref{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpass.colorAttachmentCount = 1;
+    subpass.pColorAttachments = &color_ref;
+    subpass.pResolveAttachments = msaa ? &resolve_ref : nullptr;
+    subpass.pDepthStencilAttachment = &depth_ref;
+
+    VkSubpassDependency dependencies[2] = {};
+    // The last frame's read-back copy and attachment writes come before this pass writes.
+    dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+    dependencies[0].dstSubpass = 0;
+    dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    dependencies[0].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    // The pass's colour writes (and resolve) come before the read-back copy.
+    dependencies[1].srcSubpass = 0;
+    dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+    dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+
+    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    info.attachmentCount = msaa ? 3 : 2;
+    info.pAttachments = attachments;
+    info.subpassCount = 1;
+    info.pSubpasses = &subpass;
+    info.dependencyCount = 2;
+    info.pDependencies = dependencies;
+    VkResult r = vkCreateRenderPass(device_, &info, nullptr, &render_pass_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateRenderPass", r);
+        return false;
+    }
+
+    const VkImageView views[3] = {color_.view, depth_.view, resolve_.view};
+    VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    fb.renderPass = render_pass_;
+    fb.attachmentCount = info.attachmentCount;
+    fb.pAttachments = views;
+    fb.width = target_.width;
+    fb.height = target_.height;
+    fb.layers = 1;
+    r = vkCreateFramebuffer(device_, &fb, nullptr, &framebuffer_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateFramebuffer", r);
+        return false;
+    }
+    return true;
+}
+
+bool VkHost::create_commands(std::string* error) {
+    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pool.queueFamilyIndex = queue_family_;
+    VkResult r = vkCreateCommandPool(device_, &pool, nullptr, &command_pool_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateCommandPool", r);
+        return false;
+    }
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = command_pool_;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    r = vkAllocateCommandBuffers(device_, &alloc, &cmd_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkAllocateCommandBuffers", r);
+        return false;
+    }
+    VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    r = vkCreateFence(device_, &fence, nullptr, &fence_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateFence", r);
+        return false;
+    }
+    return true;
+}
+
+VkHost::~VkHost() {
+    if (device_) {
+        vkDeviceWaitIdle(device_);
+        if (fence_) vkDestroyFence(device_, fence_, nullptr);
+        if (command_pool_) vkDestroyCommandPool(device_, command_pool_, nullptr); // frees cmd_
+        if (framebuffer_) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
+        if (render_pass_) vkDestroyRenderPass(device_, render_pass_, nullptr);
+        if (readback_) vkDestroyBuffer(device_, readback_, nullptr);
+        if (readback_memory_) vkFreeMemory(device_, readback_memory_, nullptr);
+        destroy_attachment(&resolve_);
+        destroy_attachment(&depth_);
+        destroy_attachment(&color_);
+        vkDestroyDevice(device_, nullptr);
+    }
+    if (messenger_) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+        if (destroy) destroy(instance_, messenger_, nullptr);
+    }
+    if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+// ---- The grass context --------------------------------------------------------------------
+
+grass_result VkHost::create_context(const grass_context_desc& desc, grass_context** out) {
+    grass_vk_desc vk = grass_vk_default_desc();
+    vk.get_instance_proc_addr = (grass_vk_get_instance_proc_addr_fn)vkGetInstanceProcAddr;
+    vk.instance = instance_;
+    vk.physical_device = physical_device_;
+    vk.device = device_;
+    vk.queue_family = queue_family_;
+    vk.render_pass = reinterpret_cast<uint64_t>(render_pass_);
+    vk.subpass = 0;
+    vk.color_format = kColorFormat;
+    vk.depth_format = kDepthFormat;
+    vk.sample_count = samples_;
+    vk.frames_in_flight = 2;
+    return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
+}
+
+// Right-handed view looking down -z; clip y points down and z runs 0 (near) .. 1 (far).
+void VkHost::projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const {
+    const float f = 1.0f / std::tan(0.5f * fovy_radians);
+    for (int i = 0; i < 16; ++i) out[i] = 0.0f;
+    out[0] = f / aspect;
+    out[5] = -f;
+    out[10] = far_m / (near_m - far_m);
+    out[11] = -1.0f;
+    out[14] = far_m * near_m / (near_m - far_m);
+}
+
+// ---- A frame ------------------------------------------------------------------------------
+
+void VkHost::begin_pass(VkCommandBuffer cmd) {
+    VkClearValue clears[2] = {};
+    for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = target_.clear_color[c];
+    clears[1].depthStencil = {1.0f, 0};
+    const VkRect2D area{{0, 0}, {target_.width, target_.height}};
+    if (render_pass_) {
+        VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+        info.renderPass = render_pass_;
+        info.framebuffer = framebuffer_;
+        info.renderArea = area;
+        info.clearValueCount = 2;
+        info.pClearValues = clears;
+        vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
+        return;
+    }
+
+    // Dynamic rendering: the layout transitions a render pass would do.
+    const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
+    VkImageMemoryBarrier barriers[3] = {};
+    for (VkImageMemoryBarrier& b : barriers) {
+        b.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+        b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        b.newLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    }
+    barriers[0].image = color_.image;
+    barriers[1].image = depth_.image;
+    barriers[1].newLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    barriers[1].dstAccessMask =
+        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    barriers[1].subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    barriers[2].image = resolve_.image;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                             VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                             VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                         0, 0, nullptr, 0, nullptr, msaa ? 3 : 2, barriers);
+
+    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    color.imageView = color_.view;
+    color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    color.storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
+    color.clearValue = clears[0];
+    if (msaa) {
+        color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+        color.resolveImageView = resolve_.view;
+        color.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    }
+    VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    depth.imageView = depth_.view;
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    depth.clearValue = clears[1];
+    VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    info.renderArea = area;
+    info.layerCount = 1;
+    info.colorAttachmentCount = 1;
+    info.pColorAttachments = &color;
+    info.pDepthAttachment = &depth;
+    begin_rendering_(cmd, &info);
+}
+
+void VkHost::end_pass(VkCommandBuffer cmd) {
+    if (render_pass_) {
+        vkCmdEndRenderPass(cmd); // leaves the read-back image in TRANSFER_SRC_OPTIMAL
+        return;
+    }
+    end_rendering_(cmd);
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    b.oldLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = samples_ != VK_SAMPLE_COUNT_1_BIT ? resolve_.image : color_.image;
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
+                         nullptr, 0, nullptr, 1, &b);
+}
+
+// The host's own scene: a camera-facing box face, drawn as a cleared rectangle of colour
+// and depth (its window depth is that of view-space z = -distance).
+void VkHost::clear_occluder(VkCommandBuffer cmd, const grass_view_desc& view, const Occluder& occluder) {
+    const int32_t w = int32_t(target_.width), h = int32_t(target_.height);
+    const int32_t x0 = std::max(occluder.x0, 0), x1 = std::min(occluder.x1, w);
+    const int32_t y0 = std::max(occluder.y0, 0), y1 = std::min(occluder.y1, h);
+    if (x1 <= x0 || y1 <= y0) return;
+    const float* p = view.projection;
+    const float z = -occluder.distance;
+    const float clip_z = p[10] * z + p[14];
+    const float clip_w = p[11] * z + p[15];
+    const float depth = std::min(std::max(clip_z / clip_w, 0.0f), 1.0f);
+
+    VkClearAttachment clears[2] = {};
+    clears[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+    clears[0].colorAttachment = 0;
+    for (int c = 0; c < 3; ++c) clears[0].clearValue.color.float32[c] = occluder.color[c];
+    clears[0].clearValue.color.float32[3] = 1.0f;
+    clears[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+    clears[1].clearValue.depthStencil = {depth, 0};
+    VkClearRect rect{};
+    rect.rect = {{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}}; // top-left origin, as the occluder's
+    rect.layerCount = 1;
+    vkCmdClearAttachments(cmd, 2, clears, 1, &rect);
+}
+
+void VkHost::copy_to_readback(VkCommandBuffer cmd) {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {target_.width, target_.height, 1};
+    const VkImage image = samples_ != VK_SAMPLE_COUNT_1_BIT ? resolve_.image : color_.image;
+    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_, 1, &region);
+    VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+    b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.buffer = readback_;
+    b.size = VK_WHOLE_SIZE;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0,
+                         nullptr);
+}
+
+grass_result VkHost::render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
+                            std::string* error) {
+    auto host_failure = [&](const char* call, VkResult r) {
+        if (error) *error = vk_error(call, r);
+        return GRASS_ERROR_BACKEND;
+    };
+    VkResult r = vkResetCommandBuffer(cmd_, 0);
+    if (r != VK_SUCCESS) return host_failure("vkResetCommandBuffer", r);
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    r = vkBeginCommandBuffer(cmd_, &begin);
+    if (r != VK_SUCCESS) return host_failure("vkBeginCommandBuffer", r);
+
+    // grass plans the frame, then records its uploads outside the pass and its draws in it.
+    // Once prepare_frame has recorded, the command buffer is submitted even when a later
+    // grass call fails: its uploads must run.
+    grass_result result = grass_begin_frame(context, &view);
+    const bool frame_begun = result == GRASS_SUCCESS;
+    if (frame_begun) result = grass_vk_prepare_frame(context, cmd_);
+    begin_pass(cmd_);
+    if (occluder) clear_occluder(cmd_, view, *occluder);
+    if (result == GRASS_SUCCESS) {
+        grass_vk_record_desc record = grass_vk_default_record_desc();
+        record.command_buffer = cmd_;
+        result = grass_vk_record(context, &record);
+    }
+    end_pass(cmd_);
+    copy_to_readback(cmd_);
+    r = vkEndCommandBuffer(cmd_);
+    if (r != VK_SUCCESS) {
+        if (frame_begun) grass_end_frame(context);
+        return host_failure("vkEndCommandBuffer", r);
+    }
+
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd_;
+    r = vkQueueSubmit(queue_, 1, &submit, fence_);
+    if (r == VK_SUCCESS) r = vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX);
+    if (r == VK_SUCCESS) r = vkResetFences(device_, 1, &fence_);
+    if (frame_begun) {
+        const grass_result end = grass_end_frame(context);
+        if (result == GRASS_SUCCESS) result = end;
+    }
+    if (r != VK_SUCCESS) return host_failure("vkQueueSubmit/vkWaitForFences", r);
+    if (result != GRASS_SUCCESS) {
+        if (error) *error = grass_last_error(context);
+        return result;
+    }
+
+    if (!readback_coherent_) {
+        VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
+        range.memory = readback_memory_;
+        range.size = VK_WHOLE_SIZE;
+        vkInvalidateMappedMemoryRanges(device_, 1, &range);
+    }
+    out->width = target_.width;
+    out->height = target_.height;
+    out->rgba.resize(size_t(target_.width) * target_.height * 4);
+    std::memcpy(out->rgba.data(), readback_mapped_, out->rgba.size()); // Vulkan rows run top-down
+    if (messages_ != 0 && error) *error = log_;
+    return GRASS_SUCCESS;
+}
+
+} // namespace
+
+std::unique_ptr<Host> create_vk_host(const TargetDesc& target, std::string* error) {
+    std::string ignored;
+    std::string* e = error ? error : &ignored;
+    auto host = std::make_unique<VkHost>(target);
+    if (!host->init(e)) return nullptr;
+    return host;
+}
+
+} // namespace grass_host
