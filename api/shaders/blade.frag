@@ -7,7 +7,7 @@
 layout(location = 0) in vec3 v_position;
 layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec3 v_albedo;
-layout(location = 3) in vec2 v_shape;
+layout(location = 3) centroid in vec2 v_shape;
 layout(location = 4) in float v_density;
 
 layout(location = 0) out vec4 out_color;

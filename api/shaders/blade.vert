@@ -14,7 +14,9 @@ layout(location = 6) in vec4 i_map;           // xy: cell corner in density-map 
 layout(location = 0) out vec3 v_position;    // camera-relative world position
 layout(location = 1) out vec3 v_normal;
 layout(location = 2) out vec3 v_albedo;
-layout(location = 3) out vec2 v_shape;       // x: u across the blade, y: height in patch units
+// Centroid: with multisampling, a thin blade often misses the pixel centre; u must be
+// taken inside the covered samples or the edge alpha below would discard them.
+layout(location = 3) centroid out vec2 v_shape; // x: u across the blade, y: height in patch units
 layout(location = 4) out float v_density;
 
 // A threshold of exactly 1 must pass a density of exactly 1 after bilinear filtering;

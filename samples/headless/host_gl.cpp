@@ -4,6 +4,7 @@
 // library: its own GL calls go through a table loaded from the context's proc loader.
 //
 // GRASS_HOST_GL: unset = EGL, then OSMesa; "egl" = EGL only; "osmesa" = OSMesa only.
+#include "driver_residency.hpp"
 #include "ground.hpp"
 #include "host_factories.hpp"
 
@@ -101,21 +102,6 @@ constexpr int kOsMesaCoreProfile = 0x34;
 constexpr int kOsMesaContextMajorVersion = 0x36;
 constexpr int kOsMesaContextMinorVersion = 0x37;
 constexpr GLsizei kOsMesaDummySize = 16; // OSMesa needs a buffer to make current; we draw to FBOs
-
-// Mesa unloads its DRI driver (and LLVM with it) at eglTerminate. Keeping the loaded
-// drivers resident lets leak checkers name the driver's own allocations (so that
-// tests/sanitizer/lsan.supp can match them) and spares each new host a reload.
-void keep_gl_drivers_resident() {
-    dl_iterate_phdr(
-        [](dl_phdr_info* info, size_t, void*) {
-            const char* path = info->dlpi_name;
-            if (path && (std::strstr(path, "_dri.so") || std::strstr(path, "libgallium"))) {
-                dlopen(path, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE); // only pins what is loaded
-            }
-            return 0;
-        },
-        nullptr);
-}
 
 std::string hex(unsigned value) {
     char text[16];
@@ -279,7 +265,8 @@ bool GlHost::init_egl(std::string* error) {
         *error = "eglMakeCurrent(EGL_NO_SURFACE) failed with " + hex(eglGetError());
         return false;
     }
-    keep_gl_drivers_resident();
+    static const char* const kDrivers[] = {"_dri.so", "libgallium", nullptr};
+    keep_drivers_resident(kDrivers);
     return true;
 }
 

@@ -5,6 +5,8 @@
 // Vulkan loader; grass gets only vkGetInstanceProcAddr and the handles.
 //
 // GRASS_VK_DEVICE: pick the first physical device whose name contains this text.
+#include "driver_residency.hpp"
+#include "ground.hpp"
 #include "host_factories.hpp"
 
 #include <grass/grass_vk.h>
@@ -16,6 +18,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+
+namespace grass_host_spirv {
+extern const uint32_t ground_vert[];
+extern const uint32_t ground_vert_size; // bytes
+extern const uint32_t ground_frag[];
+extern const uint32_t ground_frag_size;
+} // namespace grass_host_spirv
 
 namespace grass_host {
 
@@ -63,6 +72,9 @@ private:
     bool create_target(std::string* error);
     bool create_render_pass(std::string* error);
     bool create_commands(std::string* error);
+    bool create_ground(std::string* error);
+    bool create_ground_pipeline(std::string* error);
+    void draw_ground(VkCommandBuffer cmd, const grass_view_desc& view);
     bool allocate_memory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags, VkDeviceMemory* out,
                          std::string* error);
     bool create_attachment(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
@@ -100,6 +112,16 @@ private:
     void* readback_mapped_ = nullptr;
     bool readback_coherent_ = true;
 
+    // The host's terrain stand-in (target.ground): shaders/ground.*, one uniform buffer.
+    VkBuffer ground_buffer_ = VK_NULL_HANDLE;
+    VkDeviceMemory ground_memory_ = VK_NULL_HANDLE;
+    void* ground_mapped_ = nullptr;
+    VkDescriptorSetLayout ground_set_layout_ = VK_NULL_HANDLE;
+    VkDescriptorPool ground_pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet ground_set_ = VK_NULL_HANDLE;
+    VkPipelineLayout ground_layout_ = VK_NULL_HANDLE;
+    VkPipeline ground_pipeline_ = VK_NULL_HANDLE;
+
     VkCommandPool command_pool_ = VK_NULL_HANDLE;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
@@ -133,7 +155,7 @@ bool VkHost::init(std::string* error) {
         return false;
     }
     return create_instance(error) && pick_device(error) && create_device(error) && create_target(error) &&
-           create_render_pass(error) && create_commands(error);
+           create_render_pass(error) && create_commands(error) && (!target_.ground || create_ground(error));
 }
 
 bool VkHost::create_instance(std::string* error) {
@@ -317,6 +339,8 @@ bool VkHost::create_device(std::string* error) {
         return false;
     }
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+    static const char* const kDrivers[] = {"libvulkan_", "libVkLayer_", nullptr};
+    keep_drivers_resident(kDrivers);
     if (dynamic_rendering_) {
         const char* begin_name = core13 ? "vkCmdBeginRendering" : "vkCmdBeginRenderingKHR";
         const char* end_name = core13 ? "vkCmdEndRendering" : "vkCmdEndRenderingKHR";
@@ -552,6 +576,12 @@ bool VkHost::create_commands(std::string* error) {
 VkHost::~VkHost() {
     if (device_) {
         vkDeviceWaitIdle(device_);
+        if (ground_pipeline_) vkDestroyPipeline(device_, ground_pipeline_, nullptr);
+        if (ground_layout_) vkDestroyPipelineLayout(device_, ground_layout_, nullptr);
+        if (ground_pool_) vkDestroyDescriptorPool(device_, ground_pool_, nullptr); // frees ground_set_
+        if (ground_set_layout_) vkDestroyDescriptorSetLayout(device_, ground_set_layout_, nullptr);
+        if (ground_buffer_) vkDestroyBuffer(device_, ground_buffer_, nullptr);
+        if (ground_memory_) vkFreeMemory(device_, ground_memory_, nullptr);
         if (fence_) vkDestroyFence(device_, fence_, nullptr);
         if (command_pool_) vkDestroyCommandPool(device_, command_pool_, nullptr); // frees cmd_
         if (framebuffer_) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
@@ -569,6 +599,153 @@ VkHost::~VkHost() {
         if (destroy) destroy(instance_, messenger_, nullptr);
     }
     if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+// ---- The host's ground --------------------------------------------------------------------
+
+bool VkHost::create_ground(std::string* error) {
+    VkBufferCreateInfo buffer{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    buffer.size = sizeof(GroundUniforms);
+    buffer.usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+    buffer.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VkResult r = vkCreateBuffer(device_, &buffer, nullptr, &ground_buffer_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateBuffer", r);
+        return false;
+    }
+    VkMemoryRequirements requirements{};
+    vkGetBufferMemoryRequirements(device_, ground_buffer_, &requirements);
+    if (!allocate_memory(requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                         &ground_memory_, error)) {
+        return false;
+    }
+    r = vkBindBufferMemory(device_, ground_buffer_, ground_memory_, 0);
+    if (r == VK_SUCCESS) r = vkMapMemory(device_, ground_memory_, 0, VK_WHOLE_SIZE, 0, &ground_mapped_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkBindBufferMemory/vkMapMemory", r);
+        return false;
+    }
+
+    const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
+                                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo set_layout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_layout.bindingCount = 1;
+    set_layout.pBindings = &binding;
+    r = vkCreateDescriptorSetLayout(device_, &set_layout, nullptr, &ground_set_layout_);
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1};
+    VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool.maxSets = 1;
+    pool.poolSizeCount = 1;
+    pool.pPoolSizes = &size;
+    if (r == VK_SUCCESS) r = vkCreateDescriptorPool(device_, &pool, nullptr, &ground_pool_);
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = ground_pool_;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &ground_set_layout_;
+    if (r == VK_SUCCESS) r = vkAllocateDescriptorSets(device_, &alloc, &ground_set_);
+    VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout.setLayoutCount = 1;
+    layout.pSetLayouts = &ground_set_layout_;
+    if (r == VK_SUCCESS) r = vkCreatePipelineLayout(device_, &layout, nullptr, &ground_layout_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("creating the ground's descriptors", r);
+        return false;
+    }
+    const VkDescriptorBufferInfo info{ground_buffer_, 0, sizeof(GroundUniforms)};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = ground_set_;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    write.pBufferInfo = &info;
+    vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+    return create_ground_pipeline(error);
+}
+
+bool VkHost::create_ground_pipeline(std::string* error) {
+    VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+    const uint32_t* code[2] = {grass_host_spirv::ground_vert, grass_host_spirv::ground_frag};
+    const size_t code_size[2] = {grass_host_spirv::ground_vert_size, grass_host_spirv::ground_frag_size};
+    VkResult r = VK_SUCCESS;
+    for (int i = 0; i < 2 && r == VK_SUCCESS; ++i) {
+        VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+        info.codeSize = code_size[i];
+        info.pCode = code[i];
+        r = vkCreateShaderModule(device_, &info, nullptr, &modules[i]);
+    }
+    VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+                                                 {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = modules[0];
+    stages[0].pName = "main";
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = modules[1];
+    stages[1].pName = "main";
+    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = samples_;
+    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth.depthTestEnable = VK_TRUE;
+    depth.depthWriteEnable = VK_TRUE;
+    depth.depthCompareOp = VK_COMPARE_OP_LESS;
+    VkPipelineColorBlendAttachmentState attachment{};
+    attachment.colorWriteMask = 0xf;
+    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blend.attachmentCount = 1;
+    blend.pAttachments = &attachment;
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = 2;
+    dynamic.pDynamicStates = dynamic_states;
+    const VkFormat color_format = kColorFormat;
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachmentFormats = &color_format;
+    rendering.depthAttachmentFormat = kDepthFormat;
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.pNext = render_pass_ ? nullptr : &rendering;
+    info.stageCount = 2;
+    info.pStages = stages;
+    info.pVertexInputState = &vertex_input;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = ground_layout_;
+    info.renderPass = render_pass_;
+    if (r == VK_SUCCESS) r = vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &ground_pipeline_);
+    for (VkShaderModule m : modules) {
+        if (m) vkDestroyShaderModule(device_, m, nullptr);
+    }
+    if (r != VK_SUCCESS) {
+        *error = vk_error("creating the ground pipeline", r);
+        return false;
+    }
+    return true;
+}
+
+// Drawn first in the pass, like an engine's terrain (the host waits for each frame, so
+// the uniform buffer is free to rewrite).
+void VkHost::draw_ground(VkCommandBuffer cmd, const grass_view_desc& view) {
+    const GroundUniforms u = make_ground_uniforms(view, target_);
+    std::memcpy(ground_mapped_, &u, sizeof(u));
+    const VkViewport viewport{0.0f, 0.0f, float(target_.width), float(target_.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {target_.width, target_.height}};
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_pipeline_);
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_layout_, 0, 1, &ground_set_, 0, nullptr);
+    vkCmdDraw(cmd, 6, 1, 0, 0);
 }
 
 // ---- The grass context --------------------------------------------------------------------
@@ -751,6 +928,7 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     const bool frame_begun = result == GRASS_SUCCESS;
     if (frame_begun) result = grass_vk_prepare_frame(context, cmd_);
     begin_pass(cmd_);
+    if (target_.ground) draw_ground(cmd_, view);
     if (occluder) clear_occluder(cmd_, view, *occluder);
     if (result == GRASS_SUCCESS) {
         grass_vk_record_desc record = grass_vk_default_record_desc();

@@ -1,0 +1,123 @@
+// The public entry points of grass_vk.h: argument checks, then the Vulkan backend.
+#include "context.hpp"
+#include "vk_backend.hpp"
+#include "vk_desc_check.hpp"
+#include "vk_device.hpp"
+
+#include <grass/grass_vk.h>
+
+using grass::vk::VkBackend;
+
+namespace {
+
+const char* backend_name(grass_backend backend) {
+    switch (backend) {
+    case GRASS_BACKEND_NONE: return "GRASS_BACKEND_NONE (made by grass_create_context)";
+    case GRASS_BACKEND_GL: return "GRASS_BACKEND_GL (made by grass_gl_create_context)";
+    case GRASS_BACKEND_VULKAN: return "GRASS_BACKEND_VULKAN";
+    }
+    return "unknown";
+}
+
+grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** out_backend) {
+    const char* function = "grass_vk_create_context";
+    const auto* vk_desc = static_cast<const grass_vk_desc*>(user_data);
+    grass_result r = grass::vk::check_vk_desc(ctx, function, vk_desc);
+    if (r != GRASS_SUCCESS) return r;
+    grass::vk::Device device;
+    r = grass::vk::load_device(ctx, function, *vk_desc, &device);
+    if (r != GRASS_SUCCESS) return r;
+
+    VkBackend* backend = ctx->host.create<VkBackend>(ctx, *vk_desc, device);
+    try {
+        r = backend->init(function);
+    } catch (...) {
+        ctx->host.destroy(backend);
+        throw;
+    }
+    if (r != GRASS_SUCCESS) {
+        ctx->host.destroy(backend);
+        return r;
+    }
+    *out_backend = backend;
+    return GRASS_SUCCESS;
+}
+
+// The checks every recording call makes; on success *out is the context's backend.
+grass_result check_frame_call(grass_context* ctx, const char* function, VkBackend** out) {
+    if (ctx->backend == nullptr || ctx->backend->kind() != GRASS_BACKEND_VULKAN) {
+        return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+                         "%s: the context's backend is %s; only a context made by grass_vk_create_context records "
+                         "Vulkan commands",
+                         function, backend_name(ctx->backend ? ctx->backend->kind() : GRASS_BACKEND_NONE));
+    }
+    if (!ctx->in_frame) {
+        return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
+                         "%s: no frame is begun; call grass_begin_frame() first", function);
+    }
+    *out = static_cast<VkBackend*>(ctx->backend);
+    return GRASS_SUCCESS;
+}
+
+} // namespace
+
+grass_vk_desc grass_vk_default_desc(void) {
+    grass_vk_desc d{};
+    d.type = GRASS_STRUCT_TYPE_VK_DESC;
+    d.sample_count = 1;
+    d.frames_in_flight = 2;
+    return d;
+}
+
+grass_vk_record_desc grass_vk_default_record_desc(void) {
+    grass_vk_record_desc d{};
+    d.type = GRASS_STRUCT_TYPE_VK_RECORD_DESC;
+    return d;
+}
+
+grass_result grass_vk_create_context(uint32_t header_version, const grass_context_desc* desc,
+                                     const grass_vk_desc* vk_desc, grass_context** out_context) {
+    // vk_desc is checked by the factory, once the context can log.
+    return grass::create_context("grass_vk_create_context", header_version, desc, make_backend,
+                                 const_cast<grass_vk_desc*>(vk_desc), out_context);
+}
+
+grass_result grass_vk_prepare_frame(grass_context* ctx, void* command_buffer) {
+    const char* function = "grass_vk_prepare_frame";
+    if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
+    return grass::guarded(ctx, function, [&] {
+        VkBackend* backend = nullptr;
+        grass_result r = check_frame_call(ctx, function, &backend);
+        if (r != GRASS_SUCCESS) return r;
+        if (!command_buffer) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: command_buffer is NULL",
+                             function);
+        }
+        return backend->prepare_frame(static_cast<VkCommandBuffer>(command_buffer));
+    });
+}
+
+grass_result grass_vk_record(grass_context* ctx, const grass_vk_record_desc* record) {
+    const char* function = "grass_vk_record";
+    if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
+    return grass::guarded(ctx, function, [&] {
+        VkBackend* backend = nullptr;
+        grass_result r = check_frame_call(ctx, function, &backend);
+        if (r != GRASS_SUCCESS) return r;
+        if (!record) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: record is NULL", function);
+        if (record->type != GRASS_STRUCT_TYPE_VK_RECORD_DESC) {
+            return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                             "%s: record->type is 0x%08x; expected GRASS_STRUCT_TYPE_VK_RECORD_DESC (0x%08x)", function,
+                             static_cast<unsigned>(record->type), static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_RECORD_DESC));
+        }
+        if (record->next) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: record->next must be NULL",
+                             function);
+        }
+        if (!record->command_buffer) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: record->command_buffer is NULL",
+                             function);
+        }
+        return backend->record(static_cast<VkCommandBuffer>(record->command_buffer));
+    });
+}

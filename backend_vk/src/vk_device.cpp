@@ -1,0 +1,114 @@
+#include "vk_device.hpp"
+
+#include "allocator.hpp"
+#include "context.hpp"
+
+#include <cstring>
+
+namespace grass::vk {
+
+namespace {
+
+bool has_device_extension(const Device& d, HostAllocator* host, const char* name) {
+    uint32_t count = 0;
+    if (d.fn.vkEnumerateDeviceExtensionProperties(d.physical_device, nullptr, &count, nullptr) != VK_SUCCESS) {
+        return false;
+    }
+    Vector<VkExtensionProperties> extensions(count, VkExtensionProperties{}, StlAllocator<VkExtensionProperties>(host));
+    if (d.fn.vkEnumerateDeviceExtensionProperties(d.physical_device, nullptr, &count, extensions.data()) < VK_SUCCESS) {
+        return false;
+    }
+    for (uint32_t i = 0; i < count && i < extensions.size(); ++i) {
+        if (std::strcmp(extensions[i].extensionName, name) == 0) return true;
+    }
+    return false;
+}
+
+grass_result unsupported(grass_context* ctx, const char* function, const Device& d, const char* what) {
+    return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED, "%s: the device \"%s\" (Vulkan %u.%u) %s",
+                     function, d.properties.deviceName, VK_API_VERSION_MAJOR(d.properties.apiVersion),
+                     VK_API_VERSION_MINOR(d.properties.apiVersion), what);
+}
+
+} // namespace
+
+grass_result load_device(grass_context* ctx, const char* function, const grass_vk_desc& vk_desc, Device* out) {
+    Device& d = *out;
+    d.instance = static_cast<VkInstance>(vk_desc.instance);
+    d.physical_device = static_cast<VkPhysicalDevice>(vk_desc.physical_device);
+    d.device = static_cast<VkDevice>(vk_desc.device);
+    if (const char* missing = load_functions(vk_desc.get_instance_proc_addr, d.instance, d.device, &d.fn)) {
+        return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+                         "%s: vk_desc->get_instance_proc_addr returned NULL for %s (is the instance or device valid, "
+                         "and Vulkan 1.1 or newer?)",
+                         function, missing);
+    }
+    d.fn.vkGetPhysicalDeviceProperties(d.physical_device, &d.properties);
+    d.fn.vkGetPhysicalDeviceMemoryProperties(d.physical_device, &d.memory);
+
+    if (d.properties.apiVersion < VK_API_VERSION_1_1) {
+        return unsupported(ctx, function, d, "is older than Vulkan 1.1, which grass needs");
+    }
+    if (vk_desc.render_pass == 0 && d.properties.apiVersion < VK_API_VERSION_1_3 &&
+        !has_device_extension(d, &ctx->host, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME)) {
+        return unsupported(ctx, function, d,
+                           "has neither Vulkan 1.3 nor VK_KHR_dynamic_rendering, which vk_desc->render_pass 0 "
+                           "(dynamic rendering) needs");
+    }
+
+    uint32_t family_count = 0;
+    d.fn.vkGetPhysicalDeviceQueueFamilyProperties(d.physical_device, &family_count, nullptr);
+    if (vk_desc.queue_family >= family_count) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: vk_desc->queue_family is %u; the device's queue families are 0..%u", function,
+                         vk_desc.queue_family, family_count - 1);
+    }
+    Vector<VkQueueFamilyProperties> families(family_count, VkQueueFamilyProperties{},
+                                             StlAllocator<VkQueueFamilyProperties>(&ctx->host));
+    d.fn.vkGetPhysicalDeviceQueueFamilyProperties(d.physical_device, &family_count, families.data());
+    if (!(families[vk_desc.queue_family].queueFlags & VK_QUEUE_GRAPHICS_BIT)) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: vk_desc->queue_family is %u, a family without VK_QUEUE_GRAPHICS_BIT; grass records "
+                         "draws, so the host must submit them to a graphics queue",
+                         function, vk_desc.queue_family);
+    }
+
+    const VkSampleCountFlags samples = d.properties.limits.framebufferColorSampleCounts &
+                                       d.properties.limits.framebufferDepthSampleCounts;
+    if (!(samples & vk_desc.sample_count)) {
+        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: vk_desc->sample_count is %u; the device \"%s\" supports the sample counts 0x%x for "
+                         "colour and depth",
+                         function, vk_desc.sample_count, d.properties.deviceName, static_cast<unsigned>(samples));
+    }
+
+    VkFormatProperties format{};
+    d.fn.vkGetPhysicalDeviceFormatProperties(d.physical_device, static_cast<VkFormat>(vk_desc.depth_format), &format);
+    if (!(format.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT)) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                         "%s: vk_desc->depth_format is %u, which the device \"%s\" cannot use as a depth attachment",
+                         function, vk_desc.depth_format, d.properties.deviceName);
+    }
+    if (vk_desc.render_pass == 0) {
+        d.fn.vkGetPhysicalDeviceFormatProperties(d.physical_device, static_cast<VkFormat>(vk_desc.color_format),
+                                                 &format);
+        if (!(format.optimalTilingFeatures & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT)) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                             "%s: vk_desc->color_format is %u, which the device \"%s\" cannot use as a colour "
+                             "attachment",
+                             function, vk_desc.color_format, d.properties.deviceName);
+        }
+    }
+
+    d.fn.vkGetPhysicalDeviceFormatProperties(d.physical_device, kDensityMapFormat, &format);
+    const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                        VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
+                                        VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+    if ((format.optimalTilingFeatures & needed) != needed) {
+        return unsupported(ctx, function, d,
+                           "cannot sample VK_FORMAT_R16_UNORM images with linear filtering, which density maps need");
+    }
+    return GRASS_SUCCESS;
+}
+
+} // namespace grass::vk

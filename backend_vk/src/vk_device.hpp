@@ -1,0 +1,31 @@
+// The host's device as the backend sees it: the loaded function table, the handles, and
+// the properties it needs; with the checks that the device can run grass.
+#pragma once
+
+#include "vk_functions.hpp"
+
+#include <grass/grass_vk.h>
+
+struct grass_context;
+
+namespace grass::vk {
+
+struct Device {
+    Functions fn;
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_device = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memory{};
+};
+
+// The format of density maps: 16-bit unorm, sampled with linear filtering.
+constexpr VkFormat kDensityMapFormat = VK_FORMAT_R16_UNORM;
+
+// Loads the functions and checks the device: Vulkan 1.1, dynamic rendering when
+// vk_desc->render_pass is 0, a graphics queue family, the sample count, the density map
+// format. Logs and returns GRASS_ERROR_UNSUPPORTED (or GRASS_ERROR_BACKEND when the
+// loader lacks a function). `vk_desc` has passed check_vk_desc().
+grass_result load_device(grass_context* context, const char* function, const grass_vk_desc& vk_desc, Device* out);
+
+} // namespace grass::vk

@@ -1,0 +1,110 @@
+#include "vk_frame_ring.hpp"
+
+#include <cstring>
+
+namespace grass::vk {
+
+namespace {
+constexpr uint32_t kInitialInstances = 256;
+constexpr uint32_t kInitialDraws = 16;
+
+VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
+    return (value + alignment - 1) / alignment * alignment;
+}
+
+// Doubles until `needed` fits, so that a growing scene reallocates a few times only.
+uint32_t grown_capacity(uint32_t current, uint32_t needed) {
+    uint64_t capacity = current ? current : needed;
+    while (capacity < needed) capacity *= 2;
+    return capacity > 0xffffffffu ? needed : static_cast<uint32_t>(capacity);
+}
+} // namespace
+
+FrameRing::FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight,
+                     VkDeviceSize uniform_alignment)
+    : memory_(memory), deferred_(deferred), frames_in_flight_(frames_in_flight),
+      frame_stride_(align_up(sizeof(FrameUniforms), uniform_alignment ? uniform_alignment : 1)),
+      field_stride_(align_up(sizeof(FieldUniforms), uniform_alignment ? uniform_alignment : 1)) {}
+
+FrameRing::~FrameRing() {
+    for (Slot& s : slots_) {
+        memory_.destroy_buffer(&s.instances);
+        memory_.destroy_buffer(&s.uniforms);
+    }
+}
+
+bool FrameRing::create(VkFailure* failure, const char** what) {
+    for (uint32_t i = 0; i < frames_in_flight_; ++i) {
+        *what = "a per-frame instance buffer";
+        if (!grow_instances(slots_[i], kInitialInstances, 0, failure)) return false;
+        *what = "a per-frame uniform buffer";
+        if (!grow_uniforms(slots_[i], kInitialDraws, 0, failure)) return false;
+    }
+    return true;
+}
+
+bool FrameRing::replace_buffer(Buffer* buffer, VkDeviceSize size, VkBufferUsageFlags usage, uint64_t frame,
+                               VkFailure* failure) {
+    // The old buffer may still be read by frames in flight: it waits in the deferred
+    // deletion queue (room reserved first, so that nothing after the allocation throws).
+    const bool replace = buffer->buffer != VK_NULL_HANDLE;
+    if (replace) deferred_.promise(1);
+    Buffer fresh;
+    if (!memory_.create_buffer(size, usage, MemoryUse::streaming, &fresh, failure)) {
+        if (replace) deferred_.forgo(1);
+        return false;
+    }
+    deferred_.retire(buffer, frame);
+    *buffer = fresh;
+    return true;
+}
+
+bool FrameRing::grow_instances(Slot& s, uint32_t needed, uint64_t frame, VkFailure* failure) {
+    const uint32_t capacity = grown_capacity(s.instance_capacity, needed);
+    if (!replace_buffer(&s.instances, VkDeviceSize(capacity) * sizeof(BladeInstance),
+                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frame, failure)) {
+        return false;
+    }
+    s.instance_capacity = capacity;
+    return true;
+}
+
+bool FrameRing::grow_uniforms(Slot& s, uint32_t needed, uint64_t frame, VkFailure* failure) {
+    const uint32_t capacity = grown_capacity(s.draw_capacity, needed);
+    if (!replace_buffer(&s.uniforms, frame_stride_ + field_stride_ * capacity, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                        frame, failure)) {
+        return false;
+    }
+    s.draw_capacity = capacity;
+    return true;
+}
+
+bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool* uniforms_replaced,
+                      VkFailure* failure, const char** what) {
+    Slot& s = slots_[slot];
+    *uniforms_replaced = false;
+    const uint32_t instances = static_cast<uint32_t>(plan.blade_instances.size());
+    const uint32_t draws = static_cast<uint32_t>(plan.blade_draws.size());
+    if (instances > s.instance_capacity) {
+        *what = "a per-frame instance buffer";
+        if (!grow_instances(s, instances, frame, failure)) return false;
+    }
+    if (draws > s.draw_capacity) {
+        *what = "a per-frame uniform buffer";
+        if (!grow_uniforms(s, draws, frame, failure)) return false;
+        *uniforms_replaced = true;
+    }
+
+    if (instances > 0) std::memcpy(s.instances.mapped, plan.blade_instances.data(), instances * sizeof(BladeInstance));
+    auto* uniforms = static_cast<unsigned char*>(s.uniforms.mapped);
+    std::memcpy(uniforms + frame_offset(), &plan.frame, sizeof(FrameUniforms));
+    for (uint32_t i = 0; i < draws; ++i) {
+        std::memcpy(uniforms + field_offset(i), &plan.blade_draws[i].uniforms, sizeof(FieldUniforms));
+    }
+
+    *what = "the per-frame buffers";
+    return memory_.flush(s.instances, 0, VkDeviceSize(instances) * sizeof(BladeInstance), failure) &&
+           memory_.flush(s.uniforms, 0, field_offset(draws), failure);
+}
+
+} // namespace grass::vk

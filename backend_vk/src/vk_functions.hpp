@@ -1,0 +1,77 @@
+// The Vulkan entry points the backend calls, loaded per context through the host's
+// vkGetInstanceProcAddr (instance level) and vkGetDeviceProcAddr (device level). There
+// is no global function pointer: two contexts on two devices never share a table.
+#pragma once
+
+#include <grass/grass_vk.h>
+
+#include <vulkan/vulkan.h>
+
+namespace grass::vk {
+
+// Instance-level functions: queried with the host's instance.
+#define GRASS_VK_INSTANCE_FUNCTIONS(X)          \
+    X(vkGetDeviceProcAddr)                      \
+    X(vkGetPhysicalDeviceProperties)            \
+    X(vkGetPhysicalDeviceMemoryProperties)      \
+    X(vkGetPhysicalDeviceFormatProperties)      \
+    X(vkGetPhysicalDeviceQueueFamilyProperties) \
+    X(vkEnumerateDeviceExtensionProperties)
+
+// Device-level functions: queried with the host's device, so calls skip the loader's
+// dispatch trampoline.
+#define GRASS_VK_DEVICE_FUNCTIONS(X)    \
+    X(vkCreateBuffer)                   \
+    X(vkDestroyBuffer)                  \
+    X(vkGetBufferMemoryRequirements)    \
+    X(vkBindBufferMemory)               \
+    X(vkCreateImage)                    \
+    X(vkDestroyImage)                   \
+    X(vkGetImageMemoryRequirements)     \
+    X(vkBindImageMemory)                \
+    X(vkCreateImageView)                \
+    X(vkDestroyImageView)               \
+    X(vkAllocateMemory)                 \
+    X(vkFreeMemory)                     \
+    X(vkMapMemory)                      \
+    X(vkUnmapMemory)                    \
+    X(vkFlushMappedMemoryRanges)        \
+    X(vkCreateSampler)                  \
+    X(vkDestroySampler)                 \
+    X(vkCreateShaderModule)             \
+    X(vkDestroyShaderModule)            \
+    X(vkCreateDescriptorSetLayout)      \
+    X(vkDestroyDescriptorSetLayout)     \
+    X(vkCreatePipelineLayout)           \
+    X(vkDestroyPipelineLayout)          \
+    X(vkCreateGraphicsPipelines)        \
+    X(vkDestroyPipeline)                \
+    X(vkCreateDescriptorPool)           \
+    X(vkDestroyDescriptorPool)          \
+    X(vkAllocateDescriptorSets)         \
+    X(vkFreeDescriptorSets)             \
+    X(vkUpdateDescriptorSets)           \
+    X(vkCmdPipelineBarrier)             \
+    X(vkCmdCopyBuffer)                  \
+    X(vkCmdCopyBufferToImage)           \
+    X(vkCmdBindPipeline)                \
+    X(vkCmdBindDescriptorSets)          \
+    X(vkCmdBindVertexBuffers)           \
+    X(vkCmdBindIndexBuffer)             \
+    X(vkCmdSetViewport)                 \
+    X(vkCmdSetScissor)                  \
+    X(vkCmdDrawIndexed)
+
+struct Functions {
+#define GRASS_VK_DECLARE_FUNCTION(name) PFN_##name name = nullptr;
+    GRASS_VK_INSTANCE_FUNCTIONS(GRASS_VK_DECLARE_FUNCTION)
+    GRASS_VK_DEVICE_FUNCTIONS(GRASS_VK_DECLARE_FUNCTION)
+#undef GRASS_VK_DECLARE_FUNCTION
+};
+
+// Fills `out`. Returns nullptr on success, or the name of the first function the loader
+// did not return (the table is then partly filled and must not be used).
+const char* load_functions(grass_vk_get_instance_proc_addr_fn get_instance_proc_addr, VkInstance instance,
+                           VkDevice device, Functions* out);
+
+} // namespace grass::vk

@@ -1,0 +1,184 @@
+#include "vk_memory.hpp"
+
+namespace grass::vk {
+
+namespace {
+
+struct TypeRule {
+    VkMemoryPropertyFlags required;
+    VkMemoryPropertyFlags preferred[2]; // most important first
+    VkMemoryPropertyFlags avoided;      // a tie-break: leaves scarce memory to other uses
+};
+
+TypeRule rule_for(MemoryUse use) {
+    switch (use) {
+    case MemoryUse::device_local:
+        // Plain VRAM before the host-visible window onto it (resizable BAR).
+        return {0, {VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0}, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT};
+    case MemoryUse::staging:
+        // System memory, leaving the BAR window to the per-frame buffers.
+        return {VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, {VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, 0},
+                VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT};
+    case MemoryUse::streaming:
+        // Coherent first (no flushes), then device-local (resizable BAR, unified memory).
+        return {VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT,
+                {VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT}, 0};
+    }
+    return {0, {0, 0}, 0};
+}
+
+// Higher is better; -1: the type cannot hold this resource.
+int score(const VkMemoryType& type, uint32_t index, uint32_t type_bits, const TypeRule& rule) {
+    if (!(type_bits & (1u << index))) return -1;
+    if ((type.propertyFlags & rule.required) != rule.required) return -1;
+    // Lazily allocated and protected memory cannot back these resources.
+    if (type.propertyFlags & (VK_MEMORY_PROPERTY_LAZILY_ALLOCATED_BIT | VK_MEMORY_PROPERTY_PROTECTED_BIT)) return -1;
+    int s = 0;
+    if (rule.preferred[0] && (type.propertyFlags & rule.preferred[0]) == rule.preferred[0]) s += 4;
+    if (rule.preferred[1] && (type.propertyFlags & rule.preferred[1]) == rule.preferred[1]) s += 2;
+    if (!(type.propertyFlags & rule.avoided)) s += 1;
+    return s;
+}
+
+} // namespace
+
+bool Memory::allocate(const VkMemoryRequirements& requirements, MemoryUse use, VkDeviceMemory* out,
+                      VkMemoryPropertyFlags* out_flags, VkFailure* failure) {
+    const TypeRule rule = rule_for(use);
+    bool tried[VK_MAX_MEMORY_TYPES] = {};
+    VkResult last = VK_ERROR_OUT_OF_DEVICE_MEMORY;
+    for (;;) {
+        int best = -1, best_score = -1;
+        for (uint32_t i = 0; i < properties_.memoryTypeCount; ++i) {
+            if (tried[i]) continue;
+            const int s = score(properties_.memoryTypes[i], i, requirements.memoryTypeBits, rule);
+            if (s > best_score) {
+                best = static_cast<int>(i);
+                best_score = s;
+            }
+        }
+        if (best < 0) break;
+        tried[best] = true;
+        VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        info.allocationSize = requirements.size;
+        info.memoryTypeIndex = static_cast<uint32_t>(best);
+        last = fn_.vkAllocateMemory(device_, &info, nullptr, out);
+        if (last == VK_SUCCESS) {
+            *out_flags = properties_.memoryTypes[best].propertyFlags;
+            bytes_ += requirements.size;
+            return true;
+        }
+        // Another type may live on a heap with room; any other error is final.
+        if (last != VK_ERROR_OUT_OF_DEVICE_MEMORY) break;
+    }
+    failure->call = "vkAllocateMemory";
+    failure->result = last;
+    return false;
+}
+
+bool Memory::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use, Buffer* out,
+                           VkFailure* failure) {
+    Buffer b;
+    b.size = size;
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    if (!vk_ok(fn_.vkCreateBuffer(device_, &info, nullptr, &b.buffer), "vkCreateBuffer", failure)) return false;
+
+    VkMemoryRequirements requirements{};
+    fn_.vkGetBufferMemoryRequirements(device_, b.buffer, &requirements);
+    VkMemoryPropertyFlags flags = 0;
+    if (!allocate(requirements, use, &b.memory, &flags, failure)) {
+        fn_.vkDestroyBuffer(device_, b.buffer, nullptr);
+        return false;
+    }
+    b.allocated = requirements.size;
+    b.coherent = (flags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
+    bool ok = vk_ok(fn_.vkBindBufferMemory(device_, b.buffer, b.memory, 0), "vkBindBufferMemory", failure);
+    if (ok && use != MemoryUse::device_local) {
+        ok = vk_ok(fn_.vkMapMemory(device_, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory", failure);
+    }
+    if (!ok) {
+        destroy_buffer(&b);
+        return false;
+    }
+    *out = b;
+    return true;
+}
+
+void Memory::destroy_buffer(Buffer* b) {
+    if (b->buffer) fn_.vkDestroyBuffer(device_, b->buffer, nullptr);
+    if (b->memory) {
+        // Freeing mapped memory unmaps it implicitly.
+        fn_.vkFreeMemory(device_, b->memory, nullptr);
+        bytes_ -= b->allocated;
+    }
+    *b = Buffer{};
+}
+
+bool Memory::create_image(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage, Image* out,
+                          VkFailure* failure) {
+    Image im;
+    im.width = width;
+    im.height = height;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {width, height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    if (!vk_ok(fn_.vkCreateImage(device_, &info, nullptr, &im.image), "vkCreateImage", failure)) return false;
+
+    VkMemoryRequirements requirements{};
+    fn_.vkGetImageMemoryRequirements(device_, im.image, &requirements);
+    VkMemoryPropertyFlags flags = 0;
+    if (!allocate(requirements, MemoryUse::device_local, &im.memory, &flags, failure)) {
+        fn_.vkDestroyImage(device_, im.image, nullptr);
+        return false;
+    }
+    im.allocated = requirements.size;
+    bool ok = vk_ok(fn_.vkBindImageMemory(device_, im.image, im.memory, 0), "vkBindImageMemory", failure);
+    if (ok) {
+        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        view.image = im.image;
+        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.format = format;
+        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        ok = vk_ok(fn_.vkCreateImageView(device_, &view, nullptr, &im.view), "vkCreateImageView", failure);
+    }
+    if (!ok) {
+        destroy_image(&im);
+        return false;
+    }
+    *out = im;
+    return true;
+}
+
+void Memory::destroy_image(Image* im) {
+    if (im->view) fn_.vkDestroyImageView(device_, im->view, nullptr);
+    if (im->image) fn_.vkDestroyImage(device_, im->image, nullptr);
+    if (im->memory) {
+        fn_.vkFreeMemory(device_, im->memory, nullptr);
+        bytes_ -= im->allocated;
+    }
+    *im = Image{};
+}
+
+bool Memory::flush(const Buffer& b, VkDeviceSize offset, VkDeviceSize size, VkFailure* failure) {
+    if (b.coherent || size == 0) return true;
+    // The range must start and end on nonCoherentAtomSize (or end at the allocation's end).
+    VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
+    range.memory = b.memory;
+    range.offset = offset / atom_ * atom_;
+    const VkDeviceSize end = (offset + size + atom_ - 1) / atom_ * atom_;
+    range.size = end >= b.allocated ? VK_WHOLE_SIZE : end - range.offset;
+    return vk_ok(fn_.vkFlushMappedMemoryRanges(device_, 1, &range), "vkFlushMappedMemoryRanges", failure);
+}
+
+} // namespace grass::vk

@@ -1,0 +1,212 @@
+#include "vk_pipeline.hpp"
+
+#include "frame_plan.hpp"
+#include "patch_data.hpp"
+
+#include <cstddef>
+
+namespace grass_vk_spirv {
+extern const uint32_t blade_vert[];
+extern const uint32_t blade_vert_size; // bytes
+extern const uint32_t blade_frag[];
+extern const uint32_t blade_frag_size;
+} // namespace grass_vk_spirv
+
+namespace grass::vk {
+
+namespace {
+
+// Vertex input: binding 0 = patch vertices (grass::BladeVertex), binding 1 = per-instance
+// cells (grass::BladeInstance); locations as in blade.vert.
+constexpr VkVertexInputBindingDescription kBindings[] = {
+    {0, sizeof(BladeVertex), VK_VERTEX_INPUT_RATE_VERTEX},
+    {1, sizeof(BladeInstance), VK_VERTEX_INPUT_RATE_INSTANCE},
+};
+constexpr VkVertexInputAttributeDescription kAttributes[] = {
+    {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(BladeVertex, position)},
+    {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(BladeVertex, normal)},
+    {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(BladeVertex, root_shape)},
+    {3, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(BladeVertex, color)},
+    {4, 0, VK_FORMAT_R32_SFLOAT, offsetof(BladeVertex, threshold)},
+    {5, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(BladeInstance, origin)},
+    {6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(BladeInstance, map_uv)},
+};
+static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_shape) == 24 &&
+                  offsetof(BladeVertex, color) == 40 && offsetof(BladeVertex, threshold) == 44,
+              "vertex layout of blade.vert");
+static_assert(offsetof(BladeInstance, map_uv) == 16, "instance layout of blade.vert");
+
+bool format_has_stencil(VkFormat format) {
+    return format == VK_FORMAT_D16_UNORM_S8_UINT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
+           format == VK_FORMAT_D32_SFLOAT_S8_UINT || format == VK_FORMAT_S8_UINT;
+}
+
+} // namespace
+
+bool BladePipeline::create(const PipelineTarget& target, VkFailure* failure, const char** what) {
+    if (!create_layouts(failure, what) || !create_pipelines(target, failure, what)) {
+        destroy();
+        return false;
+    }
+    return true;
+}
+
+void BladePipeline::destroy() {
+    if (depth_tested_) fn_.vkDestroyPipeline(device_, depth_tested_, nullptr);
+    if (depth_off_) fn_.vkDestroyPipeline(device_, depth_off_, nullptr);
+    if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, nullptr);
+    if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
+    if (sampler_) fn_.vkDestroySampler(device_, sampler_, nullptr);
+    depth_tested_ = depth_off_ = VK_NULL_HANDLE;
+    layout_ = VK_NULL_HANDLE;
+    set_layout_ = VK_NULL_HANDLE;
+    sampler_ = VK_NULL_HANDLE;
+}
+
+bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
+    // Design maps: bilinear, clamped to the edge, one mip.
+    VkSamplerCreateInfo sampler{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    sampler.magFilter = VK_FILTER_LINEAR;
+    sampler.minFilter = VK_FILTER_LINEAR;
+    sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    sampler.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sampler.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sampler.minLod = 0.0f;
+    sampler.maxLod = 0.0f;
+    *what = "the density map sampler";
+    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, nullptr, &sampler_), "vkCreateSampler", failure)) return false;
+
+    const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    const VkDescriptorSetLayoutBinding bindings[] = {
+        {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, stages, nullptr},
+        {kBindingField, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, stages, nullptr},
+        {kBindingDensityMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
+    };
+    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_info.bindingCount = 3;
+    set_info.pBindings = bindings;
+    *what = "the blade descriptor set layout";
+    if (!vk_ok(fn_.vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_),
+               "vkCreateDescriptorSetLayout", failure)) {
+        return false;
+    }
+
+    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout_info.setLayoutCount = 1;
+    layout_info.pSetLayouts = &set_layout_;
+    *what = "the blade pipeline layout";
+    return vk_ok(fn_.vkCreatePipelineLayout(device_, &layout_info, nullptr, &layout_), "vkCreatePipelineLayout",
+                 failure);
+}
+
+bool BladePipeline::create_pipelines(const PipelineTarget& target, VkFailure* failure, const char** what) {
+    VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+    const uint32_t* code[2] = {grass_vk_spirv::blade_vert, grass_vk_spirv::blade_frag};
+    const size_t code_size[2] = {grass_vk_spirv::blade_vert_size, grass_vk_spirv::blade_frag_size};
+    *what = "the blade shader modules";
+    bool ok = true;
+    for (int i = 0; i < 2 && ok; ++i) {
+        VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+        info.codeSize = code_size[i];
+        info.pCode = code[i];
+        ok = vk_ok(fn_.vkCreateShaderModule(device_, &info, nullptr, &modules[i]), "vkCreateShaderModule", failure);
+    }
+
+    VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+                                                 {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = modules[0];
+    stages[0].pName = "main";
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = modules[1];
+    stages[1].pName = "main";
+
+    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    vertex_input.vertexBindingDescriptionCount = 2;
+    vertex_input.pVertexBindingDescriptions = kBindings;
+    vertex_input.vertexAttributeDescriptionCount = 7;
+    vertex_input.pVertexAttributeDescriptions = kAttributes;
+
+    VkPipelineInputAssemblyStateCreateInfo input_assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    input_assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+
+    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+
+    // Blades are two-sided: the fragment shader lights the side that faces the camera.
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.polygonMode = VK_POLYGON_MODE_FILL;
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    raster.lineWidth = 1.0f;
+
+    // With multisampling, the blade edge alpha becomes coverage (blade.frag).
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = target.samples;
+    multisample.alphaToCoverageEnable = target.samples != VK_SAMPLE_COUNT_1_BIT ? VK_TRUE : VK_FALSE;
+
+    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth.depthTestEnable = VK_TRUE;
+    depth.depthWriteEnable = VK_TRUE;
+    depth.depthCompareOp = target.depth_greater ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
+    depth.maxDepthBounds = 1.0f;
+
+    VkPipelineColorBlendAttachmentState attachment{};
+    attachment.colorWriteMask =
+        VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blend.attachmentCount = 1;
+    blend.pAttachments = &attachment;
+
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = 2;
+    dynamic.pDynamicStates = dynamic_states;
+
+    // Dynamic rendering (Vulkan 1.3 or VK_KHR_dynamic_rendering): the formats stand in
+    // for the render pass.
+    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.colorAttachmentCount = 1;
+    rendering.pColorAttachmentFormats = &target.color_format;
+    rendering.depthAttachmentFormat = target.depth_format;
+    if (format_has_stencil(target.depth_format)) rendering.stencilAttachmentFormat = target.depth_format;
+
+    VkGraphicsPipelineCreateInfo infos[2] = {{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO},
+                                             {VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO}};
+    VkPipelineDepthStencilStateCreateInfo depth_off = depth;
+    depth_off.depthTestEnable = VK_FALSE;
+    depth_off.depthWriteEnable = VK_FALSE;
+    for (int i = 0; i < 2; ++i) {
+        VkGraphicsPipelineCreateInfo& info = infos[i];
+        info.pNext = target.render_pass ? nullptr : &rendering;
+        info.stageCount = 2;
+        info.pStages = stages;
+        info.pVertexInputState = &vertex_input;
+        info.pInputAssemblyState = &input_assembly;
+        info.pViewportState = &viewport;
+        info.pRasterizationState = &raster;
+        info.pMultisampleState = &multisample;
+        info.pDepthStencilState = i == 0 ? &depth : &depth_off;
+        info.pColorBlendState = &blend;
+        info.pDynamicState = &dynamic;
+        info.layout = layout_;
+        info.renderPass = target.render_pass;
+        info.subpass = target.subpass;
+    }
+    if (ok) {
+        *what = "the blade pipelines";
+        VkPipeline pipelines[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+        ok = vk_ok(fn_.vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 2, infos, nullptr, pipelines),
+                   "vkCreateGraphicsPipelines", failure);
+        depth_tested_ = pipelines[0];
+        depth_off_ = pipelines[1];
+    }
+    for (VkShaderModule m : modules) {
+        if (m) fn_.vkDestroyShaderModule(device_, m, nullptr);
+    }
+    return ok;
+}
+
+} // namespace grass::vk

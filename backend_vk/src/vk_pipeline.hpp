@@ -1,0 +1,53 @@
+// The blade pipeline: descriptor set layout (Frame and Field uniform blocks as dynamic
+// uniform buffers, the density map with an immutable linear clamp sampler), pipeline
+// layout, and two graphics pipelines, with and without the depth test.
+#pragma once
+
+#include "vk_functions.hpp"
+#include "vk_result.hpp"
+
+#include <cstdint>
+
+namespace grass::vk {
+
+// Binding numbers of blade_interface.glsl, descriptor set 0.
+enum BladeBinding : uint32_t { kBindingFrame = 0, kBindingField = 1, kBindingDensityMap = 2 };
+
+struct PipelineTarget {
+    VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats
+    uint32_t subpass = 0;
+    VkFormat color_format = VK_FORMAT_UNDEFINED;
+    VkFormat depth_format = VK_FORMAT_UNDEFINED;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    bool depth_greater = false;                // reversed-Z host: GREATER_OR_EQUAL
+};
+
+class BladePipeline {
+public:
+    BladePipeline(const Functions& functions, VkDevice device) : fn_(functions), device_(device) {}
+    ~BladePipeline() { destroy(); }
+    BladePipeline(const BladePipeline&) = delete;
+    BladePipeline& operator=(const BladePipeline&) = delete;
+
+    // *what names the object being made when it fails.
+    bool create(const PipelineTarget& target, VkFailure* failure, const char** what);
+    void destroy();
+
+    VkDescriptorSetLayout set_layout() const { return set_layout_; }
+    VkPipelineLayout layout() const { return layout_; }
+    VkPipeline pipeline(bool depth_test) const { return depth_test ? depth_tested_ : depth_off_; }
+
+private:
+    bool create_layouts(VkFailure* failure, const char** what);
+    bool create_pipelines(const PipelineTarget& target, VkFailure* failure, const char** what);
+
+    const Functions& fn_;
+    VkDevice device_;
+    VkSampler sampler_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline depth_tested_ = VK_NULL_HANDLE;
+    VkPipeline depth_off_ = VK_NULL_HANDLE;
+};
+
+} // namespace grass::vk

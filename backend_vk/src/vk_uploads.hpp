@@ -1,0 +1,48 @@
+// One batch of uploads recorded by grass_vk_prepare_frame: staging-buffer copies into
+// device-local vertex/index buffers and density images, with the barriers around them
+// (image layouts UNDEFINED -> TRANSFER_DST -> SHADER_READ_ONLY; transfer writes made
+// visible to vertex input and shader reads). Recorded outside any render pass.
+#pragma once
+
+#include "allocator.hpp"
+#include "vk_functions.hpp"
+
+namespace grass::vk {
+
+class UploadBatch {
+public:
+    explicit UploadBatch(HostAllocator* host)
+        : buffer_copies_(StlAllocator<BufferCopy>(host)), image_copies_(StlAllocator<ImageCopy>(host)),
+          buffer_barriers_(StlAllocator<VkBufferMemoryBarrier>(host)),
+          image_barriers_(StlAllocator<VkImageMemoryBarrier>(host)) {}
+
+    // The adds may throw std::bad_alloc; nothing is recorded until record().
+    // `dst_access`: how the draws read `dst` (VERTEX_ATTRIBUTE_READ or INDEX_READ).
+    void copy_buffer(VkBuffer src, VkDeviceSize src_offset, VkBuffer dst, VkDeviceSize size, VkAccessFlags dst_access);
+    // A whole single-mip colour image, tightly packed in `src` from `src_offset`.
+    void copy_image(VkBuffer src, VkDeviceSize src_offset, VkImage dst, uint32_t width, uint32_t height);
+
+    bool empty() const { return buffer_copies_.empty() && image_copies_.empty(); }
+    // Records the batch into `cmd` and empties it (capacity is kept for the next frame).
+    void record(const Functions& fn, VkCommandBuffer cmd);
+    void clear();
+
+private:
+    struct BufferCopy {
+        VkBuffer src, dst;
+        VkDeviceSize src_offset, size;
+        VkAccessFlags dst_access;
+    };
+    struct ImageCopy {
+        VkBuffer src;
+        VkDeviceSize src_offset;
+        VkImage dst;
+        uint32_t width, height;
+    };
+    Vector<BufferCopy> buffer_copies_;
+    Vector<ImageCopy> image_copies_;
+    Vector<VkBufferMemoryBarrier> buffer_barriers_;
+    Vector<VkImageMemoryBarrier> image_barriers_;
+};
+
+} // namespace grass::vk
