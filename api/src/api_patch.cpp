@@ -35,10 +35,11 @@ grass_result validate_patch_desc(grass_context* ctx, const char* fn, const grass
     }
     GRASS_TRY(check_range(ctx, fn, "desc->blade_color_variation", d.blade_color_variation, 0.0, 1.0));
     GRASS_TRY(check_range(ctx, fn, "desc->vertex_color_variation", d.vertex_color_variation, 0.0, 1.0));
-    if (d.threshold_mode != GRASS_THRESHOLD_UNIFORM && d.threshold_mode != GRASS_THRESHOLD_CLUSTERED) {
+    const int64_t mode = raw_enum(d.threshold_mode);
+    if (mode != GRASS_THRESHOLD_UNIFORM && mode != GRASS_THRESHOLD_CLUSTERED) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
-                         "%s: desc->threshold_mode is %d; it must be GRASS_THRESHOLD_UNIFORM or GRASS_THRESHOLD_CLUSTERED",
-                         fn, static_cast<int>(d.threshold_mode));
+                         "%s: desc->threshold_mode is %lld; it must be GRASS_THRESHOLD_UNIFORM or GRASS_THRESHOLD_CLUSTERED",
+                         fn, static_cast<long long>(mode));
     }
     GRASS_TRY(check_range(ctx, fn, "desc->cluster_sigma", d.cluster_sigma, 0.0, 1.0));
     GRASS_TRY(check_range(ctx, fn, "desc->cluster_frequency", d.cluster_frequency, 1, 64));

@@ -1,6 +1,7 @@
 // The context: creation with a version check, logging, memory stats, destruction.
 #include "context.hpp"
 
+#include "raw_enum.hpp"
 #include "validate.hpp"
 
 #include <cstdio>
@@ -96,10 +97,10 @@ grass_result create_context(const char* function, uint32_t header_version, const
                           "%s: the caller was compiled against grass.h %u.%u but the library is %u.%u", function,
                           major, minor, GRASS_VERSION_MAJOR, GRASS_VERSION_MINOR);
     }
-    if (desc->type != GRASS_STRUCT_TYPE_CONTEXT_DESC) {
+    if (raw_enum(desc->type) != GRASS_STRUCT_TYPE_CONTEXT_DESC) {
         return early_fail(desc, GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
-                          "%s: desc->type is 0x%08x; expected GRASS_STRUCT_TYPE_CONTEXT_DESC (0x%08x)", function,
-                          static_cast<unsigned>(desc->type), static_cast<unsigned>(GRASS_STRUCT_TYPE_CONTEXT_DESC));
+                          "%s: desc->type is 0x%08llx; expected GRASS_STRUCT_TYPE_CONTEXT_DESC (0x%08x)", function,
+                          static_cast<unsigned long long>(raw_enum(desc->type)), static_cast<unsigned>(GRASS_STRUCT_TYPE_CONTEXT_DESC));
     }
     if (desc->next) return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: desc->next must be NULL", function);
     const grass_allocator& a = desc->allocator;
@@ -107,13 +108,15 @@ grass_result create_context(const char* function, uint32_t header_version, const
         return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
                           "%s: desc->allocator must set both alloc_fn and free_fn, or neither", function);
     }
-    if (desc->log_level < GRASS_LOG_ERROR || desc->log_level > GRASS_LOG_INFO) {
-        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: desc->log_level is %d; it must be 0..2", function,
-                          static_cast<int>(desc->log_level));
+    const int64_t log_level = raw_enum(desc->log_level), depth_mode = raw_enum(desc->depth_mode);
+    if (log_level < GRASS_LOG_ERROR || log_level > GRASS_LOG_INFO) {
+        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: desc->log_level is %lld; it must be 0..2",
+                          function, static_cast<long long>(log_level));
     }
-    if (desc->depth_mode != GRASS_DEPTH_LESS && desc->depth_mode != GRASS_DEPTH_GREATER) {
-        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: desc->depth_mode is %d; it must be GRASS_DEPTH_LESS or GRASS_DEPTH_GREATER",
-                          function, static_cast<int>(desc->depth_mode));
+    if (depth_mode != GRASS_DEPTH_LESS && depth_mode != GRASS_DEPTH_GREATER) {
+        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                          "%s: desc->depth_mode is %lld; it must be GRASS_DEPTH_LESS or GRASS_DEPTH_GREATER", function,
+                          static_cast<long long>(depth_mode));
     }
 
     // The context lives in memory from its own allocator.

@@ -10,17 +10,18 @@ namespace grass {
 
 grass_result convert_map(grass_context* ctx, const char* fn, const char* name, const grass_map_desc* desc,
                          Vector<uint16_t>* out) {
-    GRASS_TRY(check_desc_header(ctx, fn, name, desc, desc ? desc->type : GRASS_STRUCT_TYPE_MAP_DESC,
+    GRASS_TRY(check_desc_header(ctx, fn, name, desc, desc ? raw_enum(desc->type) : int64_t{GRASS_STRUCT_TYPE_MAP_DESC},
                                 desc ? desc->next : nullptr, GRASS_STRUCT_TYPE_MAP_DESC, "GRASS_STRUCT_TYPE_MAP_DESC"));
     const grass_map_desc& d = *desc;
     uint32_t texel_bytes = 0;
-    switch (d.format) {
+    const int64_t format = raw_enum(d.format);
+    switch (format) {
     case GRASS_MAP_FORMAT_R8_UNORM: texel_bytes = 1; break;
     case GRASS_MAP_FORMAT_R16_UNORM: texel_bytes = 2; break;
     case GRASS_MAP_FORMAT_R32_FLOAT: texel_bytes = 4; break;
     default:
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
-                         "%s: %s->format is %d; it must be a grass_map_format", fn, name, static_cast<int>(d.format));
+                         "%s: %s->format is %lld; it must be a grass_map_format", fn, name, static_cast<long long>(format));
     }
     if (d.width < 1 || d.width > 16384 || d.height < 1 || d.height > 16384) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,

@@ -3,10 +3,10 @@
 namespace grass {
 
 grass_result check_desc_header(grass_context* ctx, const char* function, const char* name, const void* desc,
-                               grass_struct_type actual, const void* next, grass_struct_type expected,
+                               int64_t actual, const void* next, grass_struct_type expected,
                                const char* expected_name) {
     if (!desc) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s is NULL", function, name);
-    if (actual != expected) {
+    if (actual != static_cast<int64_t>(expected)) {
         return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                          "%s: %s->type is 0x%08x; expected %s (0x%08x)", function, name, static_cast<unsigned>(actual),
                          expected_name, static_cast<unsigned>(expected));

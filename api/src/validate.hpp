@@ -3,6 +3,7 @@
 #pragma once
 
 #include "context.hpp"
+#include "raw_enum.hpp"
 
 #include <grass/grass.h>
 
@@ -11,12 +12,13 @@
 namespace grass {
 
 // The type tag and next pointer every desc begins with.
+// `actual` is the raw value of desc->type (see raw_enum.hpp).
 grass_result check_desc_header(grass_context* ctx, const char* function, const char* name, const void* desc,
-                               grass_struct_type actual, const void* next, grass_struct_type expected,
+                               int64_t actual, const void* next, grass_struct_type expected,
                                const char* expected_name);
 
 #define GRASS_CHECK_DESC(ctx, fn, desc, EXPECTED) \
-    ::grass::check_desc_header((ctx), (fn), #desc, (desc), (desc) ? (desc)->type : EXPECTED, (desc) ? (desc)->next : nullptr, EXPECTED, #EXPECTED)
+    ::grass::check_desc_header((ctx), (fn), #desc, (desc), (desc) ? ::grass::raw_enum((desc)->type) : int64_t{EXPECTED}, (desc) ? (desc)->next : nullptr, EXPECTED, #EXPECTED)
 
 grass_result check_not_null(grass_context* ctx, const char* function, const char* name, const void* p);
 grass_result check_finite(grass_context* ctx, const char* function, const char* name, double value);

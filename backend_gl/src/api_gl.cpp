@@ -2,6 +2,8 @@
 #include "gl_backend.hpp"
 
 #include <context.hpp>
+#include "raw_enum.hpp"
+
 #include <grass/grass_gl.h>
 
 namespace {
@@ -15,11 +17,11 @@ grass_result gl_backend_factory(grass_context* ctx, void* user_data, grass::Back
     if (gl_desc == nullptr) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: gl_desc is NULL", kCreate);
     }
-    if (gl_desc->type != GRASS_STRUCT_TYPE_GL_DESC) {
+    if (grass::raw_enum(gl_desc->type) != GRASS_STRUCT_TYPE_GL_DESC) {
         return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                          "%s: gl_desc->type is 0x%08X, expected GRASS_STRUCT_TYPE_GL_DESC (0x%08X); fill it with "
                          "grass_gl_default_desc()",
-                         kCreate, static_cast<unsigned>(gl_desc->type),
+                         kCreate, static_cast<unsigned>(grass::raw_enum(gl_desc->type)),
                          static_cast<unsigned>(GRASS_STRUCT_TYPE_GL_DESC));
     }
     if (gl_desc->next != nullptr) {

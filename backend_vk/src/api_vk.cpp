@@ -4,6 +4,8 @@
 #include "vk_desc_check.hpp"
 #include "vk_device.hpp"
 
+#include "raw_enum.hpp"
+
 #include <grass/grass_vk.h>
 
 using grass::vk::VkBackend;
@@ -105,10 +107,10 @@ grass_result grass_vk_record(grass_context* ctx, const grass_vk_record_desc* rec
         grass_result r = check_frame_call(ctx, function, &backend);
         if (r != GRASS_SUCCESS) return r;
         if (!record) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: record is NULL", function);
-        if (record->type != GRASS_STRUCT_TYPE_VK_RECORD_DESC) {
+        if (grass::raw_enum(record->type) != GRASS_STRUCT_TYPE_VK_RECORD_DESC) {
             return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                              "%s: record->type is 0x%08x; expected GRASS_STRUCT_TYPE_VK_RECORD_DESC (0x%08x)", function,
-                             static_cast<unsigned>(record->type), static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_RECORD_DESC));
+                             static_cast<unsigned>(grass::raw_enum(record->type)), static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_RECORD_DESC));
         }
         if (record->next) {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: record->next must be NULL",

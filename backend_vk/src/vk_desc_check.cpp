@@ -1,15 +1,17 @@
 #include "vk_desc_check.hpp"
 
+#include "raw_enum.hpp"
+
 #include "context.hpp"
 
 namespace grass::vk {
 
 grass_result check_vk_desc(grass_context* ctx, const char* function, const grass_vk_desc* d) {
     if (!d) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: vk_desc is NULL", function);
-    if (d->type != GRASS_STRUCT_TYPE_VK_DESC) {
+    if (grass::raw_enum(d->type) != GRASS_STRUCT_TYPE_VK_DESC) {
         return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                          "%s: vk_desc->type is 0x%08x; expected GRASS_STRUCT_TYPE_VK_DESC (0x%08x)", function,
-                         static_cast<unsigned>(d->type), static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DESC));
+                         static_cast<unsigned>(grass::raw_enum(d->type)), static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DESC));
     }
     if (d->next) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: vk_desc->next must be NULL",
