@@ -154,7 +154,8 @@ int main(int argc, char** argv) {
     }
     grass_host::Image image;
     double frame_ms = 0.0;
-    if (r == GRASS_SUCCESS) {
+    const bool scene_ready = r == GRASS_SUCCESS;
+    if (scene_ready) {
         grass_view_desc view = grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees);
         std::memcpy(view.sun_direction, scene.sun_direction, sizeof(scene.sun_direction));
         std::memcpy(view.sun_color, scene.sun_color, sizeof(scene.sun_color));
@@ -164,7 +165,8 @@ int main(int argc, char** argv) {
         frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - f0).count();
     }
     if (r != GRASS_SUCCESS) {
-        status = fail(std::string("rendering failed: ") + grass_result_string(r) + " " + error + " " + grass_last_error(ctx));
+        status = fail(std::string(scene_ready ? "rendering failed: " : "the scene was refused: ") + grass_result_string(r) +
+                      " (" + grass_last_error(ctx) + ")" + (error.empty() || error == grass_last_error(ctx) ? "" : " " + error));
     } else if (!grass_host::write_png(output, image, &error)) {
         status = fail(error);
     } else {
