@@ -9,7 +9,7 @@ layout(location = 2) in vec4 a_root_shape;   // root x, root z, u across, v alon
 layout(location = 3) in vec4 a_color;        // unorm8 modulation, linear
 layout(location = 4) in float a_threshold;   // density threshold in (0, 1]
 layout(location = 5) in vec4 i_origin_mirror; // cell corner relative to the camera (m), mirror bits
-layout(location = 6) in vec4 i_map;           // xy: cell corner in density-map uv
+layout(location = 6) in vec4 i_map;           // xy: cell corner in density-map uv, zw: size in cells
 
 layout(location = 0) out vec3 v_position;    // camera-relative world position
 layout(location = 1) out vec3 v_normal;

@@ -1,8 +1,10 @@
 // C entry points for fields: a grid of cells covered by one patch.
 #include "context.hpp"
 #include "design_map.hpp"
+#include "lod_setup.hpp"
 #include "validate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -53,18 +55,6 @@ grass_result validate_field_desc(grass_context* ctx, const char* fn, const grass
     GRASS_TRY(check_range(ctx, fn, "desc->cell_size", d.cell_size, 1e-4, 1e4));
     GRASS_TRY(validate_base_transform(ctx, fn, d.base_transform));
     GRASS_TRY(check_range(ctx, fn, "desc->density", d.density, 0.0, 1.0));
-    GRASS_TRY(check_range(ctx, fn, "desc->draw_distance", d.draw_distance, 0.0, 1e7));
-    if (!(d.draw_distance > 0.0f)) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE, "%s: desc->draw_distance is %g; it must be > 0",
-                         fn, static_cast<double>(d.draw_distance));
-    }
-    // The planner walks the cells of the draw-distance disc; bound that walk.
-    constexpr double kMaxReachCells = 1024.0;
-    if (d.draw_distance / d.cell_size > kMaxReachCells) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                         "%s: desc->draw_distance (%g m) spans %g cells of %g m; at most %g cells are supported", fn,
-                         static_cast<double>(d.draw_distance), d.draw_distance / d.cell_size, d.cell_size, kMaxReachCells);
-    }
     return GRASS_SUCCESS;
 }
 
@@ -73,7 +63,11 @@ grass_result create_field(grass_context* ctx, const grass_field_desc* desc, gras
     GRASS_TRY(check_not_null(ctx, fn, "out_field", out));
     GRASS_TRY(validate_field_desc(ctx, fn, desc));
 
+    LodSetup lod;
+    GRASS_TRY(make_lod_setup(ctx, fn, *desc, &lod));
+
     Field* field = ctx->host.create<Field>(&ctx->host);
+    field->lod = lod;
     if (desc->density_map) {
         const grass_result r = convert_map(ctx, fn, "desc->density_map", desc->density_map, &field->density_texels);
         if (r != GRASS_SUCCESS) {
@@ -85,6 +79,18 @@ grass_result create_field(grass_context* ctx, const grass_field_desc* desc, gras
     }
     field->desc = *desc;
     field->desc.density_map = nullptr; // never keep host pointers
+    field->desc.tiers = nullptr;
+    field->desc.lod_tests = nullptr;
+    field->tree = QuadtreeShape(desc->cells_x, desc->cells_z);
+    // Flat field: every level spans the patch's blades vertically. Tips may lean out of
+    // their cell; mirroring makes the overhang the same on both sides.
+    const PatchData& pd = ctx->patches.get(desc->patch.index - 1)->data;
+    field->overhang = std::max({0.0, -static_cast<double>(pd.bounds_min[0]), pd.bounds_max[0] - 1.0,
+                                -static_cast<double>(pd.bounds_min[2]), pd.bounds_max[2] - 1.0});
+    for (uint32_t level = 0; level < field->tree.levels(); ++level) {
+        field->extents[level].min_y = std::min(0.0f, pd.bounds_min[1]);
+        field->extents[level].max_y = std::max(0.0f, pd.bounds_max[1]);
+    }
     field->patch_slot = desc->patch.index - 1;
     const double* m = desc->base_transform;
     for (int c = 0; c < 3; ++c) {
@@ -135,7 +141,6 @@ GRASS_API grass_field_desc grass_default_field_desc(void) {
     d.base_transform[0] = d.base_transform[5] = d.base_transform[10] = d.base_transform[15] = 1.0;
     d.density = 1.0f;
     d.mirror_tiling = 1;
-    d.draw_distance = 20.0f;
     return d;
 }
 

@@ -8,7 +8,7 @@
 #include <cstring>
 
 grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
-    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), plan(&host) {}
+    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), plan(&host), plan_scratch(&host) {}
 
 grass_context::~grass_context() {
     // Fields and patches release their GPU resources before the backend goes.

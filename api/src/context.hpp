@@ -6,6 +6,9 @@
 #include "backend.hpp"
 #include "frame_plan.hpp"
 #include "handle_pool.hpp"
+#include "lod_setup_types.hpp"
+#include "plan_scratch.hpp"
+#include "quadtree.hpp"
 #include "patch_data.hpp"
 
 #include <grass/grass.h>
@@ -31,6 +34,10 @@ struct Field {
     uint32_t density_height = 0;
     double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}; // base transform's rotation, column-major
     double translation[3] = {0, 0, 0};
+    LodSetup lod;                      // tiers and lod tests, copied from the desc
+    QuadtreeShape tree;                // implicit: nothing per node or cell
+    LevelExtent extents[32];           // vertical extent of each level's nodes, in cells
+    double overhang = 0.0;             // how far blade tips may leave their cell, in cells
 };
 
 // Creates the backend of a new context; the context's allocator and log are ready.
@@ -49,6 +56,7 @@ struct grass_context {
     grass::HandlePool<grass::Patch> patches;
     grass::HandlePool<grass::Field> fields;
     grass::FramePlan plan;
+    grass::PlanScratch plan_scratch;
     bool in_frame = false;
     uint64_t frame_number = 0;
     char last_error[512] = {0};

@@ -17,7 +17,7 @@ struct FrameUniforms {
     float sun_direction[4];    // xyz unit, towards the sun
     float sun_color[4];        // rgb
     float ambient_color[4];    // rgb
-    float params[4];           // x = time (s), y = flags, zw unused
+    float params[4];           // x = time (s), y = flags, z = +1 (depth 0 is near) or -1 (reversed depth), w unused
 };
 static_assert(sizeof(FrameUniforms) == 128, "std140 Frame block");
 
@@ -25,40 +25,45 @@ static_assert(sizeof(FrameUniforms) == 128, "std140 Frame block");
 struct FieldUniforms {
     float patch_to_world[16]; // patch units -> world metres (rotation x cell size), no translation
     float map_params[4];      // x = map u per cell, y = map v per cell, z = density (uniform or map multiplier), w = 1 if a density map is bound
-    float blade_params[4];    // x = ao impact, y = ao height (patch units), zw unused
+    float blade_params[4];    // x = ao impact, y = ao height (patch units), z = tier kind (grass_tier_kind), w unused
 };
 static_assert(sizeof(FieldUniforms) == 96, "std140 Field block");
 
-// One patch instance of the blade tier. Vertex input, per instance (locations 5-6).
-struct BladeInstance {
-    float origin[3];  // location 5 xyz: the cell's (0,0) corner relative to the camera, world metres
-    float mirror;     // location 5 w: bit 0 mirrors x, bit 1 mirrors z (as a float 0..3)
-    float map_uv[2];  // location 6 xy: the cell's (0,0) corner in density-map uv
-    float reserved[2];
+// One patch instance of any tier: a cell, or a macro-cell of cells[0] x cells[1] cells.
+// Vertex input, per instance (locations 5-6).
+struct TierInstance {
+    float origin[3];  // location 5 xyz: the (macro-)cell's (0,0) corner relative to the camera, world metres
+    float mirror;     // location 5 w: bit 0 mirrors x, bit 1 mirrors z (as a float 0..3); cells only
+    float map_uv[2];  // location 6 xy: the (0,0) corner in density-map uv
+    float cells[2];   // location 6 zw: size in cells along field x and z (1, 1 for a cell)
 };
-static_assert(sizeof(BladeInstance) == 32, "BladeInstance must match the shader's instance layout");
+static_assert(sizeof(TierInstance) == 32, "TierInstance must match the shader's instance layout");
 
-// One instanced draw: a field's planned cells, all with the same patch.
-struct BladeDraw {
+// One instanced draw: the instances one tier of one field draws this frame.
+struct TierDraw {
+    grass_tier_kind kind;    // how to draw: blades (geometry), volume or image
+    uint32_t tier;           // index of the tier in its field
+    uint32_t slices;         // volume tiers: slices per axis
     uint32_t field_slot;
     uint32_t patch_slot;
-    uint32_t first_instance; // into FramePlan::blade_instances
+    uint32_t first_instance; // into FramePlan::instances
     uint32_t instance_count;
     FieldUniforms uniforms;
 };
 
 struct FramePlan {
-    explicit FramePlan(HostAllocator* host) : blade_instances(StlAllocator<BladeInstance>(host)),
-                                              blade_draws(StlAllocator<BladeDraw>(host)) {}
+    explicit FramePlan(HostAllocator* host) : instances(StlAllocator<TierInstance>(host)),
+                                              draws(StlAllocator<TierDraw>(host)) {}
     FrameUniforms frame{};
     int32_t viewport[4] = {0, 0, 0, 0};
-    uint32_t flags = 0;                  // grass_view_flags
-    Vector<BladeInstance> blade_instances;
-    Vector<BladeDraw> blade_draws;
+    uint32_t flags = 0;                  // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_TIERS draws every
+                                         // draw as debug boxes instead of its tier
+    Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
+    Vector<TierDraw> draws;         // per field, per tier that draws something
     grass_frame_stats stats{};
     void clear() {
-        blade_instances.clear();
-        blade_draws.clear();
+        instances.clear();
+        draws.clear();
         stats = grass_frame_stats{};
     }
 };

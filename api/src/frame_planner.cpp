@@ -1,7 +1,10 @@
 #include "frame_planner.hpp"
 
 #include "design_map.hpp"
+#include "lod_setup.hpp"
 #include "mirror_tiling.hpp"
+#include "validate.hpp"
+#include "view_culling.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -22,156 +25,280 @@ void mul4(const double a[16], const double b[16], double c[16]) {
     }
 }
 
-struct Candidate {
-    double distance2;
-    BladeInstance instance;
-};
-
 // Blades passing a density d: thresholds are (k+1)/N (density_threshold.cpp), so floor(d N).
 uint64_t blades_passing(double density, uint32_t blade_count) {
     const double n = std::floor(density * blade_count + 1e-6);
     return static_cast<uint64_t>(std::min<double>(std::max(n, 0.0), blade_count));
 }
 
-void plan_field(grass_context* ctx, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
-                const Frustum& frustum, Vector<Candidate>& candidates) {
-    const grass_field_desc& d = field.desc;
-    const double cs = d.cell_size;
-    const double* R = field.rotation; // column-major 3x3
-    // Camera in field space, in cells: R^T (camera - T) / cell_size.
+// A field seen from the camera: its frame in camera-relative world space.
+struct FieldFrame {
+    double cam_local[3]; // camera in field space, cells
+    double origin_rel[3]; // field origin relative to the camera, metres
+    double axis[3][3];    // one cell along field x, y, z, in world metres
+    double cell_size;
+};
+
+FieldFrame field_frame(const Field& field, const double camera[3]) {
+    FieldFrame f;
+    const double* R = field.rotation;
+    const double cs = field.desc.cell_size;
     const double rel[3] = {camera[0] - field.translation[0], camera[1] - field.translation[1],
                            camera[2] - field.translation[2]};
-    double local[3];
-    for (int c = 0; c < 3; ++c) local[c] = (R[3 * c] * rel[0] + R[3 * c + 1] * rel[1] + R[3 * c + 2] * rel[2]) / cs;
-
-    // Blade bounds: tips may leave the cell; mirroring makes the overhang symmetric.
-    const PatchData& pd = patch.data;
-    const double overhang = std::max({0.0, -static_cast<double>(pd.bounds_min[0]), pd.bounds_max[0] - 1.0,
-                                      -static_cast<double>(pd.bounds_min[2]), pd.bounds_max[2] - 1.0});
-    const double top = std::max(0.0, static_cast<double>(pd.bounds_max[1]));
-    const double reach = d.draw_distance / cs; // in cells
-
-    const double i_lo = std::max(0.0, std::floor(local[0] - reach - overhang));
-    const double i_hi = std::min(static_cast<double>(d.cells_x) - 1.0, std::floor(local[0] + reach + overhang));
-    const double j_lo = std::max(0.0, std::floor(local[2] - reach - overhang));
-    const double j_hi = std::min(static_cast<double>(d.cells_z) - 1.0, std::floor(local[2] + reach + overhang));
-    if (i_lo > i_hi || j_lo > j_hi) return;
-
-    // Field origin relative to the camera, in double until it is small.
-    const double origin_rel[3] = {-rel[0], -rel[1], -rel[2]};
-    const double ux[3] = {R[0] * cs, R[1] * cs, R[2] * cs}; // one cell along field x, world metres
-    const double uy[3] = {R[3] * cs, R[4] * cs, R[5] * cs};
-    const double uz[3] = {R[6] * cs, R[7] * cs, R[8] * cs};
-    const float inv_x = static_cast<float>(1.0 / d.cells_x), inv_z = static_cast<float>(1.0 / d.cells_z);
-
-    const size_t first = candidates.size();
-    uint64_t considered = 0;
-    for (double j = j_lo; j <= j_hi; j += 1.0) {
-        for (double i = i_lo; i <= i_hi; i += 1.0) {
-            ++considered;
-            // Nearest point of the cell's box to the camera, in cells.
-            const double nx = std::min(std::max(local[0], i), i + 1.0) - local[0];
-            const double ny = std::min(std::max(local[1], 0.0), top) - local[1];
-            const double nz = std::min(std::max(local[2], j), j + 1.0) - local[2];
-            if (nx * nx + ny * ny + nz * nz > reach * reach) continue;
-
-            double corners[8][3];
-            for (int k = 0; k < 8; ++k) {
-                const double cx = (k & 1) ? i + 1.0 + overhang : i - overhang;
-                const double cy = (k & 2) ? top : 0.0;
-                const double cz = (k & 4) ? j + 1.0 + overhang : j - overhang;
-                for (int a = 0; a < 3; ++a) corners[k][a] = origin_rel[a] + ux[a] * cx + uy[a] * cy + uz[a] * cz;
-            }
-            if (frustum.outside(corners)) continue;
-
-            Candidate c;
-            const double ccx = i + 0.5 - local[0], ccz = j + 0.5 - local[2], ccy = -local[1];
-            c.distance2 = ccx * ccx + ccy * ccy + ccz * ccz;
-            for (int a = 0; a < 3; ++a) c.instance.origin[a] = static_cast<float>(origin_rel[a] + ux[a] * i + uz[a] * j);
-            const auto ci = static_cast<uint64_t>(i), cj = static_cast<uint64_t>(j);
-            c.instance.mirror = d.mirror_tiling ? static_cast<float>(mirror_bits(ci, cj, d.mirror_seed)) : 0.0f;
-            c.instance.map_uv[0] = static_cast<float>(i / d.cells_x);
-            c.instance.map_uv[1] = static_cast<float>(j / d.cells_z);
-            double density = d.density;
-            if (!field.density_texels.empty()) {
-                density *= sample_map(field.density_texels.data(), field.density_width, field.density_height,
-                                      (i + 0.5) / d.cells_x, (j + 0.5) / d.cells_z);
-            }
-            c.instance.reserved[0] = static_cast<float>(density); // the cell-centre density, for stats
-            c.instance.reserved[1] = 0.0f;
-            candidates.push_back(c);
-        }
+    for (int c = 0; c < 3; ++c) {
+        f.cam_local[c] = (R[3 * c] * rel[0] + R[3 * c + 1] * rel[1] + R[3 * c + 2] * rel[2]) / cs;
+        f.origin_rel[c] = -rel[c];
+        for (int a = 0; a < 3; ++a) f.axis[a][c] = R[3 * a + c] * cs;
     }
-
-    // Front to back: the nearest cells first, so early depth rejects the rest.
-    std::sort(candidates.begin() + static_cast<std::ptrdiff_t>(first), candidates.end(),
-              [](const Candidate& a, const Candidate& b) { return a.distance2 < b.distance2; });
-
-    FramePlan& plan = ctx->plan;
-    plan.stats.cells_considered += considered;
-    const uint32_t count = static_cast<uint32_t>(candidates.size() - first);
-    if (count == 0) return;
-
-    BladeDraw draw;
-    draw.field_slot = slot;
-    draw.patch_slot = field.patch_slot;
-    draw.first_instance = static_cast<uint32_t>(plan.blade_instances.size());
-    draw.instance_count = count;
-    FieldUniforms& u = draw.uniforms;
-    const double* cols[3] = {ux, uy, uz};
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) u.patch_to_world[4 * c + r] = (c < 3 && r < 3) ? static_cast<float>(cols[c][r]) : (c == 3 && r == 3 ? 1.0f : 0.0f);
-    }
-    u.map_params[0] = inv_x;
-    u.map_params[1] = inv_z;
-    u.map_params[2] = d.density;
-    u.map_params[3] = field.density_texels.empty() ? 0.0f : 1.0f;
-    u.blade_params[0] = pd.ao_impact;
-    u.blade_params[1] = pd.ao_height;
-    u.blade_params[2] = 0.0f;
-    u.blade_params[3] = 0.0f;
-    plan.blade_draws.push_back(draw);
-
-    const uint64_t triangles_per_blade = pd.indices_per_blade / 3;
-    for (size_t k = first; k < candidates.size(); ++k) {
-        plan.blade_instances.push_back(candidates[k].instance);
-        const uint64_t passing = blades_passing(candidates[k].instance.reserved[0], pd.blade_count);
-        plan.stats.blades_drawn += passing;
-        plan.stats.triangles += passing * triangles_per_blade;
-    }
-    plan.stats.fields_drawn += 1;
-    plan.stats.cells_drawn += count;
-    plan.stats.blades_submitted += static_cast<uint64_t>(count) * pd.blade_count;
-}
-
-} // namespace
-
-Frustum Frustum::from_view_projection(const double m[16]) {
-    // Gribb & Hartmann: rows of the matrix. Row r = (m[r], m[4+r], m[8+r], m[12+r]).
-    auto row = [&](int r, int k) { return m[4 * k + r]; };
-    Frustum f;
-    const int sign[6] = {1, -1, 1, -1, 1, -1};
-    const int axis[6] = {0, 0, 1, 1, 2, 2};
-    for (int p = 0; p < 6; ++p) {
-        for (int k = 0; k < 4; ++k) f.planes[p][k] = row(3, k) + sign[p] * row(axis[p], k);
-    }
-    // The near plane w + z >= 0 is the GL convention; for 0..1 depth (Vulkan) it is looser
-    // than z >= 0, so it only keeps a few more cells: conservative for both.
+    f.cell_size = cs;
     return f;
 }
 
-bool Frustum::outside(const double corners[8][3]) const {
-    for (const auto& p : planes) {
-        bool all_out = true;
-        for (int k = 0; k < 8 && all_out; ++k) {
-            all_out = p[0] * corners[k][0] + p[1] * corners[k][1] + p[2] * corners[k][2] + p[3] < 0.0;
-        }
-        if (all_out) return true;
-    }
-    return false;
+// A point in field space (cells) relative to the camera (metres).
+void to_camera(const FieldFrame& f, double x, double y, double z, double out[3]) {
+    for (int c = 0; c < 3; ++c) out[c] = f.origin_rel[c] + f.axis[0][c] * x + f.axis[1][c] * y + f.axis[2][c] * z;
 }
 
-void build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
+struct NodeBox {
+    double lo[3], hi[3]; // field space, cells
+};
+
+class FieldPlanner {
+public:
+    FieldPlanner(grass_context* ctx, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
+                 const ViewCulling& culling)
+        : ctx_(ctx), slot_(slot), field_(field), patch_(patch), culling_(culling), frame_(field_frame(field, camera)) {
+        for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
+    }
+
+    grass_result run() {
+        PlanScratch& scratch = ctx_->plan_scratch;
+        const LodSetup& lod = field_.lod;
+        for (uint32_t t = 0; t < lod.tier_count; ++t) scratch.per_tier[t].clear();
+        scratch.stack.clear();
+        const uint32_t all_tests = lod.test_count == 32 ? 0xffffffffu : (1u << lod.test_count) - 1u;
+        scratch.stack.push_back(PlanNode{field_.tree.root_level(), all_tests, 0, 0});
+        while (!scratch.stack.empty()) {
+            const PlanNode node = scratch.stack.back();
+            scratch.stack.pop_back();
+            GRASS_TRY(visit(node));
+        }
+        emit_draws();
+        return GRASS_SUCCESS;
+    }
+
+private:
+    NodeBox box_of(const NodeCells& cells, uint32_t level) const {
+        NodeBox b;
+        const double oh = field_.overhang;
+        b.lo[0] = double(cells.x0) - oh;
+        b.hi[0] = double(cells.x0 + cells.count_x) + oh;
+        b.lo[1] = field_.extents[level].min_y;
+        b.hi[1] = field_.extents[level].max_y;
+        b.lo[2] = double(cells.z0) - oh;
+        b.hi[2] = double(cells.z0 + cells.count_z) + oh;
+        return b;
+    }
+
+    grass_result visit(const PlanNode& node) {
+        FramePlan& plan = ctx_->plan;
+        plan.stats.nodes_visited += 1;
+        const NodeCells cells = field_.tree.cells_of(node.level, node.x, node.z);
+        const NodeBox box = box_of(cells, node.level);
+
+        // Bounding sphere of the node's own box (not merged from its children's).
+        double center_local[3], half2 = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            center_local[c] = 0.5 * (box.lo[c] + box.hi[c]);
+            const double h = 0.5 * (box.hi[c] - box.lo[c]);
+            half2 += h * h;
+        }
+        grass_lod_node info;
+        to_camera(frame_, center_local[0], center_local[1], center_local[2], info.center);
+        info.radius = std::sqrt(half2) * frame_.cell_size;
+        if (!culling_.sphere_may_be_visible(info.center, info.radius)) {
+            plan.stats.nodes_culled += 1;
+            return GRASS_SUCCESS;
+        }
+        // Nearest and farthest points of the box; the transform is rigid, so distances in
+        // field space times the cell size are world distances.
+        double near2 = 0.0, far2 = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            const double p = frame_.cam_local[c];
+            const double n = std::min(std::max(p, box.lo[c]), box.hi[c]) - p;
+            const double f = std::max(std::fabs(p - box.lo[c]), std::fabs(p - box.hi[c]));
+            near2 += n * n;
+            far2 += f * f;
+        }
+        info.distance_min = std::sqrt(near2) * frame_.cell_size;
+        info.distance_max = std::sqrt(far2) * frame_.cell_size;
+        for (int c = 0; c < 3; ++c) info.center[c] += camera_[c]; // the host sees world space
+        info.level = node.level;
+        info.cell_x = static_cast<uint32_t>(cells.x0);
+        info.cell_z = static_cast<uint32_t>(cells.z0);
+        info.cells_x = static_cast<uint32_t>(cells.count_x);
+        info.cells_z = static_cast<uint32_t>(cells.count_z);
+
+        // Every still-active test answers; a tier draws when all its tests say draw.
+        const LodSetup& lod = field_.lod;
+        uint32_t discard = 0, split = 0; // per tier bits
+        for (uint32_t active = node.active_tests; active != 0; active &= active - 1) {
+            const uint32_t k = static_cast<uint32_t>(__builtin_ctz(active));
+            const grass_lod_test& test = lod.tests[k];
+            info.tier = test.tier;
+            int64_t answer;
+            if (test.kind == GRASS_LOD_TEST_CALLBACK) {
+                answer = static_cast<int64_t>(test.callback(test.user_data, &info));
+                if (answer < GRASS_LOD_DISCARD || answer > GRASS_LOD_DRAW) {
+                    return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                                      "grass_begin_frame: lod test %u of field %u (a callback) answered %lld for node "
+                                      "(level %u, cell %u, %u); it must answer a grass_lod_answer",
+                                      k, slot_ + 1, static_cast<long long>(answer), node.level, info.cell_x, info.cell_z);
+                }
+            } else {
+                answer = evaluate_builtin_test(test, info);
+            }
+            plan.stats.lod_test_calls += 1;
+            if (answer == GRASS_LOD_DISCARD) discard |= 1u << test.tier;
+            if (answer == GRASS_LOD_SPLIT) split |= 1u << test.tier;
+        }
+
+        const bool leaf = node.level == 0;
+        uint32_t children_tests = node.active_tests;
+        for (uint32_t t = 0; t < lod.tier_count; ++t) {
+            if ((lod.tests_of_tier[t] & node.active_tests) == 0) continue; // decided above
+            if (discard & (1u << t)) {
+                children_tests &= ~lod.tests_of_tier[t];
+                continue;
+            }
+            bool draw = leaf || (split & (1u << t)) == 0;
+            if (lod.tiers[t].kind == GRASS_TIER_GEOMETRY && !leaf) draw = false; // cells only
+            if (!draw) continue;
+            children_tests &= ~lod.tests_of_tier[t];
+            add_instance(t, cells, box);
+        }
+        if (!leaf && children_tests != 0) push_children(node, children_tests);
+        return GRASS_SUCCESS;
+    }
+
+    void push_children(const PlanNode& node, uint32_t tests) {
+        const uint32_t level = node.level - 1;
+        const uint64_t nx = field_.tree.nodes_x(level), nz = field_.tree.nodes_z(level);
+        for (uint64_t dz = 0; dz < 2; ++dz) {
+            for (uint64_t dx = 0; dx < 2; ++dx) {
+                const uint64_t x = node.x * 2 + dx, z = node.z * 2 + dz;
+                if (x < nx && z < nz) ctx_->plan_scratch.stack.push_back(PlanNode{level, tests, x, z});
+            }
+        }
+    }
+
+    // The exact test before drawing: the node's box against the clip planes.
+    void add_instance(uint32_t tier, const NodeCells& cells, const NodeBox& box) {
+        double corners[8][3];
+        for (int k = 0; k < 8; ++k) {
+            to_camera(frame_, (k & 1) ? box.hi[0] : box.lo[0], (k & 2) ? box.hi[1] : box.lo[1],
+                      (k & 4) ? box.hi[2] : box.lo[2], corners[k]);
+        }
+        if (!culling_.box_may_be_visible(corners)) {
+            ctx_->plan.stats.nodes_culled += 1;
+            return;
+        }
+        const grass_field_desc& d = field_.desc;
+        PlanCandidate c;
+        double origin[3], centre[3];
+        to_camera(frame_, double(cells.x0), 0.0, double(cells.z0), origin);
+        to_camera(frame_, double(cells.x0) + 0.5 * double(cells.count_x), 0.0, double(cells.z0) + 0.5 * double(cells.count_z),
+                  centre);
+        c.distance2 = centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2];
+        for (int a = 0; a < 3; ++a) c.instance.origin[a] = static_cast<float>(origin[a]);
+        const bool single = cells.count_x == 1 && cells.count_z == 1;
+        c.instance.mirror = (single && d.mirror_tiling) ? static_cast<float>(mirror_bits(cells.x0, cells.z0, d.mirror_seed)) : 0.0f;
+        c.instance.map_uv[0] = static_cast<float>(double(cells.x0) / d.cells_x);
+        c.instance.map_uv[1] = static_cast<float>(double(cells.z0) / d.cells_z);
+        c.instance.cells[0] = static_cast<float>(cells.count_x);
+        c.instance.cells[1] = static_cast<float>(cells.count_z);
+        c.density = d.density;
+        if (!field_.density_texels.empty()) {
+            c.density *= sample_map(field_.density_texels.data(), field_.density_width, field_.density_height,
+                                    (double(cells.x0) + 0.5 * double(cells.count_x)) / d.cells_x,
+                                    (double(cells.z0) + 0.5 * double(cells.count_z)) / d.cells_z);
+        }
+        ctx_->plan_scratch.per_tier[tier].push_back(c);
+    }
+
+    void emit_draws() {
+        FramePlan& plan = ctx_->plan;
+        const LodSetup& lod = field_.lod;
+        const PatchData& pd = patch_.data;
+        bool drew = false;
+        for (uint32_t t = 0; t < lod.tier_count; ++t) {
+            auto& candidates = ctx_->plan_scratch.per_tier[t];
+            if (candidates.empty()) continue;
+            const grass_tier_kind kind = lod.tiers[t].kind;
+            if (kind == GRASS_TIER_GEOMETRY) { // front to back: early depth rejects the rest
+                std::sort(candidates.begin(), candidates.end(),
+                          [](const PlanCandidate& a, const PlanCandidate& b) { return a.distance2 < b.distance2; });
+            }
+            TierDraw draw;
+            draw.kind = kind;
+            draw.tier = t;
+            draw.slices = lod.tiers[t].slices;
+            draw.field_slot = slot_;
+            draw.patch_slot = field_.patch_slot;
+            draw.first_instance = static_cast<uint32_t>(plan.instances.size());
+            draw.instance_count = static_cast<uint32_t>(candidates.size());
+            fill_uniforms(kind, &draw.uniforms);
+            plan.draws.push_back(draw);
+            drew = true;
+            const uint64_t triangles_per_blade = pd.indices_per_blade / 3;
+            for (const PlanCandidate& c : candidates) {
+                plan.instances.push_back(c.instance);
+                const uint64_t cells = static_cast<uint64_t>(c.instance.cells[0]) * static_cast<uint64_t>(c.instance.cells[1]);
+                plan.stats.instances[kind] += 1;
+                plan.stats.cells[kind] += cells;
+                plan.stats.macro_cells[kind] += cells > 1 ? 1 : 0;
+                if (kind == GRASS_TIER_GEOMETRY) {
+                    const uint64_t passing = blades_passing(c.density, pd.blade_count);
+                    plan.stats.cells_drawn += 1;
+                    plan.stats.blades_submitted += pd.blade_count;
+                    plan.stats.blades_drawn += passing;
+                    plan.stats.triangles += passing * triangles_per_blade;
+                }
+            }
+        }
+        if (drew) plan.stats.fields_drawn += 1;
+    }
+
+    void fill_uniforms(grass_tier_kind kind, FieldUniforms* u) const {
+        const grass_field_desc& d = field_.desc;
+        for (int c = 0; c < 4; ++c) {
+            for (int r = 0; r < 4; ++r) {
+                u->patch_to_world[4 * c + r] =
+                    (c < 3 && r < 3) ? static_cast<float>(frame_.axis[c][r]) : (c == 3 && r == 3 ? 1.0f : 0.0f);
+            }
+        }
+        u->map_params[0] = static_cast<float>(1.0 / d.cells_x);
+        u->map_params[1] = static_cast<float>(1.0 / d.cells_z);
+        u->map_params[2] = d.density;
+        u->map_params[3] = field_.density_texels.empty() ? 0.0f : 1.0f;
+        u->blade_params[0] = patch_.data.ao_impact;
+        u->blade_params[1] = patch_.data.ao_height;
+        u->blade_params[2] = static_cast<float>(kind);
+        u->blade_params[3] = 0.0f;
+    }
+
+    grass_context* ctx_;
+    uint32_t slot_;
+    const Field& field_;
+    const Patch& patch_;
+    const ViewCulling& culling_;
+    FieldFrame frame_;
+    double camera_[3];
+};
+
+} // namespace
+
+grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
     const auto start = std::chrono::steady_clock::now();
     FramePlan& plan = ctx->plan;
     plan.clear();
@@ -187,31 +314,34 @@ void build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
     mul4(projection, rotation, view_projection);
     for (int k = 0; k < 16; ++k) plan.frame.view_projection[k] = static_cast<float>(view_projection[k]);
 
-    const double* s = nullptr;
-    double sun[3] = {view.sun_direction[0], view.sun_direction[1], view.sun_direction[2]};
+    const double sun[3] = {view.sun_direction[0], view.sun_direction[1], view.sun_direction[2]};
     const double len = std::sqrt(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
-    s = sun;
     for (int c = 0; c < 3; ++c) {
-        plan.frame.sun_direction[c] = static_cast<float>(s[c] / len);
+        plan.frame.sun_direction[c] = static_cast<float>(sun[c] / len);
         plan.frame.sun_color[c] = view.sun_color[c];
         plan.frame.ambient_color[c] = view.ambient_color[c];
     }
     plan.frame.sun_direction[3] = plan.frame.sun_color[3] = plan.frame.ambient_color[3] = 0.0f;
     plan.frame.params[0] = static_cast<float>(std::fmod(view.time, 86400.0));
     plan.frame.params[1] = static_cast<float>(view.flags);
-    plan.frame.params[2] = plan.frame.params[3] = 0.0f;
+    plan.frame.params[2] = ctx->desc.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
+    plan.frame.params[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;
 
-    const Frustum frustum = Frustum::from_view_projection(view_projection);
-    Vector<Candidate> candidates{StlAllocator<Candidate>(&ctx->host)};
+    const ViewCulling culling(view_projection, ctx->desc.depth_mode);
     for (uint32_t slot = 0; slot < ctx->fields.capacity(); ++slot) {
         const Field* field = ctx->fields.get(slot);
         if (!field) continue;
-        candidates.clear();
-        plan_field(ctx, slot, *field, *ctx->patches.get(field->patch_slot), view.camera_position, frustum, candidates);
+        FieldPlanner planner(ctx, slot, *field, *ctx->patches.get(field->patch_slot), view.camera_position, culling);
+        const grass_result r = planner.run();
+        if (r != GRASS_SUCCESS) {
+            plan.clear();
+            return r;
+        }
     }
     plan.stats.plan_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return GRASS_SUCCESS;
 }
 
 } // namespace grass

@@ -1,5 +1,6 @@
-// The frame plan for flat fields: which cells each field draws this frame, where they are
-// relative to the camera, and how they are mirrored. No GPU involved.
+// The frame plan: for each field, one traversal of its implicit quadtree with all of its
+// lod tests (lemme2012 6.1.3) and view-frustum culling (6.1.4); for each tier, the
+// instances to draw, relative to the camera. No GPU involved.
 #pragma once
 
 #include "context.hpp"
@@ -8,18 +9,8 @@
 
 namespace grass {
 
-// Camera-relative clip-space planes (a x + b y + c z + d >= 0 inside) of a view-projection.
-struct Frustum {
-    double planes[6][4];
-    static Frustum from_view_projection(const double m[16]);
-    // True when the box with these 8 corners is entirely outside one plane.
-    bool outside(const double corners[8][3]) const;
-};
-
-// Rebuilds ctx->plan from a validated view. Cells are chosen among those within the
-// field's draw distance (a disc of cells around the camera, so the cost does not grow with
-// the field), kept when their box (cell + blade bounds) meets the view frustum, and
-// ordered front to back.
-void build_frame_plan(grass_context* ctx, const grass_view_desc& view);
+// Rebuilds ctx->plan from a validated view. Fails only when a host lod-test callback
+// answers something that is not a grass_lod_answer (the plan is then empty).
+grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view);
 
 } // namespace grass

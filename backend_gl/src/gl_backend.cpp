@@ -29,8 +29,8 @@ const VertexAttribute kBladeAttributes[] = {
     {2, 4, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, root_shape), kVertexBinding},
     {3, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(BladeVertex, color), kVertexBinding},
     {4, 1, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, threshold), kVertexBinding},
-    {5, 4, GL_FLOAT, GL_FALSE, offsetof(BladeInstance, origin), kInstanceBinding},
-    {6, 4, GL_FLOAT, GL_FALSE, offsetof(BladeInstance, map_uv), kInstanceBinding},
+    {5, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, origin), kInstanceBinding},
+    {6, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, map_uv), kInstanceBinding},
 };
 
 const char* gl_error_name(GLenum error) {
@@ -110,7 +110,9 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
 
     instances_.create(gl_);
     uniforms_.create(gl_);
-    result = check_errors(kCreateFunction, "creating the blade program, white texture and sampler");
+    result = debug_view_.create(ctx_, gl_, kCreateFunction, instances_.name());
+    if (result != GRASS_SUCCESS) return result;
+    result = check_errors(kCreateFunction, "creating the programs, white texture and sampler");
     if (result != GRASS_SUCCESS) return result;
 
     return GRASS_SUCCESS;
@@ -122,6 +124,7 @@ GlBackend::~GlBackend() {
     for (uint32_t slot = 0; slot < fields_.size(); ++slot) release_field(slot);
     instances_.destroy(gl_);
     uniforms_.destroy(gl_);
+    debug_view_.destroy(gl_);
     if (sampler_ != 0) gl_.DeleteSamplers(1, &sampler_);
     if (white_texture_ != 0) gl_.DeleteTextures(1, &white_texture_);
     if (program_ != 0) gl_.DeleteProgram(program_);
@@ -168,7 +171,7 @@ grass_result GlBackend::upload_patch(uint32_t slot, const PatchData& patch) {
     gl_.CreateVertexArrays(1, &gpu.vertex_array);
     const GLuint vao = gpu.vertex_array;
     gl_.VertexArrayVertexBuffer(vao, kVertexBinding, gpu.vertices, 0, sizeof(BladeVertex));
-    gl_.VertexArrayVertexBuffer(vao, kInstanceBinding, instances_.name(), 0, sizeof(BladeInstance));
+    gl_.VertexArrayVertexBuffer(vao, kInstanceBinding, instances_.name(), 0, sizeof(TierInstance));
     gl_.VertexArrayBindingDivisor(vao, kInstanceBinding, 1);
     gl_.VertexArrayElementBuffer(vao, gpu.indices);
     for (const VertexAttribute& a : kBladeAttributes) {

@@ -1,8 +1,9 @@
-// The GL 4.5 backend: owns the blade program, one vertex array per patch, one density
-// texture per field and the per-frame streaming buffers, all made with DSA in the host's
-// GL context. Drawing is grass_gl_render -> GlBackend::render.
+// The GL 4.5 backend: owns the blade program, the debug view, one vertex array per patch,
+// one density texture per field and the per-frame streaming buffers, all made with DSA in
+// the host's GL context. Drawing is grass_gl_render -> GlBackend::render.
 #pragma once
 
+#include "gl_debug_view.hpp"
 #include "gl_functions.hpp"
 #include "gl_stream_buffer.hpp"
 
@@ -52,11 +53,13 @@ private:
     grass_result init(const grass_gl_desc& desc);
     grass_result check_errors(const char* function, const char* what);
     void upload_frame(); // gl_draw.cpp
+    void draw_blades(const FramePlan& plan) const;
 
     grass_context* ctx_;
     bool loaded_ = false; // gl_ holds every entry point
     GlFunctions gl_;
-    GLuint program_ = 0;
+    GLuint program_ = 0; // blades
+    GlDebugView debug_view_;
     GLuint white_texture_ = 0;
     GLuint sampler_ = 0;
     GLint uniform_alignment_ = 256;
@@ -64,7 +67,7 @@ private:
     GlStreamBuffer instances_;
     GlStreamBuffer uniforms_;
     Vector<unsigned char> uniform_staging_;
-    Vector<GLintptr> field_uniform_offsets_; // per blade draw, into uniforms_
+    Vector<GLintptr> field_uniform_offsets_; // per draw (all kinds), into uniforms_
     bool frame_uploaded_ = false;
     Vector<PatchGpu> patches_;
     Vector<FieldGpu> fields_;

@@ -71,6 +71,7 @@
     X(PFNGLSAMPLERPARAMETERIPROC, SamplerParameteri)                                \
     X(PFNGLBINDSAMPLERPROC, BindSampler)                                            \
     /* drawing */                                                                   \
+    X(PFNGLDRAWARRAYSINSTANCEDBASEINSTANCEPROC, DrawArraysInstancedBaseInstance)    \
     X(PFNGLDRAWELEMENTSINSTANCEDBASEINSTANCEPROC, DrawElementsInstancedBaseInstance)
 
 namespace grass {

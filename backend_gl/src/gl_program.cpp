@@ -3,6 +3,8 @@
 namespace grass_gl_shaders {
 extern const char* const blade_vert;
 extern const char* const blade_frag;
+extern const char* const debug_tiers_vert;
+extern const char* const debug_tiers_frag;
 } // namespace grass_gl_shaders
 
 namespace grass {
@@ -44,16 +46,21 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
     return GRASS_SUCCESS;
 }
 
-} // namespace
+struct ProgramSource {
+    const char* name; // for messages: "the blade program"
+    const char* vert_name;
+    const char* vert;
+    const char* frag_name;
+    const char* frag;
+};
 
-grass_result create_blade_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                  GLuint* out_program) {
+grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                            const ProgramSource& source, GLuint* out_program) {
     GLuint vert = 0;
     GLuint frag = 0;
-    grass_result result =
-        compile(ctx, gl, function, GL_VERTEX_SHADER, "blade.vert", grass_gl_shaders::blade_vert, &vert);
+    grass_result result = compile(ctx, gl, function, GL_VERTEX_SHADER, source.vert_name, source.vert, &vert);
     if (result != GRASS_SUCCESS) return result;
-    result = compile(ctx, gl, function, GL_FRAGMENT_SHADER, "blade.frag", grass_gl_shaders::blade_frag, &frag);
+    result = compile(ctx, gl, function, GL_FRAGMENT_SHADER, source.frag_name, source.frag, &frag);
     if (result != GRASS_SUCCESS) {
         gl.DeleteShader(vert);
         return result;
@@ -80,13 +87,29 @@ grass_result create_blade_program(grass_context* ctx, const GlFunctions& gl, con
         const Vector<char> log = info_log(ctx, program, gl.GetProgramiv, gl.GetProgramInfoLog);
         gl.DeleteProgram(program);
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                         "%s: the GL driver failed to link the blade program: %s", function, log.data());
+                         "%s: the GL driver failed to link %s: %s", function, source.name, log.data());
     }
 
     const GLint location = gl.GetUniformLocation(program, "density_map");
     if (location >= 0) gl.ProgramUniform1i(program, location, kDensityMapUnit);
     *out_program = program;
     return GRASS_SUCCESS;
+}
+
+} // namespace
+
+grass_result create_blade_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                  GLuint* out_program) {
+    const ProgramSource source = {"the blade program", "blade.vert", grass_gl_shaders::blade_vert, "blade.frag",
+                                  grass_gl_shaders::blade_frag};
+    return create_program(ctx, gl, function, source, out_program);
+}
+
+grass_result create_debug_tiers_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                        GLuint* out_program) {
+    const ProgramSource source = {"the debug tiers program", "debug_tiers.vert", grass_gl_shaders::debug_tiers_vert,
+                                  "debug_tiers.frag", grass_gl_shaders::debug_tiers_frag};
+    return create_program(ctx, gl, function, source, out_program);
 }
 
 } // namespace grass

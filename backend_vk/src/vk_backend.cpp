@@ -30,6 +30,7 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       memory_(fn_, device_.device, device_.memory, device_.properties.limits.nonCoherentAtomSize),
       descriptors_(fn_, device_.device, &context->host),
       deferred_(memory_, descriptors_, &context->host, vk_desc.frames_in_flight), pipeline_(fn_, device_.device),
+      debug_view_(fn_, device_.device),
       ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
       fields_(StlAllocator<FieldGpu>(&context->host)) {}
@@ -51,7 +52,9 @@ grass_result VkBackend::fail(const char* function, const char* what, const VkFai
 grass_result VkBackend::init(const char* function) {
     VkFailure failure;
     const char* what = "";
-    if (!pipeline_.create(pipeline_target(ctx_, desc_), &failure, &what)) return fail(function, what, failure);
+    const PipelineTarget target = pipeline_target(ctx_, desc_);
+    if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
+    if (!debug_view_.create(target, pipeline_.layout(), &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);
 
     // The density map of fields without one: a single white texel (density x 1).
@@ -289,13 +292,21 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
     return GRASS_SUCCESS;
 }
 
-bool VkBackend::draw_ready(const BladeDraw& draw, const char** problem) const {
-    const PatchGpu& p = patches_[draw.patch_slot];
+bool VkBackend::drawn(const TierDraw& d, bool debug_view) const {
+    // A draw whose field or patch was destroyed after grass_begin_frame is skipped.
+    if (d.instance_count == 0 || d.field_slot >= fields_.size() || !fields_[d.field_slot].live) return false;
+    if (debug_view) return true;
+    return d.kind == GRASS_TIER_GEOMETRY && d.patch_slot < patches_.size() && patches_[d.patch_slot].live &&
+           patches_[d.patch_slot].index_count > 0;
+}
+
+bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** problem) const {
     const FieldGpu& f = fields_[draw.field_slot];
-    if (p.pending) {
+    if (!debug_view && patches_[draw.patch_slot].pending) {
         *problem = "its patch";
         return false;
     }
+    // The field's descriptor set points at its density map (or the default one).
     if (f.pending) {
         *problem = "its density map";
         return false;
@@ -309,23 +320,22 @@ bool VkBackend::draw_ready(const BladeDraw& draw, const char** problem) const {
 
 grass_result VkBackend::record(VkCommandBuffer cmd) {
     const FramePlan& plan = ctx_->plan;
-    // A draw whose field or patch was destroyed after grass_begin_frame is skipped.
-    auto live = [&](const BladeDraw& d) {
-        return d.patch_slot < patches_.size() && patches_[d.patch_slot].live && d.field_slot < fields_.size() &&
-               fields_[d.field_slot].live && d.instance_count > 0 && patches_[d.patch_slot].index_count > 0;
-    };
+    const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_TIERS) != 0;
     // Refuse before recording anything, so that the command buffer is left untouched.
-    for (const BladeDraw& d : plan.blade_draws) {
+    uint32_t draw_count = 0;
+    for (const TierDraw& d : plan.draws) {
+        if (!drawn(d, debug_view)) continue;
         const char* problem = "";
-        if (live(d) && !draw_ready(d, &problem)) {
+        if (!draw_ready(d, debug_view, &problem)) {
             return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_UPLOAD_NOT_RECORDED,
                               "grass_vk_record: a field drawn this frame (slot %u) waits for the upload of %s; call "
                               "grass_vk_prepare_frame() with a command buffer that runs before this one, after "
                               "grass_begin_frame() and outside the render pass",
                               d.field_slot, problem);
         }
+        draw_count += 1;
     }
-    if (plan.blade_draws.empty()) return GRASS_SUCCESS;
+    if (draw_count == 0) return GRASS_SUCCESS;
 
     const int32_t x = plan.viewport[0], y = plan.viewport[1], w = plan.viewport[2], h = plan.viewport[3];
     const VkViewport viewport{float(x), float(y), float(w), float(h), 0.0f, 1.0f};
@@ -337,19 +347,27 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     scissor.extent = {static_cast<uint32_t>(x1 > x0 ? x1 - x0 : 0), static_cast<uint32_t>(y1 > y0 ? y1 - y0 : 0)};
 
     const bool depth_test = (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) == 0;
-    fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.pipeline(depth_test));
+    const VkPipeline pipeline = debug_view ? debug_view_.pipeline(depth_test) : pipeline_.pipeline(depth_test);
+    fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     fn_.vkCmdSetViewport(cmd, 0, 1, &viewport);
     fn_.vkCmdSetScissor(cmd, 0, 1, &scissor);
 
     const VkBuffer instances = ring_.instance_buffer(slot_);
+    const VkDeviceSize zero = 0;
+    if (debug_view) fn_.vkCmdBindVertexBuffers(cmd, DebugViewPipeline::kInstanceBinding, 1, &instances, &zero);
     uint32_t bound_patch = UINT32_MAX;
-    for (uint32_t i = 0; i < plan.blade_draws.size(); ++i) {
-        const BladeDraw& d = plan.blade_draws[i];
-        if (!live(d)) continue;
-        const PatchGpu& p = patches_[d.patch_slot];
+    for (uint32_t i = 0; i < plan.draws.size(); ++i) {
+        const TierDraw& d = plan.draws[i];
+        if (!drawn(d, debug_view)) continue;
+        // Every draw has its Field block, whatever its kind.
         const uint32_t offsets[2] = {ring_.frame_offset(), ring_.field_offset(i)};
         fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), 0, 1,
                                     &fields_[d.field_slot].sets[slot_].set, 2, offsets);
+        if (debug_view) {
+            fn_.vkCmdDraw(cmd, DebugViewPipeline::kVerticesPerBox, d.instance_count, 0, d.first_instance);
+            continue;
+        }
+        const PatchGpu& p = patches_[d.patch_slot];
         if (bound_patch != d.patch_slot) {
             const VkBuffer buffers[2] = {p.vertices.buffer, instances};
             const VkDeviceSize buffer_offsets[2] = {0, 0};

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "backend.hpp"
+#include "vk_debug_view.hpp"
 #include "vk_deferred.hpp"
 #include "vk_descriptors.hpp"
 #include "vk_desc_check.hpp"
@@ -67,9 +68,12 @@ private:
     void write_set(VkDescriptorSet set, uint32_t slot, VkImageView view);
     // Creates a density image and a staging buffer holding `texels` for it.
     bool stage_image(Image* image, Buffer* staging, const MapTexels& texels, VkFailure* failure, const char** what);
+    // Whether record() draws `draw`: normal frames draw the geometry tiers with their patch
+    // (volume and image tiers: not yet), the debug view every draw of a live field.
+    bool drawn(const TierDraw& draw, bool debug_view) const;
     // False when the draw reads data whose upload prepare_frame has not recorded yet;
-    // *problem names it.
-    bool draw_ready(const BladeDraw& draw, const char** problem) const;
+    // *problem names it. The debug view reads no patch.
+    bool draw_ready(const TierDraw& draw, bool debug_view, const char** problem) const;
     void destroy_patch_now(PatchGpu* patch);
     void destroy_field_now(FieldGpu* field);
 
@@ -81,6 +85,7 @@ private:
     DescriptorAllocator descriptors_;
     DeferredDeletion deferred_;
     BladePipeline pipeline_;
+    DebugViewPipeline debug_view_; // after pipeline_: goes before the layout it uses
     FrameRing ring_;
     UploadBatch batch_;
     Vector<PatchGpu> patches_;

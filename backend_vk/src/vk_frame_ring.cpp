@@ -61,7 +61,7 @@ bool FrameRing::replace_buffer(Buffer* buffer, VkDeviceSize size, VkBufferUsageF
 
 bool FrameRing::grow_instances(Slot& s, uint32_t needed, uint64_t frame, VkFailure* failure) {
     const uint32_t capacity = grown_capacity(s.instance_capacity, needed);
-    if (!replace_buffer(&s.instances, VkDeviceSize(capacity) * sizeof(BladeInstance),
+    if (!replace_buffer(&s.instances, VkDeviceSize(capacity) * sizeof(TierInstance),
                         VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frame, failure)) {
         return false;
     }
@@ -83,8 +83,8 @@ bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool
                       VkFailure* failure, const char** what) {
     Slot& s = slots_[slot];
     *uniforms_replaced = false;
-    const uint32_t instances = static_cast<uint32_t>(plan.blade_instances.size());
-    const uint32_t draws = static_cast<uint32_t>(plan.blade_draws.size());
+    const uint32_t instances = static_cast<uint32_t>(plan.instances.size());
+    const uint32_t draws = static_cast<uint32_t>(plan.draws.size());
     if (instances > s.instance_capacity) {
         *what = "a per-frame instance buffer";
         if (!grow_instances(s, instances, frame, failure)) return false;
@@ -95,15 +95,15 @@ bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool
         *uniforms_replaced = true;
     }
 
-    if (instances > 0) std::memcpy(s.instances.mapped, plan.blade_instances.data(), instances * sizeof(BladeInstance));
+    if (instances > 0) std::memcpy(s.instances.mapped, plan.instances.data(), instances * sizeof(TierInstance));
     auto* uniforms = static_cast<unsigned char*>(s.uniforms.mapped);
     std::memcpy(uniforms + frame_offset(), &plan.frame, sizeof(FrameUniforms));
     for (uint32_t i = 0; i < draws; ++i) {
-        std::memcpy(uniforms + field_offset(i), &plan.blade_draws[i].uniforms, sizeof(FieldUniforms));
+        std::memcpy(uniforms + field_offset(i), &plan.draws[i].uniforms, sizeof(FieldUniforms));
     }
 
     *what = "the per-frame buffers";
-    return memory_.flush(s.instances, 0, VkDeviceSize(instances) * sizeof(BladeInstance), failure) &&
+    return memory_.flush(s.instances, 0, VkDeviceSize(instances) * sizeof(TierInstance), failure) &&
            memory_.flush(s.uniforms, 0, field_offset(draws), failure);
 }
 

@@ -1,5 +1,5 @@
 // Per-frame data, one copy per frame in flight: a persistently mapped instance buffer
-// (the plan's blade instances) and a uniform buffer (the Frame block, then one Field
+// (the plan's tier instances) and a uniform buffer (the Frame block, then one Field
 // block per draw, each at a multiple of minUniformBufferOffsetAlignment). A copy is
 // rewritten when its slot comes round again, after the host has waited for its frame.
 // Buffers grow as needed; the old ones go to the deferred deletion queue.

@@ -60,6 +60,7 @@ namespace grass::vk {
     X(vkCmdBindIndexBuffer)             \
     X(vkCmdSetViewport)                 \
     X(vkCmdSetScissor)                  \
+    X(vkCmdDraw)                        \
     X(vkCmdDrawIndexed)
 
 struct Functions {

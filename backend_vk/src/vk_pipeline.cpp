@@ -16,11 +16,11 @@ namespace grass::vk {
 
 namespace {
 
-// Vertex input: binding 0 = patch vertices (grass::BladeVertex), binding 1 = per-instance
-// cells (grass::BladeInstance); locations as in blade.vert.
+// Vertex input: binding 0 = patch vertices (grass::BladeVertex), binding 1 = the tier
+// instances (grass::TierInstance, per instance); locations as in blade.vert.
 constexpr VkVertexInputBindingDescription kBindings[] = {
     {0, sizeof(BladeVertex), VK_VERTEX_INPUT_RATE_VERTEX},
-    {1, sizeof(BladeInstance), VK_VERTEX_INPUT_RATE_INSTANCE},
+    {1, sizeof(TierInstance), VK_VERTEX_INPUT_RATE_INSTANCE},
 };
 constexpr VkVertexInputAttributeDescription kAttributes[] = {
     {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(BladeVertex, position)},
@@ -28,13 +28,13 @@ constexpr VkVertexInputAttributeDescription kAttributes[] = {
     {2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(BladeVertex, root_shape)},
     {3, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(BladeVertex, color)},
     {4, 0, VK_FORMAT_R32_SFLOAT, offsetof(BladeVertex, threshold)},
-    {5, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(BladeInstance, origin)},
-    {6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(BladeInstance, map_uv)},
+    {5, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, origin)},
+    {6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, map_uv)},
 };
 static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_shape) == 24 &&
                   offsetof(BladeVertex, color) == 40 && offsetof(BladeVertex, threshold) == 44,
               "vertex layout of blade.vert");
-static_assert(offsetof(BladeInstance, map_uv) == 16, "instance layout of blade.vert");
+static_assert(offsetof(TierInstance, map_uv) == 16, "instance layout of blade.vert");
 
 bool format_has_stencil(VkFormat format) {
     return format == VK_FORMAT_D16_UNORM_S8_UINT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
@@ -100,17 +100,20 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
                  failure);
 }
 
-bool BladePipeline::create_pipelines(const PipelineTarget& target, VkFailure* failure, const char** what) {
+bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
+                          const PipelineShape& shape, VkPipeline out_pipelines[2], VkFailure* failure,
+                          const char** what) {
+    out_pipelines[0] = out_pipelines[1] = VK_NULL_HANDLE;
     VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
-    const uint32_t* code[2] = {grass_vk_spirv::blade_vert, grass_vk_spirv::blade_frag};
-    const size_t code_size[2] = {grass_vk_spirv::blade_vert_size, grass_vk_spirv::blade_frag_size};
-    *what = "the blade shader modules";
+    const uint32_t* code[2] = {shape.vertex_code, shape.fragment_code};
+    const size_t code_size[2] = {shape.vertex_code_size, shape.fragment_code_size};
+    *what = "a shader module";
     bool ok = true;
     for (int i = 0; i < 2 && ok; ++i) {
         VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
         info.codeSize = code_size[i];
         info.pCode = code[i];
-        ok = vk_ok(fn_.vkCreateShaderModule(device_, &info, nullptr, &modules[i]), "vkCreateShaderModule", failure);
+        ok = vk_ok(fn.vkCreateShaderModule(device, &info, nullptr, &modules[i]), "vkCreateShaderModule", failure);
     }
 
     VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
@@ -122,12 +125,6 @@ bool BladePipeline::create_pipelines(const PipelineTarget& target, VkFailure* fa
     stages[1].module = modules[1];
     stages[1].pName = "main";
 
-    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    vertex_input.vertexBindingDescriptionCount = 2;
-    vertex_input.pVertexBindingDescriptions = kBindings;
-    vertex_input.vertexAttributeDescriptionCount = 7;
-    vertex_input.pVertexAttributeDescriptions = kAttributes;
-
     VkPipelineInputAssemblyStateCreateInfo input_assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     input_assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
 
@@ -135,23 +132,27 @@ bool BladePipeline::create_pipelines(const PipelineTarget& target, VkFailure* fa
     viewport.viewportCount = 1;
     viewport.scissorCount = 1;
 
-    // Blades are two-sided: the fragment shader lights the side that faces the camera.
+    // Blades are two-sided (the fragment shader lights the side that faces the camera);
+    // debug boxes are seen from above or below.
     VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = VK_CULL_MODE_NONE;
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.lineWidth = 1.0f;
 
-    // With multisampling, the blade edge alpha becomes coverage (blade.frag).
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = target.samples;
-    multisample.alphaToCoverageEnable = target.samples != VK_SAMPLE_COUNT_1_BIT ? VK_TRUE : VK_FALSE;
+    multisample.alphaToCoverageEnable =
+        shape.alpha_to_coverage && target.samples != VK_SAMPLE_COUNT_1_BIT ? VK_TRUE : VK_FALSE;
 
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     depth.depthTestEnable = VK_TRUE;
     depth.depthWriteEnable = VK_TRUE;
     depth.depthCompareOp = target.depth_greater ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
     depth.maxDepthBounds = 1.0f;
+    VkPipelineDepthStencilStateCreateInfo depth_off = depth;
+    depth_off.depthTestEnable = VK_FALSE;
+    depth_off.depthWriteEnable = VK_FALSE;
 
     VkPipelineColorBlendAttachmentState attachment{};
     attachment.colorWriteMask =
@@ -175,15 +176,12 @@ bool BladePipeline::create_pipelines(const PipelineTarget& target, VkFailure* fa
 
     VkGraphicsPipelineCreateInfo infos[2] = {{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO},
                                              {VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO}};
-    VkPipelineDepthStencilStateCreateInfo depth_off = depth;
-    depth_off.depthTestEnable = VK_FALSE;
-    depth_off.depthWriteEnable = VK_FALSE;
     for (int i = 0; i < 2; ++i) {
         VkGraphicsPipelineCreateInfo& info = infos[i];
         info.pNext = target.render_pass ? nullptr : &rendering;
         info.stageCount = 2;
         info.pStages = stages;
-        info.pVertexInputState = &vertex_input;
+        info.pVertexInputState = shape.vertex_input;
         info.pInputAssemblyState = &input_assembly;
         info.pViewportState = &viewport;
         info.pRasterizationState = &raster;
@@ -191,22 +189,43 @@ bool BladePipeline::create_pipelines(const PipelineTarget& target, VkFailure* fa
         info.pDepthStencilState = i == 0 ? &depth : &depth_off;
         info.pColorBlendState = &blend;
         info.pDynamicState = &dynamic;
-        info.layout = layout_;
+        info.layout = layout;
         info.renderPass = target.render_pass;
         info.subpass = target.subpass;
     }
     if (ok) {
-        *what = "the blade pipelines";
-        VkPipeline pipelines[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
-        ok = vk_ok(fn_.vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 2, infos, nullptr, pipelines),
+        *what = shape.name;
+        ok = vk_ok(fn.vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 2, infos, nullptr, out_pipelines),
                    "vkCreateGraphicsPipelines", failure);
-        depth_tested_ = pipelines[0];
-        depth_off_ = pipelines[1];
+        if (!ok) {
+            for (int i = 0; i < 2; ++i) {
+                if (out_pipelines[i]) fn.vkDestroyPipeline(device, out_pipelines[i], nullptr);
+                out_pipelines[i] = VK_NULL_HANDLE;
+            }
+        }
     }
     for (VkShaderModule m : modules) {
-        if (m) fn_.vkDestroyShaderModule(device_, m, nullptr);
+        if (m) fn.vkDestroyShaderModule(device, m, nullptr);
     }
     return ok;
+}
+
+bool BladePipeline::create_pipelines(const PipelineTarget& target, VkFailure* failure, const char** what) {
+    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    vertex_input.vertexBindingDescriptionCount = 2;
+    vertex_input.pVertexBindingDescriptions = kBindings;
+    vertex_input.vertexAttributeDescriptionCount = 7;
+    vertex_input.pVertexAttributeDescriptions = kAttributes;
+    // With multisampling, the blade edge alpha becomes coverage (blade.frag).
+    const PipelineShape shape{grass_vk_spirv::blade_vert, grass_vk_spirv::blade_vert_size,
+                              grass_vk_spirv::blade_frag, grass_vk_spirv::blade_frag_size,
+                              &vertex_input,              true,
+                              "the blade pipelines"};
+    VkPipeline pipelines[2];
+    if (!create_pipeline_pair(fn_, device_, target, layout_, shape, pipelines, failure, what)) return false;
+    depth_tested_ = pipelines[0];
+    depth_off_ = pipelines[1];
+    return true;
 }
 
 } // namespace grass::vk

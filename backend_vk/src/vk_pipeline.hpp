@@ -1,11 +1,13 @@
 // The blade pipeline: descriptor set layout (Frame and Field uniform blocks as dynamic
 // uniform buffers, the density map with an immutable linear clamp sampler), pipeline
-// layout, and two graphics pipelines, with and without the depth test.
+// layout, and two graphics pipelines, with and without the depth test; and the state
+// every pipeline of the backend shares (create_pipeline_pair).
 #pragma once
 
 #include "vk_functions.hpp"
 #include "vk_result.hpp"
 
+#include <cstddef>
 #include <cstdint>
 
 namespace grass::vk {
@@ -21,6 +23,24 @@ struct PipelineTarget {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     bool depth_greater = false;                // reversed-Z host: GREATER_OR_EQUAL
 };
+
+// What differs between the graphics pipelines of the backend; the rest (viewport and
+// scissor dynamic, no culling, opaque colour, the target's samples and formats) is shared.
+struct PipelineShape {
+    const uint32_t* vertex_code;
+    size_t vertex_code_size; // bytes
+    const uint32_t* fragment_code;
+    size_t fragment_code_size;
+    const VkPipelineVertexInputStateCreateInfo* vertex_input;
+    bool alpha_to_coverage; // only with multisampling
+    const char* name;       // for *what: "the blade pipelines"
+};
+
+// Index 0 of out_pipelines depth-tests and writes depth (the target's compare op), index 1
+// does neither. On failure both are VK_NULL_HANDLE.
+bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
+                          const PipelineShape& shape, VkPipeline out_pipelines[2], VkFailure* failure,
+                          const char** what);
 
 class BladePipeline {
 public:

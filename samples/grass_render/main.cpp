@@ -29,6 +29,8 @@ void usage(FILE* out) {
                  "  --density D            uniform density multiplier 0..1\n"
                  "  --no-mirror            turn mirrored tiling off\n"
                  "  --no-ground            the host draws no ground under the grass\n"
+                 "  --debug-tiers          draw each planned instance as a tier-coloured box\n"
+                 "  --far METRES           far plane of the host's projection (default from the scene, 500)\n"
                  "  --help                 this text\n");
 }
 
@@ -54,7 +56,8 @@ int main(int argc, char** argv) {
     grass_render::Scene scene = grass_render::demo_scene();
     // Options that override the scene file are applied after it is loaded.
     double camera[3], target[3];
-    bool have_camera = false, have_target = false, no_mirror = false, no_ground = false;
+    bool have_camera = false, have_target = false, no_mirror = false, no_ground = false, debug_tiers = false;
+    float far_m = 0.0f;
     float fov = 0.0f, density = -1.0f;
     uint32_t width = 0, height = 0, samples = 0;
 
@@ -102,6 +105,11 @@ int main(int argc, char** argv) {
             no_mirror = true;
         } else if (a == "--no-ground") {
             no_ground = true;
+        } else if (a == "--debug-tiers") {
+            debug_tiers = true;
+        } else if (a == "--far") {
+            far_m = static_cast<float>(std::atof(value()));
+            if (!(far_m > 1.0f && far_m < 1e8f)) return fail("--far must be between 1 and 1e8 metres");
         } else {
             usage(stderr);
             return fail("unknown option " + a);
@@ -116,6 +124,7 @@ int main(int argc, char** argv) {
     if (density >= 0.0f) scene.field.density = density;
     if (no_mirror) scene.field.mirror_tiling = 0;
     if (no_ground) scene.ground = false;
+    if (far_m > 0.0f) scene.far_m = far_m;
     if (width) scene.width = width, scene.height = height;
     if (samples) scene.samples = samples;
 
@@ -143,6 +152,12 @@ int main(int argc, char** argv) {
     const auto t1 = std::chrono::steady_clock::now();
     if (r == GRASS_SUCCESS) {
         scene.field.patch = patch;
+        if (!scene.tiers.empty() || !scene.lod_tests.empty()) {
+            scene.field.tiers = scene.tiers.data();
+            scene.field.tier_count = static_cast<uint32_t>(scene.tiers.size());
+            scene.field.lod_tests = scene.lod_tests.data();
+            scene.field.lod_test_count = static_cast<uint32_t>(scene.lod_tests.size());
+        }
         if (!scene.density_texels.empty()) {
             map.pixels = scene.density_texels.data();
             map.width = scene.density_width;
@@ -156,7 +171,8 @@ int main(int argc, char** argv) {
     double frame_ms = 0.0;
     const bool scene_ready = r == GRASS_SUCCESS;
     if (scene_ready) {
-        grass_view_desc view = grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees);
+        grass_view_desc view = grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees, 0.05f, scene.far_m);
+        if (debug_tiers) view.flags |= GRASS_VIEW_FLAG_DEBUG_TIERS;
         std::memcpy(view.sun_direction, scene.sun_direction, sizeof(scene.sun_direction));
         std::memcpy(view.sun_color, scene.sun_color, sizeof(scene.sun_color));
         std::memcpy(view.ambient_color, scene.ambient_color, sizeof(scene.ambient_color));
@@ -180,8 +196,15 @@ int main(int argc, char** argv) {
                     info.triangle_count, static_cast<unsigned long long>(info.content_hash),
                     std::chrono::duration<double, std::milli>(t1 - t0).count());
         std::printf("  field           %u x %u cells of %.3f m\n", scene.field.cells_x, scene.field.cells_z, scene.field.cell_size);
-        std::printf("  cells           %llu drawn of %llu considered\n", static_cast<unsigned long long>(stats.cells_drawn),
-                    static_cast<unsigned long long>(stats.cells_considered));
+        std::printf("  quadtree        %llu nodes visited, %llu culled, %llu lod-test calls\n",
+                    static_cast<unsigned long long>(stats.nodes_visited), static_cast<unsigned long long>(stats.nodes_culled),
+                    static_cast<unsigned long long>(stats.lod_test_calls));
+        static const char* const kinds[GRASS_TIER_KIND_COUNT] = {"geometry", "volume", "image"};
+        for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) {
+            std::printf("  %-15s %llu instances (%llu macro-cells) covering %llu cells\n", kinds[k],
+                        static_cast<unsigned long long>(stats.instances[k]), static_cast<unsigned long long>(stats.macro_cells[k]),
+                        static_cast<unsigned long long>(stats.cells[k]));
+        }
         std::printf("  blades          %llu drawn of %llu submitted\n", static_cast<unsigned long long>(stats.blades_drawn),
                     static_cast<unsigned long long>(stats.blades_submitted));
         std::printf("  triangles       %llu\n", static_cast<unsigned long long>(stats.triangles));

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 namespace grass_render {
@@ -16,7 +17,15 @@ Scene demo_scene() {
     s.field.cell_size = 0.25;
     s.field.base_transform[12] = -6.0; // centre the 12 m field on the origin
     s.field.base_transform[14] = -6.0;
-    s.field.draw_distance = 14.0f;
+    // Blades over the whole lawn: one geometry tier out to 18 m (the volume and image tiers
+    // of the default setup draw nothing yet).
+    s.tiers = {grass_tier_desc{GRASS_TIER_GEOMETRY, 0}};
+    grass_lod_test band{};
+    band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+    band.tier = 0;
+    band.begin = 0.0f;
+    band.end = 18.0f;
+    s.lod_tests = {band};
     // A winding path where the grass thins out, to show the density thresholds.
     s.density_width = 96;
     s.density_height = 96;
@@ -74,6 +83,43 @@ void load_density_png(const std::string& path, Scene* s) {
     s->density_height = png.height;
 }
 
+void read_tiers(const json& list, Scene* s) {
+    s->tiers.clear();
+    for (const json& t : list) {
+        check_keys(t, "a tier", {"kind", "slices"});
+        grass_tier_desc tier{};
+        const std::string kind = t.at("kind").get<std::string>();
+        if (kind == "geometry") tier.kind = GRASS_TIER_GEOMETRY;
+        else if (kind == "volume") tier.kind = GRASS_TIER_VOLUME;
+        else if (kind == "image") tier.kind = GRASS_TIER_IMAGE;
+        else throw std::runtime_error("a tier's \"kind\" must be geometry, volume or image, not \"" + kind + "\"");
+        read(t, "slices", &tier.slices);
+        s->tiers.push_back(tier);
+    }
+}
+
+// {"kind": "band", "tier": 0, "begin": 0, "end": 20, "transition_in": 0, "transition_out": 15}
+// {"kind": "macro", "tier": 1, "max_macro_cells": 40}      ("end": null means infinity)
+void read_lod_tests(const json& list, Scene* s) {
+    s->lod_tests.clear();
+    for (const json& t : list) {
+        check_keys(t, "a lod test", {"kind", "tier", "begin", "end", "transition_in", "transition_out", "max_macro_cells"});
+        grass_lod_test test{};
+        const std::string kind = t.at("kind").get<std::string>();
+        if (kind == "band") test.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+        else if (kind == "macro") test.kind = GRASS_LOD_TEST_MACRO_CELL;
+        else throw std::runtime_error("a lod test's \"kind\" must be band or macro, not \"" + kind + "\"");
+        read(t, "tier", &test.tier);
+        read(t, "begin", &test.begin);
+        test.end = std::numeric_limits<float>::infinity();
+        if (t.contains("end") && !t["end"].is_null()) test.end = t["end"].get<float>();
+        read(t, "transition_in", &test.transition_in);
+        read(t, "transition_out", &test.transition_out);
+        read(t, "max_macro_cells", &test.max_macro_cells);
+        s->lod_tests.push_back(test);
+    }
+}
+
 } // namespace
 
 bool load_scene(const std::string& path, Scene* s, std::string* error) {
@@ -81,6 +127,10 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
         std::ifstream in(path);
         if (!in) throw std::runtime_error("cannot open " + path);
         const json j = json::parse(in, nullptr, true, true);
+        // The demo's lod setup is made for its small lawn: a scene file starts from the
+        // library's default tiers unless it gives its own.
+        s->tiers.clear();
+        s->lod_tests.clear();
         check_keys(j, "the scene", {"patch", "field", "camera", "light", "image", "ground"});
         if (j.contains("ground")) {
             const json& g = j["ground"];
@@ -130,7 +180,7 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
         if (j.contains("field")) {
             const json& f = j["field"];
             check_keys(f, "\"field\"", {"cells", "cell_size", "origin", "density", "density_map", "mirror_tiling",
-                                        "mirror_seed", "draw_distance"});
+                                        "mirror_seed", "tiers", "lod_tests"});
             auto& d = s->field;
             if (f.contains("cells")) {
                 const auto v = f["cells"].get<std::vector<uint32_t>>();
@@ -165,11 +215,13 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
             read(f, "mirror_tiling", &mirror);
             d.mirror_tiling = mirror ? 1u : 0u;
             read(f, "mirror_seed", &d.mirror_seed);
-            read(f, "draw_distance", &d.draw_distance);
+            if (f.contains("tiers")) read_tiers(f["tiers"], s);
+            if (f.contains("lod_tests")) read_lod_tests(f["lod_tests"], s);
         }
         if (j.contains("camera")) {
             const json& c = j["camera"];
-            check_keys(c, "\"camera\"", {"position", "target", "fov"});
+            check_keys(c, "\"camera\"", {"position", "target", "fov", "far"});
+            read(c, "far", &s->far_m);
             read3(c, "position", s->eye);
             read3(c, "target", s->target);
             read(c, "fov", &s->fov_degrees);

@@ -19,6 +19,10 @@ struct Scene {
     double eye[3] = {0.0, 1.7, -6.4};
     double target[3] = {0.0, 0.0, 1.0};
     float fov_degrees = 55.0f;
+    float far_m = 500.0f; // the host projection's far plane
+    // Tiers and lod tests; empty = grass_default_lod_setup (Lemme's football table).
+    std::vector<grass_tier_desc> tiers;
+    std::vector<grass_lod_test> lod_tests;
     float sun_direction[3] = {0.35f, 0.8f, 0.25f};
     float sun_color[3] = {1.0f, 0.95f, 0.85f};
     float ambient_color[3] = {0.30f, 0.36f, 0.45f};

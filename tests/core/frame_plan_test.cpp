@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <set>
+#include <vector>
 
 namespace {
 
@@ -27,6 +28,31 @@ protected:
         ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
     }
     const grass::FramePlan& the_plan() const { return ctx->plan; }
+    // The geometry tier's instances, in plan order (front to back).
+    std::vector<grass::TierInstance> geometry() const {
+        std::vector<grass::TierInstance> out;
+        for (const auto& d : ctx->plan.draws) {
+            if (d.kind != GRASS_TIER_GEOMETRY) continue;
+            out.insert(out.end(), ctx->plan.instances.begin() + d.first_instance,
+                       ctx->plan.instances.begin() + d.first_instance + d.instance_count);
+        }
+        return out;
+    }
+    // One geometry tier drawn up to `distance` metres.
+    void geometry_only(grass_field_desc* d, float distance) {
+        tier = grass_tier_desc{GRASS_TIER_GEOMETRY, 0};
+        band = grass_lod_test{};
+        band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+        band.tier = 0;
+        band.begin = 0.0f;
+        band.end = distance;
+        d->tiers = &tier;
+        d->tier_count = 1;
+        d->lod_tests = &band;
+        d->lod_test_count = 1;
+    }
+    grass_tier_desc tier{};
+    grass_lod_test band{};
     void SetUp() override {
         CoreTest::SetUp();
         patch = make_patch();
@@ -36,11 +62,11 @@ protected:
 
 TEST_F(PlanTest, AllFourMirrorStatesOccurOnAnEightByEightField) {
     make_field(field_desc(8)); // 2 m x 2 m
-    const double eye[3] = {1.0, 6.0, 1.0}, target[3] = {1.0, 0.0, 1.0};
+    const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
     plan(test_view(eye, target));
-    ASSERT_EQ(the_plan().blade_instances.size(), 64u);
+    ASSERT_EQ(geometry().size(), 64u);
     std::set<int> states;
-    for (const auto& inst : the_plan().blade_instances) states.insert(static_cast<int>(inst.mirror));
+    for (const auto& inst : geometry()) states.insert(static_cast<int>(inst.mirror));
     EXPECT_EQ(states, (std::set<int>{0, 1, 2, 3}));
 }
 
@@ -48,35 +74,36 @@ TEST_F(PlanTest, MirrorTilingOffDrawsEveryCellUnmirroredAndTheSeedChangesThePatt
     grass_field_desc d = field_desc(8);
     d.mirror_tiling = 0;
     const grass_field_id f = make_field(d);
-    const double eye[3] = {1.0, 6.0, 1.0}, target[3] = {1.0, 0.0, 1.0};
+    const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
     plan(test_view(eye, target));
-    for (const auto& inst : the_plan().blade_instances) EXPECT_EQ(inst.mirror, 0.0f);
+    for (const auto& inst : geometry()) EXPECT_EQ(inst.mirror, 0.0f);
     ASSERT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
 
     std::vector<float> a, b;
     d.mirror_tiling = 1;
     const grass_field_id f1 = make_field(d);
     plan(test_view(eye, target));
-    for (const auto& inst : the_plan().blade_instances) a.push_back(inst.mirror);
+    for (const auto& inst : geometry()) a.push_back(inst.mirror);
     ASSERT_EQ(grass_destroy_field(ctx, f1), GRASS_SUCCESS);
     d.mirror_seed = 7;
     make_field(d);
     plan(test_view(eye, target));
-    for (const auto& inst : the_plan().blade_instances) b.push_back(inst.mirror);
+    for (const auto& inst : geometry()) b.push_back(inst.mirror);
     EXPECT_NE(a, b);
 }
 
 TEST_F(PlanTest, OnlyCellsInFrontOfTheCameraWithinTheDrawDistanceAreDrawnFrontToBack) {
     grass_field_desc d = field_desc(200); // 50 m x 50 m
-    d.draw_distance = 6.0f;
+    geometry_only(&d, 6.0f);
     make_field(d);
     const double eye[3] = {25.0, 1.5, 25.0}, target[3] = {30.0, 1.0, 25.0}; // looking along +x
     plan(test_view(eye, target));
     const auto& p = the_plan();
-    ASSERT_GT(p.blade_instances.size(), 50u);
+    const auto instances = geometry();
+    ASSERT_GT(instances.size(), 50u);
     const double overhang = 0.5; // generous bound on blade tips leaving the cell, in cells
     double last = 0.0;
-    for (const auto& inst : p.blade_instances) {
+    for (const auto& inst : instances) {
         // Behind the camera (x relative < 0) only cells whose box still reaches forward.
         EXPECT_GT(inst.origin[0] + (1.0 + overhang) * 0.25, 0.0);
         // Within the draw distance: the cell's nearest point.
@@ -88,13 +115,14 @@ TEST_F(PlanTest, OnlyCellsInFrontOfTheCameraWithinTheDrawDistanceAreDrawnFrontTo
         EXPECT_GE(dist, last - 1e-4) << "front to back";
         last = dist;
     }
-    EXPECT_EQ(p.stats.cells_drawn, p.blade_instances.size());
-    EXPECT_LT(p.stats.cells_drawn, p.stats.cells_considered);
+    EXPECT_EQ(p.stats.cells_drawn, instances.size());
+    EXPECT_EQ(p.stats.instances[GRASS_TIER_GEOMETRY], instances.size());
+    EXPECT_EQ(p.stats.macro_cells[GRASS_TIER_GEOMETRY], 0u);
 
     // Turned around, the camera sees other cells.
     const double back[3] = {20.0, 1.0, 25.0};
     plan(test_view(eye, back));
-    for (const auto& inst : the_plan().blade_instances) EXPECT_LT(inst.origin[0] - overhang * 0.25, 0.0);
+    for (const auto& inst : geometry()) EXPECT_LT(inst.origin[0] - overhang * 0.25, 0.0);
 }
 
 TEST_F(PlanTest, AFieldTenThousandKilometresOutPlansTheSameCameraRelativeOrigins) {
@@ -102,7 +130,7 @@ TEST_F(PlanTest, AFieldTenThousandKilometresOutPlansTheSameCameraRelativeOrigins
     const grass_field_id near_field = make_field(d);
     const double eye[3] = {2.0, 1.2, -1.0}, target[3] = {2.0, 0.0, 2.0};
     plan(test_view(eye, target));
-    const auto near_instances = the_plan().blade_instances;
+    const auto near_instances = geometry();
     ASSERT_GT(near_instances.size(), 10u);
     ASSERT_EQ(grass_destroy_field(ctx, near_field), GRASS_SUCCESS);
 
@@ -112,7 +140,7 @@ TEST_F(PlanTest, AFieldTenThousandKilometresOutPlansTheSameCameraRelativeOrigins
     make_field(d);
     const double eye_far[3] = {far + 2.0, 1.2, -far - 1.0}, target_far[3] = {far + 2.0, 0.0, -far + 2.0};
     plan(test_view(eye_far, target_far));
-    const auto& far_instances = the_plan().blade_instances;
+    const auto& far_instances = geometry();
     ASSERT_EQ(far_instances.size(), near_instances.size());
     for (size_t k = 0; k < far_instances.size(); ++k) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(far_instances[k].origin[c], near_instances[k].origin[c], 1e-6f);
@@ -124,7 +152,7 @@ TEST_F(PlanTest, StatsCountBladesThroughTheDensityThresholds) {
     grass_field_desc d = field_desc(8);
     d.density = 0.5f;
     make_field(d);
-    const double eye[3] = {1.0, 6.0, 1.0}, target[3] = {1.0, 0.0, 1.0};
+    const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
     plan(test_view(eye, target));
     grass_frame_stats s{};
     ASSERT_EQ(grass_get_frame_stats(ctx, &s), GRASS_SUCCESS);
@@ -139,7 +167,7 @@ TEST_F(PlanTest, ZeroDensityDrawsNoBlades) {
     grass_field_desc d = field_desc(8);
     d.density = 0.0f;
     make_field(d);
-    const double eye[3] = {1.0, 6.0, 1.0}, target[3] = {1.0, 0.0, 1.0};
+    const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
     plan(test_view(eye, target));
     grass_frame_stats s{};
     ASSERT_EQ(grass_get_frame_stats(ctx, &s), GRASS_SUCCESS);
@@ -159,8 +187,8 @@ TEST_F(PlanTest, RotatedBaseTransformPlacesCellsInWorldSpace) {
     make_field(d);
     const double eye[3] = {0.5, 5.0, -0.5}, target[3] = {0.5, 0.0, -0.5};
     plan(test_view(eye, target));
-    ASSERT_EQ(the_plan().blade_instances.size(), 16u);
-    for (const auto& inst : the_plan().blade_instances) {
+    ASSERT_EQ(geometry().size(), 16u);
+    for (const auto& inst : geometry()) {
         // Field cells lie in world x in [0, 1], z in [-1, 0].
         EXPECT_GE(inst.origin[0] + 0.5, -1e-6);
         EXPECT_LE(inst.origin[0] + 0.5, 1.0 + 1e-6);

@@ -45,7 +45,7 @@ extern "C" {
 /* ---- Version ---------------------------------------------------------------------- */
 
 #define GRASS_VERSION_MAJOR 0
-#define GRASS_VERSION_MINOR 1
+#define GRASS_VERSION_MINOR 2
 #define GRASS_VERSION_PATCH 0
 /* The version this header declares. Pass it to the create-context calls: the library
  * refuses a header whose major version differs from its own, or whose minor is newer. */
@@ -309,6 +309,92 @@ typedef struct grass_map_desc {
 
 GRASS_API grass_map_desc grass_default_map_desc(void);
 
+/* ---- Tiers and lod tests (lemme2012 6.1.2-6.1.3, 6.2) ------------------------------ */
+
+/* How a tier draws its instances. */
+typedef enum grass_tier_kind {
+    GRASS_TIER_GEOMETRY = 0, /* blades as geometry; cells only, never macro-cells */
+    GRASS_TIER_VOLUME = 1,   /* a ray-cast volume of vertical slices (the three-tier issue) */
+    GRASS_TIER_IMAGE = 2     /* one horizontal slice (the three-tier issue) */
+} grass_tier_kind;
+#define GRASS_TIER_KIND_COUNT 3
+#define GRASS_MAX_TIERS 8
+#define GRASS_MAX_LOD_TESTS 32
+
+typedef struct grass_tier_desc {
+    grass_tier_kind kind;
+    uint32_t slices;          /* volume tiers: vertical slices per axis, 1..64; 0 for the others */
+} grass_tier_desc;
+
+/* What a lod test answers for a quadtree node. */
+typedef enum grass_lod_answer {
+    GRASS_LOD_DISCARD = 0,    /* the node and its subtree are not drawn by this test's tier */
+    GRASS_LOD_SPLIT = 1,      /* ask again for the node's children (a cell is drawn instead) */
+    GRASS_LOD_DRAW = 2        /* draw the node whole (a macro-cell unless it is one cell) */
+} grass_lod_answer;
+
+/* A quadtree node as a lod test sees it. Level 0 nodes are cells; a node of level k spans
+ * up to 2^k x 2^k cells (fewer at the field's far edges). */
+typedef struct grass_lod_node {
+    uint32_t level;
+    uint32_t cell_x, cell_z;     /* its first cell */
+    uint32_t cells_x, cells_z;   /* cells it spans */
+    uint32_t tier;               /* index of the tier the asking test feeds */
+    double center[3];            /* world-space bounding sphere of its box */
+    double radius;
+    double distance_min;         /* metres from the camera to the nearest point of its box */
+    double distance_max;         /* ... and to the farthest */
+} grass_lod_node;
+
+typedef grass_lod_answer (*grass_lod_test_fn)(void* user_data, const grass_lod_node* node);
+
+typedef enum grass_lod_test_kind {
+    /* Draws the tier between begin and end metres from the camera: discards a node entirely
+     * outside, draws one entirely inside, splits one across an edge (see edge_ratio).
+     * transition_in and transition_out are the widths of its fade-in after begin and
+     * fade-out before end, where it shares cells with the neighbouring tier. */
+    GRASS_LOD_TEST_DISTANCE_BAND = 1,
+    /* Splits until a node spans at most max_macro_cells cells each way, then draws it whole. */
+    GRASS_LOD_TEST_MACRO_CELL = 2,
+    /* Asks the host's callback. */
+    GRASS_LOD_TEST_CALLBACK = 3
+} grass_lod_test_kind;
+
+/* One lod test. All tests of a tier must answer draw for the tier to draw a node; any
+ * discard drops the node's subtree for that tier; otherwise the node is split. A node
+ * drawn or discarded by a tier is not asked again for that tier below it (the skip flags of
+ * lemme figure 6.3). A geometry tier draws cells only: it splits a larger node. */
+typedef struct grass_lod_test {
+    grass_lod_test_kind kind;
+    uint32_t tier;               /* index into grass_field_desc.tiers */
+    float begin, end;            /* DISTANCE_BAND: metres, 0 <= begin < end; end may be INFINITY */
+    float transition_in;         /* DISTANCE_BAND: metres, >= 0 */
+    float transition_out;        /* DISTANCE_BAND: metres, >= 0 */
+    /* DISTANCE_BAND: a node that crosses begin or end is drawn whole (instead of split
+     * down to cells) once its side is at most edge_ratio times its distance from the
+     * camera: 0 = exact edges, more = fewer nodes and instances for some drawing beyond the
+     * band (where the tier's blades are faded out). 0..1. */
+    float edge_ratio;
+    uint32_t max_macro_cells;    /* MACRO_CELL: cells, >= 1 */
+    grass_lod_test_fn callback;  /* CALLBACK: required; called during grass_begin_frame */
+    void* user_data;             /* CALLBACK */
+} grass_lod_test;
+
+#define GRASS_DEFAULT_TIER_COUNT 5
+#define GRASS_DEFAULT_LOD_TEST_COUNT 9
+
+/* Lemme's football-field setup (lemme2012 chapter 7). His distances are in cells (his cell
+ * is the unit patch), so they scale with cell_size: metres = value x cell_size.
+ *   tier 0 geometry           0 .. 20 cells
+ *   tier 1 volume, 8 slices   5 .. 80 cells, macro-cells up to 40 cells a side
+ *   tier 2 volume, 2 slices  50 .. 160 cells, macro-cells up to 40
+ *   tier 3 volume, 1 slice  100 .. 300 cells, macro-cells up to 40
+ *   tier 4 image            200 cells .. infinity, macro-cells up to 500
+ * Each overlap is the transition zone of the two tiers that share it; volume and image
+ * bands have an edge_ratio of 0.25. Fills
+ * GRASS_DEFAULT_TIER_COUNT tiers and GRASS_DEFAULT_LOD_TEST_COUNT tests. */
+GRASS_API void grass_default_lod_setup(double cell_size, grass_tier_desc* out_tiers, grass_lod_test* out_tests);
+
 /* ---- Field: a grid of cells covered by one patch ---------------------------------- */
 
 /* Field space: cell (i, j) covers [i, i+1] x [j, j+1] cell edges along x and z, y up.
@@ -325,8 +411,12 @@ typedef struct grass_field_desc {
     const grass_map_desc* density_map; /* optional, NULL = uniform density */
     grass_bool mirror_tiling;    /* mirror each cell along x and/or z at random; default 1 */
     uint32_t mirror_seed;        /* selects the mirror pattern; default 0 */
-    float draw_distance;         /* metres from the camera to the farthest drawn cell, > 0;
-                                    default 20 */
+    /* The tiers and the lod tests that choose them per quadtree node. Both NULL (counts 0):
+     * grass_default_lod_setup(cell_size). Copied at creation. */
+    const grass_tier_desc* tiers;
+    uint32_t tier_count;         /* 1..GRASS_MAX_TIERS */
+    const grass_lod_test* lod_tests;
+    uint32_t lod_test_count;     /* 1..GRASS_MAX_LOD_TESTS; every tier needs at least one */
 } grass_field_desc;
 
 GRASS_API grass_field_desc grass_default_field_desc(void);
@@ -340,7 +430,11 @@ GRASS_API grass_result grass_destroy_field(grass_context* context, grass_field_i
 typedef enum grass_view_flags {
     GRASS_VIEW_FLAG_NONE = 0,
     /* Debugging: draw without the depth test (grass is drawn over the host's scene). */
-    GRASS_VIEW_FLAG_NO_DEPTH_TEST = 1u << 0
+    GRASS_VIEW_FLAG_NO_DEPTH_TEST = 1u << 0,
+    /* Debugging: draw every planned instance as a flat false-colour box on the ground, the
+     * size of its cell or macro-cell: red geometry, yellow volume, blue image
+     * (boulanger2006 figure 12, lemme2012 figure 7.1). */
+    GRASS_VIEW_FLAG_DEBUG_TIERS = 1u << 1
 } grass_view_flags;
 
 /* The camera and lights of one frame. */
@@ -372,13 +466,19 @@ GRASS_API grass_result grass_end_frame(grass_context* context);
 
 typedef struct grass_frame_stats {
     uint64_t fields_drawn;
-    uint64_t cells_considered;   /* cells tested against the draw distance and frustum */
-    uint64_t cells_drawn;        /* patch instances drawn */
+    uint64_t nodes_visited;      /* quadtree nodes the traversal reached */
+    uint64_t cells_drawn;        /* geometry-tier patch instances (cells) */
     uint64_t blades_submitted;   /* cells_drawn x blades per patch */
     uint64_t blades_drawn;       /* blades whose threshold passes the density at their cell's
                                     centre: exact without a map, an estimate with one */
     uint64_t triangles;          /* triangles of the drawn blades */
     double plan_ms;              /* CPU time of the frame plan */
+    uint64_t lod_test_calls;     /* lod test evaluations */
+    uint64_t nodes_culled;       /* nodes rejected by the view-frustum test */
+    /* Per tier kind (grass_tier_kind), summed over fields and tiers of that kind: */
+    uint64_t instances[GRASS_TIER_KIND_COUNT];   /* cells plus macro-cells drawn */
+    uint64_t macro_cells[GRASS_TIER_KIND_COUNT]; /* instances larger than one cell */
+    uint64_t cells[GRASS_TIER_KIND_COUNT];       /* cells those instances cover */
 } grass_frame_stats;
 
 /* Stats of the last begun frame. */

@@ -1,0 +1,35 @@
+// View-frustum culling of quadtree nodes (lemme2012 6.1.4). All positions are relative to
+// the camera, in double.
+//   - Fast reject: the frustum is approximated by a sphere (centre half-way to the far
+//     plane, through the far corners) and a cone (apex at the camera, through the corners);
+//     a node's bounding sphere must meet both (sphere-cone test after Eberly 2002).
+//   - Exact test before a node is drawn: its box against the six clip planes.
+#pragma once
+
+#include <grass/grass.h>
+
+namespace grass {
+
+class ViewCulling {
+public:
+    // `view_projection`: camera-relative world -> clip, column-major.
+    ViewCulling(const double view_projection[16], grass_depth_mode depth_mode);
+
+    // False when the sphere (centre relative to the camera) surely misses the frustum.
+    bool sphere_may_be_visible(const double center[3], double radius) const;
+    // False when the box (8 corners relative to the camera) is entirely outside a plane.
+    bool box_may_be_visible(const double corners[8][3]) const;
+
+    const double* axis() const { return axis_; }
+
+private:
+    double planes_[6][4];
+    double axis_[3] = {0, 0, -1};
+    bool has_cone_ = false;
+    double sin_angle_ = 1.0, cos_angle_ = 0.0;
+    bool has_sphere_ = false;
+    double sphere_center_[3] = {0, 0, 0};
+    double sphere_radius_ = 0.0;
+};
+
+} // namespace grass

@@ -1,0 +1,143 @@
+// View-frustum culling (lemme2012 6.1.4) never drops a cell that meets the frustum.
+// Property test over random cameras: the exact answer comes from clipping each face of a
+// cell's box against the six frustum planes; every such cell must be covered by some
+// planned instance (of any tier). Extra cells kept are reported.
+#include "core_fixture.hpp"
+#include "plan_helpers.hpp"
+#include "view_helpers.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+namespace {
+
+struct V3 {
+    double x, y, z;
+};
+
+using Polygon = std::vector<V3>;
+
+double side(const double p[4], const V3& v) { return p[0] * v.x + p[1] * v.y + p[2] * v.z + p[3]; }
+
+// Sutherland-Hodgman against one plane (keep side >= 0).
+Polygon clip(const Polygon& in, const double p[4]) {
+    Polygon out;
+    for (size_t k = 0; k < in.size(); ++k) {
+        const V3& a = in[k];
+        const V3& b = in[(k + 1) % in.size()];
+        const double sa = side(p, a), sb = side(p, b);
+        if (sa >= 0.0) out.push_back(a);
+        if ((sa >= 0.0) != (sb >= 0.0)) {
+            const double t = sa / (sa - sb);
+            out.push_back({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.z + t * (b.z - a.z)});
+        }
+    }
+    return out;
+}
+
+// Exact: does the box [lo, hi] (camera-relative) meet the frustum given by its planes?
+bool box_meets_frustum(const double lo[3], const double hi[3], const double planes[6][4]) {
+    const V3 c[8] = {{lo[0], lo[1], lo[2]}, {hi[0], lo[1], lo[2]}, {lo[0], hi[1], lo[2]}, {hi[0], hi[1], lo[2]},
+                     {lo[0], lo[1], hi[2]}, {hi[0], lo[1], hi[2]}, {lo[0], hi[1], hi[2]}, {hi[0], hi[1], hi[2]}};
+    const int faces[6][4] = {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}};
+    for (const auto& f : faces) {
+        Polygon poly = {c[f[0]], c[f[1]], c[f[2]], c[f[3]]};
+        for (int p = 0; p < 6 && !poly.empty(); ++p) poly = clip(poly, planes[p]);
+        if (!poly.empty()) return true;
+    }
+    // No face meets the frustum. The frustum is convex and far larger than a cell (its far
+    // plane is at least 50 m away), so it cannot lie inside the box: they do not meet. (A
+    // camera inside the box does not mean they meet: the frustum starts at the near plane.)
+    return false;
+}
+
+TEST_F(CoreTest, CullingNeverDropsACellThatMeetsTheFrustum) {
+    const grass_patch_id patch = make_patch();
+    grass_patch_info info{};
+    ASSERT_EQ(grass_get_patch_info(ctx, patch, &info), GRASS_SUCCESS);
+    const double overhang = std::max({0.0, -double(info.bounds_min[0]), info.bounds_max[0] - 1.0,
+                                      -double(info.bounds_min[2]), info.bounds_max[2] - 1.0});
+    const double y_lo = std::min(0.0, double(info.bounds_min[1])), y_hi = info.bounds_max[1];
+
+    const uint32_t n = 96; // cells of 1 m, default lod (Lemme's table in cells)
+    grass_field_desc d = grass_default_field_desc();
+    d.patch = patch;
+    d.cell_size = 1.0;
+    d.cells_x = d.cells_z = n;
+    grass_field_id f{};
+    ASSERT_EQ(grass_create_field(ctx, &d, &f), GRASS_SUCCESS);
+
+    std::mt19937_64 rng(20261123);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    uint64_t truth_total = 0, kept_total = 0, extra_total = 0, single_total = 0, single_extra = 0;
+    const int cameras = 300;
+    for (int cam = 0; cam < cameras; ++cam) {
+        const double eye[3] = {-30.0 + 156.0 * u(rng), 0.05 + 80.0 * u(rng) * u(rng), -30.0 + 156.0 * u(rng)};
+        const double yaw = 6.283185307179586 * u(rng);
+        const double pitch = (-85.0 + 105.0 * u(rng)) * 3.141592653589793 / 180.0;
+        const double target[3] = {eye[0] + std::cos(pitch) * std::cos(yaw), eye[1] + std::sin(pitch),
+                                  eye[2] + std::cos(pitch) * std::sin(yaw)};
+        const float fov = static_cast<float>(20.0 + 80.0 * u(rng));
+        const float aspect = static_cast<float>(0.5 + 2.0 * u(rng));
+        const float near_m = static_cast<float>(0.05 + 0.95 * u(rng));
+        const float far_m = static_cast<float>(50.0 + 1950.0 * u(rng));
+        const grass_view_desc v = test_view(eye, target, fov, aspect, near_m, far_m);
+        ASSERT_EQ(grass_begin_frame(ctx, &v), GRASS_SUCCESS) << last_message();
+        ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+
+        // Camera-relative clip planes of the view, in double (GL convention: exact here).
+        double vp[16];
+        for (int c = 0; c < 4; ++c) {
+            for (int r = 0; r < 4; ++r) {
+                double s = 0.0;
+                for (int k = 0; k < 4; ++k) {
+                    const double view_rot = (k < 3 && c < 3) ? v.view[4 * c + k] : (k == 3 && c == 3 ? 1.0 : 0.0);
+                    s += double(v.projection[4 * k + r]) * view_rot;
+                }
+                vp[4 * c + r] = s;
+            }
+        }
+        double planes[6][4];
+        const int sign[6] = {1, -1, 1, -1, 1, -1}, axis[6] = {0, 0, 1, 1, 2, 2};
+        for (int p = 0; p < 6; ++p) {
+            for (int k = 0; k < 4; ++k) planes[p][k] = vp[4 * k + 3] + sign[p] * vp[4 * k + axis[p]];
+        }
+
+        std::vector<char> covered(size_t(n) * n, 0), single(size_t(n) * n, 0);
+        for (const auto& p : planned_instances(ctx, n, n)) {
+            for (uint64_t j = p.z0; j < p.z0 + p.count_z; ++j) {
+                for (uint64_t i = p.x0; i < p.x0 + p.count_x; ++i) covered[j * n + i] = 1;
+            }
+            if (p.count_x * p.count_z == 1) single[p.z0 * n + p.x0] = 1;
+        }
+        for (uint32_t j = 0; j < n; ++j) {
+            for (uint32_t i = 0; i < n; ++i) {
+                const double lo[3] = {i - overhang - eye[0], y_lo - eye[1], j - overhang - eye[2]};
+                const double hi[3] = {i + 1 + overhang - eye[0], y_hi - eye[1], j + 1 + overhang - eye[2]};
+                const bool meets = box_meets_frustum(lo, hi, planes);
+                const bool kept = covered[size_t(j) * n + i] != 0;
+                truth_total += meets;
+                kept_total += kept;
+                extra_total += kept && !meets;
+                single_total += single[size_t(j) * n + i] != 0;
+                single_extra += single[size_t(j) * n + i] != 0 && !meets;
+                ASSERT_TRUE(!meets || kept) << "camera " << cam << " dropped cell (" << i << ", " << j << "): eye (" << eye[0]
+                                            << ", " << eye[1] << ", " << eye[2] << ") target (" << target[0] << ", "
+                                            << target[1] << ", " << target[2] << ") fov " << fov << " aspect " << aspect
+                                            << " near " << near_m << " far " << far_m;
+            }
+        }
+    }
+    std::printf("[ measured ] %d random cameras: %llu cells meet the frustum, %llu kept, %llu extra (%.1f%%)\n", cameras,
+                static_cast<unsigned long long>(truth_total), static_cast<unsigned long long>(kept_total),
+                static_cast<unsigned long long>(extra_total), 100.0 * double(extra_total) / double(truth_total));
+    std::printf("[ measured ] of them drawn as single cells: %llu, of which %llu (%.1f%%) miss the frustum; the rest of the "
+                "extra are cells inside macro-cells that are drawn whole\n",
+                static_cast<unsigned long long>(single_total), static_cast<unsigned long long>(single_extra),
+                100.0 * double(single_extra) / double(single_total));
+    EXPECT_GT(truth_total, 10000u) << "the cameras see the field";
+}
+
+} // namespace
