@@ -24,9 +24,9 @@ void main() {
 #endif
     const int corner[6] = int[6](0, 1, 2, 2, 1, 3);
     vec2 c = vec2(float(corner[v] & 1), float(corner[v] >> 1));
-    // Inset by 6% of a cell plus 1.5% of the box (at most a quarter of it) on every side,
+    // Inset by 6% of a cell plus 0.6% of the box (at most a quarter of it) on every side,
     // so that macro-cells show their borders from far away.
-    vec2 inset = min(vec2(0.06) + 0.015 * i_map.zw, i_map.zw * 0.25);
+    vec2 inset = min(vec2(0.06) + 0.006 * i_map.zw, i_map.zw * 0.25);
     vec2 xz = inset + c * (i_map.zw - 2.0 * inset);
     // Just above the ground, finer tiers on top: in a transition zone two tiers share a cell.
     float kind = field.blade_params.z;
