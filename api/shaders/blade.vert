@@ -8,8 +8,8 @@ layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_root_shape;   // root x, root z, u across, v along
 layout(location = 3) in vec4 a_color;        // unorm8 modulation, linear
 layout(location = 4) in float a_threshold;   // density threshold in (0, 1]
-layout(location = 5) in vec4 i_origin_mirror; // cell corner relative to the camera (m), mirror bits
-layout(location = 6) in vec4 i_map;           // xy: cell corner in density-map uv, zw: size in cells
+layout(location = 5) in vec4 i_origin;        // xyz: cell corner relative to the camera (m)
+layout(location = 6) in uvec4 i_cell;         // xy: the cell, zw: size in cells (1, 1 here)
 
 layout(location = 0) out vec3 v_position;    // camera-relative world position
 layout(location = 1) out vec3 v_normal;
@@ -25,7 +25,7 @@ const float kThresholdEpsilon = 1.0 / 1048576.0;
 
 void main() {
     // Mirrored aperiodic tiling (eq. 6.7): mirror about the cell centre; roots stay inside.
-    vec2 s = mirror_signs(i_origin_mirror.w);
+    vec2 s = mirror_signs(i_cell.xy);
     vec3 p = a_position;
     p.xz = (p.xz - 0.5) * s + 0.5;
     vec2 root = (a_root_shape.xy - 0.5) * s + 0.5;
@@ -36,10 +36,10 @@ void main() {
     // its root is not drawn. Looked up at the root so that the whole blade agrees.
     float density = field.map_params.z;
     if (field.map_params.w > 0.5) {
-        density *= textureLod(density_map, i_map.xy + root * field.map_params.xy, 0.0).r;
+        density *= textureLod(density_map, (vec2(i_cell.xy) + root) * field.map_params.xy, 0.0).r;
     }
 
-    vec3 position = mat3(field.patch_to_world) * p + i_origin_mirror.xyz;
+    vec3 position = mat3(field.patch_to_world) * p + i_origin.xyz;
     v_position = position;
     v_normal = mat3(field.patch_to_world) * n;
     v_albedo = a_color.rgb;

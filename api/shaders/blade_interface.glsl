@@ -13,6 +13,7 @@ layout(std140, binding = 1) uniform Field {
     mat4 patch_to_world;   // patch units -> world metres; rotation x cell size, no translation
     vec4 map_params;       // xy: map uv per cell, z: density (or map multiplier), w: 1 = density map bound
     vec4 blade_params;     // x: ao impact (B_impact), y: ao height (B_height, patch units), z: tier kind
+    uvec4 tiling;          // x: mirror seed, y: 1 = mirrored tiling on
 } field;
 
 layout(binding = 2) uniform sampler2D density_map;

@@ -4,8 +4,8 @@
 // from the vertex index; the instance layout is the one every tier uses.
 #include "blade_interface.glsl"
 
-layout(location = 5) in vec4 i_origin_mirror; // corner relative to the camera (m), mirror bits
-layout(location = 6) in vec4 i_map;           // xy: map uv, zw: size in cells
+layout(location = 5) in vec4 i_origin; // xyz: corner relative to the camera (m)
+layout(location = 6) in uvec4 i_cell;  // xy: first cell, zw: size in cells
 
 layout(location = 0) flat out vec3 v_color;
 
@@ -26,12 +26,13 @@ void main() {
     vec2 c = vec2(float(corner[v] & 1), float(corner[v] >> 1));
     // Inset by 6% of a cell plus 0.6% of the box (at most a quarter of it) on every side,
     // so that macro-cells show their borders from far away.
-    vec2 inset = min(vec2(0.06) + 0.006 * i_map.zw, i_map.zw * 0.25);
-    vec2 xz = inset + c * (i_map.zw - 2.0 * inset);
+    vec2 size = vec2(i_cell.zw);
+    vec2 inset = min(vec2(0.06) + 0.006 * size, size * 0.25);
+    vec2 xz = inset + c * (size - 2.0 * inset);
     // Just above the ground, finer tiers on top: in a transition zone two tiers share a cell.
     float kind = field.blade_params.z;
     vec3 p = vec3(xz.x, 0.02 + 0.03 * (2.0 - kind), xz.y); // cells
-    vec3 position = mat3(field.patch_to_world) * p + i_origin_mirror.xyz;
+    vec3 position = mat3(field.patch_to_world) * p + i_origin.xyz;
     v_color = tier_color(kind);
     gl_Position = frame.view_projection * vec4(position, 1.0);
     // Far away the few centimetres above the ground are below the depth buffer's

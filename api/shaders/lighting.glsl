@@ -16,8 +16,20 @@ vec3 grass_lighting(vec3 albedo, vec3 n, float ambient_occlusion) {
     return albedo * (frame.ambient_color.rgb * ambient_occlusion + frame.sun_color.rgb * n_dot_l);
 }
 
-// The mirror signs of a cell (lemme eq. 6.4): bit 0 mirrors x, bit 1 mirrors z.
-vec2 mirror_signs(float bits) {
-    uint b = uint(bits + 0.5);
+// The mirror bits of a cell (lemme eq. 6.4): white noise at the integer cell, bit 0 mirrors
+// x, bit 1 mirrors z. The same function as grass::mirror_bits (api/src/mirror_tiling.cpp).
+uint mirror_bits(uvec2 cell, uint seed) {
+    uint h = cell.x * 0x8da6b343u ^ cell.y * 0xd8163841u ^ seed * 0xcb1ab31fu;
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    h ^= h >> 16;
+    return (h >> 30) & 3u;
+}
+
+// The mirror signs of a cell of this field (all +1 when mirrored tiling is off).
+vec2 mirror_signs(uvec2 cell) {
+    uint b = field.tiling.y != 0u ? mirror_bits(cell, field.tiling.x) : 0u;
     return vec2((b & 1u) != 0u ? -1.0 : 1.0, (b & 2u) != 0u ? -1.0 : 1.0);
 }

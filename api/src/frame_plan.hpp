@@ -26,16 +26,19 @@ struct FieldUniforms {
     float patch_to_world[16]; // patch units -> world metres (rotation x cell size), no translation
     float map_params[4];      // x = map u per cell, y = map v per cell, z = density (uniform or map multiplier), w = 1 if a density map is bound
     float blade_params[4];    // x = ao impact, y = ao height (patch units), z = tier kind (grass_tier_kind), w unused
+    uint32_t tiling[4];       // x = mirror seed, y = 1 if mirrored tiling is on, zw unused
 };
-static_assert(sizeof(FieldUniforms) == 96, "std140 Field block");
+static_assert(sizeof(FieldUniforms) == 112, "std140 Field block");
 
-// One patch instance of any tier: a cell, or a macro-cell of cells[0] x cells[1] cells.
-// Vertex input, per instance (locations 5-6).
+// One patch instance of any tier: a cell, or a macro-cell of count[0] x count[1] cells.
+// Vertex input, per instance: location 5 (vec4) and location 6 (uvec4). The exact integer
+// cell coordinates let a shader mirror every cell of a macro-cell as that cell is mirrored
+// on its own (mirror_tiling.hpp and lighting.glsl share the hash) and find design-map uvs.
 struct TierInstance {
-    float origin[3];  // location 5 xyz: the (macro-)cell's (0,0) corner relative to the camera, world metres
-    float mirror;     // location 5 w: bit 0 mirrors x, bit 1 mirrors z (as a float 0..3); cells only
-    float map_uv[2];  // location 6 xy: the (0,0) corner in density-map uv
-    float cells[2];   // location 6 zw: size in cells along field x and z (1, 1 for a cell)
+    float origin[3];    // location 5 xyz: the (macro-)cell's (0,0) corner relative to the camera, world metres
+    float reserved;     // location 5 w
+    uint32_t cell[2];   // location 6 xy: the first cell (field x, z)
+    uint32_t count[2];  // location 6 zw: size in cells along field x and z (1, 1 for a cell)
 };
 static_assert(sizeof(TierInstance) == 32, "TierInstance must match the shader's instance layout");
 

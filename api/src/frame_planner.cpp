@@ -2,7 +2,6 @@
 
 #include "design_map.hpp"
 #include "lod_setup.hpp"
-#include "mirror_tiling.hpp"
 #include "validate.hpp"
 #include "view_culling.hpp"
 
@@ -211,12 +210,11 @@ private:
                   centre);
         c.distance2 = centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2];
         for (int a = 0; a < 3; ++a) c.instance.origin[a] = static_cast<float>(origin[a]);
-        const bool single = cells.count_x == 1 && cells.count_z == 1;
-        c.instance.mirror = (single && d.mirror_tiling) ? static_cast<float>(mirror_bits(cells.x0, cells.z0, d.mirror_seed)) : 0.0f;
-        c.instance.map_uv[0] = static_cast<float>(double(cells.x0) / d.cells_x);
-        c.instance.map_uv[1] = static_cast<float>(double(cells.z0) / d.cells_z);
-        c.instance.cells[0] = static_cast<float>(cells.count_x);
-        c.instance.cells[1] = static_cast<float>(cells.count_z);
+        c.instance.reserved = 0.0f;
+        c.instance.cell[0] = static_cast<uint32_t>(cells.x0);
+        c.instance.cell[1] = static_cast<uint32_t>(cells.z0);
+        c.instance.count[0] = static_cast<uint32_t>(cells.count_x);
+        c.instance.count[1] = static_cast<uint32_t>(cells.count_z);
         c.density = d.density;
         if (!field_.density_texels.empty()) {
             c.density *= sample_map(field_.density_texels.data(), field_.density_width, field_.density_height,
@@ -253,7 +251,7 @@ private:
             const uint64_t triangles_per_blade = pd.indices_per_blade / 3;
             for (const PlanCandidate& c : candidates) {
                 plan.instances.push_back(c.instance);
-                const uint64_t cells = static_cast<uint64_t>(c.instance.cells[0]) * static_cast<uint64_t>(c.instance.cells[1]);
+                const uint64_t cells = uint64_t(c.instance.count[0]) * c.instance.count[1];
                 plan.stats.instances[kind] += 1;
                 plan.stats.cells[kind] += cells;
                 plan.stats.macro_cells[kind] += cells > 1 ? 1 : 0;
@@ -285,6 +283,9 @@ private:
         u->blade_params[1] = patch_.data.ao_height;
         u->blade_params[2] = static_cast<float>(kind);
         u->blade_params[3] = 0.0f;
+        u->tiling[0] = d.mirror_seed;
+        u->tiling[1] = d.mirror_tiling ? 1u : 0u;
+        u->tiling[2] = u->tiling[3] = 0u;
     }
 
     grass_context* ctx_;

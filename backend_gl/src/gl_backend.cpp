@@ -18,19 +18,20 @@ struct VertexAttribute {
     GLboolean normalized;
     GLuint offset;
     GLuint binding;
+    bool integer; // read as an integer (uvec) in the shader
 };
 
 // The vertex input of blade.vert: patch vertices on binding 0, instances on binding 1.
 constexpr GLuint kVertexBinding = 0;
 constexpr GLuint kInstanceBinding = 1;
 const VertexAttribute kBladeAttributes[] = {
-    {0, 3, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, position), kVertexBinding},
-    {1, 3, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, normal), kVertexBinding},
-    {2, 4, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, root_shape), kVertexBinding},
-    {3, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(BladeVertex, color), kVertexBinding},
-    {4, 1, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, threshold), kVertexBinding},
-    {5, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, origin), kInstanceBinding},
-    {6, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, map_uv), kInstanceBinding},
+    {0, 3, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, position), kVertexBinding, false},
+    {1, 3, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, normal), kVertexBinding, false},
+    {2, 4, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, root_shape), kVertexBinding, false},
+    {3, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(BladeVertex, color), kVertexBinding, false},
+    {4, 1, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, threshold), kVertexBinding, false},
+    {5, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, origin), kInstanceBinding, false},
+    {6, 4, GL_UNSIGNED_INT, GL_FALSE, offsetof(TierInstance, cell), kInstanceBinding, true},
 };
 
 const char* gl_error_name(GLenum error) {
@@ -176,7 +177,11 @@ grass_result GlBackend::upload_patch(uint32_t slot, const PatchData& patch) {
     gl_.VertexArrayElementBuffer(vao, gpu.indices);
     for (const VertexAttribute& a : kBladeAttributes) {
         gl_.EnableVertexArrayAttrib(vao, a.location);
-        gl_.VertexArrayAttribFormat(vao, a.location, a.size, a.type, a.normalized, a.offset);
+        if (a.integer) {
+            gl_.VertexArrayAttribIFormat(vao, a.location, a.size, a.type, a.offset);
+        } else {
+            gl_.VertexArrayAttribFormat(vao, a.location, a.size, a.type, a.normalized, a.offset);
+        }
         gl_.VertexArrayAttribBinding(vao, a.location, a.binding);
     }
 

@@ -21,13 +21,13 @@ grass_result GlDebugView::create(grass_context* ctx, const GlFunctions& gl, cons
     gl.CreateVertexArrays(1, &vertex_array_);
     gl.VertexArrayVertexBuffer(vertex_array_, kInstanceBinding, instance_buffer, 0, sizeof(TierInstance));
     gl.VertexArrayBindingDivisor(vertex_array_, kInstanceBinding, 1);
-    const GLuint locations[] = {5, 6};
-    const GLuint offsets[] = {offsetof(TierInstance, origin), offsetof(TierInstance, map_uv)};
-    for (int i = 0; i < 2; ++i) {
-        gl.EnableVertexArrayAttrib(vertex_array_, locations[i]);
-        gl.VertexArrayAttribFormat(vertex_array_, locations[i], 4, GL_FLOAT, GL_FALSE, offsets[i]);
-        gl.VertexArrayAttribBinding(vertex_array_, locations[i], kInstanceBinding);
-    }
+    // Location 5: vec4 origin; location 6: uvec4 cell and size (integer).
+    gl.EnableVertexArrayAttrib(vertex_array_, 5);
+    gl.VertexArrayAttribFormat(vertex_array_, 5, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, origin));
+    gl.VertexArrayAttribBinding(vertex_array_, 5, kInstanceBinding);
+    gl.EnableVertexArrayAttrib(vertex_array_, 6);
+    gl.VertexArrayAttribIFormat(vertex_array_, 6, 4, GL_UNSIGNED_INT, offsetof(TierInstance, cell));
+    gl.VertexArrayAttribBinding(vertex_array_, 6, kInstanceBinding);
     return GRASS_SUCCESS;
 }
 

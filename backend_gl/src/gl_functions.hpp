@@ -56,6 +56,7 @@
     X(PFNGLVERTEXARRAYVERTEXBUFFERPROC, VertexArrayVertexBuffer)                    \
     X(PFNGLVERTEXARRAYELEMENTBUFFERPROC, VertexArrayElementBuffer)                  \
     X(PFNGLVERTEXARRAYATTRIBFORMATPROC, VertexArrayAttribFormat)                    \
+    X(PFNGLVERTEXARRAYATTRIBIFORMATPROC, VertexArrayAttribIFormat)                  \
     X(PFNGLVERTEXARRAYATTRIBBINDINGPROC, VertexArrayAttribBinding)                  \
     X(PFNGLENABLEVERTEXARRAYATTRIBPROC, EnableVertexArrayAttrib)                    \
     X(PFNGLVERTEXARRAYBINDINGDIVISORPROC, VertexArrayBindingDivisor)                \

@@ -20,9 +20,9 @@ constexpr VkVertexInputBindingDescription kBinding = {DebugViewPipeline::kInstan
                                                       VK_VERTEX_INPUT_RATE_INSTANCE};
 constexpr VkVertexInputAttributeDescription kAttributes[] = {
     {5, DebugViewPipeline::kInstanceBinding, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, origin)},
-    {6, DebugViewPipeline::kInstanceBinding, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, map_uv)},
+    {6, DebugViewPipeline::kInstanceBinding, VK_FORMAT_R32G32B32A32_UINT, offsetof(TierInstance, cell)},
 };
-static_assert(offsetof(TierInstance, map_uv) == 16, "instance layout of debug_tiers.vert");
+static_assert(offsetof(TierInstance, cell) == 16, "instance layout of debug_tiers.vert");
 
 } // namespace
 

@@ -29,12 +29,12 @@ constexpr VkVertexInputAttributeDescription kAttributes[] = {
     {3, 0, VK_FORMAT_R8G8B8A8_UNORM, offsetof(BladeVertex, color)},
     {4, 0, VK_FORMAT_R32_SFLOAT, offsetof(BladeVertex, threshold)},
     {5, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, origin)},
-    {6, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, map_uv)},
+    {6, 1, VK_FORMAT_R32G32B32A32_UINT, offsetof(TierInstance, cell)},
 };
 static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_shape) == 24 &&
                   offsetof(BladeVertex, color) == 40 && offsetof(BladeVertex, threshold) == 44,
               "vertex layout of blade.vert");
-static_assert(offsetof(TierInstance, map_uv) == 16, "instance layout of blade.vert");
+static_assert(offsetof(TierInstance, cell) == 16, "instance layout of blade.vert");
 
 bool format_has_stencil(VkFormat format) {
     return format == VK_FORMAT_D16_UNORM_S8_UINT || format == VK_FORMAT_D24_UNORM_S8_UINT ||

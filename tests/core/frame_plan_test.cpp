@@ -3,6 +3,7 @@
 #include "view_helpers.hpp"
 
 #include "context.hpp"
+#include "mirror_tiling.hpp"
 
 #include <cmath>
 #include <set>
@@ -53,6 +54,18 @@ protected:
     }
     grass_tier_desc tier{};
     grass_lod_test band{};
+    // The mirror bits the shaders give each planned geometry cell (same hash as the GPU).
+    std::vector<uint32_t> mirror_states() const {
+        std::vector<uint32_t> out;
+        for (const auto& d : ctx->plan.draws) {
+            if (d.kind != GRASS_TIER_GEOMETRY) continue;
+            for (uint32_t k = 0; k < d.instance_count; ++k) {
+                const auto& inst = ctx->plan.instances[d.first_instance + k];
+                out.push_back(d.uniforms.tiling[1] ? grass::mirror_bits(inst.cell[0], inst.cell[1], d.uniforms.tiling[0]) : 0u);
+            }
+        }
+        return out;
+    }
     void SetUp() override {
         CoreTest::SetUp();
         patch = make_patch();
@@ -65,9 +78,9 @@ TEST_F(PlanTest, AllFourMirrorStatesOccurOnAnEightByEightField) {
     const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
     plan(test_view(eye, target));
     ASSERT_EQ(geometry().size(), 64u);
-    std::set<int> states;
-    for (const auto& inst : geometry()) states.insert(static_cast<int>(inst.mirror));
-    EXPECT_EQ(states, (std::set<int>{0, 1, 2, 3}));
+    std::set<uint32_t> states;
+    for (uint32_t m : mirror_states()) states.insert(m);
+    EXPECT_EQ(states, (std::set<uint32_t>{0, 1, 2, 3}));
 }
 
 TEST_F(PlanTest, MirrorTilingOffDrawsEveryCellUnmirroredAndTheSeedChangesThePattern) {
@@ -76,19 +89,19 @@ TEST_F(PlanTest, MirrorTilingOffDrawsEveryCellUnmirroredAndTheSeedChangesThePatt
     const grass_field_id f = make_field(d);
     const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
     plan(test_view(eye, target));
-    for (const auto& inst : geometry()) EXPECT_EQ(inst.mirror, 0.0f);
+    for (uint32_t m : mirror_states()) EXPECT_EQ(m, 0u);
     ASSERT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
 
-    std::vector<float> a, b;
+    std::vector<uint32_t> a, b;
     d.mirror_tiling = 1;
     const grass_field_id f1 = make_field(d);
     plan(test_view(eye, target));
-    for (const auto& inst : geometry()) a.push_back(inst.mirror);
+    a = mirror_states();
     ASSERT_EQ(grass_destroy_field(ctx, f1), GRASS_SUCCESS);
     d.mirror_seed = 7;
     make_field(d);
     plan(test_view(eye, target));
-    for (const auto& inst : geometry()) b.push_back(inst.mirror);
+    b = mirror_states();
     EXPECT_NE(a, b);
 }
 
@@ -144,7 +157,8 @@ TEST_F(PlanTest, AFieldTenThousandKilometresOutPlansTheSameCameraRelativeOrigins
     ASSERT_EQ(far_instances.size(), near_instances.size());
     for (size_t k = 0; k < far_instances.size(); ++k) {
         for (int c = 0; c < 3; ++c) EXPECT_NEAR(far_instances[k].origin[c], near_instances[k].origin[c], 1e-6f);
-        EXPECT_EQ(far_instances[k].mirror, near_instances[k].mirror);
+        EXPECT_EQ(far_instances[k].cell[0], near_instances[k].cell[0]);
+        EXPECT_EQ(far_instances[k].cell[1], near_instances[k].cell[1]);
     }
 }
 
@@ -195,6 +209,24 @@ TEST_F(PlanTest, RotatedBaseTransformPlacesCellsInWorldSpace) {
         EXPECT_LE(inst.origin[2] - 0.5, 1e-6);
         EXPECT_GE(inst.origin[2] - 0.5, -1.0 - 1e-6);
     }
+}
+
+} // namespace
+
+namespace {
+
+TEST(MirrorBits, TheFourStatesAreEquallyLikelyAnywhereInTheField) {
+    for (uint32_t base : {0u, 1u << 20, (1u << 30) - 200u}) {
+        int count[4] = {0, 0, 0, 0};
+        for (uint32_t z = 0; z < 100; ++z) {
+            for (uint32_t x = 0; x < 100; ++x) count[grass::mirror_bits(base + x, base + z, 0)]++;
+        }
+        for (int c : count) EXPECT_NEAR(c, 2500, 200) << "cells from " << base;
+    }
+    // Neighbouring cells are independent: a state repeats on its right neighbour 1/4 of the time.
+    int same = 0;
+    for (uint32_t x = 0; x < 10000; ++x) same += grass::mirror_bits(x, 7, 3) == grass::mirror_bits(x + 1, 7, 3);
+    EXPECT_NEAR(same, 2500, 200);
 }
 
 } // namespace

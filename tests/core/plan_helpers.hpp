@@ -12,8 +12,8 @@ struct PlannedInstance {
     uint64_t x0, z0, count_x, count_z; // cells, recovered from map uv and size
 };
 
-// Recovers every planned instance's cell range (map uv x cells gives the first cell).
-inline std::vector<PlannedInstance> planned_instances(const grass_context* ctx, uint32_t cells_x, uint32_t cells_z) {
+// Every planned instance's cell range.
+inline std::vector<PlannedInstance> planned_instances(const grass_context* ctx, uint32_t, uint32_t) {
     std::vector<PlannedInstance> out;
     for (const auto& d : ctx->plan.draws) {
         for (uint32_t k = 0; k < d.instance_count; ++k) {
@@ -21,10 +21,10 @@ inline std::vector<PlannedInstance> planned_instances(const grass_context* ctx, 
             PlannedInstance p;
             p.kind = d.kind;
             p.tier = d.tier;
-            p.x0 = static_cast<uint64_t>(std::llround(double(inst.map_uv[0]) * cells_x));
-            p.z0 = static_cast<uint64_t>(std::llround(double(inst.map_uv[1]) * cells_z));
-            p.count_x = static_cast<uint64_t>(inst.cells[0]);
-            p.count_z = static_cast<uint64_t>(inst.cells[1]);
+            p.x0 = inst.cell[0];
+            p.z0 = inst.cell[1];
+            p.count_x = inst.count[0];
+            p.count_z = inst.count[1];
             out.push_back(p);
         }
     }
