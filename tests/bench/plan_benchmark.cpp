@@ -6,6 +6,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "../core/view_helpers.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -28,31 +30,7 @@ const Camera kCameras[4] = {
 };
 
 grass_view_desc make_view(const double eye[3], const double target[3], float far_m) {
-    grass_view_desc v = grass_default_view_desc();
-    for (int c = 0; c < 3; ++c) v.camera_position[c] = eye[c];
-    double f[3] = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]};
-    const double fl = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    for (double& x : f) x /= fl;
-    double r[3] = {-f[2], 0.0, f[0]};
-    const double rl = std::sqrt(r[0] * r[0] + r[2] * r[2]);
-    r[0] /= rl;
-    r[2] /= rl;
-    const double u[3] = {r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2], r[0] * f[1] - r[1] * f[0]};
-    for (int k = 0; k < 16; ++k) v.view[k] = 0.0f;
-    for (int c = 0; c < 3; ++c) {
-        v.view[4 * c + 0] = static_cast<float>(r[c]);
-        v.view[4 * c + 1] = static_cast<float>(u[c]);
-        v.view[4 * c + 2] = static_cast<float>(-f[c]);
-    }
-    v.view[15] = 1.0f;
-    const float aspect = 16.0f / 9.0f, near_m = 0.05f;
-    const float t = 1.0f / std::tan(55.0f * 3.14159265f / 360.0f);
-    for (float& p : v.projection) p = 0.0f;
-    v.projection[0] = t / aspect;
-    v.projection[5] = t;
-    v.projection[10] = (far_m + near_m) / (near_m - far_m);
-    v.projection[11] = -1.0f;
-    v.projection[14] = 2.0f * far_m * near_m / (near_m - far_m);
+    grass_view_desc v = test_view(eye, target, 55.0f, 16.0f / 9.0f, 0.05f, far_m);
     v.viewport[2] = 1280;
     v.viewport[3] = 720;
     return v;

@@ -31,14 +31,6 @@ protected:
     static constexpr float kFov = 50.0f;
 };
 
-double mean_difference(const grass_host::Image& a, const grass_host::Image& b) {
-    double sum = 0.0;
-    for (size_t k = 0; k < a.rgba.size(); ++k) {
-        if (k % 4 != 3) sum += std::abs(int(a.rgba[k]) - int(b.rgba[k]));
-    }
-    return sum / (a.rgba.size() / 4 * 3);
-}
-
 // 10,000 km out, at an offset that single precision cannot hold (its spacing there is 1 m).
 const double kFar = 1e7 + 0.3719;
 

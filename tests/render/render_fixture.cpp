@@ -89,6 +89,40 @@ void RenderTest::save(const grass_host::Image& image, const std::string& tag) co
     grass_host::write_png(std::string(dir) + "/" + name, image, nullptr);
 }
 
+grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
+                                       const double eye[3], const double look[3]) {
+    grass_host::Image image;
+    std::string error;
+    auto host = grass_host::Host::create(backend, target, &error);
+    EXPECT_TRUE(host) << error;
+    if (!host) return image;
+    grass_context* ctx = nullptr;
+    const grass_context_desc cd = grass_default_context_desc();
+    EXPECT_EQ(host->create_context(cd, &ctx), GRASS_SUCCESS);
+    const grass_patch_desc pd = grass_default_patch_desc();
+    grass_patch_id patch{};
+    EXPECT_EQ(grass_create_patch(ctx, &pd, &patch), GRASS_SUCCESS);
+    grass_field_desc fd = grass_default_field_desc();
+    fd.patch = patch;
+    fd.cells_x = fd.cells_z = cells;
+    grass_field_id field{};
+    EXPECT_EQ(grass_create_field(ctx, &fd, &field), GRASS_SUCCESS);
+    const grass_view_desc v = grass_host::make_view(*host, eye, look, 50.0f, 0.05f, 100.0f);
+    EXPECT_EQ(host->render(ctx, v, nullptr, &image, &error), GRASS_SUCCESS) << error;
+    grass_destroy_context(ctx);
+    EXPECT_EQ(host->validation_messages(), 0u) << host->validation_log();
+    return image;
+}
+
+double mean_difference(const grass_host::Image& a, const grass_host::Image& b) {
+    if (a.rgba.size() != b.rgba.size() || a.rgba.empty()) return 1e9;
+    double sum = 0.0;
+    for (size_t k = 0; k < a.rgba.size(); ++k) {
+        if (k % 4 != 3) sum += std::abs(int(a.rgba[k]) - int(b.rgba[k]));
+    }
+    return sum / double(a.rgba.size() / 4 * 3);
+}
+
 void expected_sky(const grass_host::TargetDesc& t, uint8_t out[3]) {
     for (int c = 0; c < 3; ++c) {
         const double l = t.clear_color[c];

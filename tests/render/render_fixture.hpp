@@ -44,6 +44,13 @@ protected:
 void expected_sky(const grass_host::TargetDesc& t, uint8_t out[3]);
 // A pixel differs from the sky by more than `tolerance` levels in some channel.
 bool is_grass(const uint8_t* pixel, const uint8_t sky[3], int tolerance = 6);
+// One frame of the default patch on a square field of `cells` cells, rendered by a fresh
+// host of `backend`, from `eye` towards `look` (50 degree fov). Fails the calling test on
+// any error or validation message; empty image then.
+grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
+                                       const double eye[3], const double look[3]);
+// Mean absolute difference of the RGB channels, in 8-bit levels.
+double mean_difference(const grass_host::Image& a, const grass_host::Image& b);
 // Share of pixels in [x0, x1) x [y0, y1) that are grass.
 double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_t x0, uint32_t y0, uint32_t x1,
                    uint32_t y1);
