@@ -94,6 +94,30 @@ TEST_P(TierColoursTest, TierColoursAppearAtTheDistancesTheLodTestsGive) {
         EXPECT_GT(checked[zone], 5) << "zone " << zone;
         EXPECT_LE(gaps[zone] * 5, checked[zone] + gaps[zone]) << "zone " << zone << ": at most 20% gap rows";
     }
+
+    // Without the debug view only the geometry tier draws (blades), exactly its planned
+    // cells: grass near the camera, nothing where the volume and image tiers are planned.
+    v.flags = 0;
+    const auto blades = render(v);
+    save(blades, std::string(backend_name(GetParam())) + ".blades");
+    uint8_t sky[3];
+    expected_sky(host->target(), sky);
+    int near_rows = 0;
+    for (uint32_t y = 0; y < blades.height; ++y) {
+        const double sy = (1.0 - 2.0 * (y + 0.5) / blades.height) * t;
+        const double dir[3] = {f[0] + sy * u[0], f[1] + sy * u[1], f[2] + sy * u[2]};
+        if (dir[1] >= 0.0) continue;
+        const double s = -eye[1] / dir[1];
+        const double dist = s * std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+        const double row_share = grass_share(blades, sky, 0, y, blades.width, y + 1);
+        if (dist < 2.4) {
+            EXPECT_GT(row_share, 0.9) << "row " << y << " at " << dist << " m: blades";
+            near_rows++;
+        } else if (dist > 4.5) {
+            EXPECT_EQ(row_share, 0.0) << "row " << y << " at " << dist << " m: volume and image draw nothing yet";
+        }
+    }
+    EXPECT_GT(near_rows, 5);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, TierColoursTest, ::testing::ValuesIn(enabled_backends()),
