@@ -2,6 +2,7 @@
 // Blade tier (lemme2012 5.1): instanced patch geometry, one instance per planned cell.
 #include "blade_interface.glsl"
 #include "lighting.glsl"
+#include "tier_transitions.glsl"
 
 layout(location = 0) in vec3 a_position;     // patch units
 layout(location = 1) in vec3 a_normal;
@@ -18,6 +19,7 @@ layout(location = 2) out vec3 v_albedo;
 // taken inside the covered samples or the edge alpha below would discard them.
 layout(location = 3) centroid out vec2 v_shape; // x: u across the blade, y: height in patch units
 layout(location = 4) out float v_density;
+layout(location = 5) out float v_opacity;
 
 // A threshold of exactly 1 must pass a density of exactly 1 after bilinear filtering;
 // the smallest threshold (1 / 65536) must still fail a density of 0.
@@ -32,12 +34,12 @@ void main() {
     vec3 n = a_normal;
     n.xz *= s;
 
-    // Density thresholds (lemme 3.3): a blade whose threshold exceeds the local density at
-    // its root is not drawn. Looked up at the root so that the whole blade agrees.
-    float density = field.map_params.z;
-    if (field.map_params.w > 0.5) {
-        density *= textureLod(density_map, (vec2(i_cell.xy) + root) * field.map_params.xy, 0.0).r;
-    }
+    // Density thresholds (lemme 3.3) and tier transitions (boulanger 3.4, lemme 5.4): the
+    // blade's opacity in this tier, from its threshold, the local density and its distance,
+    // all taken at the root so that the whole blade agrees.
+    float density = local_density(vec2(i_cell.xy) + root);
+    vec3 root_position = mat3(field.patch_to_world) * vec3(root.x, 0.0, root.y) + i_origin.xyz;
+    float opacity = tier_blade_opacity(length(root_position), a_threshold, density + kThresholdEpsilon);
 
     vec3 position = mat3(field.patch_to_world) * p + i_origin.xyz;
     v_position = position;
@@ -45,8 +47,11 @@ void main() {
     v_albedo = a_color.rgb;
     v_shape = vec2(a_root_shape.z, p.y);
     v_density = density;
+    v_opacity = opacity;
     gl_Position = frame.view_projection * vec4(position, 1.0);
-    if (a_threshold > density + kThresholdEpsilon) {
+    // Without multisampling a blade is all or nothing: drawn by the tier where its opacity
+    // is at least one half (exactly one tier). With it, alpha-to-coverage fades it.
+    if (opacity <= 0.0 || (frame.params.w < 0.5 && opacity < 0.5)) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // outside the clip volume: the blade is culled
     }
 }

@@ -2,6 +2,7 @@
 #include "context.hpp"
 #include "design_map.hpp"
 #include "lod_setup.hpp"
+#include "tier_slices.hpp"
 #include "validate.hpp"
 
 #include <algorithm>
@@ -55,6 +56,7 @@ grass_result validate_field_desc(grass_context* ctx, const char* fn, const grass
     GRASS_TRY(check_range(ctx, fn, "desc->cell_size", d.cell_size, 1e-4, 1e4));
     GRASS_TRY(validate_base_transform(ctx, fn, d.base_transform));
     GRASS_TRY(check_range(ctx, fn, "desc->density", d.density, 0.0, 1.0));
+    GRASS_TRY(check_range(ctx, fn, "desc->transition_window", d.transition_window, 0.0, 0.25));
     return GRASS_SUCCESS;
 }
 
@@ -65,6 +67,9 @@ grass_result create_field(grass_context* ctx, const grass_field_desc* desc, gras
 
     LodSetup lod;
     GRASS_TRY(make_lod_setup(ctx, fn, *desc, &lod));
+    // The slices the tiers draw from: baked (or read from the cache) and uploaded once per
+    // patch and slice count; a later failure of this call leaves them for the next field.
+    GRASS_TRY(prepare_tier_slices(ctx, fn, desc->patch.index - 1, lod));
 
     Field* field = ctx->host.create<Field>(&ctx->host);
     field->lod = lod;
@@ -82,6 +87,23 @@ grass_result create_field(grass_context* ctx, const grass_field_desc* desc, gras
     field->desc.tiers = nullptr;
     field->desc.lod_tests = nullptr;
     field->tree = QuadtreeShape(desc->cells_x, desc->cells_z);
+    // The band of each tier for the transition weights: its first distance-band test; a
+    // tier chosen by other tests only counts at every distance.
+    for (uint32_t t = 0; t < lod.tier_count; ++t) {
+        float* band = field->bands[t];
+        band[0] = 0.0f;
+        band[1] = 3.0e38f;
+        band[2] = band[3] = 0.0f;
+        for (uint32_t k = 0; k < lod.test_count; ++k) {
+            const grass_lod_test& test = lod.tests[k];
+            if (test.tier != t || test.kind != GRASS_LOD_TEST_DISTANCE_BAND) continue;
+            band[0] = test.begin;
+            band[1] = std::min(test.end, 3.0e38f);
+            band[2] = test.transition_in;
+            band[3] = test.transition_out;
+            break;
+        }
+    }
     // Flat field: every level spans the patch's blades vertically. Tips may lean out of
     // their cell; mirroring makes the overhang the same on both sides.
     const PatchData& pd = ctx->patches.get(desc->patch.index - 1)->data;
@@ -141,6 +163,7 @@ GRASS_API grass_field_desc grass_default_field_desc(void) {
     d.base_transform[0] = d.base_transform[5] = d.base_transform[10] = d.base_transform[15] = 1.0;
     d.density = 1.0f;
     d.mirror_tiling = 1;
+    d.transition_window = 0.05f;
     return d;
 }
 

@@ -8,7 +8,15 @@
 #include <cstring>
 
 grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
-    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), plan(&host), plan_scratch(&host) {}
+    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), plan(&host), plan_scratch(&host),
+      cache_directory(grass::StlAllocator<char>(&host)) {
+    if (d.cache_directory && d.cache_directory[0]) {
+        cache_directory.assign(d.cache_directory, d.cache_directory + std::strlen(d.cache_directory) + 1);
+        desc.cache_directory = cache_directory.data();
+    } else {
+        desc.cache_directory = nullptr;
+    }
+}
 
 grass_context::~grass_context() {
     // Fields and patches release their GPU resources before the backend goes.
@@ -122,10 +130,12 @@ grass_result create_context(const char* function, uint32_t header_version, const
     // The context lives in memory from its own allocator.
     HostAllocator bootstrap(desc->allocator);
     grass_context* ctx = nullptr;
+    void* memory = nullptr;
     try {
-        void* memory = bootstrap.allocate(sizeof(grass_context), alignof(grass_context));
+        memory = bootstrap.allocate(sizeof(grass_context), alignof(grass_context));
         ctx = new (memory) grass_context(*desc, owner_tag_for(memory));
     } catch (const std::bad_alloc&) {
+        if (memory) bootstrap.deallocate(memory);
         return early_fail(desc, GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: out of host memory", function);
     }
     const grass_result r = guarded(ctx, function, [&] { return factory(ctx, factory_user_data, &ctx->backend); });

@@ -19,10 +19,24 @@
 namespace grass {
 
 struct Patch {
-    explicit Patch(HostAllocator* host) : data(host) {}
+    explicit Patch(HostAllocator* h) : data(h), host(h), slice_sets(StlAllocator<SliceSet*>(h)) {}
+    ~Patch() {
+        for (SliceSet* s : slice_sets) host->destroy(s);
+    }
+    Patch(const Patch&) = delete;
+    Patch& operator=(const Patch&) = delete;
+    // The baked set with `slices_per_axis` (0 = the horizontal slice), or nullptr.
+    const SliceSet* slices(uint32_t slices_per_axis) const {
+        for (const SliceSet* s : slice_sets) {
+            if (s->slices_per_axis == slices_per_axis) return s;
+        }
+        return nullptr;
+    }
     PatchData data;
+    HostAllocator* host;
     grass_patch_desc desc{};
-    uint32_t field_users = 0; // fields that use this patch
+    uint32_t field_users = 0;      // fields that use this patch
+    Vector<SliceSet*> slice_sets;  // baked on demand by the fields' tiers, uploaded once each
 };
 
 struct Field {
@@ -37,6 +51,7 @@ struct Field {
     LodSetup lod;                      // tiers and lod tests, copied from the desc
     QuadtreeShape tree;                // implicit: nothing per node or cell
     LevelExtent extents[32];           // vertical extent of each level's nodes, in cells
+    float bands[GRASS_MAX_TIERS][4] = {}; // per tier: its distance band (begin, end, in, out) for the transitions
     double overhang = 0.0;             // how far blade tips may leave their cell, in cells
 };
 
@@ -60,6 +75,7 @@ struct grass_context {
     bool in_frame = false;
     uint64_t frame_number = 0;
     char last_error[512] = {0};
+    grass::Vector<char> cache_directory; // copy of desc.cache_directory (empty: no disk cache)
 
     // Logs `message` (printf format) at error level with `id`, keeps it as the last error,
     // and returns `result`: `return ctx->fail(GRASS_ERROR_..., GRASS_MSG_..., "...", ...);`

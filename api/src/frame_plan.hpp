@@ -17,7 +17,8 @@ struct FrameUniforms {
     float sun_direction[4];    // xyz unit, towards the sun
     float sun_color[4];        // rgb
     float ambient_color[4];    // rgb
-    float params[4];           // x = time (s), y = flags, z = +1 (depth 0 is near) or -1 (reversed depth), w unused
+    float params[4];           // x = time (s), y = flags, z = +1 (depth 0 is near) or -1 (reversed depth),
+                               // w = 1 when the target is multisampled: the backend sets it (0 from the core)
 };
 static_assert(sizeof(FrameUniforms) == 128, "std140 Frame block");
 
@@ -25,10 +26,14 @@ static_assert(sizeof(FrameUniforms) == 128, "std140 Frame block");
 struct FieldUniforms {
     float patch_to_world[16]; // patch units -> world metres (rotation x cell size), no translation
     float map_params[4];      // x = map u per cell, y = map v per cell, z = density (uniform or map multiplier), w = 1 if a density map is bound
-    float blade_params[4];    // x = ao impact, y = ao height (patch units), z = tier kind (grass_tier_kind), w unused
-    uint32_t tiling[4];       // x = mirror seed, y = 1 if mirrored tiling is on, zw unused
+    float blade_params[4];    // x = ao impact, y = ao height (patch units), z = tier kind (grass_tier_kind),
+                              // w = height of the baked slices (patch units)
+    uint32_t tiling[4];       // x = mirror seed, y = 1 if mirrored tiling is on, z = slices per axis of the tier
+    float bands[8][4];        // the field's tiers (GRASS_MAX_TIERS): begin, end, transition in, transition out (m)
+    uint32_t tiers[4];        // x = this draw's tier, y = the field's tier count
+    float transition[4];      // x = crossover window (threshold units; 0 = exact partition)
 };
-static_assert(sizeof(FieldUniforms) == 112, "std140 Field block");
+static_assert(sizeof(FieldUniforms) == 272, "std140 Field block");
 
 // One patch instance of any tier: a cell, or a macro-cell of count[0] x count[1] cells.
 // Vertex input, per instance: location 5 (vec4) and location 6 (uvec4). The exact integer

@@ -245,7 +245,7 @@ private:
             draw.patch_slot = field_.patch_slot;
             draw.first_instance = static_cast<uint32_t>(plan.instances.size());
             draw.instance_count = static_cast<uint32_t>(candidates.size());
-            fill_uniforms(kind, &draw.uniforms);
+            fill_uniforms(kind, t, &draw.uniforms);
             plan.draws.push_back(draw);
             drew = true;
             const uint64_t triangles_per_blade = pd.indices_per_blade / 3;
@@ -267,7 +267,7 @@ private:
         if (drew) plan.stats.fields_drawn += 1;
     }
 
-    void fill_uniforms(grass_tier_kind kind, FieldUniforms* u) const {
+    void fill_uniforms(grass_tier_kind kind, uint32_t tier, FieldUniforms* u) const {
         const grass_field_desc& d = field_.desc;
         for (int c = 0; c < 4; ++c) {
             for (int r = 0; r < 4; ++r) {
@@ -282,10 +282,19 @@ private:
         u->blade_params[0] = patch_.data.ao_impact;
         u->blade_params[1] = patch_.data.ao_height;
         u->blade_params[2] = static_cast<float>(kind);
-        u->blade_params[3] = 0.0f;
+        u->blade_params[3] = std::max(0.0f, patch_.data.bounds_max[1]); // the slices' height
         u->tiling[0] = d.mirror_seed;
         u->tiling[1] = d.mirror_tiling ? 1u : 0u;
-        u->tiling[2] = u->tiling[3] = 0u;
+        u->tiling[2] = field_.lod.tiers[tier].slices;
+        u->tiling[3] = 0u;
+        for (uint32_t t = 0; t < GRASS_MAX_TIERS; ++t) {
+            for (int k = 0; k < 4; ++k) u->bands[t][k] = t < field_.lod.tier_count ? field_.bands[t][k] : 0.0f;
+        }
+        u->tiers[0] = tier;
+        u->tiers[1] = field_.lod.tier_count;
+        u->tiers[2] = u->tiers[3] = 0u;
+        u->transition[0] = d.transition_window;
+        u->transition[1] = u->transition[2] = u->transition[3] = 0.0f;
     }
 
     grass_context* ctx_;

@@ -1,5 +1,6 @@
 #include "gl_backend.hpp"
 
+#include "gl_instance_input.hpp"
 #include "gl_program.hpp"
 #include "gl_state_guard.hpp"
 
@@ -21,9 +22,9 @@ struct VertexAttribute {
     bool integer; // read as an integer (uvec) in the shader
 };
 
-// The vertex input of blade.vert: patch vertices on binding 0, instances on binding 1.
+// The vertex input of blade.vert: patch vertices on binding 0, instances on
+// kInstanceBinding (1).
 constexpr GLuint kVertexBinding = 0;
-constexpr GLuint kInstanceBinding = 1;
 const VertexAttribute kBladeAttributes[] = {
     {0, 3, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, position), kVertexBinding, false},
     {1, 3, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, normal), kVertexBinding, false},
@@ -54,6 +55,7 @@ GlBackend::GlBackend(grass_context* ctx)
       uniform_staging_(StlAllocator<unsigned char>(&ctx->host)),
       field_uniform_offsets_(StlAllocator<GLintptr>(&ctx->host)),
       patches_(StlAllocator<PatchGpu>(&ctx->host)),
+      slices_(StlAllocator<SliceGpu>(&ctx->host)),
       fields_(StlAllocator<FieldGpu>(&ctx->host)) {}
 
 grass_result GlBackend::create(grass_context* ctx, const grass_gl_desc& desc, Backend** out_backend) {
@@ -91,8 +93,13 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     gl_.GetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &uniform_alignment_);
     if (uniform_alignment_ < 1) uniform_alignment_ = 256;
     gl_.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture_size_);
+    gl_.GetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_array_layers_);
 
     grass_result result = create_blade_program(ctx_, gl_, kCreateFunction, &program_);
+    if (result != GRASS_SUCCESS) return result;
+    result = create_volume_program(ctx_, gl_, kCreateFunction, &volume_program_);
+    if (result != GRASS_SUCCESS) return result;
+    result = create_image_program(ctx_, gl_, kCreateFunction, &image_program_);
     if (result != GRASS_SUCCESS) return result;
 
     gl_.CreateTextures(GL_TEXTURE_2D, 1, &white_texture_);
@@ -109,11 +116,24 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     gl_.SamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl_.SamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
+    // Slice colour and normal: trilinear. Thresholds are ids, not signals: never blended.
+    gl_.CreateSamplers(1, &slice_sampler_);
+    gl_.SamplerParameteri(slice_sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl_.SamplerParameteri(slice_sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl_.SamplerParameteri(slice_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl_.SamplerParameteri(slice_sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl_.CreateSamplers(1, &threshold_sampler_);
+    gl_.SamplerParameteri(threshold_sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    gl_.SamplerParameteri(threshold_sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl_.SamplerParameteri(threshold_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl_.SamplerParameteri(threshold_sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+
     instances_.create(gl_);
     uniforms_.create(gl_);
+    tier_vertex_array_ = create_instance_vertex_array(gl_, instances_.name());
     result = debug_view_.create(ctx_, gl_, kCreateFunction, instances_.name());
     if (result != GRASS_SUCCESS) return result;
-    result = check_errors(kCreateFunction, "creating the programs, white texture and sampler");
+    result = check_errors(kCreateFunction, "creating the programs, white texture and samplers");
     if (result != GRASS_SUCCESS) return result;
 
     return GRASS_SUCCESS;
@@ -123,12 +143,19 @@ GlBackend::~GlBackend() {
     if (!loaded_) return;
     for (uint32_t slot = 0; slot < patches_.size(); ++slot) release_patch(slot);
     for (uint32_t slot = 0; slot < fields_.size(); ++slot) release_field(slot);
+    for (SliceGpu& s : slices_) delete_slices(s); // sets of slots never given a patch
+    slices_.clear();
+    if (tier_vertex_array_ != 0) gl_.DeleteVertexArrays(1, &tier_vertex_array_);
     instances_.destroy(gl_);
     uniforms_.destroy(gl_);
     debug_view_.destroy(gl_);
     if (sampler_ != 0) gl_.DeleteSamplers(1, &sampler_);
+    if (slice_sampler_ != 0) gl_.DeleteSamplers(1, &slice_sampler_);
+    if (threshold_sampler_ != 0) gl_.DeleteSamplers(1, &threshold_sampler_);
     if (white_texture_ != 0) gl_.DeleteTextures(1, &white_texture_);
     if (program_ != 0) gl_.DeleteProgram(program_);
+    if (volume_program_ != 0) gl_.DeleteProgram(volume_program_);
+    if (image_program_ != 0) gl_.DeleteProgram(image_program_);
 }
 
 // Drains the GL error flags. glGetError is the only way to see GL_OUT_OF_MEMORY; it is
@@ -195,7 +222,110 @@ grass_result GlBackend::upload_patch(uint32_t slot, const PatchData& patch) {
     return GRASS_SUCCESS;
 }
 
+grass_result GlBackend::upload_slices(uint32_t slot, const SliceSet& set) {
+    constexpr const char* kFunction = "grass_create_field";
+    const uint32_t n = set.slices_per_axis;
+    const uint64_t total_texels = set.offset(set.layers, 0);
+    // The sizes of a SliceSet are the core's promise (baked_slices.hpp); a broken promise
+    // is an internal error, caught here rather than as a read past the arrays.
+    uint32_t full_chain = 1;
+    for (uint32_t larger = set.width > set.height ? set.width : set.height; larger > 1; larger >>= 1) ++full_chain;
+    const bool shape_ok = set.width > 0 && set.height > 0 && set.layers == (n == 0 ? 1u : 2 * n) &&
+                          set.mip_levels >= 1 && set.mip_levels <= full_chain;
+    if (!shape_ok || set.color.size() < total_texels * 4 || set.normal.size() < total_texels * 4 ||
+        set.threshold.size() < total_texels) {
+        return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+                          "%s: the baked slice set (N = %u) of patch slot %u is malformed: %u layers of %ux%u texels, "
+                          "%u mip levels, %zu/%zu/%zu colour/normal/threshold texels (internal error)",
+                          kFunction, n, slot, set.layers, set.width, set.height, set.mip_levels,
+                          set.color.size() / 4, set.normal.size() / 4, set.threshold.size());
+    }
+    if (set.width > static_cast<uint32_t>(max_texture_size_) || set.height > static_cast<uint32_t>(max_texture_size_) ||
+        set.layers > static_cast<uint32_t>(max_array_layers_)) {
+        return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                          "%s: the baked slices (N = %u) are %u layers of %ux%u texels; this GL device's "
+                          "GL_MAX_TEXTURE_SIZE is %d and GL_MAX_ARRAY_TEXTURE_LAYERS %d",
+                          kFunction, n, set.layers, set.width, set.height, max_texture_size_, max_array_layers_);
+    }
+
+    // A set is uploaded once per patch and N; a repeat replaces it.
+    for (size_t i = 0; i < slices_.size(); ++i) {
+        if (slices_[i].patch_slot == slot && slices_[i].slices_per_axis == n) {
+            delete_slices(slices_[i]);
+            slices_[i] = slices_.back();
+            slices_.pop_back();
+            break;
+        }
+    }
+
+    SliceGpu gpu;
+    gpu.patch_slot = slot;
+    gpu.slices_per_axis = n;
+    struct Array {
+        GLuint* texture;
+        GLenum internal_format;
+        GLenum format;
+        GLenum type;
+        const void* texels;
+        size_t texel_bytes;
+    };
+    const Array arrays[] = {
+        {&gpu.color, GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, set.color.data(), 4},
+        {&gpu.normal, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, set.normal.data(), 4},
+        {&gpu.threshold, GL_R16, GL_RED, GL_UNSIGNED_SHORT, set.threshold.data(), 2},
+    };
+    {
+        GlUnpackStateGuard unpack(gl_, 1); // rows tightly packed, whatever their width
+        for (const Array& a : arrays) {
+            gl_.CreateTextures(GL_TEXTURE_2D_ARRAY, 1, a.texture);
+            gl_.TextureStorage3D(*a.texture, static_cast<GLsizei>(set.mip_levels), a.internal_format,
+                                 static_cast<GLsizei>(set.width), static_cast<GLsizei>(set.height),
+                                 static_cast<GLsizei>(set.layers));
+            const auto* bytes = static_cast<const unsigned char*>(a.texels);
+            for (uint32_t level = 0; level < set.mip_levels; ++level) {
+                for (uint32_t layer = 0; layer < set.layers; ++layer) {
+                    gl_.TextureSubImage3D(*a.texture, static_cast<GLint>(level), 0, 0, static_cast<GLint>(layer),
+                                          static_cast<GLsizei>(set.level_width(level)),
+                                          static_cast<GLsizei>(set.level_height(level)), 1, a.format, a.type,
+                                          bytes + set.offset(layer, level) * a.texel_bytes);
+                }
+            }
+        }
+    }
+    const grass_result result = check_errors(kFunction, "uploading the patch's baked slices");
+    if (result != GRASS_SUCCESS) {
+        delete_slices(gpu);
+        return result;
+    }
+    gpu.bytes = total_texels * (4 + 4 + 2);
+    slices_.push_back(gpu);
+    return GRASS_SUCCESS;
+}
+
+void GlBackend::delete_slices(SliceGpu& slices) {
+    if (slices.color != 0) gl_.DeleteTextures(1, &slices.color);
+    if (slices.normal != 0) gl_.DeleteTextures(1, &slices.normal);
+    if (slices.threshold != 0) gl_.DeleteTextures(1, &slices.threshold);
+    slices = SliceGpu{};
+}
+
+const GlBackend::SliceGpu* GlBackend::find_slices(uint32_t patch_slot, uint32_t slices_per_axis) const {
+    for (const SliceGpu& s : slices_) {
+        if (s.patch_slot == patch_slot && s.slices_per_axis == slices_per_axis) return &s;
+    }
+    return nullptr;
+}
+
 void GlBackend::release_patch(uint32_t slot) {
+    for (size_t i = 0; i < slices_.size();) {
+        if (slices_[i].patch_slot == slot) {
+            delete_slices(slices_[i]);
+            slices_[i] = slices_.back();
+            slices_.pop_back();
+        } else {
+            ++i;
+        }
+    }
     if (slot >= patches_.size()) return;
     PatchGpu& gpu = patches_[slot];
     if (gpu.vertex_array != 0) gl_.DeleteVertexArrays(1, &gpu.vertex_array);
@@ -251,6 +381,7 @@ uint64_t GlBackend::gpu_bytes() const {
     uint64_t bytes = instances_.capacity() + uniforms_.capacity();
     if (white_texture_ != 0) bytes += sizeof(uint16_t);
     for (const PatchGpu& p : patches_) bytes += p.bytes;
+    for (const SliceGpu& s : slices_) bytes += s.bytes;
     for (const FieldGpu& f : fields_) bytes += f.bytes;
     return bytes;
 }

@@ -1,6 +1,7 @@
-// The GL 4.5 backend: owns the blade program, the debug view, one vertex array per patch,
-// one density texture per field and the per-frame streaming buffers, all made with DSA in
-// the host's GL context. Drawing is grass_gl_render -> GlBackend::render.
+// The GL 4.5 backend: owns the tier programs (blades, volume, image), the debug view, one
+// vertex array per patch, the patches' baked slice textures, one density texture per field
+// and the per-frame streaming buffers, all made with DSA in the host's GL context. Drawing
+// is grass_gl_render -> GlBackend::render.
 #pragma once
 
 #include "gl_debug_view.hpp"
@@ -28,6 +29,7 @@ public:
 
     grass_backend kind() const override { return GRASS_BACKEND_GL; }
     grass_result upload_patch(uint32_t slot, const PatchData& patch) override;
+    grass_result upload_slices(uint32_t slot, const SliceSet& set) override;
     void release_patch(uint32_t slot) override;
     grass_result upload_field(uint32_t slot, const MapTexels& density) override;
     void release_field(uint32_t slot) override;
@@ -45,6 +47,15 @@ private:
         uint32_t index_count = 0;
         uint64_t bytes = 0;
     };
+    // One uploaded SliceSet of a patch: three 2D array textures with full mip chains.
+    struct SliceGpu {
+        uint32_t patch_slot = 0;
+        uint32_t slices_per_axis = 0; // N; 0 = the horizontal slice
+        GLuint color = 0;             // GL_SRGB8_ALPHA8
+        GLuint normal = 0;            // GL_RGBA8
+        GLuint threshold = 0;         // GL_R16
+        uint64_t bytes = 0;
+    };
     struct FieldGpu {
         GLuint density_map = 0; // 0: the field samples the 1x1 white texture
         uint64_t bytes = 0;
@@ -52,24 +63,36 @@ private:
 
     grass_result init(const grass_gl_desc& desc);
     grass_result check_errors(const char* function, const char* what);
-    void upload_frame(); // gl_draw.cpp
+    void delete_slices(SliceGpu& slices);
+    const SliceGpu* find_slices(uint32_t patch_slot, uint32_t slices_per_axis) const;
+    // gl_draw.cpp
+    void upload_frame(bool multisampled);
     void draw_blades(const FramePlan& plan) const;
+    void draw_sliced(const FramePlan& plan, grass_tier_kind kind) const; // volume or image draws
 
     grass_context* ctx_;
     bool loaded_ = false; // gl_ holds every entry point
     GlFunctions gl_;
     GLuint program_ = 0; // blades
+    GLuint volume_program_ = 0;
+    GLuint image_program_ = 0;
+    GLuint tier_vertex_array_ = 0; // instances only: the volume and image tiers
     GlDebugView debug_view_;
     GLuint white_texture_ = 0;
-    GLuint sampler_ = 0;
+    GLuint sampler_ = 0;           // density map: linear, clamped
+    GLuint slice_sampler_ = 0;     // slice colour and normal: trilinear, clamped
+    GLuint threshold_sampler_ = 0; // slice thresholds: nearest, never blended
     GLint uniform_alignment_ = 256;
     GLint max_texture_size_ = 0;
+    GLint max_array_layers_ = 0;
     GlStreamBuffer instances_;
     GlStreamBuffer uniforms_;
     Vector<unsigned char> uniform_staging_;
     Vector<GLintptr> field_uniform_offsets_; // per draw (all kinds), into uniforms_
     bool frame_uploaded_ = false;
+    bool frame_multisampled_ = false; // the Frame block's params.w as uploaded
     Vector<PatchGpu> patches_;
+    Vector<SliceGpu> slices_; // every patch's sets, unordered
     Vector<FieldGpu> fields_;
 };
 

@@ -1,15 +1,13 @@
 #include "gl_debug_view.hpp"
 
+#include "gl_instance_input.hpp"
 #include "gl_program.hpp"
-
-#include <cstddef>
 
 namespace grass {
 
 namespace {
 
-constexpr GLuint kInstanceBinding = 1; // as in the blade vertex arrays
-constexpr GLsizei kBoxVertices = 6;    // two triangles, corners from gl_VertexID
+constexpr GLsizei kBoxVertices = 6; // two triangles, corners from gl_VertexID
 
 } // namespace
 
@@ -18,16 +16,7 @@ grass_result GlDebugView::create(grass_context* ctx, const GlFunctions& gl, cons
     const grass_result result = create_debug_tiers_program(ctx, gl, function, &program_);
     if (result != GRASS_SUCCESS) return result;
 
-    gl.CreateVertexArrays(1, &vertex_array_);
-    gl.VertexArrayVertexBuffer(vertex_array_, kInstanceBinding, instance_buffer, 0, sizeof(TierInstance));
-    gl.VertexArrayBindingDivisor(vertex_array_, kInstanceBinding, 1);
-    // Location 5: vec4 origin; location 6: uvec4 cell and size (integer).
-    gl.EnableVertexArrayAttrib(vertex_array_, 5);
-    gl.VertexArrayAttribFormat(vertex_array_, 5, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, origin));
-    gl.VertexArrayAttribBinding(vertex_array_, 5, kInstanceBinding);
-    gl.EnableVertexArrayAttrib(vertex_array_, 6);
-    gl.VertexArrayAttribIFormat(vertex_array_, 6, 4, GL_UNSIGNED_INT, offsetof(TierInstance, cell));
-    gl.VertexArrayAttribBinding(vertex_array_, 6, kInstanceBinding);
+    vertex_array_ = create_instance_vertex_array(gl, instance_buffer);
     return GRASS_SUCCESS;
 }
 

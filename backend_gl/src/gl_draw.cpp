@@ -1,8 +1,9 @@
 // Executing a frame plan: upload its instances and uniforms once per frame, then one
-// instanced draw per planned draw (blades, or debug boxes), inside a guard that restores
-// the host's GL state.
+// instanced draw per planned draw (blades, volume cuboids, image quads, or debug boxes),
+// inside a guard that restores the host's GL state.
 #include "gl_backend.hpp"
 
+#include "gl_program.hpp"
 #include "gl_state_guard.hpp"
 
 #include <cstring>
@@ -15,11 +16,30 @@ size_t align_up(size_t value, size_t alignment) {
     return (value + alignment - 1) / alignment * alignment;
 }
 
+constexpr GLsizei kImageVertices = 6;   // one quad, corners from gl_VertexID (image.vert)
+constexpr GLsizei kVolumeVertices = 36; // a cuboid, every face (volume.vert)
+
+// The slice set a draw samples: its slices per axis for a volume tier, the horizontal
+// slice (N = 0) for an image tier.
+uint32_t slice_set_of(const TierDraw& draw) {
+    return draw.kind == GRASS_TIER_VOLUME ? draw.slices : 0;
+}
+
+const char* tier_kind_name(grass_tier_kind kind) {
+    switch (kind) {
+    case GRASS_TIER_GEOMETRY: return "geometry";
+    case GRASS_TIER_VOLUME: return "volume";
+    case GRASS_TIER_IMAGE: return "image";
+    default: return "unknown";
+    }
+}
+
 } // namespace
 
 // Uniform buffer layout: Frame at offset 0, then one Field block per draw of any kind
-// (the debug view draws them all), each at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT.
-void GlBackend::upload_frame() {
+// (the debug view draws them all), each at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT. The Frame
+// block's params.w says whether the target is multisampled (alpha-to-coverage on).
+void GlBackend::upload_frame(bool multisampled) {
     const FramePlan& plan = ctx_->plan;
     const size_t alignment = static_cast<size_t>(uniform_alignment_);
 
@@ -30,7 +50,9 @@ void GlBackend::upload_frame() {
         size = static_cast<size_t>(field_uniform_offsets_[i]) + sizeof(FieldUniforms);
     }
     uniform_staging_.assign(size, 0);
-    std::memcpy(uniform_staging_.data(), &plan.frame, sizeof(FrameUniforms));
+    FrameUniforms frame = plan.frame;
+    frame.params[3] = multisampled ? 1.0f : 0.0f;
+    std::memcpy(uniform_staging_.data(), &frame, sizeof(FrameUniforms));
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &plan.draws[i].uniforms,
                     sizeof(FieldUniforms));
@@ -38,9 +60,10 @@ void GlBackend::upload_frame() {
     uniforms_.upload(gl_, uniform_staging_.data(), uniform_staging_.size());
     instances_.upload(gl_, plan.instances.data(), plan.instances.size() * sizeof(TierInstance));
     frame_uploaded_ = true;
+    frame_multisampled_ = multisampled;
 }
 
-// Volume and image tiers are not drawn yet (the three-tier issue): only geometry draws.
+// Geometry draws: the patch's blades, instances front to back.
 void GlBackend::draw_blades(const FramePlan& plan) const {
     gl_.UseProgram(program_);
     gl_.BindSampler(0, sampler_);
@@ -58,26 +81,77 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
     }
 }
 
+// Volume or image draws: instances only, sampling the patch's baked slices (render() has
+// checked that every set is there). Unit 0 is active.
+void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
+    bool bound = false;
+    for (size_t i = 0; i < plan.draws.size(); ++i) {
+        const TierDraw& draw = plan.draws[i];
+        if (draw.kind != kind || draw.instance_count == 0) continue;
+        if (!bound) {
+            gl_.UseProgram(kind == GRASS_TIER_VOLUME ? volume_program_ : image_program_);
+            gl_.BindVertexArray(tier_vertex_array_);
+            gl_.BindSampler(static_cast<GLuint>(kDensityMapUnit), sampler_);
+            gl_.BindSampler(static_cast<GLuint>(kSliceColorUnit), slice_sampler_);
+            gl_.BindSampler(static_cast<GLuint>(kSliceNormalUnit), slice_sampler_);
+            gl_.BindSampler(static_cast<GLuint>(kSliceThresholdUnit), threshold_sampler_);
+            bound = true;
+        }
+        const SliceGpu* slices = find_slices(draw.patch_slot, slice_set_of(draw));
+        const FieldGpu& field = fields_[draw.field_slot];
+        const GLuint textures[3][2] = {{static_cast<GLuint>(kSliceColorUnit), slices->color},
+                                       {static_cast<GLuint>(kSliceNormalUnit), slices->normal},
+                                       {static_cast<GLuint>(kSliceThresholdUnit), slices->threshold}};
+        for (const auto& t : textures) {
+            gl_.ActiveTexture(GL_TEXTURE0 + t[0]);
+            gl_.BindTexture(GL_TEXTURE_2D_ARRAY, t[1]);
+        }
+        gl_.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kDensityMapUnit));
+        gl_.BindTexture(GL_TEXTURE_2D, field.density_map != 0 ? field.density_map : white_texture_);
+        gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
+        gl_.DrawArraysInstancedBaseInstance(GL_TRIANGLES, 0,
+                                            kind == GRASS_TIER_VOLUME ? kVolumeVertices : kImageVertices,
+                                            static_cast<GLsizei>(draw.instance_count), draw.first_instance);
+    }
+}
+
 grass_result GlBackend::render(const char* function) {
     const FramePlan& plan = ctx_->plan;
     if (plan.draws.empty()) return GRASS_SUCCESS;
     const bool debug = (plan.flags & GRASS_VIEW_FLAG_DEBUG_TIERS) != 0;
 
     // Check the plan against what was uploaded before touching any GL state. Only the
-    // draws that use a patch need one.
+    // draws that use a patch need one (the debug view draws boxes), and volume and image
+    // draws need the patch's slice set too.
     for (const TierDraw& draw : plan.draws) {
-        const bool needs_patch = !debug && draw.kind == GRASS_TIER_GEOMETRY;
+        const bool known_kind =
+            draw.kind == GRASS_TIER_GEOMETRY || draw.kind == GRASS_TIER_VOLUME || draw.kind == GRASS_TIER_IMAGE;
+        const bool needs_patch = !debug;
         const bool patch_ok =
             !needs_patch || (draw.patch_slot < patches_.size() && patches_[draw.patch_slot].vertex_array != 0);
         const bool instances_ok = uint64_t(draw.first_instance) + draw.instance_count <= plan.instances.size();
-        if (!patch_ok || draw.field_slot >= fields_.size() || !instances_ok) {
+        if (!known_kind || !patch_ok || draw.field_slot >= fields_.size() || !instances_ok) {
             return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                              "%s: the frame plan refers to patch slot %u, field slot %u, instances %u+%u, which the "
-                              "GL backend does not hold (internal error)",
-                              function, draw.patch_slot, draw.field_slot, draw.first_instance, draw.instance_count);
+                              "%s: the frame plan has a %s draw of patch slot %u, field slot %u, instances %u+%u, "
+                              "which the GL backend does not hold (internal error)",
+                              function, tier_kind_name(draw.kind), draw.patch_slot, draw.field_slot,
+                              draw.first_instance, draw.instance_count);
+        }
+        if (!debug && draw.kind != GRASS_TIER_GEOMETRY && draw.instance_count > 0 &&
+            find_slices(draw.patch_slot, slice_set_of(draw)) == nullptr) {
+            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_BACKEND_CALL_FAILED,
+                              "%s: tier %u (%s) of field slot %u draws patch slot %u with %u slices per axis, but no "
+                              "such slice set was uploaded for that patch (internal error: the core uploads every "
+                              "set a field's tiers need at field creation)",
+                              function, draw.tier, tier_kind_name(draw.kind), draw.field_slot, draw.patch_slot,
+                              slice_set_of(draw));
         }
     }
-    if (!frame_uploaded_) upload_frame();
+    GLint sample_buffers = 0;
+    gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &sample_buffers); // of the bound draw framebuffer
+    const bool multisampled = sample_buffers > 0;
+    // Once per frame; again if a later call of the frame draws into a target of the other kind.
+    if (!frame_uploaded_ || frame_multisampled_ != multisampled) upload_frame(multisampled);
 
     GlDrawStateGuard guard(gl_); // also makes texture unit 0 active
     gl_.Viewport(plan.viewport[0], plan.viewport[1], plan.viewport[2], plan.viewport[3]);
@@ -88,12 +162,10 @@ grass_result GlBackend::render(const char* function) {
     }
     gl_.DepthFunc(ctx_->desc.depth_mode == GRASS_DEPTH_GREATER ? GL_GEQUAL : GL_LEQUAL);
     gl_.DepthMask(GL_TRUE);
-    gl_.Disable(GL_CULL_FACE); // blades are two-sided
+    gl_.Disable(GL_CULL_FACE); // blades are two-sided; the volume shader picks its faces itself
     gl_.Disable(GL_BLEND);
     gl_.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    GLint sample_buffers = 0;
-    gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &sample_buffers); // of the bound draw framebuffer
-    if (sample_buffers > 0) {
+    if (multisampled) {
         gl_.Enable(GL_MULTISAMPLE);
         gl_.Enable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     } else {
@@ -104,7 +176,10 @@ grass_result GlBackend::render(const char* function) {
     if (debug) {
         debug_view_.draw(gl_, plan, uniforms_.name(), field_uniform_offsets_);
     } else {
+        // Near tiers first, so the depth test rejects most of the far tiers' fragments.
         draw_blades(plan);
+        draw_sliced(plan, GRASS_TIER_VOLUME);
+        draw_sliced(plan, GRASS_TIER_IMAGE);
     }
     return GRASS_SUCCESS;
 }

@@ -65,6 +65,8 @@
     X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                      \
     X(PFNGLTEXTURESTORAGE2DPROC, TextureStorage2D)                                  \
     X(PFNGLTEXTURESUBIMAGE2DPROC, TextureSubImage2D)                                \
+    X(PFNGLTEXTURESTORAGE3DPROC, TextureStorage3D)                                  \
+    X(PFNGLTEXTURESUBIMAGE3DPROC, TextureSubImage3D)                                \
     X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                        \
     X(PFNGLBINDTEXTUREPROC, BindTexture)                                            \
     X(PFNGLCREATESAMPLERSPROC, CreateSamplers)                                      \

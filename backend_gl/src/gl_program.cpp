@@ -5,6 +5,10 @@ extern const char* const blade_vert;
 extern const char* const blade_frag;
 extern const char* const debug_tiers_vert;
 extern const char* const debug_tiers_frag;
+extern const char* const image_vert;
+extern const char* const image_frag;
+extern const char* const volume_vert;
+extern const char* const volume_frag;
 } // namespace grass_gl_shaders
 
 namespace grass {
@@ -12,8 +16,19 @@ namespace grass {
 namespace {
 
 // The density map is sampled from texture unit 0 (the unit grass_gl.h documents as
-// saved and restored); the shader's binding = 2 is the Vulkan descriptor binding.
-constexpr GLint kDensityMapUnit = 0;
+// saved and restored); the shader's binding = 2 is the Vulkan descriptor binding. The
+// baked slices use units 3-5, as their bindings say; set here too so that nothing
+// depends on the driver honouring layout(binding) on samplers.
+struct SamplerUnit {
+    const char* name;
+    GLint unit;
+};
+constexpr SamplerUnit kSamplerUnits[] = {
+    {"density_map", kDensityMapUnit},
+    {"slice_color", kSliceColorUnit},
+    {"slice_normal", kSliceNormalUnit},
+    {"slice_threshold", kSliceThresholdUnit},
+};
 
 // Reads a shader or program info log through the context's allocator.
 template <class GetIv, class GetLog>
@@ -90,8 +105,10 @@ grass_result create_program(grass_context* ctx, const GlFunctions& gl, const cha
                          "%s: the GL driver failed to link %s: %s", function, source.name, log.data());
     }
 
-    const GLint location = gl.GetUniformLocation(program, "density_map");
-    if (location >= 0) gl.ProgramUniform1i(program, location, kDensityMapUnit);
+    for (const SamplerUnit& sampler : kSamplerUnits) {
+        const GLint location = gl.GetUniformLocation(program, sampler.name);
+        if (location >= 0) gl.ProgramUniform1i(program, location, sampler.unit);
+    }
     *out_program = program;
     return GRASS_SUCCESS;
 }
@@ -109,6 +126,20 @@ grass_result create_debug_tiers_program(grass_context* ctx, const GlFunctions& g
                                         GLuint* out_program) {
     const ProgramSource source = {"the debug tiers program", "debug_tiers.vert", grass_gl_shaders::debug_tiers_vert,
                                   "debug_tiers.frag", grass_gl_shaders::debug_tiers_frag};
+    return create_program(ctx, gl, function, source, out_program);
+}
+
+grass_result create_image_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                  GLuint* out_program) {
+    const ProgramSource source = {"the image tier program", "image.vert", grass_gl_shaders::image_vert, "image.frag",
+                                  grass_gl_shaders::image_frag};
+    return create_program(ctx, gl, function, source, out_program);
+}
+
+grass_result create_volume_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                   GLuint* out_program) {
+    const ProgramSource source = {"the volume tier program", "volume.vert", grass_gl_shaders::volume_vert,
+                                  "volume.frag", grass_gl_shaders::volume_frag};
     return create_program(ctx, gl, function, source, out_program);
 }
 

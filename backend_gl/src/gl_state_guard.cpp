@@ -1,5 +1,7 @@
 #include "gl_state_guard.hpp"
 
+#include "gl_program.hpp"
+
 namespace grass {
 
 namespace {
@@ -17,6 +19,8 @@ constexpr GLenum kUnpackParameters[] = {
     GL_UNPACK_SWAP_BYTES, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES,
 };
 
+constexpr GLint kSliceUnitList[] = {kSliceColorUnit, kSliceNormalUnit, kSliceThresholdUnit};
+
 static_assert(sizeof(kUnpackParameters) / sizeof(kUnpackParameters[0]) == 7, "GlUnpackStateGuard::kParameters");
 
 } // namespace
@@ -32,6 +36,13 @@ GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl) : gl_(gl) {
         gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, i, &uniform_bindings_[i].size);
     }
     gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
+    static_assert(sizeof(kSliceUnitList) / sizeof(kSliceUnitList[0]) == kSliceUnits, "slice units");
+    for (int i = 0; i < kSliceUnits; ++i) {
+        const GLuint unit = static_cast<GLuint>(kSliceUnitList[i]);
+        gl.ActiveTexture(GL_TEXTURE0 + unit);
+        gl.GetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &slice_units_[i].texture_2d_array);
+        gl.GetIntegerv(GL_SAMPLER_BINDING, &slice_units_[i].sampler);
+    }
     gl.ActiveTexture(GL_TEXTURE0);
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d_unit0_);
     gl.GetIntegerv(GL_SAMPLER_BINDING, &sampler_unit0_);
@@ -65,6 +76,12 @@ GlDrawStateGuard::~GlDrawStateGuard() {
     // Unit 0 is active (set in the constructor).
     gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_2d_unit0_));
     gl.BindSampler(0, static_cast<GLuint>(sampler_unit0_));
+    for (int i = 0; i < kSliceUnits; ++i) {
+        const GLuint unit = static_cast<GLuint>(kSliceUnitList[i]);
+        gl.ActiveTexture(GL_TEXTURE0 + unit);
+        gl.BindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(slice_units_[i].texture_2d_array));
+        gl.BindSampler(unit, static_cast<GLuint>(slice_units_[i].sampler));
+    }
     gl.ActiveTexture(static_cast<GLenum>(active_texture_));
     gl.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
     set_enabled(gl, GL_DEPTH_TEST, depth_test_);

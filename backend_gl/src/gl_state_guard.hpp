@@ -7,8 +7,9 @@
 
 namespace grass {
 
-// Around drawing: exactly the state grass_gl.h documents for grass_gl_render. On
-// construction texture unit 0 is made active (the unit the backend binds).
+// Around drawing: exactly the state grass_gl.h documents for grass_gl_render, with the
+// slice units 3-5 (their 2D array texture and sampler). On construction texture unit 0 is
+// made active (the unit the backend binds with glBindTexture).
 class GlDrawStateGuard {
 public:
     explicit GlDrawStateGuard(const GlFunctions& gl);
@@ -23,6 +24,11 @@ private:
         GLint64 size;
     };
     static constexpr GLuint kUniformBindings = 2; // Frame (0) and Field (1)
+    static constexpr int kSliceUnits = 3;         // units 3, 4, 5 (gl_program.hpp)
+    struct SliceUnit {
+        GLint texture_2d_array;
+        GLint sampler;
+    };
 
     const GlFunctions& gl_;
     GLint program_ = 0;
@@ -33,6 +39,7 @@ private:
     GLint active_texture_ = 0;
     GLint texture_2d_unit0_ = 0;
     GLint sampler_unit0_ = 0;
+    SliceUnit slice_units_[kSliceUnits] = {};
     GLint viewport_[4] = {0, 0, 0, 0};
     GLboolean depth_test_ = GL_FALSE;
     GLint depth_func_ = GL_LESS;

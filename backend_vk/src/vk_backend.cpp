@@ -11,6 +11,9 @@ namespace {
 constexpr VkBufferUsageFlags kVertexUsage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 constexpr VkBufferUsageFlags kIndexUsage = VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 constexpr VkImageUsageFlags kDensityUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+constexpr VkImageUsageFlags kSliceUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+// Texel sizes of the slice images (colour and normal RGBA8, threshold R16).
+constexpr uint32_t kSliceColorBytes = 4, kSliceNormalBytes = 4, kSliceThresholdBytes = 2;
 
 PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d) {
     PipelineTarget t;
@@ -23,25 +26,52 @@ PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d)
     return t;
 }
 
+// The staging layout of one slice image: its levels of each layer, layer after layer, each
+// starting on a multiple of 4 bytes (vkCmdCopyBufferToImage's bufferOffset rule). Returns
+// the offset after the image's last texel; calls visit(layer, level, offset, w, h) per region.
+template <typename Visit>
+VkDeviceSize slice_staging_layout(const Image& image, uint32_t texel_bytes, VkDeviceSize offset, Visit&& visit) {
+    for (uint32_t layer = 0; layer < image.layers; ++layer) {
+        for (uint32_t level = 0; level < image.levels; ++level) {
+            const uint32_t w = image.width >> level ? image.width >> level : 1;
+            const uint32_t h = image.height >> level ? image.height >> level : 1;
+            offset = (offset + 3) & ~VkDeviceSize(3);
+            visit(layer, level, offset, w, h);
+            offset += VkDeviceSize(w) * h * texel_bytes;
+        }
+    }
+    return offset;
+}
+
+const char* tier_kind_name(grass_tier_kind kind) {
+    return kind == GRASS_TIER_VOLUME ? "volume" : kind == GRASS_TIER_IMAGE ? "image" : "geometry";
+}
+
 } // namespace
 
 VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const Device& device)
     : ctx_(context), desc_(vk_desc), device_(device), fn_(device_.fn),
       memory_(fn_, device_.device, device_.memory, device_.properties.limits.nonCoherentAtomSize),
-      descriptors_(fn_, device_.device, &context->host),
+      descriptors_(fn_, device_.device, &context->host), frame_sets_(fn_, device_.device, &context->host),
       deferred_(memory_, descriptors_, &context->host, vk_desc.frames_in_flight), pipeline_(fn_, device_.device),
-      debug_view_(fn_, device_.device),
-      ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment),
+      debug_view_(fn_, device_.device), slice_pipelines_(fn_, device_.device),
+      ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment,
+            vk_desc.sample_count > 1),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
-      fields_(StlAllocator<FieldGpu>(&context->host)) {}
+      fields_(StlAllocator<FieldGpu>(&context->host)), slices_(StlAllocator<SliceGpu>(&context->host)),
+      draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),
+      regions_(StlAllocator<VkBufferImageCopy>(&context->host)) {}
 
 VkBackend::~VkBackend() {
     // The host guarantees the device is idle for grass work: everything goes at once.
     for (PatchGpu& p : patches_) destroy_patch_now(&p);
+    for (SliceGpu& s : slices_) destroy_slices_now(&s);
     for (FieldGpu& f : fields_) destroy_field_now(&f);
     deferred_.collect_all();
     memory_.destroy_buffer(&default_staging_);
     memory_.destroy_image(&default_density_);
+    memory_.destroy_buffer(&default_slices_staging_);
+    memory_.destroy_image(&default_slices_);
     // The frame ring, pipelines and descriptor pools go with their members.
 }
 
@@ -55,6 +85,7 @@ grass_result VkBackend::init(const char* function) {
     const PipelineTarget target = pipeline_target(ctx_, desc_);
     if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
     if (!debug_view_.create(target, pipeline_.layout(), &failure, &what)) return fail(function, what, failure);
+    if (!slice_pipelines_.create(target, pipeline_.layout(), &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);
 
     // The density map of fields without one: a single white texel (density x 1).
@@ -63,6 +94,18 @@ grass_result VkBackend::init(const char* function) {
     if (!stage_image(&default_density_, &default_staging_, MapTexels{&white, 1, 1}, &failure, &what)) {
         return fail(function, "the default density map", failure);
     }
+    pending_uploads_ += 1;
+
+    // Bindings 3-5 of the draws that sample no slices: one transparent texel, no blade.
+    deferred_.promise(1);
+    bool ok = memory_.create_array_image(1, 1, 1, 1, kSliceNormalFormat, kSliceUsage, &default_slices_, &failure) &&
+              memory_.create_buffer(kSliceNormalBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging,
+                                    &default_slices_staging_, &failure);
+    if (ok) {
+        std::memset(default_slices_staging_.mapped, 0, kSliceNormalBytes);
+        ok = memory_.flush(default_slices_staging_, 0, kSliceNormalBytes, &failure);
+    }
+    if (!ok) return fail(function, "the default slice image", failure); // the destructor frees what was made
     pending_uploads_ += 1;
     return GRASS_SUCCESS;
 }
@@ -156,28 +199,196 @@ void VkBackend::release_patch(uint32_t slot) {
     deferred_.retire(&p.vertices, frame_);
     deferred_.retire(&p.indices, frame_);
     p = PatchGpu{};
+    // Its slice sets go with it (swap-remove: no allocation).
+    for (size_t i = 0; i < slices_.size();) {
+        if (slices_[i].patch_slot != slot) {
+            ++i;
+            continue;
+        }
+        release_slices(&slices_[i]);
+        slices_[i] = slices_.back();
+        slices_.pop_back();
+    }
+}
+
+// ---- Baked slices -----------------------------------------------------------------------
+
+VkBackend::SliceGpu* VkBackend::find_slices(uint32_t patch_slot, uint32_t slices_per_axis) {
+    for (SliceGpu& s : slices_) {
+        if (s.patch_slot == patch_slot && s.slices_per_axis == slices_per_axis) return &s;
+    }
+    return nullptr;
+}
+
+const VkBackend::SliceGpu* VkBackend::draw_slices(const TierDraw& d) const {
+    const uint32_t n = d.kind == GRASS_TIER_VOLUME ? d.slices : 0;
+    for (const SliceGpu& s : slices_) {
+        if (s.patch_slot == d.patch_slot && s.slices_per_axis == n) return &s;
+    }
+    return nullptr;
+}
+
+grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
+    const char* function = "grass_create_field"; // slices are baked and uploaded for a field's tiers
+    if (slot >= patches_.size() || !patches_[slot].live) {
+        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
+                          "%s: baked slices (N = %u) for the patch in slot %u, which the Vulkan backend does not hold",
+                          function, set.slices_per_axis, slot);
+    }
+    const uint32_t n = set.slices_per_axis;
+    SliceGpu fresh;
+    fresh.patch_slot = slot;
+    fresh.slices_per_axis = n;
+    const bool empty = set.width == 0 || set.height == 0 || set.layers == 0 || set.mip_levels == 0;
+    const uint64_t texels = empty ? 0 : set.offset(set.layers, 0); // every level of every layer
+    if (set.layers != (n ? 2 * n : 1) && !empty) {
+        return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NONE,
+                          "%s: baked slices of the patch in slot %u have %u layers; N = %u needs %u", function, slot,
+                          set.layers, n, n ? 2 * n : 1);
+    }
+    if (set.color.size() != texels * 4 || set.normal.size() != texels * 4 || set.threshold.size() != texels) {
+        return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NONE,
+                          "%s: baked slices (N = %u) of the patch in slot %u hold %zu colour, %zu normal and %zu "
+                          "threshold values; %u x %u texels, %u levels, %u layers need %llu, %llu and %llu",
+                          function, n, slot, set.color.size(), set.normal.size(), set.threshold.size(), set.width,
+                          set.height, set.mip_levels, set.layers, static_cast<unsigned long long>(texels * 4),
+                          static_cast<unsigned long long>(texels * 4), static_cast<unsigned long long>(texels));
+    }
+    const VkPhysicalDeviceLimits& limits = device_.properties.limits;
+    uint32_t full_chain = 1;
+    while (!empty && ((set.width | set.height) >> full_chain) != 0) ++full_chain;
+    if (!empty && (set.width > limits.maxImageDimension2D || set.height > limits.maxImageDimension2D ||
+                   set.layers > limits.maxImageArrayLayers || set.mip_levels > full_chain)) {
+        return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                          "%s: baked slices of %u x %u texels, %u levels, %u layers exceed what the device \"%s\" "
+                          "holds in a 2D array image (%u texels, %u layers, %u levels at that size)",
+                          function, set.width, set.height, set.mip_levels, set.layers, device_.properties.deviceName,
+                          limits.maxImageDimension2D, limits.maxImageArrayLayers, full_chain);
+    }
+    // Room for the entry before anything is made (may throw).
+    if (!find_slices(slot, n)) slices_.reserve(slices_.size() + 1);
+    if (empty) {
+        if (SliceGpu* old = find_slices(slot, n)) {
+            release_slices(old);
+            *old = fresh;
+        } else {
+            slices_.push_back(fresh);
+        }
+        return GRASS_SUCCESS;
+    }
+
+    deferred_.promise(4); // colour, normal, threshold, staging
+    VkFailure failure;
+    const char* what = "the slice colour image";
+    bool ok = memory_.create_array_image(set.width, set.height, set.layers, set.mip_levels, kSliceColorFormat,
+                                         kSliceUsage, &fresh.color, &failure);
+    if (ok) {
+        what = "the slice normal image";
+        ok = memory_.create_array_image(set.width, set.height, set.layers, set.mip_levels, kSliceNormalFormat,
+                                        kSliceUsage, &fresh.normal, &failure);
+    }
+    if (ok) {
+        what = "the slice threshold image";
+        ok = memory_.create_array_image(set.width, set.height, set.layers, set.mip_levels, kSliceThresholdFormat,
+                                        kSliceUsage, &fresh.threshold, &failure);
+    }
+    const auto no_visit = [](uint32_t, uint32_t, VkDeviceSize, uint32_t, uint32_t) {};
+    VkDeviceSize bytes = slice_staging_layout(fresh.color, kSliceColorBytes, 0, no_visit);
+    bytes = slice_staging_layout(fresh.normal, kSliceNormalBytes, bytes, no_visit);
+    bytes = slice_staging_layout(fresh.threshold, kSliceThresholdBytes, bytes, no_visit);
+    if (ok) {
+        what = "the slice staging buffer";
+        ok = memory_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, &fresh.staging,
+                                   &failure);
+    }
+    if (ok) {
+        // Level k of layer l starts at texel offset(l, k) of each array.
+        auto* staging = static_cast<unsigned char*>(fresh.staging.mapped);
+        const auto copier = [&](const void* source, uint32_t texel_bytes) {
+            return [&, source, texel_bytes](uint32_t layer, uint32_t level, VkDeviceSize offset, uint32_t w,
+                                            uint32_t h) {
+                const uint64_t first = set.offset(layer, level);
+                std::memcpy(staging + offset, static_cast<const unsigned char*>(source) + first * texel_bytes,
+                            size_t(w) * h * texel_bytes);
+            };
+        };
+        VkDeviceSize at = slice_staging_layout(fresh.color, kSliceColorBytes, 0, copier(set.color.data(), 4));
+        at = slice_staging_layout(fresh.normal, kSliceNormalBytes, at, copier(set.normal.data(), 4));
+        slice_staging_layout(fresh.threshold, kSliceThresholdBytes, at, copier(set.threshold.data(), 2));
+        ok = memory_.flush(fresh.staging, 0, bytes, &failure);
+    }
+    if (!ok) {
+        destroy_slices_now(&fresh); // never recorded: no GPU work can use it
+        deferred_.forgo(4);
+        return fail(function, what, failure);
+    }
+    fresh.pending = true;
+    pending_uploads_ += 1;
+    if (SliceGpu* old = find_slices(slot, n)) {
+        release_slices(old); // uploaded again: frames in flight may still sample the old images
+        *old = fresh;
+    } else {
+        slices_.push_back(fresh); // reserved above: cannot throw
+    }
+    return GRASS_SUCCESS;
+}
+
+void VkBackend::destroy_slices_now(SliceGpu* s) {
+    // Context destruction (the device is idle for grass work) or a failed upload.
+    if (s->pending) pending_uploads_ -= 1;
+    memory_.destroy_image(&s->color);
+    memory_.destroy_image(&s->normal);
+    memory_.destroy_image(&s->threshold);
+    memory_.destroy_buffer(&s->staging);
+    *s = SliceGpu{};
+}
+
+void VkBackend::release_slices(SliceGpu* s) {
+    if (s->pending) {
+        // Its copies were never recorded: the staging buffer goes now.
+        memory_.destroy_buffer(&s->staging);
+        deferred_.forgo(1);
+        pending_uploads_ -= 1;
+    }
+    deferred_.retire(&s->color, frame_);
+    deferred_.retire(&s->normal, frame_);
+    deferred_.retire(&s->threshold, frame_);
+    *s = SliceGpu{};
 }
 
 // ---- Fields -----------------------------------------------------------------------------
 
-void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, VkImageView view) {
+void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, VkImageView density, const VkImageView (&slices)[3]) {
     const VkBuffer uniforms = ring_.uniform_buffer(slot);
     const VkDescriptorBufferInfo frame_block{uniforms, 0, sizeof(FrameUniforms)};
     const VkDescriptorBufferInfo field_block{uniforms, 0, sizeof(FieldUniforms)};
-    const VkDescriptorImageInfo density{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet writes[3];
-    for (uint32_t i = 0; i < 3; ++i) {
+    // The samplers are immutable, in the layout.
+    const VkDescriptorImageInfo images[4] = {
+        {VK_NULL_HANDLE, density, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {VK_NULL_HANDLE, slices[0], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {VK_NULL_HANDLE, slices[1], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+        {VK_NULL_HANDLE, slices[2], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+    };
+    VkWriteDescriptorSet writes[kBindingCount];
+    for (uint32_t i = 0; i < kBindingCount; ++i) {
         writes[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = set;
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+        if (i < kBindingDensityMap) {
+            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+        } else {
+            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+            writes[i].pImageInfo = &images[i - kBindingDensityMap];
+        }
     }
     writes[kBindingFrame].pBufferInfo = &frame_block;
     writes[kBindingField].pBufferInfo = &field_block;
-    writes[kBindingDensityMap].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    writes[kBindingDensityMap].pImageInfo = &density; // the sampler is immutable, in the layout
-    fn_.vkUpdateDescriptorSets(device_.device, 3, writes, 0, nullptr);
+    fn_.vkUpdateDescriptorSets(device_.device, kBindingCount, writes, 0, nullptr);
+}
+
+VkImageView VkBackend::density_view(const FieldGpu& f) const {
+    return f.density.image ? f.density.view : default_density_.view;
 }
 
 grass_result VkBackend::upload_field(uint32_t slot, const MapTexels& density) {
@@ -203,8 +414,8 @@ grass_result VkBackend::upload_field(uint32_t slot, const MapTexels& density) {
         deferred_.forgo(promised);
         return fail(function, what, failure);
     }
-    const VkImageView view = has_map ? fresh.density.view : default_density_.view;
-    for (uint32_t i = 0; i < desc_.frames_in_flight; ++i) write_set(fresh.sets[i].set, i, view);
+    const VkImageView none[3] = {default_slices_.view, default_slices_.view, default_slices_.view};
+    for (uint32_t i = 0; i < desc_.frames_in_flight; ++i) write_set(fresh.sets[i].set, i, density_view(fresh), none);
     if (has_map) {
         fresh.pending = true;
         pending_uploads_ += 1;
@@ -242,8 +453,10 @@ void VkBackend::release_field(uint32_t slot) {
 grass_result VkBackend::begin_frame(const FramePlan& plan) {
     frame_ += 1;
     slot_ = static_cast<uint32_t>(frame_ % desc_.frames_in_flight);
-    // Frame frame_ - frames_in_flight has finished: what it was the last to use can go.
+    // Frame frame_ - frames_in_flight has finished: what it was the last to use can go,
+    // and the sets its volume and image draws used.
     deferred_.collect(frame_);
+    frame_sets_.reset(slot_);
 
     bool uniforms_replaced = false;
     VkFailure failure;
@@ -253,8 +466,9 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
     }
     if (uniforms_replaced) {
         // This slot's sets were last used by frame frame_ - frames_in_flight, which is done.
+        const VkImageView none[3] = {default_slices_.view, default_slices_.view, default_slices_.view};
         for (const FieldGpu& f : fields_) {
-            if (f.live) write_set(f.sets[slot_].set, slot_, f.density.image ? f.density.view : default_density_.view);
+            if (f.live) write_set(f.sets[slot_].set, slot_, density_view(f), none);
         }
     }
     return GRASS_SUCCESS;
@@ -266,6 +480,9 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
     // Build the batch first: it may throw std::bad_alloc, and nothing has changed yet.
     batch_.clear();
     if (default_staging_.buffer) batch_.copy_image(default_staging_.buffer, 0, default_density_.image, 1, 1);
+    if (default_slices_staging_.buffer) {
+        batch_.copy_image(default_slices_staging_.buffer, 0, default_slices_.image, 1, 1);
+    }
     for (const PatchGpu& p : patches_) {
         if (!p.pending) continue;
         batch_.copy_buffer(p.staging.buffer, 0, p.vertices.buffer, p.vertices.size, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
@@ -274,10 +491,38 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
     for (const FieldGpu& f : fields_) {
         if (f.pending) batch_.copy_image(f.staging.buffer, 0, f.density.image, f.density.width, f.density.height);
     }
+    for (const SliceGpu& s : slices_) {
+        if (!s.pending) continue;
+        // The staging layout upload_slices filled: colour, normal, then threshold texels.
+        VkDeviceSize at = 0;
+        const struct {
+            const Image* image;
+            uint32_t texel_bytes;
+        } images[3] = {{&s.color, kSliceColorBytes}, {&s.normal, kSliceNormalBytes}, {&s.threshold, kSliceThresholdBytes}};
+        for (const auto& im : images) {
+            regions_.clear();
+            at = slice_staging_layout(*im.image, im.texel_bytes, at,
+                                      [&](uint32_t layer, uint32_t level, VkDeviceSize offset, uint32_t w, uint32_t h) {
+                                          VkBufferImageCopy r{};
+                                          r.bufferOffset = offset;
+                                          r.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, layer, 1};
+                                          r.imageExtent = {w, h, 1};
+                                          regions_.push_back(r);
+                                      });
+            batch_.copy_image_regions(s.staging.buffer, im.image->image, im.image->levels, im.image->layers,
+                                      regions_.data(), static_cast<uint32_t>(regions_.size()));
+        }
+    }
     batch_.record(fn_, cmd);
 
     // The staging buffers wait until this frame's copies have run on the GPU.
     deferred_.retire(&default_staging_, frame_);
+    deferred_.retire(&default_slices_staging_, frame_);
+    for (SliceGpu& s : slices_) {
+        if (!s.pending) continue;
+        deferred_.retire(&s.staging, frame_);
+        s.pending = false;
+    }
     for (PatchGpu& p : patches_) {
         if (!p.pending) continue;
         deferred_.retire(&p.staging, frame_);
@@ -293,17 +538,28 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
 }
 
 bool VkBackend::drawn(const TierDraw& d, bool debug_view) const {
-    // A draw whose field or patch was destroyed after grass_begin_frame is skipped.
+    // A draw whose field or patch was destroyed after grass_begin_frame is skipped, as is
+    // one of an empty patch (no blades: nothing to draw in any tier).
     if (d.instance_count == 0 || d.field_slot >= fields_.size() || !fields_[d.field_slot].live) return false;
     if (debug_view) return true;
-    return d.kind == GRASS_TIER_GEOMETRY && d.patch_slot < patches_.size() && patches_[d.patch_slot].live &&
-           patches_[d.patch_slot].index_count > 0;
+    if (d.kind != GRASS_TIER_GEOMETRY && d.kind != GRASS_TIER_VOLUME && d.kind != GRASS_TIER_IMAGE) return false;
+    if (d.patch_slot >= patches_.size() || !patches_[d.patch_slot].live || patches_[d.patch_slot].index_count == 0) {
+        return false;
+    }
+    if (d.kind == GRASS_TIER_GEOMETRY) return true;
+    // A slice set baked empty has nothing to draw; a missing one is an error (record()).
+    const SliceGpu* s = draw_slices(d);
+    return s == nullptr || s->color.image != VK_NULL_HANDLE;
 }
 
 bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** problem) const {
     const FieldGpu& f = fields_[draw.field_slot];
     if (!debug_view && patches_[draw.patch_slot].pending) {
         *problem = "its patch";
+        return false;
+    }
+    if (!debug_view && draw.kind != GRASS_TIER_GEOMETRY && draw_slices(draw)->pending) {
+        *problem = draw.kind == GRASS_TIER_VOLUME ? "its patch's baked vertical slices" : "its patch's baked horizontal slice";
         return false;
     }
     // The field's descriptor set points at its density map (or the default one).
@@ -315,6 +571,10 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
         *problem = "the default density map";
         return false;
     }
+    if (default_slices_staging_.buffer) {
+        *problem = "the default slice image";
+        return false;
+    }
     return true;
 }
 
@@ -322,9 +582,16 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     const FramePlan& plan = ctx_->plan;
     const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_TIERS) != 0;
     // Refuse before recording anything, so that the command buffer is left untouched.
-    uint32_t draw_count = 0;
+    uint32_t draw_count = 0, slice_draws = 0;
     for (const TierDraw& d : plan.draws) {
         if (!drawn(d, debug_view)) continue;
+        if (!debug_view && d.kind != GRASS_TIER_GEOMETRY && draw_slices(d) == nullptr) {
+            const uint32_t n = d.kind == GRASS_TIER_VOLUME ? d.slices : 0;
+            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
+                              "grass_vk_record: tier %u (%s) of the field in slot %u draws the baked slices with N = %u "
+                              "of the patch in slot %u, which were never uploaded to the Vulkan backend",
+                              d.tier, tier_kind_name(d.kind), d.field_slot, n, d.patch_slot);
+        }
         const char* problem = "";
         if (!draw_ready(d, debug_view, &problem)) {
             return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_UPLOAD_NOT_RECORDED,
@@ -334,8 +601,26 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
                               d.field_slot, problem);
         }
         draw_count += 1;
+        if (!debug_view && d.kind != GRASS_TIER_GEOMETRY) slice_draws += 1;
     }
     if (draw_count == 0) return GRASS_SUCCESS;
+
+    // The volume and image draws pair the field's density map with the patch's slices: a
+    // fresh set each, from this frame slot's pools (never one a frame in flight may use).
+    if (slice_draws > 0) {
+        draw_sets_.assign(plan.draws.size(), VK_NULL_HANDLE); // may throw: nothing recorded yet
+        for (uint32_t i = 0; i < plan.draws.size(); ++i) {
+            const TierDraw& d = plan.draws[i];
+            if (!drawn(d, false) || d.kind == GRASS_TIER_GEOMETRY) continue;
+            VkFailure failure;
+            if (!frame_sets_.allocate(slot_, pipeline_.set_layout(), &draw_sets_[i], &failure)) {
+                return fail("grass_vk_record", "a descriptor set of a volume or image tier", failure);
+            }
+            const SliceGpu* s = draw_slices(d);
+            const VkImageView views[3] = {s->color.view, s->normal.view, s->threshold.view};
+            write_set(draw_sets_[i], slot_, density_view(fields_[d.field_slot]), views);
+        }
+    }
 
     const int32_t x = plan.viewport[0], y = plan.viewport[1], w = plan.viewport[2], h = plan.viewport[3];
     const VkViewport viewport{float(x), float(y), float(w), float(h), 0.0f, 1.0f};
@@ -347,26 +632,42 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     scissor.extent = {static_cast<uint32_t>(x1 > x0 ? x1 - x0 : 0), static_cast<uint32_t>(y1 > y0 ? y1 - y0 : 0)};
 
     const bool depth_test = (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) == 0;
-    const VkPipeline pipeline = debug_view ? debug_view_.pipeline(depth_test) : pipeline_.pipeline(depth_test);
-    fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     fn_.vkCmdSetViewport(cmd, 0, 1, &viewport);
     fn_.vkCmdSetScissor(cmd, 0, 1, &scissor);
 
     const VkBuffer instances = ring_.instance_buffer(slot_);
     const VkDeviceSize zero = 0;
-    if (debug_view) fn_.vkCmdBindVertexBuffers(cmd, DebugViewPipeline::kInstanceBinding, 1, &instances, &zero);
+    const auto bind_set = [&](uint32_t draw, VkDescriptorSet set) {
+        // Every draw has its Field block, whatever its kind.
+        const uint32_t offsets[2] = {ring_.frame_offset(), ring_.field_offset(draw)};
+        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), 0, 1, &set, 2, offsets);
+    };
+
+    if (debug_view) {
+        // Every draw as boxes, in plan order.
+        fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, debug_view_.pipeline(depth_test));
+        fn_.vkCmdBindVertexBuffers(cmd, DebugViewPipeline::kInstanceBinding, 1, &instances, &zero);
+        for (uint32_t i = 0; i < plan.draws.size(); ++i) {
+            const TierDraw& d = plan.draws[i];
+            if (!drawn(d, true)) continue;
+            bind_set(i, fields_[d.field_slot].sets[slot_].set);
+            fn_.vkCmdDraw(cmd, DebugViewPipeline::kVerticesPerBox, d.instance_count, 0, d.first_instance);
+        }
+        return GRASS_SUCCESS;
+    }
+
+    // Blades first (they fill the depth buffer near the camera), then the volumes, then
+    // the images on the ground far away.
+    bool bound = false;
     uint32_t bound_patch = UINT32_MAX;
     for (uint32_t i = 0; i < plan.draws.size(); ++i) {
         const TierDraw& d = plan.draws[i];
-        if (!drawn(d, debug_view)) continue;
-        // Every draw has its Field block, whatever its kind.
-        const uint32_t offsets[2] = {ring_.frame_offset(), ring_.field_offset(i)};
-        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), 0, 1,
-                                    &fields_[d.field_slot].sets[slot_].set, 2, offsets);
-        if (debug_view) {
-            fn_.vkCmdDraw(cmd, DebugViewPipeline::kVerticesPerBox, d.instance_count, 0, d.first_instance);
-            continue;
+        if (d.kind != GRASS_TIER_GEOMETRY || !drawn(d, false)) continue;
+        if (!bound) {
+            fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.pipeline(depth_test));
+            bound = true;
         }
+        bind_set(i, fields_[d.field_slot].sets[slot_].set);
         const PatchGpu& p = patches_[d.patch_slot];
         if (bound_patch != d.patch_slot) {
             const VkBuffer buffers[2] = {p.vertices.buffer, instances};
@@ -376,6 +677,29 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
             bound_patch = d.patch_slot;
         }
         fn_.vkCmdDrawIndexed(cmd, p.index_count, d.instance_count, 0, 0, d.first_instance);
+    }
+    if (slice_draws == 0) return GRASS_SUCCESS;
+    const struct {
+        grass_tier_kind kind;
+        VkPipeline pipeline;
+        uint32_t vertices;
+    } passes[2] = {
+        {GRASS_TIER_VOLUME, slice_pipelines_.volume(depth_test), SlicePipelines::kVerticesPerVolume},
+        {GRASS_TIER_IMAGE, slice_pipelines_.image(depth_test), SlicePipelines::kVerticesPerImage},
+    };
+    for (const auto& pass : passes) {
+        bound = false;
+        for (uint32_t i = 0; i < plan.draws.size(); ++i) {
+            const TierDraw& d = plan.draws[i];
+            if (d.kind != pass.kind || !draw_sets_[i]) continue;
+            if (!bound) {
+                fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
+                fn_.vkCmdBindVertexBuffers(cmd, SlicePipelines::kInstanceBinding, 1, &instances, &zero);
+                bound = true;
+            }
+            bind_set(i, draw_sets_[i]);
+            fn_.vkCmdDraw(cmd, pass.vertices, d.instance_count, 0, d.first_instance);
+        }
     }
     return GRASS_SUCCESS;
 }

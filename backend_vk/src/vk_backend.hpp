@@ -1,5 +1,6 @@
-// The Vulkan backend of a context: owns the patch buffers, density images, descriptor
-// sets, per-frame buffers and pipelines, and records into the host's command buffers.
+// The Vulkan backend of a context: owns the patch buffers, baked slice images, density
+// images, descriptor sets, per-frame buffers and pipelines, and records into the host's
+// command buffers.
 // It never submits, waits on a queue, or begins a render pass.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include "vk_frame_ring.hpp"
 #include "vk_memory.hpp"
 #include "vk_pipeline.hpp"
+#include "vk_slice_pipelines.hpp"
 #include "vk_uploads.hpp"
 
 #include <grass/grass_vk.h>
@@ -32,6 +34,7 @@ public:
 
     grass_backend kind() const override { return GRASS_BACKEND_VULKAN; }
     grass_result upload_patch(uint32_t slot, const PatchData& patch) override;
+    grass_result upload_slices(uint32_t slot, const SliceSet& set) override;
     void release_patch(uint32_t slot) override;
     grass_result upload_field(uint32_t slot, const MapTexels& density) override;
     void release_field(uint32_t slot) override;
@@ -53,6 +56,19 @@ private:
         Buffer staging;
         uint32_t index_count = 0;
     };
+    // A baked slice set of a patch on the GPU (api/src/baked_slices.hpp): three device-local
+    // 2D array images with full mip chains, and until the upload is recorded, the staging
+    // buffer holding colour, normal then threshold texels (see slice_staging_layout()).
+    // No images: an empty set, nothing to draw.
+    struct SliceGpu {
+        uint32_t patch_slot = 0;
+        uint32_t slices_per_axis = 0; // N; 0 = the horizontal slice
+        bool pending = false;
+        Image color;
+        Image normal;
+        Image threshold;
+        Buffer staging;
+    };
     // A field on the GPU: its density map (none: the default white texel is bound) and one
     // descriptor set per frame in flight (each points at its slot's uniform buffer).
     struct FieldGpu {
@@ -64,17 +80,26 @@ private:
     };
 
     grass_result fail(const char* function, const char* what, const VkFailure& failure);
-    // Points binding 0 and 1 of `set` at slot `slot`'s uniform buffer, and binding 2 at `view`.
-    void write_set(VkDescriptorSet set, uint32_t slot, VkImageView view);
+    // Points binding 0 and 1 of `set` at slot `slot`'s uniform buffer, binding 2 at the
+    // density map `density`, and bindings 3-5 at `slices` (colour, normal, threshold).
+    void write_set(VkDescriptorSet set, uint32_t slot, VkImageView density, const VkImageView (&slices)[3]);
+    // Binding 2 of a field's sets: its density map or the default one.
+    VkImageView density_view(const FieldGpu& field) const;
     // Creates a density image and a staging buffer holding `texels` for it.
     bool stage_image(Image* image, Buffer* staging, const MapTexels& texels, VkFailure* failure, const char** what);
-    // Whether record() draws `draw`: normal frames draw the geometry tiers with their patch
-    // (volume and image tiers: not yet), the debug view every draw of a live field.
+    // Whether record() draws `draw`: normal frames draw every tier of a live field with a
+    // live, non-empty patch, the debug view every draw of a live field.
     bool drawn(const TierDraw& draw, bool debug_view) const;
+    // The slice set a volume or image draw samples (nullptr: never uploaded).
+    const SliceGpu* draw_slices(const TierDraw& draw) const;
+    SliceGpu* find_slices(uint32_t patch_slot, uint32_t slices_per_axis);
     // False when the draw reads data whose upload prepare_frame has not recorded yet;
     // *problem names it. The debug view reads no patch.
     bool draw_ready(const TierDraw& draw, bool debug_view, const char** problem) const;
     void destroy_patch_now(PatchGpu* patch);
+    void destroy_slices_now(SliceGpu* slices);
+    // Retires the images of `slices` (frames in flight may sample them) and drops its staging.
+    void release_slices(SliceGpu* slices);
     void destroy_field_now(FieldGpu* field);
 
     grass_context* ctx_;
@@ -83,16 +108,23 @@ private:
     const Functions& fn_;
     Memory memory_;
     DescriptorAllocator descriptors_;
+    FrameDescriptors frame_sets_;  // the volume and image draws' sets, written per frame
     DeferredDeletion deferred_;
     BladePipeline pipeline_;
     DebugViewPipeline debug_view_; // after pipeline_: goes before the layout it uses
+    SlicePipelines slice_pipelines_; // likewise
     FrameRing ring_;
     UploadBatch batch_;
     Vector<PatchGpu> patches_;
     Vector<FieldGpu> fields_;
+    Vector<SliceGpu> slices_;      // every patch's slice sets, in no order
+    Vector<VkDescriptorSet> draw_sets_; // record(): the set of each volume and image draw
+    Vector<VkBufferImageCopy> regions_; // prepare_frame(): scratch for slice copies
     Image default_density_;      // 1x1 white: bound for fields without a density map
     Buffer default_staging_;
-    uint32_t pending_uploads_ = 0; // patches, fields and the default map not yet recorded
+    Image default_slices_;       // 1x1, one layer, zero: bindings 3-5 of draws without slices
+    Buffer default_slices_staging_;
+    uint32_t pending_uploads_ = 0; // patches, slice sets, fields and the default images not yet recorded
     uint64_t frame_ = 0;           // frames begun; the current one while in a frame
     uint32_t slot_ = 0;            // frame_ % frames_in_flight
 };

@@ -4,6 +4,21 @@ namespace grass::vk {
 
 namespace {
 constexpr uint32_t kSetsPerPool = 64;
+constexpr uint32_t kFrameSetsPerPool = 32;
+
+VkResult create_pool(const Functions& fn, VkDevice device, uint32_t sets, VkDescriptorPoolCreateFlags flags,
+                     VkDescriptorPool* out) {
+    const VkDescriptorPoolSize sizes[] = {
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kUniformBuffersPerSet * sets},
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kImageSamplersPerSet * sets},
+    };
+    VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    info.flags = flags;
+    info.maxSets = sets;
+    info.poolSizeCount = 2;
+    info.pPoolSizes = sizes;
+    return fn.vkCreateDescriptorPool(device, &info, nullptr, out);
+}
 } // namespace
 
 DescriptorAllocator::~DescriptorAllocator() {
@@ -12,18 +27,10 @@ DescriptorAllocator::~DescriptorAllocator() {
 }
 
 bool DescriptorAllocator::add_pool(VkFailure* failure) {
-    const VkDescriptorPoolSize sizes[] = {
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 2 * kSetsPerPool},
-        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kSetsPerPool},
-    };
-    VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    info.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
-    info.maxSets = kSetsPerPool;
-    info.poolSizeCount = 2;
-    info.pPoolSizes = sizes;
     pools_.reserve(pools_.size() + 1); // push_back below cannot throw with a live pool in hand
     VkDescriptorPool pool = VK_NULL_HANDLE;
-    if (!vk_ok(fn_.vkCreateDescriptorPool(device_, &info, nullptr, &pool), "vkCreateDescriptorPool", failure)) {
+    if (!vk_ok(create_pool(fn_, device_, kSetsPerPool, VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT, &pool),
+               "vkCreateDescriptorPool", failure)) {
         return false;
     }
     pools_.push_back(Pool{pool, 0});
@@ -63,6 +70,55 @@ void DescriptorAllocator::free(DescriptorSet* set) {
         }
     }
     *set = DescriptorSet{};
+}
+
+// ---- FrameDescriptors -----------------------------------------------------------------------
+
+FrameDescriptors::FrameDescriptors(const Functions& functions, VkDevice device, HostAllocator* host)
+    : fn_(functions), device_(device),
+      slots_{Slot(host), Slot(host), Slot(host), Slot(host), Slot(host), Slot(host), Slot(host), Slot(host)} {
+    static_assert(kMaxFramesInFlight == 8, "one initialiser per frame slot");
+}
+
+FrameDescriptors::~FrameDescriptors() {
+    for (const Slot& s : slots_) {
+        for (VkDescriptorPool p : s.pools) fn_.vkDestroyDescriptorPool(device_, p, nullptr);
+    }
+}
+
+void FrameDescriptors::reset(uint32_t slot) {
+    Slot& s = slots_[slot];
+    // Only the pools that handed out sets since the last reset need it.
+    for (uint32_t i = 0; i < s.pools.size() && (i < s.current || (i == s.current && s.used > 0)); ++i) {
+        fn_.vkResetDescriptorPool(device_, s.pools[i], 0);
+    }
+    s.current = 0;
+    s.used = 0;
+}
+
+bool FrameDescriptors::allocate(uint32_t slot, VkDescriptorSetLayout layout, VkDescriptorSet* out,
+                                VkFailure* failure) {
+    Slot& s = slots_[slot];
+    if (s.current < s.pools.size() && s.used == kFrameSetsPerPool) {
+        s.current += 1;
+        s.used = 0;
+    }
+    if (s.current == s.pools.size()) {
+        s.pools.reserve(s.pools.size() + 1); // may throw: nothing made yet
+        VkDescriptorPool pool = VK_NULL_HANDLE;
+        if (!vk_ok(create_pool(fn_, device_, kFrameSetsPerPool, 0, &pool), "vkCreateDescriptorPool", failure)) {
+            return false;
+        }
+        s.pools.push_back(pool);
+        s.used = 0;
+    }
+    VkDescriptorSetAllocateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    info.descriptorPool = s.pools[s.current];
+    info.descriptorSetCount = 1;
+    info.pSetLayouts = &layout;
+    if (!vk_ok(fn_.vkAllocateDescriptorSets(device_, &info, out), "vkAllocateDescriptorSets", failure)) return false;
+    s.used += 1;
+    return true;
 }
 
 } // namespace grass::vk

@@ -1,13 +1,22 @@
 // Descriptor sets of the backend, from pools it owns. Every set has the blade layout, so
-// a pool's room is counted in sets: a set comes from the first pool with room, a new pool
-// is added when all are full, and sets are freed one by one (FREE_DESCRIPTOR_SET).
+// a pool's room is counted in sets. DescriptorAllocator: long-lived sets (one per field and
+// frame in flight); a set comes from the first pool with room, a new pool is added when all
+// are full, and sets are freed one by one (FREE_DESCRIPTOR_SET). FrameDescriptors: sets
+// written for one frame only (the volume and image draws, which pair a field's density map
+// with a patch's slices), from per-frame pools reset when their frame slot comes round.
 #pragma once
 
 #include "allocator.hpp"
+#include "vk_desc_check.hpp"
 #include "vk_functions.hpp"
 #include "vk_result.hpp"
 
 namespace grass::vk {
+
+// What one set of the blade layout holds: the Frame and Field blocks (dynamic uniform
+// buffers) and four combined image samplers (density map, slice colour, normal, threshold).
+constexpr uint32_t kUniformBuffersPerSet = 2;
+constexpr uint32_t kImageSamplersPerSet = 4;
 
 // A set and the pool it came from (needed to free it).
 struct DescriptorSet {
@@ -23,8 +32,8 @@ public:
     DescriptorAllocator(const DescriptorAllocator&) = delete;
     DescriptorAllocator& operator=(const DescriptorAllocator&) = delete;
 
-    // A set of `layout`, which must be the blade layout (two dynamic uniform buffers and
-    // one combined image sampler): the pools are sized for it.
+    // A set of `layout`, which must be the blade layout (kUniformBuffersPerSet dynamic
+    // uniform buffers, kImageSamplersPerSet combined image samplers): pools are sized for it.
     bool allocate(VkDescriptorSetLayout layout, DescriptorSet* out, VkFailure* failure);
     // The set must not be in use by a pending command buffer. Empty sets are ignored.
     void free(DescriptorSet* set);
@@ -39,6 +48,32 @@ private:
     const Functions& fn_;
     VkDevice device_;
     Vector<Pool> pools_;
+};
+
+class FrameDescriptors {
+public:
+    FrameDescriptors(const Functions& functions, VkDevice device, HostAllocator* host);
+    ~FrameDescriptors();
+    FrameDescriptors(const FrameDescriptors&) = delete;
+    FrameDescriptors& operator=(const FrameDescriptors&) = delete;
+
+    // Frame slot `slot` begins: its frame of frames_in_flight ago has finished, so every
+    // set allocated for it can go (the pools are reset, not destroyed).
+    void reset(uint32_t slot);
+    // A set of the blade layout `layout` that lives until slot `slot` is reset. May throw
+    // std::bad_alloc (before any Vulkan object is made).
+    bool allocate(uint32_t slot, VkDescriptorSetLayout layout, VkDescriptorSet* out, VkFailure* failure);
+
+private:
+    struct Slot {
+        explicit Slot(HostAllocator* host) : pools(StlAllocator<VkDescriptorPool>(host)) {}
+        Vector<VkDescriptorPool> pools;
+        uint32_t current = 0;     // the pool sets come from
+        uint32_t used = 0;        // sets taken from pools[current]
+    };
+    const Functions& fn_;
+    VkDevice device_;
+    Slot slots_[kMaxFramesInFlight];
 };
 
 } // namespace grass::vk

@@ -108,6 +108,29 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
         return unsupported(ctx, function, d,
                            "cannot sample VK_FORMAT_R16_UNORM images with linear filtering, which density maps need");
     }
+
+    // The baked slices of the volume and image tiers.
+    const struct {
+        VkFormat format;
+        bool linear;
+        const char* what;
+    } slice_formats[] = {
+        {kSliceColorFormat, true,
+         "cannot sample VK_FORMAT_R8G8B8A8_SRGB images with linear filtering, which the baked slice colours of the "
+         "volume and image tiers need"},
+        {kSliceNormalFormat, true,
+         "cannot sample VK_FORMAT_R8G8B8A8_UNORM images with linear filtering, which the baked slice normals of the "
+         "volume and image tiers need"},
+        {kSliceThresholdFormat, false,
+         "cannot sample VK_FORMAT_R16_UNORM images, which the baked slice thresholds of the volume and image tiers "
+         "need"},
+    };
+    for (const auto& f : slice_formats) {
+        d.fn.vkGetPhysicalDeviceFormatProperties(d.physical_device, f.format, &format);
+        VkFormatFeatureFlags wanted = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+        if (f.linear) wanted |= VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+        if ((format.optimalTilingFeatures & wanted) != wanted) return unsupported(ctx, function, d, f.what);
+    }
     return GRASS_SUCCESS;
 }
 

@@ -21,10 +21,15 @@ struct Device {
 
 // The format of density maps: 16-bit unorm, sampled with linear filtering.
 constexpr VkFormat kDensityMapFormat = VK_FORMAT_R16_UNORM;
+// The formats of the baked slices (api/src/baked_slices.hpp): sRGB albedo + coverage and
+// normal + height trilinear, thresholds nearest.
+constexpr VkFormat kSliceColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
+constexpr VkFormat kSliceNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kSliceThresholdFormat = VK_FORMAT_R16_UNORM;
 
 // Loads the functions and checks the device: Vulkan 1.1, dynamic rendering when
 // vk_desc->render_pass is 0, a graphics queue family, the sample count, the density map
-// format. Logs and returns GRASS_ERROR_UNSUPPORTED (or GRASS_ERROR_BACKEND when the
+// and slice formats. Logs and returns GRASS_ERROR_UNSUPPORTED (or GRASS_ERROR_BACKEND when the
 // loader lacks a function). `vk_desc` has passed check_vk_desc().
 grass_result load_device(grass_context* context, const char* function, const grass_vk_desc& vk_desc, Device* out);
 

@@ -16,7 +16,10 @@ namespace grass::vk {
 
 class FrameRing {
 public:
-    FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight, VkDeviceSize uniform_alignment);
+    // `multisampled`: the target has more than one sample; the Frame block says so
+    // (FrameUniforms::params[3], which the core leaves 0).
+    FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight, VkDeviceSize uniform_alignment,
+              bool multisampled);
     ~FrameRing();
     FrameRing(const FrameRing&) = delete;
     FrameRing& operator=(const FrameRing&) = delete;
@@ -54,6 +57,7 @@ private:
     Memory& memory_;
     DeferredDeletion& deferred_;
     uint32_t frames_in_flight_;
+    bool multisampled_;
     VkDeviceSize frame_stride_;
     VkDeviceSize field_stride_;
     Slot slots_[kMaxFramesInFlight];

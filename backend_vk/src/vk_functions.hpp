@@ -50,6 +50,7 @@ namespace grass::vk {
     X(vkDestroyDescriptorPool)          \
     X(vkAllocateDescriptorSets)         \
     X(vkFreeDescriptorSets)             \
+    X(vkResetDescriptorPool)            \
     X(vkUpdateDescriptorSets)           \
     X(vkCmdPipelineBarrier)             \
     X(vkCmdCopyBuffer)                  \

@@ -119,15 +119,27 @@ void Memory::destroy_buffer(Buffer* b) {
 
 bool Memory::create_image(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage, Image* out,
                           VkFailure* failure) {
+    return make_image(width, height, 1, 1, VK_IMAGE_VIEW_TYPE_2D, format, usage, out, failure);
+}
+
+bool Memory::create_array_image(uint32_t width, uint32_t height, uint32_t layers, uint32_t levels, VkFormat format,
+                                VkImageUsageFlags usage, Image* out, VkFailure* failure) {
+    return make_image(width, height, layers, levels, VK_IMAGE_VIEW_TYPE_2D_ARRAY, format, usage, out, failure);
+}
+
+bool Memory::make_image(uint32_t width, uint32_t height, uint32_t layers, uint32_t levels, VkImageViewType view_type,
+                        VkFormat format, VkImageUsageFlags usage, Image* out, VkFailure* failure) {
     Image im;
     im.width = width;
     im.height = height;
+    im.layers = layers;
+    im.levels = levels;
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = VK_IMAGE_TYPE_2D;
     info.format = format;
     info.extent = {width, height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
+    info.mipLevels = levels;
+    info.arrayLayers = layers;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
@@ -147,9 +159,9 @@ bool Memory::create_image(uint32_t width, uint32_t height, VkFormat format, VkIm
     if (ok) {
         VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         view.image = im.image;
-        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.viewType = view_type;
         view.format = format;
-        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
         ok = vk_ok(fn_.vkCreateImageView(device_, &view, nullptr, &im.view), "vkCreateImageView", failure);
     }
     if (!ok) {

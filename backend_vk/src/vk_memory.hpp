@@ -1,4 +1,4 @@
-// GPU memory of the backend: buffers and 2D images, each with its own vkAllocateMemory
+// GPU memory of the backend: buffers, 2D images and 2D array images, each with its own vkAllocateMemory
 // (grass holds a handful of resources per patch and field, far below any allocation
 // limit), on the memory type that suits its use. Counts the bytes it holds.
 #pragma once
@@ -33,6 +33,8 @@ struct Image {
     VkDeviceSize allocated = 0;
     uint32_t width = 0;
     uint32_t height = 0;
+    uint32_t layers = 1;
+    uint32_t levels = 1;
 };
 
 class Memory {
@@ -50,6 +52,10 @@ public:
     // A device-local, optimally tiled, single-mip 2D image with a colour view.
     bool create_image(uint32_t width, uint32_t height, VkFormat format, VkImageUsageFlags usage, Image* out,
                       VkFailure* failure);
+    // A device-local, optimally tiled 2D array image of `layers` layers and `levels` mip
+    // levels, with a 2D array colour view of all of them.
+    bool create_array_image(uint32_t width, uint32_t height, uint32_t layers, uint32_t levels, VkFormat format,
+                            VkImageUsageFlags usage, Image* out, VkFailure* failure);
     void destroy_image(Image* image);
 
     // Makes CPU writes to [offset, offset + size) of a mapped buffer visible to the device
@@ -59,6 +65,8 @@ public:
     uint64_t bytes() const { return bytes_; }
 
 private:
+    bool make_image(uint32_t width, uint32_t height, uint32_t layers, uint32_t levels, VkImageViewType view_type,
+                    VkFormat format, VkImageUsageFlags usage, Image* out, VkFailure* failure);
     // Allocates `requirements` on the best memory type for `use`, falling back to the
     // next suitable type when a heap is full.
     bool allocate(const VkMemoryRequirements& requirements, MemoryUse use, VkDeviceMemory* out,

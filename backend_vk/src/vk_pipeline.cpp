@@ -57,6 +57,9 @@ void BladePipeline::destroy() {
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, nullptr);
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
     if (sampler_) fn_.vkDestroySampler(device_, sampler_, nullptr);
+    if (slice_linear_) fn_.vkDestroySampler(device_, slice_linear_, nullptr);
+    if (slice_nearest_) fn_.vkDestroySampler(device_, slice_nearest_, nullptr);
+    slice_linear_ = slice_nearest_ = VK_NULL_HANDLE;
     depth_tested_ = depth_off_ = VK_NULL_HANDLE;
     layout_ = VK_NULL_HANDLE;
     set_layout_ = VK_NULL_HANDLE;
@@ -77,14 +80,33 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
     *what = "the density map sampler";
     if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, nullptr, &sampler_), "vkCreateSampler", failure)) return false;
 
+    // Baked slices: colour and normal trilinear over the whole mip chain; thresholds are
+    // never blended (a blend of two blades' thresholds is no blade's), nearest texel and mip.
+    sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
+    sampler.maxLod = VK_LOD_CLAMP_NONE;
+    *what = "the slice sampler";
+    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, nullptr, &slice_linear_), "vkCreateSampler", failure)) {
+        return false;
+    }
+    sampler.magFilter = VK_FILTER_NEAREST;
+    sampler.minFilter = VK_FILTER_NEAREST;
+    sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    *what = "the slice threshold sampler";
+    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, nullptr, &slice_nearest_), "vkCreateSampler", failure)) {
+        return false;
+    }
+
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-    const VkDescriptorSetLayoutBinding bindings[] = {
+    const VkDescriptorSetLayoutBinding bindings[kBindingCount] = {
         {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, stages, nullptr},
         {kBindingField, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, stages, nullptr},
         {kBindingDensityMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
+        {kBindingSliceColor, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_linear_},
+        {kBindingSliceNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_linear_},
+        {kBindingSliceThreshold, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
     };
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = 3;
+    set_info.bindingCount = kBindingCount;
     set_info.pBindings = bindings;
     *what = "the blade descriptor set layout";
     if (!vk_ok(fn_.vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_),

@@ -1,6 +1,7 @@
 // The blade pipeline: descriptor set layout (Frame and Field uniform blocks as dynamic
-// uniform buffers, the density map with an immutable linear clamp sampler), pipeline
-// layout, and two graphics pipelines, with and without the depth test; and the state
+// uniform buffers, the density map with an immutable linear clamp sampler, the baked
+// slices of the volume and image tiers with immutable trilinear / nearest samplers),
+// pipeline layout, and two graphics pipelines, with and without the depth test; and the state
 // every pipeline of the backend shares (create_pipeline_pair).
 #pragma once
 
@@ -13,7 +14,15 @@
 namespace grass::vk {
 
 // Binding numbers of blade_interface.glsl, descriptor set 0.
-enum BladeBinding : uint32_t { kBindingFrame = 0, kBindingField = 1, kBindingDensityMap = 2 };
+enum BladeBinding : uint32_t {
+    kBindingFrame = 0,
+    kBindingField = 1,
+    kBindingDensityMap = 2,
+    kBindingSliceColor = 3,
+    kBindingSliceNormal = 4,
+    kBindingSliceThreshold = 5,
+    kBindingCount = 6
+};
 
 struct PipelineTarget {
     VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats
@@ -63,7 +72,9 @@ private:
 
     const Functions& fn_;
     VkDevice device_;
-    VkSampler sampler_ = VK_NULL_HANDLE;
+    VkSampler sampler_ = VK_NULL_HANDLE;         // density maps: bilinear, one mip
+    VkSampler slice_linear_ = VK_NULL_HANDLE;    // slice colour and normal: trilinear
+    VkSampler slice_nearest_ = VK_NULL_HANDLE;   // slice thresholds: never blended
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline depth_tested_ = VK_NULL_HANDLE;

@@ -4,8 +4,8 @@ namespace grass::vk {
 
 namespace {
 
-VkImageMemoryBarrier image_barrier(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags src_access,
-                                   VkAccessFlags dst_access) {
+VkImageMemoryBarrier image_barrier(VkImage image, uint32_t levels, uint32_t layers, VkImageLayout from,
+                                   VkImageLayout to, VkAccessFlags src_access, VkAccessFlags dst_access) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.srcAccessMask = src_access;
     b.dstAccessMask = dst_access;
@@ -14,7 +14,7 @@ VkImageMemoryBarrier image_barrier(VkImage image, VkImageLayout from, VkImageLay
     b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.image = image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
     return b;
 }
 
@@ -27,21 +27,33 @@ void UploadBatch::copy_buffer(VkBuffer src, VkDeviceSize src_offset, VkBuffer ds
 }
 
 void UploadBatch::copy_image(VkBuffer src, VkDeviceSize src_offset, VkImage dst, uint32_t width, uint32_t height) {
-    image_copies_.push_back(ImageCopy{src, src_offset, dst, width, height});
+    VkBufferImageCopy region{};
+    region.bufferOffset = src_offset;
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {width, height, 1};
+    copy_image_regions(src, dst, 1, 1, &region, 1);
+}
+
+void UploadBatch::copy_image_regions(VkBuffer src, VkImage dst, uint32_t levels, uint32_t layers,
+                                     const VkBufferImageCopy* regions, uint32_t region_count) {
+    const uint32_t first = static_cast<uint32_t>(regions_.size());
+    regions_.insert(regions_.end(), regions, regions + region_count);
+    image_copies_.push_back(ImageCopy{src, dst, levels, layers, first, region_count});
     image_barriers_.reserve(image_copies_.size());
 }
 
 void UploadBatch::clear() {
     buffer_copies_.clear();
     image_copies_.clear();
+    regions_.clear();
 }
 
 void UploadBatch::record(const Functions& fn, VkCommandBuffer cmd) {
     // The barrier vectors were reserved by the adds: no allocation below.
     image_barriers_.clear();
     for (const ImageCopy& c : image_copies_) {
-        image_barriers_.push_back(image_barrier(c.dst, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                                                VK_ACCESS_TRANSFER_WRITE_BIT));
+        image_barriers_.push_back(image_barrier(c.dst, c.levels, c.layers, VK_IMAGE_LAYOUT_UNDEFINED,
+                                                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0, VK_ACCESS_TRANSFER_WRITE_BIT));
     }
     if (!image_barriers_.empty()) {
         fn.vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
@@ -53,15 +65,12 @@ void UploadBatch::record(const Functions& fn, VkCommandBuffer cmd) {
         fn.vkCmdCopyBuffer(cmd, c.src, c.dst, 1, &region);
     }
     for (const ImageCopy& c : image_copies_) {
-        VkBufferImageCopy region{};
-        region.bufferOffset = c.src_offset;
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {c.width, c.height, 1};
-        fn.vkCmdCopyBufferToImage(cmd, c.src, c.dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        fn.vkCmdCopyBufferToImage(cmd, c.src, c.dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, c.region_count,
+                                  regions_.data() + c.first_region);
     }
 
     // Transfer writes -> vertex input (patch buffers) and shader reads (density maps are
-    // sampled in the vertex shader).
+    // sampled in the vertex shader, slices in the fragment shader).
     buffer_barriers_.clear();
     for (const BufferCopy& c : buffer_copies_) {
         VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
@@ -76,7 +85,7 @@ void UploadBatch::record(const Functions& fn, VkCommandBuffer cmd) {
     }
     image_barriers_.clear();
     for (const ImageCopy& c : image_copies_) {
-        image_barriers_.push_back(image_barrier(c.dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+        image_barriers_.push_back(image_barrier(c.dst, c.levels, c.layers, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
                                                 VK_ACCESS_SHADER_READ_BIT));
     }

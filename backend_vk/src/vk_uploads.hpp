@@ -1,6 +1,7 @@
 // One batch of uploads recorded by grass_vk_prepare_frame: staging-buffer copies into
-// device-local vertex/index buffers and density images, with the barriers around them
-// (image layouts UNDEFINED -> TRANSFER_DST -> SHADER_READ_ONLY; transfer writes made
+// device-local vertex/index buffers, density images and slice array images, with the
+// barriers around them (image layouts UNDEFINED -> TRANSFER_DST -> SHADER_READ_ONLY, every
+// level and layer; transfer writes made
 // visible to vertex input and shader reads). Recorded outside any render pass.
 #pragma once
 
@@ -13,6 +14,7 @@ class UploadBatch {
 public:
     explicit UploadBatch(HostAllocator* host)
         : buffer_copies_(StlAllocator<BufferCopy>(host)), image_copies_(StlAllocator<ImageCopy>(host)),
+          regions_(StlAllocator<VkBufferImageCopy>(host)),
           buffer_barriers_(StlAllocator<VkBufferMemoryBarrier>(host)),
           image_barriers_(StlAllocator<VkImageMemoryBarrier>(host)) {}
 
@@ -21,6 +23,10 @@ public:
     void copy_buffer(VkBuffer src, VkDeviceSize src_offset, VkBuffer dst, VkDeviceSize size, VkAccessFlags dst_access);
     // A whole single-mip colour image, tightly packed in `src` from `src_offset`.
     void copy_image(VkBuffer src, VkDeviceSize src_offset, VkImage dst, uint32_t width, uint32_t height);
+    // A colour image of `levels` mips and `layers` layers, filled by `region_count` regions
+    // (which together must cover every level of every layer).
+    void copy_image_regions(VkBuffer src, VkImage dst, uint32_t levels, uint32_t layers,
+                            const VkBufferImageCopy* regions, uint32_t region_count);
 
     bool empty() const { return buffer_copies_.empty() && image_copies_.empty(); }
     // Records the batch into `cmd` and empties it (capacity is kept for the next frame).
@@ -35,12 +41,13 @@ private:
     };
     struct ImageCopy {
         VkBuffer src;
-        VkDeviceSize src_offset;
         VkImage dst;
-        uint32_t width, height;
+        uint32_t levels, layers;
+        uint32_t first_region, region_count; // in regions_
     };
     Vector<BufferCopy> buffer_copies_;
     Vector<ImageCopy> image_copies_;
+    Vector<VkBufferImageCopy> regions_;
     Vector<VkBufferMemoryBarrier> buffer_barriers_;
     Vector<VkImageMemoryBarrier> image_barriers_;
 };

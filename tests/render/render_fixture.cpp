@@ -21,6 +21,10 @@ std::vector<grass_backend> enabled_backends() {
 }
 
 void RenderTest::SetUp() {
+    blade_band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+    blade_band.tier = 0;
+    blade_band.begin = 0.0f;
+    blade_band.end = 60.0f;
     grass_host::TargetDesc t;
     t.width = 128;
     t.height = 128;
@@ -57,6 +61,10 @@ grass_field_desc RenderTest::field_desc(uint32_t cells) const {
     grass_field_desc d = grass_default_field_desc();
     d.patch = patch;
     d.cells_x = d.cells_z = cells;
+    d.tiers = &blade_tier;
+    d.tier_count = 1;
+    d.lod_tests = &blade_band;
+    d.lod_test_count = 1;
     return d;
 }
 
@@ -105,6 +113,14 @@ grass_host::Image render_default_scene(grass_backend backend, const grass_host::
     grass_field_desc fd = grass_default_field_desc();
     fd.patch = patch;
     fd.cells_x = fd.cells_z = cells;
+    const grass_tier_desc tier{GRASS_TIER_GEOMETRY, 0};
+    grass_lod_test band{};
+    band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+    band.end = 60.0f;
+    fd.tiers = &tier;
+    fd.tier_count = 1;
+    fd.lod_tests = &band;
+    fd.lod_test_count = 1;
     grass_field_id field{};
     EXPECT_EQ(grass_create_field(ctx, &fd, &field), GRASS_SUCCESS);
     const grass_view_desc v = grass_host::make_view(*host, eye, look, 50.0f, 0.05f, 100.0f);

@@ -29,6 +29,8 @@ protected:
     // Makes the host, the context and the default patch (call again to change the target).
     void start(const grass_host::TargetDesc& target);
     grass_field_id make_field(grass_field_desc d);
+    // A square field of the default patch drawn by one geometry tier (blades) out to 60 m:
+    // the tests of the blade tier's behaviour. Tests of the other tiers set their own.
     grass_field_desc field_desc(uint32_t cells) const;
     grass_view_desc view(const double eye[3], const double target[3], float fovy_degrees = 50.0f) const;
     grass_host::Image render(const grass_view_desc& v, const grass_host::Occluder* occluder = nullptr);
@@ -38,6 +40,8 @@ protected:
     grass_context* ctx = nullptr;
     grass_patch_id patch{};
     std::string log;
+    grass_tier_desc blade_tier{GRASS_TIER_GEOMETRY, 0};
+    grass_lod_test blade_band{};
 };
 
 // The clear colour as the hosts write it (linear -> sRGB 8-bit).

@@ -95,29 +95,29 @@ TEST_P(TierColoursTest, TierColoursAppearAtTheDistancesTheLodTestsGive) {
         EXPECT_LE(gaps[zone] * 5, checked[zone] + gaps[zone]) << "zone " << zone << ": at most 20% gap rows";
     }
 
-    // Without the debug view only the geometry tier draws (blades), exactly its planned
-    // cells: grass near the camera, nothing where the volume and image tiers are planned.
+    // Without the debug view every tier draws its own representation: blades near, the
+    // ray-cast volume, then the horizontal slice, with grass in every zone (no gap between
+    // tiers) and none beyond the field's far edge.
     v.flags = 0;
-    const auto blades = render(v);
-    save(blades, std::string(backend_name(GetParam())) + ".blades");
+    const auto tiers_image = render(v);
+    save(tiers_image, std::string(backend_name(GetParam())) + ".tiers");
     uint8_t sky[3];
     expected_sky(host->target(), sky);
-    int near_rows = 0;
-    for (uint32_t y = 0; y < blades.height; ++y) {
-        const double sy = (1.0 - 2.0 * (y + 0.5) / blades.height) * t;
+    int rows_per_zone[3] = {0, 0, 0};
+    for (uint32_t y = 0; y < tiers_image.height; ++y) {
+        const double sy = (1.0 - 2.0 * (y + 0.5) / tiers_image.height) * t;
         const double dir[3] = {f[0] + sy * u[0], f[1] + sy * u[1], f[2] + sy * u[2]};
         if (dir[1] >= 0.0) continue;
         const double s = -eye[1] / dir[1];
         const double dist = s * std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
-        const double row_share = grass_share(blades, sky, 0, y, blades.width, y + 1);
-        if (dist < 2.4) {
-            EXPECT_GT(row_share, 0.9) << "row " << y << " at " << dist << " m: blades";
-            near_rows++;
-        } else if (dist > 4.5) {
-            EXPECT_EQ(row_share, 0.0) << "row " << y << " at " << dist << " m: volume and image draw nothing yet";
-        }
+        const int zone = dist < 2.4 ? 0 : (dist > 3.8 && dist < 9.0) ? 1 : (dist > 11.5 && dist < 14.0) ? 2 : -1;
+        if (zone < 0) continue;
+        // The middle half of the row lies inside the 16 m wide field up to 14 m away.
+        const double share = grass_share(tiers_image, sky, tiers_image.width / 4, y, 3 * tiers_image.width / 4, y + 1);
+        EXPECT_GT(share, 0.5) << "row " << y << " at " << dist << " m (tier " << zone << ")";
+        rows_per_zone[zone]++;
     }
-    EXPECT_GT(near_rows, 5);
+    for (int zone = 0; zone < 3; ++zone) EXPECT_GE(rows_per_zone[zone], 2) << "zone " << zone;
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, TierColoursTest, ::testing::ValuesIn(enabled_backends()),

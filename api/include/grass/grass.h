@@ -176,6 +176,10 @@ typedef struct grass_context_desc {
     void* log_user_data;
     grass_log_level log_level;  /* highest level passed to log_fn; default GRASS_LOG_WARNING */
     grass_depth_mode depth_mode; /* the host's depth convention; default GRASS_DEPTH_LESS */
+    /* A directory where baked slices (the volume and image tiers' textures) are cached,
+     * keyed by a hash of the patch desc, so a host starts fast the second time. NULL (the
+     * default): bake every time. The directory must exist; the string is copied. */
+    const char* cache_directory;
 } grass_context_desc;
 
 GRASS_API grass_context_desc grass_default_context_desc(void);
@@ -417,6 +421,11 @@ typedef struct grass_field_desc {
     uint32_t tier_count;         /* 1..GRASS_MAX_TIERS */
     const grass_lod_test* lod_tests;
     uint32_t lod_test_count;     /* 1..GRASS_MAX_LOD_TESTS; every tier needs at least one */
+    /* Where two tiers share a transition zone each blade is drawn by one of them; a blade
+     * crossing over fades out of one tier as it fades into the other over this half-width,
+     * in density-threshold units (lemme2012 eq. 5.26). Needs a multisampled target to show
+     * (alpha-to-coverage); without one the crossover is exact. 0..0.25; default 0.05. */
+    float transition_window;
 } grass_field_desc;
 
 GRASS_API grass_field_desc grass_default_field_desc(void);

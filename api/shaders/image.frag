@@ -1,0 +1,42 @@
+#version 450
+// Image tier: the horizontal slice, repeated per cell with the cell's mirroring (lemme eq.
+// 6.6), thinned by the density thresholds and the tier transitions, lit per pixel through
+// the slice's normal with the lighting of every tier.
+#include "blade_interface.glsl"
+#include "lighting.glsl"
+#include "tier_transitions.glsl"
+
+layout(location = 0) in vec3 v_position;
+layout(location = 1) in vec2 v_local;
+layout(location = 2) flat in uvec2 v_first_cell;
+
+layout(location = 0) out vec4 out_color;
+
+void main() {
+    vec2 cell = floor(v_local);
+    vec2 s = mirror_signs(v_first_cell + uvec2(cell));
+    vec2 f = v_local - cell;
+    vec2 uv = vec2(s.x < 0.0 ? 1.0 - f.x : f.x, s.y < 0.0 ? 1.0 - f.y : f.y); // eq. 6.6
+    // Gradients of the continuous coordinate: mirroring and cell seams must not pick mip 0.
+    vec2 dx = dFdx(v_local), dy = dFdy(v_local);
+    vec3 coord = vec3(uv, 0.0);
+    vec4 albedo = textureGrad(slice_color, coord, dx, dy);
+    vec4 normal_height = textureGrad(slice_normal, coord, dx, dy);
+    float threshold = textureGrad(slice_threshold, coord, dx, dy).r;
+    if (threshold <= 0.0 || albedo.a <= 0.0) discard;
+
+    vec2 cell_point = vec2(v_first_cell) + v_local; // where the blade stands in the field
+    float density = local_density(cell_point);
+    float opacity = tier_blade_opacity(length(v_position), threshold, density);
+    float alpha = albedo.a * opacity;
+    if (alpha < alpha_cut()) discard;
+
+    vec3 n = normalize(normal_height.xyz * 2.0 - 1.0);
+    n.xz *= s;
+    n = mat3(field.patch_to_world) * n;
+    n = normalize(n);
+    if (dot(n, -v_position) < 0.0) n = -n;
+    float height = normal_height.w * field.blade_params.w;
+    float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
+    out_color = vec4(grass_lighting(albedo.rgb, n, ao), alpha);
+}

@@ -1,0 +1,28 @@
+#version 450
+// Image tier (lemme2012 5.3): one horizontal quad per cell or macro-cell, slightly above the
+// ground; the fragment shader repeats and mirrors the horizontal slice per cell.
+#include "blade_interface.glsl"
+
+layout(location = 5) in vec4 i_origin; // xyz: corner relative to the camera (m)
+layout(location = 6) in uvec4 i_cell;  // xy: first cell, zw: size in cells
+
+layout(location = 0) out vec3 v_position; // camera-relative world position
+layout(location = 1) out vec2 v_local;    // position in the instance, cells
+layout(location = 2) flat out uvec2 v_first_cell;
+
+void main() {
+#ifdef VULKAN
+    int v = gl_VertexIndex;
+#else
+    int v = gl_VertexID;
+#endif
+    const int corner[6] = int[6](0, 1, 2, 2, 1, 3);
+    vec2 c = vec2(float(corner[v] & 1), float(corner[v] >> 1));
+    vec2 local = c * vec2(i_cell.zw);
+    // "Slightly above the ground": a small fraction of the blade height.
+    vec3 p = vec3(local.x, 0.05 * field.blade_params.w, local.y);
+    v_position = mat3(field.patch_to_world) * p + i_origin.xyz;
+    v_local = local;
+    v_first_cell = i_cell.xy;
+    gl_Position = frame.view_projection * vec4(v_position, 1.0);
+}

@@ -1,0 +1,103 @@
+#version 450
+// Volume tier (lemme2012 5.2, eq. 5.3-5.21): the view ray is cast through the grid of
+// implicit vertical slices of the (macro-)cell, each cell's slices mirrored as the cell is
+// (eq. 6.6), composited front to back until opaque; the fragment takes the depth of the hit.
+#include "blade_interface.glsl"
+#include "lighting.glsl"
+#include "tier_transitions.glsl"
+
+layout(location = 0) in vec3 v_local;
+layout(location = 1) flat in vec3 v_camera_local;
+layout(location = 2) flat in vec3 v_face_normal;
+layout(location = 3) flat in uvec4 v_cell;
+
+layout(location = 0) out vec4 out_color;
+
+const float kHuge = 1e30;
+
+void main() {
+    vec3 ray = v_local - v_camera_local;
+    // The back face ends the ray; a front face leaves the work to the back face behind it.
+    // (Decided geometrically: no dependence on the host's winding or clip conventions.)
+    if (dot(v_face_normal, ray) <= 0.0) discard;
+    float t_out = length(ray);
+    vec3 dir = ray / t_out;
+    vec3 size = vec3(float(v_cell.z), field.blade_params.w, float(v_cell.w));
+
+    // Where the ray enters the cuboid (slab test), or the camera if it is inside.
+    vec3 inv = vec3(dir.x != 0.0 ? 1.0 / dir.x : kHuge, dir.y != 0.0 ? 1.0 / dir.y : kHuge,
+                    dir.z != 0.0 ? 1.0 / dir.z : kHuge);
+    vec3 t0 = (vec3(0.0) - v_camera_local) * inv, t1 = (size - v_camera_local) * inv;
+    vec3 t_near = min(t0, t1);
+    float t_in = max(max(max(t_near.x, t_near.y), t_near.z), 0.0);
+
+    // Mip level from the footprint of a pixel on the carrier (outside the loop: derivatives
+    // need uniform control flow).
+    float n = float(field.tiling.z);
+    vec2 texels = vec2(textureSize(slice_color, 0).xy);
+    float footprint = max(length(dFdx(v_local)), length(dFdy(v_local))); // cells per pixel
+    float lod = log2(max(footprint * texels.x, 1.0));
+
+    // The slices across x sit at x = (j + 0.5) / n for every integer j (each cell repeats
+    // its n slices), likewise across z. Walk both families in order (a 2D DDA).
+    float step_x = dir.x != 0.0 ? 1.0 / (n * abs(dir.x)) : kHuge;
+    float step_z = dir.z != 0.0 ? 1.0 / (n * abs(dir.z)) : kHuge;
+    vec3 start = v_camera_local + dir * t_in;
+    float jx = dir.x > 0.0 ? floor(start.x * n - 0.5) + 1.0 : ceil(start.x * n - 0.5) - 1.0;
+    float jz = dir.z > 0.0 ? floor(start.z * n - 0.5) + 1.0 : ceil(start.z * n - 0.5) - 1.0;
+    float tx = dir.x != 0.0 ? ((jx + 0.5) / n - v_camera_local.x) / dir.x : kHuge;
+    float tz = dir.z != 0.0 ? ((jz + 0.5) / n - v_camera_local.z) / dir.z : kHuge;
+
+    mat3 to_world = mat3(field.patch_to_world);
+    vec3 origin = to_world * (-v_camera_local); // the instance corner relative to the camera
+    vec3 color = vec3(0.0);
+    float alpha = 0.0;
+    vec3 depth_point = v_local;
+    bool depth_set = false;
+    // Every slice plane inside the cuboid is crossed at most once: a fixed bound from the
+    // slice count and the macro-cell size, so a grazing ray cannot loop for ever.
+    int max_steps = int(n) * int(v_cell.z + v_cell.w) + 2;
+    for (int i = 0; i < max_steps; ++i) {
+        bool across_x = tx < tz;
+        float t = across_x ? tx : tz;
+        if (t > t_out) break;
+        if (across_x) tx += step_x; else tz += step_z;
+        vec3 h = v_camera_local + dir * t;
+        if (t < t_in || h.y < 0.0 || h.y > size.y) continue;
+
+        vec2 cell = clamp(floor(h.xz), vec2(0.0), size.xz - 1.0);
+        vec2 s = mirror_signs(v_cell.xy + uvec2(cell));
+        vec2 f = h.xz - cell;
+        vec2 m = vec2(s.x < 0.0 ? 1.0 - f.x : f.x, s.y < 0.0 ? 1.0 - f.y : f.y); // eq. 6.6
+        // The slice (layer) and the point on it, in the mirrored patch.
+        float layer = across_x ? clamp(floor(m.x * n), 0.0, n - 1.0) : n + clamp(floor(m.y * n), 0.0, n - 1.0);
+        vec3 coord = vec3(across_x ? m.y : m.x, h.y / size.y, layer);
+        float threshold = textureLod(slice_threshold, coord, lod).r;
+        if (threshold <= 0.0) continue;
+        vec4 albedo = textureLod(slice_color, coord, lod);
+        if (albedo.a <= 0.0) continue;
+
+        vec3 world = to_world * h + origin;
+        float density = local_density(vec2(v_cell.xy) + h.xz);
+        float a = albedo.a * tier_blade_opacity(length(world), threshold, density);
+        if (a <= 0.0) continue;
+        vec4 normal_height = textureLod(slice_normal, coord, lod);
+        vec3 nrm = normal_height.xyz * 2.0 - 1.0;
+        nrm.xz *= s;
+        nrm = normalize(to_world * nrm);
+        if (dot(nrm, -world) < 0.0) nrm = -nrm;
+        float ao = blade_ambient_occlusion(density, h.y, field.blade_params.x, field.blade_params.y);
+        vec3 lit = grass_lighting(albedo.rgb, nrm, ao);
+        // Front to back (eq. 5.19-5.20).
+        color += (1.0 - alpha) * a * lit;
+        alpha += (1.0 - alpha) * a;
+        if (!depth_set && alpha >= 0.5) {
+            depth_point = h;
+            depth_set = true;
+        }
+        if (alpha >= 0.99) break;
+    }
+    if (alpha < alpha_cut()) discard;
+    out_color = vec4(color / alpha, alpha);
+    gl_FragDepth = window_depth(to_world * depth_point + origin);
+}
