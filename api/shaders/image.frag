@@ -28,7 +28,12 @@ void main() {
     vec2 cell_point = vec2(v_first_cell) + v_local; // where the blade stands in the field
     float density = local_density(cell_point);
     float opacity = tier_blade_opacity(length(v_position), threshold, density);
-    float alpha = albedo.a * opacity;
+    // The horizontal slice holds the coverage of the grass seen from above. Seen at an
+    // elevation theta the view crosses the blade layer 1 / sin(theta) times as long, so the
+    // layer is more opaque (Beer-Lambert along the slanted path): 1 - (1 - a)^(1 / sin).
+    float sin_elevation = max(abs(dot(normalize(-v_position), normalize(mat3(field.patch_to_world)[1]))), 0.05);
+    float coverage = 1.0 - pow(max(1.0 - albedo.a, 0.0), 1.0 / sin_elevation);
+    float alpha = coverage * opacity;
     if (alpha < alpha_cut()) discard;
 
     vec3 n = normalize(normal_height.xyz * 2.0 - 1.0);

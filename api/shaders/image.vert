@@ -19,8 +19,9 @@ void main() {
     const int corner[6] = int[6](0, 1, 2, 2, 1, 3);
     vec2 c = vec2(float(corner[v] & 1), float(corner[v] >> 1));
     vec2 local = c * vec2(i_cell.zw);
-    // "Slightly above the ground": a small fraction of the blade height.
-    vec3 p = vec3(local.x, 0.05 * field.blade_params.w, local.y);
+    // Above the ground (lemme 5.3): at half the blade height, where the grass surface is
+    // seen from afar; lower, the host's ground wins the depth test at a distance.
+    vec3 p = vec3(local.x, 0.5 * field.blade_params.w, local.y);
     v_position = mat3(field.patch_to_world) * p + i_origin.xyz;
     v_local = local;
     v_first_cell = i_cell.xy;

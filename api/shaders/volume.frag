@@ -31,12 +31,12 @@ void main() {
     vec3 t_near = min(t0, t1);
     float t_in = max(max(max(t_near.x, t_near.y), t_near.z), 0.0);
 
-    // Mip level from the footprint of a pixel on the carrier (outside the loop: derivatives
-    // need uniform control flow).
+    // Mip level per hit from the pixel's angular size times the hit's distance: the slices
+    // are seen at every angle, so the carrier's own footprint (stretched at grazing angles)
+    // would blur them. Derivatives outside the loop: they need uniform control flow.
     float n = float(field.tiling.z);
     vec2 texels = vec2(textureSize(slice_color, 0).xy);
-    float footprint = max(length(dFdx(v_local)), length(dFdy(v_local))); // cells per pixel
-    float lod = log2(max(footprint * texels.x, 1.0));
+    float pixel_angle = max(length(dFdx(dir)), length(dFdy(dir)));  // radians per pixel
 
     // The slices across x sit at x = (j + 0.5) / n for every integer j (each cell repeats
     // its n slices), likewise across z. Walk both families in order (a 2D DDA).
@@ -50,28 +50,41 @@ void main() {
 
     mat3 to_world = mat3(field.patch_to_world);
     vec3 origin = to_world * (-v_camera_local); // the instance corner relative to the camera
+    // The ray goes on past this carrier into the neighbouring cells (the same patch, mirrored
+    // by their own cells' bits) until it leaves the blade layer: a ray that crosses several
+    // carriers is then composited whole by the nearest of them, and no seam shows where each
+    // carrier alone would see too little grass. It stops at the field's edges.
+    vec2 field_cells = 1.0 / field.map_params.xy;
+    float t_layer = dir.y < 0.0 ? (0.0 - v_camera_local.y) / dir.y : dir.y > 0.0 ? (size.y - v_camera_local.y) / dir.y : kHuge;
+    float t_end = max(t_out, min(t_layer, t_out + 4.0 / max(length(dir.xz), 1e-3)));
     vec3 color = vec3(0.0);
     float alpha = 0.0;
     vec3 depth_point = v_local;
     bool depth_set = false;
-    // Every slice plane inside the cuboid is crossed at most once: a fixed bound from the
-    // slice count and the macro-cell size, so a grazing ray cannot loop for ever.
-    int max_steps = int(n) * int(v_cell.z + v_cell.w) + 2;
+    // Every slice plane the ray crosses in the cuboid and the 4 cells beyond it is crossed
+    // once: a fixed bound from the slice count and the macro-cell size, so a grazing ray
+    // cannot loop for ever.
+    int max_steps = int(n) * int(v_cell.z + v_cell.w + 8u) + 2;
     for (int i = 0; i < max_steps; ++i) {
         bool across_x = tx < tz;
         float t = across_x ? tx : tz;
-        if (t > t_out) break;
+        if (t > t_end) break;
         if (across_x) tx += step_x; else tz += step_z;
         vec3 h = v_camera_local + dir * t;
         if (t < t_in || h.y < 0.0 || h.y > size.y) continue;
 
-        vec2 cell = clamp(floor(h.xz), vec2(0.0), size.xz - 1.0);
-        vec2 s = mirror_signs(v_cell.xy + uvec2(cell));
+        vec2 cell = floor(h.xz);
+        vec2 global = vec2(v_cell.xy) + cell;
+        if (any(lessThan(global, vec2(0.0))) || any(greaterThanEqual(global, field_cells - 0.5))) continue;
+        vec2 s = mirror_signs(uvec2(global));
         vec2 f = h.xz - cell;
         vec2 m = vec2(s.x < 0.0 ? 1.0 - f.x : f.x, s.y < 0.0 ? 1.0 - f.y : f.y); // eq. 6.6
         // The slice (layer) and the point on it, in the mirrored patch.
         float layer = across_x ? clamp(floor(m.x * n), 0.0, n - 1.0) : n + clamp(floor(m.y * n), 0.0, n - 1.0);
         vec3 coord = vec3(across_x ? m.y : m.x, h.y / size.y, layer);
+        // Texels are 3-4x denser across a slice than up it (256 x 64 over 1 x ~0.85 cells);
+        // the level follows the coarser, vertical density so blades keep their height.
+        float lod = log2(max(t * pixel_angle * texels.y / size.y, 1.0)); // t: distance in cells
         float threshold = textureLod(slice_threshold, coord, lod).r;
         if (threshold <= 0.0) continue;
         vec4 albedo = textureLod(slice_color, coord, lod);
