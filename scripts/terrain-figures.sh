@@ -16,7 +16,7 @@ for backend in gl vk; do
   for c in "${cameras[@]}"; do
     read -r name eye target <<<"$c"
     echo "== $name ($backend)"
-    "$render" --scene "$scene" --backend "$backend" --debug-tiers --size 640x360 --far 2000 \
+    "$render" --scene "$scene" --backend "$backend" --debug-cells --size 640x360 --far 2000 \
       --camera "$eye" --target "$target" --output "docs/images/terrain/football-$name-$backend.png" |
       grep -E "quadtree|geometry|volume|image|plan"
   done

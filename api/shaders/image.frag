@@ -43,5 +43,5 @@ void main() {
     if (dot(n, -v_position) < 0.0) n = -n;
     float height = normal_height.w * field.blade_params.w;
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
-    out_color = vec4(grass_lighting(albedo.rgb, n, ao), alpha);
+    out_color = vec4(debug_tint(grass_lighting(albedo.rgb, n, ao)), alpha);
 }

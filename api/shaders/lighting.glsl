@@ -16,6 +16,15 @@ vec3 grass_lighting(vec3 albedo, vec3 n, float ambient_occlusion) {
     return albedo * (frame.ambient_color.rgb * ambient_occlusion + frame.sun_color.rgb * n_dot_l);
 }
 
+// The debug view's tint of a tier (GRASS_VIEW_FLAG_DEBUG_TIERS = 2 in frame.params.y):
+// red geometry, yellow volume, blue image, mixed half into the lit colour.
+vec3 debug_tint(vec3 color) {
+    if ((uint(frame.params.y + 0.5) & 2u) == 0u) return color;
+    float kind = field.blade_params.z;
+    vec3 tint = kind < 0.5 ? vec3(0.85, 0.06, 0.04) : kind < 1.5 ? vec3(0.90, 0.75, 0.04) : vec3(0.04, 0.18, 0.90);
+    return mix(color, tint * (0.4 + 0.6 * dot(color, vec3(0.33)) / 0.2), 0.6);
+}
+
 // The mirror bits of a cell (lemme eq. 6.4): white noise at the integer cell, bit 0 mirrors
 // x, bit 1 mirrors z. The same function as grass::mirror_bits (api/src/mirror_tiling.cpp).
 uint mirror_bits(uvec2 cell, uint seed) {

@@ -111,6 +111,6 @@ void main() {
         if (alpha >= 0.99) break;
     }
     if (alpha < alpha_cut()) discard;
-    out_color = vec4(color / alpha, alpha);
+    out_color = vec4(debug_tint(color / alpha), alpha);
     gl_FragDepth = window_depth(to_world * depth_point + origin);
 }

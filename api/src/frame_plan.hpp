@@ -64,7 +64,7 @@ struct FramePlan {
                                               draws(StlAllocator<TierDraw>(host)) {}
     FrameUniforms frame{};
     int32_t viewport[4] = {0, 0, 0, 0};
-    uint32_t flags = 0;                  // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_TIERS draws every
+    uint32_t flags = 0;                  // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
                                          // draw as debug boxes instead of its tier
     Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
     Vector<TierDraw> draws;         // per field, per tier that draws something

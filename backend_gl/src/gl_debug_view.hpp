@@ -1,4 +1,4 @@
-// The debug view (GRASS_VIEW_FLAG_DEBUG_TIERS): every planned instance of every tier kind
+// The debug view (GRASS_VIEW_FLAG_DEBUG_CELLS): every planned instance of every tier kind
 // as a flat box coloured by its kind, drawn instead of the grass. Needs no patch: the six
 // corners come from the vertex index, the instances from the frame's instance buffer.
 #pragma once

@@ -118,7 +118,7 @@ void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
 grass_result GlBackend::render(const char* function) {
     const FramePlan& plan = ctx_->plan;
     if (plan.draws.empty()) return GRASS_SUCCESS;
-    const bool debug = (plan.flags & GRASS_VIEW_FLAG_DEBUG_TIERS) != 0;
+    const bool debug = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
 
     // Check the plan against what was uploaded before touching any GL state. Only the
     // draws that use a patch need one (the debug view draws boxes), and volume and image

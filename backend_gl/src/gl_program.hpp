@@ -20,7 +20,7 @@ constexpr GLint kSliceThresholdUnit = 5;
 grass_result create_blade_program(grass_context* ctx, const GlFunctions& gl, const char* function,
                                   GLuint* out_program);
 
-// Compiles and links debug_tiers.vert + debug_tiers.frag (GRASS_VIEW_FLAG_DEBUG_TIERS),
+// Compiles and links debug_tiers.vert + debug_tiers.frag (GRASS_VIEW_FLAG_DEBUG_CELLS),
 // with the same failure behaviour.
 grass_result create_debug_tiers_program(grass_context* ctx, const GlFunctions& gl, const char* function,
                                         GLuint* out_program);

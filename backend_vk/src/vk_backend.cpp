@@ -580,7 +580,7 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
 
 grass_result VkBackend::record(VkCommandBuffer cmd) {
     const FramePlan& plan = ctx_->plan;
-    const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_TIERS) != 0;
+    const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
     // Refuse before recording anything, so that the command buffer is left untouched.
     uint32_t draw_count = 0, slice_draws = 0;
     for (const TierDraw& d : plan.draws) {

@@ -1,4 +1,4 @@
-// The tier debug view (GRASS_VIEW_FLAG_DEBUG_TIERS): every planned instance of every tier
+// The tier debug view (GRASS_VIEW_FLAG_DEBUG_CELLS): every planned instance of every tier
 // kind as a flat false-colour box on the ground (api/shaders/debug_tiers.*). Same set and
 // pipeline layout as the blades; no patch: six vertices per instance from the vertex
 // index, the tier instances as the only vertex input.

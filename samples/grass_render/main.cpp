@@ -29,7 +29,8 @@ void usage(FILE* out) {
                  "  --density D            uniform density multiplier 0..1\n"
                  "  --no-mirror            turn mirrored tiling off\n"
                  "  --no-ground            the host draws no ground under the grass\n"
-                 "  --debug-tiers          draw each planned instance as a tier-coloured box\n"
+                 "  --debug-tiers          tint each tier's grass (red geometry, yellow volume, blue image)\n"
+                 "  --debug-cells          draw each planned cell or macro-cell as a tier-coloured box\n"
                  "  --far METRES           far plane of the host's projection (default from the scene, 500)\n"
                  "  --help                 this text\n");
 }
@@ -56,7 +57,7 @@ int main(int argc, char** argv) {
     grass_render::Scene scene = grass_render::demo_scene();
     // Options that override the scene file are applied after it is loaded.
     double camera[3], target[3];
-    bool have_camera = false, have_target = false, no_mirror = false, no_ground = false, debug_tiers = false;
+    bool have_camera = false, have_target = false, no_mirror = false, no_ground = false, debug_tiers = false, debug_cells = false;
     float far_m = 0.0f;
     float fov = 0.0f, density = -1.0f;
     uint32_t width = 0, height = 0, samples = 0;
@@ -107,6 +108,8 @@ int main(int argc, char** argv) {
             no_ground = true;
         } else if (a == "--debug-tiers") {
             debug_tiers = true;
+        } else if (a == "--debug-cells") {
+            debug_cells = true;
         } else if (a == "--far") {
             far_m = static_cast<float>(std::atof(value()));
             if (!(far_m > 1.0f && far_m < 1e8f)) return fail("--far must be between 1 and 1e8 metres");
@@ -173,6 +176,7 @@ int main(int argc, char** argv) {
     if (scene_ready) {
         grass_view_desc view = grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees, 0.05f, scene.far_m);
         if (debug_tiers) view.flags |= GRASS_VIEW_FLAG_DEBUG_TIERS;
+        if (debug_cells) view.flags |= GRASS_VIEW_FLAG_DEBUG_CELLS;
         std::memcpy(view.sun_direction, scene.sun_direction, sizeof(scene.sun_direction));
         std::memcpy(view.sun_color, scene.sun_color, sizeof(scene.sun_color));
         std::memcpy(view.ambient_color, scene.ambient_color, sizeof(scene.ambient_color));

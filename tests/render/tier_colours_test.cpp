@@ -54,7 +54,7 @@ TEST_P(TierColoursTest, TierColoursAppearAtTheDistancesTheLodTestsGive) {
     const double eye[3] = {8.0, 1.5, 0.5}, target[3] = {8.0, 0.0, 6.0};
     const float fov = 60.0f;
     grass_view_desc v = view(eye, target, fov);
-    v.flags = GRASS_VIEW_FLAG_DEBUG_TIERS;
+    v.flags = GRASS_VIEW_FLAG_DEBUG_CELLS;
     const auto image = render(v);
     save(image, backend_name(GetParam()));
 

@@ -440,10 +440,12 @@ typedef enum grass_view_flags {
     GRASS_VIEW_FLAG_NONE = 0,
     /* Debugging: draw without the depth test (grass is drawn over the host's scene). */
     GRASS_VIEW_FLAG_NO_DEPTH_TEST = 1u << 0,
-    /* Debugging: draw every planned instance as a flat false-colour box on the ground, the
-     * size of its cell or macro-cell: red geometry, yellow volume, blue image
-     * (boulanger2006 figure 12, lemme2012 figure 7.1). */
-    GRASS_VIEW_FLAG_DEBUG_TIERS = 1u << 1
+    /* Debugging: tint each tier's grass: red geometry, yellow volume, blue image
+     * (boulanger2006 figure 12, lemme2012 figure 7.1); the transition zones show both. */
+    GRASS_VIEW_FLAG_DEBUG_TIERS = 1u << 1,
+    /* Debugging: instead of grass, draw every planned instance as a flat box on the ground
+     * in its tier's colour, the size of its cell or macro-cell. */
+    GRASS_VIEW_FLAG_DEBUG_CELLS = 1u << 2
 } grass_view_flags;
 
 /* The camera and lights of one frame. */
