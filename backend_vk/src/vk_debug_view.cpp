@@ -13,26 +13,10 @@ extern const uint32_t debug_tiers_frag_size;
 
 namespace grass::vk {
 
-namespace {
-
-// Locations 5 and 6 of debug_tiers.vert, as in blade.vert.
-constexpr VkVertexInputBindingDescription kBinding = {DebugViewPipeline::kInstanceBinding, sizeof(TierInstance),
-                                                      VK_VERTEX_INPUT_RATE_INSTANCE};
-constexpr VkVertexInputAttributeDescription kAttributes[] = {
-    {5, DebugViewPipeline::kInstanceBinding, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, origin)},
-    {6, DebugViewPipeline::kInstanceBinding, VK_FORMAT_R32G32B32A32_UINT, offsetof(TierInstance, cell)},
-};
-static_assert(offsetof(TierInstance, cell) == 16, "instance layout of debug_tiers.vert");
-
-} // namespace
 
 bool DebugViewPipeline::create(const PipelineTarget& target, VkPipelineLayout layout, VkFailure* failure,
                                const char** what) {
-    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    vertex_input.vertexBindingDescriptionCount = 1;
-    vertex_input.pVertexBindingDescriptions = &kBinding;
-    vertex_input.vertexAttributeDescriptionCount = 2;
-    vertex_input.pVertexAttributeDescriptions = kAttributes;
+    const VkPipelineVertexInputStateCreateInfo vertex_input = instance_only_vertex_input();
     // Opaque boxes: no alpha to coverage.
     const PipelineShape shape{grass_vk_spirv::debug_tiers_vert, grass_vk_spirv::debug_tiers_vert_size,
                               grass_vk_spirv::debug_tiers_frag, grass_vk_spirv::debug_tiers_frag_size,

@@ -250,4 +250,18 @@ bool BladePipeline::create_pipelines(const PipelineTarget& target, VkFailure* fa
     return true;
 }
 
+VkPipelineVertexInputStateCreateInfo instance_only_vertex_input() {
+    static constexpr VkVertexInputBindingDescription binding = {0, sizeof(TierInstance), VK_VERTEX_INPUT_RATE_INSTANCE};
+    static constexpr VkVertexInputAttributeDescription attributes[] = {
+        {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, origin)},
+        {6, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(TierInstance, cell)},
+    };
+    VkPipelineVertexInputStateCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    info.vertexBindingDescriptionCount = 1;
+    info.pVertexBindingDescriptions = &binding;
+    info.vertexAttributeDescriptionCount = 2;
+    info.pVertexAttributeDescriptions = attributes;
+    return info;
+}
+
 } // namespace grass::vk

@@ -47,6 +47,10 @@ struct PipelineShape {
 
 // Index 0 of out_pipelines depth-tests and writes depth (the target's compare op), index 1
 // does neither. On failure both are VK_NULL_HANDLE.
+// The vertex input of the shaders that read instances only (locations 5 and 6 on binding
+// 0: debug_tiers, volume and image): its arrays live as long as the program.
+VkPipelineVertexInputStateCreateInfo instance_only_vertex_input();
+
 bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
                           const PipelineShape& shape, VkPipeline out_pipelines[2], VkFailure* failure,
                           const char** what);

@@ -17,27 +17,10 @@ extern const uint32_t image_frag_size;
 
 namespace grass::vk {
 
-namespace {
-
-// Locations 5 and 6 of volume.vert and image.vert, as in blade.vert.
-constexpr VkVertexInputBindingDescription kBinding = {SlicePipelines::kInstanceBinding, sizeof(TierInstance),
-                                                      VK_VERTEX_INPUT_RATE_INSTANCE};
-constexpr VkVertexInputAttributeDescription kAttributes[] = {
-    {5, SlicePipelines::kInstanceBinding, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, origin)},
-    {6, SlicePipelines::kInstanceBinding, VK_FORMAT_R32G32B32A32_UINT, offsetof(TierInstance, cell)},
-};
-static_assert(sizeof(TierInstance) == 32 && offsetof(TierInstance, cell) == 16,
-              "instance layout of volume.vert and image.vert");
-
-} // namespace
 
 bool SlicePipelines::create(const PipelineTarget& target, VkPipelineLayout layout, VkFailure* failure,
                             const char** what) {
-    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    vertex_input.vertexBindingDescriptionCount = 1;
-    vertex_input.pVertexBindingDescriptions = &kBinding;
-    vertex_input.vertexAttributeDescriptionCount = 2;
-    vertex_input.pVertexAttributeDescriptions = kAttributes;
+    const VkPipelineVertexInputStateCreateInfo vertex_input = instance_only_vertex_input();
     // Both shaders output coverage as alpha: alpha to coverage with multisampling. No
     // culling (shared state): volume.frag keeps the back faces itself.
     const PipelineShape volume{grass_vk_spirv::volume_vert, grass_vk_spirv::volume_vert_size,
