@@ -36,12 +36,21 @@ void main() {
     float alpha = coverage * opacity;
     if (alpha < alpha_cut()) discard;
 
+    // The slice was seen from above: its normals face up and its heights are the tips'. From
+    // an elevation theta one sees more of the blades' sides, which face the viewer (the
+    // two-sided blades turn their lit side to the camera) and stand lower in the blade layer:
+    // blend both towards that view by 1 - sin(theta), so that far grass is lit like the
+    // blades it replaces.
+    vec3 up = normalize(mat3(field.patch_to_world)[1]);
+    vec3 to_camera = normalize(-v_position);
     vec3 n = normalize(normal_height.xyz * 2.0 - 1.0);
     n.xz *= s;
-    n = mat3(field.patch_to_world) * n;
-    n = normalize(n);
-    if (dot(n, -v_position) < 0.0) n = -n;
-    float height = normal_height.w * field.blade_params.w;
+    n = normalize(mat3(field.patch_to_world) * n);
+    vec3 side = to_camera - up * dot(to_camera, up);
+    side = dot(side, side) > 1e-8 ? normalize(side) : up;
+    n = normalize(mix(side, n, sin_elevation));
+    if (dot(n, to_camera) < 0.0) n = -n;
+    float height = mix(0.5, normal_height.w, sin_elevation) * field.blade_params.w;
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
     out_color = vec4(debug_tint(grass_lighting(albedo.rgb, n, ao)), alpha);
 }

@@ -9,27 +9,26 @@
 namespace grass_test {
 namespace {
 
-// Measured (docs/three-tiers.md, both backends alike), as limits against regressions; the
-// goal of the three-tier issue is tighter and not reached yet:
-//   geometry coverage 0.211, mean sRGB (82.6, 107.0, 64.0)
-//   volume   coverage 0.214, mean sRGB (66.2, 89.4, 52.6): 17.6 levels darker
-//   image    coverage 0.142, mean sRGB (118.8, 149.3, 76.8): 42.3 levels lighter; a flat
-//            slice has no blades standing above the field's far edge, hence less coverage
+// Measured (docs/three-tiers.md; GL, Vulkan within 0.6 levels), as limits against
+// regressions; the goal of the three-tier issue is tighter and not reached yet. Mean sRGB
+// over the pixels that are grass in all three renders:
+//   geometry coverage 0.211, (79.9, 106.2, 51.9)
+//   volume   coverage 0.214, (61.7, 86.5, 40.9): 19.7 levels darker
+//   image    coverage 0.142, (66.0, 89.5, 52.1): 16.7 levels darker; a flat slice has no
+//            blades standing above the field's far edge, hence less coverage
+// The slices' direct light is the gap: with ambient light only the tiers agree within about
+// 6 levels. Each two-sided blade shows its camera-facing side, lit or not; a slice texel
+// has one averaged normal, and no single normal reproduces that average of Lambert terms.
 struct Tolerance {
     double colour;   // largest channel difference of the mean colour to geometry's, levels
     double coverage; // relative difference of the coverage to geometry's
 };
-constexpr Tolerance kVolume{20.0, 0.10};
-constexpr Tolerance kImage{48.0, 0.35};
+constexpr Tolerance kVolume{23.0, 0.10};
+constexpr Tolerance kImage{20.0, 0.35};
 
 class TierLightingTest : public RenderTest {
 protected:
-    struct Look {
-        double coverage = 0.0; // share of the cells' screen area covered by grass
-        double mean[3] = {0, 0, 0}; // mean sRGB colour of the grass pixels
-    };
-
-    Look look_with(grass_tier_kind kind, uint32_t slices) {
+    grass_host::Image render_with(grass_tier_kind kind, uint32_t slices) {
         grass_tier_desc tier{kind, slices};
         grass_lod_test band{};
         band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
@@ -49,21 +48,7 @@ protected:
         const auto image = render(view(eye, target, 14.0f));
         save(image, std::to_string(int(kind)) + "_" + std::to_string(slices));
         EXPECT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
-        Look l;
-        uint8_t sky[3];
-        expected_sky(host->target(), sky);
-        uint64_t covered = 0;
-        for (uint32_t y = 0; y < image.height; ++y) {
-            for (uint32_t x = 0; x < image.width; ++x) {
-                const uint8_t* p = image.pixel(x, y);
-                if (!is_grass(p, sky)) continue;
-                ++covered;
-                for (int c = 0; c < 3; ++c) l.mean[c] += p[c];
-            }
-        }
-        for (double& m : l.mean) m /= covered ? double(covered) : 1.0;
-        l.coverage = double(covered) / (image.width * image.height);
-        return l;
+        return image;
     }
 };
 
@@ -72,21 +57,44 @@ TEST_P(TierLightingTest, TheSameCellsLookAlikeInEveryTier) {
     t.width = t.height = 128;
     t.samples = 4;
     start(t);
-    const Look geometry = look_with(GRASS_TIER_GEOMETRY, 0);
-    const Look volume = look_with(GRASS_TIER_VOLUME, 8);
-    const Look image = look_with(GRASS_TIER_IMAGE, 0);
-    const Look* looks[3] = {&geometry, &volume, &image};
     const char* names[3] = {"geometry", "volume", "image"};
+    const grass_host::Image images[3] = {render_with(GRASS_TIER_GEOMETRY, 0), render_with(GRASS_TIER_VOLUME, 8),
+                                         render_with(GRASS_TIER_IMAGE, 0)};
+    uint8_t sky[3];
+    expected_sky(host->target(), sky);
+    // Coverage of each tier; mean colour over the pixels that are grass in all three (the
+    // cells' common footprint: blade tips against the sky exist only in some tiers and are
+    // mixed with the sky by alpha-to-coverage).
+    double coverage[3] = {0, 0, 0}, mean[3][3] = {};
+    uint64_t common = 0;
+    for (uint32_t y = 0; y < images[0].height; ++y) {
+        for (uint32_t x = 0; x < images[0].width; ++x) {
+            bool all = true;
+            for (int k = 0; k < 3; ++k) {
+                const bool g = is_grass(images[k].pixel(x, y), sky);
+                coverage[k] += g;
+                all = all && g;
+            }
+            if (!all) continue;
+            ++common;
+            for (int k = 0; k < 3; ++k) {
+                for (int c = 0; c < 3; ++c) mean[k][c] += images[k].pixel(x, y)[c];
+            }
+        }
+    }
+    ASSERT_GT(common, 1000u);
     for (int k = 0; k < 3; ++k) {
-        std::printf("[ measured ] %s %-8s coverage %.3f mean sRGB (%.1f, %.1f, %.1f)\n", backend_name(GetParam()).c_str(),
-                    names[k], looks[k]->coverage, looks[k]->mean[0], looks[k]->mean[1], looks[k]->mean[2]);
+        coverage[k] /= double(images[k].width * images[k].height);
+        for (double& m : mean[k]) m /= double(common);
+        std::printf("[ measured ] %s %-8s coverage %.3f, mean sRGB over the common footprint (%.1f, %.1f, %.1f)\n",
+                    backend_name(GetParam()).c_str(), names[k], coverage[k], mean[k][0], mean[k][1], mean[k][2]);
     }
     const Tolerance* tolerance[3] = {nullptr, &kVolume, &kImage};
     for (int k = 1; k < 3; ++k) {
         double diff = 0.0;
-        for (int c = 0; c < 3; ++c) diff = std::max(diff, std::fabs(looks[k]->mean[c] - geometry.mean[c]));
+        for (int c = 0; c < 3; ++c) diff = std::max(diff, std::fabs(mean[k][c] - mean[0][c]));
         EXPECT_LT(diff, tolerance[k]->colour) << names[k] << ": largest channel difference of the mean colour";
-        EXPECT_NEAR(looks[k]->coverage, geometry.coverage, tolerance[k]->coverage * geometry.coverage) << names[k];
+        EXPECT_NEAR(coverage[k], coverage[0], tolerance[k]->coverage * coverage[0]) << names[k];
     }
 }
 
