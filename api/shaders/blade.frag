@@ -10,6 +10,7 @@ layout(location = 2) in vec3 v_albedo;
 layout(location = 3) centroid in vec2 v_shape;
 layout(location = 4) in float v_density;
 layout(location = 5) in float v_opacity;
+layout(location = 6) flat in float v_threshold;
 
 layout(location = 0) out vec4 out_color;
 
@@ -27,5 +28,5 @@ void main() {
     // stays opaque (the scale is at least 2), or far grass would wash out to the sky.
     float edge = 0.5 - abs(v_shape.x - 0.5);
     float alpha = clamp(edge * max(1.0 / max(fwidth(v_shape.x), 1e-6), 2.0) + 0.5, 0.0, 1.0);
-    out_color = vec4(debug_tint(color), alpha * v_opacity);
+    out_color = debug_thresholds() ? threshold_code(v_threshold) : vec4(debug_tint(color), alpha * v_opacity);
 }

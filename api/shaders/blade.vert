@@ -20,6 +20,7 @@ layout(location = 2) out vec3 v_albedo;
 layout(location = 3) centroid out vec2 v_shape; // x: u across the blade, y: height in patch units
 layout(location = 4) out float v_density;
 layout(location = 5) out float v_opacity;
+layout(location = 6) flat out float v_threshold;
 
 // A threshold of exactly 1 must pass a density of exactly 1 after bilinear filtering;
 // the smallest threshold (1 / 65536) must still fail a density of 0.
@@ -48,6 +49,7 @@ void main() {
     v_shape = vec2(a_root_shape.z, p.y);
     v_density = density;
     v_opacity = opacity;
+    v_threshold = a_threshold;
     gl_Position = frame.view_projection * vec4(position, 1.0);
     // Without multisampling a blade is all or nothing: drawn by the tier where its opacity
     // is at least one half (exactly one tier). With it, alpha-to-coverage fades it.

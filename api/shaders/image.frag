@@ -52,5 +52,5 @@ void main() {
     if (dot(n, to_camera) < 0.0) n = -n;
     float height = mix(0.5, normal_height.w, sin_elevation) * field.blade_params.w;
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
-    out_color = vec4(debug_tint(grass_lighting(albedo.rgb, n, ao)), alpha);
+    out_color = debug_thresholds() ? threshold_code(threshold) : vec4(debug_tint(grass_lighting(albedo.rgb, n, ao)), alpha);
 }

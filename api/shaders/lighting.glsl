@@ -25,6 +25,24 @@ vec3 debug_tint(vec3 color) {
     return mix(color, tint * (0.4 + 0.6 * dot(color, vec3(0.33)) / 0.2), 0.6);
 }
 
+// GRASS_VIEW_FLAG_DEBUG_THRESHOLDS (8 in frame.params.y): the blade's threshold in 16 bits
+// (red high byte, green low byte) and the tier kind in blue, as linear values that an sRGB
+// target encodes back to exactly those bytes.
+bool debug_thresholds() {
+    return (uint(frame.params.y + 0.5) & 8u) != 0u;
+}
+float srgb_byte_to_linear(float byte) {
+    float c = byte / 255.0;
+    return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}
+vec4 threshold_code(float threshold) {
+    uint code = uint(clamp(threshold, 0.0, 1.0) * 65535.0 + 0.5);
+    float kind = field.blade_params.z;
+    float blue = kind < 0.5 ? 0.0 : kind < 1.5 ? 128.0 : 255.0;
+    return vec4(srgb_byte_to_linear(float(code >> 8)), srgb_byte_to_linear(float(code & 255u)),
+                srgb_byte_to_linear(blue), 1.0);
+}
+
 // The mirror bits of a cell (lemme eq. 6.4): white noise at the integer cell, bit 0 mirrors
 // x, bit 1 mirrors z. The same function as grass::mirror_bits (api/src/mirror_tiling.cpp).
 uint mirror_bits(uvec2 cell, uint seed) {

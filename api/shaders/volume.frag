@@ -61,6 +61,7 @@ void main() {
     float alpha = 0.0;
     vec3 depth_point = v_local;
     bool depth_set = false;
+    float depth_threshold = 0.0; // the threshold of the blade where the ray turns opaque
     // Every slice plane the ray crosses in the cuboid and the 4 cells beyond it is crossed
     // once: a fixed bound from the slice count and the macro-cell size, so a grazing ray
     // cannot loop for ever.
@@ -106,11 +107,12 @@ void main() {
         alpha += (1.0 - alpha) * a;
         if (!depth_set && alpha >= 0.5) {
             depth_point = h;
+            depth_threshold = threshold;
             depth_set = true;
         }
         if (alpha >= 0.99) break;
     }
     if (alpha < alpha_cut()) discard;
-    out_color = vec4(debug_tint(color / alpha), alpha);
+    out_color = debug_thresholds() ? threshold_code(depth_threshold) : vec4(debug_tint(color / alpha), alpha);
     gl_FragDepth = window_depth(to_world * depth_point + origin);
 }

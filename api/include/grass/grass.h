@@ -445,7 +445,12 @@ typedef enum grass_view_flags {
     GRASS_VIEW_FLAG_DEBUG_TIERS = 1u << 1,
     /* Debugging: instead of grass, draw every planned instance as a flat box on the ground
      * in its tier's colour, the size of its cell or macro-cell. */
-    GRASS_VIEW_FLAG_DEBUG_CELLS = 1u << 2
+    GRASS_VIEW_FLAG_DEBUG_CELLS = 1u << 2,
+    /* Debugging and tests: every tier writes, instead of its colour, the density threshold
+     * of the blade it draws (16 bits: red = high byte, green = low byte, written so that an
+     * 8-bit sRGB target stores those bytes exactly) and its tier kind in blue (0 geometry,
+     * 128 volume, 255 image). Use a single-sampled target. */
+    GRASS_VIEW_FLAG_DEBUG_THRESHOLDS = 1u << 3
 } grass_view_flags;
 
 /* The camera and lights of one frame. */
