@@ -43,6 +43,15 @@ vec4 threshold_code(float threshold) {
                 srgb_byte_to_linear(blue), 1.0);
 }
 
+// The light of blades represented by one normal of a slice texel whose vertical component
+// is |n.y| (api/src/slice_rasterizer.cpp): the camera-facing sides of two-sided blades face
+// up for some blades and down for the others, so both lobes are lit and averaged (lighting
+// an averaged normal would cancel them and lose the sun).
+vec3 grass_lighting_two_lobes(vec3 albedo, vec3 n_up, vec3 n_down, float ambient_occlusion) {
+    float n_dot_l = 0.5 * (max(dot(n_up, frame.sun_direction.xyz), 0.0) + max(dot(n_down, frame.sun_direction.xyz), 0.0));
+    return albedo * (frame.ambient_color.rgb * ambient_occlusion + frame.sun_color.rgb * n_dot_l);
+}
+
 // The mirror bits of a cell (lemme eq. 6.4): white noise at the integer cell, bit 0 mirrors
 // x, bit 1 mirrors z. The same function as grass::mirror_bits (api/src/mirror_tiling.cpp).
 uint mirror_bits(uvec2 cell, uint seed) {

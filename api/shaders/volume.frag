@@ -98,10 +98,11 @@ void main() {
         vec4 normal_height = textureLod(slice_normal, coord, lod);
         vec3 nrm = normal_height.xyz * 2.0 - 1.0;
         nrm.xz *= s;
-        nrm = normalize(to_world * nrm);
-        if (dot(nrm, -world) < 0.0) nrm = -nrm;
+        if (dot(nrm.xz, -dir.xz) < 0.0) nrm.xz = -nrm.xz; // the side facing the camera
+        vec3 n_up = normalize(to_world * nrm);
+        vec3 n_down = normalize(to_world * vec3(nrm.x, -nrm.y, nrm.z));
         float ao = blade_ambient_occlusion(density, h.y, field.blade_params.x, field.blade_params.y);
-        vec3 lit = grass_lighting(albedo.rgb, nrm, ao);
+        vec3 lit = grass_lighting_two_lobes(albedo.rgb, n_up, n_down, ao);
         // Front to back (eq. 5.19-5.20).
         color += (1.0 - alpha) * a * lit;
         alpha += (1.0 - alpha) * a;

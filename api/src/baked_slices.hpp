@@ -34,7 +34,8 @@ struct SliceSet {
     // coverage-preserving mips of lemme eq. 4.11-4.15 and colour bled into transparent
     // texels (eq. 4.16).
     Vector<uint8_t> color;
-    // RGBA8 unorm: xyz = patch-space normal * 0.5 + 0.5, facing the slice's viewer side;
+    // RGBA8 unorm: xyz = patch-space normal * 0.5 + 0.5, facing the slice's viewer side (vertical
+    // slices: horizontally, with |y|: the blades' up and down lobes, see volume.frag);
     // a = height of the texel above the ground / height_patch_units (vertical slices), or
     // the blade height there (horizontal slice), for the blade ambient occlusion.
     Vector<uint8_t> normal;

@@ -87,6 +87,10 @@ void SliceRasterizer::draw_triangle(const RasterVertex& a, const RasterVertex& b
             const float facing = n[0] * toward_viewer_[0] + n[1] * toward_viewer_[1] + n[2] * toward_viewer_[2];
             const float sign = facing < 0.0f ? -1.0f : 1.0f;
             for (int ch = 0; ch < 3; ++ch) out[3 + ch] = sign * n[ch];
+            // Vertical slices: a blade's side facing the viewer has its up component up for
+            // some blades and down for others, which would cancel in the texel averages; the
+            // slice keeps |n.y| and the shader lights both lobes (volume.frag).
+            if (toward_viewer_[1] == 0.0f) out[4] = std::fabs(out[4]);
             out[6] = static_cast<float>(l0 * v[0]->height + l1 * v[1]->height + l2 * v[2]->height);
         }
     }

@@ -13,17 +13,17 @@ namespace {
 // regressions; the goal of the three-tier issue is tighter and not reached yet. Mean sRGB
 // over the pixels that are grass in all three renders:
 //   geometry coverage 0.211, (79.9, 106.2, 51.9)
-//   volume   coverage 0.214, (61.7, 86.5, 40.9): 19.7 levels darker
+//   volume   coverage 0.214, (69.0, 94.4, 44.0): 11.8 levels darker
 //   image    coverage 0.142, (66.0, 89.5, 52.1): 16.7 levels darker; a flat slice has no
 //            blades standing above the field's far edge, hence less coverage
-// The slices' direct light is the gap: with ambient light only the tiers agree within about
-// 6 levels. Each two-sided blade shows its camera-facing side, lit or not; a slice texel
-// has one averaged normal, and no single normal reproduces that average of Lambert terms.
+// With ambient light only the tiers agree within about 6 levels; the rest is direct light:
+// a slice texel keeps one normal for many two-sided blades (volume.frag lights its up and
+// down lobes, which took the volume from 19.7 to 11.8 levels).
 struct Tolerance {
     double colour;   // largest channel difference of the mean colour to geometry's, levels
     double coverage; // relative difference of the coverage to geometry's
 };
-constexpr Tolerance kVolume{23.0, 0.10};
+constexpr Tolerance kVolume{15.0, 0.10};
 constexpr Tolerance kImage{20.0, 0.35};
 
 class TierLightingTest : public RenderTest {
