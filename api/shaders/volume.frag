@@ -15,6 +15,73 @@ layout(location = 0) out vec4 out_color;
 
 const float kHuge = 1e30;
 
+// The ray and what it has gathered, shared by main() and composite().
+vec3 g_dir;
+vec3 g_size;
+mat3 g_to_world;
+vec3 g_origin;     // the instance corner relative to the camera
+vec2 g_field_cells;
+float g_n;         // slices per axis
+float g_pixel_angle;
+vec2 g_texels;
+vec3 g_color = vec3(0.0);
+float g_alpha = 0.0;
+vec3 g_depth_point;
+bool g_depth_set = false;
+float g_depth_threshold = 0.0; // the threshold of the blade where the ray turns opaque
+
+// Composites the hit of the ray at `h` (cuboid cells, distance t) with a slice: across x
+// (kind 0), across z (kind 1), or the horizontal slice near the ground (kind 2, the set's
+// last layer). Front to back (eq. 5.19-5.20).
+void composite(vec3 h, float t, int kind) {
+    vec2 cell = floor(h.xz);
+    vec2 global = vec2(v_cell.xy) + cell;
+    if (any(lessThan(global, vec2(0.0))) || any(greaterThanEqual(global, g_field_cells - 0.5))) return;
+    vec2 s = mirror_signs(uvec2(global));
+    vec2 f = h.xz - cell;
+    vec2 m = vec2(s.x < 0.0 ? 1.0 - f.x : f.x, s.y < 0.0 ? 1.0 - f.y : f.y); // eq. 6.6
+    // The slice (layer) and the point on it, in the mirrored patch.
+    vec3 coord;
+    if (kind == 0) coord = vec3(m.y, h.y / g_size.y, clamp(floor(m.x * g_n), 0.0, g_n - 1.0));
+    else if (kind == 1) coord = vec3(m.x, h.y / g_size.y, g_n + clamp(floor(m.y * g_n), 0.0, g_n - 1.0));
+    else coord = vec3(m.x, m.y, 2.0 * g_n);
+    // Texels are 3-4x denser across a slice than up it (256 x 64 over 1 x ~0.85 cells);
+    // the level follows the coarser, vertical density so blades keep their height.
+    float lod = log2(max(t * g_pixel_angle * g_texels.y / g_size.y, 1.0)); // t: distance in cells
+    float threshold = textureLod(slice_threshold, coord, lod).r;
+    if (threshold <= 0.0) return;
+    vec4 albedo = textureLod(slice_color, coord, lod);
+    if (albedo.a <= 0.0) return;
+
+    vec3 world = g_to_world * h + g_origin;
+    float density = local_density(vec2(v_cell.xy) + h.xz);
+    float a = albedo.a * tier_blade_opacity(length(world), threshold, density);
+    if (a <= 0.0) return;
+    vec4 normal_height = textureLod(slice_normal, coord, lod);
+    vec3 nrm = normal_height.xyz * 2.0 - 1.0;
+    nrm.xz *= s;
+    vec3 lit;
+    float ao;
+    if (kind == 2) {
+        // The horizontal slice: the upper sides of the blades seen from above.
+        ao = blade_ambient_occlusion(density, normal_height.w * g_size.y, field.blade_params.x, field.blade_params.y);
+        lit = grass_lighting(albedo.rgb, normalize(g_to_world * nrm), ao);
+    } else {
+        if (dot(nrm.xz, -g_dir.xz) < 0.0) nrm.xz = -nrm.xz; // the side facing the camera
+        vec3 n_up = normalize(g_to_world * nrm);
+        vec3 n_down = normalize(g_to_world * vec3(nrm.x, -nrm.y, nrm.z));
+        ao = blade_ambient_occlusion(density, h.y, field.blade_params.x, field.blade_params.y);
+        lit = grass_lighting_two_lobes(albedo.rgb, n_up, n_down, ao);
+    }
+    g_color += (1.0 - g_alpha) * a * lit;
+    g_alpha += (1.0 - g_alpha) * a;
+    if (!g_depth_set && g_alpha >= 0.5) {
+        g_depth_point = h;
+        g_depth_threshold = threshold;
+        g_depth_set = true;
+    }
+}
+
 void main() {
     vec3 ray = v_local - v_camera_local;
     // The back face ends the ray; a front face leaves the work to the back face behind it.
@@ -48,20 +115,26 @@ void main() {
     float tx = dir.x != 0.0 ? ((jx + 0.5) / n - v_camera_local.x) / dir.x : kHuge;
     float tz = dir.z != 0.0 ? ((jz + 0.5) / n - v_camera_local.z) / dir.z : kHuge;
 
-    mat3 to_world = mat3(field.patch_to_world);
-    vec3 origin = to_world * (-v_camera_local); // the instance corner relative to the camera
+    g_dir = dir;
+    g_size = size;
+    g_to_world = mat3(field.patch_to_world);
+    g_origin = g_to_world * (-v_camera_local);
+    g_n = n;
+    g_texels = texels;
+    g_pixel_angle = pixel_angle;
+    g_depth_point = v_local;
     // The ray goes on past this carrier into the neighbouring cells (the same patch, mirrored
     // by their own cells' bits) until it leaves the blade layer: a ray that crosses several
     // carriers is then composited whole by the nearest of them, and no seam shows where each
     // carrier alone would see too little grass. It stops at the field's edges.
-    vec2 field_cells = 1.0 / field.map_params.xy;
+    g_field_cells = 1.0 / field.map_params.xy;
     float t_layer = dir.y < 0.0 ? (0.0 - v_camera_local.y) / dir.y : dir.y > 0.0 ? (size.y - v_camera_local.y) / dir.y : kHuge;
     float t_end = max(t_out, min(t_layer, t_out + 4.0 / max(length(dir.xz), 1e-3)));
-    vec3 color = vec3(0.0);
-    float alpha = 0.0;
-    vec3 depth_point = v_local;
-    bool depth_set = false;
-    float depth_threshold = 0.0; // the threshold of the blade where the ray turns opaque
+    // The horizontal slice lies near the ground (boulanger 3.3: seen only from above, it fills
+    // what the vertical slices leave open there); a downward ray meets it once.
+    float ground_y = 0.1 * size.y;
+    float t_ground = dir.y < 0.0 ? (ground_y - v_camera_local.y) / dir.y : kHuge;
+    bool ground_pending = t_ground >= t_in && t_ground <= t_end;
     // Every slice plane the ray crosses in the cuboid and the 4 cells beyond it is crossed
     // once: a fixed bound from the slice count and the macro-cell size, so a grazing ray
     // cannot loop for ever.
@@ -70,50 +143,19 @@ void main() {
         bool across_x = tx < tz;
         float t = across_x ? tx : tz;
         if (t > t_end) break;
+        if (ground_pending && t_ground <= t) {
+            composite(v_camera_local + dir * t_ground, t_ground, 2);
+            ground_pending = false;
+            if (g_alpha >= 0.99) break;
+        }
         if (across_x) tx += step_x; else tz += step_z;
         vec3 h = v_camera_local + dir * t;
         if (t < t_in || h.y < 0.0 || h.y > size.y) continue;
-
-        vec2 cell = floor(h.xz);
-        vec2 global = vec2(v_cell.xy) + cell;
-        if (any(lessThan(global, vec2(0.0))) || any(greaterThanEqual(global, field_cells - 0.5))) continue;
-        vec2 s = mirror_signs(uvec2(global));
-        vec2 f = h.xz - cell;
-        vec2 m = vec2(s.x < 0.0 ? 1.0 - f.x : f.x, s.y < 0.0 ? 1.0 - f.y : f.y); // eq. 6.6
-        // The slice (layer) and the point on it, in the mirrored patch.
-        float layer = across_x ? clamp(floor(m.x * n), 0.0, n - 1.0) : n + clamp(floor(m.y * n), 0.0, n - 1.0);
-        vec3 coord = vec3(across_x ? m.y : m.x, h.y / size.y, layer);
-        // Texels are 3-4x denser across a slice than up it (256 x 64 over 1 x ~0.85 cells);
-        // the level follows the coarser, vertical density so blades keep their height.
-        float lod = log2(max(t * pixel_angle * texels.y / size.y, 1.0)); // t: distance in cells
-        float threshold = textureLod(slice_threshold, coord, lod).r;
-        if (threshold <= 0.0) continue;
-        vec4 albedo = textureLod(slice_color, coord, lod);
-        if (albedo.a <= 0.0) continue;
-
-        vec3 world = to_world * h + origin;
-        float density = local_density(vec2(v_cell.xy) + h.xz);
-        float a = albedo.a * tier_blade_opacity(length(world), threshold, density);
-        if (a <= 0.0) continue;
-        vec4 normal_height = textureLod(slice_normal, coord, lod);
-        vec3 nrm = normal_height.xyz * 2.0 - 1.0;
-        nrm.xz *= s;
-        if (dot(nrm.xz, -dir.xz) < 0.0) nrm.xz = -nrm.xz; // the side facing the camera
-        vec3 n_up = normalize(to_world * nrm);
-        vec3 n_down = normalize(to_world * vec3(nrm.x, -nrm.y, nrm.z));
-        float ao = blade_ambient_occlusion(density, h.y, field.blade_params.x, field.blade_params.y);
-        vec3 lit = grass_lighting_two_lobes(albedo.rgb, n_up, n_down, ao);
-        // Front to back (eq. 5.19-5.20).
-        color += (1.0 - alpha) * a * lit;
-        alpha += (1.0 - alpha) * a;
-        if (!depth_set && alpha >= 0.5) {
-            depth_point = h;
-            depth_threshold = threshold;
-            depth_set = true;
-        }
-        if (alpha >= 0.99) break;
+        composite(h, t, across_x ? 0 : 1);
+        if (g_alpha >= 0.99) break;
     }
-    if (alpha < alpha_cut()) discard;
-    out_color = debug_thresholds() ? threshold_code(depth_threshold) : vec4(debug_tint(color / alpha), alpha);
-    gl_FragDepth = window_depth(to_world * depth_point + origin);
+    if (ground_pending && g_alpha < 0.99) composite(v_camera_local + dir * t_ground, t_ground, 2);
+    if (g_alpha < alpha_cut()) discard;
+    out_color = debug_thresholds() ? threshold_code(g_depth_threshold) : vec4(debug_tint(g_color / g_alpha), g_alpha);
+    gl_FragDepth = window_depth(g_to_world * g_depth_point + g_origin);
 }

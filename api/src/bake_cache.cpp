@@ -183,10 +183,10 @@ bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceS
             h.height > kMaxSize) {
             break;
         }
-        if (h.layers != (h.slices_per_axis ? 2 * h.slices_per_axis : 1)) break;
+        if (h.layers != (h.slices_per_axis ? 2 * h.slices_per_axis + 1 : 1)) break;
         if (h.mip_levels != full_mip_count(h.width, h.height)) break;
         if (!(h.height_patch_units > 0.0f) || !std::isfinite(h.height_patch_units)) break;
-        // Bounded above: at most 1024 * 2 layers of 16384^2 * 4 / 3 texels, no overflow.
+        // Bounded above: at most 1024 * 2 + 1 layers of 16384^2 * 4 / 3 texels, no overflow.
         const uint64_t texels = h.layers * slice_layer_texels(h.width, h.height, h.mip_levels);
         if (h.texels != texels) break;
         if (static_cast<uint64_t>(length) != kHeaderBytes + texels * 10) break; // checked before allocating

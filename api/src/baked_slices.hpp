@@ -13,8 +13,10 @@ namespace grass {
 
 // One set of slices: the vertical slices of a volume tier with N slices per axis
 // (layers 0..N-1 are orthogonal to x at x = (i + 0.5) / N, layers N..2N-1 orthogonal to z at
-// z = (i + 0.5) / N, each holding the blades inside its slab [i/N, (i+1)/N]), or the single
-// horizontal slice (N = 0, one layer, the whole patch seen from above).
+// z = (i + 0.5) / N, each holding the blades inside its slab [i/N, (i+1)/N], and layer 2N the
+// horizontal slice at the set's size, which the volume shows near the ground for views from
+// above, after boulanger2006 3.3), or the image tier's horizontal slice alone (N = 0, one
+// layer, the whole patch seen from above).
 //
 // Texel (s, t) of a vertical slice orthogonal to x: s = z in [0, 1) across the patch, t = y
 // from 0 (ground, row 0) to `height_patch_units` (top row); orthogonal to z: s = x. Texel
@@ -25,7 +27,7 @@ struct SliceSet {
         : color(StlAllocator<uint8_t>(host)), normal(StlAllocator<uint8_t>(host)),
           threshold(StlAllocator<uint16_t>(host)) {}
     uint32_t slices_per_axis = 0; // N; 0 = the horizontal slice
-    uint32_t layers = 0;          // 2N, or 1
+    uint32_t layers = 0;          // 2N + 1, or 1
     uint32_t width = 0;           // texels of mip 0 along s
     uint32_t height = 0;          // texels of mip 0 along t
     uint32_t mip_levels = 0;

@@ -155,7 +155,9 @@ void draw_view(const Vector<Triangle>& triangles, const View& view, double heigh
 
 View layer_view(uint32_t slices_per_axis, uint32_t layer, double height_units) {
     View view{};
-    if (slices_per_axis == 0) {
+    // The horizontal slice: the image tier's only layer, and the last layer of a volume
+    // tier's set (boulanger2006 3.3 keeps one in the volume for views from above).
+    if (slices_per_axis == 0 || layer == 2 * slices_per_axis) {
         view.depth_axis = 1;
         view.clip_slab = false;
         view.s_axis = 0;
@@ -222,7 +224,7 @@ void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t widt
     default_sizes(slices_per_axis, &width, &height);
     const double h = patch_height(patch);
     out->slices_per_axis = slices_per_axis;
-    out->layers = slices_per_axis ? 2 * slices_per_axis : 1;
+    out->layers = slices_per_axis ? 2 * slices_per_axis + 1 : 1;
     out->width = width;
     out->height = height;
     out->mip_levels = full_mip_count(width, height);

@@ -230,7 +230,7 @@ grass_result GlBackend::upload_slices(uint32_t slot, const SliceSet& set) {
     // is an internal error, caught here rather than as a read past the arrays.
     uint32_t full_chain = 1;
     for (uint32_t larger = set.width > set.height ? set.width : set.height; larger > 1; larger >>= 1) ++full_chain;
-    const bool shape_ok = set.width > 0 && set.height > 0 && set.layers == (n == 0 ? 1u : 2 * n) &&
+    const bool shape_ok = set.width > 0 && set.height > 0 && set.layers == (n == 0 ? 1u : 2 * n + 1) &&
                           set.mip_levels >= 1 && set.mip_levels <= full_chain;
     if (!shape_ok || set.color.size() < total_texels * 4 || set.normal.size() < total_texels * 4 ||
         set.threshold.size() < total_texels) {

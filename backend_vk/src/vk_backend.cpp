@@ -241,10 +241,10 @@ grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
     fresh.slices_per_axis = n;
     const bool empty = set.width == 0 || set.height == 0 || set.layers == 0 || set.mip_levels == 0;
     const uint64_t texels = empty ? 0 : set.offset(set.layers, 0); // every level of every layer
-    if (set.layers != (n ? 2 * n : 1) && !empty) {
+    if (set.layers != (n ? 2 * n + 1 : 1) && !empty) {
         return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NONE,
                           "%s: baked slices of the patch in slot %u have %u layers; N = %u needs %u", function, slot,
-                          set.layers, n, n ? 2 * n : 1);
+                          set.layers, n, n ? 2 * n + 1 : 1);
     }
     if (set.color.size() != texels * 4 || set.normal.size() != texels * 4 || set.threshold.size() != texels) {
         return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NONE,

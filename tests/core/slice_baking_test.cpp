@@ -105,7 +105,7 @@ TEST_F(SliceBakingTest, BakingIsDeterministicAndPinned) {
     EXPECT_TRUE(same_bytes(h1, h2));
     std::printf("[ hashes   ] N = 8: 0x%016llx, horizontal: 0x%016llx\n", (unsigned long long)a.content_hash,
                 (unsigned long long)h1.content_hash);
-    EXPECT_EQ(a.content_hash, 0xbc08c71d8eda410dull) << std::hex << "actual 0x" << a.content_hash;
+    EXPECT_EQ(a.content_hash, 0x85b31890982c894full) << std::hex << "actual 0x" << a.content_hash;
     EXPECT_EQ(h1.content_hash, 0x13e3b4240fe52487ull) << std::hex << "actual 0x" << h1.content_hash;
 }
 
@@ -113,7 +113,7 @@ TEST_F(SliceBakingTest, LayoutFollowsTheContract) {
     SliceSet v(host()), h(host()), small(host());
     bake(8, &v);
     EXPECT_EQ(v.slices_per_axis, 8u);
-    EXPECT_EQ(v.layers, 16u);
+    EXPECT_EQ(v.layers, 17u); // 2N vertical + the horizontal slice
     EXPECT_EQ(v.width, 256u);
     EXPECT_EQ(v.height, 64u);
     EXPECT_EQ(v.mip_levels, 9u); // 256 x 64 down to 1 x 1
@@ -125,9 +125,9 @@ TEST_F(SliceBakingTest, LayoutFollowsTheContract) {
     }
     EXPECT_EQ(layer_texels, 21847u); // 16384+4096+1024+256+64+16+4+2+1
     EXPECT_EQ(v.offset(3, 2), 3 * layer_texels + 256 * 64 + 128 * 32);
-    EXPECT_EQ(v.color.size(), 16 * layer_texels * 4);
-    EXPECT_EQ(v.normal.size(), 16 * layer_texels * 4);
-    EXPECT_EQ(v.threshold.size(), 16 * layer_texels);
+    EXPECT_EQ(v.color.size(), 17 * layer_texels * 4);
+    EXPECT_EQ(v.normal.size(), 17 * layer_texels * 4);
+    EXPECT_EQ(v.threshold.size(), 17 * layer_texels);
     EXPECT_EQ(v.level_width(8), 1u);
     EXPECT_EQ(v.level_height(7), 1u);
 
@@ -140,9 +140,9 @@ TEST_F(SliceBakingTest, LayoutFollowsTheContract) {
     EXPECT_EQ(h.offset(1, 0), 21845u);
 
     bake(1, &small, 32, 16);
-    EXPECT_EQ(small.layers, 2u);
+    EXPECT_EQ(small.layers, 3u);
     EXPECT_EQ(small.mip_levels, 6u);
-    EXPECT_EQ(small.threshold.size(), 2u * (512 + 128 + 32 + 8 + 2 + 1));
+    EXPECT_EQ(small.threshold.size(), 3u * (512 + 128 + 32 + 8 + 2 + 1));
 }
 
 // lemme eq. 4.11, 4.13-4.15 against eq. 4.7-4.8: the coverage at a_r = 0.5 of every level

@@ -56,6 +56,36 @@ TEST_P(VolumeGrazingTest, AGrazingViewIntoALargeMacroCellFinishesWithoutHoles) {
     EXPECT_GT(level, 0.97);
 }
 
+// Seen from straight above the vertical slices are edge-on; the horizontal slice near the
+// ground (the last layer of a volume tier's set, after boulanger 3.3) fills in.
+TEST_P(VolumeGrazingTest, FromStraightAboveTheVolumeCoversLikeTheBlades) {
+    const double eye[3] = {8.0, 3.0, 8.0}, target[3] = {8.0, 0.0, 8.0001};
+    auto top_share = [&](grass_tier_kind kind) {
+        grass_tier_desc tier{kind, kind == GRASS_TIER_VOLUME ? 8u : 0u};
+        grass_lod_test tests[2] = {};
+        tests[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
+        tests[0].end = INFINITY;
+        tests[1].kind = GRASS_LOD_TEST_MACRO_CELL;
+        tests[1].max_macro_cells = 1;
+        grass_field_desc d = field_desc(64);
+        d.tiers = &tier;
+        d.tier_count = 1;
+        d.lod_tests = tests;
+        d.lod_test_count = kind == GRASS_TIER_GEOMETRY ? 1 : 2;
+        const grass_field_id f = make_field(d);
+        const auto image = render(view(eye, target, 30.0f));
+        save(image, "above_" + std::to_string(int(kind)));
+        EXPECT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
+        uint8_t sky[3];
+        expected_sky(host->target(), sky);
+        return grass_share(image, sky, 0, 0, image.width, image.height);
+    };
+    const double blades = top_share(GRASS_TIER_GEOMETRY), volume = top_share(GRASS_TIER_VOLUME);
+    std::printf("[ measured ] %s: from above, blades cover %.3f, the volume %.3f\n", backend_name(GetParam()).c_str(),
+                blades, volume);
+    EXPECT_GT(volume, 0.85 * blades);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, VolumeGrazingTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });
 
