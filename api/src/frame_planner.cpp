@@ -2,6 +2,7 @@
 
 #include "design_map.hpp"
 #include "lod_setup.hpp"
+#include "tier_transitions.hpp"
 #include "validate.hpp"
 #include "view_culling.hpp"
 
@@ -249,6 +250,10 @@ private:
             plan.draws.push_back(draw);
             drew = true;
             const uint64_t triangles_per_blade = pd.indices_per_blade / 3;
+            TierBand bands[GRASS_MAX_TIERS];
+            for (uint32_t b = 0; b < lod.tier_count; ++b) {
+                bands[b] = {field_.bands[b][0], field_.bands[b][1], field_.bands[b][2], field_.bands[b][3]};
+            }
             for (const PlanCandidate& c : candidates) {
                 plan.instances.push_back(c.instance);
                 const uint64_t cells = uint64_t(c.instance.count[0]) * c.instance.count[1];
@@ -256,7 +261,19 @@ private:
                 plan.stats.cells[kind] += cells;
                 plan.stats.macro_cells[kind] += cells > 1 ? 1 : 0;
                 if (kind == GRASS_TIER_GEOMETRY) {
-                    const uint64_t passing = blades_passing(c.density, pd.blade_count);
+                    // The blades this tier draws at the cell's centre: those whose r =
+                    // threshold / density falls in its interval (tier_transitions.hpp).
+                    const float d = static_cast<float>(std::sqrt(c.distance2));
+                    float total = 0.0f, lo = 0.0f, self = 0.0f;
+                    for (uint32_t b = 0; b < lod.tier_count; ++b) {
+                        const float w = band_weight(bands[b], d);
+                        total += w;
+                        if (b > t) lo += w;
+                        if (b == t) self = w;
+                    }
+                    const double share_lo = total > 0.0f ? lo / total : 0.0, share_hi = total > 0.0f ? (lo + self) / total : 0.0;
+                    const uint64_t passing = blades_passing(c.density * share_hi, pd.blade_count) -
+                                             blades_passing(c.density * share_lo, pd.blade_count);
                     plan.stats.cells_drawn += 1;
                     plan.stats.blades_submitted += pd.blade_count;
                     plan.stats.blades_drawn += passing;

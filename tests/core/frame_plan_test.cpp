@@ -164,6 +164,7 @@ TEST_F(PlanTest, AFieldTenThousandKilometresOutPlansTheSameCameraRelativeOrigins
 
 TEST_F(PlanTest, StatsCountBladesThroughTheDensityThresholds) {
     grass_field_desc d = field_desc(8);
+    geometry_only(&d, 50.0f); // no transition zone: every visible blade is a blade
     d.density = 0.5f;
     make_field(d);
     const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
@@ -175,6 +176,19 @@ TEST_F(PlanTest, StatsCountBladesThroughTheDensityThresholds) {
     EXPECT_EQ(s.blades_drawn, 64u * 192u);
     EXPECT_EQ(s.triangles, s.blades_drawn * 8u);
     EXPECT_EQ(s.fields_drawn, 1u);
+}
+
+TEST_F(PlanTest, StatsCountOnlyTheGeometryTiersShareInATransitionZone) {
+    grass_field_desc d = field_desc(8); // default setup: geometry fades out over 1.25..5 m
+    make_field(d);
+    const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
+    plan(test_view(eye, target));
+    grass_frame_stats s{};
+    ASSERT_EQ(grass_get_frame_stats(ctx, &s), GRASS_SUCCESS);
+    EXPECT_EQ(s.blades_submitted, 64u * 384u);
+    // About 3.5 m away the geometry tier holds (5 - 3.5) / 3.75 = 40% of the blades.
+    EXPECT_GT(s.blades_drawn, 64u * 384u * 30 / 100);
+    EXPECT_LT(s.blades_drawn, 64u * 384u * 45 / 100);
 }
 
 TEST_F(PlanTest, ZeroDensityDrawsNoBlades) {

@@ -485,8 +485,9 @@ typedef struct grass_frame_stats {
     uint64_t nodes_visited;      /* quadtree nodes the traversal reached */
     uint64_t cells_drawn;        /* geometry-tier patch instances (cells) */
     uint64_t blades_submitted;   /* cells_drawn x blades per patch */
-    uint64_t blades_drawn;       /* blades whose threshold passes the density at their cell's
-                                    centre: exact without a map, an estimate with one */
+    uint64_t blades_drawn;       /* blades the geometry tier draws, from the density and the
+                                    tier transitions at each cell's centre: exact without a map
+                                    and away from transition zones, an estimate elsewhere */
     uint64_t triangles;          /* triangles of the drawn blades */
     double plan_ms;              /* CPU time of the frame plan */
     uint64_t lod_test_calls;     /* lod test evaluations */
