@@ -63,9 +63,12 @@ void composite(vec3 h, float t, int kind) {
     vec3 lit;
     float ao;
     if (kind == 2) {
-        // The horizontal slice: the upper sides of the blades seen from above.
+        // The horizontal slice holds the blades' upper sides; lit like the vertical slices'
+        // blades (both lobes averaged), or it would outshine them wherever a ray reaches it,
+        // as in transition zones where each tier draws only part of the blades.
         ao = blade_ambient_occlusion(density, normal_height.w * g_size.y, field.blade_params.x, field.blade_params.y);
-        lit = grass_lighting(albedo.rgb, normalize(g_to_world * nrm), ao);
+        lit = grass_lighting_two_lobes(albedo.rgb, normalize(g_to_world * nrm),
+                                       normalize(g_to_world * vec3(nrm.x, -nrm.y, nrm.z)), ao);
     } else {
         if (dot(nrm.xz, -g_dir.xz) < 0.0) nrm.xz = -nrm.xz; // the side facing the camera
         vec3 n_up = normalize(g_to_world * nrm);
