@@ -8,14 +8,9 @@ cd "$(dirname "$0")/.."
 render="${1:-build}/samples/grass_render/grass-render"
 scene=samples/grass_render/scenes/football.json
 mkdir -p docs/images/tiers
-cameras=(
-  "high 47.5,60,-40 47.5,0,80"
-  "player 47.5,1.7,6 47.5,0,60"
-  "ant 47.3,0.05,6 47.3,0.04,20"
-  "grazing 47.3,3,-2 47.3,2.9,400"
-)
+source scripts/football-cameras.sh
 for backend in gl vk; do
-  for c in "${cameras[@]}"; do
+  for c in "${football_cameras[@]}"; do
     read -r name eye target <<<"$c"
     for mode in plain tint; do
       flags=()

@@ -68,6 +68,23 @@ grass_field_desc RenderTest::field_desc(uint32_t cells) const {
     return d;
 }
 
+grass_field_desc RenderTest::solo_tier_field(uint32_t cells, grass_tier_kind kind, uint32_t slices,
+                                             uint32_t max_macro_cells) {
+    solo_tier = grass_tier_desc{kind, slices};
+    solo_tests[0] = grass_lod_test{};
+    solo_tests[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
+    solo_tests[0].end = INFINITY;
+    solo_tests[1] = grass_lod_test{};
+    solo_tests[1].kind = GRASS_LOD_TEST_MACRO_CELL;
+    solo_tests[1].max_macro_cells = max_macro_cells;
+    grass_field_desc d = field_desc(cells);
+    d.tiers = &solo_tier;
+    d.tier_count = 1;
+    d.lod_tests = solo_tests;
+    d.lod_test_count = kind == GRASS_TIER_GEOMETRY ? 1 : 2;
+    return d;
+}
+
 grass_field_id RenderTest::make_field(grass_field_desc d) {
     grass_field_id f{};
     EXPECT_EQ(grass_create_field(ctx, &d, &f), GRASS_SUCCESS) << log;

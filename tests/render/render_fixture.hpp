@@ -32,6 +32,9 @@ protected:
     // A square field of the default patch drawn by one geometry tier (blades) out to 60 m:
     // the tests of the blade tier's behaviour. Tests of the other tiers set their own.
     grass_field_desc field_desc(uint32_t cells) const;
+    // A square field drawn by one tier alone at every distance, in macro-cells of up to
+    // `max_macro_cells` (volume and image tiers).
+    grass_field_desc solo_tier_field(uint32_t cells, grass_tier_kind kind, uint32_t slices, uint32_t max_macro_cells);
     grass_view_desc view(const double eye[3], const double target[3], float fovy_degrees = 50.0f) const;
     grass_host::Image render(const grass_view_desc& v, const grass_host::Occluder* occluder = nullptr);
     void save(const grass_host::Image& image, const std::string& tag) const;
@@ -42,6 +45,8 @@ protected:
     std::string log;
     grass_tier_desc blade_tier{GRASS_TIER_GEOMETRY, 0};
     grass_lod_test blade_band{};
+    grass_tier_desc solo_tier{GRASS_TIER_GEOMETRY, 0};
+    grass_lod_test solo_tests[2] = {};
 };
 
 // The clear colour as the hosts write it (linear -> sRGB 8-bit).

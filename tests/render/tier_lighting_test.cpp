@@ -29,19 +29,7 @@ constexpr Tolerance kImage{20.0, 0.35};
 class TierLightingTest : public RenderTest {
 protected:
     grass_host::Image render_with(grass_tier_kind kind, uint32_t slices) {
-        grass_tier_desc tier{kind, slices};
-        grass_lod_test band{};
-        band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
-        band.end = INFINITY;
-        grass_lod_test macro{};
-        macro.kind = GRASS_LOD_TEST_MACRO_CELL;
-        macro.max_macro_cells = 1;
-        grass_lod_test tests[2] = {band, macro};
-        grass_field_desc d = field_desc(8); // 2 m x 2 m
-        d.tiers = &tier;
-        d.tier_count = 1;
-        d.lod_tests = tests;
-        d.lod_test_count = kind == GRASS_TIER_GEOMETRY ? 1 : 2;
+        const grass_field_desc d = solo_tier_field(8, kind, slices, 1); // 2 m x 2 m
         const grass_field_id f = make_field(d);
         // About 9 m away, 1.6 m up: "distant" cells seen at a walking-height angle.
         const double eye[3] = {1.0, 1.6, -8.0}, target[3] = {1.0, 0.0, 1.0};

@@ -13,17 +13,8 @@ protected:
     // The field's share of grass in the rows below the horizon, drawn by `kind` alone with
     // macro-cells of up to 64 cells: the whole 64 x 64 field is one instance.
     double share_below_horizon(grass_tier_kind kind, const double eye[3], const double target[3]) {
-        grass_tier_desc tier{kind, kind == GRASS_TIER_VOLUME ? 8u : 0u};
-        grass_lod_test tests[2] = {};
-        tests[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
-        tests[0].end = INFINITY;
-        tests[1].kind = GRASS_LOD_TEST_MACRO_CELL;
-        tests[1].max_macro_cells = 64;
-        grass_field_desc d = field_desc(64); // 16 m x 16 m
-        d.tiers = &tier;
-        d.tier_count = 1;
-        d.lod_tests = tests;
-        d.lod_test_count = kind == GRASS_TIER_GEOMETRY ? 1 : 2;
+        // The whole 16 m x 16 m field is one instance.
+        const grass_field_desc d = solo_tier_field(64, kind, kind == GRASS_TIER_VOLUME ? 8u : 0u, 64);
         const grass_field_id f = make_field(d);
         const auto image = render(view(eye, target, 40.0f));
         save(image, std::to_string(int(kind)));
@@ -61,17 +52,7 @@ TEST_P(VolumeGrazingTest, AGrazingViewIntoALargeMacroCellFinishesWithoutHoles) {
 TEST_P(VolumeGrazingTest, FromStraightAboveTheVolumeCoversLikeTheBlades) {
     const double eye[3] = {8.0, 3.0, 8.0}, target[3] = {8.0, 0.0, 8.0001};
     auto top_share = [&](grass_tier_kind kind) {
-        grass_tier_desc tier{kind, kind == GRASS_TIER_VOLUME ? 8u : 0u};
-        grass_lod_test tests[2] = {};
-        tests[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
-        tests[0].end = INFINITY;
-        tests[1].kind = GRASS_LOD_TEST_MACRO_CELL;
-        tests[1].max_macro_cells = 1;
-        grass_field_desc d = field_desc(64);
-        d.tiers = &tier;
-        d.tier_count = 1;
-        d.lod_tests = tests;
-        d.lod_test_count = kind == GRASS_TIER_GEOMETRY ? 1 : 2;
+        const grass_field_desc d = solo_tier_field(64, kind, kind == GRASS_TIER_VOLUME ? 8u : 0u, 1);
         const grass_field_id f = make_field(d);
         const auto image = render(view(eye, target, 30.0f));
         save(image, "above_" + std::to_string(int(kind)));
