@@ -17,8 +17,9 @@ Scene demo_scene() {
     s.field.cell_size = 0.25;
     s.field.base_transform[12] = -6.0; // centre the 12 m field on the origin
     s.field.base_transform[14] = -6.0;
-    // Blades over the whole lawn: one geometry tier out to 18 m (the volume and image tiers
-    // of the default setup draw nothing yet).
+    // The lawn is small enough to be blades everywhere: one geometry tier out to 18 m
+    // (Lemme's default setup would hand cells beyond 20 cells, 5 m, to the volume tier; the
+    // football scene shows all three tiers).
     s.tiers = {grass_tier_desc{GRASS_TIER_GEOMETRY, 0}};
     grass_lod_test band{};
     band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
