@@ -11,6 +11,7 @@ layout(location = 3) centroid in vec2 v_shape;
 layout(location = 4) in float v_density;
 layout(location = 5) in float v_opacity;
 layout(location = 6) flat in float v_threshold;
+layout(location = 7) flat in vec2 v_light;
 
 layout(location = 0) out vec4 out_color;
 
@@ -20,7 +21,10 @@ void main() {
     if (dot(n, to_camera) < 0.0) n = -n; // two-sided: light the side that faces the camera
 
     float ao = blade_ambient_occlusion(v_density, v_shape.y, field.blade_params.x, field.blade_params.y);
-    vec3 color = grass_lighting(v_albedo, n, ao);
+    // The light maps at the root, read only by a variant that has them (else the varying is
+    // dead and the products with 1 fold away).
+    vec2 light = has_map(GRASS_MAP_AMBIENT | GRASS_MAP_DIFFUSE) ? v_light : vec2(1.0);
+    vec3 color = grass_lighting(v_albedo, n, ao, light);
 
     // Distance to the nearest blade edge in pixels -> coverage. Without multisampling the
     // alpha is ignored (no blending); with alpha-to-coverage it antialiases the edges.

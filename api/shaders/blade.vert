@@ -21,6 +21,7 @@ layout(location = 3) centroid out vec2 v_shape; // x: u across the blade, y: hei
 layout(location = 4) out float v_density;
 layout(location = 5) out float v_opacity;
 layout(location = 6) flat out float v_threshold;
+layout(location = 7) flat out vec2 v_light;  // light_maps() at the root
 
 // A threshold of exactly 1 must pass a density of exactly 1 after bilinear filtering;
 // the smallest threshold (1 / 65536) must still fail a density of 0.
@@ -37,19 +38,24 @@ void main() {
 
     // Density thresholds (lemme 3.3) and tier transitions (boulanger 3.4, lemme 5.4): the
     // blade's opacity in this tier, from its threshold, the local density and its distance,
-    // all taken at the root so that the whole blade agrees.
-    float density = local_density(vec2(i_cell.xy) + root);
-    vec3 root_position = mat3(field.patch_to_world) * vec3(root.x, 0.0, root.y) + i_origin.xyz;
+    // all taken at the root so that the whole blade agrees. So are the design maps: the
+    // blade has one colour and one light, and every vertex moves up by the terrain height
+    // under the root (lemme eq. 6.13), so a bent blade is not sheared by the terrain.
+    vec2 cell_point = vec2(i_cell.xy) + root;
+    float density = local_density(cell_point);
+    float ground = terrain_height(cell_point);
+    vec3 root_position = mat3(field.patch_to_world) * vec3(root.x, ground, root.y) + i_origin.xyz;
     float opacity = tier_blade_opacity(length(root_position), a_threshold, density + kThresholdEpsilon);
 
-    vec3 position = mat3(field.patch_to_world) * p + i_origin.xyz;
+    vec3 position = mat3(field.patch_to_world) * vec3(p.x, p.y + ground, p.z) + i_origin.xyz;
     v_position = position;
     v_normal = mat3(field.patch_to_world) * n;
-    v_albedo = a_color.rgb;
+    v_albedo = modulate_color(a_color.rgb, cell_point);
     v_shape = vec2(a_root_shape.z, p.y);
     v_density = density;
     v_opacity = opacity;
     v_threshold = a_threshold;
+    v_light = light_maps(cell_point);
     gl_Position = frame.view_projection * vec4(position, 1.0);
     // Without multisampling a blade is all or nothing: drawn by the tier where its opacity
     // is at least one half (exactly one tier). With it, alpha-to-coverage fades it.

@@ -1,6 +1,23 @@
 // The data every grass shader sees: the uniform blocks of api/src/frame_plan.hpp (std140)
 // and the design maps. Shared by the GL and Vulkan backends (Vulkan: descriptor set 0).
 
+// Shader variants: GRASS_FEATURES says which design maps the field has (bit = 1 << MapRole,
+// api/src/backend.hpp), so a field samples only its own maps and one without maps runs the
+// code it ran before maps existed. Vulkan: a specialization constant (id 0) set per
+// pipeline; GL: the backend defines GRASS_FEATURES before this file. Either way the
+// compiler folds the tests below away.
+#define GRASS_MAP_DENSITY 1u
+#define GRASS_MAP_COLOR 2u
+#define GRASS_MAP_AMBIENT 4u
+#define GRASS_MAP_DIFFUSE 8u
+#define GRASS_MAP_HEIGHT 16u
+#ifdef VULKAN
+layout(constant_id = 0) const uint GRASS_FEATURES = 0u;
+#elif !defined(GRASS_FEATURES)
+#error "the GL backend must define GRASS_FEATURES (the draw's map feature mask)"
+#endif
+bool has_map(uint role_bit) { return (GRASS_FEATURES & role_bit) != 0u; }
+
 layout(std140, binding = 0) uniform Frame {
     mat4 view_projection;  // camera-relative world -> clip (the host's projection)
     vec4 sun_direction;    // xyz: unit vector towards the sun
@@ -12,27 +29,65 @@ layout(std140, binding = 0) uniform Frame {
 
 layout(std140, binding = 1) uniform Field {
     mat4 patch_to_world;   // patch units -> world metres; rotation x cell size, no translation
-    vec4 map_params;       // xy: map uv per cell, z: density (or map multiplier), w: 1 = density map bound
+    vec4 map_u;            // cell space -> map u: dot(map_u.xyz, vec3(x, z, 1)) (lemme's configTf)
+    vec4 map_v;            // ... and map v
+    vec4 map_params;       // x: density (uniform, or the maps' multiplier), y: height scale in patch units,
+                           // z: cells_x, w: cells_z of the field
     vec4 blade_params;     // x: ao impact (B_impact), y: ao height (B_height, patch units), z: tier kind,
                            // w: height of the baked slices (patch units)
-    uvec4 tiling;          // x: mirror seed, y: 1 = mirrored tiling on, z: slices per axis of this tier
+    uvec4 tiling;          // x: mirror seed, y: 1 = mirrored tiling on, z: slices per axis of this tier,
+                           // w: feature mask (the same as GRASS_FEATURES)
     vec4 bands[8];         // the field's tiers: begin, end, transition in, transition out (metres)
-    uvec4 tiers;           // x: this draw's tier, y: the field's tier count
+    uvec4 tiers;           // x: this draw's tier, y: the field's tier count, z: 1 = overlay tier (hilltops:
+                           // draws every blade the density passes, takes no share of the transitions)
     vec4 transition;       // x: crossover window (threshold units; 0 = exact)
 } field;
 
-layout(binding = 2) uniform sampler2D density_map;
+// Design maps (lemme 6.4), 16-bit unorm, bilinear, clamped; sample only those in GRASS_FEATURES.
+layout(binding = 2) uniform sampler2D density_map;  // r: density multiplier
+layout(binding = 6) uniform sampler2D color_map;    // rgb: linear colour, a: its weight (eq. 6.8)
+layout(binding = 7) uniform sampler2D ambient_map;  // r: ambient light incl. scene AO (eq. 6.9-6.10)
+layout(binding = 8) uniform sampler2D diffuse_map;  // r: diffuse light (shadows of the scenery)
+layout(binding = 9) uniform sampler2D height_map;   // r: terrain height / height scale
 // The tier's baked slices (api/src/baked_slices.hpp): vertical slices of a volume tier, or
 // the horizontal slice (one layer) of the image tier.
 layout(binding = 3) uniform sampler2DArray slice_color;     // sRGB albedo + coverage
 layout(binding = 4) uniform sampler2DArray slice_normal;    // xyz: normal * 0.5 + 0.5, w: height / slice height
 layout(binding = 5) uniform sampler2DArray slice_threshold; // r: density threshold (0 = no blade)
 
+// The design-map uv of a point of the field given in cells.
+vec2 map_uv(vec2 cell_point) {
+    vec3 p = vec3(cell_point, 1.0);
+    return vec2(dot(field.map_u.xyz, p), dot(field.map_v.xyz, p));
+}
+
 // The local density at a point of the field given in cells (bilinear density map).
 float local_density(vec2 cell_point) {
-    float density = field.map_params.z;
-    if (field.map_params.w > 0.5) density *= textureLod(density_map, cell_point * field.map_params.xy, 0.0).r;
+    float density = field.map_params.x;
+    if (has_map(GRASS_MAP_DENSITY)) density *= textureLod(density_map, map_uv(cell_point), 0.0).r;
     return density;
+}
+
+// The terrain height at a point of the field given in cells, in patch units above the
+// field's plane (lemme eq. 6.13, 6.16); 0 without a height map.
+float terrain_height(vec2 cell_point) {
+    if (!has_map(GRASS_MAP_HEIGHT)) return 0.0;
+    return field.map_params.y * textureLod(height_map, map_uv(cell_point), 0.0).r;
+}
+
+// Colour modulation (lemme eq. 6.8): C = A_c C_c + (1 - A_c) C_blade, in linear RGB.
+vec3 modulate_color(vec3 blade_color, vec2 cell_point) {
+    if (!has_map(GRASS_MAP_COLOR)) return blade_color;
+    vec4 c = textureLod(color_map, map_uv(cell_point), 0.0);
+    return mix(blade_color, c.rgb, c.a);
+}
+
+// The light maps at a point: x scales the ambient light (scene AO included), y the sun.
+vec2 light_maps(vec2 cell_point) {
+    vec2 l = vec2(1.0);
+    if (has_map(GRASS_MAP_AMBIENT)) l.x = textureLod(ambient_map, map_uv(cell_point), 0.0).r;
+    if (has_map(GRASS_MAP_DIFFUSE)) l.y = textureLod(diffuse_map, map_uv(cell_point), 0.0).r;
+    return l;
 }
 
 // Alpha below which a fragment is dropped: with multisampling alpha-to-coverage turns alpha

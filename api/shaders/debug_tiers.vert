@@ -31,7 +31,9 @@ void main() {
     vec2 xz = inset + c * (size - 2.0 * inset);
     // Just above the ground, finer tiers on top: in a transition zone two tiers share a cell.
     float kind = field.blade_params.z;
-    vec3 p = vec3(xz.x, 0.02 + 0.03 * (2.0 - kind), xz.y); // cells
+    // On a height map the corners follow the terrain like the image tier's quads.
+    float ground = terrain_height(vec2(i_cell.xy) + xz);
+    vec3 p = vec3(xz.x, 0.02 + 0.03 * (2.0 - kind) + ground, xz.y); // cells
     vec3 position = mat3(field.patch_to_world) * p + i_origin.xyz;
     v_color = tier_color(kind);
     gl_Position = frame.view_projection * vec4(position, 1.0);

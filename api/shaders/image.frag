@@ -52,5 +52,7 @@ void main() {
     if (dot(n, to_camera) < 0.0) n = -n;
     float height = mix(0.5, normal_height.w, sin_elevation) * field.blade_params.w;
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
-    out_color = debug_thresholds() ? threshold_code(threshold) : vec4(debug_tint(grass_lighting(albedo.rgb, n, ao)), alpha);
+    // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
+    vec3 color = grass_lighting(modulate_color(albedo.rgb, cell_point), n, ao, light_maps(cell_point));
+    out_color = debug_thresholds() ? threshold_code(threshold) : vec4(debug_tint(color), alpha);
 }

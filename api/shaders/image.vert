@@ -20,8 +20,12 @@ void main() {
     vec2 c = vec2(float(corner[v] & 1), float(corner[v] >> 1));
     vec2 local = c * vec2(i_cell.zw);
     // Above the ground (lemme 5.3): at half the blade height, where the grass surface is
-    // seen from afar; lower, the host's ground wins the depth test at a distance.
-    vec3 p = vec3(local.x, 0.5 * field.blade_params.w, local.y);
+    // seen from afar; lower, the host's ground wins the depth test at a distance. On a
+    // height map each corner is raised by the terrain under it (lemme 6.4.4): inside, the
+    // quad's two triangles interpolate the corners, flattening the terrain within an
+    // instance (the UNPLANARITY lod test keeps hilly instances small).
+    float ground = terrain_height(vec2(i_cell.xy) + local);
+    vec3 p = vec3(local.x, 0.5 * field.blade_params.w + ground, local.y);
     v_position = mat3(field.patch_to_world) * p + i_origin.xyz;
     v_local = local;
     v_first_cell = i_cell.xy;

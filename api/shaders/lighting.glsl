@@ -10,10 +10,13 @@ float blade_ambient_occlusion(float density, float height_over_ground, float imp
 }
 
 // light = I_ambient * AO * albedo + I_diffuse * albedo * max(0, N.L)   (eq. 6.9)
-// `n` is the normal of the side that faces the camera (two-sided material).
-vec3 grass_lighting(vec3 albedo, vec3 n, float ambient_occlusion) {
+// `n` is the normal of the side that faces the camera (two-sided material). `light` is
+// light_maps() at the point (blade_interface.glsl): x scales the ambient term (the ambient
+// map holds the scene's AO, eq. 6.10, AO_blade is `ambient_occlusion`), y the sun term (the
+// diffuse map's shadows). Without light maps it is (1, 1) and the products fold away.
+vec3 grass_lighting(vec3 albedo, vec3 n, float ambient_occlusion, vec2 light) {
     float n_dot_l = max(dot(n, frame.sun_direction.xyz), 0.0);
-    return albedo * (frame.ambient_color.rgb * ambient_occlusion + frame.sun_color.rgb * n_dot_l);
+    return albedo * (frame.ambient_color.rgb * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
 }
 
 // The debug view's tint of a tier (GRASS_VIEW_FLAG_DEBUG_TIERS = 2 in frame.params.y):
@@ -47,9 +50,10 @@ vec4 threshold_code(float threshold) {
 // is |n.y| (api/src/slice_rasterizer.cpp): the camera-facing sides of two-sided blades face
 // up for some blades and down for the others, so both lobes are lit and averaged (lighting
 // an averaged normal would cancel them and lose the sun).
-vec3 grass_lighting_two_lobes(vec3 albedo, vec3 n_up, vec3 n_down, float ambient_occlusion) {
+// `light` as for grass_lighting.
+vec3 grass_lighting_two_lobes(vec3 albedo, vec3 n_up, vec3 n_down, float ambient_occlusion, vec2 light) {
     float n_dot_l = 0.5 * (max(dot(n_up, frame.sun_direction.xyz), 0.0) + max(dot(n_down, frame.sun_direction.xyz), 0.0));
-    return albedo * (frame.ambient_color.rgb * ambient_occlusion + frame.sun_color.rgb * n_dot_l);
+    return albedo * (frame.ambient_color.rgb * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
 }
 
 // The mirror bits of a cell (lemme eq. 6.4): white noise at the integer cell, bit 0 mirrors

@@ -11,8 +11,11 @@ float band_weight(vec4 band, float d) {
 
 // Opacity of a blade (threshold in (0, 1]) drawn by this draw's tier at distance d (metres)
 // where the local density is `density`.
+// An overlay tier (field.tiers.z = 1: hilltops, lemme 6.4.6) takes no share of the
+// transitions: it draws every blade the density passes, fully opaque.
 float tier_blade_opacity(float d, float threshold, float density) {
     if (!(density > 0.0) || threshold > density) return 0.0;
+    if (field.tiers.z != 0u) return 1.0;
     uint tier = field.tiers.x, count = field.tiers.y;
     float total = 0.0, lo = 0.0, self_w = 0.0;
     for (uint t = 0u; t < count; ++t) {

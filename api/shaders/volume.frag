@@ -2,6 +2,8 @@
 // Volume tier (lemme2012 5.2, eq. 5.3-5.21): the view ray is cast through the grid of
 // implicit vertical slices of the (macro-)cell, each cell's slices mirrored as the cell is
 // (eq. 6.6), composited front to back until opaque; the fragment takes the depth of the hit.
+// On a height map (lemme 6.4.4, eq. 6.14-6.18) the carrier spans the terrain's height range
+// and every hit looks its slice up at its height above the terrain under it.
 #include "blade_interface.glsl"
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
@@ -10,6 +12,7 @@ layout(location = 0) in vec3 v_local;
 layout(location = 1) flat in vec3 v_camera_local;
 layout(location = 2) flat in vec3 v_face_normal;
 layout(location = 3) flat in uvec4 v_cell;
+layout(location = 4) flat in vec2 v_terrain; // lowest, highest terrain under the instance (patch units)
 
 layout(location = 0) out vec4 out_color;
 
@@ -30,10 +33,11 @@ vec3 g_depth_point;
 bool g_depth_set = false;
 float g_depth_threshold = 0.0; // the threshold of the blade where the ray turns opaque
 
-// Composites the hit of the ray at `h` (cuboid cells, distance t) with a slice: across x
+// Composites the hit of the ray at `hit` (cuboid cells, distance t) with a slice: across x
 // (kind 0), across z (kind 1), or the horizontal slice near the ground (kind 2, the set's
-// last layer). Front to back (eq. 5.19-5.20).
-void composite(vec3 h, float t, int kind) {
+// last layer). Front to back (eq. 5.19-5.20). `h` is the hit in the slices' frame: its y is
+// the height above the terrain under it (eq. 6.18; the hit itself without a height map).
+void composite(vec3 h, vec3 hit, float t, int kind) {
     vec2 cell = floor(h.xz);
     vec2 global = vec2(v_cell.xy) + cell;
     if (any(lessThan(global, vec2(0.0))) || any(greaterThanEqual(global, g_field_cells - 0.5))) return;
@@ -53,10 +57,14 @@ void composite(vec3 h, float t, int kind) {
     vec4 albedo = textureLod(slice_color, coord, lod);
     if (albedo.a <= 0.0) return;
 
-    vec3 world = g_to_world * h + g_origin;
-    float density = local_density(vec2(v_cell.xy) + h.xz);
+    vec3 world = g_to_world * hit + g_origin;
+    vec2 cell_point = vec2(v_cell.xy) + h.xz;
+    float density = local_density(cell_point);
     float a = albedo.a * tier_blade_opacity(length(world), threshold, density);
     if (a <= 0.0) return;
+    // The design maps at the hit (lemme 6.4.2-6.4.3).
+    vec3 color = modulate_color(albedo.rgb, cell_point);
+    vec2 light = light_maps(cell_point);
     vec4 normal_height = textureLod(slice_normal, coord, lod);
     vec3 nrm = normal_height.xyz * 2.0 - 1.0;
     nrm.xz *= s;
@@ -67,19 +75,19 @@ void composite(vec3 h, float t, int kind) {
         // blades (both lobes averaged), or it would outshine them wherever a ray reaches it,
         // as in transition zones where each tier draws only part of the blades.
         ao = blade_ambient_occlusion(density, normal_height.w * g_size.y, field.blade_params.x, field.blade_params.y);
-        lit = grass_lighting_two_lobes(albedo.rgb, normalize(g_to_world * nrm),
-                                       normalize(g_to_world * vec3(nrm.x, -nrm.y, nrm.z)), ao);
+        lit = grass_lighting_two_lobes(color, normalize(g_to_world * nrm),
+                                       normalize(g_to_world * vec3(nrm.x, -nrm.y, nrm.z)), ao, light);
     } else {
         if (dot(nrm.xz, -g_dir.xz) < 0.0) nrm.xz = -nrm.xz; // the side facing the camera
         vec3 n_up = normalize(g_to_world * nrm);
         vec3 n_down = normalize(g_to_world * vec3(nrm.x, -nrm.y, nrm.z));
         ao = blade_ambient_occlusion(density, h.y, field.blade_params.x, field.blade_params.y);
-        lit = grass_lighting_two_lobes(albedo.rgb, n_up, n_down, ao);
+        lit = grass_lighting_two_lobes(color, n_up, n_down, ao, light);
     }
     g_color += (1.0 - g_alpha) * a * lit;
     g_alpha += (1.0 - g_alpha) * a;
     if (!g_depth_set && g_alpha >= 0.5) {
-        g_depth_point = h;
+        g_depth_point = hit;
         g_depth_threshold = threshold;
         g_depth_set = true;
     }
@@ -93,11 +101,19 @@ void main() {
     float t_out = length(ray);
     vec3 dir = ray / t_out;
     vec3 size = vec3(float(v_cell.z), field.blade_params.w, float(v_cell.w));
+    // The carrier: the slices' height over a flat field; on a height map from the lowest
+    // terrain under the instance to the slices' height above the highest (eq. 6.14).
+    bool displaced = has_map(GRASS_MAP_HEIGHT);
+    vec3 box_min = vec3(0.0), box_max = size;
+    if (displaced) {
+        box_min.y = v_terrain.x;
+        box_max.y = v_terrain.y + size.y;
+    }
 
     // Where the ray enters the cuboid (slab test), or the camera if it is inside.
     vec3 inv = vec3(dir.x != 0.0 ? 1.0 / dir.x : kHuge, dir.y != 0.0 ? 1.0 / dir.y : kHuge,
                     dir.z != 0.0 ? 1.0 / dir.z : kHuge);
-    vec3 t0 = (vec3(0.0) - v_camera_local) * inv, t1 = (size - v_camera_local) * inv;
+    vec3 t0 = (box_min - v_camera_local) * inv, t1 = (box_max - v_camera_local) * inv;
     vec3 t_near = min(t0, t1);
     float t_in = max(max(max(t_near.x, t_near.y), t_near.z), 0.0);
 
@@ -130,14 +146,20 @@ void main() {
     // by their own cells' bits) until it leaves the blade layer: a ray that crosses several
     // carriers is then composited whole by the nearest of them, and no seam shows where each
     // carrier alone would see too little grass. It stops at the field's edges.
-    g_field_cells = 1.0 / field.map_params.xy;
-    float t_layer = dir.y < 0.0 ? (0.0 - v_camera_local.y) / dir.y : dir.y > 0.0 ? (size.y - v_camera_local.y) / dir.y : kHuge;
+    g_field_cells = field.map_params.zw;
+    float t_layer = dir.y < 0.0 ? (box_min.y - v_camera_local.y) / dir.y
+                  : dir.y > 0.0 ? (box_max.y - v_camera_local.y) / dir.y : kHuge;
     float t_end = max(t_out, min(t_layer, t_out + 4.0 / max(length(dir.xz), 1e-3)));
     // The horizontal slice lies near the ground (boulanger 3.3: seen only from above, it fills
-    // what the vertical slices leave open there); a downward ray meets it once.
-    float ground_y = 0.1 * size.y;
-    float t_ground = dir.y < 0.0 ? (ground_y - v_camera_local.y) / dir.y : kHuge;
-    bool ground_pending = t_ground >= t_in && t_ground <= t_end;
+    // what the vertical slices leave open there); a downward ray meets it once. Flat field:
+    // a plane, met at t_ground. On a height map it follows the terrain at `layer_y` above it:
+    // met where the ray's height above the layer turns negative between two slice
+    // crossings (`above`, sampled at each crossing), found by the secant.
+    float layer_y = 0.1 * size.y;
+    float t_ground = !displaced && dir.y < 0.0 ? (layer_y - v_camera_local.y) / dir.y : kHuge;
+    bool ground_pending = displaced || (t_ground >= t_in && t_ground <= t_end);
+    float prev_t = t_in, prev_above = -1.0;
+    if (displaced) prev_above = start.y - terrain_height(vec2(v_cell.xy) + start.xz) - layer_y;
     // Every slice plane the ray crosses in the cuboid and the 4 cells beyond it is crossed
     // once: a fixed bound from the slice count and the macro-cell size, so a grazing ray
     // cannot loop for ever.
@@ -146,18 +168,47 @@ void main() {
         bool across_x = tx < tz;
         float t = across_x ? tx : tz;
         if (t > t_end) break;
-        if (ground_pending && t_ground <= t) {
-            composite(v_camera_local + dir * t_ground, t_ground, 2);
+        if (across_x) tx += step_x; else tz += step_z;
+        vec3 h = v_camera_local + dir * t;
+        float ground = terrain_height(vec2(v_cell.xy) + h.xz); // eq. 6.16 (0 on a flat field)
+        if (displaced) {
+            float above = h.y - ground - layer_y;
+            if (ground_pending && prev_above >= 0.0 && above < 0.0) {
+                float tg = mix(prev_t, t, prev_above / (prev_above - above));
+                vec3 g = v_camera_local + dir * tg;
+                composite(vec3(g.x, layer_y, g.z), g, tg, 2);
+                ground_pending = false;
+                if (g_alpha >= 0.99) break;
+            }
+            prev_t = t;
+            prev_above = above;
+        } else if (ground_pending && t_ground <= t) {
+            vec3 g = v_camera_local + dir * t_ground;
+            composite(g, g, t_ground, 2);
             ground_pending = false;
             if (g_alpha >= 0.99) break;
         }
-        if (across_x) tx += step_x; else tz += step_z;
-        vec3 h = v_camera_local + dir * t;
-        if (t < t_in || h.y < 0.0 || h.y > size.y) continue;
-        composite(h, t, across_x ? 0 : 1);
+        // The slice is looked up at the hit's height above the terrain (eq. 6.17-6.18); a
+        // hit below the terrain or above the blades there meets nothing.
+        float y = h.y - ground;
+        if (t < t_in || y < 0.0 || y > size.y) continue;
+        composite(vec3(h.x, y, h.z), h, t, across_x ? 0 : 1);
         if (g_alpha >= 0.99) break;
     }
-    if (ground_pending && g_alpha < 0.99) composite(v_camera_local + dir * t_ground, t_ground, 2);
+    if (ground_pending && g_alpha < 0.99) {
+        if (displaced) {
+            vec3 e = v_camera_local + dir * t_end;
+            float above = e.y - terrain_height(vec2(v_cell.xy) + e.xz) - layer_y;
+            if (prev_above >= 0.0 && above < 0.0) {
+                float tg = mix(prev_t, t_end, prev_above / (prev_above - above));
+                vec3 g = v_camera_local + dir * tg;
+                composite(vec3(g.x, layer_y, g.z), g, tg, 2);
+            }
+        } else {
+            vec3 g = v_camera_local + dir * t_ground;
+            composite(g, g, t_ground, 2);
+        }
+    }
     if (g_alpha < alpha_cut()) discard;
     out_color = debug_thresholds() ? threshold_code(g_depth_threshold) : vec4(debug_tint(g_color / g_alpha), g_alpha);
     gl_FragDepth = window_depth(g_to_world * g_depth_point + g_origin);

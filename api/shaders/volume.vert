@@ -1,16 +1,19 @@
 #version 450
 // Volume tier (lemme2012 5.2): a cuboid carrier per cell or macro-cell, as tall as the
-// baked slices. Every face is drawn; the fragment shader keeps the back faces, where the
-// view ray leaves the cuboid, so a camera inside the volume still sees it.
+// baked slices plus the terrain's height range under it (lemme 6.4.4). Every face is drawn;
+// the fragment shader keeps the back faces, where the view ray leaves the cuboid, so a
+// camera inside the volume still sees it.
 #include "blade_interface.glsl"
 
 layout(location = 5) in vec4 i_origin; // xyz: corner relative to the camera (m)
 layout(location = 6) in uvec4 i_cell;  // xy: first cell, zw: size in cells
+layout(location = 7) in vec4 i_terrain; // x: lowest, y: highest terrain height under it (patch units)
 
 layout(location = 0) out vec3 v_local;              // position in the cuboid, cells
 layout(location = 1) flat out vec3 v_camera_local;  // the camera in the same frame
 layout(location = 2) flat out vec3 v_face_normal;   // outward normal of this face
 layout(location = 3) flat out uvec4 v_cell;
+layout(location = 4) flat out vec2 v_terrain;       // i_terrain.xy (0, 0 without a height map)
 
 void main() {
 #ifdef VULKAN
@@ -27,11 +30,16 @@ void main() {
     int k = corners[v];
     vec3 size = vec3(float(i_cell.z), field.blade_params.w, float(i_cell.w));
     vec3 local = vec3(float(k & 1), float((k >> 1) & 1), float((k >> 2) & 1)) * size;
+    // On a height map the cuboid is extruded (lemme eq. 6.14): from the lowest terrain under
+    // the instance to the slices' height above the highest.
+    vec2 terrain = has_map(GRASS_MAP_HEIGHT) ? i_terrain.xy : vec2(0.0);
+    if (has_map(GRASS_MAP_HEIGHT)) local.y = terrain.x + float((k >> 1) & 1) * (terrain.y - terrain.x + size.y);
     mat3 to_world = mat3(field.patch_to_world);
     vec3 position = to_world * local + i_origin.xyz;
     v_local = local;
     v_camera_local = inverse(to_world) * (-i_origin.xyz);
     v_face_normal = normals[v / 6];
     v_cell = i_cell;
+    v_terrain = terrain;
     gl_Position = frame.view_projection * vec4(position, 1.0);
 }

@@ -8,7 +8,7 @@
 #include <cstring>
 
 grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
-    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), plan(&host), plan_scratch(&host),
+    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), maps(&host), plan(&host), plan_scratch(&host),
       cache_directory(grass::StlAllocator<char>(&host)) {
     if (d.cache_directory && d.cache_directory[0]) {
         cache_directory.assign(d.cache_directory, d.cache_directory + std::strlen(d.cache_directory) + 1);
@@ -22,6 +22,9 @@ grass_context::~grass_context() {
     // Fields and patches release their GPU resources before the backend goes.
     for (uint32_t slot = 0; slot < fields.capacity(); ++slot) {
         if (fields.get(slot) && backend) backend->release_field(slot);
+    }
+    for (uint32_t slot = 0; slot < maps.capacity(); ++slot) {
+        if (maps.get(slot) && backend) backend->release_map(slot);
     }
     for (uint32_t slot = 0; slot < patches.capacity(); ++slot) {
         if (patches.get(slot) && backend) backend->release_patch(slot);

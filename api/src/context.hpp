@@ -4,6 +4,7 @@
 
 #include "allocator.hpp"
 #include "backend.hpp"
+#include "design_map.hpp"
 #include "frame_plan.hpp"
 #include "handle_pool.hpp"
 #include "lod_setup_types.hpp"
@@ -40,12 +41,17 @@ struct Patch {
 };
 
 struct Field {
-    explicit Field(HostAllocator* host) : density_texels(StlAllocator<uint16_t>(host)) {}
-    grass_field_desc desc{};          // pointers in it are cleared; maps are copied below
+    grass_field_desc desc{};          // pointers in it are cleared; maps are referenced below
     uint32_t patch_slot = 0;
-    Vector<uint16_t> density_texels;  // empty: uniform density
-    uint32_t density_width = 0;
-    uint32_t density_height = 0;
+    FieldMaps maps;                   // map slot per role (kNoMap: none) and the feature mask
+    bool owns_density_map = false;    // maps.map_slot[kMapDensity] was made from desc.density_map
+    double cell_to_map[6] = {0, 0, 0, 0, 0, 0}; // cell (x, z) -> map (u, v), lemme's configTf
+    double height_scale = 0.0;        // metres per height-map unit (0 without a height map)
+    // Grass types (lemme 6.4.5): the first type is the field the host holds an id for; the
+    // others are fields of their own, hidden behind it, made and destroyed with it.
+    uint32_t parent = 0xffffffffu;    // slot of the host's field for a hidden type, else none
+    uint32_t children[GRASS_MAX_GRASS_TYPES - 1] = {};
+    uint32_t child_count = 0;
     double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}; // base transform's rotation, column-major
     double translation[3] = {0, 0, 0};
     LodSetup lod;                      // tiers and lod tests, copied from the desc
@@ -70,6 +76,7 @@ struct grass_context {
     grass::Backend* backend = nullptr;
     grass::HandlePool<grass::Patch> patches;
     grass::HandlePool<grass::Field> fields;
+    grass::HandlePool<grass::DesignMap> maps;
     grass::FramePlan plan;
     grass::PlanScratch plan_scratch;
     bool in_frame = false;

@@ -61,6 +61,7 @@ void to_camera(const FieldFrame& f, double x, double y, double z, double out[3])
 
 struct NodeBox {
     double lo[3], hi[3]; // field space, cells
+    double terrain_lo = 0.0, terrain_hi = 0.0; // terrain height range under the node, cells
 };
 
 class FieldPlanner {
@@ -69,6 +70,9 @@ public:
                  const ViewCulling& culling)
         : ctx_(ctx), slot_(slot), field_(field), patch_(patch), culling_(culling), frame_(field_frame(field, camera)) {
         for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
+        const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
+        density_map_ = density_slot != kNoMap ? ctx->maps.get(density_slot) : nullptr;
+        height_map_ = height_slot != kNoMap ? ctx->maps.get(height_slot) : nullptr;
     }
 
     grass_result run() {
@@ -88,22 +92,59 @@ public:
     }
 
 private:
+    // The range of `map` over the node's cells, through the field's cell-to-map transform.
+    MapRange map_range(const DesignMap& map, const NodeCells& cells) const {
+        const double* m = field_.cell_to_map;
+        double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+        for (int k = 0; k < 4; ++k) {
+            const double x = double(cells.x0) + ((k & 1) ? double(cells.count_x) : 0.0);
+            const double z = double(cells.z0) + ((k & 2) ? double(cells.count_z) : 0.0);
+            const double u = m[0] * x + m[2] * z + m[4], v = m[1] * x + m[3] * z + m[5];
+            u0 = std::min(u0, u), u1 = std::max(u1, u), v0 = std::min(v0, v), v1 = std::max(v1, v);
+        }
+        return map.pyramid.range(u0, v0, u1, v1);
+    }
+
     NodeBox box_of(const NodeCells& cells, uint32_t level) const {
         NodeBox b;
         const double oh = field_.overhang;
+        if (height_map_) { // terrain unplanarity (lemme 6.4.4): the node's box spans its terrain
+            const MapRange r = map_range(*height_map_, cells);
+            const double to_cells = field_.height_scale / frame_.cell_size;
+            b.terrain_lo = r.min * to_cells;
+            b.terrain_hi = r.max * to_cells;
+        }
         b.lo[0] = double(cells.x0) - oh;
         b.hi[0] = double(cells.x0 + cells.count_x) + oh;
-        b.lo[1] = field_.extents[level].min_y;
-        b.hi[1] = field_.extents[level].max_y;
+        b.lo[1] = b.terrain_lo + field_.extents[level].min_y;
+        b.hi[1] = b.terrain_hi + field_.extents[level].max_y;
         b.lo[2] = double(cells.z0) - oh;
         b.hi[2] = double(cells.z0 + cells.count_z) + oh;
         return b;
+    }
+
+    // The local density at a point of the field (cells), as the shaders find it.
+    float density_at(double x, double z) const {
+        float density = field_.desc.density;
+        if (density_map_) {
+            const double* m = field_.cell_to_map;
+            density *= sample_map(density_map_->texels.data(), density_map_->width, density_map_->height, 1,
+                                  m[0] * x + m[2] * z + m[4], m[1] * x + m[3] * z + m[5]);
+        }
+        return density;
     }
 
     grass_result visit(const PlanNode& node) {
         FramePlan& plan = ctx_->plan;
         plan.stats.nodes_visited += 1;
         const NodeCells cells = field_.tree.cells_of(node.level, node.x, node.z);
+        // No grass anywhere in the node: discard it without visiting its subtree.
+        const double max_density =
+            double(field_.desc.density) * (density_map_ ? double(map_range(*density_map_, cells).max) : 1.0);
+        if (!(max_density > 0.0)) {
+            plan.stats.nodes_empty += 1;
+            return GRASS_SUCCESS;
+        }
         const NodeBox box = box_of(cells, node.level);
 
         // Bounding sphere of the node's own box (not merged from its children's).
@@ -138,6 +179,9 @@ private:
         info.cell_z = static_cast<uint32_t>(cells.z0);
         info.cells_x = static_cast<uint32_t>(cells.count_x);
         info.cells_z = static_cast<uint32_t>(cells.count_z);
+        info.height_min = box.terrain_lo * frame_.cell_size;
+        info.height_max = box.terrain_hi * frame_.cell_size;
+        const double node_top = box.hi[1] * frame_.cell_size, camera_height = frame_.cam_local[1] * frame_.cell_size;
 
         // Every still-active test answers; a tier draws when all its tests say draw.
         const LodSetup& lod = field_.lod;
@@ -156,7 +200,7 @@ private:
                                       k, slot_ + 1, static_cast<long long>(answer), node.level, info.cell_x, info.cell_z);
                 }
             } else {
-                answer = evaluate_builtin_test(test, info);
+                answer = evaluate_builtin_test(test, info, node_top, camera_height);
             }
             plan.stats.lod_test_calls += 1;
             if (answer == GRASS_LOD_DISCARD) discard |= 1u << test.tier;
@@ -203,7 +247,6 @@ private:
             ctx_->plan.stats.nodes_culled += 1;
             return;
         }
-        const grass_field_desc& d = field_.desc;
         PlanCandidate c;
         double origin[3], centre[3];
         to_camera(frame_, double(cells.x0), 0.0, double(cells.z0), origin);
@@ -216,12 +259,10 @@ private:
         c.instance.cell[1] = static_cast<uint32_t>(cells.z0);
         c.instance.count[0] = static_cast<uint32_t>(cells.count_x);
         c.instance.count[1] = static_cast<uint32_t>(cells.count_z);
-        c.density = d.density;
-        if (!field_.density_texels.empty()) {
-            c.density *= sample_map(field_.density_texels.data(), field_.density_width, field_.density_height,
-                                    (double(cells.x0) + 0.5 * double(cells.count_x)) / d.cells_x,
-                                    (double(cells.z0) + 0.5 * double(cells.count_z)) / d.cells_z);
-        }
+        c.instance.terrain[0] = static_cast<float>(box.terrain_lo);
+        c.instance.terrain[1] = static_cast<float>(box.terrain_hi);
+        c.instance.terrain[2] = c.instance.terrain[3] = 0.0f;
+        c.density = density_at(double(cells.x0) + 0.5 * double(cells.count_x), double(cells.z0) + 0.5 * double(cells.count_z));
         ctx_->plan_scratch.per_tier[tier].push_back(c);
     }
 
@@ -246,6 +287,7 @@ private:
             draw.patch_slot = field_.patch_slot;
             draw.first_instance = static_cast<uint32_t>(plan.instances.size());
             draw.instance_count = static_cast<uint32_t>(candidates.size());
+            draw.features = field_.maps.features;
             fill_uniforms(kind, t, &draw.uniforms);
             plan.draws.push_back(draw);
             drew = true;
@@ -292,10 +334,18 @@ private:
                     (c < 3 && r < 3) ? static_cast<float>(frame_.axis[c][r]) : (c == 3 && r == 3 ? 1.0f : 0.0f);
             }
         }
-        u->map_params[0] = static_cast<float>(1.0 / d.cells_x);
-        u->map_params[1] = static_cast<float>(1.0 / d.cells_z);
-        u->map_params[2] = d.density;
-        u->map_params[3] = field_.density_texels.empty() ? 0.0f : 1.0f;
+        const double* m = field_.cell_to_map;
+        u->map_u[0] = static_cast<float>(m[0]);
+        u->map_u[1] = static_cast<float>(m[2]);
+        u->map_u[2] = static_cast<float>(m[4]);
+        u->map_v[0] = static_cast<float>(m[1]);
+        u->map_v[1] = static_cast<float>(m[3]);
+        u->map_v[2] = static_cast<float>(m[5]);
+        u->map_u[3] = u->map_v[3] = 0.0f;
+        u->map_params[0] = d.density;
+        u->map_params[1] = static_cast<float>(field_.height_scale / frame_.cell_size);
+        u->map_params[2] = static_cast<float>(d.cells_x);
+        u->map_params[3] = static_cast<float>(d.cells_z);
         u->blade_params[0] = patch_.data.ao_impact;
         u->blade_params[1] = patch_.data.ao_height;
         u->blade_params[2] = static_cast<float>(kind);
@@ -303,13 +353,14 @@ private:
         u->tiling[0] = d.mirror_seed;
         u->tiling[1] = d.mirror_tiling ? 1u : 0u;
         u->tiling[2] = field_.lod.tiers[tier].slices;
-        u->tiling[3] = 0u;
+        u->tiling[3] = field_.maps.features;
         for (uint32_t t = 0; t < GRASS_MAX_TIERS; ++t) {
             for (int k = 0; k < 4; ++k) u->bands[t][k] = t < field_.lod.tier_count ? field_.bands[t][k] : 0.0f;
         }
         u->tiers[0] = tier;
         u->tiers[1] = field_.lod.tier_count;
-        u->tiers[2] = u->tiers[3] = 0u;
+        u->tiers[2] = (field_.lod.overlay_tiers >> tier) & 1u;
+        u->tiers[3] = 0u;
         u->transition[0] = d.transition_window;
         u->transition[1] = u->transition[2] = u->transition[3] = 0.0f;
     }
@@ -321,6 +372,8 @@ private:
     const ViewCulling& culling_;
     FieldFrame frame_;
     double camera_[3];
+    const DesignMap* density_map_ = nullptr;
+    const DesignMap* height_map_ = nullptr;
 };
 
 } // namespace

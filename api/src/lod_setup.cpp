@@ -53,6 +53,26 @@ grass_result validate_test(grass_context* ctx, const char* fn, uint32_t k, const
                              fn, k, t.max_macro_cells, t.tier);
         }
         return GRASS_SUCCESS;
+    case GRASS_LOD_TEST_UNPLANARITY:
+        if (!(t.max_unplanarity >= 0.0f && std::isfinite(t.max_unplanarity))) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                             "%s: desc->lod_tests[%u].max_unplanarity is %g m; it must be finite and >= 0", fn, k,
+                             static_cast<double>(t.max_unplanarity));
+        }
+        if (!(t.unplanarity_ratio >= 0.0f && t.unplanarity_ratio <= 1.0f)) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                             "%s: desc->lod_tests[%u].unplanarity_ratio is %g; it must be in [0, 1]", fn, k,
+                             static_cast<double>(t.unplanarity_ratio));
+        }
+        return GRASS_SUCCESS;
+    case GRASS_LOD_TEST_HILLTOP:
+        if (geometry) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                             "%s: desc->lod_tests[%u] is a hilltop test on tier %u, a geometry tier; hilltop silhouettes "
+                             "are drawn by a volume (or image) tier",
+                             fn, k, t.tier);
+        }
+        return GRASS_SUCCESS;
     case GRASS_LOD_TEST_CALLBACK:
         if (!t.callback) {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
@@ -74,6 +94,21 @@ grass_result make_lod_setup(grass_context* ctx, const char* fn, const grass_fiel
         grass_default_lod_setup(d.cell_size, s.tiers, s.tests);
         s.tier_count = GRASS_DEFAULT_TIER_COUNT;
         s.test_count = GRASS_DEFAULT_LOD_TEST_COUNT;
+        if (d.maps.height.index != 0) {
+            // On a height map the volume and image tiers' macro-cells must follow the ground
+            // (lemme 6.4.4): split them while their height range exceeds half a cell plus 2%
+            // of their distance.
+            for (uint32_t t = 0; t < s.tier_count; ++t) {
+                if (s.tiers[t].kind == GRASS_TIER_GEOMETRY) continue;
+                grass_lod_test u;
+                std::memset(&u, 0, sizeof(u));
+                u.kind = GRASS_LOD_TEST_UNPLANARITY;
+                u.tier = t;
+                u.max_unplanarity = static_cast<float>(0.5 * d.cell_size);
+                u.unplanarity_ratio = 0.02f;
+                s.tests[s.test_count++] = u;
+            }
+        }
     } else {
         if (d.tier_count < 1 || d.tier_count > GRASS_MAX_TIERS || !d.tiers) {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
@@ -108,6 +143,7 @@ grass_result make_lod_setup(grass_context* ctx, const char* fn, const grass_fiel
     for (uint32_t k = 0; k < s.test_count; ++k) {
         GRASS_TRY(validate_test(ctx, fn, k, s.tests[k], s.tiers, s.tier_count));
         s.tests_of_tier[s.tests[k].tier] |= 1u << k;
+        if (s.tests[k].kind == GRASS_LOD_TEST_HILLTOP) s.overlay_tiers |= 1u << s.tests[k].tier;
     }
     for (uint32_t t = 0; t < s.tier_count; ++t) {
         if (s.tests_of_tier[t] == 0) {
@@ -119,13 +155,21 @@ grass_result make_lod_setup(grass_context* ctx, const char* fn, const grass_fiel
     return GRASS_SUCCESS;
 }
 
-grass_lod_answer evaluate_builtin_test(const grass_lod_test& t, const grass_lod_node& n) {
+grass_lod_answer evaluate_builtin_test(const grass_lod_test& t, const grass_lod_node& n, double node_top, double camera_height) {
     if (t.kind == GRASS_LOD_TEST_DISTANCE_BAND) {
         if (n.distance_min > t.end || n.distance_max < t.begin) return GRASS_LOD_DISCARD;
         if (n.distance_min >= t.begin && n.distance_max <= t.end) return GRASS_LOD_DRAW;
         // Across an edge: whole once small for its distance (its far part is faded out).
         const double side = 2.0 * n.radius / 1.4142135623730951; // ~ the node's side, metres
         return side <= t.edge_ratio * n.distance_min ? GRASS_LOD_DRAW : GRASS_LOD_SPLIT;
+    }
+    if (t.kind == GRASS_LOD_TEST_UNPLANARITY) {
+        const double unplanarity = n.height_max - n.height_min;
+        return unplanarity <= t.max_unplanarity + double(t.unplanarity_ratio) * n.distance_min ? GRASS_LOD_DRAW
+                                                                                                : GRASS_LOD_SPLIT;
+    }
+    if (t.kind == GRASS_LOD_TEST_HILLTOP) {
+        return node_top <= camera_height ? GRASS_LOD_DISCARD : GRASS_LOD_DRAW;
     }
     // GRASS_LOD_TEST_MACRO_CELL
     return (n.cells_x <= t.max_macro_cells && n.cells_z <= t.max_macro_cells) ? GRASS_LOD_DRAW : GRASS_LOD_SPLIT;

@@ -13,7 +13,9 @@ namespace grass {
 // empty) and fills `out`. Logs and returns an error naming the bad test or tier.
 grass_result make_lod_setup(grass_context* ctx, const char* fn, const grass_field_desc& desc, LodSetup* out);
 
-// Answer of a DISTANCE_BAND or MACRO_CELL test for a node.
-grass_lod_answer evaluate_builtin_test(const grass_lod_test& test, const grass_lod_node& node);
+// Answer of a built-in test (not CALLBACK) for a node whose box top lies `node_top` metres
+// above the field's plane, the camera `camera_height` metres above it.
+grass_lod_answer evaluate_builtin_test(const grass_lod_test& test, const grass_lod_node& node, double node_top,
+                                       double camera_height);
 
 } // namespace grass

@@ -87,7 +87,21 @@ grass_result check_patch_id(grass_context* ctx, const char* function, const char
 }
 
 grass_result check_field_id(grass_context* ctx, const char* function, const char* name, grass_field_id id) {
-    return check_id(ctx, function, name, ctx->fields, id.index, id.generation, id.owner);
+    GRASS_TRY(check_id(ctx, function, name, ctx->fields, id.index, id.generation, id.owner));
+    if (ctx->fields.get(id.index - 1)->parent != 0xffffffffu) {
+        return ctx->fail(GRASS_ERROR_INVALID_HANDLE, GRASS_MSG_STALE_HANDLE,
+                         "%s: %s (index %u) is not a field made by grass_create_field", function, name, id.index);
+    }
+    return GRASS_SUCCESS;
+}
+
+grass_result check_map_id(grass_context* ctx, const char* function, const char* name, grass_map_id id) {
+    GRASS_TRY(check_id(ctx, function, name, ctx->maps, id.index, id.generation, id.owner));
+    if (ctx->maps.get(id.index - 1)->field_private) {
+        return ctx->fail(GRASS_ERROR_INVALID_HANDLE, GRASS_MSG_STALE_HANDLE,
+                         "%s: %s (index %u) is not a map made by grass_create_map", function, name, id.index);
+    }
+    return GRASS_SUCCESS;
 }
 
 } // namespace grass

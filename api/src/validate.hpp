@@ -32,6 +32,8 @@ grass_result check_finite_array(grass_context* ctx, const char* function, const 
 
 grass_result check_patch_id(grass_context* ctx, const char* function, const char* name, grass_patch_id id);
 grass_result check_field_id(grass_context* ctx, const char* function, const char* name, grass_field_id id);
+// A map id made by grass_create_map (a field's private density map has no valid id).
+grass_result check_map_id(grass_context* ctx, const char* function, const char* name, grass_map_id id);
 
 // Early return on error: GRASS_TRY(check_...(...));
 #define GRASS_TRY(expr)                              \

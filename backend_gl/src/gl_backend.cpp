@@ -33,6 +33,7 @@ const VertexAttribute kBladeAttributes[] = {
     {4, 1, GL_FLOAT, GL_FALSE, offsetof(BladeVertex, threshold), kVertexBinding, false},
     {5, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, origin), kInstanceBinding, false},
     {6, 4, GL_UNSIGNED_INT, GL_FALSE, offsetof(TierInstance, cell), kInstanceBinding, true},
+    {7, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, terrain), kInstanceBinding, false},
 };
 
 const char* gl_error_name(GLenum error) {
@@ -56,7 +57,8 @@ GlBackend::GlBackend(grass_context* ctx)
       field_uniform_offsets_(StlAllocator<GLintptr>(&ctx->host)),
       patches_(StlAllocator<PatchGpu>(&ctx->host)),
       slices_(StlAllocator<SliceGpu>(&ctx->host)),
-      fields_(StlAllocator<FieldGpu>(&ctx->host)) {}
+      fields_(StlAllocator<FieldGpu>(&ctx->host)),
+      maps_(StlAllocator<MapGpu>(&ctx->host)) {}
 
 grass_result GlBackend::create(grass_context* ctx, const grass_gl_desc& desc, Backend** out_backend) {
     GlBackend* backend = nullptr;
@@ -95,12 +97,13 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     gl_.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture_size_);
     gl_.GetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_array_layers_);
 
-    grass_result result = create_blade_program(ctx_, gl_, kCreateFunction, &program_);
-    if (result != GRASS_SUCCESS) return result;
-    result = create_volume_program(ctx_, gl_, kCreateFunction, &volume_program_);
-    if (result != GRASS_SUCCESS) return result;
-    result = create_image_program(ctx_, gl_, kCreateFunction, &image_program_);
-    if (result != GRASS_SUCCESS) return result;
+    // The variants of fields without design maps; the others come with their fields.
+    grass_result result = GRASS_SUCCESS;
+    for (uint32_t kind = 0; kind < kProgramKindCount; ++kind) {
+        GLuint unused = 0;
+        result = program(static_cast<GlProgramKind>(kind), 0, kCreateFunction, &unused);
+        if (result != GRASS_SUCCESS) return result;
+    }
 
     gl_.CreateTextures(GL_TEXTURE_2D, 1, &white_texture_);
     gl_.TextureStorage2D(white_texture_, 1, GL_R16, 1, 1);
@@ -131,8 +134,6 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     instances_.create(gl_);
     uniforms_.create(gl_);
     tier_vertex_array_ = create_instance_vertex_array(gl_, instances_.name());
-    result = debug_view_.create(ctx_, gl_, kCreateFunction, instances_.name());
-    if (result != GRASS_SUCCESS) return result;
     result = check_errors(kCreateFunction, "creating the programs, white texture and samplers");
     if (result != GRASS_SUCCESS) return result;
 
@@ -143,19 +144,33 @@ GlBackend::~GlBackend() {
     if (!loaded_) return;
     for (uint32_t slot = 0; slot < patches_.size(); ++slot) release_patch(slot);
     for (uint32_t slot = 0; slot < fields_.size(); ++slot) release_field(slot);
+    for (uint32_t slot = 0; slot < maps_.size(); ++slot) release_map(slot);
     for (SliceGpu& s : slices_) delete_slices(s); // sets of slots never given a patch
     slices_.clear();
     if (tier_vertex_array_ != 0) gl_.DeleteVertexArrays(1, &tier_vertex_array_);
     instances_.destroy(gl_);
     uniforms_.destroy(gl_);
-    debug_view_.destroy(gl_);
     if (sampler_ != 0) gl_.DeleteSamplers(1, &sampler_);
     if (slice_sampler_ != 0) gl_.DeleteSamplers(1, &slice_sampler_);
     if (threshold_sampler_ != 0) gl_.DeleteSamplers(1, &threshold_sampler_);
     if (white_texture_ != 0) gl_.DeleteTextures(1, &white_texture_);
-    if (program_ != 0) gl_.DeleteProgram(program_);
-    if (volume_program_ != 0) gl_.DeleteProgram(volume_program_);
-    if (image_program_ != 0) gl_.DeleteProgram(image_program_);
+    for (auto& variants : programs_) {
+        for (GLuint program : variants) {
+            if (program != 0) gl_.DeleteProgram(program);
+        }
+    }
+}
+
+grass_result GlBackend::program(GlProgramKind kind, uint32_t features, const char* function, GLuint* out_program) {
+    features &= kFeatureVariants - 1;
+    if (kind == kProgramDebugTiers) features &= 1u << kMapHeight; // the boxes sample the height map only
+    GLuint& cached = programs_[kind][features];
+    if (cached == 0) {
+        const grass_result result = create_program(ctx_, gl_, function, kind, features, &cached);
+        if (result != GRASS_SUCCESS) return result;
+    }
+    *out_program = cached;
+    return GRASS_SUCCESS;
 }
 
 // Drains the GL error flags. glGetError is the only way to see GL_OUT_OF_MEMORY; it is
@@ -334,40 +349,112 @@ void GlBackend::release_patch(uint32_t slot) {
     gpu = PatchGpu{};
 }
 
-grass_result GlBackend::upload_field(uint32_t slot, const MapTexels& density) {
-    if (slot >= fields_.size()) fields_.resize(slot + 1);
-    release_field(slot);
-    if (density.texels == nullptr) return GRASS_SUCCESS;
-
-    if (density.width > static_cast<uint32_t>(max_texture_size_) ||
-        density.height > static_cast<uint32_t>(max_texture_size_)) {
-        return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
-                          "grass_create_field: density_map is %ux%u texels; this GL device's GL_MAX_TEXTURE_SIZE is %d",
-                          density.width, density.height, max_texture_size_);
+grass_result GlBackend::upload_map(uint32_t slot, const MapTexels& map) {
+    constexpr const char* kFunction = "grass_create_map";
+    if (slot >= maps_.size()) maps_.resize(slot + 1);
+    release_map(slot);
+    if (map.texels == nullptr || map.width == 0 || map.height == 0 || (map.channels != 1 && map.channels != 4)) {
+        return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+                          "%s: map slot %u has %ux%u texels of %u channels (internal error)", kFunction, slot,
+                          map.width, map.height, map.channels);
     }
-    FieldGpu& gpu = fields_[slot];
-    gl_.CreateTextures(GL_TEXTURE_2D, 1, &gpu.density_map);
-    gl_.TextureStorage2D(gpu.density_map, 1, GL_R16, static_cast<GLsizei>(density.width),
-                         static_cast<GLsizei>(density.height));
+    if (map.width > static_cast<uint32_t>(max_texture_size_) || map.height > static_cast<uint32_t>(max_texture_size_)) {
+        return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                          "%s: the map is %ux%u texels; this GL device's GL_MAX_TEXTURE_SIZE is %d", kFunction,
+                          map.width, map.height, max_texture_size_);
+    }
+    MapGpu& gpu = maps_[slot];
+    const bool rgba = map.channels == 4;
+    gl_.CreateTextures(GL_TEXTURE_2D, 1, &gpu.texture);
+    gl_.TextureStorage2D(gpu.texture, 1, rgba ? GL_RGBA16 : GL_R16, static_cast<GLsizei>(map.width),
+                         static_cast<GLsizei>(map.height));
     {
         GlUnpackStateGuard unpack(gl_, 2);
-        gl_.TextureSubImage2D(gpu.density_map, 0, 0, 0, static_cast<GLsizei>(density.width),
-                              static_cast<GLsizei>(density.height), GL_RED, GL_UNSIGNED_SHORT, density.texels);
+        gl_.TextureSubImage2D(gpu.texture, 0, 0, 0, static_cast<GLsizei>(map.width), static_cast<GLsizei>(map.height),
+                              rgba ? GL_RGBA : GL_RED, GL_UNSIGNED_SHORT, map.texels);
     }
-    const grass_result result = check_errors("grass_create_field", "uploading the density map");
+    const grass_result result = check_errors(kFunction, "uploading a design map");
     if (result != GRASS_SUCCESS) {
-        release_field(slot);
+        release_map(slot);
         return result;
     }
-    gpu.bytes = uint64_t(density.width) * density.height * sizeof(uint16_t);
+    gpu.width = map.width;
+    gpu.height = map.height;
+    gpu.channels = map.channels;
+    gpu.bytes = uint64_t(map.width) * map.height * map.channels * sizeof(uint16_t);
+    return GRASS_SUCCESS;
+}
+
+// Copies just the region, read from the core's whole copy: the row length is the map's
+// width and the pointer the region's first texel.
+grass_result GlBackend::update_map(uint32_t slot, const MapTexels& map, const MapRegion& region) {
+    constexpr const char* kFunction = "grass_update_map";
+    const bool known = slot < maps_.size() && maps_[slot].texture != 0;
+    const bool fits = known && map.texels != nullptr && map.width == maps_[slot].width &&
+                      map.height == maps_[slot].height && map.channels == maps_[slot].channels &&
+                      uint64_t(region.x) + region.width <= map.width &&
+                      uint64_t(region.y) + region.height <= map.height;
+    if (!fits) {
+        return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+                          "%s: region %u,%u %ux%u of map slot %u does not fit the uploaded map (internal error)",
+                          kFunction, region.x, region.y, region.width, region.height, slot);
+    }
+    if (region.width == 0 || region.height == 0) return GRASS_SUCCESS;
+    const MapGpu& gpu = maps_[slot];
+    {
+        GlUnpackStateGuard unpack(gl_, 2);
+        gl_.PixelStorei(GL_UNPACK_ROW_LENGTH, static_cast<GLint>(map.width));
+        const uint16_t* first = map.texels + (size_t(region.y) * map.width + region.x) * map.channels;
+        gl_.TextureSubImage2D(gpu.texture, 0, static_cast<GLint>(region.x), static_cast<GLint>(region.y),
+                              static_cast<GLsizei>(region.width), static_cast<GLsizei>(region.height),
+                              gpu.channels == 4 ? GL_RGBA : GL_RED, GL_UNSIGNED_SHORT, first);
+    }
+    return check_errors(kFunction, "updating a design map");
+}
+
+void GlBackend::release_map(uint32_t slot) {
+    if (slot >= maps_.size()) return;
+    MapGpu& gpu = maps_[slot];
+    if (gpu.texture != 0) gl_.DeleteTextures(1, &gpu.texture);
+    gpu = MapGpu{};
+}
+
+grass_result GlBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
+    constexpr const char* kFunction = "grass_create_field";
+    if (slot >= fields_.size()) fields_.resize(slot + 1);
+    release_field(slot);
+    uint32_t features = 0;
+    for (uint32_t role = 0; role < kMapRoleCount; ++role) {
+        const uint32_t map = maps.map_slot[role];
+        if (map == kNoMap) continue;
+        const uint32_t channels = role == kMapColor ? 4u : 1u;
+        if (map >= maps_.size() || maps_[map].texture == 0 || maps_[map].channels != channels) {
+            return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+                              "%s: field slot %u samples map slot %u as map role %u, which the GL backend does not "
+                              "hold with %u channel(s) (internal error)",
+                              kFunction, slot, map, role, channels);
+        }
+        features |= 1u << role;
+    }
+    if (features != maps.features) {
+        return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+                          "%s: field slot %u has the feature mask 0x%x but maps for 0x%x (internal error)", kFunction,
+                          slot, maps.features, features);
+    }
+    // The field's program variants now, so that its first frame does not compile them (the
+    // debug view's compiles when first drawn).
+    for (GlProgramKind kind : {kProgramBlades, kProgramVolume, kProgramImage}) {
+        GLuint unused = 0;
+        const grass_result result = program(kind, features, kFunction, &unused);
+        if (result != GRASS_SUCCESS) return result;
+    }
+    fields_[slot].maps = maps;
     return GRASS_SUCCESS;
 }
 
 void GlBackend::release_field(uint32_t slot) {
     if (slot >= fields_.size()) return;
-    FieldGpu& gpu = fields_[slot];
-    if (gpu.density_map != 0) gl_.DeleteTextures(1, &gpu.density_map);
-    gpu = FieldGpu{};
+    fields_[slot] = FieldGpu{};
 }
 
 grass_result GlBackend::begin_frame(const FramePlan&) {
@@ -382,7 +469,7 @@ uint64_t GlBackend::gpu_bytes() const {
     if (white_texture_ != 0) bytes += sizeof(uint16_t);
     for (const PatchGpu& p : patches_) bytes += p.bytes;
     for (const SliceGpu& s : slices_) bytes += s.bytes;
-    for (const FieldGpu& f : fields_) bytes += f.bytes;
+    for (const MapGpu& m : maps_) bytes += m.bytes;
     return bytes;
 }
 

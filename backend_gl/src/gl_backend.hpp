@@ -1,11 +1,11 @@
-// The GL 4.5 backend: owns the tier programs (blades, volume, image), the debug view, one
-// vertex array per patch, the patches' baked slice textures, one density texture per field
-// and the per-frame streaming buffers, all made with DSA in the host's GL context. Drawing
-// is grass_gl_render -> GlBackend::render.
+// The GL 4.5 backend: owns the programs (blades, volume, image, debug view) in one variant
+// per design-map feature mask, one vertex array per patch, the patches' baked slice
+// textures, one texture per design map and the per-frame streaming buffers, all made with
+// DSA in the host's GL context. Drawing is grass_gl_render -> GlBackend::render.
 #pragma once
 
-#include "gl_debug_view.hpp"
 #include "gl_functions.hpp"
+#include "gl_program.hpp"
 #include "gl_stream_buffer.hpp"
 
 #include <backend.hpp>
@@ -31,7 +31,10 @@ public:
     grass_result upload_patch(uint32_t slot, const PatchData& patch) override;
     grass_result upload_slices(uint32_t slot, const SliceSet& set) override;
     void release_patch(uint32_t slot) override;
-    grass_result upload_field(uint32_t slot, const MapTexels& density) override;
+    grass_result upload_map(uint32_t slot, const MapTexels& map) override;
+    grass_result update_map(uint32_t slot, const MapTexels& map, const MapRegion& region) override;
+    void release_map(uint32_t slot) override;
+    grass_result upload_field(uint32_t slot, const FieldMaps& maps) override;
     void release_field(uint32_t slot) override;
     grass_result begin_frame(const FramePlan& plan) override;
     uint64_t gpu_bytes() const override;
@@ -56,12 +59,26 @@ private:
         GLuint threshold = 0;         // GL_R16
         uint64_t bytes = 0;
     };
-    struct FieldGpu {
-        GLuint density_map = 0; // 0: the field samples the 1x1 white texture
+    // A design map: GL_R16 or GL_RGBA16, one level.
+    struct MapGpu {
+        GLuint texture = 0;
+        uint32_t width = 0;
+        uint32_t height = 0;
+        uint32_t channels = 0;
         uint64_t bytes = 0;
+    };
+    // The maps a field samples (slots into maps_) and its program variant.
+    struct FieldGpu {
+        FieldMaps maps;
     };
 
     grass_result init(const grass_gl_desc& desc);
+    // The program of `kind` for `features`, compiled on first use (upload_field compiles a
+    // field's variants ahead of its first frame).
+    grass_result program(GlProgramKind kind, uint32_t features, const char* function, GLuint* out_program);
+    // Binds the field's maps at their units (kMapUnit): the density map, or the white
+    // texture, at unit 0; the others where the field has them. Leaves unit 0 active.
+    void bind_field_maps(const FieldGpu& field) const;
     grass_result check_errors(const char* function, const char* what);
     void delete_slices(SliceGpu& slices);
     const SliceGpu* find_slices(uint32_t patch_slot, uint32_t slices_per_axis) const;
@@ -69,17 +86,18 @@ private:
     void upload_frame(bool multisampled);
     void draw_blades(const FramePlan& plan) const;
     void draw_sliced(const FramePlan& plan, grass_tier_kind kind) const; // volume or image draws
+    void draw_debug(const FramePlan& plan) const;                        // GRASS_VIEW_FLAG_DEBUG_CELLS
+    GLuint program_of(GlProgramKind kind, uint32_t features) const {
+        return programs_[kind][features & (kFeatureVariants - 1)];
+    }
 
     grass_context* ctx_;
     bool loaded_ = false; // gl_ holds every entry point
     GlFunctions gl_;
-    GLuint program_ = 0; // blades
-    GLuint volume_program_ = 0;
-    GLuint image_program_ = 0;
-    GLuint tier_vertex_array_ = 0; // instances only: the volume and image tiers
-    GlDebugView debug_view_;
+    GLuint programs_[kProgramKindCount][kFeatureVariants] = {}; // 0: not compiled yet
+    GLuint tier_vertex_array_ = 0; // instances only: the volume and image tiers, debug boxes
     GLuint white_texture_ = 0;
-    GLuint sampler_ = 0;           // density map: linear, clamped
+    GLuint sampler_ = 0;           // design maps: linear, clamped
     GLuint slice_sampler_ = 0;     // slice colour and normal: trilinear, clamped
     GLuint threshold_sampler_ = 0; // slice thresholds: nearest, never blended
     GLint uniform_alignment_ = 256;
@@ -94,6 +112,7 @@ private:
     Vector<PatchGpu> patches_;
     Vector<SliceGpu> slices_; // every patch's sets, unordered
     Vector<FieldGpu> fields_;
+    Vector<MapGpu> maps_;
 };
 
 } // namespace grass

@@ -63,18 +63,31 @@ void GlBackend::upload_frame(bool multisampled) {
     frame_multisampled_ = multisampled;
 }
 
+void GlBackend::bind_field_maps(const FieldGpu& field) const {
+    for (uint32_t role = kMapRoleCount; role-- > 0;) { // ends with unit 0 active
+        const uint32_t map = field.maps.map_slot[role];
+        if (map == kNoMap && role != kMapDensity) continue; // not sampled by the field's variant
+        gl_.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kMapUnit[role]));
+        gl_.BindTexture(GL_TEXTURE_2D, map != kNoMap ? maps_[map].texture : white_texture_);
+    }
+}
+
 // Geometry draws: the patch's blades, instances front to back.
 void GlBackend::draw_blades(const FramePlan& plan) const {
-    gl_.UseProgram(program_);
-    gl_.BindSampler(0, sampler_);
+    GLuint bound_program = 0;
+    for (const GLint unit : kMapUnit) gl_.BindSampler(static_cast<GLuint>(unit), sampler_);
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         const TierDraw& draw = plan.draws[i];
         if (draw.kind != GRASS_TIER_GEOMETRY) continue;
         const PatchGpu& patch = patches_[draw.patch_slot];
-        const FieldGpu& field = fields_[draw.field_slot];
         if (draw.instance_count == 0 || patch.index_count == 0) continue;
+        const GLuint program = program_of(kProgramBlades, draw.features);
+        if (program != bound_program) {
+            gl_.UseProgram(program);
+            bound_program = program;
+        }
         gl_.BindVertexArray(patch.vertex_array);
-        gl_.BindTexture(GL_TEXTURE_2D, field.density_map != 0 ? field.density_map : white_texture_);
+        bind_field_maps(fields_[draw.field_slot]);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
         gl_.DrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(patch.index_count), GL_UNSIGNED_INT,
                                               nullptr, static_cast<GLsizei>(draw.instance_count), draw.first_instance);
@@ -85,20 +98,25 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
 // checked that every set is there). Unit 0 is active.
 void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
     bool bound = false;
+    GLuint bound_program = 0;
+    const GlProgramKind program_kind = kind == GRASS_TIER_VOLUME ? kProgramVolume : kProgramImage;
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         const TierDraw& draw = plan.draws[i];
         if (draw.kind != kind || draw.instance_count == 0) continue;
         if (!bound) {
-            gl_.UseProgram(kind == GRASS_TIER_VOLUME ? volume_program_ : image_program_);
             gl_.BindVertexArray(tier_vertex_array_);
-            gl_.BindSampler(static_cast<GLuint>(kDensityMapUnit), sampler_);
+            for (const GLint unit : kMapUnit) gl_.BindSampler(static_cast<GLuint>(unit), sampler_);
             gl_.BindSampler(static_cast<GLuint>(kSliceColorUnit), slice_sampler_);
             gl_.BindSampler(static_cast<GLuint>(kSliceNormalUnit), slice_sampler_);
             gl_.BindSampler(static_cast<GLuint>(kSliceThresholdUnit), threshold_sampler_);
             bound = true;
         }
+        const GLuint program = program_of(program_kind, draw.features);
+        if (program != bound_program) {
+            gl_.UseProgram(program);
+            bound_program = program;
+        }
         const SliceGpu* slices = find_slices(draw.patch_slot, slice_set_of(draw));
-        const FieldGpu& field = fields_[draw.field_slot];
         const GLuint textures[3][2] = {{static_cast<GLuint>(kSliceColorUnit), slices->color},
                                        {static_cast<GLuint>(kSliceNormalUnit), slices->normal},
                                        {static_cast<GLuint>(kSliceThresholdUnit), slices->threshold}};
@@ -106,12 +124,32 @@ void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
             gl_.ActiveTexture(GL_TEXTURE0 + t[0]);
             gl_.BindTexture(GL_TEXTURE_2D_ARRAY, t[1]);
         }
-        gl_.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kDensityMapUnit));
-        gl_.BindTexture(GL_TEXTURE_2D, field.density_map != 0 ? field.density_map : white_texture_);
+        bind_field_maps(fields_[draw.field_slot]);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
         gl_.DrawArraysInstancedBaseInstance(GL_TRIANGLES, 0,
                                             kind == GRASS_TIER_VOLUME ? kVolumeVertices : kImageVertices,
                                             static_cast<GLsizei>(draw.instance_count), draw.first_instance);
+    }
+}
+
+// The debug view: one box per instance of every draw, on the terrain when the field has a
+// height map (its program variant samples that map alone).
+void GlBackend::draw_debug(const FramePlan& plan) const {
+    GLuint bound_program = 0;
+    gl_.BindVertexArray(tier_vertex_array_);
+    for (const GLint unit : kMapUnit) gl_.BindSampler(static_cast<GLuint>(unit), sampler_);
+    for (size_t i = 0; i < plan.draws.size(); ++i) {
+        const TierDraw& draw = plan.draws[i];
+        if (draw.instance_count == 0) continue;
+        const GLuint program = program_of(kProgramDebugTiers, draw.features & (1u << kMapHeight));
+        if (program != bound_program) {
+            gl_.UseProgram(program);
+            bound_program = program;
+        }
+        bind_field_maps(fields_[draw.field_slot]);
+        gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
+        gl_.DrawArraysInstancedBaseInstance(GL_TRIANGLES, 0, kImageVertices, static_cast<GLsizei>(draw.instance_count),
+                                            draw.first_instance);
     }
 }
 
@@ -137,6 +175,11 @@ grass_result GlBackend::render(const char* function) {
                               function, tier_kind_name(draw.kind), draw.patch_slot, draw.field_slot,
                               draw.first_instance, draw.instance_count);
         }
+        if (draw.features != fields_[draw.field_slot].maps.features) {
+            return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+                              "%s: a draw of field slot %u has the feature mask 0x%x, the field 0x%x (internal error)",
+                              function, draw.field_slot, draw.features, fields_[draw.field_slot].maps.features);
+        }
         if (!debug && draw.kind != GRASS_TIER_GEOMETRY && draw.instance_count > 0 &&
             find_slices(draw.patch_slot, slice_set_of(draw)) == nullptr) {
             return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_BACKEND_CALL_FAILED,
@@ -146,6 +189,17 @@ grass_result GlBackend::render(const char* function) {
                               function, draw.tier, tier_kind_name(draw.kind), draw.field_slot, draw.patch_slot,
                               slice_set_of(draw));
         }
+    }
+    // Every program variant the plan draws with (upload_field compiled the fields' tiers';
+    // the debug view's are compiled on first use). Compiling binds nothing.
+    for (const TierDraw& draw : plan.draws) {
+        const GlProgramKind kind = debug                               ? kProgramDebugTiers
+                                   : draw.kind == GRASS_TIER_GEOMETRY ? kProgramBlades
+                                   : draw.kind == GRASS_TIER_VOLUME   ? kProgramVolume
+                                                                      : kProgramImage;
+        GLuint unused = 0;
+        const grass_result result = program(kind, draw.features, function, &unused);
+        if (result != GRASS_SUCCESS) return result;
     }
     GLint sample_buffers = 0;
     gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &sample_buffers); // of the bound draw framebuffer
@@ -174,7 +228,7 @@ grass_result GlBackend::render(const char* function) {
     gl_.BindBufferRange(GL_UNIFORM_BUFFER, 0, uniforms_.name(), 0, sizeof(FrameUniforms));
 
     if (debug) {
-        debug_view_.draw(gl_, plan, uniforms_.name(), field_uniform_offsets_);
+        draw_debug(plan);
     } else {
         // Near tiers first, so the depth test rejects most of the far tiers' fragments.
         draw_blades(plan);

@@ -18,6 +18,9 @@ GLuint create_instance_vertex_array(const GlFunctions& gl, GLuint instance_buffe
     gl.EnableVertexArrayAttrib(vao, 6);
     gl.VertexArrayAttribIFormat(vao, 6, 4, GL_UNSIGNED_INT, offsetof(TierInstance, cell));
     gl.VertexArrayAttribBinding(vao, 6, kInstanceBinding);
+    gl.EnableVertexArrayAttrib(vao, 7);
+    gl.VertexArrayAttribFormat(vao, 7, 4, GL_FLOAT, GL_FALSE, offsetof(TierInstance, terrain));
+    gl.VertexArrayAttribBinding(vao, 7, kInstanceBinding);
     return vao;
 }
 

@@ -10,7 +10,8 @@ namespace grass {
 constexpr GLuint kInstanceBinding = 1;
 
 // A vertex array reading TierInstance records from `instance_buffer` on kInstanceBinding:
-// location 5 vec4 origin, location 6 uvec4 cell and size (integer). 0 on failure.
+// location 5 vec4 origin, location 6 uvec4 cell and size (integer), location 7 vec4 terrain
+// height range. 0 on failure.
 GLuint create_instance_vertex_array(const GlFunctions& gl, GLuint instance_buffer);
 
 } // namespace grass

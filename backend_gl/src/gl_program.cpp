@@ -1,5 +1,8 @@
 #include "gl_program.hpp"
 
+#include <cstdio>
+#include <cstring>
+
 namespace grass_gl_shaders {
 extern const char* const blade_vert;
 extern const char* const blade_frag;
@@ -17,17 +20,17 @@ namespace {
 
 // The density map is sampled from texture unit 0 (the unit grass_gl.h documents as
 // saved and restored); the shader's binding = 2 is the Vulkan descriptor binding. The
-// baked slices use units 3-5, as their bindings say; set here too so that nothing
-// depends on the driver honouring layout(binding) on samplers.
+// baked slices use units 3-5 and the other maps 6-9, as their bindings say; set here too
+// so that nothing depends on the driver honouring layout(binding) on samplers.
 struct SamplerUnit {
     const char* name;
     GLint unit;
 };
 constexpr SamplerUnit kSamplerUnits[] = {
-    {"density_map", kDensityMapUnit},
-    {"slice_color", kSliceColorUnit},
-    {"slice_normal", kSliceNormalUnit},
-    {"slice_threshold", kSliceThresholdUnit},
+    {"density_map", kMapUnit[kMapDensity]},  {"slice_color", kSliceColorUnit},
+    {"slice_normal", kSliceNormalUnit},      {"slice_threshold", kSliceThresholdUnit},
+    {"color_map", kMapUnit[kMapColor]},      {"ambient_map", kMapUnit[kMapAmbient]},
+    {"diffuse_map", kMapUnit[kMapDiffuse]},  {"height_map", kMapUnit[kMapHeight]},
 };
 
 // Reads a shader or program info log through the context's allocator.
@@ -40,14 +43,26 @@ Vector<char> info_log(grass_context* ctx, GLuint object, GetIv get_iv, GetLog ge
     return log;
 }
 
+// Compiles `source` with the feature mask defined right after its #version line (which
+// must come first, so the define cannot precede it).
 grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* function, GLenum stage,
-                     const char* stage_name, const char* source, GLuint* out_shader) {
+                     const char* stage_name, const char* source, uint32_t features, GLuint* out_shader) {
+    const char* newline = std::strchr(source, '\n');
+    if (std::strncmp(source, "#version", 8) != 0 || newline == nullptr) {
+        return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+                         "%s: %s does not start with a #version line (internal error)", function, stage_name);
+    }
+    char define[64];
+    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n", features);
+    const GLchar* strings[3] = {source, define, newline + 1};
+    const GLint lengths[3] = {static_cast<GLint>(newline + 1 - source), -1, -1};
+
     const GLuint shader = gl.CreateShader(stage);
     if (shader == 0) {
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
                          "%s: glCreateShader(%s) returned 0", function, stage_name);
     }
-    gl.ShaderSource(shader, 1, &source, nullptr);
+    gl.ShaderSource(shader, 3, strings, lengths);
     gl.CompileShader(shader);
     GLint ok = GL_FALSE;
     gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -55,7 +70,8 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
         const Vector<char> log = info_log(ctx, shader, gl.GetShaderiv, gl.GetShaderInfoLog);
         gl.DeleteShader(shader);
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                         "%s: the GL driver failed to compile %s: %s", function, stage_name, log.data());
+                         "%s: the GL driver failed to compile %s (features 0x%x): %s", function, stage_name,
+                         features, log.data());
     }
     *out_shader = shader;
     return GRASS_SUCCESS;
@@ -69,13 +85,35 @@ struct ProgramSource {
     const char* frag;
 };
 
-grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                            const ProgramSource& source, GLuint* out_program) {
+ProgramSource program_source(GlProgramKind kind) {
+    switch (kind) {
+    case kProgramVolume:
+        return {"the volume tier program", "volume.vert", grass_gl_shaders::volume_vert, "volume.frag",
+                grass_gl_shaders::volume_frag};
+    case kProgramImage:
+        return {"the image tier program", "image.vert", grass_gl_shaders::image_vert, "image.frag",
+                grass_gl_shaders::image_frag};
+    case kProgramDebugTiers:
+        return {"the debug tiers program", "debug_tiers.vert", grass_gl_shaders::debug_tiers_vert,
+                "debug_tiers.frag", grass_gl_shaders::debug_tiers_frag};
+    case kProgramBlades:
+    default:
+        return {"the blade program", "blade.vert", grass_gl_shaders::blade_vert, "blade.frag",
+                grass_gl_shaders::blade_frag};
+    }
+}
+
+} // namespace
+
+grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
+                            uint32_t features, GLuint* out_program) {
+    const ProgramSource source = program_source(kind);
     GLuint vert = 0;
     GLuint frag = 0;
-    grass_result result = compile(ctx, gl, function, GL_VERTEX_SHADER, source.vert_name, source.vert, &vert);
+    grass_result result =
+        compile(ctx, gl, function, GL_VERTEX_SHADER, source.vert_name, source.vert, features, &vert);
     if (result != GRASS_SUCCESS) return result;
-    result = compile(ctx, gl, function, GL_FRAGMENT_SHADER, source.frag_name, source.frag, &frag);
+    result = compile(ctx, gl, function, GL_FRAGMENT_SHADER, source.frag_name, source.frag, features, &frag);
     if (result != GRASS_SUCCESS) {
         gl.DeleteShader(vert);
         return result;
@@ -102,7 +140,8 @@ grass_result create_program(grass_context* ctx, const GlFunctions& gl, const cha
         const Vector<char> log = info_log(ctx, program, gl.GetProgramiv, gl.GetProgramInfoLog);
         gl.DeleteProgram(program);
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                         "%s: the GL driver failed to link %s: %s", function, source.name, log.data());
+                         "%s: the GL driver failed to link %s (features 0x%x): %s", function, source.name, features,
+                         log.data());
     }
 
     for (const SamplerUnit& sampler : kSamplerUnits) {
@@ -111,36 +150,6 @@ grass_result create_program(grass_context* ctx, const GlFunctions& gl, const cha
     }
     *out_program = program;
     return GRASS_SUCCESS;
-}
-
-} // namespace
-
-grass_result create_blade_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                  GLuint* out_program) {
-    const ProgramSource source = {"the blade program", "blade.vert", grass_gl_shaders::blade_vert, "blade.frag",
-                                  grass_gl_shaders::blade_frag};
-    return create_program(ctx, gl, function, source, out_program);
-}
-
-grass_result create_debug_tiers_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                        GLuint* out_program) {
-    const ProgramSource source = {"the debug tiers program", "debug_tiers.vert", grass_gl_shaders::debug_tiers_vert,
-                                  "debug_tiers.frag", grass_gl_shaders::debug_tiers_frag};
-    return create_program(ctx, gl, function, source, out_program);
-}
-
-grass_result create_image_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                  GLuint* out_program) {
-    const ProgramSource source = {"the image tier program", "image.vert", grass_gl_shaders::image_vert, "image.frag",
-                                  grass_gl_shaders::image_frag};
-    return create_program(ctx, gl, function, source, out_program);
-}
-
-grass_result create_volume_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                   GLuint* out_program) {
-    const ProgramSource source = {"the volume tier program", "volume.vert", grass_gl_shaders::volume_vert,
-                                  "volume.frag", grass_gl_shaders::volume_frag};
-    return create_program(ctx, gl, function, source, out_program);
 }
 
 } // namespace grass

@@ -1,36 +1,44 @@
-// The backend's programs, compiled by the driver from the embedded shader sources.
+// The backend's programs, compiled by the driver from the embedded shader sources. Each
+// program comes in variants, one per design-map feature mask (GRASS_FEATURES in
+// blade_interface.glsl: bit = 1 << MapRole), so that a field samples only its own maps.
 #pragma once
 
 #include "gl_functions.hpp"
 
+#include <backend.hpp>
 #include <context.hpp>
 
 namespace grass {
 
 // Texture units of the programs' samplers. Unit 0 holds the density map (the shaders'
-// binding 2 is the Vulkan descriptor binding); units 3-5 the baked slices, as bound in
-// blade_interface.glsl. All of them are saved and restored around drawing.
+// binding 2 is the Vulkan descriptor binding; unit 0 is the one grass_gl.h documents);
+// units 3-5 the baked slices and 6-9 the colour, ambient, diffuse and height maps, as bound
+// in blade_interface.glsl. All of them are saved and restored around drawing.
 constexpr GLint kDensityMapUnit = 0;
 constexpr GLint kSliceColorUnit = 3;
 constexpr GLint kSliceNormalUnit = 4;
 constexpr GLint kSliceThresholdUnit = 5;
+constexpr GLint kMapUnit[kMapRoleCount] = {kDensityMapUnit, static_cast<GLint>(kMapBinding[kMapColor]),
+                                           static_cast<GLint>(kMapBinding[kMapAmbient]),
+                                           static_cast<GLint>(kMapBinding[kMapDiffuse]),
+                                           static_cast<GLint>(kMapBinding[kMapHeight])};
+static_assert(kMapUnit[kMapColor] == 6 && kMapUnit[kMapHeight] == 9, "design map units 6-9");
 
-// Compiles and links blade.vert + blade.frag. On failure the driver's log is in the
-// context's error message (named after `function`) and nothing is left behind.
-grass_result create_blade_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                  GLuint* out_program);
+// The programs of the backend.
+enum GlProgramKind : uint32_t {
+    kProgramBlades = 0,     // blade.vert + blade.frag
+    kProgramVolume = 1,     // volume.vert + volume.frag
+    kProgramImage = 2,      // image.vert + image.frag
+    kProgramDebugTiers = 3, // debug_tiers.vert + debug_tiers.frag (GRASS_VIEW_FLAG_DEBUG_CELLS)
+    kProgramKindCount = 4
+};
+constexpr uint32_t kFeatureVariants = 1u << kMapRoleCount; // every feature mask
 
-// Compiles and links debug_tiers.vert + debug_tiers.frag (GRASS_VIEW_FLAG_DEBUG_CELLS),
-// with the same failure behaviour.
-grass_result create_debug_tiers_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                        GLuint* out_program);
-
-// Compiles and links image.vert + image.frag (the image tier), same failure behaviour.
-grass_result create_image_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                  GLuint* out_program);
-
-// Compiles and links volume.vert + volume.frag (the volume tier), same failure behaviour.
-grass_result create_volume_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                   GLuint* out_program);
+// Compiles and links the program of `kind` for the feature mask `features` (< 32): the
+// shaders get `#define GRASS_FEATURES <features>u` after their #version line. On failure
+// the driver's log is in the context's error message (named after `function`) and nothing
+// is left behind.
+grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
+                            uint32_t features, GLuint* out_program);
 
 } // namespace grass

@@ -20,6 +20,8 @@ constexpr GLenum kUnpackParameters[] = {
 };
 
 constexpr GLint kSliceUnitList[] = {kSliceColorUnit, kSliceNormalUnit, kSliceThresholdUnit};
+constexpr GLint kMapUnitList[] = {kMapUnit[kMapColor], kMapUnit[kMapAmbient], kMapUnit[kMapDiffuse],
+                                  kMapUnit[kMapHeight]};
 
 static_assert(sizeof(kUnpackParameters) / sizeof(kUnpackParameters[0]) == 7, "GlUnpackStateGuard::kParameters");
 
@@ -42,6 +44,13 @@ GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl) : gl_(gl) {
         gl.ActiveTexture(GL_TEXTURE0 + unit);
         gl.GetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &slice_units_[i].texture_2d_array);
         gl.GetIntegerv(GL_SAMPLER_BINDING, &slice_units_[i].sampler);
+    }
+    static_assert(sizeof(kMapUnitList) / sizeof(kMapUnitList[0]) == kMapUnits, "map units");
+    for (int i = 0; i < kMapUnits; ++i) {
+        const GLuint unit = static_cast<GLuint>(kMapUnitList[i]);
+        gl.ActiveTexture(GL_TEXTURE0 + unit);
+        gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &map_units_[i].texture_2d);
+        gl.GetIntegerv(GL_SAMPLER_BINDING, &map_units_[i].sampler);
     }
     gl.ActiveTexture(GL_TEXTURE0);
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d_unit0_);
@@ -81,6 +90,12 @@ GlDrawStateGuard::~GlDrawStateGuard() {
         gl.ActiveTexture(GL_TEXTURE0 + unit);
         gl.BindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(slice_units_[i].texture_2d_array));
         gl.BindSampler(unit, static_cast<GLuint>(slice_units_[i].sampler));
+    }
+    for (int i = 0; i < kMapUnits; ++i) {
+        const GLuint unit = static_cast<GLuint>(kMapUnitList[i]);
+        gl.ActiveTexture(GL_TEXTURE0 + unit);
+        gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(map_units_[i].texture_2d));
+        gl.BindSampler(unit, static_cast<GLuint>(map_units_[i].sampler));
     }
     gl.ActiveTexture(static_cast<GLenum>(active_texture_));
     gl.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);

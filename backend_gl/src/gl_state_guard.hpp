@@ -8,8 +8,8 @@
 namespace grass {
 
 // Around drawing: exactly the state grass_gl.h documents for grass_gl_render, with the
-// slice units 3-5 (their 2D array texture and sampler). On construction texture unit 0 is
-// made active (the unit the backend binds with glBindTexture).
+// slice units 3-5 (their 2D array texture and sampler) and the design-map units 6-9 (their
+// 2D texture and sampler). On construction texture unit 0 is made active.
 class GlDrawStateGuard {
 public:
     explicit GlDrawStateGuard(const GlFunctions& gl);
@@ -29,6 +29,11 @@ private:
         GLint texture_2d_array;
         GLint sampler;
     };
+    static constexpr int kMapUnits = 4; // units 6, 7, 8, 9 (gl_program.hpp)
+    struct MapUnit {
+        GLint texture_2d;
+        GLint sampler;
+    };
 
     const GlFunctions& gl_;
     GLint program_ = 0;
@@ -40,6 +45,7 @@ private:
     GLint texture_2d_unit0_ = 0;
     GLint sampler_unit0_ = 0;
     SliceUnit slice_units_[kSliceUnits] = {};
+    MapUnit map_units_[kMapUnits] = {};
     GLint viewport_[4] = {0, 0, 0, 0};
     GLboolean depth_test_ = GL_FALSE;
     GLint depth_func_ = GL_LESS;

@@ -2,6 +2,7 @@
 
 #include "context.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace grass::vk {
@@ -10,7 +11,7 @@ namespace {
 
 constexpr VkBufferUsageFlags kVertexUsage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 constexpr VkBufferUsageFlags kIndexUsage = VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-constexpr VkImageUsageFlags kDensityUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+constexpr VkImageUsageFlags kMapUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 constexpr VkImageUsageFlags kSliceUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 // Texel sizes of the slice images (colour and normal RGBA8, threshold R16).
 constexpr uint32_t kSliceColorBytes = 4, kSliceNormalBytes = 4, kSliceThresholdBytes = 2;
@@ -54,11 +55,10 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       memory_(fn_, device_.device, device_.memory, device_.properties.limits.nonCoherentAtomSize),
       descriptors_(fn_, device_.device, &context->host), frame_sets_(fn_, device_.device, &context->host),
       deferred_(memory_, descriptors_, &context->host, vk_desc.frames_in_flight), pipeline_(fn_, device_.device),
-      debug_view_(fn_, device_.device), slice_pipelines_(fn_, device_.device),
       ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment,
             vk_desc.sample_count > 1),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
-      fields_(StlAllocator<FieldGpu>(&context->host)), slices_(StlAllocator<SliceGpu>(&context->host)),
+      fields_(StlAllocator<FieldGpu>(&context->host)), maps_(StlAllocator<MapGpu>(&context->host)), slices_(StlAllocator<SliceGpu>(&context->host)),
       draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),
       regions_(StlAllocator<VkBufferImageCopy>(&context->host)) {}
 
@@ -67,9 +67,12 @@ VkBackend::~VkBackend() {
     for (PatchGpu& p : patches_) destroy_patch_now(&p);
     for (SliceGpu& s : slices_) destroy_slices_now(&s);
     for (FieldGpu& f : fields_) destroy_field_now(&f);
+    for (MapGpu& m : maps_) destroy_map_now(&m);
     deferred_.collect_all();
-    memory_.destroy_buffer(&default_staging_);
-    memory_.destroy_image(&default_density_);
+    memory_.destroy_buffer(&default_white_staging_);
+    memory_.destroy_image(&default_white_);
+    memory_.destroy_buffer(&default_black_staging_);
+    memory_.destroy_image(&default_black_);
     memory_.destroy_buffer(&default_slices_staging_);
     memory_.destroy_image(&default_slices_);
     // The frame ring, pipelines and descriptor pools go with their members.
@@ -84,15 +87,29 @@ grass_result VkBackend::init(const char* function) {
     const char* what = "";
     const PipelineTarget target = pipeline_target(ctx_, desc_);
     if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
-    if (!debug_view_.create(target, pipeline_.layout(), &failure, &what)) return fail(function, what, failure);
-    if (!slice_pipelines_.create(target, pipeline_.layout(), &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);
 
-    // The density map of fields without one: a single white texel (density x 1).
+    // Colour maps are RGBA16; the device check (load_device) asked only for R16.
+    VkFormatProperties rgba16{};
+    fn_.vkGetPhysicalDeviceFormatProperties(device_.physical_device, VK_FORMAT_R16G16B16A16_UNORM, &rgba16);
+    const VkFormatFeatureFlags needed = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+                                        VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT |
+                                        VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
+    rgba16_maps_ = (rgba16.optimalTilingFeatures & needed) == needed;
+
+    // The maps of fields without them (every binding must hold a valid image, though a
+    // variant samples only its own maps): a white texel for density, ambient and diffuse
+    // (x 1), a transparent black one for colour (weight 0) and height (0).
     const uint16_t white = 0xffff;
-    deferred_.promise(1); // the staging buffer, retired once its copy is recorded
-    if (!stage_image(&default_density_, &default_staging_, MapTexels{&white, 1, 1}, &failure, &what)) {
-        return fail(function, "the default density map", failure);
+    const uint16_t black[4] = {0, 0, 0, 0};
+    deferred_.promise(2); // the staging buffers, retired once their copies are recorded
+    if (!stage_image(&default_white_, &default_white_staging_, MapTexels{&white, 1, 1, 1}, &failure, &what)) {
+        return fail(function, "the default white map", failure); // the destructor frees what was made
+    }
+    pending_uploads_ += 1;
+    if (!stage_image(&default_black_, &default_black_staging_, MapTexels{black, 1, 1, rgba16_maps_ ? 4u : 1u},
+                     &failure, &what)) {
+        return fail(function, "the default black map", failure);
     }
     pending_uploads_ += 1;
 
@@ -112,12 +129,11 @@ grass_result VkBackend::init(const char* function) {
 
 bool VkBackend::stage_image(Image* image, Buffer* staging, const MapTexels& texels, VkFailure* failure,
                             const char** what) {
-    *what = "a density map image";
-    if (!memory_.create_image(texels.width, texels.height, kDensityMapFormat, kDensityUsage, image, failure)) {
-        return false;
-    }
-    const VkDeviceSize bytes = VkDeviceSize(texels.width) * texels.height * sizeof(uint16_t);
-    *what = "a density map staging buffer";
+    *what = "a design map image";
+    const VkFormat format = texels.channels == 4 ? VK_FORMAT_R16G16B16A16_UNORM : kDensityMapFormat;
+    if (!memory_.create_image(texels.width, texels.height, format, kMapUsage, image, failure)) return false;
+    const VkDeviceSize bytes = VkDeviceSize(texels.width) * texels.height * texels.channels * sizeof(uint16_t);
+    *what = "a design map staging buffer";
     if (!memory_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, staging, failure)) {
         memory_.destroy_image(image);
         return false;
@@ -356,19 +372,160 @@ void VkBackend::release_slices(SliceGpu* s) {
     *s = SliceGpu{};
 }
 
+// ---- Design maps ------------------------------------------------------------------------
+
+bool VkBackend::stage_region(Buffer* staging, const MapTexels& map, const MapRegion& region, VkFailure* failure) {
+    const size_t row_bytes = size_t(region.width) * map.channels * sizeof(uint16_t);
+    const VkDeviceSize bytes = VkDeviceSize(row_bytes) * region.height;
+    if (!memory_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, staging, failure)) {
+        return false;
+    }
+    auto* out = static_cast<unsigned char*>(staging->mapped);
+    for (uint32_t row = 0; row < region.height; ++row) {
+        const uint16_t* from = map.texels + (size_t(region.y + row) * map.width + region.x) * map.channels;
+        std::memcpy(out + row * row_bytes, from, row_bytes);
+    }
+    if (!memory_.flush(*staging, 0, bytes, failure)) {
+        memory_.destroy_buffer(staging);
+        return false;
+    }
+    return true;
+}
+
+grass_result VkBackend::upload_map(uint32_t slot, const MapTexels& map) {
+    const char* function = "grass_create_map";
+    const VkPhysicalDeviceLimits& limits = device_.properties.limits;
+    if (map.channels == 4 && !rgba16_maps_) {
+        return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                          "%s: the device \"%s\" cannot sample VK_FORMAT_R16G16B16A16_UNORM images with linear "
+                          "filtering, which colour maps need",
+                          function, device_.properties.deviceName);
+    }
+    if (map.width > limits.maxImageDimension2D || map.height > limits.maxImageDimension2D) {
+        return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                          "%s: a design map of %u x %u texels exceeds what the device \"%s\" holds in a 2D image "
+                          "(%u texels a side)",
+                          function, map.width, map.height, device_.properties.deviceName, limits.maxImageDimension2D);
+    }
+    if (slot >= maps_.size()) maps_.resize(slot + 1, MapGpu{}); // may throw: nothing made yet
+    deferred_.promise(2);                                        // image, staging
+
+    MapGpu fresh;
+    fresh.live = true;
+    fresh.channels = map.channels;
+    VkFailure failure;
+    const char* what = "";
+    if (!stage_image(&fresh.image, &fresh.staging, map, &failure, &what)) {
+        deferred_.forgo(2);
+        return fail(function, what, failure);
+    }
+    fresh.pending = true;
+    pending_uploads_ += 1;
+    maps_[slot] = fresh;
+    return GRASS_SUCCESS;
+}
+
+grass_result VkBackend::update_map(uint32_t slot, const MapTexels& map, const MapRegion& region) {
+    const char* function = "grass_update_map";
+    if (slot >= maps_.size() || !maps_[slot].live) {
+        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
+                          "%s: the design map in slot %u, which the Vulkan backend does not hold", function, slot);
+    }
+    MapGpu& m = maps_[slot];
+    if (region.width == 0 || region.height == 0) return GRASS_SUCCESS;
+    VkFailure failure;
+    if (m.pending) {
+        // The first copy is not recorded yet: its staging buffer takes the new texels.
+        const size_t row_bytes = size_t(region.width) * map.channels * sizeof(uint16_t);
+        auto* out = static_cast<unsigned char*>(m.staging.mapped);
+        for (uint32_t row = 0; row < region.height; ++row) {
+            const size_t at = (size_t(region.y + row) * map.width + region.x) * map.channels;
+            std::memcpy(out + at * sizeof(uint16_t), map.texels + at, row_bytes);
+        }
+        if (!memory_.flush(m.staging, 0, m.staging.size, &failure)) {
+            return fail(function, "a design map staging buffer", failure);
+        }
+        return GRASS_SUCCESS;
+    }
+    // Updates not recorded yet merge with this one: `map` holds them all, so its texels over
+    // the bounding rectangle are what the image must hold there.
+    MapRegion merged = region;
+    if (m.updating) {
+        const uint32_t x0 = std::min(region.x, m.update.x), y0 = std::min(region.y, m.update.y);
+        const uint32_t x1 = std::max(region.x + region.width, m.update.x + m.update.width);
+        const uint32_t y1 = std::max(region.y + region.height, m.update.y + m.update.height);
+        merged = MapRegion{x0, y0, x1 - x0, y1 - y0};
+    }
+    deferred_.promise(1); // the staging buffer, retired once its copy is recorded
+    Buffer staging;
+    if (!stage_region(&staging, map, merged, &failure)) {
+        deferred_.forgo(1);
+        return fail(function, "a design map update staging buffer", failure);
+    }
+    if (m.updating) {
+        // Its copy was never recorded: the old staging buffer goes now.
+        memory_.destroy_buffer(&m.update_staging);
+        deferred_.forgo(1);
+    } else {
+        m.updating = true;
+        pending_uploads_ += 1;
+    }
+    m.update_staging = staging;
+    m.update = merged;
+    return GRASS_SUCCESS;
+}
+
+void VkBackend::destroy_map_now(MapGpu* m) {
+    // Context destruction: the device is idle for grass work.
+    if (m->pending) pending_uploads_ -= 1;
+    if (m->updating) pending_uploads_ -= 1;
+    memory_.destroy_image(&m->image);
+    memory_.destroy_buffer(&m->staging);
+    memory_.destroy_buffer(&m->update_staging);
+    *m = MapGpu{};
+}
+
+void VkBackend::release_map(uint32_t slot) {
+    if (slot >= maps_.size() || !maps_[slot].live) return;
+    MapGpu& m = maps_[slot];
+    // Copies never recorded: their staging buffers go now. (Once recorded, a staging
+    // buffer was retired by prepare_frame.)
+    if (m.pending) {
+        memory_.destroy_buffer(&m.staging);
+        deferred_.forgo(1);
+        pending_uploads_ -= 1;
+    }
+    if (m.updating) {
+        memory_.destroy_buffer(&m.update_staging);
+        deferred_.forgo(1);
+        pending_uploads_ -= 1;
+    }
+    // Draws of frames still in flight may sample it.
+    deferred_.retire(&m.image, frame_);
+    m = MapGpu{};
+}
+
 // ---- Fields -----------------------------------------------------------------------------
 
-void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, VkImageView density, const VkImageView (&slices)[3]) {
+VkImageView VkBackend::map_view(const FieldGpu& f, uint32_t role) const {
+    const uint32_t slot = f.map_slot[role];
+    if (slot != kNoMap && slot < maps_.size() && maps_[slot].live) return maps_[slot].image.view;
+    return role == kMapColor || role == kMapHeight ? default_black_.view : default_white_.view;
+}
+
+void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& field, const VkImageView (&slices)[3]) {
     const VkBuffer uniforms = ring_.uniform_buffer(slot);
     const VkDescriptorBufferInfo frame_block{uniforms, 0, sizeof(FrameUniforms)};
     const VkDescriptorBufferInfo field_block{uniforms, 0, sizeof(FieldUniforms)};
-    // The samplers are immutable, in the layout.
-    const VkDescriptorImageInfo images[4] = {
-        {VK_NULL_HANDLE, density, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-        {VK_NULL_HANDLE, slices[0], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-        {VK_NULL_HANDLE, slices[1], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-        {VK_NULL_HANDLE, slices[2], VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
-    };
+    // The samplers are immutable, in the layout. Bindings 2..9: images[binding - 2].
+    VkDescriptorImageInfo images[kBindingCount - kBindingDensityMap];
+    for (VkDescriptorImageInfo& i : images) i = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    for (uint32_t role = 0; role < kMapRoleCount; ++role) {
+        images[kMapBinding[role] - kBindingDensityMap].imageView = map_view(field, role);
+    }
+    images[kBindingSliceColor - kBindingDensityMap].imageView = slices[0];
+    images[kBindingSliceNormal - kBindingDensityMap].imageView = slices[1];
+    images[kBindingSliceThreshold - kBindingDensityMap].imageView = slices[2];
     VkWriteDescriptorSet writes[kBindingCount];
     for (uint32_t i = 0; i < kBindingCount; ++i) {
         writes[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -387,48 +544,52 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, VkImageView densit
     fn_.vkUpdateDescriptorSets(device_.device, kBindingCount, writes, 0, nullptr);
 }
 
-VkImageView VkBackend::density_view(const FieldGpu& f) const {
-    return f.density.image ? f.density.view : default_density_.view;
-}
-
-grass_result VkBackend::upload_field(uint32_t slot, const MapTexels& density) {
+grass_result VkBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
     const char* function = "grass_create_field";
+    for (uint32_t role = 0; role < kMapRoleCount; ++role) {
+        const uint32_t m = maps.map_slot[role];
+        const bool has = (maps.features >> role) & 1u;
+        if (has != (m != kNoMap) || (m != kNoMap && (m >= maps_.size() || !maps_[m].live))) {
+            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
+                              "%s: the field in slot %u samples map role %u from map slot %u (feature mask 0x%x), "
+                              "which the Vulkan backend does not hold",
+                              function, slot, role, m, maps.features);
+        }
+    }
+    if (maps.features >= kFeatureMaskCount) {
+        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE, "%s: feature mask 0x%x of the field in slot %u",
+                          function, maps.features, slot);
+    }
     if (slot >= fields_.size()) fields_.resize(slot + 1, FieldGpu{}); // may throw: nothing made yet
-    const bool has_map = density.texels != nullptr;
-    const uint32_t promised = desc_.frames_in_flight + (has_map ? 2 : 0); // sets, image, staging
-    deferred_.promise(promised);
-
-    FieldGpu fresh;
-    fresh.live = true;
     VkFailure failure;
     const char* what = "";
-    bool ok = !has_map || stage_image(&fresh.density, &fresh.staging, density, &failure, &what);
+    // The shader variant of its maps, shared with every field of the same mask.
+    if (!pipeline_.create_variant(maps.features, &failure, &what)) return fail(function, what, failure);
+
+    const uint32_t promised = desc_.frames_in_flight; // the sets
+    deferred_.promise(promised);
+    FieldGpu fresh;
+    fresh.live = true;
+    fresh.features = maps.features;
+    for (uint32_t role = 0; role < kMapRoleCount; ++role) fresh.map_slot[role] = maps.map_slot[role];
+    bool ok = true;
     for (uint32_t i = 0; ok && i < desc_.frames_in_flight; ++i) {
         what = "a field descriptor set";
         ok = descriptors_.allocate(pipeline_.set_layout(), &fresh.sets[i], &failure);
     }
     if (!ok) {
-        memory_.destroy_image(&fresh.density);
-        memory_.destroy_buffer(&fresh.staging);
         for (DescriptorSet& s : fresh.sets) descriptors_.free(&s);
         deferred_.forgo(promised);
         return fail(function, what, failure);
     }
     const VkImageView none[3] = {default_slices_.view, default_slices_.view, default_slices_.view};
-    for (uint32_t i = 0; i < desc_.frames_in_flight; ++i) write_set(fresh.sets[i].set, i, density_view(fresh), none);
-    if (has_map) {
-        fresh.pending = true;
-        pending_uploads_ += 1;
-    }
+    for (uint32_t i = 0; i < desc_.frames_in_flight; ++i) write_set(fresh.sets[i].set, i, fresh, none);
     fields_[slot] = fresh;
     return GRASS_SUCCESS;
 }
 
 void VkBackend::destroy_field_now(FieldGpu* f) {
     // Context destruction: the device is idle for grass work.
-    if (f->pending) pending_uploads_ -= 1;
-    memory_.destroy_image(&f->density);
-    memory_.destroy_buffer(&f->staging);
     for (DescriptorSet& s : f->sets) descriptors_.free(&s);
     *f = FieldGpu{};
 }
@@ -436,14 +597,8 @@ void VkBackend::destroy_field_now(FieldGpu* f) {
 void VkBackend::release_field(uint32_t slot) {
     if (slot >= fields_.size() || !fields_[slot].live) return;
     FieldGpu& f = fields_[slot];
-    if (f.pending) {
-        // Its copy was never recorded: the staging buffer goes now. (Once recorded, the
-        // staging buffer was retired by prepare_frame.)
-        memory_.destroy_buffer(&f.staging);
-        deferred_.forgo(1);
-        pending_uploads_ -= 1;
-    }
-    deferred_.retire(&f.density, frame_);
+    // Its maps live on (the core releases each when no field uses it); the pipelines of its
+    // mask stay cached.
     for (DescriptorSet& s : f.sets) deferred_.retire(&s, frame_);
     f = FieldGpu{};
 }
@@ -468,7 +623,7 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
         // This slot's sets were last used by frame frame_ - frames_in_flight, which is done.
         const VkImageView none[3] = {default_slices_.view, default_slices_.view, default_slices_.view};
         for (const FieldGpu& f : fields_) {
-            if (f.live) write_set(f.sets[slot_].set, slot_, density_view(f), none);
+            if (f.live) write_set(f.sets[slot_].set, slot_, f, none);
         }
     }
     return GRASS_SUCCESS;
@@ -479,7 +634,8 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
 
     // Build the batch first: it may throw std::bad_alloc, and nothing has changed yet.
     batch_.clear();
-    if (default_staging_.buffer) batch_.copy_image(default_staging_.buffer, 0, default_density_.image, 1, 1);
+    if (default_white_staging_.buffer) batch_.copy_image(default_white_staging_.buffer, 0, default_white_.image, 1, 1);
+    if (default_black_staging_.buffer) batch_.copy_image(default_black_staging_.buffer, 0, default_black_.image, 1, 1);
     if (default_slices_staging_.buffer) {
         batch_.copy_image(default_slices_staging_.buffer, 0, default_slices_.image, 1, 1);
     }
@@ -488,8 +644,13 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
         batch_.copy_buffer(p.staging.buffer, 0, p.vertices.buffer, p.vertices.size, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
         batch_.copy_buffer(p.staging.buffer, p.vertices.size, p.indices.buffer, p.indices.size, VK_ACCESS_INDEX_READ_BIT);
     }
-    for (const FieldGpu& f : fields_) {
-        if (f.pending) batch_.copy_image(f.staging.buffer, 0, f.density.image, f.density.width, f.density.height);
+    for (const MapGpu& m : maps_) {
+        // A map is either new (its whole image) or updated (a rectangle of it), never both.
+        if (m.pending) batch_.copy_image(m.staging.buffer, 0, m.image.image, m.image.width, m.image.height);
+        if (m.updating) {
+            batch_.update_image(m.update_staging.buffer, m.image.image, m.update.x, m.update.y, m.update.width,
+                                m.update.height);
+        }
     }
     for (const SliceGpu& s : slices_) {
         if (!s.pending) continue;
@@ -516,7 +677,8 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
     batch_.record(fn_, cmd);
 
     // The staging buffers wait until this frame's copies have run on the GPU.
-    deferred_.retire(&default_staging_, frame_);
+    deferred_.retire(&default_white_staging_, frame_);
+    deferred_.retire(&default_black_staging_, frame_);
     deferred_.retire(&default_slices_staging_, frame_);
     for (SliceGpu& s : slices_) {
         if (!s.pending) continue;
@@ -528,10 +690,10 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
         deferred_.retire(&p.staging, frame_);
         p.pending = false;
     }
-    for (FieldGpu& f : fields_) {
-        if (!f.pending) continue;
-        deferred_.retire(&f.staging, frame_);
-        f.pending = false;
+    for (MapGpu& m : maps_) {
+        if (m.pending) deferred_.retire(&m.staging, frame_);
+        if (m.updating) deferred_.retire(&m.update_staging, frame_);
+        m.pending = m.updating = false;
     }
     pending_uploads_ = 0;
     return GRASS_SUCCESS;
@@ -562,13 +724,18 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
         *problem = draw.kind == GRASS_TIER_VOLUME ? "its patch's baked vertical slices" : "its patch's baked horizontal slice";
         return false;
     }
-    // The field's descriptor set points at its density map (or the default one).
-    if (f.pending) {
-        *problem = "its density map";
-        return false;
+    // The field's descriptor sets point at its maps (or the default ones): each must have
+    // its copies recorded, the first and any update since (the plan already follows the
+    // updated texels).
+    for (uint32_t role = 0; role < kMapRoleCount; ++role) {
+        const uint32_t m = f.map_slot[role];
+        if (m != kNoMap && m < maps_.size() && (maps_[m].pending || maps_[m].updating)) {
+            *problem = maps_[m].pending ? "one of its design maps" : "an update of one of its design maps";
+            return false;
+        }
     }
-    if (!f.density.image && default_staging_.buffer) {
-        *problem = "the default density map";
+    if (default_white_staging_.buffer || default_black_staging_.buffer) {
+        *problem = "the default design maps";
         return false;
     }
     if (default_slices_staging_.buffer) {
@@ -600,12 +767,22 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
                               "grass_begin_frame() and outside the render pass",
                               d.field_slot, problem);
         }
+        if (d.features >= kFeatureMaskCount) {
+            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
+                              "grass_vk_record: tier %u of the field in slot %u has feature mask 0x%x", d.tier,
+                              d.field_slot, d.features);
+        }
+        // upload_field made the variant of the field's maps; one the plan asks for besides
+        // is made here, before anything is recorded.
+        VkFailure failure;
+        const char* what = "";
+        if (!pipeline_.create_variant(d.features, &failure, &what)) return fail("grass_vk_record", what, failure);
         draw_count += 1;
         if (!debug_view && d.kind != GRASS_TIER_GEOMETRY) slice_draws += 1;
     }
     if (draw_count == 0) return GRASS_SUCCESS;
 
-    // The volume and image draws pair the field's density map with the patch's slices: a
+    // The volume and image draws pair the field's design maps with the patch's slices: a
     // fresh set each, from this frame slot's pools (never one a frame in flight may use).
     if (slice_draws > 0) {
         draw_sets_.assign(plan.draws.size(), VK_NULL_HANDLE); // may throw: nothing recorded yet
@@ -618,7 +795,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
             }
             const SliceGpu* s = draw_slices(d);
             const VkImageView views[3] = {s->color.view, s->normal.view, s->threshold.view};
-            write_set(draw_sets_[i], slot_, density_view(fields_[d.field_slot]), views);
+            write_set(draw_sets_[i], slot_, fields_[d.field_slot], views);
         }
     }
 
@@ -645,11 +822,16 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
 
     if (debug_view) {
         // Every draw as boxes, in plan order.
-        fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, debug_view_.pipeline(depth_test));
+        VkPipeline bound_pipeline = VK_NULL_HANDLE;
         fn_.vkCmdBindVertexBuffers(cmd, DebugViewPipeline::kInstanceBinding, 1, &instances, &zero);
         for (uint32_t i = 0; i < plan.draws.size(); ++i) {
             const TierDraw& d = plan.draws[i];
             if (!drawn(d, true)) continue;
+            const VkPipeline pipeline = pipeline_.pipeline(kPipelineDebugView, d.features, depth_test);
+            if (pipeline != bound_pipeline) {
+                fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+                bound_pipeline = pipeline;
+            }
             bind_set(i, fields_[d.field_slot].sets[slot_].set);
             fn_.vkCmdDraw(cmd, DebugViewPipeline::kVerticesPerBox, d.instance_count, 0, d.first_instance);
         }
@@ -658,14 +840,17 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
 
     // Blades first (they fill the depth buffer near the camera), then the volumes, then
     // the images on the ground far away.
-    bool bound = false;
+    // The pipeline of each draw is the variant of its feature mask; binding one keeps the
+    // vertex buffers and the descriptor set (same layout).
+    VkPipeline bound_pipeline = VK_NULL_HANDLE;
     uint32_t bound_patch = UINT32_MAX;
     for (uint32_t i = 0; i < plan.draws.size(); ++i) {
         const TierDraw& d = plan.draws[i];
         if (d.kind != GRASS_TIER_GEOMETRY || !drawn(d, false)) continue;
-        if (!bound) {
-            fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.pipeline(depth_test));
-            bound = true;
+        const VkPipeline pipeline = pipeline_.pipeline(kPipelineBlade, d.features, depth_test);
+        if (pipeline != bound_pipeline) {
+            fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+            bound_pipeline = pipeline;
         }
         bind_set(i, fields_[d.field_slot].sets[slot_].set);
         const PatchGpu& p = patches_[d.patch_slot];
@@ -681,21 +866,25 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     if (slice_draws == 0) return GRASS_SUCCESS;
     const struct {
         grass_tier_kind kind;
-        VkPipeline pipeline;
+        PipelineKind pipeline;
         uint32_t vertices;
     } passes[2] = {
-        {GRASS_TIER_VOLUME, slice_pipelines_.volume(depth_test), SlicePipelines::kVerticesPerVolume},
-        {GRASS_TIER_IMAGE, slice_pipelines_.image(depth_test), SlicePipelines::kVerticesPerImage},
+        {GRASS_TIER_VOLUME, kPipelineVolume, SlicePipelines::kVerticesPerVolume},
+        {GRASS_TIER_IMAGE, kPipelineImage, SlicePipelines::kVerticesPerImage},
     };
     for (const auto& pass : passes) {
-        bound = false;
+        bound_pipeline = VK_NULL_HANDLE;
         for (uint32_t i = 0; i < plan.draws.size(); ++i) {
             const TierDraw& d = plan.draws[i];
             if (d.kind != pass.kind || !draw_sets_[i]) continue;
-            if (!bound) {
-                fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.pipeline);
-                fn_.vkCmdBindVertexBuffers(cmd, SlicePipelines::kInstanceBinding, 1, &instances, &zero);
-                bound = true;
+            const VkPipeline pipeline = pipeline_.pipeline(pass.pipeline, d.features, depth_test);
+            if (pipeline != bound_pipeline) {
+                if (!bound_pipeline) {
+                    // Binding 0 held the patch vertices of the blades.
+                    fn_.vkCmdBindVertexBuffers(cmd, SlicePipelines::kInstanceBinding, 1, &instances, &zero);
+                }
+                fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+                bound_pipeline = pipeline;
             }
             bind_set(i, draw_sets_[i]);
             fn_.vkCmdDraw(cmd, pass.vertices, d.instance_count, 0, d.first_instance);

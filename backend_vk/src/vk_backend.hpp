@@ -1,4 +1,4 @@
-// The Vulkan backend of a context: owns the patch buffers, baked slice images, density
+// The Vulkan backend of a context: owns the patch buffers, baked slice images, design map
 // images, descriptor sets, per-frame buffers and pipelines, and records into the host's
 // command buffers.
 // It never submits, waits on a queue, or begins a render pass.
@@ -29,14 +29,17 @@ public:
     VkBackend(const VkBackend&) = delete;
     VkBackend& operator=(const VkBackend&) = delete;
 
-    // Creates the pipelines, the per-frame buffers and the default density map.
+    // Creates the pipelines, the per-frame buffers and the default map images.
     grass_result init(const char* function);
 
     grass_backend kind() const override { return GRASS_BACKEND_VULKAN; }
     grass_result upload_patch(uint32_t slot, const PatchData& patch) override;
     grass_result upload_slices(uint32_t slot, const SliceSet& set) override;
     void release_patch(uint32_t slot) override;
-    grass_result upload_field(uint32_t slot, const MapTexels& density) override;
+    grass_result upload_map(uint32_t slot, const MapTexels& map) override;
+    grass_result update_map(uint32_t slot, const MapTexels& map, const MapRegion& region) override;
+    void release_map(uint32_t slot) override;
+    grass_result upload_field(uint32_t slot, const FieldMaps& maps) override;
     void release_field(uint32_t slot) override;
     grass_result begin_frame(const FramePlan& plan) override;
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
@@ -69,24 +72,42 @@ private:
         Image threshold;
         Buffer staging;
     };
-    // A field on the GPU: its density map (none: the default white texel is bound) and one
-    // descriptor set per frame in flight (each points at its slot's uniform buffer).
-    struct FieldGpu {
+    // A design map on the GPU: a single-mip R16 or R16G16B16A16 unorm image. Until its
+    // first copy is recorded, `staging` holds every texel (pending); afterwards an update
+    // stages the changed rectangle `update` in `update_staging` (updating) until the next
+    // prepare_frame records its copy. Updates before that merge into one rectangle.
+    struct MapGpu {
         bool live = false;
         bool pending = false;
-        Image density;
+        bool updating = false;
+        uint32_t channels = 1;
+        Image image;
         Buffer staging;
+        Buffer update_staging;
+        MapRegion update;
+    };
+    // A field on the GPU: the map slot of each role (kNoMap: the role's default image is
+    // bound), its feature mask, and one descriptor set per frame in flight (each points at
+    // its slot's uniform buffer).
+    struct FieldGpu {
+        bool live = false;
+        uint32_t features = 0;
+        uint32_t map_slot[kMapRoleCount] = {kNoMap, kNoMap, kNoMap, kNoMap, kNoMap};
         DescriptorSet sets[kMaxFramesInFlight];
     };
 
     grass_result fail(const char* function, const char* what, const VkFailure& failure);
-    // Points binding 0 and 1 of `set` at slot `slot`'s uniform buffer, binding 2 at the
-    // density map `density`, and bindings 3-5 at `slices` (colour, normal, threshold).
-    void write_set(VkDescriptorSet set, uint32_t slot, VkImageView density, const VkImageView (&slices)[3]);
-    // Binding 2 of a field's sets: its density map or the default one.
-    VkImageView density_view(const FieldGpu& field) const;
-    // Creates a density image and a staging buffer holding `texels` for it.
+    // Points binding 0 and 1 of `set` at slot `slot`'s uniform buffer, the map bindings
+    // (kMapBinding) at the maps of `field` (or the defaults), and bindings 3-5 at `slices`
+    // (colour, normal, threshold).
+    void write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& field, const VkImageView (&slices)[3]);
+    // The image a field's sets bind for `role`: its map or the role's default.
+    VkImageView map_view(const FieldGpu& field, uint32_t role) const;
+    // Creates a map image (R16 or R16G16B16A16 unorm by texels.channels) and a staging
+    // buffer holding `texels` for it.
     bool stage_image(Image* image, Buffer* staging, const MapTexels& texels, VkFailure* failure, const char** what);
+    // Creates a staging buffer holding the texels of `region` of `map`, rows tightly packed.
+    bool stage_region(Buffer* staging, const MapTexels& map, const MapRegion& region, VkFailure* failure);
     // Whether record() draws `draw`: normal frames draw every tier of a live field with a
     // live, non-empty patch, the debug view every draw of a live field.
     bool drawn(const TierDraw& draw, bool debug_view) const;
@@ -101,6 +122,7 @@ private:
     // Retires the images of `slices` (frames in flight may sample them) and drops its staging.
     void release_slices(SliceGpu* slices);
     void destroy_field_now(FieldGpu* field);
+    void destroy_map_now(MapGpu* map);
 
     grass_context* ctx_;
     grass_vk_desc desc_;
@@ -111,20 +133,22 @@ private:
     FrameDescriptors frame_sets_;  // the volume and image draws' sets, written per frame
     DeferredDeletion deferred_;
     BladePipeline pipeline_;
-    DebugViewPipeline debug_view_; // after pipeline_: goes before the layout it uses
-    SlicePipelines slice_pipelines_; // likewise
     FrameRing ring_;
     UploadBatch batch_;
     Vector<PatchGpu> patches_;
     Vector<FieldGpu> fields_;
+    Vector<MapGpu> maps_;
     Vector<SliceGpu> slices_;      // every patch's slice sets, in no order
     Vector<VkDescriptorSet> draw_sets_; // record(): the set of each volume and image draw
     Vector<VkBufferImageCopy> regions_; // prepare_frame(): scratch for slice copies
-    Image default_density_;      // 1x1 white: bound for fields without a density map
-    Buffer default_staging_;
+    Image default_white_;        // 1x1 white R16: density, ambient and diffuse of fields without them
+    Buffer default_white_staging_;
+    Image default_black_;        // 1x1 transparent black RGBA16 (R16 where the device lacks it): colour, height
+    Buffer default_black_staging_;
+    bool rgba16_maps_ = false;   // the device samples R16G16B16A16_UNORM with linear filtering
     Image default_slices_;       // 1x1, one layer, zero: bindings 3-5 of draws without slices
     Buffer default_slices_staging_;
-    uint32_t pending_uploads_ = 0; // patches, slice sets, fields and the default images not yet recorded
+    uint32_t pending_uploads_ = 0; // patches, slice sets, maps, map updates and the default images not yet recorded
     uint64_t frame_ = 0;           // frames begun; the current one while in a frame
     uint32_t slot_ = 0;            // frame_ % frames_in_flight
 };

@@ -2,7 +2,7 @@
 // a pool's room is counted in sets. DescriptorAllocator: long-lived sets (one per field and
 // frame in flight); a set comes from the first pool with room, a new pool is added when all
 // are full, and sets are freed one by one (FREE_DESCRIPTOR_SET). FrameDescriptors: sets
-// written for one frame only (the volume and image draws, which pair a field's density map
+// written for one frame only (the volume and image draws, which pair a field's design maps
 // with a patch's slices), from per-frame pools reset when their frame slot comes round.
 #pragma once
 
@@ -14,9 +14,10 @@
 namespace grass::vk {
 
 // What one set of the blade layout holds: the Frame and Field blocks (dynamic uniform
-// buffers) and four combined image samplers (density map, slice colour, normal, threshold).
+// buffers) and eight combined image samplers (the five design maps; slice colour, normal,
+// threshold).
 constexpr uint32_t kUniformBuffersPerSet = 2;
-constexpr uint32_t kImageSamplersPerSet = 4;
+constexpr uint32_t kImageSamplersPerSet = 8;
 
 // A set and the pool it came from (needed to free it).
 struct DescriptorSet {

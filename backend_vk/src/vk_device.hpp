@@ -19,7 +19,9 @@ struct Device {
     VkPhysicalDeviceMemoryProperties memory{};
 };
 
-// The format of density maps: 16-bit unorm, sampled with linear filtering.
+// The format of single-channel design maps (density, ambient, diffuse, height): 16-bit
+// unorm, sampled with linear filtering. Colour maps are R16G16B16A16_UNORM where the
+// device samples it (VkBackend::init checks; load_device does not require it).
 constexpr VkFormat kDensityMapFormat = VK_FORMAT_R16_UNORM;
 // The formats of the baked slices (api/src/baked_slices.hpp): sRGB albedo + coverage and
 // normal + height trilinear, thresholds nearest.

@@ -1,5 +1,8 @@
 #include "vk_pipeline.hpp"
 
+#include "vk_debug_view.hpp"
+#include "vk_slice_pipelines.hpp"
+
 #include "frame_plan.hpp"
 #include "patch_data.hpp"
 
@@ -30,11 +33,84 @@ constexpr VkVertexInputAttributeDescription kAttributes[] = {
     {4, 0, VK_FORMAT_R32_SFLOAT, offsetof(BladeVertex, threshold)},
     {5, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, origin)},
     {6, 1, VK_FORMAT_R32G32B32A32_UINT, offsetof(TierInstance, cell)},
+    {7, 1, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, terrain)},
 };
 static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_shape) == 24 &&
                   offsetof(BladeVertex, color) == 40 && offsetof(BladeVertex, threshold) == 44,
               "vertex layout of blade.vert");
-static_assert(offsetof(TierInstance, cell) == 16, "instance layout of blade.vert");
+static_assert(offsetof(TierInstance, cell) == 16 && offsetof(TierInstance, terrain) == 32 &&
+                  sizeof(TierInstance) == 48,
+              "instance layout of blade.vert");
+
+PipelineShape blade_shape() {
+    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    vertex_input.vertexBindingDescriptionCount = 2;
+    vertex_input.pVertexBindingDescriptions = kBindings;
+    vertex_input.vertexAttributeDescriptionCount = sizeof(kAttributes) / sizeof(kAttributes[0]);
+    vertex_input.pVertexAttributeDescriptions = kAttributes;
+    // With multisampling, the blade edge alpha becomes coverage (blade.frag).
+    return PipelineShape{grass_vk_spirv::blade_vert, grass_vk_spirv::blade_vert_size,
+                         grass_vk_spirv::blade_frag, grass_vk_spirv::blade_frag_size,
+                         vertex_input,               true,
+                         "the blade pipelines"};
+}
+
+// The locations of the vertex shader's inputs (bit l: location l), read from its SPIR-V:
+// the Input variables of its entry point with a Location decoration. A pipeline supplies
+// exactly those attributes of its vertex input: the validation layers warn of attributes a
+// shader does not consume, and a shader that reads the instance's terrain (location 7)
+// only where it needs it stays free to. ~0u when the code cannot be read.
+uint32_t vertex_input_locations(const uint32_t* code, size_t bytes) {
+    constexpr uint32_t kOpEntryPoint = 15, kOpDecorate = 71, kOpVariable = 59;
+    constexpr uint32_t kDecorationLocation = 30, kStorageInput = 1, kExecutionVertex = 0;
+    const size_t words = bytes / sizeof(uint32_t);
+    if (words < 5 || code[0] != 0x07230203u) return ~0u;
+    // Three passes over the instructions (a few thousand words): entry point interface,
+    // locations, input variables.
+    const auto each = [&](auto&& visit) {
+        for (size_t at = 5; at < words;) {
+            const uint32_t count = code[at] >> 16, op = code[at] & 0xffffu;
+            if (count == 0 || at + count > words) return false;
+            visit(op, code + at, count);
+            at += count;
+        }
+        return true;
+    };
+    const auto location_of = [&](uint32_t id, uint32_t* location) {
+        bool found = false;
+        each([&](uint32_t op, const uint32_t* in, uint32_t count) {
+            if (op == kOpDecorate && count >= 4 && in[1] == id && in[2] == kDecorationLocation) {
+                *location = in[3];
+                found = true;
+            }
+        });
+        return found;
+    };
+    const auto is_input = [&](uint32_t id) {
+        bool input = false;
+        each([&](uint32_t op, const uint32_t* in, uint32_t count) {
+            if (op == kOpVariable && count >= 4 && in[2] == id && in[3] == kStorageInput) input = true;
+        });
+        return input;
+    };
+    uint32_t mask = 0;
+    bool entry = false;
+    const bool ok = each([&](uint32_t op, const uint32_t* in, uint32_t count) {
+        if (op != kOpEntryPoint || count < 4 || in[1] != kExecutionVertex || entry) return;
+        entry = true;
+        // The name: a nul-terminated string padded to words, after the model and the id.
+        uint32_t at = 3;
+        while (at < count) {
+            const uint32_t w = in[at++];
+            if ((w >> 24) == 0 || ((w >> 16) & 0xff) == 0 || ((w >> 8) & 0xff) == 0 || (w & 0xff) == 0) break;
+        }
+        for (; at < count; ++at) {
+            uint32_t location = 0;
+            if (is_input(in[at]) && location_of(in[at], &location) && location < 32) mask |= 1u << location;
+        }
+    });
+    return ok && entry ? mask : ~0u;
+}
 
 bool format_has_stencil(VkFormat format) {
     return format == VK_FORMAT_D16_UNORM_S8_UINT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
@@ -44,23 +120,45 @@ bool format_has_stencil(VkFormat format) {
 } // namespace
 
 bool BladePipeline::create(const PipelineTarget& target, VkFailure* failure, const char** what) {
-    if (!create_layouts(failure, what) || !create_pipelines(target, failure, what)) {
+    target_ = target;
+    if (!create_layouts(failure, what) || !create_variant(0, failure, what)) {
         destroy();
         return false;
     }
     return true;
 }
 
+bool BladePipeline::create_variant(uint32_t features, VkFailure* failure, const char** what) {
+    if (has_variant(features)) return true;
+    const PipelineShape shapes[kPipelineKindCount] = {blade_shape(), SlicePipelines::volume_shape(),
+                                                      SlicePipelines::image_shape(), DebugViewPipeline::shape()};
+    for (uint32_t kind = 0; kind < kPipelineKindCount; ++kind) {
+        if (!create_pipeline_pair(fn_, device_, target_, layout_, shapes[kind], features, pipelines_[features][kind],
+                                  failure, what)) {
+            destroy_variant(features);
+            return false;
+        }
+    }
+    return true;
+}
+
+void BladePipeline::destroy_variant(uint32_t features) {
+    for (auto& pair : pipelines_[features]) {
+        for (VkPipeline& p : pair) {
+            if (p) fn_.vkDestroyPipeline(device_, p, nullptr);
+            p = VK_NULL_HANDLE;
+        }
+    }
+}
+
 void BladePipeline::destroy() {
-    if (depth_tested_) fn_.vkDestroyPipeline(device_, depth_tested_, nullptr);
-    if (depth_off_) fn_.vkDestroyPipeline(device_, depth_off_, nullptr);
+    for (uint32_t f = 0; f < kFeatureMaskCount; ++f) destroy_variant(f);
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, nullptr);
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
     if (sampler_) fn_.vkDestroySampler(device_, sampler_, nullptr);
     if (slice_linear_) fn_.vkDestroySampler(device_, slice_linear_, nullptr);
     if (slice_nearest_) fn_.vkDestroySampler(device_, slice_nearest_, nullptr);
     slice_linear_ = slice_nearest_ = VK_NULL_HANDLE;
-    depth_tested_ = depth_off_ = VK_NULL_HANDLE;
     layout_ = VK_NULL_HANDLE;
     set_layout_ = VK_NULL_HANDLE;
     sampler_ = VK_NULL_HANDLE;
@@ -77,7 +175,7 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
     sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     sampler.minLod = 0.0f;
     sampler.maxLod = 0.0f;
-    *what = "the density map sampler";
+    *what = "the design map sampler";
     if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, nullptr, &sampler_), "vkCreateSampler", failure)) return false;
 
     // Baked slices: colour and normal trilinear over the whole mip chain; thresholds are
@@ -104,6 +202,10 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
         {kBindingSliceColor, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_linear_},
         {kBindingSliceNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_linear_},
         {kBindingSliceThreshold, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
+        {kBindingColorMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
+        {kBindingAmbientMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
+        {kBindingDiffuseMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
+        {kBindingHeightMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
     };
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.bindingCount = kBindingCount;
@@ -123,8 +225,8 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
 }
 
 bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
-                          const PipelineShape& shape, VkPipeline out_pipelines[2], VkFailure* failure,
-                          const char** what) {
+                          const PipelineShape& shape, uint32_t features, VkPipeline out_pipelines[2],
+                          VkFailure* failure, const char** what) {
     out_pipelines[0] = out_pipelines[1] = VK_NULL_HANDLE;
     VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     const uint32_t* code[2] = {shape.vertex_code, shape.fragment_code};
@@ -138,14 +240,35 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
         ok = vk_ok(fn.vkCreateShaderModule(device, &info, nullptr, &modules[i]), "vkCreateShaderModule", failure);
     }
 
+    // The shape's vertex attributes that the vertex shader reads.
+    const uint32_t inputs = vertex_input_locations(shape.vertex_code, shape.vertex_code_size);
+    VkVertexInputAttributeDescription attributes[16];
+    VkPipelineVertexInputStateCreateInfo vertex_input = shape.vertex_input;
+    vertex_input.vertexAttributeDescriptionCount = 0;
+    vertex_input.pVertexAttributeDescriptions = attributes;
+    for (uint32_t i = 0; i < shape.vertex_input.vertexAttributeDescriptionCount && i < 16; ++i) {
+        const VkVertexInputAttributeDescription& a = shape.vertex_input.pVertexAttributeDescriptions[i];
+        if (a.location < 32 && ((inputs >> a.location) & 1u)) attributes[vertex_input.vertexAttributeDescriptionCount++] = a;
+    }
+
+    // GRASS_FEATURES (blade_interface.glsl): the map feature mask, constant id 0, both stages.
+    const VkSpecializationMapEntry feature_entry{0, 0, sizeof(uint32_t)};
+    VkSpecializationInfo specialization{};
+    specialization.mapEntryCount = 1;
+    specialization.pMapEntries = &feature_entry;
+    specialization.dataSize = sizeof(uint32_t);
+    specialization.pData = &features;
+
     VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
                                                  {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
     stages[0].module = modules[0];
     stages[0].pName = "main";
+    stages[0].pSpecializationInfo = &specialization;
     stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
     stages[1].module = modules[1];
     stages[1].pName = "main";
+    stages[1].pSpecializationInfo = &specialization;
 
     VkPipelineInputAssemblyStateCreateInfo input_assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
     input_assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
@@ -203,7 +326,7 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
         info.pNext = target.render_pass ? nullptr : &rendering;
         info.stageCount = 2;
         info.pStages = stages;
-        info.pVertexInputState = shape.vertex_input;
+        info.pVertexInputState = &vertex_input;
         info.pInputAssemblyState = &input_assembly;
         info.pViewportState = &viewport;
         info.pRasterizationState = &raster;
@@ -232,34 +355,17 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
     return ok;
 }
 
-bool BladePipeline::create_pipelines(const PipelineTarget& target, VkFailure* failure, const char** what) {
-    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    vertex_input.vertexBindingDescriptionCount = 2;
-    vertex_input.pVertexBindingDescriptions = kBindings;
-    vertex_input.vertexAttributeDescriptionCount = 7;
-    vertex_input.pVertexAttributeDescriptions = kAttributes;
-    // With multisampling, the blade edge alpha becomes coverage (blade.frag).
-    const PipelineShape shape{grass_vk_spirv::blade_vert, grass_vk_spirv::blade_vert_size,
-                              grass_vk_spirv::blade_frag, grass_vk_spirv::blade_frag_size,
-                              &vertex_input,              true,
-                              "the blade pipelines"};
-    VkPipeline pipelines[2];
-    if (!create_pipeline_pair(fn_, device_, target, layout_, shape, pipelines, failure, what)) return false;
-    depth_tested_ = pipelines[0];
-    depth_off_ = pipelines[1];
-    return true;
-}
-
 VkPipelineVertexInputStateCreateInfo instance_only_vertex_input() {
     static constexpr VkVertexInputBindingDescription binding = {0, sizeof(TierInstance), VK_VERTEX_INPUT_RATE_INSTANCE};
     static constexpr VkVertexInputAttributeDescription attributes[] = {
         {5, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, origin)},
         {6, 0, VK_FORMAT_R32G32B32A32_UINT, offsetof(TierInstance, cell)},
+        {7, 0, VK_FORMAT_R32G32B32A32_SFLOAT, offsetof(TierInstance, terrain)},
     };
     VkPipelineVertexInputStateCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     info.vertexBindingDescriptionCount = 1;
     info.pVertexBindingDescriptions = &binding;
-    info.vertexAttributeDescriptionCount = 2;
+    info.vertexAttributeDescriptionCount = sizeof(attributes) / sizeof(attributes[0]);
     info.pVertexAttributeDescriptions = attributes;
     return info;
 }

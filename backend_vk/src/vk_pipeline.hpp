@@ -1,8 +1,9 @@
-// The blade pipeline: descriptor set layout (Frame and Field uniform blocks as dynamic
-// uniform buffers, the density map with an immutable linear clamp sampler, the baked
-// slices of the volume and image tiers with immutable trilinear / nearest samplers),
-// pipeline layout, and two graphics pipelines, with and without the depth test; and the state
-// every pipeline of the backend shares (create_pipeline_pair).
+// The pipelines of the backend: the descriptor set layout every one of them uses (Frame and
+// Field uniform blocks as dynamic uniform buffers, the design maps with an immutable linear
+// clamp sampler, the baked slices of the volume and image tiers with immutable trilinear /
+// nearest samplers), the pipeline layout, and the graphics pipelines of each kind (blades,
+// volume, image, debug view) per map feature mask, each with and without the depth test;
+// and the state every pipeline shares (create_pipeline_pair).
 #pragma once
 
 #include "vk_functions.hpp"
@@ -21,8 +22,25 @@ enum BladeBinding : uint32_t {
     kBindingSliceColor = 3,
     kBindingSliceNormal = 4,
     kBindingSliceThreshold = 5,
-    kBindingCount = 6
+    kBindingColorMap = 6,
+    kBindingAmbientMap = 7,
+    kBindingDiffuseMap = 8,
+    kBindingHeightMap = 9,
+    kBindingCount = 10
 };
+static_assert(kBindingDensityMap == 2 && kBindingColorMap == 6 && kBindingHeightMap == 9,
+              "kMapBinding of api/src/backend.hpp");
+
+// The kinds of graphics pipeline; each exists per map feature mask (GRASS_FEATURES).
+enum PipelineKind : uint32_t {
+    kPipelineBlade = 0,
+    kPipelineVolume = 1,
+    kPipelineImage = 2,
+    kPipelineDebugView = 3,
+    kPipelineKindCount = 4
+};
+// Feature masks are 5 bits (one per MapRole).
+constexpr uint32_t kFeatureMaskCount = 32;
 
 struct PipelineTarget {
     VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats
@@ -40,20 +58,21 @@ struct PipelineShape {
     size_t vertex_code_size; // bytes
     const uint32_t* fragment_code;
     size_t fragment_code_size;
-    const VkPipelineVertexInputStateCreateInfo* vertex_input;
+    VkPipelineVertexInputStateCreateInfo vertex_input; // its arrays live as long as the program
     bool alpha_to_coverage; // only with multisampling
     const char* name;       // for *what: "the blade pipelines"
 };
 
-// Index 0 of out_pipelines depth-tests and writes depth (the target's compare op), index 1
-// does neither. On failure both are VK_NULL_HANDLE.
-// The vertex input of the shaders that read instances only (locations 5 and 6 on binding
-// 0: debug_tiers, volume and image): its arrays live as long as the program.
+// The vertex input of the shaders that read instances only (locations 5, 6 and 7 on
+// binding 0: debug_tiers, volume and image): its arrays live as long as the program.
 VkPipelineVertexInputStateCreateInfo instance_only_vertex_input();
 
+// Index 0 of out_pipelines depth-tests and writes depth (the target's compare op), index 1
+// does neither; both vertex and fragment stages are specialised with `features` (constant
+// id 0, blade_interface.glsl). On failure both are VK_NULL_HANDLE.
 bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
-                          const PipelineShape& shape, VkPipeline out_pipelines[2], VkFailure* failure,
-                          const char** what);
+                          const PipelineShape& shape, uint32_t features, VkPipeline out_pipelines[2],
+                          VkFailure* failure, const char** what);
 
 class BladePipeline {
 public:
@@ -62,27 +81,39 @@ public:
     BladePipeline(const BladePipeline&) = delete;
     BladePipeline& operator=(const BladePipeline&) = delete;
 
-    // *what names the object being made when it fails.
+    // The layouts and the pipelines of every kind without maps (features 0). *what names
+    // the object being made when it fails.
     bool create(const PipelineTarget& target, VkFailure* failure, const char** what);
     void destroy();
 
+    // Makes the pipelines of every kind for `features` unless they exist; `features` must be
+    // below kFeatureMaskCount. On failure none of that mask's pipelines exist.
+    bool create_variant(uint32_t features, VkFailure* failure, const char** what);
+    bool has_variant(uint32_t features) const {
+        return features < kFeatureMaskCount && pipelines_[features][kPipelineBlade][0] != VK_NULL_HANDLE;
+    }
+
     VkDescriptorSetLayout set_layout() const { return set_layout_; }
     VkPipelineLayout layout() const { return layout_; }
-    VkPipeline pipeline(bool depth_test) const { return depth_test ? depth_tested_ : depth_off_; }
+    // The pipeline of `kind` for `features` (has_variant(features)).
+    VkPipeline pipeline(PipelineKind kind, uint32_t features, bool depth_test) const {
+        return pipelines_[features][kind][depth_test ? 0 : 1];
+    }
 
 private:
     bool create_layouts(VkFailure* failure, const char** what);
-    bool create_pipelines(const PipelineTarget& target, VkFailure* failure, const char** what);
+    void destroy_variant(uint32_t features);
 
     const Functions& fn_;
     VkDevice device_;
-    VkSampler sampler_ = VK_NULL_HANDLE;         // density maps: bilinear, one mip
+    PipelineTarget target_;
+    VkSampler sampler_ = VK_NULL_HANDLE;         // design maps: bilinear, one mip
     VkSampler slice_linear_ = VK_NULL_HANDLE;    // slice colour and normal: trilinear
     VkSampler slice_nearest_ = VK_NULL_HANDLE;   // slice thresholds: never blended
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    VkPipeline depth_tested_ = VK_NULL_HANDLE;
-    VkPipeline depth_off_ = VK_NULL_HANDLE;
+    // [features][kind][0 = depth tested, 1 = depth off]
+    VkPipeline pipelines_[kFeatureMaskCount][kPipelineKindCount][2] = {};
 };
 
 } // namespace grass::vk

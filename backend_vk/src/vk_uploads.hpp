@@ -1,8 +1,10 @@
 // One batch of uploads recorded by grass_vk_prepare_frame: staging-buffer copies into
-// device-local vertex/index buffers, density images and slice array images, with the
+// device-local vertex/index buffers, design map images and slice array images, with the
 // barriers around them (image layouts UNDEFINED -> TRANSFER_DST -> SHADER_READ_ONLY, every
-// level and layer; transfer writes made
-// visible to vertex input and shader reads). Recorded outside any render pass.
+// level and layer; transfer writes made visible to vertex input and shader reads); and
+// updates of a rectangle of a design map that earlier frames sample (SHADER_READ_ONLY ->
+// TRANSFER_DST after those frames' shader reads, then back). Recorded outside any render
+// pass. At most one copy per image in a batch.
 #pragma once
 
 #include "allocator.hpp"
@@ -23,6 +25,9 @@ public:
     void copy_buffer(VkBuffer src, VkDeviceSize src_offset, VkBuffer dst, VkDeviceSize size, VkAccessFlags dst_access);
     // A whole single-mip colour image, tightly packed in `src` from `src_offset`.
     void copy_image(VkBuffer src, VkDeviceSize src_offset, VkImage dst, uint32_t width, uint32_t height);
+    // A rectangle of a single-mip colour image in SHADER_READ_ONLY_OPTIMAL layout that
+    // earlier commands may sample (its other texels are kept), tightly packed in `src`.
+    void update_image(VkBuffer src, VkImage dst, uint32_t x, uint32_t y, uint32_t width, uint32_t height);
     // A colour image of `levels` mips and `layers` layers, filled by `region_count` regions
     // (which together must cover every level of every layer).
     void copy_image_regions(VkBuffer src, VkImage dst, uint32_t levels, uint32_t layers,
@@ -44,6 +49,7 @@ private:
         VkImage dst;
         uint32_t levels, layers;
         uint32_t first_region, region_count; // in regions_
+        bool update;                          // the image holds texels that are kept (update_image)
     };
     Vector<BufferCopy> buffer_copies_;
     Vector<ImageCopy> image_copies_;

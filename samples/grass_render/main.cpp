@@ -173,7 +173,22 @@ int main(int argc, char** argv) {
             map.format = GRASS_MAP_FORMAT_R8_UNORM;
             scene.field.density_map = &map;
         }
-        r = grass_create_field(ctx, &scene.field, &field);
+        for (int role = 0; role < 5 && r == GRASS_SUCCESS; ++role) {
+            const auto& m = scene.maps[role];
+            if (m.pixels.empty()) continue;
+            grass_map_desc md = grass_default_map_desc();
+            md.pixels = m.pixels.data();
+            md.width = m.width;
+            md.height = m.height;
+            md.format = m.format;
+            grass_map_id id{};
+            r = grass_create_map(ctx, &md, &id);
+            grass_map_id* slots[5] = {&scene.field.maps.density, &scene.field.maps.color, &scene.field.maps.ambient,
+                                      &scene.field.maps.diffuse, &scene.field.maps.height};
+            *slots[role] = id;
+        }
+        scene.field.maps.height_scale = scene.height_scale;
+        if (r == GRASS_SUCCESS) r = grass_create_field(ctx, &scene.field, &field);
     }
     const double field_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_field).count();
     grass_host::Image image;

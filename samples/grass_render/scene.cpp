@@ -84,6 +84,34 @@ void load_density_png(const std::string& path, Scene* s) {
     s->density_height = png.height;
 }
 
+// A design map from a PNG through libpng's simplified API: colour maps as 8-bit sRGB RGBA;
+// data maps (density, light, height) as grey, 16-bit files kept at 16 bits (libpng treats
+// 16-bit files as linear and 8-bit ones as sRGB: neither is converted here).
+Scene::MapImage load_map_png(const std::string& path, bool color) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&png, path.c_str())) throw std::runtime_error("cannot read " + path + ": " + png.message);
+    Scene::MapImage m;
+    const bool sixteen = (png.format & PNG_FORMAT_FLAG_LINEAR) != 0 && !color;
+    png.format = color ? PNG_FORMAT_RGBA : (sixteen ? PNG_FORMAT_LINEAR_Y : PNG_FORMAT_GRAY);
+    m.format = color ? GRASS_MAP_FORMAT_RGBA8_UNORM : (sixteen ? GRASS_MAP_FORMAT_R16_UNORM : GRASS_MAP_FORMAT_R8_UNORM);
+    m.pixels.resize(PNG_IMAGE_SIZE(png));
+    if (!png_image_finish_read(&png, nullptr, m.pixels.data(), 0, nullptr)) {
+        throw std::runtime_error("cannot decode " + path + ": " + png.message);
+    }
+    m.width = png.width;
+    m.height = png.height;
+    return m;
+}
+
+std::string beside(const std::string& scene_path, std::string file) {
+    if (!file.empty() && file[0] != '/') {
+        const auto slash = scene_path.find_last_of('/');
+        if (slash != std::string::npos) file = scene_path.substr(0, slash + 1) + file;
+    }
+    return file;
+}
+
 void read_tiers(const json& list, Scene* s) {
     s->tiers.clear();
     for (const json& t : list) {
@@ -104,12 +132,18 @@ void read_tiers(const json& list, Scene* s) {
 void read_lod_tests(const json& list, Scene* s) {
     s->lod_tests.clear();
     for (const json& t : list) {
-        check_keys(t, "a lod test", {"kind", "tier", "begin", "end", "transition_in", "transition_out", "max_macro_cells"});
+        check_keys(t, "a lod test", {"kind", "tier", "begin", "end", "transition_in", "transition_out", "max_macro_cells",
+                                     "edge_ratio", "max_unplanarity", "unplanarity_ratio"});
         grass_lod_test test{};
         const std::string kind = t.at("kind").get<std::string>();
         if (kind == "band") test.kind = GRASS_LOD_TEST_DISTANCE_BAND;
         else if (kind == "macro") test.kind = GRASS_LOD_TEST_MACRO_CELL;
-        else throw std::runtime_error("a lod test's \"kind\" must be band or macro, not \"" + kind + "\"");
+        else if (kind == "unplanarity") test.kind = GRASS_LOD_TEST_UNPLANARITY;
+        else if (kind == "hilltop") test.kind = GRASS_LOD_TEST_HILLTOP;
+        else throw std::runtime_error("a lod test's \"kind\" must be band, macro, unplanarity or hilltop, not \"" + kind + "\"");
+        read(t, "edge_ratio", &test.edge_ratio);
+        read(t, "max_unplanarity", &test.max_unplanarity);
+        read(t, "unplanarity_ratio", &test.unplanarity_ratio);
         read(t, "tier", &test.tier);
         read(t, "begin", &test.begin);
         test.end = std::numeric_limits<float>::infinity();
@@ -181,7 +215,17 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
         if (j.contains("field")) {
             const json& f = j["field"];
             check_keys(f, "\"field\"", {"cells", "cell_size", "origin", "density", "density_map", "mirror_tiling",
-                                        "mirror_seed", "tiers", "lod_tests"});
+                                        "mirror_seed", "tiers", "lod_tests", "maps"});
+            if (f.contains("maps")) {
+                const json& m = f["maps"];
+                check_keys(m, "\"field.maps\"", {"density", "color", "ambient", "diffuse", "height", "height_scale"});
+                static const char* const roles[5] = {"density", "color", "ambient", "diffuse", "height"};
+                for (int r = 0; r < 5; ++r) {
+                    if (m.contains(roles[r])) s->maps[r] = load_map_png(beside(path, m[roles[r]].get<std::string>()), r == 1);
+                }
+                read(m, "height_scale", &s->height_scale);
+                if (m.contains("density")) s->density_texels.clear(); // not the demo's path as well
+            }
             auto& d = s->field;
             if (f.contains("cells")) {
                 const auto v = f["cells"].get<std::vector<uint32_t>>();

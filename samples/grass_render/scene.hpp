@@ -16,6 +16,15 @@ struct Scene {
     // Density map texels (R8), empty for uniform density.
     std::vector<uint8_t> density_texels;
     uint32_t density_width = 0, density_height = 0;
+    // Design maps of the map stack, read from PNG files (empty pixels: none), by role:
+    // density, color, ambient, diffuse, height.
+    struct MapImage {
+        std::vector<uint8_t> pixels;
+        uint32_t width = 0, height = 0;
+        grass_map_format format = GRASS_MAP_FORMAT_R8_UNORM;
+    };
+    MapImage maps[5];
+    float height_scale = 1.0f;
     double eye[3] = {0.0, 1.7, -6.4};
     double target[3] = {0.0, 0.0, 1.0};
     float fov_degrees = 55.0f;

@@ -26,7 +26,24 @@ struct Gl {
     PFNGLBINDBUFFERBASEPROC BindBufferBase;
     PFNGLDELETEBUFFERSPROC DeleteBuffers;
     PFNGLGETERRORPROC GetError;
+    PFNGLCREATETEXTURESPROC CreateTextures;
+    PFNGLTEXTURESTORAGE2DPROC TextureStorage2D;
+    PFNGLTEXTURESTORAGE3DPROC TextureStorage3D;
+    PFNGLBINDTEXTUREPROC BindTexture;
+    PFNGLDELETETEXTURESPROC DeleteTextures;
+    PFNGLCREATESAMPLERSPROC CreateSamplers;
+    PFNGLBINDSAMPLERPROC BindSampler;
+    PFNGLDELETESAMPLERSPROC DeleteSamplers;
 };
+
+// The texture units grass samples from: 0 (density map, 2D), 3-5 (baked slices, 2D
+// arrays) and 6-9 (colour, ambient, diffuse and height maps, 2D).
+constexpr GLuint kUnits[] = {0, 3, 4, 5, 6, 7, 8, 9};
+constexpr int kUnitCount = 8;
+GLenum unit_target(GLuint unit) { return unit >= 3 && unit <= 5 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D; }
+GLenum unit_binding(GLuint unit) {
+    return unit >= 3 && unit <= 5 ? GL_TEXTURE_BINDING_2D_ARRAY : GL_TEXTURE_BINDING_2D;
+}
 
 template <class T>
 void load(const grass_host::Host& host, T* fn, const char* name) {
@@ -37,7 +54,11 @@ void load(const grass_host::Host& host, T* fn, const char* name) {
 struct Snapshot {
     GLint program, vao, array_buffer, ubo0, ubo1, active_texture, viewport[4], depth_func, polygon_mode[2];
     GLboolean depth_mask, depth_test, cull, blend, multisample, a2c;
+    GLint unit_texture[kUnitCount], unit_sampler[kUnitCount];
     bool operator==(const Snapshot& o) const {
+        for (int i = 0; i < kUnitCount; ++i) {
+            if (unit_texture[i] != o.unit_texture[i] || unit_sampler[i] != o.unit_sampler[i]) return false;
+        }
         return program == o.program && vao == o.vao && array_buffer == o.array_buffer && ubo0 == o.ubo0 &&
                ubo1 == o.ubo1 && active_texture == o.active_texture && viewport[0] == o.viewport[0] &&
                viewport[1] == o.viewport[1] && viewport[2] == o.viewport[2] && viewport[3] == o.viewport[3] &&
@@ -64,6 +85,12 @@ Snapshot snapshot(const Gl& gl) {
     s.blend = gl.IsEnabled(GL_BLEND);
     s.multisample = gl.IsEnabled(GL_MULTISAMPLE);
     s.a2c = gl.IsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    for (int i = 0; i < kUnitCount; ++i) {
+        gl.ActiveTexture(GL_TEXTURE0 + kUnits[i]);
+        gl.GetIntegerv(unit_binding(kUnits[i]), &s.unit_texture[i]);
+        gl.GetIntegerv(GL_SAMPLER_BINDING, &s.unit_sampler[i]);
+    }
+    gl.ActiveTexture(static_cast<GLenum>(s.active_texture));
     return s;
 }
 
@@ -88,8 +115,40 @@ TEST_P(GlStateTest, RenderRestoresTheHostsGlState) {
     load(*host, &gl.BindBuffer, "glBindBuffer");
     load(*host, &gl.BindBufferBase, "glBindBufferBase");
     load(*host, &gl.DeleteBuffers, "glDeleteBuffers");
+    load(*host, &gl.CreateTextures, "glCreateTextures");
+    load(*host, &gl.TextureStorage2D, "glTextureStorage2D");
+    load(*host, &gl.TextureStorage3D, "glTextureStorage3D");
+    load(*host, &gl.BindTexture, "glBindTexture");
+    load(*host, &gl.DeleteTextures, "glDeleteTextures");
+    load(*host, &gl.CreateSamplers, "glCreateSamplers");
+    load(*host, &gl.BindSampler, "glBindSampler");
+    load(*host, &gl.DeleteSamplers, "glDeleteSamplers");
 
-    make_field(field_desc(4));
+    // A field with every design map, and a volume tier beside the blades, so that grass
+    // binds every unit it has: 0, 3-5 and 6-9.
+    const uint8_t grey[4 * 4] = {200, 200, 200, 200, 200, 200, 200, 200, 200, 200, 200, 200, 200, 200, 200, 200};
+    grass_map_desc m = grass_default_map_desc();
+    m.pixels = grey;
+    m.width = m.height = 2;
+    grass_field_desc d = field_desc(4);
+    grass_map_id* single[] = {&d.maps.density, &d.maps.ambient, &d.maps.diffuse, &d.maps.height};
+    for (grass_map_id* id : single) ASSERT_EQ(grass_create_map(ctx, &m, id), GRASS_SUCCESS) << log;
+    m.format = GRASS_MAP_FORMAT_RGBA8_UNORM;
+    ASSERT_EQ(grass_create_map(ctx, &m, &d.maps.color), GRASS_SUCCESS) << log;
+    d.maps.height_scale = 0.1f;
+    grass_tier_desc tiers[2] = {{GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 2}};
+    grass_lod_test bands[2] = {};
+    bands[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
+    bands[0].end = 1.9f;
+    bands[1].kind = GRASS_LOD_TEST_DISTANCE_BAND;
+    bands[1].tier = 1;
+    bands[1].begin = 1.9f;
+    bands[1].end = 100.0f;
+    d.tiers = tiers;
+    d.tier_count = 2;
+    d.lod_tests = bands;
+    d.lod_test_count = 2;
+    make_field(d);
     const double eye[3] = {0.5, 2.0, 0.5}, target[3] = {0.5, 0.0, 0.5001};
     const grass_view_desc v = view(eye, target);
     // A first frame through the host (its FBO stays bound afterwards).
@@ -110,6 +169,21 @@ TEST_P(GlStateTest, RenderRestoresTheHostsGlState) {
     gl.Disable(GL_DEPTH_TEST);
     gl.Enable(GL_CULL_FACE);
     gl.Enable(GL_BLEND);
+    GLuint textures[kUnitCount] = {}, samplers[kUnitCount] = {};
+    gl.CreateSamplers(kUnitCount, samplers);
+    for (int i = 0; i < kUnitCount; ++i) {
+        const GLenum target_kind = unit_target(kUnits[i]);
+        gl.CreateTextures(target_kind, 1, &textures[i]);
+        if (target_kind == GL_TEXTURE_2D_ARRAY) {
+            gl.TextureStorage3D(textures[i], 1, GL_RGBA8, 2, 2, 2);
+        } else {
+            gl.TextureStorage2D(textures[i], 1, GL_RGBA8, 2, 2);
+        }
+        gl.ActiveTexture(GL_TEXTURE0 + kUnits[i]);
+        gl.BindTexture(target_kind, textures[i]);
+        gl.BindSampler(kUnits[i], samplers[i]);
+    }
+    gl.ActiveTexture(GL_TEXTURE3);
     const Snapshot before = snapshot(gl);
 
     ASSERT_EQ(grass_begin_frame(ctx, &v), GRASS_SUCCESS) << log;
@@ -123,6 +197,22 @@ TEST_P(GlStateTest, RenderRestoresTheHostsGlState) {
     EXPECT_EQ(after.blend, GL_TRUE);
     EXPECT_EQ(after.active_texture, GL_TEXTURE3);
     EXPECT_EQ(after.ubo1, static_cast<GLint>(buffers[2]));
+    for (int i = 0; i < kUnitCount; ++i) {
+        EXPECT_EQ(after.unit_texture[i], static_cast<GLint>(textures[i])) << "texture unit " << kUnits[i];
+        EXPECT_EQ(after.unit_sampler[i], static_cast<GLint>(samplers[i])) << "sampler of unit " << kUnits[i];
+    }
+    grass_frame_stats stats{};
+    ASSERT_EQ(grass_get_frame_stats(ctx, &stats), GRASS_SUCCESS);
+    EXPECT_GT(stats.instances[GRASS_TIER_GEOMETRY], 0u);
+    EXPECT_GT(stats.instances[GRASS_TIER_VOLUME], 0u);
+
+    for (int i = 0; i < kUnitCount; ++i) {
+        gl.ActiveTexture(GL_TEXTURE0 + kUnits[i]);
+        gl.BindTexture(unit_target(kUnits[i]), 0);
+        gl.BindSampler(kUnits[i], 0);
+    }
+    gl.DeleteTextures(kUnitCount, textures);
+    gl.DeleteSamplers(kUnitCount, samplers);
 
     gl.BindVertexArray(0);
     gl.DeleteVertexArrays(1, &vao);

@@ -183,4 +183,28 @@ double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_
     return n ? double(g) / double(n) : 0.0;
 }
 
+bool project_point(const double eye[3], const double target[3], float fovy_degrees, uint32_t width, uint32_t height,
+                   const double point[3], double* out_x, double* out_y) {
+    // The basis of grass_host::make_view: forward f, right r = f x up, up u = r x f.
+    double f[3] = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]};
+    const double fl = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    for (double& x : f) x /= fl;
+    const double up[3] = {0.0, 1.0, 0.0}, alt_up[3] = {0.0, 0.0, -1.0};
+    const double* u0 = std::fabs(f[1]) > 0.9999 ? alt_up : up;
+    double r[3] = {f[1] * u0[2] - f[2] * u0[1], f[2] * u0[0] - f[0] * u0[2], f[0] * u0[1] - f[1] * u0[0]};
+    const double rl = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (double& x : r) x /= rl;
+    const double u[3] = {r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2], r[0] * f[1] - r[1] * f[0]};
+    const double d[3] = {point[0] - eye[0], point[1] - eye[1], point[2] - eye[2]};
+    const double z = d[0] * f[0] + d[1] * f[1] + d[2] * f[2];
+    if (z <= 0.0) return false;
+    const double t = std::tan(fovy_degrees * 3.141592653589793 / 360.0);
+    const double aspect = double(width) / double(height);
+    const double nx = (d[0] * r[0] + d[1] * r[1] + d[2] * r[2]) / (z * t * aspect);
+    const double ny = (d[0] * u[0] + d[1] * u[1] + d[2] * u[2]) / (z * t);
+    *out_x = (nx + 1.0) * 0.5 * width;
+    *out_y = (1.0 - ny) * 0.5 * height;
+    return true;
+}
+
 } // namespace grass_test

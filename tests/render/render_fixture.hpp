@@ -60,6 +60,12 @@ grass_host::Image render_default_scene(grass_backend backend, const grass_host::
                                        const double eye[3], const double look[3]);
 // Mean absolute difference of the RGB channels, in 8-bit levels.
 double mean_difference(const grass_host::Image& a, const grass_host::Image& b);
+// Where a world point appears in an image of `width` x `height` rendered through
+// view(eye, target, fovy_degrees) (grass_host::make_view's camera): pixel coordinates, x to
+// the right and y down from the top-left corner (a pixel's centre at +0.5). False when the
+// point is behind the camera.
+bool project_point(const double eye[3], const double target[3], float fovy_degrees, uint32_t width, uint32_t height,
+                   const double point[3], double* out_x, double* out_y);
 // Share of pixels in [x0, x1) x [y0, y1) that are grass.
 double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_t x0, uint32_t y0, uint32_t x1,
                    uint32_t y1);

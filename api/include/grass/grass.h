@@ -45,7 +45,7 @@ extern "C" {
 /* ---- Version ---------------------------------------------------------------------- */
 
 #define GRASS_VERSION_MAJOR 0
-#define GRASS_VERSION_MINOR 2
+#define GRASS_VERSION_MINOR 3
 #define GRASS_VERSION_PATCH 0
 /* The version this header declares. Pass it to the create-context calls: the library
  * refuses a header whose major version differs from its own, or whose minor is newer. */
@@ -95,6 +95,7 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_FIELD_DESC = 0x67720003,
     GRASS_STRUCT_TYPE_MAP_DESC = 0x67720004,
     GRASS_STRUCT_TYPE_VIEW_DESC = 0x67720005,
+    GRASS_STRUCT_TYPE_GRASS_TYPE_DESC = 0x67720006,
     GRASS_STRUCT_TYPE_GL_DESC = 0x67720101,
     GRASS_STRUCT_TYPE_VK_DESC = 0x67720201,
     GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202
@@ -123,11 +124,13 @@ typedef enum grass_message_id {
     GRASS_MSG_BAD_MAP = 108,          /* a design map of bad size, pitch or format */
     GRASS_MSG_BAD_ENUM = 109,
     GRASS_MSG_ZERO_VECTOR = 110,
+    GRASS_MSG_MAP_ROLE = 111,         /* a map whose format does not fit its role in a map stack */
+    GRASS_MSG_MAP_REGION = 112,       /* a map update outside the map or of another format */
     /* 2xx: handles and lifetime */
     GRASS_MSG_STALE_HANDLE = 200,
     GRASS_MSG_FOREIGN_HANDLE = 201,
     GRASS_MSG_NULL_HANDLE = 202,
-    GRASS_MSG_PATCH_IN_USE = 203,
+    GRASS_MSG_PATCH_IN_USE = 203,      /* also: a map still used by a field */
     GRASS_MSG_TOO_MANY_OBJECTS = 204,
     /* 3xx: call order */
     GRASS_MSG_FRAME_NOT_BEGUN = 300,
@@ -230,6 +233,12 @@ typedef struct grass_field_id {
     uint16_t owner;
 } grass_field_id;
 
+typedef struct grass_map_id {
+    uint32_t index;
+    uint16_t generation;
+    uint16_t owner;
+} grass_map_id;
+
 /* ---- Patch: a grass type ---------------------------------------------------------- */
 
 typedef enum grass_threshold_mode {
@@ -291,27 +300,74 @@ GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_
 GRASS_API grass_result grass_get_patch_thresholds(const grass_context* context, grass_patch_id patch,
                                                   float* out_thresholds, uint32_t capacity);
 
-/* ---- Design maps ------------------------------------------------------------------ */
+/* ---- Design maps (lemme2012 6.4, boulanger2006 3.4-3.5) ---------------------------- */
 
 typedef enum grass_map_format {
-    GRASS_MAP_FORMAT_R8_UNORM = 1,  /* uint8, 0..255 -> 0..1 */
-    GRASS_MAP_FORMAT_R16_UNORM = 2, /* uint16, 0..65535 -> 0..1 */
-    GRASS_MAP_FORMAT_R32_FLOAT = 3  /* float, finite, 0..1 for density */
+    GRASS_MAP_FORMAT_R8_UNORM = 1,     /* uint8, 0..255 -> 0..1 */
+    GRASS_MAP_FORMAT_R16_UNORM = 2,    /* uint16, 0..65535 -> 0..1 */
+    GRASS_MAP_FORMAT_R32_FLOAT = 3,    /* float, finite, 0..1 */
+    GRASS_MAP_FORMAT_RGBA8_UNORM = 4,  /* 4 x uint8 (colour maps) */
+    GRASS_MAP_FORMAT_RGBA16_UNORM = 5, /* 4 x uint16 (colour maps) */
+    GRASS_MAP_FORMAT_RGBA32_FLOAT = 6  /* 4 x float, finite, 0..1 (colour maps) */
 } grass_map_format;
 
-/* A single-channel image in host memory, copied at creation. The map spans the whole
- * field: texel centres are spread over the cells, (0,0) at the field's cell (0,0) corner,
- * sampled bilinearly with edge clamping. */
+/* An image in host memory, copied by the call that takes it. Maps are projected along the
+ * field's up axis: texel (0, 0) is at map uv (0, 0) and rows run along +v. Sampled
+ * bilinearly with edge clamping; every value, whatever the format, means 0..1. */
 typedef struct grass_map_desc {
     grass_struct_type type;  /* GRASS_STRUCT_TYPE_MAP_DESC */
     const void* next;        /* NULL */
-    const void* pixels;      /* row 0 first; rows run along +z, texels along +x */
+    const void* pixels;      /* row 0 first; rows run along +v (field +z), texels along +u (+x) */
     uint32_t width, height;  /* 1..16384 */
     uint32_t row_pitch;      /* bytes between rows; 0 = tightly packed */
-    grass_map_format format;
+    grass_map_format format; /* default GRASS_MAP_FORMAT_R8_UNORM */
 } grass_map_desc;
 
 GRASS_API grass_map_desc grass_default_map_desc(void);
+
+/* A design map on its own, which fields reference through their grass_map_stack; several
+ * fields may share one (GPU contexts upload it once). The core keeps a min/max pyramid of
+ * it, so the quadtree knows each node's terrain height range and whether it holds grass. */
+GRASS_API grass_result grass_create_map(grass_context* context, const grass_map_desc* desc, grass_map_id* out_map);
+
+/* Replaces the texels of the rectangle whose first texel is (x, y) and whose size is
+ * region->width x region->height, with region->pixels (same format as the map; its
+ * row_pitch applies). Paint or mow grass at run time: the next frame plans and draws with
+ * the new texels; nothing outside the rectangle changes. Not between grass_begin_frame and
+ * grass_end_frame. GL: the host's GL context must be current. Vulkan: the copy is recorded
+ * by the next grass_vk_prepare_frame(). */
+GRASS_API grass_result grass_update_map(grass_context* context, grass_map_id map, uint32_t x, uint32_t y,
+                                        const grass_map_desc* region);
+
+/* Fails with GRASS_ERROR_IN_USE while a field uses the map. */
+GRASS_API grass_result grass_destroy_map(grass_context* context, grass_map_id map);
+
+/* The design maps of a field (lemme figure 6.7). Every map is optional: a null id (all
+ * zero) means the field does without it, and its shaders do not sample it. */
+typedef struct grass_map_stack {
+    /* Single-channel: multiplies grass_field_desc.density. Blades whose density threshold
+     * lies above the local density are not drawn (bilinear, lemme 6.4.1); a quadtree node
+     * whose density is zero everywhere is discarded with its subtree. */
+    grass_map_id density;
+    /* RGBA: colour modulation C = A_c C_c + (1 - A_c) C_blade (lemme eq. 6.8); a high alpha
+     * paints field marks, a low alpha varies the lawn subtly. sRGB-encoded rgb, linear alpha. */
+    grass_map_id color;
+    /* Single-channel: the ambient light, with the scene's ambient occlusion already in it;
+     * multiplies grass_view_desc.ambient_color (lemme eq. 6.9-6.10; boulanger 3.5). */
+    grass_map_id ambient;
+    /* Single-channel: the diffuse (sun) light the scenery lets through: shadows cast by the
+     * host's buildings and trees; multiplies grass_view_desc.sun_color (lemme figure 7.8). */
+    grass_map_id diffuse;
+    /* Single-channel: the terrain height along the field's up axis, times height_scale
+     * metres (lemme 6.4.4). Every tier is displaced by it. */
+    grass_map_id height;
+    float height_scale;      /* metres for a height-map value of 1; finite, 0..1e5; default 1 */
+    /* Cell space to map space (lemme's configTf): map (u, v) = (m[0] x + m[2] z + m[4],
+     * m[1] x + m[3] z + m[5]) for a point (x, z) of the field in cells. All zero (the
+     * default): the maps span the whole field, u = x / cells_x, v = z / cells_z. Another
+     * transform lets several fields share one map stack, or maps a region in finer detail. */
+    double cell_to_map[6];
+} grass_map_stack;
 
 /* ---- Tiers and lod tests (lemme2012 6.1.2-6.1.3, 6.2) ------------------------------ */
 
@@ -348,6 +404,8 @@ typedef struct grass_lod_node {
     double radius;
     double distance_min;         /* metres from the camera to the nearest point of its box */
     double distance_max;         /* ... and to the farthest */
+    double height_min;           /* metres: the lowest terrain height under the node (0 without a height map) */
+    double height_max;           /* ... and the highest */
 } grass_lod_node;
 
 typedef grass_lod_answer (*grass_lod_test_fn)(void* user_data, const grass_lod_node* node);
@@ -361,7 +419,19 @@ typedef enum grass_lod_test_kind {
     /* Splits until a node spans at most max_macro_cells cells each way, then draws it whole. */
     GRASS_LOD_TEST_MACRO_CELL = 2,
     /* Asks the host's callback. */
-    GRASS_LOD_TEST_CALLBACK = 3
+    GRASS_LOD_TEST_CALLBACK = 3,
+    /* Terrain unplanarity (lemme 6.4.4): splits a node whose terrain height range (highest
+     * minus lowest height of the height map over it, metres) exceeds max_unplanarity +
+     * unplanarity_ratio x its distance from the camera, and draws it otherwise. Keeps
+     * macro-cells on hills small enough that their flat slices follow the ground. */
+    GRASS_LOD_TEST_UNPLANARITY = 4,
+    /* Hilltop silhouettes (lemme 6.4.6, after Boulanger): discards the nodes whose bounding
+     * box lies entirely below the camera and draws the others (bound their size with a
+     * MACRO_CELL or UNPLANARITY test of the same tier). A tier with this test is an
+     * *overlay*: it draws every blade the density passes, on top of the tiers the distance
+     * bands share out, and takes no share itself. Give it a volume tier and a DISTANCE_BAND
+     * where the image tier draws, so that distant hilltops keep their blades against the sky. */
+    GRASS_LOD_TEST_HILLTOP = 5
 } grass_lod_test_kind;
 
 /* One lod test. All tests of a tier must answer draw for the tier to draw a node; any
@@ -382,6 +452,8 @@ typedef struct grass_lod_test {
     uint32_t max_macro_cells;    /* MACRO_CELL: cells, >= 1 */
     grass_lod_test_fn callback;  /* CALLBACK: required; called during grass_begin_frame */
     void* user_data;             /* CALLBACK */
+    float max_unplanarity;       /* UNPLANARITY: metres, >= 0 */
+    float unplanarity_ratio;     /* UNPLANARITY: metres of height range allowed per metre of distance, 0..1 */
 } grass_lod_test;
 
 #define GRASS_DEFAULT_TIER_COUNT 5
@@ -395,7 +467,9 @@ typedef struct grass_lod_test {
  *   tier 3 volume, 1 slice  100 .. 300 cells, macro-cells up to 40
  *   tier 4 image            200 cells .. infinity, macro-cells up to 500
  * Each overlap is the transition zone of the two tiers that share it; volume and image
- * bands have an edge_ratio of 0.25. Fills
+ * bands have an edge_ratio of 0.25. A field that leaves its lod tests NULL and has a
+ * height map also gets an UNPLANARITY test on its volume and image tiers (half a cell plus
+ * 2% of the distance). Fills
  * GRASS_DEFAULT_TIER_COUNT tiers and GRASS_DEFAULT_LOD_TEST_COUNT tests. */
 GRASS_API void grass_default_lod_setup(double cell_size, grass_tier_desc* out_tiers, grass_lod_test* out_tests);
 
@@ -405,14 +479,16 @@ GRASS_API void grass_default_lod_setup(double cell_size, grass_tier_desc* out_ti
  * base_transform maps field space scaled by cell_size (metres) to world space. */
 typedef struct grass_field_desc {
     grass_struct_type type;      /* GRASS_STRUCT_TYPE_FIELD_DESC */
-    const void* next;            /* NULL */
+    const void* next;            /* NULL, or a chain of grass_grass_type_desc: more grass types */
     grass_patch_id patch;        /* required */
     uint32_t cells_x, cells_z;   /* 1 .. 2^30 each; no default (0 is refused) */
     double cell_size;            /* metres per cell edge, 1e-4 .. 1e4; default 0.25 */
     double base_transform[16];   /* column-major, rotation + translation only; default identity */
     float density;               /* uniform density 0..1 where no map is given, or the map's
                                     multiplier; default 1 */
-    const grass_map_desc* density_map; /* optional, NULL = uniform density */
+    /* Optional, NULL = uniform density: a single-channel density map copied into this field
+     * alone and spanning it (the shortcut for maps.density, which is refused with it). */
+    const grass_map_desc* density_map;
     grass_bool mirror_tiling;    /* mirror each cell along x and/or z at random; default 1 */
     uint32_t mirror_seed;        /* selects the mirror pattern; default 0 */
     /* The tiers and the lod tests that choose them per quadtree node. Both NULL (counts 0):
@@ -426,9 +502,35 @@ typedef struct grass_field_desc {
      * in density-threshold units (lemme2012 eq. 5.26). Needs a multisampled target to show
      * (alpha-to-coverage); without one the crossover is exact. 0..0.25; default 0.05. */
     float transition_window;
+    /* The design maps: density (multiplying the density above and density_map), colour,
+     * ambient, diffuse light and height. Default: none. */
+    grass_map_stack maps;
 } grass_field_desc;
 
 GRASS_API grass_field_desc grass_default_field_desc(void);
+
+#define GRASS_MAX_GRASS_TYPES 8
+
+/* Another grass type on the same field (lemme 6.4.5): its own patch, density (and density
+ * map) and tiers with lod tests, so types grow in their own places and change tier at
+ * their own distances; it shares the field's cells, transform, mirroring and every other
+ * map (colour, ambient, diffuse, height). Chain them from grass_field_desc.next (each
+ * one's next points to the following type, the last one's is NULL): the field's own desc
+ * is the first type, up to GRASS_MAX_GRASS_TYPES in all. The field id stands for all of
+ * them; grass_destroy_field destroys them together. Frame stats count each type as a field. */
+typedef struct grass_grass_type_desc {
+    grass_struct_type type;       /* GRASS_STRUCT_TYPE_GRASS_TYPE_DESC */
+    const void* next;             /* the next grass_grass_type_desc, or NULL */
+    grass_patch_id patch;         /* required */
+    float density;                /* 0..1, as grass_field_desc.density; default 1 */
+    grass_map_id density_map;     /* single-channel, as grass_map_stack.density; default none */
+    const grass_tier_desc* tiers; /* as in grass_field_desc; both NULL: the default setup */
+    uint32_t tier_count;
+    const grass_lod_test* lod_tests;
+    uint32_t lod_test_count;
+} grass_grass_type_desc;
+
+GRASS_API grass_grass_type_desc grass_default_grass_type_desc(void);
 
 GRASS_API grass_result grass_create_field(grass_context* context, const grass_field_desc* desc,
                                           grass_field_id* out_field);
@@ -496,6 +598,7 @@ typedef struct grass_frame_stats {
     uint64_t instances[GRASS_TIER_KIND_COUNT];   /* cells plus macro-cells drawn */
     uint64_t macro_cells[GRASS_TIER_KIND_COUNT]; /* instances larger than one cell */
     uint64_t cells[GRASS_TIER_KIND_COUNT];       /* cells those instances cover */
+    uint64_t nodes_empty;        /* nodes discarded, subtree and all, because their density is zero everywhere */
 } grass_frame_stats;
 
 /* Stats of the last begun frame. */

@@ -36,8 +36,9 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  * host's depth buffer is shared), depth writes on, no blending; alpha-to-coverage when
  * the framebuffer is multisampled. Saved and restored: program, vertex array, array and
  * element buffers, uniform buffer bindings 0-1 (and the generic uniform buffer binding),
- * texture unit 0 (its 2D texture) and its sampler, texture units 3-5 (their 2D array
- * textures) and their samplers, active texture, viewport, depth test/func/mask, cull face, blend, multisample and
+ * texture unit 0 (its 2D texture: the density map) and its sampler, texture units 3-5
+ * (their 2D array textures) and their samplers, texture units 6-9 (their 2D textures: the
+ * colour, ambient, diffuse and height maps) and their samplers, active texture, viewport, depth test/func/mask, cull face, blend, multisample and
  * alpha-to-coverage enables, polygon mode. Returns GRASS_ERROR_INVALID_STATE outside
  * grass_begin_frame()/grass_end_frame(). May be called more than once per frame. */
 GRASS_API grass_result grass_gl_render(grass_context* context);
