@@ -149,7 +149,10 @@ void main() {
     g_field_cells = field.map_params.zw;
     float t_layer = dir.y < 0.0 ? (box_min.y - v_camera_local.y) / dir.y
                   : dir.y > 0.0 ? (box_max.y - v_camera_local.y) / dir.y : kHuge;
-    float t_end = max(t_out, min(t_layer, t_out + 4.0 / max(length(dir.xz), 1e-3)));
+    float t_reach = t_out + 4.0 / max(length(dir.xz), 1e-3);
+    // On a height map the neighbours' terrain may lie below or above this carrier's box: the
+    // ray goes on over them by the 4 cells and stops where it meets the ground (below).
+    float t_end = displaced ? t_reach : max(t_out, min(t_layer, t_reach));
     // The horizontal slice lies near the ground (boulanger 3.3: seen only from above, it fills
     // what the vertical slices leave open there); a downward ray meets it once. Flat field:
     // a plane, met at t_ground. On a height map it follows the terrain at `layer_y` above it:
@@ -191,6 +194,7 @@ void main() {
         // The slice is looked up at the hit's height above the terrain (eq. 6.17-6.18); a
         // hit below the terrain or above the blades there meets nothing.
         float y = h.y - ground;
+        if (displaced && y < 0.0 && t > t_out) break; // under a neighbour's ground: hidden by it
         if (t < t_in || y < 0.0 || y > size.y) continue;
         composite(vec3(h.x, y, h.z), h, t, across_x ? 0 : 1);
         if (g_alpha >= 0.99) break;

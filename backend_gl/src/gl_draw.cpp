@@ -17,6 +17,7 @@ size_t align_up(size_t value, size_t alignment) {
 }
 
 constexpr GLsizei kImageVertices = 6;   // one quad, corners from gl_VertexID (image.vert)
+constexpr GLsizei kImageVerticesWithSkirts = 30; // on a height map: the quad and 4 skirts (image.vert)
 constexpr GLsizei kVolumeVertices = 36; // a cuboid, every face (volume.vert)
 
 // The slice set a draw samples: its slices per axis for a volume tier, the horizontal
@@ -126,9 +127,11 @@ void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
         }
         bind_field_maps(fields_[draw.field_slot]);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
-        gl_.DrawArraysInstancedBaseInstance(GL_TRIANGLES, 0,
-                                            kind == GRASS_TIER_VOLUME ? kVolumeVertices : kImageVertices,
-                                            static_cast<GLsizei>(draw.instance_count), draw.first_instance);
+        const bool skirts = kind == GRASS_TIER_IMAGE && (draw.features & (1u << kMapHeight)) != 0;
+        gl_.DrawArraysInstancedBaseInstance(
+            GL_TRIANGLES, 0,
+            kind == GRASS_TIER_VOLUME ? kVolumeVertices : (skirts ? kImageVerticesWithSkirts : kImageVertices),
+            static_cast<GLsizei>(draw.instance_count), draw.first_instance);
     }
 }
 

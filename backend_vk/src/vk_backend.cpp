@@ -887,7 +887,9 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
                 bound_pipeline = pipeline;
             }
             bind_set(i, draw_sets_[i]);
-            fn_.vkCmdDraw(cmd, pass.vertices, d.instance_count, 0, d.first_instance);
+            const bool skirts = pass.kind == GRASS_TIER_IMAGE && (d.features & (1u << kMapHeight)) != 0;
+            fn_.vkCmdDraw(cmd, skirts ? SlicePipelines::kVerticesPerImageWithSkirts : pass.vertices, d.instance_count, 0,
+                          d.first_instance);
         }
     }
     return GRASS_SUCCESS;
