@@ -3,7 +3,19 @@
 // tier alone, then by the volume (8 slices) and image tiers in macro-cells of 1, 2, 4, 8 and
 // 16 cells a side. Wall time of a rendered and read-back frame, median of 5, minus the
 // same frame with no grass; per basic cell. Prints a Markdown table.
-// Usage: grass-tier-cost [--backend gl|vk] [--size WxH]
+// --maps: instead, the cost of each design map (docs/feature-cost.md). For each tier alone
+// (geometry, volume 8 slices, image; single cells), the plain field (no maps), then the same
+// field with each map alone (density all 1, colour with alpha 0.3, ambient, diffuse, height:
+// a ramp along x, height scale 1 cell), then all five, then the plain field again (the
+// run's noise). The rows are drawn in --rounds rounds (default 3), each drawing every row
+// once with --frames frames after one that uploads, so that a load that comes and goes on
+// the machine falls on all rows alike; per row, the median and the fastest of the pooled
+// frames minus those of the empty frame (measured in each round too), their ratios to the
+// plain field, and the GPU memory the context holds (grass_get_memory_stats) with that
+// field and its maps alive. Maps are 128 x 128 texels (4 per cell), made for each field and
+// destroyed with it.
+// --frames N: frames measured per row (after one that uploads); default 5 (median).
+// Usage: grass-tier-cost [--backend gl|vk] [--size WxH] [--maps] [--frames N] [--rounds N]
 #include <grass/grass.h>
 
 #include "headless_host.hpp"
@@ -11,7 +23,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -30,6 +44,72 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
+constexpr uint32_t kMapSize = 128; // texels a side, over the 32 x 32 cells of the field
+
+// The maps of one row of the --maps table: a bit per map role, as GRASS_FEATURES.
+enum MapBits : uint32_t { kDensity = 1, kColor = 2, kAmbient = 4, kDiffuse = 8, kHeight = 16, kAll = 31 };
+
+struct MapRow {
+    const char* name;
+    uint32_t maps;
+};
+
+// Creates the maps of `bits` into `stack` (ids appended to `made`); false on failure.
+bool make_maps(grass_context* ctx, uint32_t bits, double cell_size, grass_map_stack* stack,
+               std::vector<grass_map_id>* made) {
+    const uint32_t n = kMapSize;
+    auto create = [&](const void* pixels, grass_map_format format, grass_map_id* id) {
+        grass_map_desc md = grass_default_map_desc();
+        md.pixels = pixels;
+        md.width = md.height = n;
+        md.format = format;
+        if (grass_create_map(ctx, &md, id) != GRASS_SUCCESS) {
+            std::fprintf(stderr, "grass-tier-cost: %s\n", grass_last_error(ctx));
+            return false;
+        }
+        made->push_back(*id);
+        return true;
+    };
+    std::vector<uint8_t> r8(n * n);
+    if (bits & kDensity) { // density 1 everywhere: every blade passes, the map is still sampled
+        std::fill(r8.begin(), r8.end(), uint8_t(255));
+        if (!create(r8.data(), GRASS_MAP_FORMAT_R8_UNORM, &stack->density)) return false;
+    }
+    if (bits & kColor) { // a straw-to-green wash along x, stripes along z, alpha 0.3
+        std::vector<uint8_t> rgba(n * n * 4);
+        for (uint32_t y = 0; y < n; ++y)
+            for (uint32_t x = 0; x < n; ++x) {
+                uint8_t* t = &rgba[4 * (y * n + x)];
+                t[0] = uint8_t(120 + 100 * x / n);
+                t[1] = uint8_t((y / 16) % 2 ? 170 : 140);
+                t[2] = uint8_t(60);
+                t[3] = uint8_t(77); // 0.3
+            }
+        if (!create(rgba.data(), GRASS_MAP_FORMAT_RGBA8_UNORM, &stack->color)) return false;
+    }
+    if (bits & kAmbient) { // ambient occlusion: darker towards one corner, 0.5 .. 1
+        for (uint32_t y = 0; y < n; ++y)
+            for (uint32_t x = 0; x < n; ++x) r8[y * n + x] = uint8_t(255 - 64 * (x + y) / n);
+        if (!create(r8.data(), GRASS_MAP_FORMAT_R8_UNORM, &stack->ambient)) return false;
+    }
+    if (bits & kDiffuse) { // a soft shadow band across the middle of the field, 0.3 .. 1
+        for (uint32_t y = 0; y < n; ++y)
+            for (uint32_t x = 0; x < n; ++x) {
+                const double d = std::fabs(double(x) - 0.5 * n) / (0.25 * n);
+                r8[y * n + x] = uint8_t(255 * (0.3 + 0.7 * std::min(1.0, d)));
+            }
+        if (!create(r8.data(), GRASS_MAP_FORMAT_R8_UNORM, &stack->diffuse)) return false;
+    }
+    if (bits & kHeight) { // a gentle ramp along x: 0 .. 1 cell over the 32 cells
+        std::vector<uint16_t> r16(n * n);
+        for (uint32_t y = 0; y < n; ++y)
+            for (uint32_t x = 0; x < n; ++x) r16[y * n + x] = uint16_t(65535u * x / (n - 1));
+        if (!create(r16.data(), GRASS_MAP_FORMAT_R16_UNORM, &stack->height)) return false;
+        stack->height_scale = float(cell_size);
+    }
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -37,13 +117,22 @@ int main(int argc, char** argv) {
     grass_host::TargetDesc target;
     target.width = 320;
     target.height = 240;
+    bool maps_mode = false;
+    int frames = 5;
+    int rounds = 3; // --maps only
     for (int k = 1; k < argc; ++k) {
         if (!std::strcmp(argv[k], "--backend") && k + 1 < argc) {
             backend = std::strcmp(argv[++k], "vk") == 0 ? GRASS_BACKEND_VULKAN : GRASS_BACKEND_GL;
         } else if (!std::strcmp(argv[k], "--size") && k + 1 < argc) {
             std::sscanf(argv[++k], "%ux%u", &target.width, &target.height);
+        } else if (!std::strcmp(argv[k], "--maps")) {
+            maps_mode = true;
+        } else if (!std::strcmp(argv[k], "--frames") && k + 1 < argc) {
+            frames = std::max(1, std::atoi(argv[++k]));
+        } else if (!std::strcmp(argv[k], "--rounds") && k + 1 < argc) {
+            rounds = std::max(1, std::atoi(argv[++k]));
         } else {
-            std::fprintf(stderr, "usage: grass-tier-cost [--backend gl|vk] [--size WxH]\n");
+            std::fprintf(stderr, "usage: grass-tier-cost [--backend gl|vk] [--size WxH] [--maps] [--frames N] [--rounds N]\n");
             return 2;
         }
     }
@@ -63,18 +152,100 @@ int main(int argc, char** argv) {
     // The whole 8 m x 8 m field in view, seen at 30 degrees from 9 m away.
     const double eye[3] = {4.0, 4.5, -4.0}, look[3] = {4.0, 0.0, 4.0};
     const grass_view_desc view = grass_host::make_view(*host, eye, look, 55.0f, 0.05f, 200.0f);
-    auto frame_ms = [&]() {
+    // The times of `count` frames after one that uploads (and compiles).
+    auto frame_times = [&](int count) {
         std::vector<double> times;
         grass_host::Image image;
-        for (int r = 0; r < 6; ++r) {
+        for (int r = 0; r < count + 1; ++r) {
             const auto t0 = std::chrono::steady_clock::now();
             host->render(ctx, view, nullptr, &image, &error);
             const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
             if (r > 0) times.push_back(ms); // the first frame uploads
         }
-        return median(times);
+        return times;
     };
+    auto frame_ms = [&]() { return median(frame_times(frames)); };
     const double empty = frame_ms();
+    if (maps_mode) {
+        const Setup tiers[] = {{"geometry", GRASS_TIER_GEOMETRY, 0, 1},
+                               {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 1},
+                               {"image", GRASS_TIER_IMAGE, 0, 1}};
+        const MapRow rows[] = {{"plain (no maps)", 0},  {"density", kDensity}, {"colour", kColor},
+                               {"ambient", kAmbient}, {"diffuse", kDiffuse}, {"height", kHeight},
+                               {"all five", kAll}, {"plain again", 0}};
+        constexpr size_t kRows = sizeof rows / sizeof rows[0];
+        grass_memory_stats base{};
+        grass_get_memory_stats(ctx, &base);
+        std::printf("grass-tier-cost --maps: %s (%s), %ux%u, 1024 cells of 0.25 m, maps %ux%u texels; "
+                    "%d rounds of %d frames per row, rows interleaved; frame with no grass %.2f ms; "
+                    "GPU memory with no field %.2f MiB\n\n",
+                    backend == GRASS_BACKEND_GL ? "gl" : "vk", host->device_name().c_str(), target.width, target.height,
+                    kMapSize, kMapSize, rounds, frames, empty, base.gpu_bytes / 1048576.0);
+        std::printf("| tier | maps | instances | frame - empty, median (ms) | ratio to plain | fastest frame - empty (ms) | "
+                    "ratio to plain | GPU memory (MiB) | vs plain (KiB) |\n|---|---|---|---|---|---|---|---|---|\n");
+        std::fflush(stdout);
+        for (const Setup& s : tiers) {
+            // Each round draws every row once (after the empty frame again), so that a load
+            // that comes and goes on the machine falls on every row alike.
+            std::vector<double> times[kRows], empties;
+            uint64_t instances[kRows] = {}, gpu_bytes[kRows] = {};
+            for (int round = 0; round < rounds; ++round) {
+                for (double t : frame_times(frames)) empties.push_back(t);
+                for (size_t r = 0; r < kRows; ++r) {
+                    grass_tier_desc tier{s.kind, s.slices};
+                    grass_lod_test tests[2] = {};
+                    tests[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
+                    tests[0].end = INFINITY;
+                    tests[1].kind = GRASS_LOD_TEST_MACRO_CELL;
+                    tests[1].max_macro_cells = s.macro;
+                    grass_field_desc fd = grass_default_field_desc();
+                    fd.patch = patch;
+                    fd.cells_x = fd.cells_z = 32;
+                    fd.tiers = &tier;
+                    fd.tier_count = 1;
+                    fd.lod_tests = tests;
+                    fd.lod_test_count = s.kind == GRASS_TIER_GEOMETRY ? 1 : 2;
+                    std::vector<grass_map_id> made;
+                    if (!make_maps(ctx, rows[r].maps, fd.cell_size, &fd.maps, &made)) return 1;
+                    grass_field_id field{};
+                    if (grass_create_field(ctx, &fd, &field) != GRASS_SUCCESS) {
+                        std::fprintf(stderr, "grass-tier-cost: %s\n", grass_last_error(ctx));
+                        return 1;
+                    }
+                    for (double t : frame_times(frames)) times[r].push_back(t);
+                    grass_frame_stats stats{};
+                    grass_get_frame_stats(ctx, &stats);
+                    grass_memory_stats mem{};
+                    grass_get_memory_stats(ctx, &mem);
+                    instances[r] = stats.instances[s.kind];
+                    gpu_bytes[r] = mem.gpu_bytes;
+                    grass_destroy_field(ctx, field);
+                    for (grass_map_id m : made) grass_destroy_map(ctx, m);
+                }
+            }
+            const double empty_median = median(empties);
+            const double empty_min = *std::min_element(empties.begin(), empties.end());
+            const double plain_median = median(times[0]) - empty_median;
+            const double plain_min = *std::min_element(times[0].begin(), times[0].end()) - empty_min;
+            for (size_t r = 0; r < kRows; ++r) {
+                const double med = median(times[r]) - empty_median;
+                const double fastest = *std::min_element(times[r].begin(), times[r].end()) - empty_min;
+                std::printf("| %s | %s | %llu | %.1f | %.2f | %.1f | %.2f | %.2f | %+.0f |\n", s.name, rows[r].name,
+                            static_cast<unsigned long long>(instances[r]), med, med / plain_median, fastest,
+                            fastest / plain_min, gpu_bytes[r] / 1048576.0,
+                            (double(gpu_bytes[r]) - double(gpu_bytes[0])) / 1024.0);
+            }
+            std::fflush(stdout);
+        }
+        const uint32_t messages = host->validation_messages();
+        grass_destroy_context(ctx);
+        if (messages) {
+            std::fprintf(stderr, "grass-tier-cost: %u validation messages\n%s\n", messages,
+                         host->validation_log().c_str());
+            return 1;
+        }
+        return 0;
+    }
 
     const Setup setups[] = {
         {"geometry", GRASS_TIER_GEOMETRY, 0, 1}, {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 1},
