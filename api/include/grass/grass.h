@@ -96,6 +96,7 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_MAP_DESC = 0x67720004,
     GRASS_STRUCT_TYPE_VIEW_DESC = 0x67720005,
     GRASS_STRUCT_TYPE_GRASS_TYPE_DESC = 0x67720006,
+    GRASS_STRUCT_TYPE_QUALITY_DESC = 0x67720007,
     GRASS_STRUCT_TYPE_GL_DESC = 0x67720101,
     GRASS_STRUCT_TYPE_VK_DESC = 0x67720201,
     GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202
@@ -472,6 +473,45 @@ typedef struct grass_lod_test {
  * 2% of the distance). Fills
  * GRASS_DEFAULT_TIER_COUNT tiers and GRASS_DEFAULT_LOD_TEST_COUNT tests. */
 GRASS_API void grass_default_lod_setup(double cell_size, grass_tier_desc* out_tiers, grass_lod_test* out_tests);
+
+/* ---- Quality: the speed/accuracy trade (docs/quality.md measures it) -------------- */
+
+typedef enum grass_quality_level {
+    GRASS_QUALITY_REFERENCE = 0, /* blades at every distance, 8 subdivisions, 4x MSAA: the ground truth */
+    GRASS_QUALITY_HIGH = 1,      /* Lemme's table twice as far, twice the slices */
+    GRASS_QUALITY_DEFAULT = 2,   /* Lemme's football table (grass_default_lod_setup), 4x MSAA */
+    GRASS_QUALITY_LOW = 3,       /* tiers nearer, larger macro-cells, fewer blades, no MSAA */
+    GRASS_QUALITY_FASTEST = 4    /* the cheapest setup that still looks like a lawn */
+} grass_quality_level;
+#define GRASS_QUALITY_LEVEL_COUNT 5
+
+/* The knobs behind the presets. Each one trades speed for accuracy (docs/quality.md). */
+typedef struct grass_quality_desc {
+    grass_struct_type type;        /* GRASS_STRUCT_TYPE_QUALITY_DESC */
+    const void* next;              /* NULL */
+    /* Blades at every distance (one geometry tier): the reference; the knobs below that
+     * shape the other tiers are then unused. */
+    grass_bool blades_everywhere;
+    float distance_scale;          /* multiplies the default table's tier distances, 0.1..16; default 1 */
+    float transition_scale;        /* multiplies its transition widths (after distance_scale), 0..1.2; default 1 */
+    float slice_scale;             /* multiplies its slices per axis (8, 2, 1), rounded, at least 1, at most 64; 0.125..8 */
+    float macro_cell_scale;        /* multiplies its macro-cell limits (40, 500), rounded, at least 1; 0.025..4 */
+    uint32_t blade_subdivisions;   /* quads along a blade, 1..32; default 4 */
+    float blade_fraction;          /* of the patch's blade_count kept (at least 1 blade), (0, 1]; default 1 */
+    uint32_t msaa_samples;         /* the sample count the preset is meant for (the host owns the target): 1, 2, 4 or 8 */
+} grass_quality_desc;
+
+/* The knobs of a preset. */
+GRASS_API grass_quality_desc grass_quality_preset(grass_quality_level level);
+
+/* Applies `quality` to a patch desc (blade count, subdivisions) and writes the lod setup for
+ * fields of `cell_size` metres: up to GRASS_MAX_TIERS tiers and GRASS_MAX_LOD_TESTS tests,
+ * their counts in *out_tier_count and *out_test_count. Refuses out-of-range knobs with an
+ * error naming them (through the context's log), writing nothing. */
+GRASS_API grass_result grass_apply_quality(grass_context* context, const grass_quality_desc* quality, double cell_size,
+                                           grass_patch_desc* inout_patch, grass_tier_desc* out_tiers,
+                                           uint32_t* out_tier_count, grass_lod_test* out_tests,
+                                           uint32_t* out_test_count);
 
 /* ---- Field: a grid of cells covered by one patch ---------------------------------- */
 
