@@ -82,7 +82,7 @@ def park(n=256, size=40.0):
         for i in range(n):
             x, z = (i + 0.5) / n * size, (j + 0.5) / n * size
             d = 0.85 + 0.15 * value_noise(x * 0.3, z * 0.3, 1)
-            d *= 0.08 + 0.92 * smooth(0.7, 1.3, path_distance(x, z))   # worn paths
+            d *= smooth(0.45, 1.4, path_distance(x, z))   # worn paths: bare in the middle, thin at the edges
             d *= smooth(0.0, 0.6, math.hypot(x - pond[0], z - pond[1]) - pond[2])  # the pond
             if in_box(x, z, building):
                 d = 0.0
