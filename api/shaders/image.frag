@@ -22,17 +22,22 @@ void main() {
     vec3 coord = vec3(uv, 0.0);
     vec4 albedo = textureGrad(slice_color, coord, dx, dy);
     vec4 normal_height = textureGrad(slice_normal, coord, dx, dy);
-    float threshold = textureGrad(slice_threshold, coord, dx, dy).r;
+    vec4 thresholds = textureGrad(slice_threshold, coord, dx, dy); // r: threshold, gba: coverage curve
+    float threshold = thresholds.r;
     if (threshold <= 0.0 || albedo.a <= 0.0) discard;
 
     vec2 cell_point = vec2(v_first_cell) + v_local; // where the blade stands in the field
     float density = local_density(cell_point);
-    float opacity = tier_blade_opacity(length(v_position), threshold, density);
+    // The threshold view partitions whole texels by their threshold; the picture draws the
+    // share of each texel's blades the density and the tier select.
+    bool exact = debug_thresholds();
+    float share = exact ? 1.0 : tier_texel_share(length(v_position), thresholds, density);
+    float opacity = exact ? tier_blade_opacity(length(v_position), threshold, density) : 1.0;
     // The horizontal slice holds the coverage of the grass seen from above. Seen at an
     // elevation theta the view crosses the blade layer 1 / sin(theta) times as long, so the
     // layer is more opaque (Beer-Lambert along the slanted path): 1 - (1 - a)^(1 / sin).
     float sin_elevation = max(abs(dot(normalize(-v_position), normalize(mat3(field.patch_to_world)[1]))), 0.05);
-    float coverage = 1.0 - pow(max(1.0 - albedo.a, 0.0), 1.0 / sin_elevation);
+    float coverage = 1.0 - pow(max(1.0 - albedo.a * share, 0.0), 1.0 / sin_elevation);
     float alpha = coverage * opacity;
     if (alpha < alpha_cut()) discard;
 

@@ -32,3 +32,34 @@ float tier_blade_opacity(float d, float threshold, float density) {
     float leave = b >= 1.0 ? 1.0 : (window > 0.0 ? 1.0 - smoothstep(b - window, b + window, r) : (r <= b ? 1.0 : 0.0));
     return enter * leave;
 }
+
+// A slice texel holds several blades. Its coverage curve (api/src/baked_slices.hpp: the
+// threshold texture's gba) is the share of its coverage whose blades' thresholds are at most
+// x, piecewise linear through (0, 0), (1/4, g), (1/2, b), (3/4, a) and (1, 1).
+float coverage_curve(vec4 t, float x) {
+    float u = clamp(x, 0.0, 1.0) * 4.0;
+    float i = min(floor(u), 3.0);
+    vec4 lo = vec4(0.0, t.g, t.b, t.a), hi = vec4(t.g, t.b, t.a, 1.0);
+    int k = int(i);
+    return mix(lo[k], hi[k], u - i);
+}
+
+// The share of a slice texel's coverage this draw's tier draws at distance d: that of the
+// blades whose thresholds lie in the tier's interval of (0, density] (the texel-level twin
+// of tier_blade_opacity: a texel thins with the density, and two tiers sharing a transition
+// zone draw complementary shares, instead of all or nothing per texel).
+float tier_texel_share(float d, vec4 t, float density) {
+    if (!(density > 0.0) || t.r <= 0.0) return 0.0;
+    if (field.tiers.z != 0u) return coverage_curve(t, density);
+    uint tier = field.tiers.x, count = field.tiers.y;
+    float total = 0.0, lo = 0.0, self_w = 0.0;
+    for (uint k = 0u; k < count; ++k) {
+        float w = band_weight(field.bands[k], d);
+        total += w;
+        if (k > tier) lo += w;
+        if (k == tier) self_w = w;
+    }
+    if (!(total > 0.0) || !(self_w > 0.0)) return 0.0;
+    float a = lo / total, b = (lo + self_w) / total;
+    return max(coverage_curve(t, b * density) - coverage_curve(t, a * density), 0.0);
+}

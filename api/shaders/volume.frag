@@ -52,7 +52,8 @@ void composite(vec3 h, vec3 hit, float t, int kind) {
     // Texels are 3-4x denser across a slice than up it (256 x 64 over 1 x ~0.85 cells);
     // the level follows the coarser, vertical density so blades keep their height.
     float lod = log2(max(t * g_pixel_angle * g_texels.y / g_size.y, 1.0)); // t: distance in cells
-    float threshold = textureLod(slice_threshold, coord, lod).r;
+    vec4 thresholds = textureLod(slice_threshold, coord, lod); // r: threshold, gba: coverage curve
+    float threshold = thresholds.r;
     if (threshold <= 0.0) return;
     vec4 albedo = textureLod(slice_color, coord, lod);
     if (albedo.a <= 0.0) return;
@@ -60,7 +61,11 @@ void composite(vec3 h, vec3 hit, float t, int kind) {
     vec3 world = g_to_world * hit + g_origin;
     vec2 cell_point = vec2(v_cell.xy) + h.xz;
     float density = local_density(cell_point);
-    float a = albedo.a * tier_blade_opacity(length(world), threshold, density);
+    // The threshold view partitions whole texels by their threshold (each is one tier's);
+    // the picture draws the share of each texel's blades the density and the tier select.
+    float share = debug_thresholds() ? tier_blade_opacity(length(world), threshold, density)
+                                     : tier_texel_share(length(world), thresholds, density);
+    float a = albedo.a * share;
     if (a <= 0.0) return;
     // The design maps at the hit (lemme 6.4.2-6.4.3).
     vec3 color = modulate_color(albedo.rgb, cell_point);

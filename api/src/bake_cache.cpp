@@ -189,18 +189,19 @@ bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceS
         // Bounded above: at most 1024 * 2 + 1 layers of 16384^2 * 4 / 3 texels, no overflow.
         const uint64_t texels = h.layers * slice_layer_texels(h.width, h.height, h.mip_levels);
         if (h.texels != texels) break;
-        if (static_cast<uint64_t>(length) != kHeaderBytes + texels * 10) break; // checked before allocating
+        if (static_cast<uint64_t>(length) != kHeaderBytes + texels * 16) break; // checked before allocating
         SliceSet set(host);
         set.color.resize(texels * 4);
         set.normal.resize(texels * 4);
-        set.threshold.resize(texels);
+        set.threshold.resize(texels * 4);
+        const uint64_t values = texels * 4; // threshold + coverage curve per texel
         if (!read_exact(f, set.color.data(), set.color.size()) || !read_exact(f, set.normal.data(), set.normal.size())) {
             break;
         }
         bool read_ok = true;
         uint8_t chunk[4096];
-        for (uint64_t i = 0; i < texels && read_ok;) {
-            const uint64_t n = std::min<uint64_t>(sizeof(chunk) / 2, texels - i);
+        for (uint64_t i = 0; i < values && read_ok;) {
+            const uint64_t n = std::min<uint64_t>(sizeof(chunk) / 2, values - i);
             read_ok = read_exact(f, chunk, n * 2);
             for (uint64_t k = 0; k < n && read_ok; ++k) {
                 set.threshold[i + k] = static_cast<uint16_t>(chunk[2 * k] | (chunk[2 * k + 1] << 8));
@@ -234,7 +235,7 @@ bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceS
 
 bool store_baked(const char* directory, uint64_t key, const SliceSet& set) {
     const uint64_t texels = set.offset(set.layers, 0);
-    if (set.color.size() != texels * 4 || set.normal.size() != texels * 4 || set.threshold.size() != texels) {
+    if (set.color.size() != texels * 4 || set.normal.size() != texels * 4 || set.threshold.size() != texels * 4) {
         return false;
     }
     char path[kMaxPath], temp[kMaxPath], suffix[64];
@@ -267,8 +268,9 @@ bool store_baked(const char* directory, uint64_t key, const SliceSet& set) {
     bool ok = write_exact(f, bytes, kHeaderBytes) && write_exact(f, set.color.data(), set.color.size()) &&
               write_exact(f, set.normal.data(), set.normal.size());
     uint8_t chunk[4096];
-    for (uint64_t i = 0; i < texels && ok;) {
-        const uint64_t n = std::min<uint64_t>(sizeof(chunk) / 2, texels - i);
+    const uint64_t values = texels * 4;
+    for (uint64_t i = 0; i < values && ok;) {
+        const uint64_t n = std::min<uint64_t>(sizeof(chunk) / 2, values - i);
         for (uint64_t k = 0; k < n; ++k) {
             chunk[2 * k] = static_cast<uint8_t>(set.threshold[i + k]);
             chunk[2 * k + 1] = static_cast<uint8_t>(set.threshold[i + k] >> 8);

@@ -41,7 +41,10 @@ struct SliceSet {
     // a = height of the texel above the ground / height_patch_units (vertical slices), or
     // the blade height there (horizontal slice), for the blade ambient occlusion.
     Vector<uint8_t> normal;
-    // R16 unorm: density threshold of the blade covering the texel (0 = none).
+    // RGBA16 unorm: r = density threshold of the blade covering the texel (0 = none); gba =
+    // its coverage curve: the share of the texel's coverage whose blades' thresholds are at
+    // most 1/4, 1/2 and 3/4 (the rest of the curve: 0 at 0, 1 at 1), so that a tier draws
+    // alpha x (curve(high) - curve(low)) for the thresholds its density and transitions select.
     Vector<uint16_t> threshold;
     uint64_t content_hash = 0;    // FNV-1a 64 over color, normal, threshold
 

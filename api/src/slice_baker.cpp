@@ -200,7 +200,12 @@ void encode_layer(const Vector<SliceImage>& levels, uint32_t layer, SliceSet* ou
             color[3] = float_to_unorm8(img.alpha[i]);
             for (int c = 0; c < 3; ++c) normal[c] = float_to_unorm8(img.normal[i * 4 + c] * 0.5f + 0.5f);
             normal[3] = float_to_unorm8(img.normal[i * 4 + 3]);
-            out->threshold[base + i] = img.threshold[i];
+            uint16_t* threshold = &out->threshold[(base + i) * 4];
+            threshold[0] = img.threshold[i];
+            for (int c = 0; c < 3; ++c) {
+                const double v = std::min(1.0, std::max(0.0, static_cast<double>(img.coverage[i * 3 + c])));
+                threshold[1 + c] = static_cast<uint16_t>(std::lround(v * 65535.0));
+            }
         }
     }
 }
@@ -232,7 +237,7 @@ void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t widt
     const uint64_t texels = out->offset(out->layers, 0);
     out->color.assign(texels * 4, 0);
     out->normal.assign(texels * 4, 0);
-    out->threshold.assign(texels, 0);
+    out->threshold.assign(texels * 4, 0);
 
     Vector<Triangle> triangles{StlAllocator<Triangle>(host)};
     prepare_triangles(patch, &triangles);

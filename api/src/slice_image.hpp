@@ -11,7 +11,8 @@ namespace grass {
 struct SliceImage {
     explicit SliceImage(HostAllocator* host)
         : alpha(StlAllocator<float>(host)), color(StlAllocator<float>(host)),
-          normal(StlAllocator<float>(host)), threshold(StlAllocator<uint16_t>(host)) {}
+          normal(StlAllocator<float>(host)), threshold(StlAllocator<uint16_t>(host)),
+          coverage(StlAllocator<float>(host)) {}
 
     void resize(uint32_t w, uint32_t h) {
         width = w;
@@ -21,6 +22,7 @@ struct SliceImage {
         color.assign(n * 3, 0.0f);
         normal.assign(n * 4, 0.0f);
         threshold.assign(n, 0);
+        coverage.assign(n * 3, 1.0f);
     }
     size_t texels() const { return static_cast<size_t>(width) * height; }
 
@@ -30,6 +32,10 @@ struct SliceImage {
     Vector<float> color;        // rgb, linear; not premultiplied
     Vector<float> normal;       // xyz unit, patch space, facing the viewer; w = height / H
     Vector<uint16_t> threshold; // unorm16 density threshold of the covering blade, 0 = none
+    // The coverage curve: the part of the texel's coverage whose blades have thresholds at
+    // most 1/4, 1/2 and 3/4 (relative to alpha; at 1 it is all of it). A tier draws the part
+    // of a texel its density and transition interval select, not the whole texel.
+    Vector<float> coverage;
 };
 
 } // namespace grass

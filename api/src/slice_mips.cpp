@@ -108,6 +108,7 @@ void build_coverage_mips(Vector<SliceImage>* levels, uint32_t level_count, HostA
     auto filter = [base](const SliceImage& p, uint32_t x0, uint32_t x1, uint32_t y0, uint32_t y1, SliceImage* out,
                      size_t texel) {
         double sum_a = 0, color[3] = {0, 0, 0}, normal[4] = {0, 0, 0, 0}, plain[3] = {0, 0, 0};
+        double curve[3] = {0, 0, 0}, plain_curve[3] = {0, 0, 0};
         float max_a = 0;
         uint16_t threshold = 0;
         bool first = true;
@@ -119,6 +120,8 @@ void build_coverage_mips(Vector<SliceImage>* levels, uint32_t level_count, HostA
                 for (int c = 0; c < 3; ++c) color[c] += a * static_cast<double>(p.color[i * 3 + c]);
                 for (int c = 0; c < 4; ++c) normal[c] += a * static_cast<double>(p.normal[i * 4 + c]);
                 for (int c = 0; c < 3; ++c) plain[c] += p.normal[i * 4 + c];
+                for (int c = 0; c < 3; ++c) curve[c] += a * static_cast<double>(p.coverage[i * 3 + c]);
+                for (int c = 0; c < 3; ++c) plain_curve[c] += p.coverage[i * 3 + c];
                 const uint16_t t = p.threshold[i];
                 if (first || a > max_a || (a == max_a && t < threshold)) {
                     max_a = a;
@@ -135,6 +138,11 @@ void build_coverage_mips(Vector<SliceImage>* levels, uint32_t level_count, HostA
         const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         for (int c = 0; c < 3; ++c) on[c] = len > 0.0 ? static_cast<float>(n[c] / len) : 0.0f;
         on[3] = static_cast<float>(normal[3] / s_a);
+        // The coverage curve is a share of the coverage: alpha-weighted like the colour.
+        const double footprint = static_cast<double>(x1 - x0) * (y1 - y0);
+        for (int c = 0; c < 3; ++c) {
+            out->coverage[texel * 3 + c] = static_cast<float>(sum_a > 0.0 ? curve[c] / sum_a : plain_curve[c] / footprint);
+        }
         // The value the coverage scale applies to: eq. 4.12 (max) or the footprint's mean.
         out->alpha[texel] = base == MipAlphaBase::kMax ? max_a : static_cast<float>(sum_a / ((x1 - x0) * (y1 - y0)));
         out->threshold[texel] = threshold;
@@ -174,6 +182,7 @@ void build_box_mips(Vector<SliceImage>* levels, uint32_t level_count, HostAlloca
         for (int c = 0; c < 3; ++c) out->color[texel * 3 + c] = static_cast<float>(sum[1 + c] * inv); // eq. 4.7
         for (int c = 0; c < 4; ++c) out->normal[texel * 4 + c] = static_cast<float>(sum[4 + c] * inv);
         out->threshold[texel] = p.threshold[static_cast<size_t>(y0) * p.width + x0];
+        for (int c = 0; c < 3; ++c) out->coverage[texel * 3 + c] = p.coverage[(static_cast<size_t>(y0) * p.width + x0) * 3 + c];
     };
     append_levels(levels, level_count, host, filter);
 }

@@ -12,11 +12,12 @@ namespace grass {
 SliceRasterizer::SliceRasterizer(uint32_t width, uint32_t height, const float toward_viewer[3], HostAllocator* host)
     : width_(width), height_(height), samples_w_(width * kSamplesPerAxis), samples_h_(height * kSamplesPerAxis),
       depth_(StlAllocator<float>(host)), threshold_(StlAllocator<uint16_t>(host)),
-      attributes_(StlAllocator<float>(host)) {
+      min_threshold_(StlAllocator<uint16_t>(host)), attributes_(StlAllocator<float>(host)) {
     for (int c = 0; c < 3; ++c) toward_viewer_[c] = toward_viewer[c];
     const size_t n = static_cast<size_t>(samples_w_) * samples_h_;
     depth_.resize(n);
     threshold_.resize(n);
+    min_threshold_.resize(n);
     attributes_.resize(n * kAttributes);
     clear();
 }
@@ -24,6 +25,7 @@ SliceRasterizer::SliceRasterizer(uint32_t width, uint32_t height, const float to
 void SliceRasterizer::clear() {
     std::fill(depth_.begin(), depth_.end(), 0.0f);
     std::fill(threshold_.begin(), threshold_.end(), uint16_t(0));
+    std::fill(min_threshold_.begin(), min_threshold_.end(), uint16_t(0xffff));
 }
 
 namespace {
@@ -73,6 +75,9 @@ void SliceRasterizer::draw_triangle(const RasterVertex& a, const RasterVertex& b
             const double l0 = w0 * inv_area, l1 = w1 * inv_area, l2 = w2 * inv_area;
             const float depth = static_cast<float>(l0 * v[0]->depth + l1 * v[1]->depth + l2 * v[2]->depth);
             const size_t k = static_cast<size_t>(y) * samples_w_ + static_cast<size_t>(x);
+            // At a density d the sample is covered when any blade over it has a threshold
+            // <= d, whether or not it is the nearest: the coverage curve counts those.
+            min_threshold_[k] = std::min(min_threshold_[k], threshold);
             if (threshold_[k] != 0 && !(depth < depth_[k])) continue; // ties: the first drawn stays
             depth_[k] = depth;
             threshold_[k] = threshold;
@@ -131,6 +136,17 @@ void SliceRasterizer::resolve(SliceImage* out) const {
                 continue;
             }
             out->alpha[texel] = static_cast<float>(covered) / static_cast<float>(kSamplesPerTexel);
+            for (uint32_t q = 0; q < 3; ++q) {
+                const uint32_t limit = (65535u * (q + 1) + 2u) / 4u; // round(65535 (q + 1) / 4)
+                uint32_t below = 0;
+                for (uint32_t sy = 0; sy < S; ++sy) {
+                    for (uint32_t sx = 0; sx < S; ++sx) {
+                        const size_t k = static_cast<size_t>(ty * S + sy) * samples_w_ + (tx * S + sx);
+                        below += threshold_[k] != 0 && min_threshold_[k] <= limit ? 1u : 0u;
+                    }
+                }
+                out->coverage[texel * 3 + q] = static_cast<float>(below) / static_cast<float>(covered);
+            }
             const double inv = 1.0 / covered;
             for (int ch = 0; ch < 3; ++ch) color[ch] = static_cast<float>(sum[ch] * inv);
             const double len = std::sqrt(sum[3] * sum[3] + sum[4] * sum[4] + sum[5] * sum[5]);

@@ -38,7 +38,9 @@ public:
     void draw_triangle(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c, uint16_t threshold);
     // Per texel: alpha = covered samples / samples; colour, normal (renormalised) and height
     // = averages over the covered samples; threshold = the one covering most samples (ties:
-    // the smaller). Empty texels get colour 0, the normal towards the viewer, height 0.
+    // the smaller); coverage curve = the share of covered samples that some blade with a
+    // threshold at most 1/4, 1/2, 3/4 covers (nearest or not: at that density the blades in
+    // front are gone). Empty texels get colour 0, the normal towards the viewer, height 0.
     void resolve(SliceImage* out) const;
 
     uint32_t width() const { return width_; }
@@ -50,6 +52,7 @@ private:
     float toward_viewer_[3];
     Vector<float> depth_;
     Vector<uint16_t> threshold_; // 0 = not covered
+    Vector<uint16_t> min_threshold_; // the lowest threshold of any blade over the sample (0xffff: none)
     Vector<float> attributes_;   // kAttributes per sample
     static constexpr uint32_t kAttributes = 7; // albedo rgb, normal xyz, height
 };

@@ -248,12 +248,12 @@ grass_result GlBackend::upload_slices(uint32_t slot, const SliceSet& set) {
     const bool shape_ok = set.width > 0 && set.height > 0 && set.layers == (n == 0 ? 1u : 2 * n + 1) &&
                           set.mip_levels >= 1 && set.mip_levels <= full_chain;
     if (!shape_ok || set.color.size() < total_texels * 4 || set.normal.size() < total_texels * 4 ||
-        set.threshold.size() < total_texels) {
+        set.threshold.size() < total_texels * 4) {
         return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
                           "%s: the baked slice set (N = %u) of patch slot %u is malformed: %u layers of %ux%u texels, "
                           "%u mip levels, %zu/%zu/%zu colour/normal/threshold texels (internal error)",
                           kFunction, n, slot, set.layers, set.width, set.height, set.mip_levels,
-                          set.color.size() / 4, set.normal.size() / 4, set.threshold.size());
+                          set.color.size() / 4, set.normal.size() / 4, set.threshold.size() / 4);
     }
     if (set.width > static_cast<uint32_t>(max_texture_size_) || set.height > static_cast<uint32_t>(max_texture_size_) ||
         set.layers > static_cast<uint32_t>(max_array_layers_)) {
@@ -287,7 +287,7 @@ grass_result GlBackend::upload_slices(uint32_t slot, const SliceSet& set) {
     const Array arrays[] = {
         {&gpu.color, GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, set.color.data(), 4},
         {&gpu.normal, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, set.normal.data(), 4},
-        {&gpu.threshold, GL_R16, GL_RED, GL_UNSIGNED_SHORT, set.threshold.data(), 2},
+        {&gpu.threshold, GL_RGBA16, GL_RGBA, GL_UNSIGNED_SHORT, set.threshold.data(), 8},
     };
     {
         GlUnpackStateGuard unpack(gl_, 1); // rows tightly packed, whatever their width

@@ -13,8 +13,8 @@ constexpr VkBufferUsageFlags kVertexUsage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | 
 constexpr VkBufferUsageFlags kIndexUsage = VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 constexpr VkImageUsageFlags kMapUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
 constexpr VkImageUsageFlags kSliceUsage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-// Texel sizes of the slice images (colour and normal RGBA8, threshold R16).
-constexpr uint32_t kSliceColorBytes = 4, kSliceNormalBytes = 4, kSliceThresholdBytes = 2;
+// Texel sizes of the slice images (colour and normal RGBA8, threshold and coverage curve RGBA16).
+constexpr uint32_t kSliceColorBytes = 4, kSliceNormalBytes = 4, kSliceThresholdBytes = 8;
 
 PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d) {
     PipelineTarget t;
@@ -262,7 +262,7 @@ grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
                           "%s: baked slices of the patch in slot %u have %u layers; N = %u needs %u", function, slot,
                           set.layers, n, n ? 2 * n + 1 : 1);
     }
-    if (set.color.size() != texels * 4 || set.normal.size() != texels * 4 || set.threshold.size() != texels) {
+    if (set.color.size() != texels * 4 || set.normal.size() != texels * 4 || set.threshold.size() != texels * 4) {
         return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NONE,
                           "%s: baked slices (N = %u) of the patch in slot %u hold %zu colour, %zu normal and %zu "
                           "threshold values; %u x %u texels, %u levels, %u layers need %llu, %llu and %llu",
@@ -330,7 +330,7 @@ grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
         };
         VkDeviceSize at = slice_staging_layout(fresh.color, kSliceColorBytes, 0, copier(set.color.data(), 4));
         at = slice_staging_layout(fresh.normal, kSliceNormalBytes, at, copier(set.normal.data(), 4));
-        slice_staging_layout(fresh.threshold, kSliceThresholdBytes, at, copier(set.threshold.data(), 2));
+        slice_staging_layout(fresh.threshold, kSliceThresholdBytes, at, copier(set.threshold.data(), 8));
         ok = memory_.flush(fresh.staging, 0, bytes, &failure);
     }
     if (!ok) {

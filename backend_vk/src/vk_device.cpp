@@ -122,7 +122,7 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
          "cannot sample VK_FORMAT_R8G8B8A8_UNORM images with linear filtering, which the baked slice normals of the "
          "volume and image tiers need"},
         {kSliceThresholdFormat, false,
-         "cannot sample VK_FORMAT_R16_UNORM images, which the baked slice thresholds of the volume and image tiers "
+         "cannot sample VK_FORMAT_R16G16B16A16_UNORM images, which the baked slice thresholds of the volume and image tiers "
          "need"},
     };
     for (const auto& f : slice_formats) {

@@ -27,7 +27,7 @@ constexpr VkFormat kDensityMapFormat = VK_FORMAT_R16_UNORM;
 // normal + height trilinear, thresholds nearest.
 constexpr VkFormat kSliceColorFormat = VK_FORMAT_R8G8B8A8_SRGB;
 constexpr VkFormat kSliceNormalFormat = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkFormat kSliceThresholdFormat = VK_FORMAT_R16_UNORM;
+constexpr VkFormat kSliceThresholdFormat = VK_FORMAT_R16G16B16A16_UNORM; // threshold + coverage curve
 
 // Loads the functions and checks the device: Vulkan 1.1, dynamic rendering when
 // vk_desc->render_pass is 0, a graphics queue family, the sample count, the density map

@@ -105,8 +105,8 @@ TEST_F(SliceBakingTest, BakingIsDeterministicAndPinned) {
     EXPECT_TRUE(same_bytes(h1, h2));
     std::printf("[ hashes   ] N = 8: 0x%016llx, horizontal: 0x%016llx\n", (unsigned long long)a.content_hash,
                 (unsigned long long)h1.content_hash);
-    EXPECT_EQ(a.content_hash, 0x85b31890982c894full) << std::hex << "actual 0x" << a.content_hash;
-    EXPECT_EQ(h1.content_hash, 0x13e3b4240fe52487ull) << std::hex << "actual 0x" << h1.content_hash;
+    EXPECT_EQ(a.content_hash, 0x5ea121fa6f9a984full) << std::hex << "actual 0x" << a.content_hash;
+    EXPECT_EQ(h1.content_hash, 0x2cac34dcbfc2f304ull) << std::hex << "actual 0x" << h1.content_hash;
 }
 
 TEST_F(SliceBakingTest, LayoutFollowsTheContract) {
@@ -127,7 +127,7 @@ TEST_F(SliceBakingTest, LayoutFollowsTheContract) {
     EXPECT_EQ(v.offset(3, 2), 3 * layer_texels + 256 * 64 + 128 * 32);
     EXPECT_EQ(v.color.size(), 17 * layer_texels * 4);
     EXPECT_EQ(v.normal.size(), 17 * layer_texels * 4);
-    EXPECT_EQ(v.threshold.size(), 17 * layer_texels);
+    EXPECT_EQ(v.threshold.size(), 17 * layer_texels * 4); // threshold + coverage curve
     EXPECT_EQ(v.level_width(8), 1u);
     EXPECT_EQ(v.level_height(7), 1u);
 
@@ -136,13 +136,13 @@ TEST_F(SliceBakingTest, LayoutFollowsTheContract) {
     EXPECT_EQ(h.width, 128u);
     EXPECT_EQ(h.height, 128u);
     EXPECT_EQ(h.mip_levels, 8u);
-    EXPECT_EQ(h.threshold.size(), h.offset(1, 0));
+    EXPECT_EQ(h.threshold.size(), h.offset(1, 0) * 4);
     EXPECT_EQ(h.offset(1, 0), 21845u);
 
     bake(1, &small, 32, 16);
     EXPECT_EQ(small.layers, 3u);
     EXPECT_EQ(small.mip_levels, 6u);
-    EXPECT_EQ(small.threshold.size(), 3u * (512 + 128 + 32 + 8 + 2 + 1));
+    EXPECT_EQ(small.threshold.size(), 4u * 3u * (512 + 128 + 32 + 8 + 2 + 1));
 }
 
 // lemme eq. 4.11, 4.13-4.15 against eq. 4.7-4.8: the coverage at a_r = 0.5 of every level
@@ -294,7 +294,7 @@ TEST_F(SliceBakingTest, TexelsCarryTheThresholdOfTheirBlade) {
             const uint64_t base = v.offset(layer, k);
             const uint64_t n = uint64_t(v.level_width(k)) * v.level_height(k);
             for (uint64_t i = 0; i < n; ++i) {
-                const uint16_t t = v.threshold[base + i];
+                const uint16_t t = v.threshold[(base + i) * 4];
                 const uint8_t a = v.color[(base + i) * 4 + 3];
                 if (t) {
                     ASSERT_TRUE(thresholds.count(t)) << "layer " << layer << " level " << k << " texel " << i;
@@ -317,7 +317,7 @@ TEST_F(SliceBakingTest, HorizontalSliceCoversThePatch) {
     double alpha = 0, height = 0;
     const uint64_t n = uint64_t(h.width) * h.height;
     for (uint64_t i = 0; i < n; ++i) {
-        const uint16_t t = h.threshold[i];
+        const uint16_t t = h.threshold[i * 4];
         const uint8_t a = h.color[i * 4 + 3];
         alpha += a / 255.0;
         ASSERT_EQ(t == 0, a == 0);
@@ -364,7 +364,7 @@ TEST_F(SliceBakingTest, CacheRoundTripsAndRejectsDamagedFiles) {
     std::snprintf(name, sizeof(name), "grass-slices-%016llx.bin", (unsigned long long)key);
     const std::string path = dir + (dir.empty() || dir.back() == '/' ? "" : "/") + name;
     const std::vector<uint8_t> good = read_file(path);
-    ASSERT_EQ(good.size(), 72 + v.threshold.size() * 10);
+    ASSERT_EQ(good.size(), 72 + v.threshold.size() / 4 * 16);
 
     SliceSet loaded(host());
     const auto start = std::chrono::steady_clock::now();
@@ -425,6 +425,36 @@ TEST_F(SliceBakingTest, CacheRoundTripsAndRejectsDamagedFiles) {
     EXPECT_TRUE(same_bytes(v, s));
     std::remove(path.c_str());
     std::remove(other_path.c_str());
+}
+
+} // namespace
+
+namespace {
+
+// The coverage curve (baked_slices.hpp): in every covered texel the shares of its coverage
+// whose blades' thresholds are at most 1/4, 1/2, 3/4 never decrease; over the vertical
+// slices of a patch with uniform thresholds they average about 1/4, 1/2 and 3/4 of the
+// coverage (each blade's threshold is equally likely anywhere in (0, 1]).
+TEST_F(SliceBakingTest, TheCoverageCurveGrowsWithTheDensity) {
+    SliceSet v(host());
+    bake(8, &v);
+    double weighted[3] = {0, 0, 0}, alpha = 0;
+    const uint64_t n = uint64_t(v.width) * v.height; // level 0 of each layer
+    for (uint32_t layer = 0; layer + 1 < v.layers; ++layer) {
+        const uint64_t base = v.offset(layer, 0);
+        for (uint64_t i = 0; i < n; ++i) {
+            const uint16_t* t = &v.threshold[(base + i) * 4];
+            const double a = v.color[(base + i) * 4 + 3] / 255.0;
+            if (t[0] == 0) continue;
+            ASSERT_LE(t[1], t[2]);
+            ASSERT_LE(t[2], t[3]);
+            for (int c = 0; c < 3; ++c) weighted[c] += a * t[1 + c] / 65535.0;
+            alpha += a;
+        }
+    }
+    std::printf("[ curve    ] coverage with thresholds <= 1/4, 1/2, 3/4: %.3f %.3f %.3f of the texels' coverage\n",
+                weighted[0] / alpha, weighted[1] / alpha, weighted[2] / alpha);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(weighted[c] / alpha, 0.25 * (c + 1), 0.1) << "point " << c;
 }
 
 } // namespace

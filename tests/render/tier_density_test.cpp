@@ -1,0 +1,96 @@
+// Thin grass in every tier: at a low density the volume and image tiers cover about as much
+// as the blades they replace. A slice texel holds several blades; drawn whole whenever the
+// threshold stored for it passed, texels left a lawn at density 0.1 covered more than twice
+// as much as the blades; the coverage curve baked with the slices (baked_slices.hpp) draws
+// the share of each texel's blades that the density keeps. The test prints what it measures.
+// Measured (GL; coverage of the field's footprint, 4x MSAA, 5 m up looking 9 m ahead):
+//   density 0.1: blades 0.235, volume 0.373 (whole texels: 0.572), image 0.278 (0.149)
+//   density 0.3: blades 0.506, volume 0.774 (whole texels: 0.871), image 0.572 (0.312)
+// The volume tier still covers too much (docs/three-tiers.md); the limits below fail for
+// whole texels and hold the improvement.
+#include "render_fixture.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+namespace grass_test {
+namespace {
+
+class TierDensityTest : public RenderTest {
+protected:
+    grass_host::Image render_with(grass_tier_kind kind, float density) {
+        grass_field_desc d = solo_tier_field(48, kind, kind == GRASS_TIER_VOLUME ? 8u : 0u, 1); // 12 m x 12 m
+        d.density = density;
+        const grass_field_id f = make_field(d);
+        const double eye[3] = {6.0, 5.0, -3.0}, target[3] = {6.0, 0.0, 6.0};
+        const auto image = render(view(eye, target, 50.0f));
+        save(image, std::to_string(int(kind)) + "_" + std::to_string(density));
+        EXPECT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
+        return image;
+    }
+};
+
+TEST_P(TierDensityTest, ThinGrassCoversAboutAsMuchInEveryTier) {
+    grass_host::TargetDesc t;
+    t.width = 160;
+    t.height = 96;
+    t.samples = 4; // translucent texels become coverage, as on a host's multisampled target
+    start(t);
+    uint8_t sky[3];
+    expected_sky(host->target(), sky);
+    const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
+    // The field's footprint (the pixels the full-density blades cover) and each tier's own
+    // colour of full grass there (its mean over the footprint at density 1).
+    const grass_host::Image full = render_with(GRASS_TIER_GEOMETRY, 1.0f);
+    std::vector<bool> footprint(size_t(full.width) * full.height);
+    uint64_t area = 0;
+    for (uint32_t y = 0; y < full.height; ++y) {
+        for (uint32_t x = 0; x < full.width; ++x) {
+            const bool g = is_grass(full.pixel(x, y), sky, 40);
+            footprint[size_t(y) * full.width + x] = g;
+            area += g;
+        }
+    }
+    ASSERT_GT(area, uint64_t(full.width) * full.height / 3);
+    auto distance = [](const uint8_t* p, const double q[3]) {
+        return std::fabs(p[0] - q[0]) + std::fabs(p[1] - q[1]) + std::fabs(p[2] - q[2]);
+    };
+    const double sky_d[3] = {double(sky[0]), double(sky[1]), double(sky[2])};
+    double grass_colour[3][3] = {};
+    for (int k = 0; k < 3; ++k) {
+        const grass_host::Image im = k == 0 ? full : render_with(kinds[k], 1.0f);
+        for (uint32_t y = 0; y < im.height; ++y) {
+            for (uint32_t x = 0; x < im.width; ++x) {
+                if (!footprint[size_t(y) * im.width + x]) continue;
+                for (int c = 0; c < 3; ++c) grass_colour[k][c] += im.pixel(x, y)[c] / double(area);
+            }
+        }
+    }
+    // A resolved pixel is the sky and the grass mixed by the covered share of its samples.
+    auto coverage = [&](const grass_host::Image& im, int k) {
+        const double full_distance = std::fabs(grass_colour[k][0] - sky_d[0]) + std::fabs(grass_colour[k][1] - sky_d[1]) +
+                                     std::fabs(grass_colour[k][2] - sky_d[2]);
+        double sum = 0.0;
+        for (uint32_t y = 0; y < im.height; ++y) {
+            for (uint32_t x = 0; x < im.width; ++x) {
+                if (footprint[size_t(y) * im.width + x]) sum += std::min(1.0, distance(im.pixel(x, y), sky_d) / full_distance);
+            }
+        }
+        return sum / double(area);
+    };
+    for (const float density : {0.1f, 0.3f}) {
+        double c[3];
+        for (int k = 0; k < 3; ++k) c[k] = coverage(render_with(kinds[k], density), k);
+        std::printf("[ measured ] %s density %.1f: coverage geometry %.3f, volume %.3f, image %.3f\n",
+                    backend_name(GetParam()).c_str(), density, c[0], c[1], c[2]);
+        EXPECT_NEAR(c[1], c[0], 0.3) << "volume, density " << density;
+        EXPECT_NEAR(c[2], c[0], 0.1) << "image, density " << density;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, TierDensityTest, ::testing::ValuesIn(enabled_backends()),
+                         [](const auto& p) { return backend_name(p.param); });
+
+} // namespace
+} // namespace grass_test
