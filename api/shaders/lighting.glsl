@@ -9,13 +9,22 @@ float blade_ambient_occlusion(float density, float height_over_ground, float imp
     return 1.0 - impact * density * (1.0 - smoothstep(0.0, ao_height, height_over_ground));
 }
 
+// The share of the sun above the field's ground plane: 1 above it, 0 below it (the ground
+// shadows the grass, as it does the host's terrain), faded over +-1 degree about the horizon
+// so that a setting sun does not pop. Without it a sun below the ground lit the grass from
+// underneath about as brightly as one overhead (ExtremesTest.SunAtTheZenith...).
+float sun_above_ground() {
+    vec3 up = normalize(mat3(field.patch_to_world)[1]);
+    return smoothstep(-0.0175, 0.0175, dot(frame.sun_direction.xyz, up));
+}
+
 // light = I_ambient * AO * albedo + I_diffuse * albedo * max(0, N.L)   (eq. 6.9)
 // `n` is the normal of the side that faces the camera (two-sided material). `light` is
 // light_maps() at the point (blade_interface.glsl): x scales the ambient term (the ambient
 // map holds the scene's AO, eq. 6.10, AO_blade is `ambient_occlusion`), y the sun term (the
 // diffuse map's shadows). Without light maps it is (1, 1) and the products fold away.
 vec3 grass_lighting(vec3 albedo, vec3 n, float ambient_occlusion, vec2 light) {
-    float n_dot_l = max(dot(n, frame.sun_direction.xyz), 0.0);
+    float n_dot_l = max(dot(n, frame.sun_direction.xyz), 0.0) * sun_above_ground();
     return albedo * (frame.ambient_color.rgb * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
 }
 
@@ -52,7 +61,8 @@ vec4 threshold_code(float threshold) {
 // an averaged normal would cancel them and lose the sun).
 // `light` as for grass_lighting.
 vec3 grass_lighting_two_lobes(vec3 albedo, vec3 n_up, vec3 n_down, float ambient_occlusion, vec2 light) {
-    float n_dot_l = 0.5 * (max(dot(n_up, frame.sun_direction.xyz), 0.0) + max(dot(n_down, frame.sun_direction.xyz), 0.0));
+    float n_dot_l = 0.5 * (max(dot(n_up, frame.sun_direction.xyz), 0.0) + max(dot(n_down, frame.sun_direction.xyz), 0.0)) *
+                    sun_above_ground();
     return albedo * (frame.ambient_color.rgb * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
 }
 

@@ -22,6 +22,14 @@ grass_result validate_base_transform(grass_context* ctx, const char* fn, const d
                          "%s: desc->base_transform's last row is (%g, %g, %g, %g); it must be (0, 0, 0, 1)", fn, m[3],
                          m[7], m[11], m[15]);
     }
+    // The translation within +-1e12 m, the camera's bound (api_frame.cpp): beyond it a
+    // double's spacing passes 0.1 mm and camera-relative cells lose their precision.
+    for (int c = 12; c < 15; ++c) {
+        if (std::fabs(m[c]) > 1e12) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                             "%s: desc->base_transform[%d] (translation) is %g; it must be within +-1e12 m", fn, c, m[c]);
+        }
+    }
     constexpr double kTolerance = 1e-5;
     for (int a = 0; a < 3; ++a) {
         for (int b = 0; b < 3; ++b) {

@@ -45,7 +45,9 @@ grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_
                         static_cast<double>(v.sun_direction[2]) * v.sun_direction[2];
     if (!(sun2 > 1e-12)) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_ZERO_VECTOR,
-                         "%s: view->sun_direction is (0, 0, 0); it must point towards the sun", fn);
+                         "%s: view->sun_direction is (%g, %g, %g); it must point towards the sun (length > 1e-6)", fn,
+                         static_cast<double>(v.sun_direction[0]), static_cast<double>(v.sun_direction[1]),
+                         static_cast<double>(v.sun_direction[2]));
     }
     static const char* const sun_names[3] = {"view->sun_color[0]", "view->sun_color[1]", "view->sun_color[2]"};
     static const char* const amb_names[3] = {"view->ambient_color[0]", "view->ambient_color[1]", "view->ambient_color[2]"};
@@ -116,6 +118,25 @@ GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass
     if (!context || !out_stats) return GRASS_ERROR_INVALID_ARGUMENT;
     *out_stats = context->plan.stats;
     return GRASS_SUCCESS;
+}
+
+GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, double out_ms[GRASS_TIER_KIND_COUNT],
+                                             grass_bool* out_available) {
+    if (!context || !out_ms || !out_available) return GRASS_ERROR_INVALID_ARGUMENT;
+    for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = 0.0;
+    *out_available = 0;
+    if (!context->backend) return GRASS_SUCCESS;
+    double ms[GRASS_TIER_KIND_COUNT] = {};
+    // The context is const for the host; polling the backend's queries is not a change
+    // the host can see.
+    grass_context* ctx = const_cast<grass_context*>(context);
+    return guarded(ctx, "grass_get_tier_gpu_ms", [&] {
+        if (ctx->backend->tier_gpu_ms(ms)) {
+            for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = ms[k] > 0.0 ? ms[k] : 0.0;
+            *out_available = 1;
+        }
+        return GRASS_SUCCESS;
+    });
 }
 
 } // extern "C"

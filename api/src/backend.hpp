@@ -69,6 +69,15 @@ public:
     virtual void end_frame() {}
 
     virtual uint64_t gpu_bytes() const = 0;
+
+    // grass_get_tier_gpu_ms: the GPU milliseconds of each tier kind in the most recent frame
+    // whose timer queries have finished, read without waiting (a backend may poll its
+    // queries here). False, with zeros, where the device has no timer queries or no timed
+    // frame has finished yet.
+    virtual bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) {
+        for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = 0.0;
+        return false;
+    }
 };
 
 // The backend of a context made by grass_create_context(): holds nothing, draws nothing.
@@ -85,6 +94,7 @@ public:
     void release_field(uint32_t) override {}
     grass_result begin_frame(const FramePlan&) override { return GRASS_SUCCESS; }
     uint64_t gpu_bytes() const override { return 0; }
+    // tier_gpu_ms: the default (no GPU, no timings).
 };
 
 } // namespace grass

@@ -134,7 +134,8 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     instances_.create(gl_);
     uniforms_.create(gl_);
     tier_vertex_array_ = create_instance_vertex_array(gl_, instances_.name());
-    result = check_errors(kCreateFunction, "creating the programs, white texture and samplers");
+    create_timers();
+    result = check_errors(kCreateFunction, "creating the programs, white texture, samplers and timer queries");
     if (result != GRASS_SUCCESS) return result;
 
     return GRASS_SUCCESS;
@@ -147,6 +148,7 @@ GlBackend::~GlBackend() {
     for (uint32_t slot = 0; slot < maps_.size(); ++slot) release_map(slot);
     for (SliceGpu& s : slices_) delete_slices(s); // sets of slots never given a patch
     slices_.clear();
+    delete_timers();
     if (tier_vertex_array_ != 0) gl_.DeleteVertexArrays(1, &tier_vertex_array_);
     instances_.destroy(gl_);
     uniforms_.destroy(gl_);
@@ -461,7 +463,14 @@ grass_result GlBackend::begin_frame(const FramePlan&) {
     // The plan is uploaded by the first grass_gl_render of the frame, where the host's
     // GL context is current by contract.
     frame_uploaded_ = false;
+    end_frame(); // a frame's timer set is closed when it ends; this is a safeguard
+    frame_timer_chosen_ = false;
+    frame_timer_ = -1;
     return GRASS_SUCCESS;
+}
+
+void GlBackend::end_frame() {
+    if (frame_timer_ >= 0) timer_sets_[frame_timer_].closed = true;
 }
 
 uint64_t GlBackend::gpu_bytes() const {

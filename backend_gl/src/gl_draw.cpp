@@ -234,9 +234,15 @@ grass_result GlBackend::render(const char* function) {
         draw_debug(plan);
     } else {
         // Near tiers first, so the depth test rejects most of the far tiers' fragments.
+        // Timestamps around each kind's draws (gl_timers.cpp); they change no GL state.
+        const GLuint* stamps = timer_stamps();
+        if (stamps) gl_.QueryCounter(stamps[0], GL_TIMESTAMP);
         draw_blades(plan);
+        if (stamps) gl_.QueryCounter(stamps[1], GL_TIMESTAMP);
         draw_sliced(plan, GRASS_TIER_VOLUME);
+        if (stamps) gl_.QueryCounter(stamps[2], GL_TIMESTAMP);
         draw_sliced(plan, GRASS_TIER_IMAGE);
+        if (stamps) gl_.QueryCounter(stamps[3], GL_TIMESTAMP);
     }
     return GRASS_SUCCESS;
 }

@@ -75,7 +75,14 @@
     X(PFNGLBINDSAMPLERPROC, BindSampler)                                            \
     /* drawing */                                                                   \
     X(PFNGLDRAWARRAYSINSTANCEDBASEINSTANCEPROC, DrawArraysInstancedBaseInstance)    \
-    X(PFNGLDRAWELEMENTSINSTANCEDBASEINSTANCEPROC, DrawElementsInstancedBaseInstance)
+    X(PFNGLDRAWELEMENTSINSTANCEDBASEINSTANCEPROC, DrawElementsInstancedBaseInstance) \
+    /* timer queries (grass_get_tier_gpu_ms) */                                     \
+    X(PFNGLGETQUERYIVPROC, GetQueryiv)                                              \
+    X(PFNGLCREATEQUERIESPROC, CreateQueries)                                        \
+    X(PFNGLDELETEQUERIESPROC, DeleteQueries)                                        \
+    X(PFNGLQUERYCOUNTERPROC, QueryCounter)                                          \
+    X(PFNGLGETQUERYOBJECTIVPROC, GetQueryObjectiv)                                  \
+    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
 
 namespace grass {
 

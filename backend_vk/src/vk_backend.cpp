@@ -75,6 +75,7 @@ VkBackend::~VkBackend() {
     memory_.destroy_image(&default_black_);
     memory_.destroy_buffer(&default_slices_staging_);
     memory_.destroy_image(&default_slices_);
+    if (timer_pool_ != VK_NULL_HANDLE) fn_.vkDestroyQueryPool(device_.device, timer_pool_, nullptr);
     // The frame ring, pipelines and descriptor pools go with their members.
 }
 
@@ -88,6 +89,7 @@ grass_result VkBackend::init(const char* function) {
     const PipelineTarget target = pipeline_target(ctx_, desc_);
     if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);
+    create_timers();
 
     // Colour maps are RGBA16; the device check (load_device) asked only for R16.
     VkFormatProperties rgba16{};
@@ -608,6 +610,10 @@ void VkBackend::release_field(uint32_t slot) {
 grass_result VkBackend::begin_frame(const FramePlan& plan) {
     frame_ += 1;
     slot_ = static_cast<uint32_t>(frame_ % desc_.frames_in_flight);
+    // The slot's timestamps belong to frame frame_ - frames_in_flight, which has finished:
+    // read them (and any older) now, or drop them if they never ran.
+    collect_timers();
+    timer_slots_[slot_] = TimerSlot{};
     // Frame frame_ - frames_in_flight has finished: what it was the last to use can go,
     // and the sets its volume and image draws used.
     deferred_.collect(frame_);
@@ -630,6 +636,11 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
 }
 
 grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
+    // This frame's timestamps (vk_timers.cpp), reset once, outside the render pass.
+    if (timer_pool_ != VK_NULL_HANDLE && !timer_slots_[slot_].reset) {
+        fn_.vkCmdResetQueryPool(cmd, timer_pool_, slot_ * kTimerQueriesPerSlot, kTimerQueriesPerSlot);
+        timer_slots_[slot_].reset = true;
+    }
     if (pending_uploads_ == 0) return GRASS_SUCCESS;
 
     // Build the batch first: it may throw std::bad_alloc, and nothing has changed yet.
@@ -842,6 +853,8 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     // the images on the ground far away.
     // The pipeline of each draw is the variant of its feature mask; binding one keeps the
     // vertex buffers and the descriptor set (same layout).
+    const uint32_t stamps = timer_stamps(); // UINT32_MAX: this record is not timed
+    write_stamp(cmd, stamps, 0);
     VkPipeline bound_pipeline = VK_NULL_HANDLE;
     uint32_t bound_patch = UINT32_MAX;
     for (uint32_t i = 0; i < plan.draws.size(); ++i) {
@@ -863,7 +876,12 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         }
         fn_.vkCmdDrawIndexed(cmd, p.index_count, d.instance_count, 0, 0, d.first_instance);
     }
-    if (slice_draws == 0) return GRASS_SUCCESS;
+    write_stamp(cmd, stamps, 1);
+    if (slice_draws == 0) {
+        write_stamp(cmd, stamps, 2);
+        write_stamp(cmd, stamps, 3);
+        return GRASS_SUCCESS;
+    }
     const struct {
         grass_tier_kind kind;
         PipelineKind pipeline;
@@ -891,6 +909,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
             fn_.vkCmdDraw(cmd, skirts ? SlicePipelines::kVerticesPerImageWithSkirts : pass.vertices, d.instance_count, 0,
                           d.first_instance);
         }
+        write_stamp(cmd, stamps, pass.kind == GRASS_TIER_VOLUME ? 2 : 3);
     }
     return GRASS_SUCCESS;
 }

@@ -43,6 +43,7 @@ public:
     void release_field(uint32_t slot) override;
     grass_result begin_frame(const FramePlan& plan) override;
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
+    bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
 
     // grass_vk_prepare_frame and grass_vk_record (arguments already checked).
     grass_result prepare_frame(VkCommandBuffer cmd);
@@ -95,6 +96,28 @@ private:
         uint32_t map_slot[kMapRoleCount] = {kNoMap, kNoMap, kNoMap, kNoMap, kNoMap};
         DescriptorSet sets[kMaxFramesInFlight];
     };
+
+    // Timer queries (vk_timers.cpp): one range of kTimerQueriesPerSlot timestamps per frame
+    // slot, reset by prepare_frame (outside the pass) and written by record: before the
+    // blades, after the blades, after the volumes, after the images; up to kTimedRecords
+    // records a frame.
+    static constexpr uint32_t kTimedRecords = 4;
+    static constexpr uint32_t kStampsPerRecord = 4;
+    static constexpr uint32_t kTimerQueriesPerSlot = kTimedRecords * kStampsPerRecord;
+    struct TimerSlot {
+        uint64_t frame = 0;    // the frame that wrote it
+        uint32_t records = 0;  // records of that frame that wrote stamps
+        bool reset = false;    // prepare_frame recorded the reset of its range this frame
+        bool pending = false;  // stamps written, results not read yet
+        bool complete = true;  // every record of its frame was timed
+    };
+    void create_timers(); // no pool where the queue family has no timestamps
+    // The first query of this record's stamps, or UINT32_MAX when it is not timed.
+    uint32_t timer_stamps();
+    void write_stamp(VkCommandBuffer cmd, uint32_t first, uint32_t stamp);
+    // Reads the finished slots, oldest first, without waiting; stops at the first whose
+    // results are not available yet.
+    void collect_timers();
 
     grass_result fail(const char* function, const char* what, const VkFailure& failure);
     // Points binding 0 and 1 of `set` at slot `slot`'s uniform buffer, the map bindings
@@ -151,6 +174,12 @@ private:
     uint32_t pending_uploads_ = 0; // patches, slice sets, maps, map updates and the default images not yet recorded
     uint64_t frame_ = 0;           // frames begun; the current one while in a frame
     uint32_t slot_ = 0;            // frame_ % frames_in_flight
+    VkQueryPool timer_pool_ = VK_NULL_HANDLE; // frames_in_flight x kTimerQueriesPerSlot timestamps
+    double timestamp_period_ns_ = 0.0;
+    uint64_t timestamp_mask_ = 0;
+    TimerSlot timer_slots_[kMaxFramesInFlight];
+    bool timings_valid_ = false;
+    double timings_ms_[GRASS_TIER_KIND_COUNT] = {};
 };
 
 } // namespace grass::vk

@@ -62,7 +62,12 @@ namespace grass::vk {
     X(vkCmdSetViewport)                 \
     X(vkCmdSetScissor)                  \
     X(vkCmdDraw)                        \
-    X(vkCmdDrawIndexed)
+    X(vkCmdDrawIndexed)                 \
+    X(vkCreateQueryPool)                \
+    X(vkDestroyQueryPool)               \
+    X(vkGetQueryPoolResults)            \
+    X(vkCmdResetQueryPool)              \
+    X(vkCmdWriteTimestamp)
 
 struct Functions {
 #define GRASS_VK_DECLARE_FUNCTION(name) PFN_##name name = nullptr;

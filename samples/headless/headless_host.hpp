@@ -19,6 +19,10 @@ struct TargetDesc {
     uint32_t samples = 1;                          // 1 or 4 (multisampled target, resolved for read-back)
     float clear_color[4] = {0.55f, 0.70f, 0.90f, 1.0f}; // linear RGB sky
     bool vk_dynamic_rendering = false;             // Vulkan: dynamic rendering instead of a render pass
+    // A linear float colour target (GL_RGBA32F / VK_FORMAT_R32G32B32A32_SFLOAT) instead of
+    // sRGB RGBA8: the shaders' output is stored unclamped, so NaN and infinity survive to the
+    // read-back (Image::rgba_f32). For tests; use samples = 1 (blending is off either way).
+    bool float_color = false;
     // The host's own terrain: a flat ground at world height 0 under the grass, drawn before
     // grass like an engine's scene. Off for tests that count sky pixels.
     bool ground = false;
@@ -37,7 +41,12 @@ struct Occluder {
 struct Image {
     uint32_t width = 0, height = 0;
     std::vector<uint8_t> rgba;                      // sRGB-encoded RGBA8, top row first
+    // Float targets only (TargetDesc::float_color): the linear RGBA floats as stored, top row
+    // first; `rgba` then holds them clamped to 0..1 and sRGB-encoded (NaN as 0), so the
+    // 8-bit helpers and PNG output work on either target.
+    std::vector<float> rgba_f32;
     const uint8_t* pixel(uint32_t x, uint32_t y) const { return &rgba[(size_t(y) * width + x) * 4]; }
+    const float* pixel_f32(uint32_t x, uint32_t y) const { return &rgba_f32[(size_t(y) * width + x) * 4]; }
 };
 
 class Host {
@@ -83,6 +92,10 @@ protected:
     explicit Host(const TargetDesc& target) : target_(target) {}
     TargetDesc target_;
 };
+
+// Fills image->rgba from image->rgba_f32 (linear floats): clamped, sRGB-encoded RGB, alpha
+// linear; NaN becomes 0. Used by the hosts for float targets.
+void encode_float_image(Image* image);
 
 // Builds a look-at view (rotation only is used by grass) and a default view desc with this
 // host's projection for the target's aspect.

@@ -345,8 +345,9 @@ bool GlHost::create_target(std::string* error) {
     }
     const GLsizei w = GLsizei(t.width), h = GLsizei(t.height);
     const GLsizei samples = t.samples > 1 ? GLsizei(t.samples) : 0;
+    const GLenum color_format = t.float_color ? GL_RGBA32F : GL_SRGB8_ALPHA8;
     gl_.CreateRenderbuffers(1, &color_rb_);
-    gl_.NamedRenderbufferStorageMultisample(color_rb_, samples, GL_SRGB8_ALPHA8, w, h);
+    gl_.NamedRenderbufferStorageMultisample(color_rb_, samples, color_format, w, h);
     gl_.CreateRenderbuffers(1, &depth_rb_);
     gl_.NamedRenderbufferStorageMultisample(depth_rb_, samples, GL_DEPTH_COMPONENT32F, w, h);
     gl_.CreateFramebuffers(1, &draw_fbo_);
@@ -359,7 +360,7 @@ bool GlHost::create_target(std::string* error) {
     }
     if (samples > 0) {
         gl_.CreateRenderbuffers(1, &resolve_rb_);
-        gl_.NamedRenderbufferStorageMultisample(resolve_rb_, 0, GL_SRGB8_ALPHA8, w, h);
+        gl_.NamedRenderbufferStorageMultisample(resolve_rb_, 0, color_format, w, h);
         gl_.CreateFramebuffers(1, &resolve_fbo_);
         gl_.NamedFramebufferRenderbuffer(resolve_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_rb_);
         status = gl_.CheckNamedFramebufferStatus(resolve_fbo_, GL_FRAMEBUFFER);
@@ -526,17 +527,26 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     gl_.Disable(GL_FRAMEBUFFER_SRGB); // read the stored sRGB bytes, unconverted
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, read_fbo);
     gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-    const size_t row = size_t(w) * 4;
+    const size_t texel = target_.float_color ? 4 * sizeof(float) : 4;
+    const size_t row = size_t(w) * texel;
     readback_.resize(row * size_t(h));
-    gl_.ReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, readback_.data());
+    gl_.ReadPixels(0, 0, w, h, GL_RGBA, target_.float_color ? GL_FLOAT : GL_UNSIGNED_BYTE, readback_.data());
     gl_.BindFramebuffer(GL_FRAMEBUFFER, draw_fbo_); // stays bound, as a host's scene target would
 
     out->width = target_.width;
     out->height = target_.height;
-    out->rgba.resize(readback_.size());
-    for (int32_t y = 0; y < h; ++y) { // GL rows run bottom-up
-        std::memcpy(&out->rgba[size_t(y) * row], &readback_[size_t(h - 1 - y) * row], row);
+    uint8_t* rows = nullptr;
+    if (target_.float_color) {
+        out->rgba_f32.resize(size_t(w) * size_t(h) * 4);
+        rows = reinterpret_cast<uint8_t*>(out->rgba_f32.data());
+    } else {
+        out->rgba.resize(readback_.size());
+        rows = out->rgba.data();
     }
+    for (int32_t y = 0; y < h; ++y) { // GL rows run bottom-up
+        std::memcpy(rows + size_t(y) * row, &readback_[size_t(h - 1 - y) * row], row);
+    }
+    if (target_.float_color) encode_float_image(out);
     if (count_gl_errors("the frame") != 0 && error) *error = log_;
     return GRASS_SUCCESS;
 }

@@ -31,6 +31,7 @@ namespace grass_host {
 namespace {
 
 constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB; // linear shader output is sRGB-encoded
+constexpr VkFormat kFloatColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT; // TargetDesc::float_color
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
@@ -49,7 +50,9 @@ struct Attachment {
 
 class VkHost final : public Host {
 public:
-    explicit VkHost(const TargetDesc& target) : Host(target) {}
+    explicit VkHost(const TargetDesc& target)
+        : Host(target), color_format_(target.float_color ? kFloatColorFormat : kColorFormat),
+          texel_bytes_(target.float_color ? 16u : 4u) {}
     ~VkHost() override;
     VkHost(const VkHost&) = delete;
     VkHost& operator=(const VkHost&) = delete;
@@ -101,6 +104,8 @@ private:
     PFN_vkCmdBeginRendering begin_rendering_ = nullptr;
     PFN_vkCmdEndRendering end_rendering_ = nullptr;
 
+    const VkFormat color_format_;  // kColorFormat, or kFloatColorFormat for float targets
+    const uint32_t texel_bytes_;   // of color_format_
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
     Attachment color_;   // multisampled when samples_ > 1
     Attachment depth_;
@@ -421,12 +426,12 @@ bool VkHost::create_target(std::string* error) {
     const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
     const VkImageUsageFlags color_usage =
         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (msaa ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-    if (!create_attachment(kColorFormat, samples_, color_usage, VK_IMAGE_ASPECT_COLOR_BIT, &color_, error) ||
+    if (!create_attachment(color_format_, samples_, color_usage, VK_IMAGE_ASPECT_COLOR_BIT, &color_, error) ||
         !create_attachment(kDepthFormat, samples_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                            VK_IMAGE_ASPECT_DEPTH_BIT, &depth_, error)) {
         return false;
     }
-    if (msaa && !create_attachment(kColorFormat, VK_SAMPLE_COUNT_1_BIT,
+    if (msaa && !create_attachment(color_format_, VK_SAMPLE_COUNT_1_BIT,
                                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                    VK_IMAGE_ASPECT_COLOR_BIT, &resolve_, error)) {
         return false;
@@ -434,7 +439,7 @@ bool VkHost::create_target(std::string* error) {
 
     // Read-back buffer: host-visible, cached when possible.
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    info.size = VkDeviceSize(target_.width) * target_.height * 4;
+    info.size = VkDeviceSize(target_.width) * target_.height * texel_bytes_;
     info.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkResult r = vkCreateBuffer(device_, &info, nullptr, &readback_);
@@ -467,7 +472,7 @@ bool VkHost::create_render_pass(std::string* error) {
     const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
     VkAttachmentDescription attachments[3] = {};
     // 0: colour (multisampled or not). Single-sample: it is the image read back.
-    attachments[0].format = kColorFormat;
+    attachments[0].format = color_format_;
     attachments[0].samples = samples_;
     attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     attachments[0].storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
@@ -704,7 +709,7 @@ bool VkHost::create_ground_pipeline(std::string* error) {
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dynamic.dynamicStateCount = 2;
     dynamic.pDynamicStates = dynamic_states;
-    const VkFormat color_format = kColorFormat;
+    const VkFormat color_format = color_format_;
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachmentFormats = &color_format;
@@ -759,7 +764,7 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     vk.queue_family = queue_family_;
     vk.render_pass = reinterpret_cast<uint64_t>(render_pass_);
     vk.subpass = 0;
-    vk.color_format = kColorFormat;
+    vk.color_format = color_format_;
     vk.depth_format = kDepthFormat;
     vk.sample_count = samples_;
     vk.frames_in_flight = 2;
@@ -967,8 +972,14 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     }
     out->width = target_.width;
     out->height = target_.height;
-    out->rgba.resize(size_t(target_.width) * target_.height * 4);
-    std::memcpy(out->rgba.data(), readback_mapped_, out->rgba.size()); // Vulkan rows run top-down
+    if (target_.float_color) {
+        out->rgba_f32.resize(size_t(target_.width) * target_.height * 4);
+        std::memcpy(out->rgba_f32.data(), readback_mapped_, out->rgba_f32.size() * sizeof(float)); // rows top-down
+        encode_float_image(out);
+    } else {
+        out->rgba.resize(size_t(target_.width) * target_.height * 4);
+        std::memcpy(out->rgba.data(), readback_mapped_, out->rgba.size()); // Vulkan rows run top-down
+    }
     if (messages_ != 0 && error) *error = log_;
     return GRASS_SUCCESS;
 }

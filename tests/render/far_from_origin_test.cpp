@@ -50,63 +50,31 @@ TEST_P(FarFromOriginTest, AFieldTenThousandKilometresOutRendersLikeOneAtTheOrigi
     EXPECT_LE(diff, 0.05) << "the GL-vs-Vulkan per-pixel tolerance (docs/testing.md)";
 }
 
-// Centre of the grass, weighted by how far each pixel is from the sky colour, in pixels.
-double grass_centroid_x(const grass_host::Image& image, const uint8_t sky[3]) {
-    double sum_w = 0.0, sum_x = 0.0;
-    for (uint32_t y = 0; y < image.height; ++y) {
-        for (uint32_t x = 0; x < image.width; ++x) {
-            const uint8_t* p = image.pixel(x, y);
-            const double w = std::abs(p[0] - sky[0]) + std::abs(p[1] - sky[1]) + std::abs(p[2] - sky[2]);
-            sum_w += w;
-            sum_x += w * (x + 0.5);
-        }
-    }
-    return sum_x / sum_w;
-}
-
 TEST_P(FarFromOriginTest, MillimetreMovesFarOutShiftTheGrassSmoothlyBySubPixelAmounts) {
     grass_host::TargetDesc t;
     t.width = t.height = 256;
     t.samples = 4; // coverage follows sub-pixel motion
     start(t);
-    uint8_t sky[3];
-    expected_sky(host->target(), sky);
     const int steps = 16;
-    std::vector<double> shift[2];
-    std::vector<grass_host::Image> frames[2];
-    for (int pass = 0; pass < 2; ++pass) { // 0: at the origin, 1: 10,000 km out
-        const double ox = pass == 0 ? 0.0 : kFar, oz = pass == 0 ? 0.0 : -kFar;
-        const grass_field_id f = field_at(ox, oz);
-        for (int k = 0; k <= steps; ++k) {
-            frames[pass].push_back(render(top_down(ox, oz, 0.001 * k)));
-            shift[pass].push_back(grass_centroid_x(frames[pass].back(), sky) - grass_centroid_x(frames[pass][0], sky));
-        }
-        ASSERT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
-    }
+    // 0: at the origin, 1: 10,000 km out (RenderTest::step_camera; ExtremesTest runs it at
+    // 1 m, 1 km, 100 km and 10,000 km on a float target).
+    const CameraSteps origin = step_camera(0.0, 0.0, steps, 0.001, kHeight);
+    const CameraSteps far_out = step_camera(kFar, -kFar, steps, 0.001, kHeight);
     // Out there every 1 mm step draws what it draws at the origin, where double precision
     // leaves no doubt: the same sub-pixel motion, no jumps.
     for (int k = 0; k <= steps; ++k) {
-        EXPECT_LE(mean_difference(frames[0][k], frames[1][k]), 0.05) << "step " << k << " mm";
+        EXPECT_LE(mean_difference(origin.frames[k], far_out.frames[k]), 0.05) << "step " << k << " mm";
     }
     // Each millimetre changes the picture, by less than half a pixel of motion.
     for (int k = 1; k <= steps; ++k) {
-        EXPECT_GT(mean_difference(frames[1][k], frames[1][k - 1]), 0.0) << "step " << k << " mm moves the grass";
-        EXPECT_LT(std::fabs(shift[1][k] - shift[1][k - 1]), 0.5) << "step " << k << " mm: no jump";
+        EXPECT_GT(mean_difference(far_out.frames[k], far_out.frames[k - 1]), 0.0) << "step " << k << " mm moves the grass";
+        EXPECT_LT(std::fabs(far_out.shift[k] - far_out.shift[k - 1]), 0.5) << "step " << k << " mm: no jump";
     }
-    // The amount: a ground point moves dx * f_px / depth; blades stand up to ~0.21 m, so the
-    // depth is between kHeight - 0.21 and kHeight. Least-squares slope through zero.
-    const double f_px = 128.0 / std::tan(kFov * 3.141592653589793 / 360.0);
-    const double lo = f_px / kHeight * 0.001, hi = f_px / (kHeight - 0.25) * 0.001; // px per mm
-    double sxy = 0.0, sxx = 0.0;
-    for (int k = 0; k <= steps; ++k) {
-        sxy += k * shift[1][k];
-        sxx += double(k) * k;
-    }
-    const double slope = std::fabs(sxy / sxx);
+    // The amount: a ground point moves dx * f_px / depth (least-squares slope through zero).
     std::printf("[ measured ] %s: grass moves %.4f px per mm 10,000 km out (expected %.4f .. %.4f)\n",
-                backend_name(GetParam()).c_str(), slope, lo, hi);
-    EXPECT_GE(slope, lo * 0.85);
-    EXPECT_LE(slope, hi * 1.15);
+                backend_name(GetParam()).c_str(), far_out.px_per_step, far_out.expected_lo, far_out.expected_hi);
+    EXPECT_GE(far_out.px_per_step, far_out.expected_lo * 0.85);
+    EXPECT_LE(far_out.px_per_step, far_out.expected_hi * 1.15);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, FarFromOriginTest, ::testing::ValuesIn(enabled_backends()),

@@ -114,6 +114,52 @@ void RenderTest::save(const grass_host::Image& image, const std::string& tag) co
     grass_host::write_png(std::string(dir) + "/" + name, image, nullptr);
 }
 
+RenderTest::CameraSteps RenderTest::step_camera(double ox, double oz, int steps, double step_m, double height,
+                                                uint32_t cells) {
+    constexpr float kFov = 50.0f;
+    CameraSteps out;
+    const double half = 0.5 * cells * 0.25; // the default cell size
+    grass_field_desc d = field_desc(cells);
+    d.base_transform[12] = ox;
+    d.base_transform[14] = oz;
+    const grass_field_id f = make_field(d);
+    uint8_t sky[3];
+    expected_sky(host->target(), sky);
+    for (int k = 0; k <= steps; ++k) {
+        const double x = ox + half + step_m * k;
+        const double eye[3] = {x, height, oz + half}, target[3] = {x, 0.0, oz + half + 0.0001};
+        out.frames.push_back(render(view(eye, target, kFov)));
+        out.shift.push_back(grass_centroid_x(out.frames.back(), sky) - grass_centroid_x(out.frames[0], sky));
+    }
+    EXPECT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
+    // A ground point moves step * f_px / depth; blades stand up to ~0.21 m (0.25 allowed), so
+    // the depth is between height - 0.25 and height.
+    const double f_px = 0.5 * host->target().height / std::tan(kFov * 3.141592653589793 / 360.0);
+    out.expected_lo = f_px / height * step_m;
+    out.expected_hi = f_px / (height - 0.25) * step_m;
+    double sxy = 0.0, sxx = 0.0;
+    for (int k = 0; k <= steps; ++k) {
+        sxy += k * out.shift[k];
+        sxx += double(k) * k;
+    }
+    out.slope = sxy / sxx;
+    out.px_per_step = std::fabs(out.slope);
+    return out;
+}
+
+double grass_centroid_x(const grass_host::Image& image, const uint8_t sky[3]) {
+    double sum_w = 0.0, sum_x = 0.0;
+    for (uint32_t y = 0; y < image.height; ++y) {
+        for (uint32_t x = 0; x < image.width; ++x) {
+            const uint8_t* p = image.pixel(x, y);
+            const double w = std::abs(p[0] - sky[0]) + std::abs(p[1] - sky[1]) + std::abs(p[2] - sky[2]);
+            sum_w += w;
+            sum_x += w * (x + 0.5);
+        }
+    }
+    return sum_w > 0.0 ? sum_x / sum_w : 0.0;
+}
+
 grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
                                        const double eye[3], const double look[3]) {
     grass_host::Image image;
@@ -183,18 +229,26 @@ double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_
     return n ? double(g) / double(n) : 0.0;
 }
 
-bool project_point(const double eye[3], const double target[3], float fovy_degrees, uint32_t width, uint32_t height,
-                   const double point[3], double* out_x, double* out_y) {
-    // The basis of grass_host::make_view: forward f, right r = f x up, up u = r x f.
-    double f[3] = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]};
+void look_at_basis(const double eye[3], const double target[3], double f[3], double r[3], double u[3]) {
+    for (int c = 0; c < 3; ++c) f[c] = target[c] - eye[c];
     const double fl = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    for (double& x : f) x /= fl;
+    for (int c = 0; c < 3; ++c) f[c] /= fl;
     const double up[3] = {0.0, 1.0, 0.0}, alt_up[3] = {0.0, 0.0, -1.0};
     const double* u0 = std::fabs(f[1]) > 0.9999 ? alt_up : up;
-    double r[3] = {f[1] * u0[2] - f[2] * u0[1], f[2] * u0[0] - f[0] * u0[2], f[0] * u0[1] - f[1] * u0[0]};
+    r[0] = f[1] * u0[2] - f[2] * u0[1];
+    r[1] = f[2] * u0[0] - f[0] * u0[2];
+    r[2] = f[0] * u0[1] - f[1] * u0[0];
     const double rl = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
-    for (double& x : r) x /= rl;
-    const double u[3] = {r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2], r[0] * f[1] - r[1] * f[0]};
+    for (int c = 0; c < 3; ++c) r[c] /= rl;
+    u[0] = r[1] * f[2] - r[2] * f[1];
+    u[1] = r[2] * f[0] - r[0] * f[2];
+    u[2] = r[0] * f[1] - r[1] * f[0];
+}
+
+bool project_point(const double eye[3], const double target[3], float fovy_degrees, uint32_t width, uint32_t height,
+                   const double point[3], double* out_x, double* out_y) {
+    double f[3], r[3], u[3];
+    look_at_basis(eye, target, f, r, u);
     const double d[3] = {point[0] - eye[0], point[1] - eye[1], point[2] - eye[2]};
     const double z = d[0] * f[0] + d[1] * f[1] + d[2] * f[2];
     if (z <= 0.0) return false;

@@ -39,6 +39,20 @@ protected:
     grass_host::Image render(const grass_view_desc& v, const grass_host::Occluder* occluder = nullptr);
     void save(const grass_host::Image& image, const std::string& tag) const;
 
+    // Sub-pixel camera motion (FarFromOriginTest, ExtremesTest): a field of cells x cells of
+    // the blade tier (8 x 8: 2 m x 2 m) with its corner at (ox, 0, oz), seen from `height` m
+    // above its centre looking straight down (50 degree fov); the camera moves `step_m` along
+    // +x, `steps` times. The field is destroyed afterwards.
+    struct CameraSteps {
+        std::vector<grass_host::Image> frames;      // steps + 1
+        std::vector<double> shift;                  // grass centroid (px) minus the first frame's
+        double slope = 0.0;                         // px per step, least-squares through zero (< 0: the
+                                                    // grass moves left as the camera moves right)
+        double px_per_step = 0.0;                   // |slope|
+        double expected_lo = 0.0, expected_hi = 0.0; // px per step for the ground .. the tallest blades
+    };
+    CameraSteps step_camera(double ox, double oz, int steps, double step_m, double height = 3.0, uint32_t cells = 8);
+
     std::unique_ptr<grass_host::Host> host;
     grass_context* ctx = nullptr;
     grass_patch_id patch{};
@@ -58,12 +72,16 @@ bool is_grass(const uint8_t* pixel, const uint8_t sky[3], int tolerance = 6);
 // any error or validation message; empty image then.
 grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
                                        const double eye[3], const double look[3]);
+// Centre of the grass along x, weighted by how far each pixel is from the sky colour, in pixels.
+double grass_centroid_x(const grass_host::Image& image, const uint8_t sky[3]);
 // Mean absolute difference of the RGB channels, in 8-bit levels.
 double mean_difference(const grass_host::Image& a, const grass_host::Image& b);
 // Where a world point appears in an image of `width` x `height` rendered through
 // view(eye, target, fovy_degrees) (grass_host::make_view's camera): pixel coordinates, x to
 // the right and y down from the top-left corner (a pixel's centre at +0.5). False when the
 // point is behind the camera.
+// The camera basis of grass_host::make_view: forward f, right r = f x up, up u = r x f (unit).
+void look_at_basis(const double eye[3], const double target[3], double f[3], double r[3], double u[3]);
 bool project_point(const double eye[3], const double target[3], float fovy_degrees, uint32_t width, uint32_t height,
                    const double point[3], double* out_x, double* out_y);
 // Share of pixels in [x0, x1) x [y0, y1) that are grass.

@@ -523,7 +523,8 @@ typedef struct grass_field_desc {
     grass_patch_id patch;        /* required */
     uint32_t cells_x, cells_z;   /* 1 .. 2^30 each; no default (0 is refused) */
     double cell_size;            /* metres per cell edge, 1e-4 .. 1e4; default 0.25 */
-    double base_transform[16];   /* column-major, rotation + translation only; default identity */
+    double base_transform[16];   /* column-major, rotation + translation only, the translation
+                                    within +-1e12 m (as the camera); default identity */
     float density;               /* uniform density 0..1 where no map is given, or the map's
                                     multiplier; default 1 */
     /* Optional, NULL = uniform density: a single-channel density map copied into this field
@@ -599,7 +600,7 @@ typedef enum grass_view_flags {
 typedef struct grass_view_desc {
     grass_struct_type type;      /* GRASS_STRUCT_TYPE_VIEW_DESC */
     const void* next;            /* NULL */
-    double camera_position[3];   /* world space, metres */
+    double camera_position[3];   /* world space, metres, within +-1e12 m each */
     /* World-to-eye matrix, column-major. Only its rotation is used: translation comes
      * from camera_position, so a host may pass a view built at the origin. */
     float view[16];
@@ -643,6 +644,15 @@ typedef struct grass_frame_stats {
 
 /* Stats of the last begun frame. */
 GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass_frame_stats* out_stats);
+
+/* GPU time of each tier kind (grass_tier_kind index) in the most recent frame whose timings are available, in milliseconds; *out_available = 0 where the device or driver has no timer queries (then the values are 0). */
+/* Timestamps are written around each kind's draws and read back without waiting: the
+ * figures lag the current frame by the frames in flight (GL: up to 4 frames). Also
+ * *out_available = 0 until a timed frame has finished on the GPU. Frames that draw
+ * nothing or draw GRASS_VIEW_FLAG_DEBUG_CELLS are not timed. Several draw calls of one
+ * frame (grass_gl_render, grass_vk_record) add up. GL: the host's GL context must be
+ * current; Vulkan: call grass_vk_prepare_frame every frame (it resets the queries). */
+GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, double out_ms[GRASS_TIER_KIND_COUNT], grass_bool* out_available);
 
 #ifdef __cplusplus
 } /* extern "C" */

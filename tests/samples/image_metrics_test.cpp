@@ -1,0 +1,122 @@
+// grass-bench's image metrics (samples/grass_bench/image_metrics.*): SSIM after Wang et al.
+// 2004 (Gaussian window 11, sigma 1.5, K1 0.01, K2 0.03, L 255) and PSNR.
+#include "image_metrics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace {
+
+using grass_bench::psnr_rgba;
+using grass_bench::ssim;
+using grass_bench::ssim_rgba;
+
+constexpr uint32_t kW = 64, kH = 48;
+
+// A textured grey test image: gradients and a checkerboard, 0..255.
+std::vector<double> pattern() {
+    std::vector<double> v(kW * kH);
+    for (uint32_t y = 0; y < kH; ++y)
+        for (uint32_t x = 0; x < kW; ++x)
+            v[y * kW + x] = 40.0 + 2.0 * x + 1.5 * y + (((x / 4) + (y / 4)) % 2 ? 50.0 : 0.0);
+    return v;
+}
+
+std::vector<double> with_noise(const std::vector<double>& v, double sigma, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> n(0.0, sigma);
+    std::vector<double> out(v);
+    for (double& x : out) x += n(rng);
+    return out;
+}
+
+std::vector<uint8_t> rgba_from(const std::vector<double>& grey) {
+    std::vector<uint8_t> out(grey.size() * 4);
+    for (size_t i = 0; i < grey.size(); ++i) {
+        const uint8_t g = uint8_t(std::lround(std::min(255.0, std::max(0.0, grey[i]))));
+        out[4 * i] = out[4 * i + 1] = out[4 * i + 2] = g;
+        out[4 * i + 3] = 255;
+    }
+    return out;
+}
+
+TEST(Ssim, IdenticalImagesScoreOne) {
+    const auto a = pattern();
+    EXPECT_NEAR(ssim(a.data(), a.data(), kW, kH), 1.0, 1e-12);
+    const auto rgba = rgba_from(a);
+    EXPECT_NEAR(ssim_rgba(rgba.data(), rgba.data(), kW, kH), 1.0, 1e-12);
+}
+
+TEST(Ssim, MoreNoiseScoresLower) {
+    const auto a = pattern();
+    const auto b1 = with_noise(a, 2.0, 1), b2 = with_noise(a, 8.0, 1), b3 = with_noise(a, 32.0, 1);
+    const double s1 = ssim(a.data(), b1.data(), kW, kH), s2 = ssim(a.data(), b2.data(), kW, kH),
+                 s3 = ssim(a.data(), b3.data(), kW, kH);
+    EXPECT_LT(s1, 1.0);
+    EXPECT_LT(s2, s1);
+    EXPECT_LT(s3, s2);
+    EXPECT_GT(s3, -1.0);
+}
+
+TEST(Ssim, BlurAndShiftScoreBelowOne) {
+    const auto a = pattern();
+    std::vector<double> blurred(a), shifted(a);
+    for (uint32_t y = 0; y < kH; ++y)
+        for (uint32_t x = 1; x + 1 < kW; ++x) {
+            blurred[y * kW + x] = (a[y * kW + x - 1] + a[y * kW + x] + a[y * kW + x + 1]) / 3.0;
+            shifted[y * kW + x] = a[y * kW + x - 1];
+        }
+    EXPECT_LT(ssim(a.data(), blurred.data(), kW, kH), 0.99);
+    EXPECT_LT(ssim(a.data(), shifted.data(), kW, kH), 0.9);
+}
+
+TEST(Ssim, IsSymmetric) {
+    const auto a = pattern(), b = with_noise(a, 10.0, 7);
+    EXPECT_DOUBLE_EQ(ssim(a.data(), b.data(), kW, kH), ssim(b.data(), a.data(), kW, kH));
+}
+
+// Flat images: no structure, so SSIM is the luminance term alone,
+// (2 a b + C1) / (a^2 + b^2 + C1) with C1 = (0.01 x 255)^2, in every window.
+TEST(Ssim, FlatImagesGiveTheLuminanceTerm) {
+    const double va = 100.0, vb = 140.0, c1 = 2.55 * 2.55;
+    const std::vector<double> a(kW * kH, va), b(kW * kH, vb);
+    EXPECT_NEAR(ssim(a.data(), b.data(), kW, kH), (2 * va * vb + c1) / (va * va + vb * vb + c1), 1e-9);
+}
+
+// An inverted pattern has negative structure correlation.
+TEST(Ssim, InvertedPatternScoresNegative) {
+    const auto a = pattern();
+    std::vector<double> inv(a);
+    for (double& x : inv) x = 255.0 - x;
+    EXPECT_LT(ssim(a.data(), inv.data(), kW, kH), 0.0);
+}
+
+TEST(Ssim, ImagesSmallerThanTheWindowUseOneWindow) {
+    const std::vector<double> a = {10, 20, 30, 40}, b = {10, 20, 30, 40}, c = {40, 30, 20, 10};
+    EXPECT_NEAR(ssim(a.data(), b.data(), 2, 2), 1.0, 1e-12);
+    EXPECT_LT(ssim(a.data(), c.data(), 2, 2), 0.0);
+}
+
+TEST(Psnr, KnownValues) {
+    const auto a = rgba_from(pattern());
+    EXPECT_TRUE(std::isinf(psnr_rgba(a.data(), a.data(), kW, kH)));
+    // Every channel of every pixel off by 4: MSE 16, PSNR = 10 log10(255^2 / 16).
+    auto b = a;
+    for (size_t i = 0; i < b.size(); ++i)
+        if (i % 4 != 3) b[i] = uint8_t(b[i] >= 128 ? b[i] - 4 : b[i] + 4);
+    EXPECT_NEAR(psnr_rgba(a.data(), b.data(), kW, kH), 10.0 * std::log10(255.0 * 255.0 / 16.0), 1e-9);
+    EXPECT_DOUBLE_EQ(psnr_rgba(a.data(), b.data(), kW, kH), psnr_rgba(b.data(), a.data(), kW, kH));
+}
+
+TEST(DifferenceImage, AmplifiesAndClamps) {
+    const std::vector<uint8_t> a = {10, 20, 30, 255, 0, 0, 0, 255}, b = {12, 20, 25, 0, 200, 0, 0, 255};
+    const auto d = grass_bench::difference_rgba(a.data(), b.data(), 2, 1, 4.0);
+    const std::vector<uint8_t> want = {8, 0, 20, 255, 255, 0, 0, 255};
+    EXPECT_EQ(d, want);
+}
+
+} // namespace
