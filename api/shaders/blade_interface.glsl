@@ -90,11 +90,11 @@ vec2 light_maps(vec2 cell_point) {
     return l;
 }
 
-// Alpha below which a fragment is dropped: with multisampling alpha-to-coverage turns alpha
-// into coverage; without it a fragment is all or nothing.
-float alpha_cut() {
-    return frame.params.w > 0.5 ? 0.02 : 0.5;
+// The target's samples per pixel (1 without multisampling; set by the backend).
+int sample_count() {
+    return max(int(frame.params.w + 0.5), 1);
 }
+
 
 // The window depth of a camera-relative world position, for gl_FragDepth (GL's default
 // depth range; Vulkan's clip z is already 0..1).

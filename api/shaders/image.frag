@@ -5,6 +5,7 @@
 #include "blade_interface.glsl"
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
+#include "sample_coverage.glsl"
 
 layout(location = 0) in vec3 v_position;
 layout(location = 1) in vec2 v_local;
@@ -39,25 +40,21 @@ void main() {
     float sin_elevation = max(abs(dot(normalize(-v_position), normalize(mat3(field.patch_to_world)[1]))), 0.05);
     float coverage = 1.0 - pow(max(1.0 - albedo.a * share, 0.0), 1.0 / sin_elevation);
     float alpha = coverage * opacity;
-    if (alpha < alpha_cut()) discard;
+    if (!write_coverage(alpha)) discard;
 
-    // The slice was seen from above: its normals face up and its heights are the tips'. From
-    // an elevation theta one sees more of the blades' sides, which face the viewer (the
-    // two-sided blades turn their lit side to the camera) and stand lower in the blade layer:
-    // blend both towards that view by 1 - sin(theta), so that far grass is lit like the
-    // blades it replaces.
-    vec3 up = normalize(mat3(field.patch_to_world)[1]);
-    vec3 to_camera = normalize(-v_position);
-    vec3 n = normalize(normal_height.xyz * 2.0 - 1.0);
-    n.xz *= s;
-    n = normalize(mat3(field.patch_to_world) * n);
-    vec3 side = to_camera - up * dot(to_camera, up);
-    side = dot(side, side) > 1e-8 ? normalize(side) : up;
-    n = normalize(mix(side, n, sin_elevation));
-    if (dot(n, to_camera) < 0.0) n = -n;
+    // The slice was seen from above: its heights are the tips'. From an elevation theta one
+    // sees more of the blades' sides, which stand lower in the blade layer: the ambient
+    // occlusion takes a height between the tips' and half the blade's by sin(theta). The
+    // normal keeps the up component of the blades' upper sides and the magnitudes of the
+    // two across it, whose four sign lobes light the blades that face the camera from every
+    // side (lighting.glsl).
+    vec3 n = normal_height.xyz * 2.0 - 1.0;
+    vec3 to_camera = world_to_patch_direction(normalize(-v_position));
+    vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
     float height = mix(0.5, normal_height.w, sin_elevation) * field.blade_params.w;
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
     // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
-    vec3 color = grass_lighting(modulate_color(albedo.rgb, cell_point), n, ao, light_maps(cell_point));
+    vec3 color = grass_lighting_lobes(modulate_color(albedo.rgb, cell_point), n, vec3(1.0, 0.0, 1.0), to_camera, sun, ao,
+                                      light_maps(cell_point));
     out_color = debug_thresholds() ? threshold_code(threshold) : vec4(debug_tint(color), alpha);
 }

@@ -55,15 +55,51 @@ vec4 threshold_code(float threshold) {
                 srgb_byte_to_linear(blue), 1.0);
 }
 
-// The light of blades represented by one normal of a slice texel whose vertical component
-// is |n.y| (api/src/slice_rasterizer.cpp): the camera-facing sides of two-sided blades face
-// up for some blades and down for the others, so both lobes are lit and averaged (lighting
-// an averaged normal would cancel them and lose the sun).
-// `light` as for grass_lighting.
-vec3 grass_lighting_two_lobes(vec3 albedo, vec3 n_up, vec3 n_down, float ambient_occlusion, vec2 light) {
-    float n_dot_l = 0.5 * (max(dot(n_up, frame.sun_direction.xyz), 0.0) + max(dot(n_down, frame.sun_direction.xyz), 0.0)) *
-                    sun_above_ground();
+// The light of the blades behind one slice texel. The texel keeps the mean normal of the
+// sides facing the slice's viewer, its component along the slice's view axis signed and the
+// two across it as magnitudes (api/src/slice_rasterizer.cpp): those lean one way for some
+// blades and the other way for the rest, and an averaged normal would cancel them (a high
+// sun would light a vertical slice's blades too little, a sun from the side not at all).
+// The four sign lobes of `n` across the `folded` axes (1 where folded, 0 on the view axis)
+// stand for those blades. Each lobe is lit on its side that faces the camera (two-sided
+// blades) and weighted by its area projected towards the camera, |n.v|, as blades are in
+// the picture. Everything in patch space: `n` the texel's mean normal (not unit), `to_camera` and `sun` unit directions
+// (patch_to_world is a rotation and a uniform scale). `light` as for grass_lighting.
+// E[max(x, 0)] for x normal with mean mu and deviation sigma: mu Phi(mu/sigma) +
+// sigma phi(mu/sigma) (the logistic approximation of Phi). The mean light of normals that
+// spread about their mean: where some blades turn to the sun and some away, the clamp of
+// the mean normal alone would be too dark.
+float soft_clamp(float mu, float sigma) {
+    if (sigma < 1e-3) return max(mu, 0.0);
+    float z = mu / sigma;
+    return mu / (1.0 + exp(-1.702 * z)) + sigma * 0.3989423 * exp(-0.5 * z * z);
+}
+
+vec3 grass_lighting_lobes(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera, vec3 sun, float ambient_occlusion,
+                          vec2 light) {
+    // The texel's mean normal: its length r < 1 says how much the blades' normals spread,
+    // 1 - r^2 their variance (Toksvig), about half of it along any one direction.
+    float r = length(n);
+    n = r > 1e-4 ? n / r : vec3(0.0, 1.0, 0.0);
+    float sigma = sqrt(max(1.0 - r * r, 0.0) * 0.5);
+    // The two folded axes as sign masks: a flips the first, b the second.
+    vec3 a = folded.x > 0.5 ? vec3(-1.0, 1.0, 1.0) : vec3(1.0, -1.0, 1.0);
+    vec3 b = folded.z > 0.5 ? vec3(1.0, 1.0, -1.0) : vec3(1.0, -1.0, 1.0);
+    float lit = 0.0, weight = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        vec3 lobe = n * ((k & 1) != 0 ? a : vec3(1.0)) * ((k & 2) != 0 ? b : vec3(1.0));
+        float v = dot(lobe, to_camera);
+        float w = abs(v) + 1e-3;
+        lit += w * soft_clamp((v < 0.0 ? -1.0 : 1.0) * dot(lobe, sun), sigma);
+        weight += w;
+    }
+    float n_dot_l = lit / weight * sun_above_ground();
     return albedo * (frame.ambient_color.rgb * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
+}
+
+// A world direction in patch space (the inverse of patch_to_world's rotation).
+vec3 world_to_patch_direction(vec3 d) {
+    return normalize(transpose(mat3(field.patch_to_world)) * d);
 }
 
 // The mirror bits of a cell (lemme eq. 6.4): white noise at the integer cell, bit 0 mirrors

@@ -7,6 +7,7 @@
 #include "blade_interface.glsl"
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
+#include "sample_coverage.glsl"
 
 layout(location = 0) in vec3 v_local;
 layout(location = 1) flat in vec3 v_camera_local;
@@ -20,6 +21,8 @@ const float kHuge = 1e30;
 
 // The ray and what it has gathered, shared by main() and composite().
 vec3 g_dir;
+vec2 g_abs_dir;    // |dir.x|, |dir.z|: the weights of the two slice families
+vec3 g_sun;        // the direction towards the sun in patch space
 vec3 g_size;
 mat3 g_to_world;
 vec3 g_origin;     // the instance corner relative to the camera
@@ -29,8 +32,12 @@ float g_pixel_angle;
 vec2 g_texels;
 vec3 g_color = vec3(0.0);
 float g_alpha = 0.0;
-vec3 g_depth_point;
-bool g_depth_set = false;
+// The fragment's depth: where the ray gathered half of its alpha, or 1/2 of it when it ends
+// more opaque than that. A partial ray (a tier's share in a transition zone, thin grass)
+// takes the depth of its own blades: where its coverage of the two tiers' samples overlaps
+// (sample_coverage.glsl), the nearer blades win, not whichever carrier's back face is nearer.
+vec3 g_depth_at[5];            // the first hit, then where g_alpha first reached 1/16, 1/8, 1/4, 1/2
+int g_depth_reached = 0;       // how many of them are set
 float g_depth_threshold = 0.0; // the threshold of the blade where the ray turns opaque
 
 // Composites the hit of the ray at `hit` (cuboid cells, distance t) with a slice: across x
@@ -67,34 +74,41 @@ void composite(vec3 h, vec3 hit, float t, int kind) {
                                      : tier_texel_share(length(world), thresholds, density);
     float a = albedo.a * share;
     if (a <= 0.0) return;
+    // Every blade is baked into one slice of each family (across x and across z), so a ray
+    // that crosses both would meet it twice and cover about 1 - (1 - c)^2 where the blades
+    // cover c. Each family alone represents all the blades along the ray; their
+    // transmittances are weighted by the share of the family's crossings, (1 - a)^w_x and
+    // (1 - a)^w_z with w_x + w_z = 1, so the ray meets every blade once in expectation. A
+    // ray parallel to one family crosses only the other, which gets the full weight.
+    // The horizontal slice holds the same blades seen from above: a steep ray that crosses
+    // few vertical slices needs it, a grazing one has met the blades in them already. It
+    // adds only the optical depth beyond what the ray has gathered (transmittance
+    // min(1, T_h / T_gathered)): a tilted blade seen from above and from the side counts
+    // once, by the larger of its two projections.
+    if (kind == 2) {
+        a = 1.0 - min(1.0, (1.0 - a) / max(1.0 - g_alpha, 1e-4));
+    } else {
+        float w = (kind == 0 ? g_abs_dir.x : g_abs_dir.y) / (g_abs_dir.x + g_abs_dir.y);
+        a = a >= 1.0 ? 1.0 : 1.0 - pow(1.0 - a, w);
+    }
+    if (a <= 0.0) return;
     // The design maps at the hit (lemme 6.4.2-6.4.3).
     vec3 color = modulate_color(albedo.rgb, cell_point);
     vec2 light = light_maps(cell_point);
     vec4 normal_height = textureLod(slice_normal, coord, lod);
     vec3 nrm = normal_height.xyz * 2.0 - 1.0;
     nrm.xz *= s;
-    vec3 lit;
-    float ao;
-    if (kind == 2) {
-        // The horizontal slice holds the blades' upper sides; lit like the vertical slices'
-        // blades (both lobes averaged), or it would outshine them wherever a ray reaches it,
-        // as in transition zones where each tier draws only part of the blades.
-        ao = blade_ambient_occlusion(density, normal_height.w * g_size.y, field.blade_params.x, field.blade_params.y);
-        lit = grass_lighting_two_lobes(color, normalize(g_to_world * nrm),
-                                       normalize(g_to_world * vec3(nrm.x, -nrm.y, nrm.z)), ao, light);
-    } else {
-        if (dot(nrm.xz, -g_dir.xz) < 0.0) nrm.xz = -nrm.xz; // the side facing the camera
-        vec3 n_up = normalize(g_to_world * nrm);
-        vec3 n_down = normalize(g_to_world * vec3(nrm.x, -nrm.y, nrm.z));
-        ao = blade_ambient_occlusion(density, h.y, field.blade_params.x, field.blade_params.y);
-        lit = grass_lighting_two_lobes(color, n_up, n_down, ao, light);
-    }
+    // The horizontal slice's heights are its blades' tips; a vertical slice's hit is at h.y.
+    float ao = blade_ambient_occlusion(density, kind == 2 ? normal_height.w * g_size.y : h.y, field.blade_params.x,
+                                       field.blade_params.y);
+    vec3 folded = kind == 0 ? vec3(0.0, 1.0, 1.0) : kind == 1 ? vec3(1.0, 1.0, 0.0) : vec3(1.0, 0.0, 1.0);
+    vec3 lit = grass_lighting_lobes(color, nrm, folded, -g_dir, g_sun, ao, light);
     g_color += (1.0 - g_alpha) * a * lit;
     g_alpha += (1.0 - g_alpha) * a;
-    if (!g_depth_set && g_alpha >= 0.5) {
-        g_depth_point = hit;
-        g_depth_threshold = threshold;
-        g_depth_set = true;
+    while (g_depth_reached < 5 && g_alpha >= (g_depth_reached == 0 ? 0.0 : 0.03125 * float(1 << g_depth_reached))) {
+        g_depth_at[g_depth_reached] = hit;
+        if (g_depth_reached == 4) g_depth_threshold = threshold;
+        ++g_depth_reached;
     }
 }
 
@@ -140,13 +154,15 @@ void main() {
     float tz = dir.z != 0.0 ? ((jz + 0.5) / n - v_camera_local.z) / dir.z : kHuge;
 
     g_dir = dir;
+    g_abs_dir = abs(dir.xz);
+    g_sun = world_to_patch_direction(frame.sun_direction.xyz);
     g_size = size;
     g_to_world = mat3(field.patch_to_world);
     g_origin = g_to_world * (-v_camera_local);
     g_n = n;
     g_texels = texels;
     g_pixel_angle = pixel_angle;
-    g_depth_point = v_local;
+    g_depth_at[0] = v_local;
     // The ray goes on past this carrier into the neighbouring cells (the same patch, mirrored
     // by their own cells' bits) until it leaves the blade layer: a ray that crosses several
     // carriers is then composited whole by the nearest of them, and no seam shows where each
@@ -218,7 +234,12 @@ void main() {
             composite(g, g, t_ground, 2);
         }
     }
-    if (g_alpha < alpha_cut()) discard;
+    if (!write_coverage(g_alpha)) discard;
     out_color = debug_thresholds() ? threshold_code(g_depth_threshold) : vec4(debug_tint(g_color / g_alpha), g_alpha);
-    gl_FragDepth = window_depth(g_to_world * g_depth_point + g_origin);
+    // The last level at or below half the ray's alpha (1/2 for an opaque ray).
+    int level = 0;
+    for (int i = 1; i < g_depth_reached; ++i) {
+        if (0.03125 * float(1 << i) <= (g_alpha >= 0.5 ? 0.5 : 0.5 * g_alpha)) level = i;
+    }
+    gl_FragDepth = window_depth(g_to_world * g_depth_at[level] + g_origin);
 }

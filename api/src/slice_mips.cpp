@@ -134,14 +134,13 @@ void build_coverage_mips(Vector<SliceImage>* levels, uint32_t level_count, HostA
         float* oc = &out->color[texel * 3];
         float* on = &out->normal[texel * 4];
         for (int c = 0; c < 3; ++c) oc[c] = static_cast<float>(color[c] / s_a); // eq. 4.10
-        const double* n = sum_a > 0.0 ? normal : plain;
-        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        for (int c = 0; c < 3; ++c) on[c] = len > 0.0 ? static_cast<float>(n[c] / len) : 0.0f;
+        // Mean normals stay unnormalised, so their length keeps the spread (slice_rasterizer.cpp).
+        const double footprint_texels = static_cast<double>(x1 - x0) * (y1 - y0);
+        for (int c = 0; c < 3; ++c) on[c] = static_cast<float>(sum_a > 0.0 ? normal[c] / sum_a : plain[c] / footprint_texels);
         on[3] = static_cast<float>(normal[3] / s_a);
         // The coverage curve is a share of the coverage: alpha-weighted like the colour.
-        const double footprint = static_cast<double>(x1 - x0) * (y1 - y0);
         for (int c = 0; c < 3; ++c) {
-            out->coverage[texel * 3 + c] = static_cast<float>(sum_a > 0.0 ? curve[c] / sum_a : plain_curve[c] / footprint);
+            out->coverage[texel * 3 + c] = static_cast<float>(sum_a > 0.0 ? curve[c] / sum_a : plain_curve[c] / footprint_texels);
         }
         // The value the coverage scale applies to: eq. 4.12 (max) or the footprint's mean.
         out->alpha[texel] = base == MipAlphaBase::kMax ? max_a : static_cast<float>(sum_a / ((x1 - x0) * (y1 - y0)));
@@ -204,13 +203,9 @@ void bleed_colours(Vector<SliceImage>* levels) {
                     level.color[i * 3 + c] =
                         static_cast<float>(a * level.color[i * 3 + c] + (1.0 - a) * next.color[j * 3 + c]); // eq. 4.16
                 }
-                double n[4];
-                for (int c = 0; c < 4; ++c) n[c] = a * level.normal[i * 4 + c] + (1.0 - a) * next.normal[j * 4 + c];
-                const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-                if (len > 0.0) {
-                    for (int c = 0; c < 3; ++c) level.normal[i * 4 + c] = static_cast<float>(n[c] / len);
+                for (int c = 0; c < 4; ++c) {
+                    level.normal[i * 4 + c] = static_cast<float>(a * level.normal[i * 4 + c] + (1.0 - a) * next.normal[j * 4 + c]);
                 }
-                level.normal[i * 4 + 3] = static_cast<float>(n[3]);
             }
         }
     }

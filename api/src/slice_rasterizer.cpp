@@ -91,11 +91,15 @@ void SliceRasterizer::draw_triangle(const RasterVertex& a, const RasterVertex& b
             }
             const float facing = n[0] * toward_viewer_[0] + n[1] * toward_viewer_[1] + n[2] * toward_viewer_[2];
             const float sign = facing < 0.0f ? -1.0f : 1.0f;
-            for (int ch = 0; ch < 3; ++ch) out[3 + ch] = sign * n[ch];
-            // Vertical slices: a blade's side facing the viewer has its up component up for
-            // some blades and down for others, which would cancel in the texel averages; the
-            // slice keeps |n.y| and the shader lights both lobes (volume.frag).
-            if (toward_viewer_[1] == 0.0f) out[4] = std::fabs(out[4]);
+            // The side facing the slice's viewer keeps its sign along the view axis. The two
+            // components across it lean one way for some blades and the other way for the
+            // others, and would cancel in the texel averages and the mips (a vertical slice
+            // would lose the blades' tilt to a high sun, and both would lose the light from
+            // the side); the slice keeps their magnitudes and the shaders light the four
+            // sign lobes (lighting.glsl, grass_lighting_lobes).
+            for (int ch = 0; ch < 3; ++ch) {
+                out[3 + ch] = toward_viewer_[ch] != 0.0f ? sign * n[ch] : std::fabs(n[ch]);
+            }
             out[6] = static_cast<float>(l0 * v[0]->height + l1 * v[1]->height + l2 * v[2]->height);
         }
     }
@@ -149,10 +153,10 @@ void SliceRasterizer::resolve(SliceImage* out) const {
             }
             const double inv = 1.0 / covered;
             for (int ch = 0; ch < 3; ++ch) color[ch] = static_cast<float>(sum[ch] * inv);
-            const double len = std::sqrt(sum[3] * sum[3] + sum[4] * sum[4] + sum[5] * sum[5]);
-            for (int ch = 0; ch < 3; ++ch) {
-                normal[ch] = len > 0.0 ? static_cast<float>(sum[3 + ch] / len) : toward_viewer_[ch];
-            }
+            // The mean of the unit normals, not renormalised: its length says how much they
+            // spread (1 when they agree), which the shaders turn into a softer light
+            // (lighting.glsl; Toksvig's mip-mapped normals). The mips average it on.
+            for (int ch = 0; ch < 3; ++ch) normal[ch] = static_cast<float>(sum[3 + ch] * inv);
             normal[3] = static_cast<float>(sum[6] * inv);
             uint32_t best = 0;
             for (uint32_t d = 1; d < distinct; ++d) {

@@ -6,6 +6,7 @@
 #include "gl_program.hpp"
 #include "gl_state_guard.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace grass {
@@ -39,8 +40,9 @@ const char* tier_kind_name(grass_tier_kind kind) {
 
 // Uniform buffer layout: Frame at offset 0, then one Field block per draw of any kind
 // (the debug view draws them all), each at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT. The Frame
-// block's params.w says whether the target is multisampled (alpha-to-coverage on).
-void GlBackend::upload_frame(bool multisampled) {
+// block's params.w holds the target's samples per pixel (coverage_mask() of
+// blade_interface.glsl).
+void GlBackend::upload_frame(uint32_t samples) {
     const FramePlan& plan = ctx_->plan;
     const size_t alignment = static_cast<size_t>(uniform_alignment_);
 
@@ -52,7 +54,7 @@ void GlBackend::upload_frame(bool multisampled) {
     }
     uniform_staging_.assign(size, 0);
     FrameUniforms frame = plan.frame;
-    frame.params[3] = multisampled ? 1.0f : 0.0f;
+    frame.params[3] = static_cast<float>(samples);
     std::memcpy(uniform_staging_.data(), &frame, sizeof(FrameUniforms));
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &plan.draws[i].uniforms,
@@ -61,7 +63,7 @@ void GlBackend::upload_frame(bool multisampled) {
     uniforms_.upload(gl_, uniform_staging_.data(), uniform_staging_.size());
     instances_.upload(gl_, plan.instances.data(), plan.instances.size() * sizeof(TierInstance));
     frame_uploaded_ = true;
-    frame_multisampled_ = multisampled;
+    frame_samples_ = samples;
 }
 
 void GlBackend::bind_field_maps(const FieldGpu& field) const {
@@ -204,11 +206,13 @@ grass_result GlBackend::render(const char* function) {
         const grass_result result = program(kind, draw.features, function, &unused);
         if (result != GRASS_SUCCESS) return result;
     }
-    GLint sample_buffers = 0;
+    GLint sample_buffers = 0, samples = 0;
     gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &sample_buffers); // of the bound draw framebuffer
+    gl_.GetIntegerv(GL_SAMPLES, &samples);
     const bool multisampled = sample_buffers > 0;
-    // Once per frame; again if a later call of the frame draws into a target of the other kind.
-    if (!frame_uploaded_ || frame_multisampled_ != multisampled) upload_frame(multisampled);
+    const uint32_t sample_count = multisampled ? static_cast<uint32_t>(std::max(samples, 1)) : 1u;
+    // Once per frame; again if a later call of the frame draws into a target of another kind.
+    if (!frame_uploaded_ || frame_samples_ != sample_count) upload_frame(sample_count);
 
     GlDrawStateGuard guard(gl_); // also makes texture unit 0 active
     gl_.Viewport(plan.viewport[0], plan.viewport[1], plan.viewport[2], plan.viewport[3]);
@@ -239,6 +243,8 @@ grass_result GlBackend::render(const char* function) {
         if (stamps) gl_.QueryCounter(stamps[0], GL_TIMESTAMP);
         draw_blades(plan);
         if (stamps) gl_.QueryCounter(stamps[1], GL_TIMESTAMP);
+        // The volume and image shaders write their coverage as a sample mask themselves.
+        gl_.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
         draw_sliced(plan, GRASS_TIER_VOLUME);
         if (stamps) gl_.QueryCounter(stamps[2], GL_TIMESTAMP);
         draw_sliced(plan, GRASS_TIER_IMAGE);

@@ -56,7 +56,7 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       descriptors_(fn_, device_.device, &context->host), frame_sets_(fn_, device_.device, &context->host),
       deferred_(memory_, descriptors_, &context->host, vk_desc.frames_in_flight), pipeline_(fn_, device_.device),
       ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment,
-            vk_desc.sample_count > 1),
+            vk_desc.sample_count),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
       fields_(StlAllocator<FieldGpu>(&context->host)), maps_(StlAllocator<MapGpu>(&context->host)), slices_(StlAllocator<SliceGpu>(&context->host)),
       draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),

@@ -21,8 +21,8 @@ uint32_t grown_capacity(uint32_t current, uint32_t needed) {
 } // namespace
 
 FrameRing::FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight,
-                     VkDeviceSize uniform_alignment, bool multisampled)
-    : memory_(memory), deferred_(deferred), frames_in_flight_(frames_in_flight), multisampled_(multisampled),
+                     VkDeviceSize uniform_alignment, uint32_t samples)
+    : memory_(memory), deferred_(deferred), frames_in_flight_(frames_in_flight), samples_(samples),
       frame_stride_(align_up(sizeof(FrameUniforms), uniform_alignment ? uniform_alignment : 1)),
       field_stride_(align_up(sizeof(FieldUniforms), uniform_alignment ? uniform_alignment : 1)) {}
 
@@ -98,7 +98,7 @@ bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool
     if (instances > 0) std::memcpy(s.instances.mapped, plan.instances.data(), instances * sizeof(TierInstance));
     auto* uniforms = static_cast<unsigned char*>(s.uniforms.mapped);
     FrameUniforms frame_block = plan.frame;
-    frame_block.params[3] = multisampled_ ? 1.0f : 0.0f; // alpha_cut() of blade_interface.glsl
+    frame_block.params[3] = static_cast<float>(samples_); // coverage_mask() of blade_interface.glsl
     std::memcpy(uniforms + frame_offset(), &frame_block, sizeof(FrameUniforms));
     for (uint32_t i = 0; i < draws; ++i) {
         std::memcpy(uniforms + field_offset(i), &plan.draws[i].uniforms, sizeof(FieldUniforms));

@@ -16,10 +16,10 @@ namespace grass::vk {
 
 class FrameRing {
 public:
-    // `multisampled`: the target has more than one sample; the Frame block says so
+    // `samples`: the target's samples per pixel; the Frame block says so
     // (FrameUniforms::params[3], which the core leaves 0).
     FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight, VkDeviceSize uniform_alignment,
-              bool multisampled);
+              uint32_t samples);
     ~FrameRing();
     FrameRing(const FrameRing&) = delete;
     FrameRing& operator=(const FrameRing&) = delete;
@@ -57,7 +57,7 @@ private:
     Memory& memory_;
     DeferredDeletion& deferred_;
     uint32_t frames_in_flight_;
-    bool multisampled_;
+    uint32_t samples_;
     VkDeviceSize frame_stride_;
     VkDeviceSize field_stride_;
     Slot slots_[kMaxFramesInFlight];

@@ -1,0 +1,31 @@
+// Coverage as a sample mask, for the fragment shaders of the volume and image tiers
+// (blade_interface.glsl first: it reads frame.params.w and field.tiers).
+// The volume and image tiers write their coverage as a sample mask instead of alpha to
+// coverage (whose dither the driver picks). alpha x samples is rounded to whole samples
+// by a 4 x 4 ordered dither per pixel, the same for every draw, so that
+// - carriers of one tier nest: a ray composited by the nearer carrier also covers the
+//   samples the farther carrier's own fragment covers (it goes on into the farther cell,
+//   volume.frag), and the union is the nearer one's, not their sum;
+// - the two tiers of a transition zone complement each other: even tiers fill the samples
+//   from the first, odd tiers from the last, so two tiers that each draw part of the
+//   blades cover the sum of their parts, where nested masks would give the larger.
+// Returns false when no sample is covered: the caller discards. Single-sampled targets
+// keep a fragment whose alpha reaches 1/2.
+bool write_coverage(float alpha) {
+    int n = sample_count();
+    if (n <= 1) {
+        gl_SampleMask[0] = -1;
+        return alpha >= 0.5;
+    }
+    const float bayer[16] = float[16](0.03125, 0.53125, 0.15625, 0.65625, 0.78125, 0.28125, 0.90625, 0.40625,
+                                      0.21875, 0.71875, 0.09375, 0.59375, 0.96875, 0.46875, 0.84375, 0.34375);
+    ivec2 p = ivec2(gl_FragCoord.xy) & 3;
+    bool from_last = (field.tiers.x & 1u) != 0u;
+    float dither = bayer[p.y * 4 + p.x];
+    int k = int(clamp(floor(alpha * float(n) + (from_last ? 1.0 - dither : dither)), 0.0, float(n)));
+    if (k == 0) return false;
+    uint mask = k >= 32 ? 0xffffffffu : (1u << uint(k)) - 1u;
+    if (from_last) mask <<= uint(n - k);
+    gl_SampleMask[0] = int(mask);
+    return true;
+}
