@@ -35,13 +35,21 @@ float tier_blade_opacity(float d, float threshold, float density) {
 
 // A slice texel holds several blades. Its coverage curve (api/src/baked_slices.hpp: the
 // threshold texture's gba) is the share of its coverage whose blades' thresholds are at most
-// x, piecewise linear through (0, 0), (1/4, g), (1/2, b), (3/4, a) and (1, 1).
+// x, known at x = 1/4 (g), 1/2 (b), 3/4 (a) and 1 (all). Between the knots the uncovered
+// share 1 - c falls geometrically in ln(1 - x), as it does where m blades with uniform
+// thresholds overlap a sample ((1 - x)^m): a texel of many blades is mostly covered at a
+// low density already, which a straight line from (0, 0) would miss (a volume tier with few,
+// thick slices drew thin grass too thin). The last quarter is linear (it ends at 1).
 float coverage_curve(vec4 t, float x) {
-    float u = clamp(x, 0.0, 1.0) * 4.0;
-    float i = min(floor(u), 3.0);
-    vec4 lo = vec4(0.0, t.g, t.b, t.a), hi = vec4(t.g, t.b, t.a, 1.0);
-    int k = int(i);
-    return mix(lo[k], hi[k], u - i);
+    x = clamp(x, 0.0, 1.0);
+    if (x >= 0.75) return mix(t.a, 1.0, (x - 0.75) * 4.0);
+    int k = min(int(x * 4.0), 2);
+    float lo = k == 0 ? 0.0 : (k == 1 ? t.g : t.b);
+    float hi = k == 0 ? t.g : (k == 1 ? t.b : t.a);
+    float x0 = float(k) * 0.25;
+    float s = log((1.0 - x) / (1.0 - x0)) / log((0.75 - x0) / (1.0 - x0)); // 0 at x0, 1 at x0 + 1/4
+    float uncovered_lo = max(1.0 - lo, 1e-3), uncovered_hi = clamp(1.0 - hi, 1e-3, uncovered_lo);
+    return 1.0 - uncovered_lo * pow(uncovered_hi / uncovered_lo, s);
 }
 
 // The share of a slice texel's coverage this draw's tier draws at distance d: that of the
