@@ -42,13 +42,21 @@ void main() {
     float alpha = coverage * opacity;
     if (!write_coverage(alpha)) discard;
 
-    // The slice was seen from above: its heights are the tips'. From an elevation theta one
-    // sees more of the blades' sides, which stand lower in the blade layer: the ambient
-    // occlusion takes a height between the tips' and half the blade's by sin(theta). The
-    // normal keeps the up component of the blades' upper sides and the magnitudes of the
-    // two across it, whose four sign lobes light the blades that face the camera from every
-    // side (lighting.glsl).
+    // The slice was seen from above: its heights are the tips' and its normals those of the
+    // blades' parts that face up, which fill a view from above. From an elevation theta one
+    // sees more of the blades' sides, which stand lower in the blade layer and face sideways:
+    // the ambient occlusion takes a height between the tips' and half the blade's by
+    // sin(theta), and the normals' up component is scaled by sin(theta) (their spread, the
+    // mean's length, kept). The four sign lobes of the two horizontal components light the
+    // blades that face the camera from every side (lighting.glsl). Far grass is then lit like
+    // the volume tier it follows (TierLightingTest: within 0.5 levels).
     vec3 n = normal_height.xyz * 2.0 - 1.0;
+    {
+        float r = length(n);
+        vec3 u = r > 1e-4 ? n / r : vec3(0.0, 1.0, 0.0);
+        u.y *= sin_elevation;
+        n = dot(u, u) > 1e-8 ? normalize(u) * r : vec3(0.0, r, 0.0);
+    }
     vec3 to_camera = world_to_patch_direction(normalize(-v_position));
     vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
     float height = mix(0.5, normal_height.w, sin_elevation) * field.blade_params.w;
