@@ -44,7 +44,9 @@ float g_depth_threshold = 0.0; // the threshold of the blade where the ray turns
 // (kind 0), across z (kind 1), or the horizontal slice near the ground (kind 2, the set's
 // last layer). Front to back (eq. 5.19-5.20). `h` is the hit in the slices' frame: its y is
 // the height above the terrain under it (eq. 6.18; the hit itself without a height map).
-void composite(vec3 h, vec3 hit, float t, int kind) {
+// `slab`: the share of the slice's slab (the 1/n around it that its texels stand for) that
+// the ray crosses above the ground; 1 but at the last crossings.
+void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     vec2 cell = floor(h.xz);
     vec2 global = vec2(v_cell.xy) + cell;
     if (any(lessThan(global, vec2(0.0))) || any(greaterThanEqual(global, g_field_cells - 0.5))) return;
@@ -88,7 +90,7 @@ void composite(vec3 h, vec3 hit, float t, int kind) {
     if (kind == 2) {
         a = 1.0 - min(1.0, (1.0 - a) / max(1.0 - g_alpha, 1e-4));
     } else {
-        float w = (kind == 0 ? g_abs_dir.x : g_abs_dir.y) / (g_abs_dir.x + g_abs_dir.y);
+        float w = slab * (kind == 0 ? g_abs_dir.x : g_abs_dir.y) / (g_abs_dir.x + g_abs_dir.y);
         a = a >= 1.0 ? 1.0 : 1.0 - pow(1.0 - a, w);
     }
     if (a <= 0.0) return;
@@ -181,17 +183,19 @@ void main() {
     // crossings (`above`, sampled at each crossing), found by the secant.
     float layer_y = 0.1 * size.y;
     float t_ground = !displaced && dir.y < 0.0 ? (layer_y - v_camera_local.y) / dir.y : kHuge;
+    float t_floor = !displaced && dir.y < 0.0 ? (box_min.y - v_camera_local.y) / dir.y : kHuge; // the ground
     bool ground_pending = displaced || (t_ground >= t_in && t_ground <= t_end);
     float prev_t = t_in, prev_above = -1.0;
     if (displaced) prev_above = start.y - terrain_height(vec2(v_cell.xy) + start.xz) - layer_y;
     // Every slice plane the ray crosses in the cuboid and the 4 cells beyond it is crossed
     // once: a fixed bound from the slice count and the macro-cell size, so a grazing ray
     // cannot loop for ever.
-    int max_steps = int(n) * int(v_cell.z + v_cell.w + 8u) + 2;
+    int max_steps = int(n) * int(v_cell.z + v_cell.w + 8u) + 4;
     for (int i = 0; i < max_steps; ++i) {
         bool across_x = tx < tz;
         float t = across_x ? tx : tz;
-        if (t > t_end) break;
+        float half_slab = 0.5 * (across_x ? step_x : step_z); // in t
+        if (t > t_end + (displaced ? 0.0 : half_slab)) break;
         if (across_x) tx += step_x; else tz += step_z;
         vec3 h = v_camera_local + dir * t;
         float ground = terrain_height(vec2(v_cell.xy) + h.xz); // eq. 6.16 (0 on a flat field)
@@ -200,7 +204,7 @@ void main() {
             if (ground_pending && prev_above >= 0.0 && above < 0.0) {
                 float tg = mix(prev_t, t, prev_above / (prev_above - above));
                 vec3 g = v_camera_local + dir * tg;
-                composite(vec3(g.x, layer_y, g.z), g, tg, 2);
+                composite(vec3(g.x, layer_y, g.z), g, tg, 2, 1.0);
                 ground_pending = false;
                 if (g_alpha >= 0.99) break;
             }
@@ -208,7 +212,7 @@ void main() {
             prev_above = above;
         } else if (ground_pending && t_ground <= t) {
             vec3 g = v_camera_local + dir * t_ground;
-            composite(g, g, t_ground, 2);
+            composite(g, g, t_ground, 2, 1.0);
             ground_pending = false;
             if (g_alpha >= 0.99) break;
         }
@@ -216,8 +220,18 @@ void main() {
         // hit below the terrain or above the blades there meets nothing.
         float y = h.y - ground;
         if (displaced && y < 0.0 && t > t_out) break; // under a neighbour's ground: hidden by it
-        if (t < t_in || y < 0.0 || y > size.y) continue;
-        composite(vec3(h.x, y, h.z), h, t, across_x ? 0 : 1);
+        // On a flat field each crossing stands for its slab, of which the ray crosses the share
+        // above the ground: the last crossing before the ground and the first one after it
+        // count in part (the latter looked up at the ground). Counted whole or not at all,
+        // the densest crossings, at the blades' roots, came and went with the slices' phase
+        // along the ray: moire over the field from above.
+        float slab = 1.0;
+        if (!displaced) {
+            slab = dir.y < 0.0 ? clamp((t_floor - (t - half_slab)) / (2.0 * half_slab), 0.0, 1.0) : 1.0;
+            y = max(y, 0.0);
+        }
+        if (t < t_in || y < 0.0 || y > size.y || slab <= 0.0) continue;
+        composite(vec3(h.x, y, h.z), h, t, across_x ? 0 : 1, slab);
         if (g_alpha >= 0.99) break;
     }
     if (ground_pending && g_alpha < 0.99) {
@@ -227,11 +241,11 @@ void main() {
             if (prev_above >= 0.0 && above < 0.0) {
                 float tg = mix(prev_t, t_end, prev_above / (prev_above - above));
                 vec3 g = v_camera_local + dir * tg;
-                composite(vec3(g.x, layer_y, g.z), g, tg, 2);
+                composite(vec3(g.x, layer_y, g.z), g, tg, 2, 1.0);
             }
         } else {
             vec3 g = v_camera_local + dir * t_ground;
-            composite(g, g, t_ground, 2);
+            composite(g, g, t_ground, 2, 1.0);
         }
     }
     if (!write_coverage(g_alpha)) discard;
