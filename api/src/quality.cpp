@@ -31,7 +31,7 @@ grass_quality_desc make(grass_bool everywhere, float distance, float transition,
 grass_result validate_quality(grass_context* ctx, const char* fn, const grass_quality_desc* q) {
     GRASS_TRY(GRASS_CHECK_DESC(ctx, fn, q, GRASS_STRUCT_TYPE_QUALITY_DESC));
     GRASS_TRY(check_range(ctx, fn, "quality->distance_scale", q->distance_scale, 0.1, 16.0));
-    GRASS_TRY(check_range(ctx, fn, "quality->transition_scale", q->transition_scale, 0.0, 1.2));
+    GRASS_TRY(check_range(ctx, fn, "quality->transition_scale", q->transition_scale, 0.0, double(1.2f)));
     GRASS_TRY(check_range(ctx, fn, "quality->slice_scale", q->slice_scale, 0.125, 8.0));
     GRASS_TRY(check_range(ctx, fn, "quality->macro_cell_scale", q->macro_cell_scale, 0.025, 4.0));
     GRASS_TRY(check_range(ctx, fn, "quality->blade_subdivisions", q->blade_subdivisions, 1, 32));

@@ -114,6 +114,23 @@ TEST_F(QualityTest, BadKnobsAreRefusedNamingThemAndNothingIsWritten) {
         EXPECT_EQ(grass_apply_quality(ctx, &q, 0.25, &pd, tiers, &nt, tests, &nk), GRASS_ERROR_INVALID_ARGUMENT) << c.name;
         EXPECT_NE(last_message().find(c.name), std::string::npos) << last_message();
     }
+    // The documented ends of every range are accepted, as floats (1.2f lies above 1.2).
+    grass_quality_desc ends = grass_quality_preset(GRASS_QUALITY_LOW);
+    ends.distance_scale = 16.0f;
+    ends.transition_scale = 1.2f;
+    ends.slice_scale = 8.0f;
+    ends.macro_cell_scale = 4.0f;
+    ends.blade_subdivisions = 32;
+    ends.blade_fraction = 1.0f;
+    EXPECT_EQ(grass_apply_quality(ctx, &ends, 0.25, &pd, tiers, &nt, tests, &nk), GRASS_SUCCESS) << last_message();
+    ends.distance_scale = 0.1f;
+    ends.transition_scale = 0.0f;
+    ends.slice_scale = 0.125f;
+    ends.macro_cell_scale = 0.025f;
+    ends.blade_subdivisions = 1;
+    EXPECT_EQ(grass_apply_quality(ctx, &ends, 0.25, &pd, tiers, &nt, tests, &nk), GRASS_SUCCESS) << last_message();
+    pd = grass_default_patch_desc();
+    nt = nk = 77;
     const grass_quality_desc unknown = grass_quality_preset(static_cast<grass_quality_level>(42));
     EXPECT_EQ(grass_apply_quality(ctx, &unknown, 0.25, &pd, tiers, &nt, tests, &nk), GRASS_ERROR_WRONG_STRUCT_TYPE);
     const grass_quality_desc ok = grass_quality_preset(GRASS_QUALITY_LOW);
