@@ -10,6 +10,14 @@
 // scene, camera and backend: SSIM on luma (Wang et al. 2004) and PSNR on the sRGB channels.
 // It writes each frame and an amplified difference image into --out, and a CSV, a Markdown
 // table (also printed) and an SVG plot of cost ratio against 1 - SSIM into --docs (or --out).
+//
+// --sweep renders, instead of the presets, DEFAULT with one knob of grass_quality_desc changed at a
+// time (a few values each around DEFAULT's, the others at DEFAULT's; see sweep_variants), after
+// the REFERENCE and DEFAULT presets themselves, for football / player unless --scene/--camera
+// say otherwise. Each row is measured as the presets' are (against the reference's image of the
+// same frame) and set against DEFAULT's row: cost / DEFAULT and the change of 1 - SSIM. It
+// writes sweep.csv and a Markdown table sweep.md (also printed) into --docs (or --out), leaving
+// bench.* alone.
 #include "image_metrics.hpp"
 #include "scene.hpp"
 
@@ -98,6 +106,7 @@ struct Options {
     std::string cache;         // slice cache; empty: <out>/cache
     uint32_t width = 320, height = 180;
     int frames = 3;
+    bool sweep = false;        // --sweep: one knob at a time from DEFAULT instead of the presets
 };
 
 void usage(FILE* f) {
@@ -107,6 +116,10 @@ void usage(FILE* f) {
                  "  --scene NAME           football, park or hills (repeatable; default all)\n"
                  "  --camera NAME          high, player, ant or grazing (repeatable; default all)\n"
                  "  --quick                one scene and one camera (football, player): a smoke run\n"
+                 "  --sweep                instead of the presets: DEFAULT with one knob at a time changed (a few\n"
+                 "                         values each around DEFAULT's), the REFERENCE and DEFAULT presets as\n"
+                 "                         yardsticks; writes sweep.csv and sweep.md (not bench.*). Without\n"
+                 "                         --scene/--camera: football, player\n"
                  "  --frames N             timed frames per preset after one warm-up (default 3; median)\n"
                  "  --size WxH             image size (default 320x180)\n"
                  "  --out DIR              every frame and difference image (default grass-bench-out)\n"
@@ -150,6 +163,7 @@ double median(std::vector<double> v) {
 
 struct Row {
     std::string scene, camera, backend, preset;
+    std::string knob, value; // --sweep: the knob changed from DEFAULT and its value ("preset", level name)
     int level = 0;
     uint32_t msaa = 1, blades = 0, subdivisions = 0;
     double field_ms = 0, frame_ms = 0, frame_min_ms = 0, ratio = 1, plan_ms = 0;
@@ -416,6 +430,378 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// A scene of kScenes reduced for the bench, and its cameras' eyes and targets (over its
+// terrain on a height map).
+struct PreparedScene {
+    const BenchScene* bench = nullptr;
+    grass_render::Scene scene;
+    double cams[4][2][3] = {};
+};
+
+bool prepare_scene(const Options& opt, const BenchScene& bs, PreparedScene* ps, std::string* error) {
+    ps->bench = &bs;
+    grass_render::Scene& scene = ps->scene;
+    if (!grass_render::load_scene(opt.scene_dir + "/" + bs.file, &scene, error)) return false;
+    // The bench's variant: a part of the field, its maps mapped onto that part.
+    const uint32_t full_x = scene.field.cells_x, full_z = scene.field.cells_z;
+    if (bs.first_x + bs.cells_x > full_x || bs.first_z + bs.cells_z > full_z) {
+        *error = std::string(bs.name) + ": the bench's part lies outside the field";
+        return false;
+    }
+    const double cs = scene.field.cell_size;
+    for (int c = 0; c < 4; ++c) {
+        const Camera& cam = bs.cameras[c];
+        const double lift = terrain_height(scene, full_x, full_z, cam.eye[0], cam.eye[2]);
+        for (int k = 0; k < 3; ++k) {
+            ps->cams[c][0][k] = cam.eye[k] + (k == 1 ? lift : 0.0);
+            ps->cams[c][1][k] = cam.target[k] + (k == 1 ? lift : 0.0);
+        }
+    }
+    scene.field.cells_x = bs.cells_x;
+    scene.field.cells_z = bs.cells_z;
+    scene.field.base_transform[12] += bs.first_x * cs;
+    scene.field.base_transform[14] += bs.first_z * cs;
+    double* m = scene.field.maps.cell_to_map;
+    m[0] = 1.0 / full_x, m[1] = 0.0, m[2] = 0.0, m[3] = 1.0 / full_z;
+    m[4] = double(bs.first_x) / full_x, m[5] = double(bs.first_z) / full_z;
+    scene.patch.blade_count = bs.blade_count;
+    if (bs.width_max > 0.0f) scene.patch.width_min = bs.width_min, scene.patch.width_max = bs.width_max;
+    // The hills scene draws no ground (the host's ground is flat); with the bench's
+    // sparse blades the sky showed through the grass, so the flat ground at y = 0, under
+    // the hills, shows as soil behind it instead.
+    scene.ground = true;
+    if (!scene.density_texels.empty()) {
+        *error = std::string(bs.name) + ": the bench reads density through the map stack only";
+        return false;
+    }
+    return true;
+}
+
+// One setup to render: a preset, or (--sweep) DEFAULT with one knob changed.
+struct Variant {
+    grass_quality_desc q;
+    int level = GRASS_QUALITY_DEFAULT; // the preset's level; a sweep's variants: DEFAULT's
+    std::string name;                  // Row::preset and the progress line
+    std::string file;                  // images: <scene>-<camera>-<backend>-<file>.png
+    std::string knob, value;           // the sweep's columns ("preset" and the level's name for a preset)
+};
+
+Variant preset_variant(int level) {
+    Variant v;
+    v.q = grass_quality_preset(grass_quality_level(level));
+    v.level = level;
+    v.name = v.file = v.value = kLevelNames[level];
+    v.knob = "preset";
+    return v;
+}
+
+// The reference's image and frame time per camera, of one scene and backend: what the
+// other frames of that scene and backend are measured against.
+struct Reference {
+    grass_host::Image image[4];
+    double ms[4] = {0, 0, 0, 0};
+};
+
+// Renders one variant of one scene on one backend: a host with the variant's sample count,
+// a context, a field made with grass_apply_quality, then every selected camera (one
+// warm-up and opt.frames timed frames each). The reference preset's frames go into *ref;
+// every other frame is measured against them. Appends a row per camera; a failed frame is
+// reported and sets *status to 1; false (with *error) when the run cannot go on.
+bool render_variant(const Options& opt, grass_backend backend, const PreparedScene& ps, const Variant& v, Reference* ref,
+                    std::chrono::steady_clock::time_point t_start, std::vector<Row>* rows, int* status,
+                    std::string* error) {
+    const char* be = backend == GRASS_BACKEND_GL ? "gl" : "vk";
+    const BenchScene& bs = *ps.bench;
+    const grass_render::Scene& scene = ps.scene;
+    const grass_quality_desc& q = v.q;
+    grass_host::TargetDesc td;
+    td.width = opt.width;
+    td.height = opt.height;
+    td.samples = q.msaa_samples;
+    td.ground = scene.ground;
+    std::memcpy(td.ground_color, scene.ground_color, sizeof(td.ground_color));
+    auto host = grass_host::Host::create(backend, td, error);
+    if (!host) {
+        *error = std::string("cannot create the ") + be + " host: " + *error;
+        return false;
+    }
+    grass_context_desc cd = grass_default_context_desc();
+    cd.log_fn = log_to_stderr;
+    cd.cache_directory = opt.cache.c_str();
+    grass_context* ctx = nullptr;
+    if (host->create_context(cd, &ctx) != GRASS_SUCCESS) {
+        *error = "cannot create a grass context";
+        return false;
+    }
+    grass_patch_desc pd = scene.patch;
+    std::vector<grass_tier_desc> tiers;
+    std::vector<grass_lod_test> tests;
+    if (!lod_setup(ctx, q, scene, &pd, &tiers, &tests, error)) {
+        grass_destroy_context(ctx);
+        return false;
+    }
+    const auto t_field = std::chrono::steady_clock::now();
+    grass_patch_id patch{};
+    grass_field_desc fd = scene.field;
+    grass_result r = grass_create_patch(ctx, &pd, &patch);
+    grass_map_id* slots[5] = {&fd.maps.density, &fd.maps.color, &fd.maps.ambient, &fd.maps.diffuse, &fd.maps.height};
+    for (int role = 0; role < 5 && r == GRASS_SUCCESS; ++role) {
+        const auto& mi = scene.maps[role];
+        if (mi.pixels.empty()) continue;
+        grass_map_desc md = grass_default_map_desc();
+        md.pixels = mi.pixels.data();
+        md.width = mi.width;
+        md.height = mi.height;
+        md.format = mi.format;
+        r = grass_create_map(ctx, &md, slots[role]);
+    }
+    fd.maps.height_scale = scene.height_scale;
+    fd.patch = patch;
+    fd.tiers = tiers.data();
+    fd.tier_count = uint32_t(tiers.size());
+    fd.lod_tests = tests.data();
+    fd.lod_test_count = uint32_t(tests.size());
+    grass_field_id field{};
+    if (r == GRASS_SUCCESS) r = grass_create_field(ctx, &fd, &field);
+    const double field_ms = seconds_since(t_field) * 1e3;
+    if (r != GRASS_SUCCESS) {
+        const std::string e = grass_last_error(ctx);
+        grass_destroy_context(ctx);
+        *error = std::string(bs.name) + ", " + v.name + ": the field was refused: " + e;
+        return false;
+    }
+    for (const int ci : opt.cameras) {
+        grass_view_desc view = grass_host::make_view(*host, ps.cams[ci][0], ps.cams[ci][1], scene.fov_degrees, 0.05f,
+                                                     scene.far_m);
+        std::memcpy(view.sun_direction, scene.sun_direction, sizeof(scene.sun_direction));
+        std::memcpy(view.sun_color, scene.sun_color, sizeof(scene.sun_color));
+        std::memcpy(view.ambient_color, scene.ambient_color, sizeof(scene.ambient_color));
+        Row row;
+        row.scene = bs.name;
+        row.camera = bs.cameras[ci].name;
+        row.backend = be;
+        row.preset = v.name;
+        row.knob = v.knob;
+        row.value = v.value;
+        row.level = v.level;
+        row.msaa = q.msaa_samples;
+        row.blades = pd.blade_count;
+        row.subdivisions = pd.subdivisions;
+        row.field_ms = field_ms;
+        grass_host::Image image;
+        std::vector<double> wall, plan, gpu[GRASS_TIER_KIND_COUNT];
+        grass_frame_stats stats{};
+        for (int f = 0; f <= opt.frames && r == GRASS_SUCCESS; ++f) {
+            grass_host::Image* dst = f == 0 ? &image : nullptr;
+            grass_host::Image scratch;
+            const auto f0 = std::chrono::steady_clock::now();
+            r = host->render(ctx, view, nullptr, dst ? dst : &scratch, error);
+            const double ms = seconds_since(f0) * 1e3;
+            grass_get_frame_stats(ctx, &stats);
+            if (f == 0) continue; // the warm-up: uploads, first use of the pipelines
+            wall.push_back(ms);
+            plan.push_back(stats.plan_ms);
+            double g[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
+            grass_bool available = 0;
+            if (grass_get_tier_gpu_ms(ctx, g, &available) == GRASS_SUCCESS && available) {
+                for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) gpu[t].push_back(g[t]);
+            }
+        }
+        if (r != GRASS_SUCCESS) {
+            std::fprintf(stderr, "grass-bench: %s %s %s %s: rendering failed: %s (%s) %s\n", bs.name, row.camera.c_str(), be,
+                         row.preset.c_str(), grass_result_string(r), grass_last_error(ctx), error->c_str());
+            *status = 1;
+            r = GRASS_SUCCESS;
+            continue;
+        }
+        row.frame_ms = median(wall);
+        row.frame_min_ms = *std::min_element(wall.begin(), wall.end());
+        row.plan_ms = median(plan);
+        row.gpu_available = !gpu[0].empty();
+        for (int t = 0; t < GRASS_TIER_KIND_COUNT && row.gpu_available; ++t) row.gpu_ms[t] = median(gpu[t]);
+        row.triangles = stats.triangles;
+        for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) row.instances[t] = stats.instances[t];
+        const std::string stem = opt.out + "/images/" + bs.name + "-" + row.camera + "-" + be + "-" + v.file;
+        if (!grass_host::write_png(stem + ".png", image, error)) {
+            grass_destroy_context(ctx);
+            return false;
+        }
+        if (v.level == GRASS_QUALITY_REFERENCE) {
+            ref->image[ci] = image;
+            ref->ms[ci] = row.frame_ms;
+        } else if (!ref->image[ci].rgba.empty()) {
+            const auto& reference = ref->image[ci];
+            row.ratio = row.frame_ms / ref->ms[ci];
+            row.ssim = grass_bench::ssim_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height);
+            row.psnr = grass_bench::psnr_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height);
+            grass_host::Image diff;
+            diff.width = image.width;
+            diff.height = image.height;
+            diff.rgba = grass_bench::difference_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height, 4.0);
+            if (!grass_host::write_png(stem + "-error.png", diff, error)) {
+                grass_destroy_context(ctx);
+                return false;
+            }
+        }
+        std::fprintf(stderr,
+                     "[%6.0f s] %-8s %-7s %s %-9s frame %8.1f ms (x%.3f) plan %6.2f ms  gpu %s  SSIM %.4f  PSNR %s  "
+                     "%llu triangles\n",
+                     seconds_since(t_start), bs.name, row.camera.c_str(), be, row.preset.c_str(), row.frame_ms, row.ratio,
+                     row.plan_ms, gpu_text(row, -1).c_str(), row.ssim, psnr_text(row.psnr).c_str(),
+                     static_cast<unsigned long long>(row.triangles));
+        rows->push_back(row);
+    }
+    if (host->validation_messages() != 0) {
+        std::fprintf(stderr, "grass-bench: %u validation messages:\n%s\n", host->validation_messages(),
+                     host->validation_log().c_str());
+        *status = 1;
+    }
+    grass_destroy_context(ctx);
+    return true;
+}
+
+// ---- --sweep: one knob at a time from DEFAULT ---------------------------------------------
+
+// The sweep's setups: the reference (what every frame is measured against), DEFAULT (the
+// baseline), then for each knob of grass_quality_desc but blades_everywhere a few values
+// around DEFAULT's within the knob's range (grass.h), the other knobs at DEFAULT's. A value
+// equal to DEFAULT's is left out (the baseline row has it).
+std::vector<Variant> sweep_variants() {
+    const grass_quality_desc base = grass_quality_preset(GRASS_QUALITY_DEFAULT);
+    std::vector<Variant> v = {preset_variant(GRASS_QUALITY_REFERENCE), preset_variant(GRASS_QUALITY_DEFAULT)};
+    struct Knob {
+        const char* name;
+        std::vector<double> values;
+        double current;
+        void (*set)(grass_quality_desc*, double);
+    };
+    const Knob knobs[] = {
+        {"distance_scale", {0.5, 2.0}, base.distance_scale, [](grass_quality_desc* q, double x) { q->distance_scale = float(x); }},
+        {"transition_scale", {0.0, 0.5, 1.2}, base.transition_scale,
+         [](grass_quality_desc* q, double x) { q->transition_scale = float(x); }},
+        {"slice_scale", {0.5, 2.0}, base.slice_scale, [](grass_quality_desc* q, double x) { q->slice_scale = float(x); }},
+        {"macro_cell_scale", {0.5, 2.0}, base.macro_cell_scale,
+         [](grass_quality_desc* q, double x) { q->macro_cell_scale = float(x); }},
+        {"blade_subdivisions", {2, 8}, double(base.blade_subdivisions),
+         [](grass_quality_desc* q, double x) { q->blade_subdivisions = uint32_t(x); }},
+        {"blade_fraction", {0.5, 0.75}, base.blade_fraction, [](grass_quality_desc* q, double x) { q->blade_fraction = float(x); }},
+        // Not 2: the headless hosts are meant for 1 or 4 samples (headless_host.hpp), and on
+        // llvmpipe a 2-sample target renders the very image of DEFAULT's 4.
+        {"msaa_samples", {1}, double(base.msaa_samples), [](grass_quality_desc* q, double x) { q->msaa_samples = uint32_t(x); }},
+    };
+    for (const Knob& k : knobs) {
+        for (const double x : k.values) {
+            if (float(x) == float(k.current)) continue;
+            Variant s;
+            s.q = base;
+            k.set(&s.q, x);
+            s.level = GRASS_QUALITY_DEFAULT;
+            s.knob = k.name;
+            s.value = fmt("%g", x);
+            s.name = s.knob + "=" + s.value;
+            s.file = "sweep-" + s.knob + "-" + s.value;
+            v.push_back(s);
+        }
+    }
+    return v;
+}
+
+// The DEFAULT row of r's backend, scene and camera; null when that frame failed.
+const Row* sweep_baseline(const std::vector<Row>& rows, const Row& r) {
+    for (const Row& b : rows) {
+        if (b.backend == r.backend && b.scene == r.scene && b.camera == r.camera && b.knob == "preset" &&
+            b.level == GRASS_QUALITY_DEFAULT)
+            return &b;
+    }
+    return nullptr;
+}
+
+std::string ratio_text(double num, const Row* base) {
+    return base && base->frame_ms > 0 ? fmt("%.3f", num / base->frame_ms) : "n/a";
+}
+// The change of 1 - SSIM against DEFAULT's: positive = further from the reference.
+std::string error_change_text(const Row& r, const Row* base) {
+    return base ? fmt("%+.4f", base->ssim - r.ssim) : "n/a";
+}
+
+std::string sweep_csv(const std::vector<Row>& rows, const Options& o) {
+    std::ostringstream s;
+    s << "backend,scene,camera,knob,value,width,height,msaa,blades_per_patch,subdivisions,frame_ms,frame_min_ms,"
+         "cost_vs_default,cost_vs_reference,plan_ms,gpu_ms,ssim,psnr_db,one_minus_ssim_change_vs_default,triangles,"
+         "geometry_instances,volume_instances,image_instances,field_create_ms\n";
+    for (const Row& r : rows) {
+        const Row* b = sweep_baseline(rows, r);
+        s << r.backend << ',' << r.scene << ',' << r.camera << ',' << r.knob << ',' << r.value << ',' << o.width << ','
+          << o.height << ',' << r.msaa << ',' << r.blades << ',' << r.subdivisions << ',' << fmt("%.2f", r.frame_ms) << ','
+          << fmt("%.2f", r.frame_min_ms) << ',' << ratio_text(r.frame_ms, b) << ',' << fmt("%.4f", r.ratio) << ','
+          << fmt("%.3f", r.plan_ms) << ',' << gpu_text(r, -1) << ',' << fmt("%.5f", r.ssim) << ',' << psnr_text(r.psnr)
+          << ',' << error_change_text(r, b) << ',' << r.triangles << ',' << r.instances[0] << ',' << r.instances[1] << ','
+          << r.instances[2] << ',' << fmt("%.1f", r.field_ms) << '\n';
+    }
+    return s.str();
+}
+
+std::string sweep_markdown(const std::vector<Row>& rows, const Options& o, double total_s) {
+    const grass_quality_desc d = grass_quality_preset(GRASS_QUALITY_DEFAULT);
+    std::ostringstream s;
+    s << "# grass-bench sweep: one knob at a time from DEFAULT\n\n"
+      << "Written by `grass-bench --sweep` (samples/grass_bench; docs/quality.md explains the knobs and the "
+         "measures). Each row is DEFAULT with one knob of `grass_quality_desc` changed (the others at DEFAULT's: "
+         "distance_scale "
+      << fmt("%g", d.distance_scale) << ", transition_scale " << fmt("%g", d.transition_scale) << ", slice_scale "
+      << fmt("%g", d.slice_scale) << ", macro_cell_scale " << fmt("%g", d.macro_cell_scale) << ", blade_subdivisions "
+      << d.blade_subdivisions << ", blade_fraction " << fmt("%g", d.blade_fraction) << ", msaa_samples " << d.msaa_samples
+      << "); the rows `preset` are the REFERENCE and DEFAULT presets themselves. " << o.width << " x " << o.height
+      << " pixels, each row on a target with its own MSAA sample count; frame = wall time of a rendered and read-back "
+         "frame, median of "
+      << o.frames << " after one warm-up; cost = frame / DEFAULT's or the reference's frame (same backend, scene, "
+         "camera); SSIM (luma) and PSNR (sRGB RGB) against the reference's image of the same frame; change of 1 - SSIM "
+         "= (1 - SSIM) - DEFAULT's (positive: further from the reference). The run took "
+      << fmt("%.0f", total_s) << " s.\n\n";
+    // With more than one frame per backend, knob and value: the median over scenes and cameras.
+    std::vector<std::string> frames;
+    for (const Row& r : rows) {
+        const std::string f = r.scene + "/" + r.camera;
+        if (std::find(frames.begin(), frames.end(), f) == frames.end()) frames.push_back(f);
+    }
+    if (frames.size() > 1) {
+        s << "## Summary: median over scenes and cameras\n\n"
+          << "| backend | knob | value | cost / default | cost / reference | SSIM | change of 1 - SSIM vs default |\n"
+          << "|---|---|---|---|---|---|---|\n";
+        std::vector<std::string> done;
+        for (const Row& r : rows) {
+            const std::string key = r.backend + "/" + r.knob + "/" + r.value;
+            if (std::find(done.begin(), done.end(), key) != done.end()) continue;
+            done.push_back(key);
+            std::vector<double> to_default, to_reference, ssim, change;
+            for (const Row& x : rows) {
+                if (x.backend != r.backend || x.knob != r.knob || x.value != r.value) continue;
+                const Row* b = sweep_baseline(rows, x);
+                if (b && b->frame_ms > 0) to_default.push_back(x.frame_ms / b->frame_ms);
+                if (b) change.push_back(b->ssim - x.ssim);
+                to_reference.push_back(x.ratio);
+                ssim.push_back(x.ssim);
+            }
+            s << "| " << r.backend << " | " << r.knob << " | " << r.value << " | "
+              << (to_default.empty() ? "n/a" : fmt("%.3f", median(to_default))) << " | " << fmt("%.3f", median(to_reference))
+              << " | " << fmt("%.4f", median(ssim)) << " | " << (change.empty() ? "n/a" : fmt("%+.4f", median(change)))
+              << " |\n";
+        }
+        s << "\n## Every frame\n\n";
+    }
+    s << "| backend | scene | camera | knob | value | frame (ms) | cost / default | cost / reference | SSIM | PSNR (dB) | "
+         "change of 1 - SSIM vs default | triangles |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows) {
+        const Row* b = sweep_baseline(rows, r);
+        s << "| " << r.backend << " | " << r.scene << " | " << r.camera << " | " << r.knob << " | " << r.value << " | "
+          << fmt("%.1f", r.frame_ms) << " | " << ratio_text(r.frame_ms, b) << " | " << fmt("%.3f", r.ratio) << " | "
+          << fmt("%.4f", r.ssim) << " | " << psnr_text(r.psnr) << " | " << error_change_text(r, b) << " | " << r.triangles
+          << " |\n";
+    }
+    return s.str();
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -455,6 +841,8 @@ int main(int argc, char** argv) {
             opt.cameras.push_back(found);
         } else if (a == "--quick") {
             quick = true;
+        } else if (a == "--sweep") {
+            opt.sweep = true;
         } else if (a == "--frames") {
             opt.frames = std::atoi(value().c_str());
             if (opt.frames < 1 || opt.frames > 100) return fail("--frames must be 1..100");
@@ -475,7 +863,7 @@ int main(int argc, char** argv) {
             return fail("unknown option " + a);
         }
     }
-    if (quick) {
+    if (quick || opt.sweep) {
         if (opt.scenes.empty()) opt.scenes = {0};
         if (opt.cameras.empty()) opt.cameras = {1};
     }
@@ -488,185 +876,51 @@ int main(int argc, char** argv) {
         return fail("cannot create " + opt.out + ", " + opt.cache + " or " + docs);
     }
 
+    std::vector<Variant> variants;
+    if (opt.sweep) {
+        variants = sweep_variants();
+    } else {
+        for (int level = 0; level < GRASS_QUALITY_LEVEL_COUNT; ++level) variants.push_back(preset_variant(level));
+    }
     const auto t_start = std::chrono::steady_clock::now();
     std::vector<Row> rows;
     int status = 0;
     for (const grass_backend backend : opt.backends) {
-        const char* be = backend == GRASS_BACKEND_GL ? "gl" : "vk";
         for (const int si : opt.scenes) {
-            const BenchScene& bs = kScenes[si];
-            grass_render::Scene scene;
+            PreparedScene ps;
             std::string error;
-            if (!grass_render::load_scene(opt.scene_dir + "/" + bs.file, &scene, &error)) return fail(error);
-            // The bench's variant: a part of the field, its maps mapped onto that part.
-            const uint32_t full_x = scene.field.cells_x, full_z = scene.field.cells_z;
-            if (bs.first_x + bs.cells_x > full_x || bs.first_z + bs.cells_z > full_z)
-                return fail(std::string(bs.name) + ": the bench's part lies outside the field");
-            const double cs = scene.field.cell_size;
-            double cams[4][2][3];
-            for (int c = 0; c < 4; ++c) {
-                const Camera& cam = bs.cameras[c];
-                const double lift = terrain_height(scene, full_x, full_z, cam.eye[0], cam.eye[2]);
-                for (int k = 0; k < 3; ++k) {
-                    cams[c][0][k] = cam.eye[k] + (k == 1 ? lift : 0.0);
-                    cams[c][1][k] = cam.target[k] + (k == 1 ? lift : 0.0);
-                }
-            }
-            scene.field.cells_x = bs.cells_x;
-            scene.field.cells_z = bs.cells_z;
-            scene.field.base_transform[12] += bs.first_x * cs;
-            scene.field.base_transform[14] += bs.first_z * cs;
-            double* m = scene.field.maps.cell_to_map;
-            m[0] = 1.0 / full_x, m[1] = 0.0, m[2] = 0.0, m[3] = 1.0 / full_z;
-            m[4] = double(bs.first_x) / full_x, m[5] = double(bs.first_z) / full_z;
-            scene.patch.blade_count = bs.blade_count;
-            if (bs.width_max > 0.0f) scene.patch.width_min = bs.width_min, scene.patch.width_max = bs.width_max;
-            // The hills scene draws no ground (the host's ground is flat); with the bench's
-            // sparse blades the sky showed through the grass, so the flat ground at y = 0, under
-            // the hills, shows as soil behind it instead.
-            scene.ground = true;
-            if (!scene.density_texels.empty()) return fail(std::string(bs.name) + ": the bench reads density through the map stack only");
-
-            std::vector<grass_host::Image> reference(4);
-            std::vector<double> reference_ms(4, 0.0);
-            for (int level = 0; level < GRASS_QUALITY_LEVEL_COUNT; ++level) {
-                const grass_quality_desc q = grass_quality_preset(grass_quality_level(level));
-                grass_host::TargetDesc td;
-                td.width = opt.width;
-                td.height = opt.height;
-                td.samples = q.msaa_samples;
-                td.ground = scene.ground;
-                std::memcpy(td.ground_color, scene.ground_color, sizeof(td.ground_color));
-                auto host = grass_host::Host::create(backend, td, &error);
-                if (!host) return fail(std::string("cannot create the ") + be + " host: " + error);
-                grass_context_desc cd = grass_default_context_desc();
-                cd.log_fn = log_to_stderr;
-                cd.cache_directory = opt.cache.c_str();
-                grass_context* ctx = nullptr;
-                if (host->create_context(cd, &ctx) != GRASS_SUCCESS) return fail("cannot create a grass context");
-                grass_patch_desc pd = scene.patch;
-                std::vector<grass_tier_desc> tiers;
-                std::vector<grass_lod_test> tests;
-                if (!lod_setup(ctx, q, scene, &pd, &tiers, &tests, &error)) return fail(error);
-                const auto t_field = std::chrono::steady_clock::now();
-                grass_patch_id patch{};
-                grass_field_desc fd = scene.field;
-                grass_result r = grass_create_patch(ctx, &pd, &patch);
-                grass_map_id* slots[5] = {&fd.maps.density, &fd.maps.color, &fd.maps.ambient, &fd.maps.diffuse, &fd.maps.height};
-                for (int role = 0; role < 5 && r == GRASS_SUCCESS; ++role) {
-                    const auto& mi = scene.maps[role];
-                    if (mi.pixels.empty()) continue;
-                    grass_map_desc md = grass_default_map_desc();
-                    md.pixels = mi.pixels.data();
-                    md.width = mi.width;
-                    md.height = mi.height;
-                    md.format = mi.format;
-                    r = grass_create_map(ctx, &md, slots[role]);
-                }
-                fd.maps.height_scale = scene.height_scale;
-                fd.patch = patch;
-                fd.tiers = tiers.data();
-                fd.tier_count = uint32_t(tiers.size());
-                fd.lod_tests = tests.data();
-                fd.lod_test_count = uint32_t(tests.size());
-                grass_field_id field{};
-                if (r == GRASS_SUCCESS) r = grass_create_field(ctx, &fd, &field);
-                const double field_ms = seconds_since(t_field) * 1e3;
-                if (r != GRASS_SUCCESS) {
-                    const std::string e = grass_last_error(ctx);
-                    grass_destroy_context(ctx);
-                    return fail(std::string(bs.name) + ", " + kLevelNames[level] + ": the field was refused: " + e);
-                }
-                for (const int ci : opt.cameras) {
-                    grass_view_desc view = grass_host::make_view(*host, cams[ci][0], cams[ci][1], scene.fov_degrees, 0.05f,
-                                                                 scene.far_m);
-                    std::memcpy(view.sun_direction, scene.sun_direction, sizeof(scene.sun_direction));
-                    std::memcpy(view.sun_color, scene.sun_color, sizeof(scene.sun_color));
-                    std::memcpy(view.ambient_color, scene.ambient_color, sizeof(scene.ambient_color));
-                    Row row;
-                    row.scene = bs.name;
-                    row.camera = bs.cameras[ci].name;
-                    row.backend = be;
-                    row.preset = kLevelNames[level];
-                    row.level = level;
-                    row.msaa = q.msaa_samples;
-                    row.blades = pd.blade_count;
-                    row.subdivisions = pd.subdivisions;
-                    row.field_ms = field_ms;
-                    grass_host::Image image;
-                    std::vector<double> wall, plan, gpu[GRASS_TIER_KIND_COUNT];
-                    grass_frame_stats stats{};
-                    for (int f = 0; f <= opt.frames && r == GRASS_SUCCESS; ++f) {
-                        grass_host::Image* dst = f == 0 ? &image : nullptr;
-                        grass_host::Image scratch;
-                        const auto f0 = std::chrono::steady_clock::now();
-                        r = host->render(ctx, view, nullptr, dst ? dst : &scratch, &error);
-                        const double ms = seconds_since(f0) * 1e3;
-                        grass_get_frame_stats(ctx, &stats);
-                        if (f == 0) continue; // the warm-up: uploads, first use of the pipelines
-                        wall.push_back(ms);
-                        plan.push_back(stats.plan_ms);
-                        double g[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
-                        grass_bool available = 0;
-                        if (grass_get_tier_gpu_ms(ctx, g, &available) == GRASS_SUCCESS && available) {
-                            for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) gpu[t].push_back(g[t]);
-                        }
-                    }
-                    if (r != GRASS_SUCCESS) {
-                        std::fprintf(stderr, "grass-bench: %s %s %s %s: rendering failed: %s (%s) %s\n", bs.name, row.camera.c_str(),
-                                     be, row.preset.c_str(), grass_result_string(r), grass_last_error(ctx), error.c_str());
-                        status = 1;
-                        r = GRASS_SUCCESS;
-                        continue;
-                    }
-                    row.frame_ms = median(wall);
-                    row.frame_min_ms = *std::min_element(wall.begin(), wall.end());
-                    row.plan_ms = median(plan);
-                    row.gpu_available = !gpu[0].empty();
-                    for (int t = 0; t < GRASS_TIER_KIND_COUNT && row.gpu_available; ++t) row.gpu_ms[t] = median(gpu[t]);
-                    row.triangles = stats.triangles;
-                    for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) row.instances[t] = stats.instances[t];
-                    const std::string stem = opt.out + "/images/" + bs.name + "-" + row.camera + "-" + be + "-" + row.preset;
-                    if (!grass_host::write_png(stem + ".png", image, &error)) return fail(error);
-                    if (level == GRASS_QUALITY_REFERENCE) {
-                        reference[ci] = image;
-                        reference_ms[ci] = row.frame_ms;
-                    } else if (!reference[ci].rgba.empty()) {
-                        const auto& ref = reference[ci];
-                        row.ratio = row.frame_ms / reference_ms[ci];
-                        row.ssim = grass_bench::ssim_rgba(ref.rgba.data(), image.rgba.data(), image.width, image.height);
-                        row.psnr = grass_bench::psnr_rgba(ref.rgba.data(), image.rgba.data(), image.width, image.height);
-                        grass_host::Image diff;
-                        diff.width = image.width;
-                        diff.height = image.height;
-                        diff.rgba = grass_bench::difference_rgba(ref.rgba.data(), image.rgba.data(), image.width, image.height, 4.0);
-                        if (!grass_host::write_png(stem + "-error.png", diff, &error)) return fail(error);
-                    }
-                    std::fprintf(stderr,
-                                 "[%6.0f s] %-8s %-7s %s %-9s frame %8.1f ms (x%.3f) plan %6.2f ms  gpu %s  SSIM %.4f  PSNR %s  "
-                                 "%llu triangles\n",
-                                 seconds_since(t_start), bs.name, row.camera.c_str(), be, row.preset.c_str(), row.frame_ms,
-                                 row.ratio, row.plan_ms, gpu_text(row, -1).c_str(), row.ssim, psnr_text(row.psnr).c_str(),
-                                 static_cast<unsigned long long>(row.triangles));
-                    rows.push_back(row);
-                }
-                if (host->validation_messages() != 0) {
-                    std::fprintf(stderr, "grass-bench: %u validation messages:\n%s\n", host->validation_messages(),
-                                 host->validation_log().c_str());
-                    status = 1;
-                }
-                grass_destroy_context(ctx);
+            if (!prepare_scene(opt, kScenes[si], &ps, &error)) return fail(error);
+            // The reference comes first (variants[0]): every other frame is measured against it.
+            Reference reference;
+            for (const Variant& v : variants) {
+                if (!render_variant(opt, backend, ps, v, &reference, t_start, &rows, &status, &error)) return fail(error);
             }
         }
     }
-    // Rows in the order scene, camera, backend, preset.
-    auto rank = [&](const Row& r) {
+    auto scene_rank = [&](const Row& r) {
         int s = 0, c = 0;
         for (int k = 0; k < kSceneCount; ++k)
             if (r.scene == kScenes[k].name) s = k;
         for (int k = 0; k < 4; ++k)
             if (r.camera == kScenes[0].cameras[k].name) c = k;
-        return ((s * 4 + c) * 2 + (r.backend == "vk")) * GRASS_QUALITY_LEVEL_COUNT + r.level;
+        return s * 4 + c;
+    };
+    if (opt.sweep) {
+        // Rows in the order backend, scene, camera, then the sweep's order.
+        auto rank = [&](const Row& r) { return (r.backend == "vk") * kSceneCount * 4 + scene_rank(r); };
+        std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) { return rank(a) < rank(b); });
+        const double total_s = seconds_since(t_start);
+        const std::string md = sweep_markdown(rows, opt, total_s);
+        if (!write_text(docs + "/sweep.csv", sweep_csv(rows, opt)) || !write_text(docs + "/sweep.md", md)) {
+            return fail("cannot write into " + docs);
+        }
+        std::printf("%s\ngrass-bench: %zu frames in %.0f s; wrote %s/sweep.csv, sweep.md; images in %s/images\n", md.c_str(),
+                    rows.size(), total_s, docs.c_str(), opt.out.c_str());
+        return status;
+    }
+    // Rows in the order scene, camera, backend, preset.
+    auto rank = [&](const Row& r) {
+        return (scene_rank(r) * 2 + (r.backend == "vk")) * GRASS_QUALITY_LEVEL_COUNT + r.level;
     };
     std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) { return rank(a) < rank(b); });
     const double total_s = seconds_since(t_start);
