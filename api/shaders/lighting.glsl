@@ -65,14 +65,13 @@ vec4 threshold_code(float threshold) {
 // blades) and weighted by its area projected towards the camera, |n.v|, as blades are in
 // the picture. Everything in patch space: `n` the texel's mean normal (not unit), `to_camera` and `sun` unit directions
 // (patch_to_world is a rotation and a uniform scale). `light` as for grass_lighting.
-// E[max(x, 0)] for x normal with mean mu and deviation sigma: mu Phi(mu/sigma) +
-// sigma phi(mu/sigma) (the logistic approximation of Phi). The mean light of normals that
-// spread about their mean: where some blades turn to the sun and some away, the clamp of
-// the mean normal alone would be too dark.
+// E[max(x, 0)] for x normal with mean mu and deviation sigma, mu Phi(mu/sigma) +
+// sigma phi(mu/sigma), approximated by (mu + sqrt(mu^2 + (2/pi) sigma^2)) / 2: exact at
+// mu = 0 and in both tails, within 0.071 sigma between, and one square root instead of two
+// exponentials. The mean light of normals that spread about their mean: where some blades
+// turn to the sun and some away, the clamp of the mean normal alone would be too dark.
 float soft_clamp(float mu, float sigma) {
-    if (sigma < 1e-3) return max(mu, 0.0);
-    float z = mu / sigma;
-    return mu / (1.0 + exp(-1.702 * z)) + sigma * 0.3989423 * exp(-0.5 * z * z);
+    return 0.5 * (mu + sqrt(mu * mu + 0.63662 * sigma * sigma));
 }
 
 vec3 grass_lighting_lobes(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera, vec3 sun, float ambient_occlusion,

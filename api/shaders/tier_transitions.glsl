@@ -47,7 +47,9 @@ float coverage_curve(vec4 t, float x) {
     float lo = k == 0 ? 0.0 : (k == 1 ? t.g : t.b);
     float hi = k == 0 ? t.g : (k == 1 ? t.b : t.a);
     float x0 = float(k) * 0.25;
-    float s = log((1.0 - x) / (1.0 - x0)) / log((0.75 - x0) / (1.0 - x0)); // 0 at x0, 1 at x0 + 1/4
+    // 0 at x0, 1 at x0 + 1/4: ln((1 - x) / (1 - x0)) / ln((3/4 - x0) / (1 - x0)).
+    const float inv_log_step[3] = float[3](1.0 / log(0.75), 1.0 / log(0.5 / 0.75), 1.0 / log(0.25 / 0.5));
+    float s = log((1.0 - x) / (1.0 - x0)) * inv_log_step[k];
     float uncovered_lo = max(1.0 - lo, 1e-3), uncovered_hi = clamp(1.0 - hi, 1e-3, uncovered_lo);
     return 1.0 - uncovered_lo * pow(uncovered_hi / uncovered_lo, s);
 }
@@ -69,5 +71,7 @@ float tier_texel_share(float d, vec4 t, float density) {
     }
     if (!(total > 0.0) || !(self_w > 0.0)) return 0.0;
     float a = lo / total, b = (lo + self_w) / total;
-    return max(coverage_curve(t, b * density) - coverage_curve(t, a * density), 0.0);
+    // Outside transition zones a tier's interval starts at 0, where the curve is 0.
+    float below = a > 0.0 ? coverage_curve(t, a * density) : 0.0;
+    return max(coverage_curve(t, b * density) - below, 0.0);
 }
