@@ -541,7 +541,8 @@ typedef struct grass_field_desc {
     /* Where two tiers share a transition zone each blade is drawn by one of them; a blade
      * crossing over fades out of one tier as it fades into the other over this half-width,
      * in density-threshold units (lemme2012 eq. 5.26). Needs a multisampled target to show
-     * (alpha-to-coverage); without one the crossover is exact. 0..0.25; default 0.05. */
+     * (alpha-to-coverage for blades, sample masks for the slices); without one the
+     * crossover is exact. 0..0.25; default 0.05. */
     float transition_window;
     /* The design maps: density (multiplying the density above and density_map), colour,
      * ambient, diffuse light and height. Default: none. */

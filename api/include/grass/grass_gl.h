@@ -33,8 +33,10 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
                                                const grass_gl_desc* gl_desc, grass_context** out_context);
 
 /* Draws the begun frame into the currently bound draw framebuffer. Depth test on (the
- * host's depth buffer is shared), depth writes on, no blending; alpha-to-coverage when
- * the framebuffer is multisampled. Saved and restored: program, vertex array, array and
+ * host's depth buffer is shared), depth writes on, no blending; when the framebuffer is
+ * multisampled, the blades use alpha-to-coverage and the volume and image tiers write
+ * their coverage as sample masks (the sample count is read from the bound framebuffer).
+ * Saved and restored: program, vertex array, array and
  * element buffers, uniform buffer bindings 0-1 (and the generic uniform buffer binding),
  * texture unit 0 (its 2D texture: the density map) and its sampler, texture units 3-5
  * (their 2D array textures) and their samplers, texture units 6-9 (their 2D textures: the
