@@ -57,9 +57,10 @@ void main() {
     v_threshold = a_threshold;
     v_light = light_maps(cell_point);
     gl_Position = frame.view_projection * vec4(position, 1.0);
-    // Without multisampling a blade is all or nothing: drawn by the tier where its opacity
-    // is at least one half (exactly one tier). With it, alpha-to-coverage fades it.
-    if (opacity <= 0.0 || (frame.params.w < 0.5 && opacity < 0.5)) {
+    // Without multisampling a blade is all or nothing (tier_blade_opacity: drawn by the tier
+    // where its opacity is at least one half, exactly one tier). With it, alpha-to-coverage
+    // fades it.
+    if (opacity <= 0.0) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // outside the clip volume: the blade is culled
     }
 }

@@ -24,7 +24,7 @@ layout(std140, binding = 0) uniform Frame {
     vec4 sun_color;        // rgb
     vec4 ambient_color;    // rgb
     vec4 params;           // x: time in seconds, y: view flags, z: +1 depth 0 near, -1 reversed depth,
-                           // w: 1 when the target is multisampled (set by the backend)
+                           // w: the target's samples per pixel (set by the backend)
 } frame;
 
 layout(std140, binding = 1) uniform Field {

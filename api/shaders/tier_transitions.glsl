@@ -30,7 +30,10 @@ float tier_blade_opacity(float d, float threshold, float density) {
     float window = field.transition.x;
     float enter = a <= 0.0 ? 1.0 : (window > 0.0 ? smoothstep(a - window, a + window, r) : (r > a ? 1.0 : 0.0));
     float leave = b >= 1.0 ? 1.0 : (window > 0.0 ? 1.0 - smoothstep(b - window, b + window, r) : (r <= b ? 1.0 : 0.0));
-    return enter * leave;
+    // Without multisampling a blade is all or nothing: the tier where its opacity is at
+    // least one half draws it, so the crossover is exact (grass_field_desc.transition_window).
+    float opacity = enter * leave;
+    return sample_count() <= 1 ? step(0.5, opacity) : opacity;
 }
 
 // A slice texel holds several blades. Its coverage curve (api/src/baked_slices.hpp: the

@@ -40,7 +40,7 @@ const char* tier_kind_name(grass_tier_kind kind) {
 
 // Uniform buffer layout: Frame at offset 0, then one Field block per draw of any kind
 // (the debug view draws them all), each at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT. The Frame
-// block's params.w holds the target's samples per pixel (coverage_mask() of
+// block's params.w holds the target's samples per pixel (sample_count() of
 // blade_interface.glsl).
 void GlBackend::upload_frame(uint32_t samples) {
     const FramePlan& plan = ctx_->plan;

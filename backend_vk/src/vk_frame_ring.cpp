@@ -98,7 +98,7 @@ bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool
     if (instances > 0) std::memcpy(s.instances.mapped, plan.instances.data(), instances * sizeof(TierInstance));
     auto* uniforms = static_cast<unsigned char*>(s.uniforms.mapped);
     FrameUniforms frame_block = plan.frame;
-    frame_block.params[3] = static_cast<float>(samples_); // coverage_mask() of blade_interface.glsl
+    frame_block.params[3] = static_cast<float>(samples_); // sample_count() of blade_interface.glsl
     std::memcpy(uniforms + frame_offset(), &frame_block, sizeof(FrameUniforms));
     for (uint32_t i = 0; i < draws; ++i) {
         std::memcpy(uniforms + field_offset(i), &plan.draws[i].uniforms, sizeof(FieldUniforms));

@@ -14,13 +14,18 @@ namespace {
 
 class TransitionTest : public RenderTest {};
 
+// On a single-sampled target the partition is exact with or without the crossover window
+// (a blade is drawn by the tier where its opacity is at least one half): the test runs with
+// no window and with a wide one.
 TEST_P(TransitionTest, EachBladeIsDrawnByOneTierAndNoneIsLost) {
+  for (const float window : {0.0f, 0.1f}) {
+    SCOPED_TRACE("transition_window " + std::to_string(window));
     grass_host::TargetDesc t;
     t.width = t.height = 256;
     t.samples = 1; // one fragment per pixel: its code is read back exactly
     start(t);
     // Geometry to 100 m fading out from 60 m; volume from 60 m fading in to 100 m: at 80 m
-    // each weighs one half. No smoothing window (single-sampled: exact partition anyway).
+    // each weighs one half.
     grass_tier_desc tiers[2] = {{GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 8}};
     grass_lod_test tests[3] = {};
     tests[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
@@ -40,7 +45,7 @@ TEST_P(TransitionTest, EachBladeIsDrawnByOneTierAndNoneIsLost) {
     d.tier_count = 2;
     d.lod_tests = tests;
     d.lod_test_count = 3;
-    d.transition_window = 0.0f;
+    d.transition_window = window;
     make_field(d);
     // 80 m away, looking down at 15 degrees; a narrow lens frames the cells.
     const double elevation = 15.0 * 3.141592653589793 / 180.0;
@@ -49,7 +54,7 @@ TEST_P(TransitionTest, EachBladeIsDrawnByOneTierAndNoneIsLost) {
     grass_view_desc v = view(eye, target, 0.9f);
     v.flags = GRASS_VIEW_FLAG_DEBUG_THRESHOLDS;
     const auto image = render(v);
-    save(image, backend_name(GetParam()));
+    save(image, backend_name(GetParam()) + "_" + std::to_string(window));
 
     uint8_t sky[3];
     expected_sky(host->target(), sky);
@@ -84,8 +89,9 @@ TEST_P(TransitionTest, EachBladeIsDrawnByOneTierAndNoneIsLost) {
         for (int code : tier) seen = seen || (code / 65535.0 > lo && code / 65535.0 <= hi);
         EXPECT_TRUE(seen) << "no blade with a threshold in (" << lo << ", " << hi << "]";
     }
-    std::printf("[ measured ] %s: %zu thresholds drawn as blades (%d px), %zu in the volume (%d px)\n",
-                backend_name(GetParam()).c_str(), by_blades.size(), pixels[0], by_volume.size(), pixels[1]);
+    std::printf("[ measured ] %s, window %.2f: %zu thresholds drawn as blades (%d px), %zu in the volume (%d px)\n",
+                backend_name(GetParam()).c_str(), window, by_blades.size(), pixels[0], by_volume.size(), pixels[1]);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, TransitionTest, ::testing::ValuesIn(enabled_backends()),
