@@ -1,8 +1,8 @@
 // The C entry points of grass_gl.h.
 #include "gl_backend.hpp"
 
-#include <context.hpp>
-#include "raw_enum.hpp"
+#include "context/context.hpp"
+#include "context/raw_enum.hpp"
 
 #include <grass/grass_gl.h>
 

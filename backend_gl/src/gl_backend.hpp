@@ -8,8 +8,8 @@
 #include "gl_program.hpp"
 #include "gl_stream_buffer.hpp"
 
-#include <backend.hpp>
-#include <context.hpp>
+#include "context/backend.hpp"
+#include "context/context.hpp"
 
 #include <cstdint>
 

@@ -5,8 +5,8 @@
 
 #include "gl_functions.hpp"
 
-#include <backend.hpp>
-#include <context.hpp>
+#include "context/backend.hpp"
+#include "context/context.hpp"
 
 namespace grass {
 

@@ -1,10 +1,10 @@
 // The public entry points of grass_vk.h: argument checks, then the Vulkan backend.
-#include "context.hpp"
+#include "context/context.hpp"
 #include "vk_backend.hpp"
 #include "vk_desc_check.hpp"
 #include "vk_device.hpp"
 
-#include "raw_enum.hpp"
+#include "context/raw_enum.hpp"
 
 #include <grass/grass_vk.h>
 

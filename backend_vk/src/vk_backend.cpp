@@ -1,6 +1,6 @@
 #include "vk_backend.hpp"
 
-#include "context.hpp"
+#include "context/context.hpp"
 
 #include <algorithm>
 #include <cstring>

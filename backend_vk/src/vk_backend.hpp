@@ -4,7 +4,7 @@
 // It never submits, waits on a queue, or begins a render pass.
 #pragma once
 
-#include "backend.hpp"
+#include "context/backend.hpp"
 #include "vk_debug_view.hpp"
 #include "vk_deferred.hpp"
 #include "vk_descriptors.hpp"

@@ -4,7 +4,7 @@
 // frame N - frames_in_flight has finished on the GPU.
 #pragma once
 
-#include "allocator.hpp"
+#include "context/allocator.hpp"
 #include "vk_descriptors.hpp"
 #include "vk_memory.hpp"
 

@@ -1,8 +1,8 @@
 #include "vk_desc_check.hpp"
 
-#include "raw_enum.hpp"
+#include "context/raw_enum.hpp"
 
-#include "context.hpp"
+#include "context/context.hpp"
 
 namespace grass::vk {
 

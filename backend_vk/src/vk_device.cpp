@@ -1,7 +1,7 @@
 #include "vk_device.hpp"
 
-#include "allocator.hpp"
-#include "context.hpp"
+#include "context/allocator.hpp"
+#include "context/context.hpp"
 
 #include <cstring>
 

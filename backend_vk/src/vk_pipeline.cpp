@@ -3,8 +3,8 @@
 #include "vk_debug_view.hpp"
 #include "vk_slice_pipelines.hpp"
 
-#include "frame_plan.hpp"
-#include "patch_data.hpp"
+#include "plan/frame_plan.hpp"
+#include "patch/patch_data.hpp"
 
 #include <cstddef>
 

@@ -1,6 +1,6 @@
 #include "vk_result.hpp"
 
-#include "context.hpp"
+#include "context/context.hpp"
 
 #include <cstdio>
 

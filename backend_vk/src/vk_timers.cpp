@@ -6,7 +6,7 @@
 // read at the latest when its frame slot comes round again (the host has waited for it).
 #include "vk_backend.hpp"
 
-#include "context.hpp"
+#include "context/context.hpp"
 
 namespace grass::vk {
 

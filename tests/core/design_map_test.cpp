@@ -3,7 +3,7 @@
 #include "core_fixture.hpp"
 #include "view_helpers.hpp"
 
-#include "context.hpp"
+#include "context/context.hpp"
 
 #include <cmath>
 #include <cstring>

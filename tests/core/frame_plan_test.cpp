@@ -2,8 +2,8 @@
 #include "core_fixture.hpp"
 #include "view_helpers.hpp"
 
-#include "context.hpp"
-#include "mirror_tiling.hpp"
+#include "context/context.hpp"
+#include "patch/mirror_tiling.hpp"
 
 #include <cmath>
 #include <set>

@@ -1,7 +1,7 @@
 // The min/max pyramid bounds every value bilinear sampling can return over a rectangle, and
 // stays exact after a region update.
-#include "design_map.hpp"
-#include "map_pyramid.hpp"
+#include "maps/design_map.hpp"
+#include "maps/map_pyramid.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The patch generator (lemme2012 4.1): determinism, blade shape and layout.
 #include "core_fixture.hpp"
 
-#include "context.hpp"
+#include "context/context.hpp"
 
 #include <algorithm>
 #include <cmath>

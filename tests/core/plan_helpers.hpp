@@ -1,7 +1,7 @@
 // Reading a frame plan in tests: instances per tier, cells they cover.
 #pragma once
 
-#include "context.hpp"
+#include "context/context.hpp"
 
 #include <cmath>
 #include <vector>

@@ -3,7 +3,7 @@
 #include "plan_helpers.hpp"
 #include "view_helpers.hpp"
 
-#include "quadtree.hpp"
+#include "plan/quadtree.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -2,13 +2,13 @@
 // mips, colour bleeding, tiling, thresholds, and the disk cache.
 #include "core_fixture.hpp"
 
-#include "bake_cache.hpp"
-#include "baked_slices.hpp"
-#include "context.hpp"
-#include "random.hpp"
-#include "slice_baker.hpp"
-#include "slice_mips.hpp"
-#include "slice_set_hash.hpp"
+#include "bake/bake_cache.hpp"
+#include "bake/baked_slices.hpp"
+#include "context/context.hpp"
+#include "patch/random.hpp"
+#include "bake/slice_baker.hpp"
+#include "bake/slice_mips.hpp"
+#include "bake/slice_set_hash.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -2,7 +2,7 @@
 // clustered mode clustered in space.
 #include "core_fixture.hpp"
 
-#include "context.hpp"
+#include "context/context.hpp"
 
 #include <algorithm>
 #include <cmath>

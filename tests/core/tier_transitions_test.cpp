@@ -1,7 +1,7 @@
 // Seamless transitions (boulanger2006 3.4, lemme2012 5.4): over any distance, every blade's
 // opacities over all tiers sum to one; without the smoothing window exactly one tier
 // draws it; in Lemme's setup no blade is lost anywhere from the camera to infinity.
-#include "tier_transitions.hpp"
+#include "plan/tier_transitions.hpp"
 
 #include <grass/grass.h>
 

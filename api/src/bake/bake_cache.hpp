@@ -1,0 +1,36 @@
+// Disk cache of baked slices (boulanger2006 3.3: "stored on the hard drive"), so that a host
+// starts fast the second time. One file per key, "grass-slices-<key as 16 hex digits>.bin",
+// in a directory the host chooses: a fixed little-endian header (magic, format version,
+// key, sizes, content hash, and a hash of the header itself) and the color, normal and threshold arrays. A load verifies
+// everything before it trusts anything; a store writes a temporary file and renames it.
+#pragma once
+
+#include "context/allocator.hpp"
+#include "bake/baked_slices.hpp"
+
+#include <grass/grass.h>
+
+#include <cstdint>
+
+namespace grass {
+
+// Bump when the baked bytes for the same key would change: the file layout, the baker, the
+// mip filters, or the patch generator (the key hashes the desc, not the generated patch).
+constexpr uint32_t kBakeFormatVersion = 5; // 4: the threshold channel holds the coverage curve; 5: folded normals
+
+// FNV-1a 64 over the format version, every field of the desc but type and next (by value,
+// little-endian, floats by their bits), and the bake parameters (0 sizes replaced by the
+// defaults of slice_baker.hpp, so both spellings share a file).
+uint64_t bake_key(const grass_patch_desc& desc, uint32_t slices_per_axis, uint32_t width, uint32_t height);
+
+// Reads the file of `key` in `directory` into `out`. Returns false, leaving `out` empty of
+// data, when the file is missing, unreadable, truncated, too long, or any header field, the
+// key or the recomputed content hash does not match.
+bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceSet* out);
+
+// Writes `set` as the file of `key` in `directory` (which must exist), atomically: a
+// temporary file in the same directory renamed over the final name. Returns false on any
+// I/O error (and removes the temporary file).
+bool store_baked(const char* directory, uint64_t key, const SliceSet& set);
+
+} // namespace grass

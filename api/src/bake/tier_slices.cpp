@@ -1,0 +1,53 @@
+#include "bake/tier_slices.hpp"
+
+#include "bake/bake_cache.hpp"
+#include "patch/random.hpp"
+#include "bake/slice_baker.hpp"
+#include "context/validate.hpp"
+
+namespace grass {
+
+namespace {
+
+grass_result ensure_slices(grass_context* ctx, const char* fn, uint32_t patch_slot, uint32_t slices_per_axis) {
+    Patch* patch = ctx->patches.get(patch_slot);
+    if (patch->slices(slices_per_axis)) return GRASS_SUCCESS; // baked and uploaded before
+    SliceSet* set = ctx->host.create<SliceSet>(&ctx->host);
+    try {
+        const char* dir = ctx->desc.cache_directory;
+        // The desc and the generated patch itself: a change of the generator never serves
+        // stale slices from the cache.
+        const uint64_t key = fnv1a64(&patch->data.content_hash, sizeof(uint64_t), bake_key(patch->desc, slices_per_axis, 0, 0));
+        if (!dir || !load_baked(dir, key, &ctx->host, set)) {
+            bake_slices(patch->data, slices_per_axis, 0, 0, &ctx->host, set);
+            if (dir && !store_baked(dir, key, *set)) {
+                ctx->warn(GRASS_MSG_BACKEND_CALL_FAILED, "%s: could not write baked slices to the cache directory %s",
+                          fn, dir);
+            }
+        }
+        const grass_result r = ctx->backend->upload_slices(patch_slot, *set);
+        if (r != GRASS_SUCCESS) {
+            ctx->host.destroy(set);
+            return r;
+        }
+        patch->slice_sets.push_back(set);
+    } catch (...) {
+        ctx->host.destroy(set);
+        throw;
+    }
+    return GRASS_SUCCESS;
+}
+
+} // namespace
+
+grass_result prepare_tier_slices(grass_context* ctx, const char* fn, uint32_t patch_slot, const LodSetup& lod) {
+    if (ctx->backend->kind() == GRASS_BACKEND_NONE) return GRASS_SUCCESS; // nothing draws: nothing to bake
+    for (uint32_t t = 0; t < lod.tier_count; ++t) {
+        const grass_tier_desc& tier = lod.tiers[t];
+        if (tier.kind == GRASS_TIER_VOLUME) GRASS_TRY(ensure_slices(ctx, fn, patch_slot, tier.slices));
+        if (tier.kind == GRASS_TIER_IMAGE) GRASS_TRY(ensure_slices(ctx, fn, patch_slot, 0));
+    }
+    return GRASS_SUCCESS;
+}
+
+} // namespace grass

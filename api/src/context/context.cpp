@@ -1,0 +1,222 @@
+// The context: creation with a version check, logging, memory stats, destruction.
+#include "context/context.hpp"
+
+#include "context/raw_enum.hpp"
+#include "context/validate.hpp"
+
+#include <cstdio>
+#include <cstring>
+
+grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
+    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), maps(&host), plan(&host), plan_scratch(&host),
+      cache_directory(grass::StlAllocator<char>(&host)) {
+    if (d.cache_directory && d.cache_directory[0]) {
+        cache_directory.assign(d.cache_directory, d.cache_directory + std::strlen(d.cache_directory) + 1);
+        desc.cache_directory = cache_directory.data();
+    } else {
+        desc.cache_directory = nullptr;
+    }
+}
+
+grass_context::~grass_context() {
+    // Fields and patches release their GPU resources before the backend goes.
+    for (uint32_t slot = 0; slot < fields.capacity(); ++slot) {
+        if (fields.get(slot) && backend) backend->release_field(slot);
+    }
+    for (uint32_t slot = 0; slot < maps.capacity(); ++slot) {
+        if (maps.get(slot) && backend) backend->release_map(slot);
+    }
+    for (uint32_t slot = 0; slot < patches.capacity(); ++slot) {
+        if (patches.get(slot) && backend) backend->release_patch(slot);
+    }
+    host.destroy(backend);
+    backend = nullptr;
+}
+
+void grass_context::emit(grass_log_level level, grass_message_id id, const char* format, va_list args) {
+    char message[sizeof(last_error)];
+    std::vsnprintf(message, sizeof(message), format, args);
+    if (level == GRASS_LOG_ERROR) std::memcpy(last_error, message, sizeof(last_error));
+    if (desc.log_fn && level <= desc.log_level) desc.log_fn(desc.log_user_data, level, id, message);
+}
+
+grass_result grass_context::fail(grass_result result, grass_message_id id, const char* format, ...) {
+    va_list args;
+    va_start(args, format);
+    emit(GRASS_LOG_ERROR, id, format, args);
+    va_end(args);
+    return result;
+}
+
+void grass_context::warn(grass_message_id id, const char* format, ...) {
+    va_list args;
+    va_start(args, format);
+    emit(GRASS_LOG_WARNING, id, format, args);
+    va_end(args);
+}
+
+void grass_context::info(grass_message_id id, const char* format, ...) {
+    va_list args;
+    va_start(args, format);
+    emit(GRASS_LOG_INFO, id, format, args);
+    va_end(args);
+}
+
+namespace grass {
+
+namespace {
+
+// Logs through the desc's callback before a context exists (version or desc errors).
+grass_result early_fail(const grass_context_desc* desc, grass_result result, grass_message_id id,
+                        const char* format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+grass_result early_fail(const grass_context_desc* desc, grass_result result, grass_message_id id,
+                        const char* format, ...) {
+    if (desc && desc->log_fn) {
+        char message[512];
+        va_list args;
+        va_start(args, format);
+        std::vsnprintf(message, sizeof(message), format, args);
+        va_end(args);
+        desc->log_fn(desc->log_user_data, GRASS_LOG_ERROR, id, message);
+    }
+    return result;
+}
+
+// A tag that tells this context's ids from another's: mixes the context's address.
+uint16_t owner_tag_for(const void* p) {
+    uint64_t x = reinterpret_cast<uintptr_t>(p);
+    x ^= x >> 33;
+    x *= 0xff51afd7ed558ccdull;
+    x ^= x >> 33;
+    const uint16_t tag = static_cast<uint16_t>(x);
+    return tag == 0 ? 1 : tag;
+}
+
+} // namespace
+
+grass_result create_context(const char* function, uint32_t header_version, const grass_context_desc* desc,
+                            BackendFactory factory, void* factory_user_data, grass_context** out_context) {
+    if (!out_context) return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: out_context is NULL", function);
+    if (!desc) return GRASS_ERROR_INVALID_ARGUMENT;
+    const uint32_t major = header_version >> 22, minor = (header_version >> 12) & 0x3ff;
+    if (major != GRASS_VERSION_MAJOR || minor > GRASS_VERSION_MINOR) {
+        return early_fail(desc, GRASS_ERROR_VERSION_MISMATCH, GRASS_MSG_VERSION_MISMATCH,
+                          "%s: the caller was compiled against grass.h %u.%u but the library is %u.%u", function,
+                          major, minor, GRASS_VERSION_MAJOR, GRASS_VERSION_MINOR);
+    }
+    if (raw_enum(desc->type) != GRASS_STRUCT_TYPE_CONTEXT_DESC) {
+        return early_fail(desc, GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                          "%s: desc->type is 0x%08llx; expected GRASS_STRUCT_TYPE_CONTEXT_DESC (0x%08x)", function,
+                          static_cast<unsigned long long>(raw_enum(desc->type)), static_cast<unsigned>(GRASS_STRUCT_TYPE_CONTEXT_DESC));
+    }
+    if (desc->next) return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: desc->next must be NULL", function);
+    const grass_allocator& a = desc->allocator;
+    if ((a.alloc_fn == nullptr) != (a.free_fn == nullptr)) {
+        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+                          "%s: desc->allocator must set both alloc_fn and free_fn, or neither", function);
+    }
+    const int64_t log_level = raw_enum(desc->log_level), depth_mode = raw_enum(desc->depth_mode);
+    if (log_level < GRASS_LOG_ERROR || log_level > GRASS_LOG_INFO) {
+        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: desc->log_level is %lld; it must be 0..2",
+                          function, static_cast<long long>(log_level));
+    }
+    if (depth_mode != GRASS_DEPTH_LESS && depth_mode != GRASS_DEPTH_GREATER) {
+        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                          "%s: desc->depth_mode is %lld; it must be GRASS_DEPTH_LESS or GRASS_DEPTH_GREATER", function,
+                          static_cast<long long>(depth_mode));
+    }
+
+    // The context lives in memory from its own allocator.
+    HostAllocator bootstrap(desc->allocator);
+    grass_context* ctx = nullptr;
+    void* memory = nullptr;
+    try {
+        memory = bootstrap.allocate(sizeof(grass_context), alignof(grass_context));
+        ctx = new (memory) grass_context(*desc, owner_tag_for(memory));
+    } catch (const std::bad_alloc&) {
+        if (memory) bootstrap.deallocate(memory);
+        return early_fail(desc, GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: out of host memory", function);
+    }
+    const grass_result r = guarded(ctx, function, [&] { return factory(ctx, factory_user_data, &ctx->backend); });
+    if (r != GRASS_SUCCESS) {
+        destroy_context(ctx);
+        return r;
+    }
+    ctx->info(GRASS_MSG_CONTEXT_CREATED, "%s: context created (grass %u.%u.%u)", function, GRASS_VERSION_MAJOR,
+              GRASS_VERSION_MINOR, GRASS_VERSION_PATCH);
+    *out_context = ctx;
+    return GRASS_SUCCESS;
+}
+
+void destroy_context(grass_context* ctx) {
+    if (!ctx) return;
+    const grass_allocator hooks = ctx->desc.allocator;
+    ctx->~grass_context();
+    HostAllocator(hooks).deallocate(ctx);
+}
+
+namespace {
+grass_result make_null_backend(grass_context* ctx, void*, Backend** out) {
+    *out = ctx->host.create<NullBackend>();
+    return GRASS_SUCCESS;
+}
+} // namespace
+
+} // namespace grass
+
+extern "C" {
+
+GRASS_API uint32_t grass_library_version(void) { return GRASS_HEADER_VERSION; }
+
+GRASS_API const char* grass_result_string(grass_result result) {
+    switch (result) {
+    case GRASS_SUCCESS: return "GRASS_SUCCESS";
+    case GRASS_ERROR_INVALID_ARGUMENT: return "GRASS_ERROR_INVALID_ARGUMENT";
+    case GRASS_ERROR_INVALID_HANDLE: return "GRASS_ERROR_INVALID_HANDLE";
+    case GRASS_ERROR_WRONG_STRUCT_TYPE: return "GRASS_ERROR_WRONG_STRUCT_TYPE";
+    case GRASS_ERROR_INVALID_STATE: return "GRASS_ERROR_INVALID_STATE";
+    case GRASS_ERROR_OUT_OF_MEMORY: return "GRASS_ERROR_OUT_OF_MEMORY";
+    case GRASS_ERROR_VERSION_MISMATCH: return "GRASS_ERROR_VERSION_MISMATCH";
+    case GRASS_ERROR_BACKEND: return "GRASS_ERROR_BACKEND";
+    case GRASS_ERROR_UNSUPPORTED: return "GRASS_ERROR_UNSUPPORTED";
+    case GRASS_ERROR_IN_USE: return "GRASS_ERROR_IN_USE";
+    }
+    return "GRASS_ERROR_UNKNOWN";
+}
+
+GRASS_API grass_context_desc grass_default_context_desc(void) {
+    grass_context_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_CONTEXT_DESC;
+    d.log_level = GRASS_LOG_WARNING;
+    d.depth_mode = GRASS_DEPTH_LESS;
+    return d;
+}
+
+GRASS_API grass_result grass_create_context(uint32_t header_version, const grass_context_desc* desc,
+                                            grass_context** out_context) {
+    return grass::create_context("grass_create_context", header_version, desc, grass::make_null_backend, nullptr,
+                                 out_context);
+}
+
+GRASS_API void grass_destroy_context(grass_context* context) { grass::destroy_context(context); }
+
+GRASS_API grass_backend grass_context_backend(const grass_context* context) {
+    return context && context->backend ? context->backend->kind() : GRASS_BACKEND_NONE;
+}
+
+GRASS_API const char* grass_last_error(const grass_context* context) { return context ? context->last_error : ""; }
+
+GRASS_API grass_result grass_get_memory_stats(const grass_context* context, grass_memory_stats* out_stats) {
+    if (!context || !out_stats) return GRASS_ERROR_INVALID_ARGUMENT;
+    out_stats->host_bytes = context->host.bytes();
+    out_stats->host_allocations = context->host.allocations();
+    out_stats->gpu_bytes = context->backend ? context->backend->gpu_bytes() : 0;
+    return GRASS_SUCCESS;
+}
+
+} // extern "C"

@@ -1,0 +1,107 @@
+#include "context/validate.hpp"
+
+namespace grass {
+
+grass_result check_desc_header(grass_context* ctx, const char* function, const char* name, const void* desc,
+                               int64_t actual, const void* next, grass_struct_type expected,
+                               const char* expected_name) {
+    if (!desc) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s is NULL", function, name);
+    if (actual != static_cast<int64_t>(expected)) {
+        return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                         "%s: %s->type is 0x%08x; expected %s (0x%08x)", function, name, static_cast<unsigned>(actual),
+                         expected_name, static_cast<unsigned>(expected));
+    }
+    if (next) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: %s->next must be NULL", function, name);
+    return GRASS_SUCCESS;
+}
+
+grass_result check_not_null(grass_context* ctx, const char* function, const char* name, const void* p) {
+    if (p) return GRASS_SUCCESS;
+    return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s is NULL", function, name);
+}
+
+grass_result check_finite(grass_context* ctx, const char* function, const char* name, double value) {
+    if (std::isfinite(value)) return GRASS_SUCCESS;
+    return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NOT_FINITE, "%s: %s is %g; it must be finite", function,
+                     name, value);
+}
+
+grass_result check_range(grass_context* ctx, const char* function, const char* name, double value, double lo, double hi) {
+    GRASS_TRY(check_finite(ctx, function, name, value));
+    if (value >= lo && value <= hi) return GRASS_SUCCESS;
+    return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE, "%s: %s is %g; it must be in [%g, %g]",
+                     function, name, value, lo, hi);
+}
+
+grass_result check_min_max(grass_context* ctx, const char* function, const char* name_min, const char* name_max,
+                           double lo, double hi, double limit) {
+    GRASS_TRY(check_range(ctx, function, name_min, lo, 0.0, limit));
+    GRASS_TRY(check_range(ctx, function, name_max, hi, 0.0, limit));
+    if (lo <= hi) return GRASS_SUCCESS;
+    return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_RANGE_INVERTED, "%s: %s (%g) is greater than %s (%g)",
+                     function, name_min, lo, name_max, hi);
+}
+
+grass_result check_finite_array(grass_context* ctx, const char* function, const char* name, const double* v, int n) {
+    for (int i = 0; i < n; ++i) {
+        if (!std::isfinite(v[i])) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NOT_FINITE, "%s: %s[%d] is %g; it must be finite",
+                             function, name, i, v[i]);
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
+grass_result check_finite_array(grass_context* ctx, const char* function, const char* name, const float* v, int n) {
+    for (int i = 0; i < n; ++i) {
+        if (!std::isfinite(v[i])) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NOT_FINITE, "%s: %s[%d] is %g; it must be finite",
+                             function, name, i, static_cast<double>(v[i]));
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
+namespace {
+template <class Pool>
+grass_result check_id(grass_context* ctx, const char* function, const char* name, const Pool& pool, uint32_t index,
+                      uint16_t generation, uint16_t owner) {
+    switch (pool.check(index, generation, owner, ctx->owner)) {
+    case HandleCheck::ok: return GRASS_SUCCESS;
+    case HandleCheck::null_id:
+        return ctx->fail(GRASS_ERROR_INVALID_HANDLE, GRASS_MSG_NULL_HANDLE, "%s: %s is the null id", function, name);
+    case HandleCheck::foreign:
+        return ctx->fail(GRASS_ERROR_INVALID_HANDLE, GRASS_MSG_FOREIGN_HANDLE,
+                         "%s: %s (index %u) was made by another context", function, name, index);
+    case HandleCheck::stale:
+        break;
+    }
+    return ctx->fail(GRASS_ERROR_INVALID_HANDLE, GRASS_MSG_STALE_HANDLE,
+                     "%s: %s (index %u, generation %u) is stale: its object was destroyed", function, name, index,
+                     static_cast<unsigned>(generation));
+}
+} // namespace
+
+grass_result check_patch_id(grass_context* ctx, const char* function, const char* name, grass_patch_id id) {
+    return check_id(ctx, function, name, ctx->patches, id.index, id.generation, id.owner);
+}
+
+grass_result check_field_id(grass_context* ctx, const char* function, const char* name, grass_field_id id) {
+    GRASS_TRY(check_id(ctx, function, name, ctx->fields, id.index, id.generation, id.owner));
+    if (ctx->fields.get(id.index - 1)->parent != 0xffffffffu) {
+        return ctx->fail(GRASS_ERROR_INVALID_HANDLE, GRASS_MSG_STALE_HANDLE,
+                         "%s: %s (index %u) is not a field made by grass_create_field", function, name, id.index);
+    }
+    return GRASS_SUCCESS;
+}
+
+grass_result check_map_id(grass_context* ctx, const char* function, const char* name, grass_map_id id) {
+    GRASS_TRY(check_id(ctx, function, name, ctx->maps, id.index, id.generation, id.owner));
+    if (ctx->maps.get(id.index - 1)->field_private) {
+        return ctx->fail(GRASS_ERROR_INVALID_HANDLE, GRASS_MSG_STALE_HANDLE,
+                         "%s: %s (index %u) is not a map made by grass_create_map", function, name, id.index);
+    }
+    return GRASS_SUCCESS;
+}
+
+} // namespace grass

@@ -1,0 +1,142 @@
+// C entry points for frames: begin (validate the view, plan), end, stats.
+#include "context/context.hpp"
+#include "plan/frame_planner.hpp"
+#include "context/validate.hpp"
+
+#include <cmath>
+#include <cstring>
+
+namespace grass {
+namespace {
+
+grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_desc* view) {
+    GRASS_TRY(GRASS_CHECK_DESC(ctx, fn, view, GRASS_STRUCT_TYPE_VIEW_DESC));
+    const grass_view_desc& v = *view;
+    GRASS_TRY(check_finite_array(ctx, fn, "view->camera_position", v.camera_position, 3));
+    for (int c = 0; c < 3; ++c) {
+        // Beyond 1e12 m, double itself loses the millimetre.
+        if (std::fabs(v.camera_position[c]) > 1e12) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                             "%s: view->camera_position[%d] is %g; it must be within +-1e12 m", fn, c, v.camera_position[c]);
+        }
+    }
+    GRASS_TRY(check_finite_array(ctx, fn, "view->view", v.view, 16));
+    GRASS_TRY(check_finite_array(ctx, fn, "view->projection", v.projection, 16));
+    double det = v.view[0] * (static_cast<double>(v.view[5]) * v.view[10] - static_cast<double>(v.view[9]) * v.view[6]) -
+                 v.view[4] * (static_cast<double>(v.view[1]) * v.view[10] - static_cast<double>(v.view[9]) * v.view[2]) +
+                 v.view[8] * (static_cast<double>(v.view[1]) * v.view[6] - static_cast<double>(v.view[5]) * v.view[2]);
+    if (!(std::fabs(det) > 1e-6)) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM,
+                         "%s: view->view has a singular rotation (determinant %g)", fn, det);
+    }
+    bool projection_zero = true;
+    for (float p : v.projection) projection_zero = projection_zero && p == 0.0f;
+    if (projection_zero) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM, "%s: view->projection is all zeros", fn);
+    }
+    if (v.viewport[2] <= 0 || v.viewport[3] <= 0) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: view->viewport is %d x %d pixels; width and height must be > 0", fn, v.viewport[2],
+                         v.viewport[3]);
+    }
+    GRASS_TRY(check_finite_array(ctx, fn, "view->sun_direction", v.sun_direction, 3));
+    const double sun2 = static_cast<double>(v.sun_direction[0]) * v.sun_direction[0] +
+                        static_cast<double>(v.sun_direction[1]) * v.sun_direction[1] +
+                        static_cast<double>(v.sun_direction[2]) * v.sun_direction[2];
+    if (!(sun2 > 1e-12)) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_ZERO_VECTOR,
+                         "%s: view->sun_direction is (%g, %g, %g); it must point towards the sun (length > 1e-6)", fn,
+                         static_cast<double>(v.sun_direction[0]), static_cast<double>(v.sun_direction[1]),
+                         static_cast<double>(v.sun_direction[2]));
+    }
+    static const char* const sun_names[3] = {"view->sun_color[0]", "view->sun_color[1]", "view->sun_color[2]"};
+    static const char* const amb_names[3] = {"view->ambient_color[0]", "view->ambient_color[1]", "view->ambient_color[2]"};
+    for (int c = 0; c < 3; ++c) {
+        GRASS_TRY(check_range(ctx, fn, sun_names[c], v.sun_color[c], 0.0, 1e6));
+        GRASS_TRY(check_range(ctx, fn, amb_names[c], v.ambient_color[c], 0.0, 1e6));
+    }
+    GRASS_TRY(check_finite(ctx, fn, "view->time", v.time));
+    if (v.flags & ~static_cast<uint32_t>(GRASS_VIEW_FLAG_NO_DEPTH_TEST | GRASS_VIEW_FLAG_DEBUG_TIERS | GRASS_VIEW_FLAG_DEBUG_CELLS |
+                                           GRASS_VIEW_FLAG_DEBUG_THRESHOLDS)) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: view->flags is 0x%x; unknown bits are set",
+                         fn, v.flags);
+    }
+    return GRASS_SUCCESS;
+}
+
+} // namespace
+} // namespace grass
+
+using grass::guarded;
+
+extern "C" {
+
+GRASS_API grass_view_desc grass_default_view_desc(void) {
+    grass_view_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_VIEW_DESC;
+    d.view[0] = d.view[5] = d.view[10] = d.view[15] = 1.0f;
+    d.projection[0] = d.projection[5] = d.projection[10] = d.projection[15] = 1.0f;
+    d.viewport[2] = 1;
+    d.viewport[3] = 1;
+    const float sun[3] = {0.35f, 0.8f, 0.25f}, sun_color[3] = {1.0f, 0.95f, 0.85f}, ambient[3] = {0.30f, 0.36f, 0.45f};
+    std::memcpy(d.sun_direction, sun, sizeof(sun));
+    std::memcpy(d.sun_color, sun_color, sizeof(sun_color));
+    std::memcpy(d.ambient_color, ambient, sizeof(ambient));
+    return d;
+}
+
+GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_view_desc* view) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    return guarded(context, "grass_begin_frame", [&] {
+        const char* fn = "grass_begin_frame";
+        if (context->in_frame) {
+            return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_ALREADY_BEGUN,
+                                 "%s: a frame has already begun; call grass_end_frame first", fn);
+        }
+        GRASS_TRY(grass::validate_view(context, fn, view));
+        GRASS_TRY(grass::build_frame_plan(context, *view));
+        GRASS_TRY(context->backend->begin_frame(context->plan));
+        context->in_frame = true;
+        context->frame_number += 1;
+        return GRASS_SUCCESS;
+    });
+}
+
+GRASS_API grass_result grass_end_frame(grass_context* context) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    if (!context->in_frame) {
+        return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
+                             "grass_end_frame: no frame has begun; call grass_begin_frame first");
+    }
+    context->backend->end_frame();
+    context->in_frame = false;
+    return GRASS_SUCCESS;
+}
+
+GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass_frame_stats* out_stats) {
+    if (!context || !out_stats) return GRASS_ERROR_INVALID_ARGUMENT;
+    *out_stats = context->plan.stats;
+    return GRASS_SUCCESS;
+}
+
+GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, double out_ms[GRASS_TIER_KIND_COUNT],
+                                             grass_bool* out_available) {
+    if (!context || !out_ms || !out_available) return GRASS_ERROR_INVALID_ARGUMENT;
+    for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = 0.0;
+    *out_available = 0;
+    if (!context->backend) return GRASS_SUCCESS;
+    double ms[GRASS_TIER_KIND_COUNT] = {};
+    // The context is const for the host; polling the backend's queries is not a change
+    // the host can see.
+    grass_context* ctx = const_cast<grass_context*>(context);
+    return guarded(ctx, "grass_get_tier_gpu_ms", [&] {
+        if (ctx->backend->tier_gpu_ms(ms)) {
+            for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = ms[k] > 0.0 ? ms[k] : 0.0;
+            *out_available = 1;
+        }
+        return GRASS_SUCCESS;
+    });
+}
+
+} // extern "C"

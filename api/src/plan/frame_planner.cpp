@@ -1,0 +1,427 @@
+#include "plan/frame_planner.hpp"
+
+#include "maps/design_map.hpp"
+#include "plan/lod_setup.hpp"
+#include "plan/tier_transitions.hpp"
+#include "context/validate.hpp"
+#include "plan/view_culling.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace grass {
+
+namespace {
+
+// c = a * b for column-major 4x4 matrices.
+void mul4(const double a[16], const double b[16], double c[16]) {
+    for (int col = 0; col < 4; ++col) {
+        for (int row = 0; row < 4; ++row) {
+            double s = 0.0;
+            for (int k = 0; k < 4; ++k) s += a[4 * k + row] * b[4 * col + k];
+            c[4 * col + row] = s;
+        }
+    }
+}
+
+// Blades passing a density d: thresholds are (k+1)/N (density_threshold.cpp), so floor(d N).
+uint64_t blades_passing(double density, uint32_t blade_count) {
+    const double n = std::floor(density * blade_count + 1e-6);
+    return static_cast<uint64_t>(std::min<double>(std::max(n, 0.0), blade_count));
+}
+
+// A field seen from the camera: its frame in camera-relative world space.
+struct FieldFrame {
+    double cam_local[3]; // camera in field space, cells
+    double origin_rel[3]; // field origin relative to the camera, metres
+    double axis[3][3];    // one cell along field x, y, z, in world metres
+    double cell_size;
+};
+
+FieldFrame field_frame(const Field& field, const double camera[3]) {
+    FieldFrame f;
+    const double* R = field.rotation;
+    const double cs = field.desc.cell_size;
+    const double rel[3] = {camera[0] - field.translation[0], camera[1] - field.translation[1],
+                           camera[2] - field.translation[2]};
+    for (int c = 0; c < 3; ++c) {
+        f.cam_local[c] = (R[3 * c] * rel[0] + R[3 * c + 1] * rel[1] + R[3 * c + 2] * rel[2]) / cs;
+        f.origin_rel[c] = -rel[c];
+        for (int a = 0; a < 3; ++a) f.axis[a][c] = R[3 * a + c] * cs;
+    }
+    f.cell_size = cs;
+    return f;
+}
+
+// A point in field space (cells) relative to the camera (metres).
+void to_camera(const FieldFrame& f, double x, double y, double z, double out[3]) {
+    for (int c = 0; c < 3; ++c) out[c] = f.origin_rel[c] + f.axis[0][c] * x + f.axis[1][c] * y + f.axis[2][c] * z;
+}
+
+struct NodeBox {
+    double lo[3], hi[3]; // field space, cells
+    double terrain_lo = 0.0, terrain_hi = 0.0; // terrain height range under the node, cells
+};
+
+class FieldPlanner {
+public:
+    FieldPlanner(grass_context* ctx, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
+                 const ViewCulling& culling)
+        : ctx_(ctx), slot_(slot), field_(field), patch_(patch), culling_(culling), frame_(field_frame(field, camera)) {
+        for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
+        const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
+        density_map_ = density_slot != kNoMap ? ctx->maps.get(density_slot) : nullptr;
+        height_map_ = height_slot != kNoMap ? ctx->maps.get(height_slot) : nullptr;
+    }
+
+    grass_result run() {
+        PlanScratch& scratch = ctx_->plan_scratch;
+        const LodSetup& lod = field_.lod;
+        for (uint32_t t = 0; t < lod.tier_count; ++t) scratch.per_tier[t].clear();
+        scratch.stack.clear();
+        const uint32_t all_tests = lod.test_count == 32 ? 0xffffffffu : (1u << lod.test_count) - 1u;
+        scratch.stack.push_back(PlanNode{field_.tree.root_level(), all_tests, 0, 0});
+        while (!scratch.stack.empty()) {
+            const PlanNode node = scratch.stack.back();
+            scratch.stack.pop_back();
+            GRASS_TRY(visit(node));
+        }
+        emit_draws();
+        return GRASS_SUCCESS;
+    }
+
+private:
+    // The range of `map` over the node's cells, through the field's cell-to-map transform.
+    MapRange map_range(const DesignMap& map, const NodeCells& cells) const {
+        const double* m = field_.cell_to_map;
+        double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+        for (int k = 0; k < 4; ++k) {
+            const double x = double(cells.x0) + ((k & 1) ? double(cells.count_x) : 0.0);
+            const double z = double(cells.z0) + ((k & 2) ? double(cells.count_z) : 0.0);
+            const double u = m[0] * x + m[2] * z + m[4], v = m[1] * x + m[3] * z + m[5];
+            u0 = std::min(u0, u), u1 = std::max(u1, u), v0 = std::min(v0, v), v1 = std::max(v1, v);
+        }
+        return map.pyramid.range(u0, v0, u1, v1);
+    }
+
+    NodeBox box_of(const NodeCells& cells, uint32_t level) const {
+        NodeBox b;
+        const double oh = field_.overhang;
+        if (height_map_) { // terrain unplanarity (lemme 6.4.4): the node's box spans its terrain
+            const MapRange r = map_range(*height_map_, cells);
+            const double to_cells = field_.height_scale / frame_.cell_size;
+            b.terrain_lo = r.min * to_cells;
+            b.terrain_hi = r.max * to_cells;
+        }
+        b.lo[0] = double(cells.x0) - oh;
+        b.hi[0] = double(cells.x0 + cells.count_x) + oh;
+        b.lo[1] = b.terrain_lo + field_.extents[level].min_y;
+        b.hi[1] = b.terrain_hi + field_.extents[level].max_y;
+        b.lo[2] = double(cells.z0) - oh;
+        b.hi[2] = double(cells.z0 + cells.count_z) + oh;
+        return b;
+    }
+
+    // The local density at a point of the field (cells), as the shaders find it.
+    float density_at(double x, double z) const {
+        float density = field_.desc.density;
+        if (density_map_) {
+            const double* m = field_.cell_to_map;
+            density *= sample_map(density_map_->texels.data(), density_map_->width, density_map_->height, 1,
+                                  m[0] * x + m[2] * z + m[4], m[1] * x + m[3] * z + m[5]);
+        }
+        return density;
+    }
+
+    grass_result visit(const PlanNode& node) {
+        FramePlan& plan = ctx_->plan;
+        plan.stats.nodes_visited += 1;
+        const NodeCells cells = field_.tree.cells_of(node.level, node.x, node.z);
+        // No grass anywhere in the node: discard it without visiting its subtree.
+        const double max_density =
+            double(field_.desc.density) * (density_map_ ? double(map_range(*density_map_, cells).max) : 1.0);
+        if (!(max_density > 0.0)) {
+            plan.stats.nodes_empty += 1;
+            return GRASS_SUCCESS;
+        }
+        const NodeBox box = box_of(cells, node.level);
+
+        // Bounding sphere of the node's own box (not merged from its children's).
+        double center_local[3], half2 = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            center_local[c] = 0.5 * (box.lo[c] + box.hi[c]);
+            const double h = 0.5 * (box.hi[c] - box.lo[c]);
+            half2 += h * h;
+        }
+        grass_lod_node info;
+        to_camera(frame_, center_local[0], center_local[1], center_local[2], info.center);
+        info.radius = std::sqrt(half2) * frame_.cell_size;
+        if (!culling_.sphere_may_be_visible(info.center, info.radius)) {
+            plan.stats.nodes_culled += 1;
+            return GRASS_SUCCESS;
+        }
+        // Nearest and farthest points of the box; the transform is rigid, so distances in
+        // field space times the cell size are world distances.
+        double near2 = 0.0, far2 = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            const double p = frame_.cam_local[c];
+            const double n = std::min(std::max(p, box.lo[c]), box.hi[c]) - p;
+            const double f = std::max(std::fabs(p - box.lo[c]), std::fabs(p - box.hi[c]));
+            near2 += n * n;
+            far2 += f * f;
+        }
+        info.distance_min = std::sqrt(near2) * frame_.cell_size;
+        info.distance_max = std::sqrt(far2) * frame_.cell_size;
+        for (int c = 0; c < 3; ++c) info.center[c] += camera_[c]; // the host sees world space
+        info.level = node.level;
+        info.cell_x = static_cast<uint32_t>(cells.x0);
+        info.cell_z = static_cast<uint32_t>(cells.z0);
+        info.cells_x = static_cast<uint32_t>(cells.count_x);
+        info.cells_z = static_cast<uint32_t>(cells.count_z);
+        info.height_min = box.terrain_lo * frame_.cell_size;
+        info.height_max = box.terrain_hi * frame_.cell_size;
+        const double node_top = box.hi[1] * frame_.cell_size, camera_height = frame_.cam_local[1] * frame_.cell_size;
+
+        // Every still-active test answers; a tier draws when all its tests say draw.
+        const LodSetup& lod = field_.lod;
+        uint32_t discard = 0, split = 0; // per tier bits
+        for (uint32_t active = node.active_tests; active != 0; active &= active - 1) {
+            const uint32_t k = static_cast<uint32_t>(__builtin_ctz(active));
+            const grass_lod_test& test = lod.tests[k];
+            info.tier = test.tier;
+            int64_t answer;
+            if (test.kind == GRASS_LOD_TEST_CALLBACK) {
+                answer = static_cast<int64_t>(test.callback(test.user_data, &info));
+                if (answer < GRASS_LOD_DISCARD || answer > GRASS_LOD_DRAW) {
+                    return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                                      "grass_begin_frame: lod test %u of field %u (a callback) answered %lld for node "
+                                      "(level %u, cell %u, %u); it must answer a grass_lod_answer",
+                                      k, slot_ + 1, static_cast<long long>(answer), node.level, info.cell_x, info.cell_z);
+                }
+            } else {
+                answer = evaluate_builtin_test(test, info, node_top, camera_height);
+            }
+            plan.stats.lod_test_calls += 1;
+            if (answer == GRASS_LOD_DISCARD) discard |= 1u << test.tier;
+            if (answer == GRASS_LOD_SPLIT) split |= 1u << test.tier;
+        }
+
+        const bool leaf = node.level == 0;
+        uint32_t children_tests = node.active_tests;
+        for (uint32_t t = 0; t < lod.tier_count; ++t) {
+            if ((lod.tests_of_tier[t] & node.active_tests) == 0) continue; // decided above
+            if (discard & (1u << t)) {
+                children_tests &= ~lod.tests_of_tier[t];
+                continue;
+            }
+            bool draw = leaf || (split & (1u << t)) == 0;
+            if (lod.tiers[t].kind == GRASS_TIER_GEOMETRY && !leaf) draw = false; // cells only
+            if (!draw) continue;
+            children_tests &= ~lod.tests_of_tier[t];
+            add_instance(t, cells, box);
+        }
+        if (!leaf && children_tests != 0) push_children(node, children_tests);
+        return GRASS_SUCCESS;
+    }
+
+    void push_children(const PlanNode& node, uint32_t tests) {
+        const uint32_t level = node.level - 1;
+        const uint64_t nx = field_.tree.nodes_x(level), nz = field_.tree.nodes_z(level);
+        for (uint64_t dz = 0; dz < 2; ++dz) {
+            for (uint64_t dx = 0; dx < 2; ++dx) {
+                const uint64_t x = node.x * 2 + dx, z = node.z * 2 + dz;
+                if (x < nx && z < nz) ctx_->plan_scratch.stack.push_back(PlanNode{level, tests, x, z});
+            }
+        }
+    }
+
+    // The exact test before drawing: the node's box against the clip planes.
+    void add_instance(uint32_t tier, const NodeCells& cells, const NodeBox& box) {
+        double corners[8][3];
+        for (int k = 0; k < 8; ++k) {
+            to_camera(frame_, (k & 1) ? box.hi[0] : box.lo[0], (k & 2) ? box.hi[1] : box.lo[1],
+                      (k & 4) ? box.hi[2] : box.lo[2], corners[k]);
+        }
+        if (!culling_.box_may_be_visible(corners)) {
+            ctx_->plan.stats.nodes_culled += 1;
+            return;
+        }
+        PlanCandidate c;
+        double origin[3], centre[3];
+        to_camera(frame_, double(cells.x0), 0.0, double(cells.z0), origin);
+        to_camera(frame_, double(cells.x0) + 0.5 * double(cells.count_x), 0.0, double(cells.z0) + 0.5 * double(cells.count_z),
+                  centre);
+        c.distance2 = centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2];
+        for (int a = 0; a < 3; ++a) c.instance.origin[a] = static_cast<float>(origin[a]);
+        c.instance.reserved = 0.0f;
+        c.instance.cell[0] = static_cast<uint32_t>(cells.x0);
+        c.instance.cell[1] = static_cast<uint32_t>(cells.z0);
+        c.instance.count[0] = static_cast<uint32_t>(cells.count_x);
+        c.instance.count[1] = static_cast<uint32_t>(cells.count_z);
+        c.instance.terrain[0] = static_cast<float>(box.terrain_lo);
+        c.instance.terrain[1] = static_cast<float>(box.terrain_hi);
+        c.instance.terrain[2] = c.instance.terrain[3] = 0.0f;
+        c.density = density_at(double(cells.x0) + 0.5 * double(cells.count_x), double(cells.z0) + 0.5 * double(cells.count_z));
+        ctx_->plan_scratch.per_tier[tier].push_back(c);
+    }
+
+    void emit_draws() {
+        FramePlan& plan = ctx_->plan;
+        const LodSetup& lod = field_.lod;
+        const PatchData& pd = patch_.data;
+        bool drew = false;
+        for (uint32_t t = 0; t < lod.tier_count; ++t) {
+            auto& candidates = ctx_->plan_scratch.per_tier[t];
+            if (candidates.empty()) continue;
+            const grass_tier_kind kind = lod.tiers[t].kind;
+            if (kind == GRASS_TIER_GEOMETRY) { // front to back: early depth rejects the rest
+                std::sort(candidates.begin(), candidates.end(),
+                          [](const PlanCandidate& a, const PlanCandidate& b) { return a.distance2 < b.distance2; });
+            }
+            TierDraw draw;
+            draw.kind = kind;
+            draw.tier = t;
+            draw.slices = lod.tiers[t].slices;
+            draw.field_slot = slot_;
+            draw.patch_slot = field_.patch_slot;
+            draw.first_instance = static_cast<uint32_t>(plan.instances.size());
+            draw.instance_count = static_cast<uint32_t>(candidates.size());
+            draw.features = field_.maps.features;
+            fill_uniforms(kind, t, &draw.uniforms);
+            plan.draws.push_back(draw);
+            drew = true;
+            const uint64_t triangles_per_blade = pd.indices_per_blade / 3;
+            TierBand bands[GRASS_MAX_TIERS];
+            for (uint32_t b = 0; b < lod.tier_count; ++b) {
+                bands[b] = {field_.bands[b][0], field_.bands[b][1], field_.bands[b][2], field_.bands[b][3]};
+            }
+            for (const PlanCandidate& c : candidates) {
+                plan.instances.push_back(c.instance);
+                const uint64_t cells = uint64_t(c.instance.count[0]) * c.instance.count[1];
+                plan.stats.instances[kind] += 1;
+                plan.stats.cells[kind] += cells;
+                plan.stats.macro_cells[kind] += cells > 1 ? 1 : 0;
+                if (kind == GRASS_TIER_GEOMETRY) {
+                    // The blades this tier draws at the cell's centre: those whose r =
+                    // threshold / density falls in its interval (tier_transitions.hpp).
+                    const float d = static_cast<float>(std::sqrt(c.distance2));
+                    float total = 0.0f, lo = 0.0f, self = 0.0f;
+                    for (uint32_t b = 0; b < lod.tier_count; ++b) {
+                        const float w = band_weight(bands[b], d);
+                        total += w;
+                        if (b > t) lo += w;
+                        if (b == t) self = w;
+                    }
+                    const double share_lo = total > 0.0f ? lo / total : 0.0, share_hi = total > 0.0f ? (lo + self) / total : 0.0;
+                    const uint64_t passing = blades_passing(c.density * share_hi, pd.blade_count) -
+                                             blades_passing(c.density * share_lo, pd.blade_count);
+                    plan.stats.cells_drawn += 1;
+                    plan.stats.blades_submitted += pd.blade_count;
+                    plan.stats.blades_drawn += passing;
+                    plan.stats.triangles += passing * triangles_per_blade;
+                }
+            }
+        }
+        if (drew) plan.stats.fields_drawn += 1;
+    }
+
+    void fill_uniforms(grass_tier_kind kind, uint32_t tier, FieldUniforms* u) const {
+        const grass_field_desc& d = field_.desc;
+        for (int c = 0; c < 4; ++c) {
+            for (int r = 0; r < 4; ++r) {
+                u->patch_to_world[4 * c + r] =
+                    (c < 3 && r < 3) ? static_cast<float>(frame_.axis[c][r]) : (c == 3 && r == 3 ? 1.0f : 0.0f);
+            }
+        }
+        const double* m = field_.cell_to_map;
+        u->map_u[0] = static_cast<float>(m[0]);
+        u->map_u[1] = static_cast<float>(m[2]);
+        u->map_u[2] = static_cast<float>(m[4]);
+        u->map_v[0] = static_cast<float>(m[1]);
+        u->map_v[1] = static_cast<float>(m[3]);
+        u->map_v[2] = static_cast<float>(m[5]);
+        u->map_u[3] = u->map_v[3] = 0.0f;
+        u->map_params[0] = d.density;
+        u->map_params[1] = static_cast<float>(field_.height_scale / frame_.cell_size);
+        u->map_params[2] = static_cast<float>(d.cells_x);
+        u->map_params[3] = static_cast<float>(d.cells_z);
+        u->blade_params[0] = patch_.data.ao_impact;
+        u->blade_params[1] = patch_.data.ao_height;
+        u->blade_params[2] = static_cast<float>(kind);
+        u->blade_params[3] = std::max(0.0f, patch_.data.bounds_max[1]); // the slices' height
+        u->tiling[0] = d.mirror_seed;
+        u->tiling[1] = d.mirror_tiling ? 1u : 0u;
+        u->tiling[2] = field_.lod.tiers[tier].slices;
+        u->tiling[3] = field_.maps.features;
+        for (uint32_t t = 0; t < GRASS_MAX_TIERS; ++t) {
+            for (int k = 0; k < 4; ++k) u->bands[t][k] = t < field_.lod.tier_count ? field_.bands[t][k] : 0.0f;
+        }
+        u->tiers[0] = tier;
+        u->tiers[1] = field_.lod.tier_count;
+        u->tiers[2] = (field_.lod.overlay_tiers >> tier) & 1u;
+        u->tiers[3] = 0u;
+        u->transition[0] = d.transition_window;
+        u->transition[1] = u->transition[2] = u->transition[3] = 0.0f;
+    }
+
+    grass_context* ctx_;
+    uint32_t slot_;
+    const Field& field_;
+    const Patch& patch_;
+    const ViewCulling& culling_;
+    FieldFrame frame_;
+    double camera_[3];
+    const DesignMap* density_map_ = nullptr;
+    const DesignMap* height_map_ = nullptr;
+};
+
+} // namespace
+
+grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
+    const auto start = std::chrono::steady_clock::now();
+    FramePlan& plan = ctx->plan;
+    plan.clear();
+
+    // Camera-relative view: the host's rotation only; the translation is the camera position.
+    double rotation[16] = {0};
+    for (int c = 0; c < 3; ++c) {
+        for (int r = 0; r < 3; ++r) rotation[4 * c + r] = view.view[4 * c + r];
+    }
+    rotation[15] = 1.0;
+    double projection[16], view_projection[16];
+    for (int k = 0; k < 16; ++k) projection[k] = view.projection[k];
+    mul4(projection, rotation, view_projection);
+    for (int k = 0; k < 16; ++k) plan.frame.view_projection[k] = static_cast<float>(view_projection[k]);
+
+    const double sun[3] = {view.sun_direction[0], view.sun_direction[1], view.sun_direction[2]};
+    const double len = std::sqrt(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
+    for (int c = 0; c < 3; ++c) {
+        plan.frame.sun_direction[c] = static_cast<float>(sun[c] / len);
+        plan.frame.sun_color[c] = view.sun_color[c];
+        plan.frame.ambient_color[c] = view.ambient_color[c];
+    }
+    plan.frame.sun_direction[3] = plan.frame.sun_color[3] = plan.frame.ambient_color[3] = 0.0f;
+    plan.frame.params[0] = static_cast<float>(std::fmod(view.time, 86400.0));
+    plan.frame.params[1] = static_cast<float>(view.flags);
+    plan.frame.params[2] = ctx->desc.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
+    plan.frame.params[3] = 0.0f;
+    for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
+    plan.flags = view.flags;
+
+    const ViewCulling culling(view_projection, ctx->desc.depth_mode);
+    for (uint32_t slot = 0; slot < ctx->fields.capacity(); ++slot) {
+        const Field* field = ctx->fields.get(slot);
+        if (!field) continue;
+        FieldPlanner planner(ctx, slot, *field, *ctx->patches.get(field->patch_slot), view.camera_position, culling);
+        const grass_result r = planner.run();
+        if (r != GRASS_SUCCESS) {
+            plan.clear();
+            return r;
+        }
+    }
+    plan.stats.plan_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return GRASS_SUCCESS;
+}
+
+} // namespace grass
