@@ -6,7 +6,7 @@
 // agree per pixel. Multisampled images agree in their block averages and means but not
 // per pixel: GL's sample pattern lies in a bottom-left-origin framebuffer that the host
 // flips, so the two backends sample each pixel at mirrored positions (our reading of it). Thresholds come
-// from the measurements in docs/testing.md; the test prints what it measures.
+// from the measurements in docs/records/testing.md; the test prints what it measures.
 #include "render_fixture.hpp"
 
 #include "image_io.hpp"
@@ -86,7 +86,7 @@ void compare(uint32_t samples, uint32_t block, double max_mean_difference, doubl
     EXPECT_LE(whole.mean, 1.0) << "large areas have the same colour";
 }
 
-// Measured at 160x120 (docs/testing.md): 1 sample: 0.0070 levels per pixel, 0.010% of pixels
+// Measured at 160x120 (docs/records/testing.md): 1 sample: 0.0070 levels per pixel, 0.010% of pixels
 // apart; 4 samples: 3.03 levels on 4x4 blocks, none apart, 0.26 levels on 40x40 blocks.
 TEST(BackendAgreement, GlAndVulkanImagesOfTheSameSceneAgreePixelByPixel) { compare(1, 1, 0.05, 0.0005); }
 

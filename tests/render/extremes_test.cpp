@@ -8,7 +8,7 @@
 //    geometry cells no more than those in view, blades drawn <= submitted = cells x blades per
 //    patch, nodes visited within the quadtree and a budget, plan time finite.
 // The refusals of NaN, infinite and huge inputs at the API are the core's ExtremeInputs test
-// (tests/core/extremes_test.cpp). Figures: docs/testing.md ("Extremes").
+// (tests/core/extremes_test.cpp). Figures: docs/records/testing.md ("Extremes").
 #include "render_fixture.hpp"
 
 #include <algorithm>
