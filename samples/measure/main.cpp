@@ -7,12 +7,13 @@
 #include "measure.hpp"
 #include "tool.hpp"
 
+#include <cstdio>
 #include <string>
 
 int main(int argc, char** argv) {
     CLI::App app("grass-measure: measurements of grass's cost and image quality on the headless hosts.",
                  "grass-measure");
-    app.require_subcommand(1);
+    app.require_subcommand(0, 1); // none: the message below; an unknown one: CLI11 names it
     const grass_measure::Subcommand subcommands[] = {grass_measure::add_bench(app), grass_measure::add_tier_cost(app),
                                                      grass_measure::add_popping(app)};
     const int parsed = grass_sample::parse(app, argc, argv);
@@ -25,5 +26,7 @@ int main(int argc, char** argv) {
             return grass_sample::fail(("grass-measure " + s.app->get_name()).c_str(), e.what());
         }
     }
+    std::fprintf(stderr, "grass-measure: a subcommand is required (bench, tier-cost or popping)\n"
+                         "Run with --help for more information.\n");
     return 2;
 }
