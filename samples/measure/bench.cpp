@@ -250,16 +250,14 @@ struct Reference {
 bool render_variant(const Options& opt, grass_backend backend, const PreparedScene& ps, const Variant& v, Reference* ref,
                     std::chrono::steady_clock::time_point t_start, std::vector<Row>* rows, int* status,
                     std::string* error) {
-    const char* be = backend == GRASS_BACKEND_GL ? "gl" : "vk";
+    const char* be = grass_sample::backend_name(backend);
     const BenchScene& bs = *ps.bench;
     const grass_sample::Scene& scene = ps.scene;
     const grass_quality_desc& q = v.q;
-    grass_host::TargetDesc td;
+    grass_host::TargetDesc td = grass_sample::target_desc(scene);
     td.width = opt.width;
     td.height = opt.height;
     td.samples = q.msaa_samples;
-    td.ground = scene.ground;
-    std::memcpy(td.ground_color, scene.ground_color, sizeof(td.ground_color));
     auto host = grass_host::Host::create(backend, td, error);
     if (!host) {
         *error = std::string("cannot create the ") + be + " host: " + *error;
@@ -311,9 +309,7 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
     for (const int ci : opt.cameras) {
         grass_view_desc view = grass_host::make_view(*host, ps.cams[ci][0], ps.cams[ci][1], scene.fov_degrees, 0.05f,
                                                      scene.far_m);
-        std::memcpy(view.sun_direction, scene.sun_direction, sizeof(scene.sun_direction));
-        std::memcpy(view.sun_color, scene.sun_color, sizeof(scene.sun_color));
-        std::memcpy(view.ambient_color, scene.ambient_color, sizeof(scene.ambient_color));
+        grass_sample::apply_light(scene, &view);
         Row row;
         row.scene = bs.name;
         row.camera = bs.cameras[ci].name;
@@ -459,13 +455,21 @@ int camera_index(const std::string& name) {
     return -1;
 }
 
-// A name option's check: `name` is one of the list (given as "a, b, c" in the message).
-CLI::Validator one_of(int (*index)(const std::string&), const std::string& what, const std::string& list) {
-    return CLI::Validator(
+// A repeatable option naming a scene or camera (`index` finds the name; `list` the names for
+// the error): each name's index appended to *out.
+void add_names_option(CLI::App& app, const std::string& option, int (*index)(const std::string&), const char* what,
+                      const char* list, const std::string& help, std::vector<int>* out) {
+    const CLI::Validator is_name(
         [index, what, list](std::string& text) {
-            return index(text) >= 0 ? std::string() : "unknown " + what + " \"" + text + "\" (" + list + ")";
+            return index(text) >= 0 ? std::string()
+                                    : "unknown " + std::string(what) + " \"" + text + "\" (" + list + ")";
         },
         what);
+    app.add_option_function<std::string>(
+           option, [index, out](const std::string& name) { out->push_back(index(name)); }, help)
+        ->check(is_name)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->trigger_on_parse();
 }
 
 int run(Options opt, bool quick) {
@@ -569,18 +573,10 @@ Subcommand add_bench(CLI::App& measure) {
             },
             "gl|vk|both"))
         ->default_str("both");
-    app->add_option_function<std::string>(
-           "--scene", [o](const std::string& n) { o->scenes.push_back(bench::scene_index(n)); },
-           "football, park or hills (repeatable; default all)")
-        ->check(bench::one_of(bench::scene_index, "scene", "football, park, hills"))
-        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-        ->trigger_on_parse();
-    app->add_option_function<std::string>(
-           "--camera", [o](const std::string& n) { o->cameras.push_back(bench::camera_index(n)); },
-           "high, player, ant or grazing (repeatable; default all)")
-        ->check(bench::one_of(bench::camera_index, "camera", "high, player, ant, grazing"))
-        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-        ->trigger_on_parse();
+    bench::add_names_option(*app, "--scene", bench::scene_index, "scene", "football, park, hills",
+                            "football, park or hills (repeatable; default all)", &o->scenes);
+    bench::add_names_option(*app, "--camera", bench::camera_index, "camera", "high, player, ant, grazing",
+                            "high, player, ant or grazing (repeatable; default all)", &o->cameras);
     app->add_flag("--quick", *quick, "one scene and one camera (football, player): a smoke run");
     app->add_flag("--sweep", o->sweep,
                   "instead of the presets: DEFAULT with one knob at a time changed (a few values each around "
