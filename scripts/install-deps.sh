@@ -9,6 +9,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers          # Vulkan loader, lavapipe, validation layers
   glslc                                                              # GLSL -> SPIR-V at build time
   libpng-dev nlohmann-json3-dev                                      # image I/O, JSON scenes
+  libcli11-dev                                                       # the sample tools' command lines
   libgtest-dev libbenchmark-dev                                      # tests, benchmarks
 )
 

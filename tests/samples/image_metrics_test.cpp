@@ -1,4 +1,4 @@
-// grass-bench's image metrics (samples/grass_bench/image_metrics.*): SSIM after Wang et al.
+// grass-measure bench's image metrics (samples/measure/image_metrics.*): SSIM after Wang et al.
 // 2004 (Gaussian window 11, sigma 1.5, K1 0.01, K2 0.03, L 255) and PSNR.
 #include "image_metrics.hpp"
 

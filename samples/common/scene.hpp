@@ -1,14 +1,25 @@
-// A scene for grass-render: one patch, one field, a camera and the sun. The built-in demo
-// or a small JSON file (see docs/scene-format.md).
+// A scene for the sample tools: one patch, one field, a camera and the sun. The built-in
+// demo or a small JSON file (see docs/scene-format.md); its design maps made into a map stack.
 #pragma once
 
 #include <grass/grass.h>
+
+#include "headless_host.hpp"
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace grass_render {
+namespace grass_sample {
+
+// The roles of a field's design maps (grass_map_stack), in the order Scene::maps holds them.
+enum class MapRole { density, color, ambient, diffuse, height };
+constexpr int kMapRoleCount = 5;
+
+// The role's key in a scene file's "field.maps" ("density", "color", ...).
+const char* map_role_name(MapRole role);
+// The role's map in a map stack.
+grass_map_id* map_slot(grass_map_stack* stack, MapRole role);
 
 struct Scene {
     grass_patch_desc patch = grass_default_patch_desc();
@@ -16,14 +27,14 @@ struct Scene {
     // Density map texels (R8), empty for uniform density.
     std::vector<uint8_t> density_texels;
     uint32_t density_width = 0, density_height = 0;
-    // Design maps of the map stack, read from PNG files (empty pixels: none), by role:
-    // density, color, ambient, diffuse, height.
+    // Design maps of the map stack, read from PNG files (empty pixels: none), by MapRole.
     struct MapImage {
         std::vector<uint8_t> pixels;
         uint32_t width = 0, height = 0;
         grass_map_format format = GRASS_MAP_FORMAT_R8_UNORM;
     };
-    MapImage maps[5];
+    MapImage maps[kMapRoleCount];
+    const MapImage& map(MapRole role) const { return maps[int(role)]; }
     float height_scale = 1.0f;
     double eye[3] = {0.0, 1.7, -6.4};
     double target[3] = {0.0, 0.0, 1.0};
@@ -48,4 +59,14 @@ Scene demo_scene();
 // Reads a scene file over the demo's defaults. False and *error on a bad file or key.
 bool load_scene(const std::string& path, Scene* scene, std::string* error);
 
-} // namespace grass_render
+// Creates the scene's design maps on `ctx` into `stack` (their ids; its height scale the
+// scene's). Stops at the first grass_create_map that fails and returns its result.
+grass_result create_scene_maps(grass_context* ctx, const Scene& scene, grass_map_stack* stack);
+
+// The host target of the scene's image: size, samples and ground.
+grass_host::TargetDesc target_desc(const Scene& scene);
+
+// The scene's sun and ambient light into a view.
+void apply_light(const Scene& scene, grass_view_desc* view);
+
+} // namespace grass_sample

@@ -4,11 +4,12 @@
 #include <png.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
 
-namespace grass_render {
+namespace grass_sample {
 
 Scene demo_scene() {
     Scene s;
@@ -219,9 +220,11 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
             if (f.contains("maps")) {
                 const json& m = f["maps"];
                 check_keys(m, "\"field.maps\"", {"density", "color", "ambient", "diffuse", "height", "height_scale"});
-                static const char* const roles[5] = {"density", "color", "ambient", "diffuse", "height"};
-                for (int r = 0; r < 5; ++r) {
-                    if (m.contains(roles[r])) s->maps[r] = load_map_png(beside(path, m[roles[r]].get<std::string>()), r == 1);
+                for (int r = 0; r < kMapRoleCount; ++r) {
+                    const MapRole role = MapRole(r);
+                    const char* key = map_role_name(role);
+                    if (!m.contains(key)) continue;
+                    s->maps[r] = load_map_png(beside(path, m[key].get<std::string>()), role == MapRole::color);
                 }
                 read(m, "height_scale", &s->height_scale);
                 if (m.contains("density")) s->density_texels.clear(); // not the demo's path as well
@@ -292,4 +295,52 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
     return true;
 }
 
-} // namespace grass_render
+const char* map_role_name(MapRole role) {
+    static const char* const names[kMapRoleCount] = {"density", "color", "ambient", "diffuse", "height"};
+    return names[int(role)];
+}
+
+grass_map_id* map_slot(grass_map_stack* stack, MapRole role) {
+    switch (role) {
+    case MapRole::density: return &stack->density;
+    case MapRole::color: return &stack->color;
+    case MapRole::ambient: return &stack->ambient;
+    case MapRole::diffuse: return &stack->diffuse;
+    case MapRole::height: return &stack->height;
+    }
+    return nullptr;
+}
+
+grass_result create_scene_maps(grass_context* ctx, const Scene& scene, grass_map_stack* stack) {
+    for (int r = 0; r < kMapRoleCount; ++r) {
+        const Scene::MapImage& m = scene.maps[r];
+        if (m.pixels.empty()) continue;
+        grass_map_desc md = grass_default_map_desc();
+        md.pixels = m.pixels.data();
+        md.width = m.width;
+        md.height = m.height;
+        md.format = m.format;
+        const grass_result result = grass_create_map(ctx, &md, map_slot(stack, MapRole(r)));
+        if (result != GRASS_SUCCESS) return result;
+    }
+    stack->height_scale = scene.height_scale;
+    return GRASS_SUCCESS;
+}
+
+grass_host::TargetDesc target_desc(const Scene& scene) {
+    grass_host::TargetDesc t;
+    t.width = scene.width;
+    t.height = scene.height;
+    t.samples = scene.samples;
+    t.ground = scene.ground;
+    std::memcpy(t.ground_color, scene.ground_color, sizeof(t.ground_color));
+    return t;
+}
+
+void apply_light(const Scene& scene, grass_view_desc* view) {
+    std::memcpy(view->sun_direction, scene.sun_direction, sizeof(view->sun_direction));
+    std::memcpy(view->sun_color, scene.sun_color, sizeof(view->sun_color));
+    std::memcpy(view->ambient_color, scene.ambient_color, sizeof(view->ambient_color));
+}
+
+} // namespace grass_sample

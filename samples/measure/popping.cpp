@@ -1,4 +1,4 @@
-// grass-popping: popping, measured (issue 6 item 3). A camera at player height dollies
+// grass-measure popping: popping, measured (issue 6 item 3). A camera at player height dollies
 // forward at walking speed through the football scene; at each step the frame is rendered
 // and, inside the screen region of each transition zone (where two tiers' distance bands
 // overlap, from the field's lod setup and the camera geometry), the per-pixel luma change
@@ -16,16 +16,19 @@
 // zones are measured on a centred range of columns whose reference plan stays within
 // --cell-budget geometry cells (planned first on a context without a GPU).
 //
-// Usage: grass-popping [--backend gl|vk] [--scene FILE] [--frames N] [--size WxH]
-//                      [--samples N] [--canopy M] [--cell-budget N] [--max-reference-cells N]
-//                      [--cache DIR] [--no-agreement]
+// Usage: grass-measure popping [--backend gl|vk] [--scene FILE] [--frames N] [--size WxH]
+//                              [--samples N] [--canopy M] [--cell-budget N] [--max-reference-cells N]
+//                              [--cache DIR] [--no-agreement]
 // A zone whose reference needs more than --max-reference-cells cells even in its narrowest
 // window (4 columns) is listed but not measured (the far zones: ~1500 cells for 8 pixels).
-#include "scene.hpp"
-
 #include <grass/grass.h>
 
+#include "cli.hpp"
 #include "headless_host.hpp"
+#include "measure.hpp"
+#include "scene.hpp"
+#include "stats.hpp"
+#include "tool.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -38,10 +41,7 @@
 #include <string>
 #include <vector>
 
-#ifndef GRASS_POPPING_DEFAULT_SCENE
-#define GRASS_POPPING_DEFAULT_SCENE "samples/grass_render/scenes/football.json"
-#endif
-
+namespace grass_measure {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -51,7 +51,7 @@ constexpr float kNear = 0.05f;
 
 struct Options {
     grass_backend backend = GRASS_BACKEND_GL;
-    std::string scene_path = GRASS_POPPING_DEFAULT_SCENE;
+    std::string scene_path = GRASS_SCENE_DIR "/football.json";
     std::string cache_dir;
     int frames = 30;
     uint32_t width = 320, height = 180, samples = 4;
@@ -61,16 +61,6 @@ struct Options {
     bool agreement = true;
 };
 
-int fail(const std::string& message) {
-    std::fprintf(stderr, "grass-popping: %s\n", message.c_str());
-    return 1;
-}
-
-void log_to_stderr(void*, grass_log_level level, grass_message_id id, const char* message) {
-    if (level == GRASS_LOG_INFO) return;
-    std::fprintf(stderr, "grass %d: %s\n", static_cast<int>(id), message);
-}
-
 double luma(const uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
 
 // The camera of step k: the scene camera moved forward (horizontally) by k steps.
@@ -78,7 +68,7 @@ struct Camera {
     double eye[3], target[3];
 };
 
-Camera camera_at(const grass_render::Scene& s, int k) {
+Camera camera_at(const grass_sample::Scene& s, int k) {
     double f[2] = {s.target[0] - s.eye[0], s.target[2] - s.eye[2]};
     const double l = std::sqrt(f[0] * f[0] + f[1] * f[1]);
     const double step = kWalkSpeed / kFps * k;
@@ -93,6 +83,12 @@ Camera camera_at(const grass_render::Scene& s, int k) {
     c.target[2] += f[1] / l * step;
     return c;
 }
+
+// The tiers and lod tests of a field.
+struct LodSetup {
+    std::vector<grass_tier_desc> tiers;
+    std::vector<grass_lod_test> tests;
+};
 
 // A transition zone: the overlap of two tiers' distance bands (metres from the camera).
 struct Zone {
@@ -153,15 +149,13 @@ void window_projection(const grass_host::Host& host, const Options& o, float fov
     }
 }
 
-grass_view_desc window_view(const grass_host::Host& host, const Options& o, const grass_render::Scene& s,
+grass_view_desc window_view(const grass_host::Host& host, const Options& o, const grass_sample::Scene& s,
                             const Camera& c, const Zone& z, uint32_t x0, uint32_t x1) {
     grass_view_desc v = grass_host::make_view(host, c.eye, c.target, s.fov_degrees, kNear, s.far_m);
     window_projection(host, o, s.fov_degrees, s.far_m, x0, z.y0, x1, z.y1, v.projection);
     v.viewport[2] = static_cast<int32_t>(x1 - x0);
     v.viewport[3] = static_cast<int32_t>(z.y1 - z.y0);
-    std::memcpy(v.sun_direction, s.sun_direction, sizeof(v.sun_direction));
-    std::memcpy(v.sun_color, s.sun_color, sizeof(v.sun_color));
-    std::memcpy(v.ambient_color, s.ambient_color, sizeof(v.ambient_color));
+    grass_sample::apply_light(s, &v);
     return v;
 }
 
@@ -202,11 +196,11 @@ struct SceneContext {
     }
 };
 
-bool make_scene_context(grass_host::Host& host, const Options& o, const grass_render::Scene& s,
+bool make_scene_context(grass_host::Host& host, const Options& o, const grass_sample::Scene& s,
                         const std::vector<grass_tier_desc>& tiers, const std::vector<grass_lod_test>& tests,
                         SceneContext* out, std::string* error) {
     grass_context_desc cd = grass_default_context_desc();
-    cd.log_fn = log_to_stderr;
+    cd.log_fn = grass_sample::log_to_stderr;
     if (!o.cache_dir.empty()) cd.cache_directory = o.cache_dir.c_str();
     grass_result r = host.create_context(cd, &out->ctx);
     if (r == GRASS_SUCCESS) r = grass_create_patch(out->ctx, &s.patch, &out->patch);
@@ -227,19 +221,6 @@ bool make_scene_context(grass_host::Host& host, const Options& o, const grass_re
     return true;
 }
 
-double percentile(std::vector<float> v, double q) {
-    if (v.empty()) return 0.0;
-    const size_t k = static_cast<size_t>(q * double(v.size() - 1) + 0.5);
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
-    return v[k];
-}
-
-double mean(const std::vector<float>& v) {
-    double sum = 0.0;
-    for (float x : v) sum += x;
-    return v.empty() ? 0.0 : sum / double(v.size());
-}
-
 // ---- Per-tier mean-colour agreement ------------------------------------------------------
 
 struct Agreement {
@@ -248,7 +229,7 @@ struct Agreement {
     double mean[3] = {0, 0, 0};
 };
 
-bool tier_agreement(const Options& o, const grass_render::Scene& s, const std::vector<grass_tier_desc>& tiers,
+bool tier_agreement(const Options& o, const grass_sample::Scene& s, const std::vector<grass_tier_desc>& tiers,
                     std::vector<Agreement>* out, std::string* error) {
     grass_host::TargetDesc t;
     t.width = t.height = 128;
@@ -265,7 +246,7 @@ bool tier_agreement(const Options& o, const grass_render::Scene& s, const std::v
             tests[1].kind = GRASS_LOD_TEST_MACRO_CELL;
             tests[1].max_macro_cells = 1;
         }
-        grass_render::Scene cells = s;
+        grass_sample::Scene cells = s;
         cells.field.cells_x = cells.field.cells_z = 8;
         cells.field.cell_size = 0.25;
         for (int i = 0; i < 16; ++i) cells.field.base_transform[i] = (i % 5 == 0) ? 1.0 : 0.0;
@@ -274,9 +255,7 @@ bool tier_agreement(const Options& o, const grass_render::Scene& s, const std::v
         // About 9 m away, 1.6 m up (tier_lighting_test.cpp's camera).
         const double eye[3] = {1.0, 1.6, -8.0}, target[3] = {1.0, 0.0, 1.0};
         grass_view_desc v = grass_host::make_view(*host, eye, target, 14.0f, kNear, 100.0f);
-        std::memcpy(v.sun_direction, s.sun_direction, sizeof(v.sun_direction));
-        std::memcpy(v.sun_color, s.sun_color, sizeof(v.sun_color));
-        std::memcpy(v.ambient_color, s.ambient_color, sizeof(v.ambient_color));
+        grass_sample::apply_light(s, &v);
         grass_host::Image image;
         const grass_result r = host->render(sc.ctx, v, nullptr, &image, error);
         if (r != GRASS_SUCCESS) {
@@ -326,77 +305,26 @@ bool tier_agreement(const Options& o, const grass_render::Scene& s, const std::v
     return true;
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-    Options o;
-    for (int k = 1; k < argc; ++k) {
-        const std::string a = argv[k];
-        auto value = [&]() -> const char* {
-            if (k + 1 >= argc) {
-                std::fprintf(stderr, "grass-popping: %s needs a value\n", a.c_str());
-                std::exit(2);
-            }
-            return argv[++k];
-        };
-        if (a == "--help" || a == "-h") {
-            std::printf("usage: grass-popping [--backend gl|vk] [--scene FILE] [--frames N] [--size WxH] [--samples N]\n"
-                        "                     [--canopy M] [--cell-budget N] [--max-reference-cells N]\n"
-                        "                     [--cache DIR] [--no-agreement]\n");
-            return 0;
-        } else if (a == "--backend") {
-            const std::string b = value();
-            if (b == "gl") o.backend = GRASS_BACKEND_GL;
-            else if (b == "vk" || b == "vulkan") o.backend = GRASS_BACKEND_VULKAN;
-            else return fail("--backend must be gl or vk");
-        } else if (a == "--scene") {
-            o.scene_path = value();
-        } else if (a == "--frames") {
-            o.frames = std::atoi(value());
-            if (o.frames < 2 || o.frames > 10000) return fail("--frames must be 2..10000");
-        } else if (a == "--size") {
-            if (std::sscanf(value(), "%ux%u", &o.width, &o.height) != 2 || o.width < 16 || o.height < 16 ||
-                o.width > 4096 || o.height > 4096) {
-                return fail("--size must be WxH, 16..4096 each");
-            }
-        } else if (a == "--samples") {
-            o.samples = static_cast<uint32_t>(std::atoi(value()));
-            if (o.samples != 1 && o.samples != 4) return fail("--samples must be 1 or 4");
-        } else if (a == "--canopy") {
-            o.canopy = std::atof(value());
-            if (!(o.canopy >= 0.0 && o.canopy < 1.0)) return fail("--canopy must be 0..1 m");
-        } else if (a == "--cell-budget") {
-            o.cell_budget = std::strtoull(value(), nullptr, 10);
-            if (o.cell_budget < 10) return fail("--cell-budget must be at least 10");
-        } else if (a == "--max-reference-cells") {
-            o.max_reference_cells = std::strtoull(value(), nullptr, 10);
-        } else if (a == "--cache") {
-            o.cache_dir = value();
-        } else if (a == "--no-agreement") {
-            o.agreement = false;
-        } else {
-            return fail("unknown option " + a);
-        }
-    }
-    const auto t_start = std::chrono::steady_clock::now();
-    grass_render::Scene s;
-    std::string error;
-    if (!grass_render::load_scene(o.scene_path, &s, &error)) return fail(error);
-    s.width = o.width;
-    s.height = o.height;
-    s.samples = o.samples;
-
-    // The lod setup and its transition zones.
-    std::vector<grass_tier_desc> tiers = s.tiers;
-    std::vector<grass_lod_test> tests = s.lod_tests;
+// The scene's lod setup: its own, or the library's default.
+LodSetup lod_setup(const grass_sample::Scene& s) {
+    LodSetup lod{s.tiers, s.lod_tests};
+    std::vector<grass_tier_desc>& tiers = lod.tiers;
+    std::vector<grass_lod_test>& tests = lod.tests;
     if (tiers.empty() && tests.empty()) {
         tiers.resize(GRASS_DEFAULT_TIER_COUNT);
         tests.resize(GRASS_DEFAULT_LOD_TEST_COUNT);
         grass_default_lod_setup(s.field.cell_size, tiers.data(), tests.data());
     }
+    return lod;
+}
+
+// The transition zones: where two tiers' distance bands overlap (hilltop overlays left
+// out), nearest first.
+std::vector<Zone> find_zones(const LodSetup& lod) {
+    const std::vector<grass_tier_desc>& tiers = lod.tiers;
     std::vector<double> band_begin(tiers.size(), -1.0), band_end(tiers.size(), -1.0);
     std::vector<bool> overlay(tiers.size(), false);
-    for (const grass_lod_test& t : tests) {
+    for (const grass_lod_test& t : lod.tests) {
         if (t.tier >= tiers.size()) continue;
         if (t.kind == GRASS_LOD_TEST_DISTANCE_BAND) {
             band_begin[t.tier] = t.begin;
@@ -420,7 +348,13 @@ int main(int argc, char** argv) {
         }
     }
     std::sort(zones.begin(), zones.end(), [](const Zone& x, const Zone& y) { return x.begin < y.begin; });
+    return zones;
+}
 
+// Each zone's pixels in the full frame and the window that holds them; zones off screen are
+// dropped.
+void mark_zone_pixels(const Options& o, const grass_sample::Scene& s, std::vector<Zone>* zones_out) {
+    std::vector<Zone>& zones = *zones_out;
     // Each zone's pixels: the ray of a pixel meets the lawn at the canopy height; the blade
     // roots under that point are at distance d from the camera (what the tiers' bands
     // measure). A pixel is in a zone in the first and the last frame, over the field.
@@ -467,14 +401,23 @@ int main(int argc, char** argv) {
         }
     }
     zones.erase(std::remove_if(zones.begin(), zones.end(), [](const Zone& z) { return z.x1 <= z.x0; }), zones.end());
-    if (zones.empty()) return fail("no transition zone is on screen");
+    if (zones.empty()) throw grass_sample::Failure("no transition zone is on screen");
+}
 
-    // The reference: blades everywhere. Narrow each zone's window to a centred range of
-    // columns whose reference plan stays within the cell budget.
-    const std::vector<grass_tier_desc> ref_tiers = {{GRASS_TIER_GEOMETRY, 0}};
-    std::vector<grass_lod_test> ref_tests(1);
-    ref_tests[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
-    ref_tests[0].end = INFINITY;
+// The reference: blades everywhere (one geometry tier) out to `end` metres.
+LodSetup reference_setup(double end) {
+    LodSetup ref;
+    ref.tiers = {{GRASS_TIER_GEOMETRY, 0}};
+    ref.tests.resize(1);
+    ref.tests[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
+    ref.tests[0].end = static_cast<float>(end);
+    return ref;
+}
+
+// Narrows each zone's window to a centred range of columns whose reference plan (on a
+// context without a GPU) stays within the cell budget.
+void narrow_windows(const Options& o, const grass_sample::Scene& s, std::vector<Zone>* zones) {
+    const Camera first = camera_at(s, 0), last = camera_at(s, o.frames - 1);
     {
         grass_host::TargetDesc t;
         t.width = o.width;
@@ -482,21 +425,23 @@ int main(int argc, char** argv) {
         PlanHost plan_host(t);
         const auto plan_cells = [&](const Zone& z, uint32_t x0, uint32_t x1) {
             SceneContext plan;
-            std::vector<grass_lod_test> zone_tests = ref_tests;
-            zone_tests[0].end = static_cast<float>(z.reference_end);
-            if (!make_scene_context(plan_host, o, s, ref_tiers, zone_tests, &plan, &error)) return uint64_t(~0ull);
+            const LodSetup ref = reference_setup(z.reference_end);
+            std::string error;
+            if (!make_scene_context(plan_host, o, s, ref.tiers, ref.tests, &plan, &error)) {
+                throw grass_sample::Failure(error);
+            }
             uint64_t most = 0;
             for (const Camera& c : {first, last}) {
                 const grass_view_desc v = window_view(plan_host, o, s, c, z, x0, x1);
                 grass_frame_stats st{};
-                if (grass_begin_frame(plan.ctx, &v) != GRASS_SUCCESS) return uint64_t(~0ull);
-                grass_get_frame_stats(plan.ctx, &st);
-                grass_end_frame(plan.ctx);
+                grass_sample::check(grass_begin_frame(plan.ctx, &v), "grass_begin_frame", plan.ctx);
+                grass_sample::check(grass_get_frame_stats(plan.ctx, &st), "grass_get_frame_stats", plan.ctx);
+                grass_sample::check(grass_end_frame(plan.ctx), "grass_end_frame", plan.ctx);
                 most = std::max(most, st.cells[GRASS_TIER_GEOMETRY]);
             }
             return most;
         };
-        for (Zone& z : zones) {
+        for (Zone& z : *zones) {
             const uint32_t centre = (z.x0 + z.x1) / 2;
             uint32_t half = (z.x1 - z.x0 + 1) / 2;
             while (half > 2) {
@@ -509,77 +454,80 @@ int main(int argc, char** argv) {
             z.reference_cells = plan_cells(z, z.x0, z.x1);
         }
     }
+}
 
-    const char* backend_name = o.backend == GRASS_BACKEND_GL ? "gl" : "vk";
-    std::string device;
-    for (Zone& z : zones) {
-        if (z.reference_cells > o.max_reference_cells) {
-            std::fprintf(stderr, "grass-popping: zone %s/%s not measured: its reference needs %llu cells (raise "
-                                 "--max-reference-cells)\n",
-                         tier_name(tiers[z.tier_a]).c_str(), tier_name(tiers[z.tier_b]).c_str(),
-                         static_cast<unsigned long long>(z.reference_cells));
-            continue;
-        }
-        const auto t0 = std::chrono::steady_clock::now();
-        grass_host::TargetDesc t;
-        t.width = z.x1 - z.x0;
-        t.height = z.y1 - z.y0;
-        t.samples = o.samples;
-        t.ground = s.ground;
-        std::memcpy(t.ground_color, s.ground_color, sizeof(t.ground_color));
-        auto host = grass_host::Host::create(o.backend, t, &error);
-        if (!host) return fail("cannot create the headless host: " + error);
-        device = host->device_name();
-        SceneContext lod, ref;
-        if (!make_scene_context(*host, o, s, tiers, tests, &lod, &error)) return fail(error);
-        std::vector<grass_lod_test> zone_tests = ref_tests;
-        zone_tests[0].end = static_cast<float>(z.reference_end);
-        if (!make_scene_context(*host, o, s, ref_tiers, zone_tests, &ref, &error)) return fail(error);
-        std::vector<double> prev_lod, prev_ref;
-        uint64_t zone_pixels = 0;
-        for (int k = 0; k < o.frames; ++k) {
-            const grass_view_desc v = window_view(*host, o, s, camera_at(s, k), z, z.x0, z.x1);
-            grass_host::Image img_lod, img_ref;
-            grass_result r = host->render(lod.ctx, v, nullptr, &img_lod, &error);
-            if (r == GRASS_SUCCESS) r = host->render(ref.ctx, v, nullptr, &img_ref, &error);
-            if (r != GRASS_SUCCESS) return fail(std::string("rendering failed: ") + grass_result_string(r) + " " + error);
-            std::vector<double> cur_lod, cur_ref;
-            for (uint32_t y = z.y0; y < z.y1; ++y) {
-                for (uint32_t x = z.x0; x < z.x1; ++x) {
-                    if (!z.mask[size_t(y) * o.width + x]) continue;
-                    cur_lod.push_back(luma(img_lod.pixel(x - z.x0, y - z.y0)));
-                    cur_ref.push_back(luma(img_ref.pixel(x - z.x0, y - z.y0)));
-                }
-            }
-            zone_pixels = cur_lod.size();
-            for (size_t i = 0; i < cur_lod.size(); ++i) {
-                z.luma_lod += cur_lod[i];
-                z.luma_ref += cur_ref[i];
-            }
-            z.luma_samples += cur_lod.size();
-            if (k > 0) {
-                for (size_t i = 0; i < cur_lod.size(); ++i) {
-                    z.delta_lod.push_back(static_cast<float>(std::fabs(cur_lod[i] - prev_lod[i])));
-                    z.delta_ref.push_back(static_cast<float>(std::fabs(cur_ref[i] - prev_ref[i])));
-                }
-            }
-            prev_lod.swap(cur_lod);
-            prev_ref.swap(cur_ref);
-        }
-        if (host->validation_messages() != 0) return fail("validation messages:\n" + host->validation_log());
-        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        std::fprintf(stderr, "grass-popping: %s zone %s/%s %.1f-%.1f m: window %ux%u at (%u, %u), %llu zone pixels, "
-                             "reference %llu cells, %d frames in %.1f s\n",
-                     backend_name, tier_name(tiers[z.tier_a]).c_str(), tier_name(tiers[z.tier_b]).c_str(), z.begin,
-                     z.end, t.width, t.height, z.x0, z.y0, static_cast<unsigned long long>(zone_pixels),
-                     static_cast<unsigned long long>(z.reference_cells), o.frames, secs);
+// Renders the dolly in the zone's window with the lod setup and with the reference, and
+// measures the zone's pixels; a zone whose reference needs more than --max-reference-cells
+// is reported on stderr and left unmeasured. *device: the host's device name.
+void measure_zone(const Options& o, const grass_sample::Scene& s, const LodSetup& setup, Zone* z,
+                  std::string* device) {
+    std::string error;
+    if (z->reference_cells > o.max_reference_cells) {
+        std::fprintf(stderr, "grass-measure popping: zone %s/%s not measured: its reference needs %llu cells (raise "
+                             "--max-reference-cells)\n",
+                     tier_name(setup.tiers[z->tier_a]).c_str(), tier_name(setup.tiers[z->tier_b]).c_str(),
+                     static_cast<unsigned long long>(z->reference_cells));
+        return;
     }
+    const auto t0 = std::chrono::steady_clock::now();
+    grass_host::TargetDesc t = grass_sample::target_desc(s);
+    t.width = z->x1 - z->x0;
+    t.height = z->y1 - z->y0;
+    auto host = grass_host::Host::create(o.backend, t, &error);
+    if (!host) throw grass_sample::Failure("cannot create the headless host: " + error);
+    *device = host->device_name();
+    SceneContext lod, ref;
+    const LodSetup reference = reference_setup(z->reference_end);
+    if (!make_scene_context(*host, o, s, setup.tiers, setup.tests, &lod, &error) ||
+        !make_scene_context(*host, o, s, reference.tiers, reference.tests, &ref, &error)) {
+        throw grass_sample::Failure(error);
+    }
+    std::vector<double> prev_lod, prev_ref;
+    uint64_t zone_pixels = 0;
+    for (int k = 0; k < o.frames; ++k) {
+        const grass_view_desc v = window_view(*host, o, s, camera_at(s, k), *z, z->x0, z->x1);
+        grass_host::Image img_lod, img_ref;
+        grass_result r = host->render(lod.ctx, v, nullptr, &img_lod, &error);
+        if (r == GRASS_SUCCESS) r = host->render(ref.ctx, v, nullptr, &img_ref, &error);
+        if (r != GRASS_SUCCESS) {
+            throw grass_sample::Failure(std::string("rendering failed: ") + grass_result_string(r) + " " + error);
+        }
+        std::vector<double> cur_lod, cur_ref;
+        for (uint32_t y = z->y0; y < z->y1; ++y) {
+            for (uint32_t x = z->x0; x < z->x1; ++x) {
+                if (!z->mask[size_t(y) * o.width + x]) continue;
+                cur_lod.push_back(luma(img_lod.pixel(x - z->x0, y - z->y0)));
+                cur_ref.push_back(luma(img_ref.pixel(x - z->x0, y - z->y0)));
+            }
+        }
+        zone_pixels = cur_lod.size();
+        for (size_t i = 0; i < cur_lod.size(); ++i) {
+            z->luma_lod += cur_lod[i];
+            z->luma_ref += cur_ref[i];
+        }
+        z->luma_samples += cur_lod.size();
+        if (k > 0) {
+            for (size_t i = 0; i < cur_lod.size(); ++i) {
+                z->delta_lod.push_back(static_cast<float>(std::fabs(cur_lod[i] - prev_lod[i])));
+                z->delta_ref.push_back(static_cast<float>(std::fabs(cur_ref[i] - prev_ref[i])));
+            }
+        }
+        prev_lod.swap(cur_lod);
+        prev_ref.swap(cur_ref);
+    }
+    if (host->validation_messages() != 0) throw grass_sample::Failure("validation messages:\n" + host->validation_log());
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::fprintf(stderr, "grass-measure popping: %s zone %s/%s %.1f-%.1f m: window %ux%u at (%u, %u), %llu zone pixels, "
+                         "reference %llu cells, %d frames in %.1f s\n",
+                 grass_sample::backend_name(o.backend), tier_name(setup.tiers[z->tier_a]).c_str(), tier_name(setup.tiers[z->tier_b]).c_str(), z->begin,
+                 z->end, t.width, t.height, z->x0, z->y0, static_cast<unsigned long long>(zone_pixels),
+                 static_cast<unsigned long long>(z->reference_cells), o.frames, secs);
+}
 
-    std::vector<Agreement> agreement;
-    if (o.agreement && !tier_agreement(o, s, tiers, &agreement, &error)) return fail(error);
-
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-    std::printf("## grass-popping: %s (%s)\n\n", backend_name, device.c_str());
+// The Markdown report on stdout: a row per zone, then the per-tier mean colours.
+void print_report(const Options& o, const grass_sample::Scene& s, const LodSetup& lod, const std::vector<Zone>& zones,
+                  const std::vector<Agreement>& agreement, const std::string& device, double total) {
+    std::printf("## grass-popping: %s (%s)\n\n", grass_sample::backend_name(o.backend), device.c_str());
     std::printf("%s, %ux%u, %ux MSAA, camera %.1f m up dollying %.3f m per frame (%.1f m/s at %.0f fps), %d frames; "
                 "zone pixels where the view ray meets the lawn (%.2f m up) over roots in the zone; luma in 8-bit "
                 "sRGB levels (Rec. 709 weights); run %.0f s\n\n",
@@ -596,15 +544,15 @@ int main(int argc, char** argv) {
         if (z.delta_lod.empty()) {
             std::printf("| %s / %s | %.2f-%.2f | %u-%u | %u-%u | %llu | %llu (%.0f) | not measured (--max-reference-cells) "
                         "| | | | | | | |\n",
-                        tier_name(tiers[z.tier_a]).c_str(), tier_name(tiers[z.tier_b]).c_str(), z.begin, z.end, z.y0,
+                        tier_name(lod.tiers[z.tier_a]).c_str(), tier_name(lod.tiers[z.tier_b]).c_str(), z.begin, z.end, z.y0,
                         z.y1 - 1, z.x0, z.x1 - 1, static_cast<unsigned long long>(pixels),
                         static_cast<unsigned long long>(z.reference_cells), z.reference_end);
             continue;
         }
-        const double ml = mean(z.delta_lod), mr = mean(z.delta_ref);
-        const double pl = percentile(z.delta_lod, 0.95), pr = percentile(z.delta_ref, 0.95);
+        const double ml = grass_sample::mean(z.delta_lod), mr = grass_sample::mean(z.delta_ref);
+        const double pl = grass_sample::percentile(z.delta_lod, 0.95), pr = grass_sample::percentile(z.delta_ref, 0.95);
         std::printf("| %s / %s | %.2f-%.2f | %u-%u | %u-%u | %llu | %llu (%.0f) | %.2f | %.2f | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f |\n",
-                    tier_name(tiers[z.tier_a]).c_str(), tier_name(tiers[z.tier_b]).c_str(), z.begin, z.end, z.y0,
+                    tier_name(lod.tiers[z.tier_a]).c_str(), tier_name(lod.tiers[z.tier_b]).c_str(), z.begin, z.end, z.y0,
                     z.y1 - 1, z.x0, z.x1 - 1, static_cast<unsigned long long>(pixels),
                     static_cast<unsigned long long>(z.reference_cells), z.reference_end,
                     ml, mr, mr > 0 ? ml / mr : 0.0, pl, pr, pr > 0 ? pl / pr : 0.0,
@@ -623,5 +571,61 @@ int main(int argc, char** argv) {
                         a.mean[0], a.mean[1], a.mean[2], a.mean[0] - g[0], a.mean[1] - g[1], a.mean[2] - g[2], largest);
         }
     }
+}
+
+int run(const Options& o) {
+    const auto t_start = std::chrono::steady_clock::now();
+    grass_sample::Scene s;
+    std::string error;
+    if (!grass_sample::load_scene(o.scene_path, &s, &error)) throw grass_sample::Failure(error);
+    s.width = o.width;
+    s.height = o.height;
+    s.samples = o.samples;
+    const LodSetup lod = lod_setup(s);
+    std::vector<Zone> zones = find_zones(lod);
+    mark_zone_pixels(o, s, &zones);
+    narrow_windows(o, s, &zones);
+    std::string device;
+    for (Zone& z : zones) measure_zone(o, s, lod, &z, &device);
+    std::vector<Agreement> agreement;
+    if (o.agreement && !tier_agreement(o, s, lod.tiers, &agreement, &error)) throw grass_sample::Failure(error);
+    print_report(o, s, lod, zones, agreement, device,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count());
     return 0;
 }
+
+} // namespace
+
+Subcommand add_popping(CLI::App& measure) {
+    auto o = std::make_shared<Options>();
+    CLI::App* app = measure.add_subcommand(
+        "popping", "Popping in the transition zones: a camera dollies through the scene; per zone, the frame-to-frame "
+                   "luma change of the lod setup against blades everywhere; then the per-tier mean colours "
+                   "(docs/popping.md).");
+    grass_sample::add_backend_option(*app, &o->backend);
+    app->add_option("--scene", o->scene_path, "scene file")->capture_default_str();
+    app->add_option("--frames", o->frames, "frames of the dolly")->capture_default_str()->check(CLI::Range(2, 10000));
+    grass_sample::add_size_option(*app, &o->width, &o->height, 16, 4096, "the full frame's size in pixels");
+    app->add_option("--samples", o->samples, "1 or 4")->capture_default_str()->check(CLI::IsMember({1, 4}));
+    app->add_option("--canopy", o->canopy, "metres up where a view ray meets the lawn, 0 <= M < 1")
+        ->capture_default_str()
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                double m = -1.0;
+                return CLI::detail::lexical_cast(text, m) && m >= 0.0 && m < 1.0 ? std::string()
+                                                                                 : "\"" + text + "\" is not 0 <= M < 1";
+            },
+            "[0, 1)"));
+    app->add_option("--cell-budget", o->cell_budget, "reference geometry cells per zone window")
+        ->capture_default_str()
+        ->check(grass_sample::at_least(10));
+    app->add_option("--max-reference-cells", o->max_reference_cells,
+                    "a zone whose narrowest window's reference needs more cells is not measured")
+        ->capture_default_str();
+    app->add_option("--cache", o->cache_dir, "baked-slice cache directory");
+    app->add_flag_callback(
+        "--no-agreement", [o]() { o->agreement = false; }, "leave out the per-tier mean-colour agreement");
+    return {app, [o]() { return run(*o); }};
+}
+
+} // namespace grass_measure

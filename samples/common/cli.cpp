@@ -1,0 +1,109 @@
+#include "cli.hpp"
+
+#include <cstdio>
+
+namespace grass_sample {
+
+int parse(CLI::App& app, int argc, char** argv) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    return -1;
+}
+
+bool parse_backend(const std::string& text, grass_backend* out) {
+    if (text == "gl") {
+        *out = GRASS_BACKEND_GL;
+    } else if (text == "vk" || text == "vulkan") {
+        *out = GRASS_BACKEND_VULKAN;
+    } else {
+        return false;
+    }
+    return true;
+}
+
+const char* backend_name(grass_backend backend) {
+    return backend == GRASS_BACKEND_VULKAN ? "vk" : backend == GRASS_BACKEND_GL ? "gl" : "none";
+}
+
+CLI::Option* add_backend_option(CLI::App& app, grass_backend* out, const std::string& help) {
+    const CLI::Validator is_backend(
+        [](std::string& text) {
+            grass_backend b;
+            return parse_backend(text, &b) ? std::string() : "\"" + text + "\" is not a backend (gl or vk)";
+        },
+        "gl|vk");
+    return app.add_option_function<std::string>(
+                  "--backend", [out](const std::string& text) { parse_backend(text, out); }, help)
+        ->check(is_backend)
+        ->default_str(backend_name(*out));
+}
+
+CLI::Option* add_size_option(CLI::App& app, uint32_t* width, uint32_t* height, uint32_t min, uint32_t max,
+                             const std::string& help) {
+    const CLI::Validator is_size(
+        [min, max](std::string& text) {
+            unsigned w = 0, h = 0;
+            char tail = 0;
+            if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w < min || h < min || w > max || h > max) {
+                return "\"" + text + "\" is not WxH with " + std::to_string(min) + ".." + std::to_string(max) + " each";
+            }
+            return std::string();
+        },
+        "WxH");
+    return app.add_option_function<std::string>(
+                  "--size", [width, height](const std::string& text) {
+                      std::sscanf(text.c_str(), "%ux%u", width, height);
+                  }, help)
+        ->check(is_size)
+        ->default_str(std::to_string(*width) + "x" + std::to_string(*height));
+}
+
+CLI::Option* add_point_option(CLI::App& app, const std::string& name, double out[3], bool* given,
+                              const std::string& help) {
+    const CLI::Validator is_point(
+        [](std::string& text) {
+            double p[3];
+            char tail = 0;
+            if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &p[0], &p[1], &p[2], &tail) != 3) {
+                return "\"" + text + "\" is not X,Y,Z";
+            }
+            return std::string();
+        },
+        "X,Y,Z");
+    return app.add_option_function<std::string>(
+                  name, [out, given](const std::string& text) {
+                      std::sscanf(text.c_str(), "%lf,%lf,%lf", &out[0], &out[1], &out[2]);
+                      *given = true;
+                  }, help)
+        ->check(is_point);
+}
+
+CLI::Validator open_range(double lo, double hi) {
+    return CLI::Validator(
+        [lo, hi](std::string& text) {
+            double v = 0.0;
+            if (!CLI::detail::lexical_cast(text, v) || !(v > lo && v < hi)) {
+                return "\"" + text + "\" is not between " + CLI::detail::to_string(lo) + " and " +
+                       CLI::detail::to_string(hi) + " (exclusive)";
+            }
+            return std::string();
+        },
+        "(" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + ")");
+}
+
+CLI::Validator at_least(double lo) {
+    return CLI::Validator(
+        [lo](std::string& text) {
+            double v = 0.0;
+            if (!CLI::detail::lexical_cast(text, v) || !(v >= lo)) {
+                return "\"" + text + "\" is less than " + CLI::detail::to_string(lo);
+            }
+            return std::string();
+        },
+        ">=" + CLI::detail::to_string(lo));
+}
+
+} // namespace grass_sample

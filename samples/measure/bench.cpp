@@ -1,0 +1,596 @@
+// grass-measure bench: the subcommand and the run (bench.hpp explains the measures; the
+// reports are bench_report.cpp's).
+#include "bench.hpp"
+
+#include <grass/grass.h>
+
+#include "cli.hpp"
+#include "headless_host.hpp"
+#include "image_io.hpp"
+#include "image_metrics.hpp"
+#include "measure.hpp"
+#include "scene.hpp"
+#include "stats.hpp"
+#include "tool.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace grass_measure {
+namespace bench {
+
+using grass_sample::median;
+
+const char* const kLevelNames[GRASS_QUALITY_LEVEL_COUNT] = {"reference", "high", "default", "low", "fastest"};
+
+namespace {
+
+// ---- The bench's scenes ---------------------------------------------------------------
+
+struct Camera {
+    const char* name;
+    double eye[3];
+    double target[3];
+};
+
+// A scene file, reduced so that its reference (blades everywhere) renders in seconds on
+// llvmpipe: a part of the field (the maps are mapped so that the part keeps its place in
+// them), fewer and wider blades per patch. Heights of cameras over a height map are above
+// the terrain under the eye (the target moves up by the same amount, so the view direction
+// is the flat one).
+struct BenchScene {
+    const char* name;
+    const char* file;
+    uint32_t first_x, first_z; // the part of the scene's field, in its cells
+    uint32_t cells_x, cells_z;
+    uint32_t blade_count;
+    float width_min, width_max; // patch units
+    Camera cameras[4];
+};
+
+// Football: scripts/football-cameras.sh's cameras. The field's centre strip, 20 m wide and
+// 60 m deep from the near goal line (80 x 240 of its 380 x 532 cells), so every preset's
+// tiers up to the image tier (200 cells = 50 m out for DEFAULT) are in view.
+// Park: the whole 40 m x 40 m park (its maps are the scene), fewer blades.
+// Hills: 80 m x 100 m of the 200 m x 200 m hills (160 x 200 cells of 0.5 m) around the
+// valley camera of docs/design-maps.md, with the host's ground drawn (see main).
+const BenchScene kScenes[] = {
+    {"football", "football.json", 150, 0, 80, 240, 32, 0.05f, 0.08f,
+     {{"high", {47.5, 60, -40}, {47.5, 0, 80}},
+      {"player", {47.5, 1.7, 6}, {47.5, 0, 60}},
+      {"ant", {47.3, 0.05, 6}, {47.3, 0.04, 20}},
+      {"grazing", {47.3, 3, -2}, {47.3, 2.9, 400}}}},
+    {"park", "park.json", 0, 0, 160, 160, 24, 0.05f, 0.08f,
+     {{"high", {20, 30, -15}, {20, 0, 22}},
+      {"player", {20, 1.7, 2}, {20, 0, 30}},
+      {"ant", {30, 0.05, 5}, {30, 0.04, 19}},
+      {"grazing", {20, 3, -2}, {20, 2.9, 400}}}},
+    {"hills", "hills.json", 120, 0, 160, 200, 24, 0.0f, 0.0f,
+     {{"high", {100, 40, -30}, {100, 0, 60}},
+      {"player", {100, 1.7, 5}, {100, 4, 60}},
+      {"ant", {100, 0.05, 5}, {100, 0.04, 19}},
+      {"grazing", {100, 3, -2}, {100, 2.9, 400}}}},
+};
+constexpr int kSceneCount = int(sizeof(kScenes) / sizeof(kScenes[0]));
+
+
+// ---- Terrain heights for cameras over a height map ---------------------------------------
+
+// The height map's value under world (x, z), bilinear between texel centres like the GPU.
+double terrain_height(const grass_sample::Scene& s, uint32_t full_cells_x, uint32_t full_cells_z, double x, double z) {
+    const auto& m = s.map(grass_sample::MapRole::height);
+    if (m.pixels.empty()) return 0.0;
+    const double cs = s.field.cell_size;
+    // The scene's full field starts at its own origin (base_transform before the bench moves it).
+    const double u = (x - s.field.base_transform[12]) / (cs * full_cells_x), v = (z - s.field.base_transform[14]) / (cs * full_cells_z);
+    auto texel = [&](int64_t tx, int64_t tz) {
+        tx = std::clamp<int64_t>(tx, 0, m.width - 1);
+        tz = std::clamp<int64_t>(tz, 0, m.height - 1);
+        const size_t i = size_t(tz) * m.width + size_t(tx);
+        if (m.format == GRASS_MAP_FORMAT_R16_UNORM) {
+            uint16_t t;
+            std::memcpy(&t, &m.pixels[2 * i], 2);
+            return t / 65535.0;
+        }
+        return m.pixels[i] / 255.0;
+    };
+    const double fx = u * m.width - 0.5, fz = v * m.height - 0.5;
+    const int64_t x0 = int64_t(std::floor(fx)), z0 = int64_t(std::floor(fz));
+    const double ax = fx - double(x0), az = fz - double(z0);
+    const double h = (1 - az) * ((1 - ax) * texel(x0, z0) + ax * texel(x0 + 1, z0)) +
+                     az * ((1 - ax) * texel(x0, z0 + 1) + ax * texel(x0 + 1, z0 + 1));
+    return s.field.base_transform[13] + h * s.height_scale;
+}
+
+// ---- The lod setup of a preset for a scene --------------------------------------------
+
+// grass_apply_quality's tiers, plus, on a height map, what hills.json adds to Lemme's table:
+// an UNPLANARITY test on every tier but the blades, and a hilltop overlay volume tier
+// (2 slices times the preset's slice scale, macro-cells up to 8) where the image tier starts.
+bool lod_setup(grass_context* ctx, const grass_quality_desc& q, const grass_sample::Scene& s, grass_patch_desc* patch,
+               std::vector<grass_tier_desc>* tiers, std::vector<grass_lod_test>* tests, std::string* error) {
+    tiers->assign(GRASS_MAX_TIERS, grass_tier_desc{});
+    tests->assign(GRASS_MAX_LOD_TESTS, grass_lod_test{});
+    uint32_t tc = 0, lc = 0;
+    const grass_result r = grass_apply_quality(ctx, &q, s.field.cell_size, patch, tiers->data(), &tc, tests->data(), &lc);
+    if (r != GRASS_SUCCESS) {
+        *error = std::string("grass_apply_quality failed: ") + grass_result_string(r) + " (" + grass_last_error(ctx) + ")";
+        return false;
+    }
+    tiers->resize(tc);
+    tests->resize(lc);
+    if (s.map(grass_sample::MapRole::height).pixels.empty() || q.blades_everywhere) return true;
+    float image_begin = std::numeric_limits<float>::infinity();
+    for (uint32_t t = 0; t < tc; ++t) {
+        if ((*tiers)[t].kind == GRASS_TIER_GEOMETRY) continue;
+        grass_lod_test u{};
+        u.kind = GRASS_LOD_TEST_UNPLANARITY;
+        u.tier = t;
+        u.max_unplanarity = 0.25f;
+        u.unplanarity_ratio = 0.02f;
+        tests->push_back(u);
+        if ((*tiers)[t].kind == GRASS_TIER_IMAGE) {
+            for (const auto& b : *tests)
+                if (b.kind == GRASS_LOD_TEST_DISTANCE_BAND && b.tier == t) image_begin = std::min(image_begin, b.begin);
+        }
+    }
+    if (std::isfinite(image_begin) && tiers->size() < GRASS_MAX_TIERS) {
+        const uint32_t t = uint32_t(tiers->size());
+        grass_tier_desc overlay{};
+        overlay.kind = GRASS_TIER_VOLUME;
+        overlay.slices = std::max<uint32_t>(1, uint32_t(std::lround(2.0 * q.slice_scale)));
+        tiers->push_back(overlay);
+        grass_lod_test band{};
+        band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+        band.tier = t;
+        band.begin = image_begin;
+        band.end = std::numeric_limits<float>::infinity();
+        grass_lod_test hill{};
+        hill.kind = GRASS_LOD_TEST_HILLTOP;
+        hill.tier = t;
+        grass_lod_test macro{};
+        macro.kind = GRASS_LOD_TEST_MACRO_CELL;
+        macro.tier = t;
+        macro.max_macro_cells = 8;
+        tests->insert(tests->end(), {band, hill, macro});
+    }
+    return true;
+}
+
+// ---- One scene x preset x backend: a host, a context, a field, every camera ---------------
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// A scene of kScenes reduced for the bench, and its cameras' eyes and targets (over its
+// terrain on a height map).
+struct PreparedScene {
+    const BenchScene* bench = nullptr;
+    grass_sample::Scene scene;
+    double cams[4][2][3] = {};
+};
+
+bool prepare_scene(const Options& opt, const BenchScene& bs, PreparedScene* ps, std::string* error) {
+    ps->bench = &bs;
+    grass_sample::Scene& scene = ps->scene;
+    if (!grass_sample::load_scene(opt.scene_dir + "/" + bs.file, &scene, error)) return false;
+    // The bench's variant: a part of the field, its maps mapped onto that part.
+    const uint32_t full_x = scene.field.cells_x, full_z = scene.field.cells_z;
+    if (bs.first_x + bs.cells_x > full_x || bs.first_z + bs.cells_z > full_z) {
+        *error = std::string(bs.name) + ": the bench's part lies outside the field";
+        return false;
+    }
+    const double cs = scene.field.cell_size;
+    for (int c = 0; c < 4; ++c) {
+        const Camera& cam = bs.cameras[c];
+        const double lift = terrain_height(scene, full_x, full_z, cam.eye[0], cam.eye[2]);
+        for (int k = 0; k < 3; ++k) {
+            ps->cams[c][0][k] = cam.eye[k] + (k == 1 ? lift : 0.0);
+            ps->cams[c][1][k] = cam.target[k] + (k == 1 ? lift : 0.0);
+        }
+    }
+    scene.field.cells_x = bs.cells_x;
+    scene.field.cells_z = bs.cells_z;
+    scene.field.base_transform[12] += bs.first_x * cs;
+    scene.field.base_transform[14] += bs.first_z * cs;
+    double* m = scene.field.maps.cell_to_map;
+    m[0] = 1.0 / full_x, m[1] = 0.0, m[2] = 0.0, m[3] = 1.0 / full_z;
+    m[4] = double(bs.first_x) / full_x, m[5] = double(bs.first_z) / full_z;
+    scene.patch.blade_count = bs.blade_count;
+    if (bs.width_max > 0.0f) scene.patch.width_min = bs.width_min, scene.patch.width_max = bs.width_max;
+    // The hills scene draws no ground (the host's ground is flat); with the bench's
+    // sparse blades the sky showed through the grass, so the flat ground at y = 0, under
+    // the hills, shows as soil behind it instead.
+    scene.ground = true;
+    if (!scene.density_texels.empty()) {
+        *error = std::string(bs.name) + ": the bench reads density through the map stack only";
+        return false;
+    }
+    return true;
+}
+
+// One setup to render: a preset, or (--sweep) DEFAULT with one knob changed.
+struct Variant {
+    grass_quality_desc q;
+    int level = GRASS_QUALITY_DEFAULT; // the preset's level; a sweep's variants: DEFAULT's
+    std::string name;                  // Row::preset and the progress line
+    std::string file;                  // images: <scene>-<camera>-<backend>-<file>.png
+    std::string knob, value;           // the sweep's columns ("preset" and the level's name for a preset)
+};
+
+Variant preset_variant(int level) {
+    Variant v;
+    v.q = grass_quality_preset(grass_quality_level(level));
+    v.level = level;
+    v.name = v.file = v.value = kLevelNames[level];
+    v.knob = "preset";
+    return v;
+}
+
+// The reference's image and frame time per camera, of one scene and backend: what the
+// other frames of that scene and backend are measured against.
+struct Reference {
+    grass_host::Image image[4];
+    double ms[4] = {0, 0, 0, 0};
+};
+
+// Renders one variant of one scene on one backend: a host with the variant's sample count,
+// a context, a field made with grass_apply_quality, then every selected camera (one
+// warm-up and opt.frames timed frames each). The reference preset's frames go into *ref;
+// every other frame is measured against them. Appends a row per camera; a failed frame is
+// reported and sets *status to 1; false (with *error) when the run cannot go on.
+bool render_variant(const Options& opt, grass_backend backend, const PreparedScene& ps, const Variant& v, Reference* ref,
+                    std::chrono::steady_clock::time_point t_start, std::vector<Row>* rows, int* status,
+                    std::string* error) {
+    const char* be = grass_sample::backend_name(backend);
+    const BenchScene& bs = *ps.bench;
+    const grass_sample::Scene& scene = ps.scene;
+    const grass_quality_desc& q = v.q;
+    grass_host::TargetDesc td = grass_sample::target_desc(scene);
+    td.width = opt.width;
+    td.height = opt.height;
+    td.samples = q.msaa_samples;
+    auto host = grass_host::Host::create(backend, td, error);
+    if (!host) {
+        *error = std::string("cannot create the ") + be + " host: " + *error;
+        return false;
+    }
+    grass_context_desc cd = grass_default_context_desc();
+    cd.log_fn = grass_sample::log_to_stderr;
+    cd.cache_directory = opt.cache.c_str();
+    grass_context* ctx = nullptr;
+    const grass_result created = host->create_context(cd, &ctx);
+    if (created != GRASS_SUCCESS) {
+        *error = std::string("grass_create_context failed: ") + grass_result_string(created);
+        return false;
+    }
+    grass_patch_desc pd = scene.patch;
+    std::vector<grass_tier_desc> tiers;
+    std::vector<grass_lod_test> tests;
+    if (!lod_setup(ctx, q, scene, &pd, &tiers, &tests, error)) {
+        grass_destroy_context(ctx);
+        return false;
+    }
+    const auto t_field = std::chrono::steady_clock::now();
+    grass_patch_id patch{};
+    grass_field_desc fd = scene.field;
+    const char* call = "grass_create_patch";
+    grass_result r = grass_create_patch(ctx, &pd, &patch);
+    if (r == GRASS_SUCCESS) {
+        call = "grass_create_map";
+        r = grass_sample::create_scene_maps(ctx, scene, &fd.maps);
+    }
+    fd.patch = patch;
+    fd.tiers = tiers.data();
+    fd.tier_count = uint32_t(tiers.size());
+    fd.lod_tests = tests.data();
+    fd.lod_test_count = uint32_t(tests.size());
+    grass_field_id field{};
+    if (r == GRASS_SUCCESS) {
+        call = "grass_create_field";
+        r = grass_create_field(ctx, &fd, &field);
+    }
+    const double field_ms = seconds_since(t_field) * 1e3;
+    if (r != GRASS_SUCCESS) {
+        const std::string e = grass_last_error(ctx);
+        grass_destroy_context(ctx);
+        *error = std::string(bs.name) + ", " + v.name + ": the field was refused: " + call + " failed: " +
+                 grass_result_string(r) + " (" + e + ")";
+        return false;
+    }
+    for (const int ci : opt.cameras) {
+        grass_view_desc view = grass_host::make_view(*host, ps.cams[ci][0], ps.cams[ci][1], scene.fov_degrees, 0.05f,
+                                                     scene.far_m);
+        grass_sample::apply_light(scene, &view);
+        Row row;
+        row.scene = bs.name;
+        row.camera = bs.cameras[ci].name;
+        row.backend = be;
+        row.preset = v.name;
+        row.knob = v.knob;
+        row.value = v.value;
+        row.level = v.level;
+        row.msaa = q.msaa_samples;
+        row.blades = pd.blade_count;
+        row.subdivisions = pd.subdivisions;
+        row.field_ms = field_ms;
+        grass_host::Image image;
+        std::vector<double> wall, plan, gpu[GRASS_TIER_KIND_COUNT];
+        grass_frame_stats stats{};
+        for (int f = 0; f <= opt.frames && r == GRASS_SUCCESS; ++f) {
+            grass_host::Image* dst = f == 0 ? &image : nullptr;
+            grass_host::Image scratch;
+            const auto f0 = std::chrono::steady_clock::now();
+            r = host->render(ctx, view, nullptr, dst ? dst : &scratch, error);
+            const double ms = seconds_since(f0) * 1e3;
+            if (r == GRASS_SUCCESS) grass_sample::check(grass_get_frame_stats(ctx, &stats), "grass_get_frame_stats", ctx);
+            if (f == 0) continue; // the warm-up: uploads, first use of the pipelines
+            wall.push_back(ms);
+            plan.push_back(stats.plan_ms);
+            double g[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
+            grass_bool available = 0;
+            grass_sample::check(grass_get_tier_gpu_ms(ctx, g, &available), "grass_get_tier_gpu_ms", ctx);
+            if (available) {
+                for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) gpu[t].push_back(g[t]);
+            }
+        }
+        if (r != GRASS_SUCCESS) {
+            std::fprintf(stderr, "grass-measure bench: %s %s %s %s: rendering failed: %s (%s) %s\n", bs.name, row.camera.c_str(), be,
+                         row.preset.c_str(), grass_result_string(r), grass_last_error(ctx), error->c_str());
+            *status = 1;
+            r = GRASS_SUCCESS;
+            continue;
+        }
+        row.frame_ms = median(wall);
+        row.frame_min_ms = *std::min_element(wall.begin(), wall.end());
+        row.plan_ms = median(plan);
+        row.gpu_available = !gpu[0].empty();
+        for (int t = 0; t < GRASS_TIER_KIND_COUNT && row.gpu_available; ++t) row.gpu_ms[t] = median(gpu[t]);
+        row.triangles = stats.triangles;
+        for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) row.instances[t] = stats.instances[t];
+        const std::string stem = opt.out + "/images/" + bs.name + "-" + row.camera + "-" + be + "-" + v.file;
+        if (!grass_host::write_png(stem + ".png", image, error)) {
+            grass_destroy_context(ctx);
+            return false;
+        }
+        if (v.level == GRASS_QUALITY_REFERENCE) {
+            ref->image[ci] = image;
+            ref->ms[ci] = row.frame_ms;
+        } else if (!ref->image[ci].rgba.empty()) {
+            const auto& reference = ref->image[ci];
+            row.ratio = row.frame_ms / ref->ms[ci];
+            row.ssim = grass_bench::ssim_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height);
+            row.psnr = grass_bench::psnr_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height);
+            grass_host::Image diff;
+            diff.width = image.width;
+            diff.height = image.height;
+            diff.rgba = grass_bench::difference_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height, 4.0);
+            if (!grass_host::write_png(stem + "-error.png", diff, error)) {
+                grass_destroy_context(ctx);
+                return false;
+            }
+        }
+        std::fprintf(stderr,
+                     "[%6.0f s] %-8s %-7s %s %-9s frame %8.1f ms (x%.3f) plan %6.2f ms  gpu %s  SSIM %.4f  PSNR %s  "
+                     "%llu triangles\n",
+                     seconds_since(t_start), bs.name, row.camera.c_str(), be, row.preset.c_str(), row.frame_ms, row.ratio,
+                     row.plan_ms, gpu_text(row, -1).c_str(), row.ssim, psnr_text(row.psnr).c_str(),
+                     static_cast<unsigned long long>(row.triangles));
+        rows->push_back(row);
+    }
+    if (host->validation_messages() != 0) {
+        std::fprintf(stderr, "grass-measure bench: %u validation messages:\n%s\n", host->validation_messages(),
+                     host->validation_log().c_str());
+        *status = 1;
+    }
+    grass_destroy_context(ctx);
+    return true;
+}
+
+// ---- --sweep: one knob at a time from DEFAULT ---------------------------------------------
+
+// The sweep's setups: the reference (what every frame is measured against), DEFAULT (the
+// baseline), then for each knob of grass_quality_desc but blades_everywhere a few values
+// around DEFAULT's within the knob's range (grass.h), the other knobs at DEFAULT's. A value
+// equal to DEFAULT's is left out (the baseline row has it).
+std::vector<Variant> sweep_variants() {
+    const grass_quality_desc base = grass_quality_preset(GRASS_QUALITY_DEFAULT);
+    std::vector<Variant> v = {preset_variant(GRASS_QUALITY_REFERENCE), preset_variant(GRASS_QUALITY_DEFAULT)};
+    struct Knob {
+        const char* name;
+        std::vector<double> values;
+        double current;
+        void (*set)(grass_quality_desc*, double);
+    };
+    const Knob knobs[] = {
+        {"distance_scale", {0.5, 2.0}, base.distance_scale, [](grass_quality_desc* q, double x) { q->distance_scale = float(x); }},
+        {"transition_scale", {0.0, 0.5, 1.2}, base.transition_scale,
+         [](grass_quality_desc* q, double x) { q->transition_scale = float(x); }},
+        {"slice_scale", {0.5, 2.0}, base.slice_scale, [](grass_quality_desc* q, double x) { q->slice_scale = float(x); }},
+        {"macro_cell_scale", {0.5, 2.0}, base.macro_cell_scale,
+         [](grass_quality_desc* q, double x) { q->macro_cell_scale = float(x); }},
+        {"blade_subdivisions", {2, 8}, double(base.blade_subdivisions),
+         [](grass_quality_desc* q, double x) { q->blade_subdivisions = uint32_t(x); }},
+        {"blade_fraction", {0.5, 0.75}, base.blade_fraction, [](grass_quality_desc* q, double x) { q->blade_fraction = float(x); }},
+        // Not 2: the headless hosts are meant for 1 or 4 samples (headless_host.hpp), and on
+        // llvmpipe a 2-sample target renders the very image of DEFAULT's 4.
+        {"msaa_samples", {1}, double(base.msaa_samples), [](grass_quality_desc* q, double x) { q->msaa_samples = uint32_t(x); }},
+    };
+    for (const Knob& k : knobs) {
+        for (const double x : k.values) {
+            if (float(x) == float(k.current)) continue;
+            Variant s;
+            s.q = base;
+            k.set(&s.q, x);
+            s.level = GRASS_QUALITY_DEFAULT;
+            s.knob = k.name;
+            s.value = fmt("%g", x);
+            s.name = s.knob + "=" + s.value;
+            s.file = "sweep-" + s.knob + "-" + s.value;
+            v.push_back(s);
+        }
+    }
+    return v;
+}
+
+// The DEFAULT row of r's backend, scene and camera; null when that frame failed.
+
+// The scene or camera called `name` (kScenes' names, kScenes[0]'s camera names); -1 for none.
+int scene_index(const std::string& name) {
+    for (int s = 0; s < kSceneCount; ++s)
+        if (name == kScenes[s].name) return s;
+    return -1;
+}
+int camera_index(const std::string& name) {
+    for (int c = 0; c < 4; ++c)
+        if (name == kScenes[0].cameras[c].name) return c;
+    return -1;
+}
+
+// A repeatable option naming a scene or camera (`index` finds the name; `list` the names for
+// the error): each name's index appended to *out.
+void add_names_option(CLI::App& app, const std::string& option, int (*index)(const std::string&), const char* what,
+                      const char* list, const std::string& help, std::vector<int>* out) {
+    const CLI::Validator is_name(
+        [index, what, list](std::string& text) {
+            return index(text) >= 0 ? std::string()
+                                    : "unknown " + std::string(what) + " \"" + text + "\" (" + list + ")";
+        },
+        what);
+    app.add_option_function<std::string>(
+           option, [index, out](const std::string& name) { out->push_back(index(name)); }, help)
+        ->check(is_name)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+        ->trigger_on_parse();
+}
+
+int run(Options opt, bool quick) {
+    if (quick || opt.sweep) {
+        if (opt.scenes.empty()) opt.scenes = {0};
+        if (opt.cameras.empty()) opt.cameras = {1};
+    }
+    if (opt.scenes.empty())
+        for (int s = 0; s < kSceneCount; ++s) opt.scenes.push_back(s);
+    if (opt.cameras.empty()) opt.cameras = {0, 1, 2, 3};
+    if (opt.cache.empty()) opt.cache = opt.out + "/cache";
+    const std::string docs = opt.docs.empty() ? opt.out : opt.docs;
+    if (!grass_sample::make_dirs(opt.out + "/images") || !grass_sample::make_dirs(opt.cache) || !grass_sample::make_dirs(docs)) {
+        throw grass_sample::Failure("cannot create " + opt.out + ", " + opt.cache + " or " + docs);
+    }
+
+    std::vector<Variant> variants;
+    if (opt.sweep) {
+        variants = sweep_variants();
+    } else {
+        for (int level = 0; level < GRASS_QUALITY_LEVEL_COUNT; ++level) variants.push_back(preset_variant(level));
+    }
+    const auto t_start = std::chrono::steady_clock::now();
+    std::vector<Row> rows;
+    int status = 0;
+    for (const grass_backend backend : opt.backends) {
+        for (const int si : opt.scenes) {
+            PreparedScene ps;
+            std::string error;
+            if (!prepare_scene(opt, kScenes[si], &ps, &error)) throw grass_sample::Failure(error);
+            // The reference comes first (variants[0]): every other frame is measured against it.
+            Reference reference;
+            for (const Variant& v : variants) {
+                if (!render_variant(opt, backend, ps, v, &reference, t_start, &rows, &status, &error)) {
+                    throw grass_sample::Failure(error);
+                }
+            }
+        }
+    }
+    auto scene_rank = [&](const Row& r) {
+        int s = 0, c = 0;
+        for (int k = 0; k < kSceneCount; ++k)
+            if (r.scene == kScenes[k].name) s = k;
+        for (int k = 0; k < 4; ++k)
+            if (r.camera == kScenes[0].cameras[k].name) c = k;
+        return s * 4 + c;
+    };
+    if (opt.sweep) {
+        // Rows in the order backend, scene, camera, then the sweep's order.
+        auto rank = [&](const Row& r) { return (r.backend == "vk") * kSceneCount * 4 + scene_rank(r); };
+        std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) { return rank(a) < rank(b); });
+        const double total_s = seconds_since(t_start);
+        const std::string md = sweep_markdown(rows, opt, total_s);
+        if (!grass_sample::write_text(docs + "/sweep.csv", sweep_csv(rows, opt)) || !grass_sample::write_text(docs + "/sweep.md", md)) {
+            throw grass_sample::Failure("cannot write into " + docs);
+        }
+        std::printf("%s\ngrass-bench: %zu frames in %.0f s; wrote %s/sweep.csv, sweep.md; images in %s/images\n", md.c_str(),
+                    rows.size(), total_s, docs.c_str(), opt.out.c_str());
+        return status;
+    }
+    // Rows in the order scene, camera, backend, preset.
+    auto rank = [&](const Row& r) {
+        return (scene_rank(r) * 2 + (r.backend == "vk")) * GRASS_QUALITY_LEVEL_COUNT + r.level;
+    };
+    std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) { return rank(a) < rank(b); });
+    const double total_s = seconds_since(t_start);
+    const std::string md = markdown(rows, opt, total_s);
+    if (!grass_sample::write_text(docs + "/bench.csv", csv(rows, opt)) || !grass_sample::write_text(docs + "/bench.md", md) ||
+        !grass_sample::write_text(docs + "/cost-vs-error.svg", svg(rows))) {
+        throw grass_sample::Failure("cannot write into " + docs);
+    }
+    std::printf("%s\ngrass-bench: %zu frames in %.0f s; wrote %s/bench.csv, bench.md, cost-vs-error.svg; images in %s/images\n",
+                md.c_str(), rows.size(), total_s, docs.c_str(), opt.out.c_str());
+    return status;
+}
+
+} // namespace
+} // namespace bench
+
+Subcommand add_bench(CLI::App& measure) {
+    auto o = std::make_shared<bench::Options>();
+    auto quick = std::make_shared<bool>(false);
+    CLI::App* app = measure.add_subcommand(
+        "bench", "Frame cost and image error of every quality preset against the reference (blades everywhere), "
+                 "per scene, camera and backend; writes every frame, a CSV, a Markdown table and an SVG plot "
+                 "(docs/quality.md).");
+    app->add_option_function<std::string>(
+           "--backend",
+           [o](const std::string& b) {
+               grass_backend one = GRASS_BACKEND_GL;
+               if (grass_sample::parse_backend(b, &one)) o->backends = {one};
+               else o->backends = {GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN};
+           },
+           "backends: gl, vk or both")
+        ->check(CLI::Validator(
+            [](std::string& b) {
+                grass_backend one;
+                return grass_sample::parse_backend(b, &one) || b == "both"
+                           ? std::string()
+                           : "\"" + b + "\" is not a backend (gl, vk or both)";
+            },
+            "gl|vk|both"))
+        ->default_str("both");
+    bench::add_names_option(*app, "--scene", bench::scene_index, "scene", "football, park, hills",
+                            "football, park or hills (repeatable; default all)", &o->scenes);
+    bench::add_names_option(*app, "--camera", bench::camera_index, "camera", "high, player, ant, grazing",
+                            "high, player, ant or grazing (repeatable; default all)", &o->cameras);
+    app->add_flag("--quick", *quick, "one scene and one camera (football, player): a smoke run");
+    app->add_flag("--sweep", o->sweep,
+                  "instead of the presets: DEFAULT with one knob at a time changed (a few values each around "
+                  "DEFAULT's), the REFERENCE and DEFAULT presets as yardsticks; writes sweep.csv and sweep.md (not "
+                  "bench.*). Without --scene/--camera: football, player");
+    app->add_option("--frames", o->frames, "timed frames per preset after one warm-up (median)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 100));
+    grass_sample::add_size_option(*app, &o->width, &o->height, 16, 4096, "image size");
+    app->add_option("--out", o->out, "every frame and difference image")->capture_default_str();
+    app->add_option("--docs", o->docs, "bench.csv, bench.md and cost-vs-error.svg (default: --out)");
+    app->add_option("--scenes", o->scene_dir, "the scene files")->capture_default_str();
+    app->add_option("--cache", o->cache, "baked-slice cache (default OUT/cache)");
+    return {app, [o, quick]() { return bench::run(*o, *quick); }};
+}
+
+} // namespace grass_measure

@@ -1,0 +1,83 @@
+// grass-measure bench: the speed/accuracy trade of the quality presets (docs/quality.md).
+//
+// For each scene (the football field, the park, the hills; reduced for the bench, see
+// kScenes) x camera (high, player height, ant, grazing) x backend, it renders every preset of
+// grass_quality_preset(): the REFERENCE first (blades everywhere), then the others, each on a
+// target with the preset's MSAA sample count. Per frame it measures the wall time of a
+// rendered and read-back frame (median of --frames frames after one warm-up), the plan time
+// (grass_frame_stats.plan_ms, median), the GPU time per tier where the driver has timer
+// queries (grass_get_tier_gpu_ms), and the image error against the reference of the same
+// scene, camera and backend: SSIM on luma (Wang et al. 2004) and PSNR on the sRGB channels.
+// It writes each frame and an amplified difference image into --out, and a CSV, a Markdown
+// table (also printed) and an SVG plot of cost ratio against 1 - SSIM into --docs (or --out).
+//
+// --sweep renders, instead of the presets, DEFAULT with one knob of grass_quality_desc changed at a
+// time (a few values each around DEFAULT's, the others at DEFAULT's; see sweep_variants), after
+// the REFERENCE and DEFAULT presets themselves, for football / player unless --scene/--camera
+// say otherwise. Each row is measured as the presets' are (against the reference's image of the
+// same frame) and set against DEFAULT's row: cost / DEFAULT and the change of 1 - SSIM. It
+// writes sweep.csv and a Markdown table sweep.md (also printed) into --docs (or --out), leaving
+// bench.* alone.
+#pragma once
+
+#include <grass/grass.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace grass_measure {
+namespace bench {
+
+extern const char* const kLevelNames[GRASS_QUALITY_LEVEL_COUNT];
+
+struct Options {
+    std::vector<grass_backend> backends = {GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN};
+    std::vector<int> scenes;   // indices into kScenes; empty = all
+    std::vector<int> cameras;  // 0..3; empty = all
+    std::string scene_dir = GRASS_SCENE_DIR;
+    std::string out = "grass-bench-out";
+    std::string docs;          // CSV, Markdown and SVG here; empty: into --out
+    std::string cache;         // slice cache; empty: <out>/cache
+    uint32_t width = 320, height = 180;
+    int frames = 3;
+    bool sweep = false;        // --sweep: one knob at a time from DEFAULT instead of the presets
+};
+
+struct Row {
+    std::string scene, camera, backend, preset;
+    std::string knob, value; // --sweep: the knob changed from DEFAULT and its value ("preset", level name)
+    int level = 0;
+    uint32_t msaa = 1, blades = 0, subdivisions = 0;
+    double field_ms = 0, frame_ms = 0, frame_min_ms = 0, ratio = 1, plan_ms = 0;
+    bool gpu_available = false;
+    double gpu_ms[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
+    double ssim = 1, psnr = std::numeric_limits<double>::infinity();
+    uint64_t triangles = 0, instances[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
+    double gpu_total() const { return gpu_ms[0] + gpu_ms[1] + gpu_ms[2]; }
+};
+
+inline std::string fmt(const char* f, double v) {
+    char b[64];
+    std::snprintf(b, sizeof(b), f, v);
+    return b;
+}
+inline std::string psnr_text(double p) { return std::isinf(p) ? "inf" : fmt("%.2f", p); }
+inline std::string gpu_text(const Row& r, int tier) {
+    if (!r.gpu_available) return "n/a";
+    return fmt("%.2f", tier < 0 ? r.gpu_total() : r.gpu_ms[tier]);
+}
+
+// The reports (bench_report.cpp): the presets' CSV, Markdown table and SVG plot of cost
+// against error, and --sweep's CSV and Markdown table. total_s: the run's duration.
+std::string csv(const std::vector<Row>& rows, const Options& o);
+std::string markdown(const std::vector<Row>& rows, const Options& o, double total_s);
+std::string svg(const std::vector<Row>& rows);
+std::string sweep_csv(const std::vector<Row>& rows, const Options& o);
+std::string sweep_markdown(const std::vector<Row>& rows, const Options& o, double total_s);
+
+} // namespace bench
+} // namespace grass_measure

@@ -1,0 +1,140 @@
+// grass-measure tier-cost: the frame cost of each tier per basic cell (the analogues of lemme2012
+// Tables 7.1 and 7.2), measured in one run: 1024 cells (32 x 32 of 0.25 m) drawn by each
+// tier alone, then by the volume (8 slices) and image tiers in macro-cells of 1, 2, 4, 8 and
+// 16 cells a side. Wall time of a rendered and read-back frame, median of 5, minus the
+// same frame with no grass; per basic cell. Prints a Markdown table.
+// --maps: instead, the cost of each design map (docs/feature-cost.md). For each tier alone
+// (geometry, volume 8 slices, image; single cells), the plain field (no maps), then the same
+// field with each map alone (density all 1, colour with alpha 0.3, ambient, diffuse, height:
+// a ramp along x, height scale 1 cell), then all five, then the plain field again (the
+// run's noise). The rows are drawn in --rounds rounds (default 3), each drawing every row
+// once with --frames frames after one that uploads, so that a load that comes and goes on
+// the machine falls on all rows alike; per row, the median and the fastest of the pooled
+// frames minus those of the empty frame (measured in each round too), their ratios to the
+// plain field, and the GPU memory the context holds (grass_get_memory_stats) with that
+// field and its maps alive. Maps are 128 x 128 texels (4 per cell), made for each field and
+// destroyed with it.
+// --features: instead, the cost of the other optional features, measured as --maps measures
+// the maps (rounds, rows interleaved, the same columns plus the CPU time of the frame plan).
+// For each tier alone (as --maps): the plain field with every optional feature off (no
+// mirror tiling, transition window 0, no maps, one grass type), then with mirror tiling;
+// then a transition zone: the field gets a second tier, the next cheaper one (geometry with
+// volume 8 slices, volume 8 slices with image, image with volume 1 slice, the finer of the
+// two nearer), and the two distance bands overlap in a zone 2 m wider each side than the
+// field's distances from the camera, so both tiers draw every cell, each its share of the
+// blades (boulanger2006 3.4); then the same with the default transition window (0.05; the
+// tool's target is single-sampled, so the crossover stays exact and only the shaders'
+// work shows); then a second grass type (same patch, tier and lod tests, density 1, chained
+// from grass_field_desc.next); then all five maps (as --maps); then the plain field again.
+// Each row's field has a patch of its own, made and destroyed with it, so that its GPU memory
+// holds the baked slices its tiers need (the transition rows: the second tier's too) and no
+// more; frames of the largest row before the table size the context's instance buffers
+// (which keep their largest size) for every row, and each row's memory is read at least 2
+// frames after its upload (Vulkan frees what the GPU may still read 2 frames late).
+// --frames N: frames measured per row (after one that uploads); default 5 (median).
+// Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features] [--frames N] [--rounds N]
+#pragma once
+
+#include <grass/grass.h>
+
+#include "headless_host.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace grass_measure {
+namespace tier_cost {
+
+struct Options {
+    grass_backend backend = GRASS_BACKEND_GL;
+    uint32_t width = 320, height = 240;
+    bool maps = false, features = false;
+    int frames = 5;
+    int rounds = 3; // --maps and --features only
+};
+
+// One tier drawn alone: its kind, slices and largest macro-cell side (1 = single cells).
+struct Setup {
+    const char* name;
+    grass_tier_kind kind;
+    uint32_t slices;
+    uint32_t macro;
+};
+
+// The tiers of the --maps and --features tables, single cells each.
+extern const Setup kSingleTiers[3];
+
+constexpr uint32_t kCells = 32;       // the field's cells a side (of the default 0.25 m)
+constexpr uint32_t kMapSize = 128;    // texels a side of --maps' maps, over the field
+
+// The maps of one row of the --maps table: a bit per map role, as GRASS_FEATURES.
+enum MapBits : uint32_t { kDensity = 1, kColor = 2, kAmbient = 4, kDiffuse = 8, kHeight = 16, kAll = 31 };
+
+// The run's host, grass context (with one default patch) and camera: the whole 8 m x 8 m
+// field in view, seen at 30 degrees from 9 m away. Every grass call is checked (a failure
+// throws grass_sample::Failure).
+class Rig {
+public:
+    explicit Rig(const Options& options);
+    ~Rig();
+    Rig(const Rig&) = delete;
+    Rig& operator=(const Rig&) = delete;
+
+    const Options& options() const { return options_; }
+    grass_host::Host& host() { return *host_; }
+    grass_context* ctx() { return ctx_; }
+    grass_patch_id patch() const { return patch_; }
+    const double* eye() const { return eye_; }
+    // The median frame with no grass, measured when the rig was made.
+    double empty_ms() const { return empty_ms_; }
+
+    // The wall times of `count` frames after one that uploads (and compiles); with plan_ms,
+    // also each measured frame's plan time (grass_frame_stats.plan_ms).
+    std::vector<double> frame_times(int count, std::vector<double>* plan_ms = nullptr);
+    grass_frame_stats frame_stats();
+    grass_memory_stats memory_stats();
+
+    // Destroys the context; the exit status: 1 if the host's validation layers spoke during
+    // the run (their log on stderr), else 0.
+    int finish();
+
+private:
+    const Options options_;
+    std::unique_ptr<grass_host::Host> host_;
+    grass_context* ctx_ = nullptr;
+    grass_patch_id patch_{};
+    const double eye_[3] = {4.0, 4.5, -4.0}, look_[3] = {4.0, 0.0, 4.0};
+    grass_view_desc view_{};
+    double empty_ms_ = 0.0;
+};
+
+// A field of the 32 x 32 cells with one tier drawn alone at every distance.
+struct TierField {
+    grass_tier_desc tier{};
+    grass_lod_test tests[2] = {};
+    grass_field_desc desc{};
+    TierField(const Setup& s, grass_patch_id patch);
+    TierField(const TierField&) = delete; // desc points into the object
+};
+
+// Appends the lod tests of tier `tier` (single cells, as `s`) drawn between begin and end
+// metres with the given transition widths; returns the count appended.
+uint32_t band_tests(const Setup& s, uint32_t tier, float begin, float end, float in, float out, grass_lod_test* tests);
+
+// Creates the maps of `bits` into `stack` (ids appended to `made`).
+void make_maps(grass_context* ctx, uint32_t bits, double cell_size, grass_map_stack* stack,
+               std::vector<grass_map_id>* made);
+
+// A row's frame times minus the empty frame's: median and fastest.
+struct Cost {
+    double median, fastest;
+};
+Cost cost(const std::vector<double>& times, const std::vector<double>& empties);
+
+int run_plain(Rig& rig);    // tier_cost_plain.cpp
+int run_maps(Rig& rig);     // tier_cost_maps.cpp
+int run_features(Rig& rig); // tier_cost_features.cpp
+
+} // namespace tier_cost
+} // namespace grass_measure

@@ -1,0 +1,37 @@
+# The sample tools' command lines (ctest sample_cli): every tool and subcommand answers
+# --help with its usage and exit 0, and refuses an unknown option and a bad --backend value
+# with exit 2 and an error that names the option and the value. Nothing is rendered.
+#   cmake -DRENDER=<grass-render> -DMEASURE=<grass-measure> -P cli_test.cmake
+set(failures 0)
+
+function(expect name expected_rc regex)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(text "${out}${err}")
+  if(NOT rc STREQUAL "${expected_rc}")
+    message(SEND_ERROR "${name}: exit ${rc}, expected ${expected_rc}\n${text}")
+  elseif(NOT text MATCHES "${regex}")
+    message(SEND_ERROR "${name}: the output does not match \"${regex}\":\n${text}")
+  else()
+    message(STATUS "${name}: ok")
+  endif()
+endfunction()
+
+expect("grass-measure --help" 0 "Usage: grass-measure.*bench.*tier-cost.*popping" ${MEASURE} --help)
+expect("grass-measure without a subcommand" 2 "subcommand is required" ${MEASURE})
+expect("grass-measure with an unknown subcommand" 2 "not expected: frobnicate" ${MEASURE} frobnicate)
+
+set(tools "grass-render" "bench" "tier-cost" "popping")
+foreach(tool IN LISTS tools)
+  if(tool STREQUAL "grass-render")
+    set(command ${RENDER})
+    set(usage "Usage: grass-render")
+  else()
+    set(command ${MEASURE} ${tool})
+    set(usage "Usage: grass-measure ${tool}")
+  endif()
+  expect("${tool} --help" 0 "${usage}.*--backend" ${command} --help)
+  expect("${tool} --no-such-option" 2 "--no-such-option" ${command} --no-such-option)
+  expect("${tool} --backend dx" 2 "--backend: \"dx\" is not a backend" ${command} --backend dx)
+  expect("${tool} --backend without a value" 2 "--backend" ${command} --backend)
+  expect("${tool} --size 10" 2 "--size: \"10\" is not WxH" ${command} --size 10)
+endforeach()
