@@ -7,7 +7,7 @@ namespace grass_sample {
 
 // The median; the mean of the two middle values for an even count; NaN for none.
 double median(std::vector<double> v);
-// The upper of the two middle values for an even count (what grass-tier-cost reports).
+// The upper of the two middle values for an even count (what grass-measure tier-cost reports).
 double median_high(std::vector<double> v);
 // The smallest value: the fastest of a set of frame times.
 double fastest(const std::vector<double>& v);

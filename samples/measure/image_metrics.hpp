@@ -1,4 +1,4 @@
-// Image error metrics of grass-bench: SSIM (Wang, Bovik, Sheikh, Simoncelli 2004, "Image
+// Image error metrics of grass-measure bench: SSIM (Wang, Bovik, Sheikh, Simoncelli 2004, "Image
 // quality assessment: from error visibility to structural similarity", with its reference
 // parameters) on luma, PSNR on the 8-bit sRGB channels, and an amplified difference image.
 // Images are RGBA8, sRGB-encoded, top row first (grass_host::Image's layout); alpha is
