@@ -224,7 +224,7 @@ bool lod_setup(grass_context* ctx, const grass_quality_desc& q, const grass_rend
     tests->assign(GRASS_MAX_LOD_TESTS, grass_lod_test{});
     uint32_t tc = 0, lc = 0;
     if (grass_apply_quality(ctx, &q, s.field.cell_size, patch, tiers->data(), &tc, tests->data(), &lc) != GRASS_SUCCESS) {
-        *error = std::string("grass_apply_quality: ") + grass_last_error(ctx);
+        *error = std::string("grass_apply_quality: ") + grass_get_last_error(ctx);
         return false;
     }
     tiers->resize(tc);
@@ -565,7 +565,7 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
     if (r == GRASS_SUCCESS) r = grass_create_field(ctx, &fd, &field);
     const double field_ms = seconds_since(t_field) * 1e3;
     if (r != GRASS_SUCCESS) {
-        const std::string e = grass_last_error(ctx);
+        const std::string e = grass_get_last_error(ctx);
         grass_destroy_context(ctx);
         *error = std::string(bs.name) + ", " + v.name + ": the field was refused: " + e;
         return false;
@@ -609,7 +609,7 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
         }
         if (r != GRASS_SUCCESS) {
             std::fprintf(stderr, "grass-bench: %s %s %s %s: rendering failed: %s (%s) %s\n", bs.name, row.camera.c_str(), be,
-                         row.preset.c_str(), grass_result_string(r), grass_last_error(ctx), error->c_str());
+                         row.preset.c_str(), grass_result_string(r), grass_get_last_error(ctx), error->c_str());
             *status = 1;
             r = GRASS_SUCCESS;
             continue;

@@ -81,7 +81,7 @@ bool make_maps(grass_context* ctx, uint32_t bits, double cell_size, grass_map_st
         md.width = md.height = n;
         md.format = format;
         if (grass_create_map(ctx, &md, id) != GRASS_SUCCESS) {
-            std::fprintf(stderr, "grass-tier-cost: %s\n", grass_last_error(ctx));
+            std::fprintf(stderr, "grass-tier-cost: %s\n", grass_get_last_error(ctx));
             return false;
         }
         made->push_back(*id);
@@ -278,7 +278,7 @@ int main(int argc, char** argv) {
                     if (!make_maps(ctx, rows[r].maps, fd.cell_size, &fd.maps, &made)) return 1;
                     grass_field_id field{};
                     if (grass_create_field(ctx, &fd, &field) != GRASS_SUCCESS) {
-                        std::fprintf(stderr, "grass-tier-cost: %s\n", grass_last_error(ctx));
+                        std::fprintf(stderr, "grass-tier-cost: %s\n", grass_get_last_error(ctx));
                         return 1;
                     }
                     for (double t : frame_times(frames)) times[r].push_back(t);
@@ -373,7 +373,7 @@ int main(int argc, char** argv) {
                 test_count += band_tests(coarser, 1, zone_begin, INFINITY, width, 0.0f, tests + test_count);
             }
             if (grass_create_patch(ctx, &pd, &row->patch) != GRASS_SUCCESS) {
-                std::fprintf(stderr, "grass-tier-cost: %s\n", grass_last_error(ctx));
+                std::fprintf(stderr, "grass-tier-cost: %s\n", grass_get_last_error(ctx));
                 return false;
             }
             grass_field_desc fd = grass_default_field_desc();
@@ -399,7 +399,7 @@ int main(int argc, char** argv) {
                 return false;
             }
             if (grass_create_field(ctx, &fd, &row->field) != GRASS_SUCCESS) {
-                std::fprintf(stderr, "grass-tier-cost: %s\n", grass_last_error(ctx));
+                std::fprintf(stderr, "grass-tier-cost: %s\n", grass_get_last_error(ctx));
                 destroy_row(*row);
                 return false;
             }
@@ -509,7 +509,7 @@ int main(int argc, char** argv) {
         fd.lod_test_count = s.kind == GRASS_TIER_GEOMETRY ? 1 : 2;
         grass_field_id field{};
         if (grass_create_field(ctx, &fd, &field) != GRASS_SUCCESS) {
-            std::fprintf(stderr, "grass-tier-cost: %s\n", grass_last_error(ctx));
+            std::fprintf(stderr, "grass-tier-cost: %s\n", grass_get_last_error(ctx));
             return 1;
         }
         const double ms = frame_ms();
