@@ -37,7 +37,9 @@
  *     header version: an older program gets the fields it knows of and nothing past them.
  *     grass_lod_node, which the library fills for a lod test callback, also only grows at
  *     the end: a callback reads the fields it knows of.
- *   - Array lengths in the API (GRASS_TIER_KIND_COUNT, GRASS_MAX_*) do not change.
+ *   - The array lengths the library writes to (GRASS_TIER_KIND_COUNT, GRASS_MAX_TIERS,
+ *     GRASS_MAX_LOD_TESTS, GRASS_DEFAULT_TIER_COUNT, GRASS_DEFAULT_LOD_TEST_COUNT) do not
+ *     change.
  *   - Functions are only added; a renamed function keeps its old symbol for programs
  *     built against the older header, which no longer declares it.
  *   - The numeric values of enums, struct type tags and message ids never change.
