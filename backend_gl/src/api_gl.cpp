@@ -20,7 +20,7 @@ grass_result gl_backend_factory(grass_context* ctx, void* user_data, grass::Back
     if (grass::raw_enum(gl_desc->type) != GRASS_STRUCT_TYPE_GL_DESC) {
         return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                          "%s: gl_desc->type is 0x%08X, expected GRASS_STRUCT_TYPE_GL_DESC (0x%08X); fill it with "
-                         "grass_gl_default_desc()",
+                         "grass_default_gl_desc()",
                          kCreate, static_cast<unsigned>(grass::raw_enum(gl_desc->type)),
                          static_cast<unsigned>(GRASS_STRUCT_TYPE_GL_DESC));
     }
@@ -49,7 +49,7 @@ const char* creator_of(grass_backend kind) {
 
 extern "C" {
 
-GRASS_API grass_gl_desc grass_gl_default_desc(void) {
+GRASS_API grass_gl_desc grass_default_gl_desc(void) {
     grass_gl_desc desc{};
     desc.type = GRASS_STRUCT_TYPE_GL_DESC;
     return desc;

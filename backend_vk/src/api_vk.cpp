@@ -63,7 +63,7 @@ grass_result check_frame_call(grass_context* ctx, const char* function, VkBacken
 
 } // namespace
 
-grass_vk_desc grass_vk_default_desc(void) {
+grass_vk_desc grass_default_vk_desc(void) {
     grass_vk_desc d{};
     d.type = GRASS_STRUCT_TYPE_VK_DESC;
     d.sample_count = 1;
@@ -71,7 +71,7 @@ grass_vk_desc grass_vk_default_desc(void) {
     return d;
 }
 
-grass_vk_record_desc grass_vk_default_record_desc(void) {
+grass_vk_record_desc grass_default_vk_record_desc(void) {
     grass_vk_record_desc d{};
     d.type = GRASS_STRUCT_TYPE_VK_RECORD_DESC;
     return d;

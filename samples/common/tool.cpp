@@ -10,7 +10,7 @@ namespace grass_sample {
 void check(grass_result result, const char* call, const grass_context* ctx) {
     if (result == GRASS_SUCCESS) return;
     std::string message = std::string(call) + " failed: " + grass_result_string(result);
-    const char* last = ctx ? grass_last_error(ctx) : nullptr;
+    const char* last = ctx ? grass_get_last_error(ctx) : nullptr;
     if (last && *last) message += std::string(" (") + last + ")";
     throw Failure(message);
 }

@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     }
     if (r != GRASS_SUCCESS) {
         status = fail(std::string(scene_ready ? "rendering failed: " : "the scene was refused: ") + grass_result_string(r) +
-                      " (" + grass_last_error(ctx) + ")" + (error.empty() || error == grass_last_error(ctx) ? "" : " " + error));
+                      " (" + grass_get_last_error(ctx) + ")" + (error.empty() || error == grass_get_last_error(ctx) ? "" : " " + error));
     } else if (!grass_host::write_png(output, image, &error)) {
         status = fail(error);
     } else {

@@ -134,7 +134,8 @@ private:
     bool init_egl(std::string* error);
     void release_egl();
     bool init_osmesa(std::string* error);
-    static void* load_proc(void* user_data, const char* name);
+    grass_gl_proc proc(const char* name) const;
+    static grass_gl_proc load_proc(void* user_data, const char* name);
     bool load_functions(std::string* error);
     bool create_target(std::string* error);
     void clear_rect(const float color[4], float depth, const int32_t rect[4]);
@@ -305,14 +306,17 @@ bool GlHost::init_osmesa(std::string* error) {
     return true;
 }
 
-void* GlHost::gl_proc_address(const char* name) const {
-    if (path_ == Path::egl) return reinterpret_cast<void*>(eglGetProcAddress(name));
-    if (path_ == Path::osmesa) return reinterpret_cast<void*>(osmesa_get_proc_address_(name));
+// Loaders return function pointers, as grass_gl_get_proc_address_fn does: no cast.
+grass_gl_proc GlHost::proc(const char* name) const {
+    if (path_ == Path::egl) return eglGetProcAddress(name);
+    if (path_ == Path::osmesa) return osmesa_get_proc_address_(name);
     return nullptr;
 }
 
-void* GlHost::load_proc(void* user_data, const char* name) {
-    return static_cast<const GlHost*>(user_data)->gl_proc_address(name);
+void* GlHost::gl_proc_address(const char* name) const { return reinterpret_cast<void*>(proc(name)); }
+
+grass_gl_proc GlHost::load_proc(void* user_data, const char* name) {
+    return static_cast<const GlHost*>(user_data)->proc(name);
 }
 
 bool GlHost::load_functions(std::string* error) {
@@ -402,7 +406,7 @@ void GlHost::release_egl() {
 }
 
 grass_result GlHost::create_context(const grass_context_desc& desc, grass_context** out) {
-    grass_gl_desc gl_desc = grass_gl_default_desc();
+    grass_gl_desc gl_desc = grass_default_gl_desc();
     gl_desc.get_proc_address = &GlHost::load_proc;
     gl_desc.get_proc_address_user_data = this;
     return grass_gl_create_context(GRASS_HEADER_VERSION, &desc, &gl_desc, out);
@@ -514,7 +518,7 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
         if (result == GRASS_SUCCESS) result = end;
     }
     if (result != GRASS_SUCCESS) {
-        if (error) *error = grass_last_error(context);
+        if (error) *error = grass_get_last_error(context);
         gl_.Disable(GL_FRAMEBUFFER_SRGB);
         return result;
     }

@@ -756,7 +756,7 @@ void VkHost::draw_ground(VkCommandBuffer cmd, const grass_view_desc& view) {
 // ---- The grass context --------------------------------------------------------------------
 
 grass_result VkHost::create_context(const grass_context_desc& desc, grass_context** out) {
-    grass_vk_desc vk = grass_vk_default_desc();
+    grass_vk_desc vk = grass_default_vk_desc();
     vk.get_instance_proc_addr = (grass_vk_get_instance_proc_addr_fn)vkGetInstanceProcAddr;
     vk.instance = instance_;
     vk.physical_device = physical_device_;
@@ -936,7 +936,7 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     if (target_.ground) draw_ground(cmd_, view);
     if (occluder) clear_occluder(cmd_, view, *occluder);
     if (result == GRASS_SUCCESS) {
-        grass_vk_record_desc record = grass_vk_default_record_desc();
+        grass_vk_record_desc record = grass_default_vk_record_desc();
         record.command_buffer = cmd_;
         result = grass_vk_record(context, &record);
     }
@@ -960,7 +960,7 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     }
     if (r != VK_SUCCESS) return host_failure("vkQueueSubmit/vkWaitForFences", r);
     if (result != GRASS_SUCCESS) {
-        if (error) *error = grass_last_error(context);
+        if (error) *error = grass_get_last_error(context);
         return result;
     }
 

@@ -121,7 +121,7 @@ bool lod_setup(grass_context* ctx, const grass_quality_desc& q, const grass_samp
     uint32_t tc = 0, lc = 0;
     const grass_result r = grass_apply_quality(ctx, &q, s.field.cell_size, patch, tiers->data(), &tc, tests->data(), &lc);
     if (r != GRASS_SUCCESS) {
-        *error = std::string("grass_apply_quality failed: ") + grass_result_string(r) + " (" + grass_last_error(ctx) + ")";
+        *error = std::string("grass_apply_quality failed: ") + grass_result_string(r) + " (" + grass_get_last_error(ctx) + ")";
         return false;
     }
     tiers->resize(tc);
@@ -300,7 +300,7 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
     }
     const double field_ms = seconds_since(t_field) * 1e3;
     if (r != GRASS_SUCCESS) {
-        const std::string e = grass_last_error(ctx);
+        const std::string e = grass_get_last_error(ctx);
         grass_destroy_context(ctx);
         *error = std::string(bs.name) + ", " + v.name + ": the field was refused: " + call + " failed: " +
                  grass_result_string(r) + " (" + e + ")";
@@ -344,7 +344,7 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
         }
         if (r != GRASS_SUCCESS) {
             std::fprintf(stderr, "grass-measure bench: %s %s %s %s: rendering failed: %s (%s) %s\n", bs.name, row.camera.c_str(), be,
-                         row.preset.c_str(), grass_result_string(r), grass_last_error(ctx), error->c_str());
+                         row.preset.c_str(), grass_result_string(r), grass_get_last_error(ctx), error->c_str());
             *status = 1;
             r = GRASS_SUCCESS;
             continue;

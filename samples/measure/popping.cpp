@@ -215,7 +215,7 @@ bool make_scene_context(grass_host::Host& host, const Options& o, const grass_sa
     }
     if (r != GRASS_SUCCESS) {
         *error = std::string("cannot make the scene: ") + grass_result_string(r) +
-                 (out->ctx ? std::string(" (") + grass_last_error(out->ctx) + ")" : std::string());
+                 (out->ctx ? std::string(" (") + grass_get_last_error(out->ctx) + ")" : std::string());
         return false;
     }
     return true;

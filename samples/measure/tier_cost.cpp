@@ -49,7 +49,7 @@ std::vector<double> Rig::frame_times(int count, std::vector<double>* plan_ms) {
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         if (result != GRASS_SUCCESS) {
             throw grass_sample::Failure(std::string("rendering failed: ") + grass_result_string(result) + " (" +
-                                        grass_last_error(ctx_) + ") " + error);
+                                        grass_get_last_error(ctx_) + ") " + error);
         }
         if (r == 0) continue; // the first frame uploads
         times.push_back(ms);

@@ -9,13 +9,13 @@ class RenderMisuseTest : public RenderTest {
 protected:
     grass_result draw_outside_a_frame() {
         if (GetParam() == GRASS_BACKEND_GL) return grass_gl_render(ctx);
-        grass_vk_record_desc r = grass_vk_default_record_desc();
+        grass_vk_record_desc r = grass_default_vk_record_desc();
         r.command_buffer = nullptr;
         return grass_vk_record(ctx, &r);
     }
     grass_result draw_with_the_other_backend() {
         if (GetParam() == GRASS_BACKEND_GL) {
-            grass_vk_record_desc r = grass_vk_default_record_desc();
+            grass_vk_record_desc r = grass_default_vk_record_desc();
             return grass_vk_record(ctx, &r);
         }
         return grass_gl_render(ctx);

@@ -40,7 +40,7 @@ grass_host::Image render_with_cache(grass_backend backend, const std::string& di
     fd.patch = patch;
     fd.cells_x = fd.cells_z = 64;
     grass_field_id field{};
-    EXPECT_EQ(grass_create_field(ctx, &fd, &field), GRASS_SUCCESS) << grass_last_error(ctx);
+    EXPECT_EQ(grass_create_field(ctx, &fd, &field), GRASS_SUCCESS) << grass_get_last_error(ctx);
     const double eye[3] = {8.0, 2.0, -1.0}, look[3] = {8.0, 0.0, 10.0};
     const grass_view_desc v = grass_host::make_view(*host, eye, look, 50.0f, 0.05f, 200.0f);
     EXPECT_EQ(host->render(ctx, v, nullptr, &image, &error), GRASS_SUCCESS) << error;

@@ -16,11 +16,33 @@
  *     refused with GRASS_ERROR_INVALID_HANDLE, never dereferenced.
  *   - Every create call takes a *_desc struct that begins with its type tag and a next
  *     pointer (reserved for extensions; must be NULL today). Fill a desc with its
- *     grass_default_*_desc() and change what you need. Structs only grow at the end.
+ *     grass_default_*_desc() and change what you need.
  *   - Calls that can fail return grass_result. Bad input is refused with an error, a log
  *     message names the argument and its value, and the earlier state stays intact.
  *   - Units: metres, seconds, radians, linear RGB. Patch geometry is in *patch units*:
  *     the ground square of a patch is 1 x 1 and a field scales it to its cell size.
+ *
+ * ABI and versions
+ *   A program built against this header runs against any later library of the same major
+ *   version. Within a major version:
+ *   - Structs the caller fills (every *_desc, grass_allocator, grass_map_stack,
+ *     grass_tier_desc, grass_lod_test, grass_quality_desc, the id structs: whatever the
+ *     library reads, whatever a grass_default_*() or grass_quality_preset() returns by
+ *     value, every element of an array) never change layout. Values returned by value and
+ *     arrays with a stride cannot be grown safely, so new inputs come as extension structs
+ *     chained through a desc's next pointer, each with its own type tag.
+ *   - Structs the library fills (grass_frame_stats, grass_memory_stats, grass_patch_info)
+ *     only grow at the end. Each context keeps the GRASS_HEADER_VERSION given to the call
+ *     that created it, and every getter writes only the bytes the struct had in that
+ *     header version: an older program gets the fields it knows of and nothing past them.
+ *     grass_lod_node, which the library fills for a lod test callback, also only grows at
+ *     the end: a callback reads the fields it knows of.
+ *   - The array lengths the library writes to (GRASS_TIER_KIND_COUNT, GRASS_MAX_TIERS,
+ *     GRASS_MAX_LOD_TESTS, GRASS_DEFAULT_TIER_COUNT, GRASS_DEFAULT_LOD_TEST_COUNT) do not
+ *     change.
+ *   - Functions are only added; a renamed function keeps its old symbol for programs
+ *     built against the older header, which no longer declares it.
+ *   - The numeric values of enums, struct type tags and message ids never change.
  *
  * Thread safety
  *   A context is externally synchronized: calls on one context must not overlap. Separate
@@ -44,11 +66,14 @@ extern "C" {
 
 /* ---- Version ---------------------------------------------------------------------- */
 
+/* The one version number of grass: the build reads it from here (CMakeLists.txt). */
 #define GRASS_VERSION_MAJOR 0
-#define GRASS_VERSION_MINOR 3
+#define GRASS_VERSION_MINOR 4
 #define GRASS_VERSION_PATCH 0
 /* The version this header declares. Pass it to the create-context calls: the library
- * refuses a header whose major version differs from its own, or whose minor is newer. */
+ * refuses a header whose major version differs from its own, whose minor is newer than its
+ * own, or whose minor is older than 3 (0.3 is the oldest header whose struct layouts the
+ * library knows); see "ABI and versions" above. */
 #define GRASS_HEADER_VERSION \
     ((uint32_t)((GRASS_VERSION_MAJOR << 22) | (GRASS_VERSION_MINOR << 12) | GRASS_VERSION_PATCH))
 
@@ -121,7 +146,10 @@ typedef enum grass_message_id {
     GRASS_MSG_OUT_OF_RANGE = 104,     /* a number outside its documented range */
     GRASS_MSG_RANGE_INVERTED = 105,   /* a min greater than its max */
     GRASS_MSG_ZERO_CELLS = 106,
-    GRASS_MSG_BAD_TRANSFORM = 107,    /* a matrix that is not rigid + uniform scale, or NaN */
+    /* a matrix the call cannot use: a field's base_transform that is not a proper rotation
+     * (orthonormal within 1e-5, no mirroring) plus translation with last row (0, 0, 0, 1);
+     * a singular view rotation; an all-zero projection; a singular maps.cell_to_map */
+    GRASS_MSG_BAD_TRANSFORM = 107,
     GRASS_MSG_BAD_MAP = 108,          /* a design map of bad size, pitch or format */
     GRASS_MSG_BAD_ENUM = 109,
     GRASS_MSG_ZERO_VECTOR = 110,
@@ -156,7 +184,7 @@ typedef void (*grass_log_fn)(void* user_data, grass_log_level level, grass_messa
 /* ---- Allocation ------------------------------------------------------------------- */
 
 /* Host-memory hooks. All three are set or all are NULL (then malloc/free are used).
- * `alignment` is a power of two no larger than 64. free_fn receives NULL never. */
+ * `alignment` is a power of two no larger than 64. free_fn is never given NULL. */
 typedef struct grass_allocator {
     void* (*alloc_fn)(void* user_data, size_t size, size_t alignment);
     void (*free_fn)(void* user_data, void* ptr);
@@ -205,23 +233,26 @@ typedef enum grass_backend {
     GRASS_BACKEND_VULKAN = 2
 } grass_backend;
 
-GRASS_API grass_backend grass_context_backend(const grass_context* context);
+GRASS_API grass_backend grass_get_context_backend(const grass_context* context);
 
 /* The message of the last error this context reported, or "" if none. Valid until the
  * next call on the context. */
-GRASS_API const char* grass_last_error(const grass_context* context);
+GRASS_API const char* grass_get_last_error(const grass_context* context);
 
 typedef struct grass_memory_stats {
     uint64_t host_bytes;       /* host memory the context holds now, through its allocator */
     uint64_t host_allocations; /* live host allocations */
     uint64_t gpu_bytes;        /* GPU memory the backend holds (buffers + textures) */
+    /* 0.4: */
+    uint64_t host_bytes_peak;  /* the highest host_bytes since the context was created */
 } grass_memory_stats;
 
 GRASS_API grass_result grass_get_memory_stats(const grass_context* context, grass_memory_stats* out_stats);
 
 /* ---- Handles ---------------------------------------------------------------------- */
 
-/* A zero-initialised id is the null id. Compare ids with grass_*_id_equal(). */
+/* A zero-initialised id is the null id. Compare ids with grass_*_id_equal() and test them
+ * with grass_*_id_is_null() (below). */
 typedef struct grass_patch_id {
     uint32_t index;      /* slot + 1; 0 = null */
     uint16_t generation; /* bumped when the slot is reused */
@@ -239,6 +270,15 @@ typedef struct grass_map_id {
     uint16_t generation;
     uint16_t owner;
 } grass_map_id;
+
+/* 1 when both ids name the same object of the same context (or both are null), else 0. */
+GRASS_API grass_bool grass_patch_id_equal(grass_patch_id a, grass_patch_id b);
+GRASS_API grass_bool grass_field_id_equal(grass_field_id a, grass_field_id b);
+GRASS_API grass_bool grass_map_id_equal(grass_map_id a, grass_map_id b);
+/* 1 for the null id (all zero), else 0. A non-null id may still be stale. */
+GRASS_API grass_bool grass_patch_id_is_null(grass_patch_id id);
+GRASS_API grass_bool grass_field_id_is_null(grass_field_id id);
+GRASS_API grass_bool grass_map_id_is_null(grass_map_id id);
 
 /* ---- Patch: a grass type ---------------------------------------------------------- */
 
@@ -375,9 +415,11 @@ typedef struct grass_map_stack {
 /* How a tier draws its instances. */
 typedef enum grass_tier_kind {
     GRASS_TIER_GEOMETRY = 0, /* blades as geometry; cells only, never macro-cells */
-    GRASS_TIER_VOLUME = 1,   /* a ray-cast volume of vertical slices (the three-tier issue) */
-    GRASS_TIER_IMAGE = 2     /* one horizontal slice (the three-tier issue) */
+    GRASS_TIER_VOLUME = 1,   /* a ray-cast volume of vertical slices */
+    GRASS_TIER_IMAGE = 2     /* one horizontal slice */
 } grass_tier_kind;
+/* The length of the per-tier-kind arrays of grass_frame_stats and grass_get_tier_gpu_ms:
+ * fixed within a major version. */
 #define GRASS_TIER_KIND_COUNT 3
 #define GRASS_MAX_TIERS 8
 #define GRASS_MAX_LOD_TESTS 32
@@ -641,13 +683,20 @@ typedef struct grass_frame_stats {
     uint64_t macro_cells[GRASS_TIER_KIND_COUNT]; /* instances larger than one cell */
     uint64_t cells[GRASS_TIER_KIND_COUNT];       /* cells those instances cover */
     uint64_t nodes_empty;        /* nodes discarded, subtree and all, because their density is zero everywhere */
+    /* 0.4: */
+    /* Instanced draws in the frame plan: one per field (each grass type counts as a field)
+     * and tier that draws at least one instance. Each grass_gl_render() or grass_vk_record()
+     * of the frame issues this many instanced draw calls. */
+    uint64_t draws;
 } grass_frame_stats;
 
 /* Stats of the last begun frame. */
 GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass_frame_stats* out_stats);
 
-/* GPU time of each tier kind (grass_tier_kind index) in the most recent frame whose timings are available, in milliseconds; *out_available = 0 where the device or driver has no timer queries (then the values are 0). */
-/* Timestamps are written around each kind's draws and read back without waiting: the
+/* GPU time of each tier kind (grass_tier_kind index) in the most recent frame whose
+ * timings are available, in milliseconds; *out_available = 0 where the device or driver
+ * has no timer queries (then the values are 0).
+ * Timestamps are written around each kind's draws and read back without waiting: the
  * figures lag the current frame by the frames in flight (GL: up to 4 frames). Also
  * *out_available = 0 until a timed frame has finished on the GPU. Frames that draw
  * nothing or draw GRASS_VIEW_FLAG_DEBUG_CELLS are not timed. Several draw calls of one

@@ -16,8 +16,12 @@
 extern "C" {
 #endif
 
-/* Returns the address of a GL entry point, e.g. eglGetProcAddress or glfwGetProcAddress. */
-typedef void* (*grass_gl_get_proc_address_fn)(void* user_data, const char* name);
+/* A GL entry point as a loader returns it; grass casts it to the entry point's type. */
+typedef void (*grass_gl_proc)(void);
+/* Returns the address of a GL entry point, or NULL: wraps the host's loader, e.g.
+ *   static grass_gl_proc load(void* user_data, const char* name) { return eglGetProcAddress(name); }
+ * (eglGetProcAddress and glfwGetProcAddress return this very type). */
+typedef grass_gl_proc (*grass_gl_get_proc_address_fn)(void* user_data, const char* name);
 
 typedef struct grass_gl_desc {
     grass_struct_type type;                      /* GRASS_STRUCT_TYPE_GL_DESC */
@@ -26,7 +30,7 @@ typedef struct grass_gl_desc {
     void* get_proc_address_user_data;
 } grass_gl_desc;
 
-GRASS_API grass_gl_desc grass_gl_default_desc(void);
+GRASS_API grass_gl_desc grass_default_gl_desc(void);
 
 /* Creates a context that draws with the current GL context, which must be 4.5 or newer. */
 GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const grass_context_desc* desc,

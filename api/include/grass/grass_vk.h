@@ -52,7 +52,7 @@ typedef struct grass_vk_desc {
     uint32_t frames_in_flight;     /* 1..8; default 2 */
 } grass_vk_desc;
 
-GRASS_API grass_vk_desc grass_vk_default_desc(void);
+GRASS_API grass_vk_desc grass_default_vk_desc(void);
 
 GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const grass_context_desc* desc,
                                                const grass_vk_desc* vk_desc, grass_context** out_context);
@@ -68,7 +68,7 @@ typedef struct grass_vk_record_desc {
     void* command_buffer;          /* VkCommandBuffer inside the host's render pass */
 } grass_vk_record_desc;
 
-GRASS_API grass_vk_record_desc grass_vk_default_record_desc(void);
+GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);
 
 /* Records the draws of the begun frame. Binds its own pipeline and descriptor sets and
  * sets viewport and scissor from the view; the host must rebind its own state after. */

@@ -29,6 +29,7 @@ void* HostAllocator::allocate(size_t size, size_t alignment) {
     header->size = size;
     header->offset = kHeaderSpace;
     bytes_ += size;
+    if (bytes_ > bytes_peak_) bytes_peak_ = bytes_;
     allocations_ += 1;
     return user;
 }

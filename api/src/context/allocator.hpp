@@ -23,6 +23,7 @@ public:
     void deallocate(void* ptr) noexcept;
 
     uint64_t bytes() const { return bytes_; }
+    uint64_t bytes_peak() const { return bytes_peak_; } // the highest bytes() since construction
     uint64_t allocations() const { return allocations_; }
 
     template <class T, class... Args>
@@ -40,6 +41,7 @@ public:
 private:
     grass_allocator hooks_;
     uint64_t bytes_ = 0;
+    uint64_t bytes_peak_ = 0;
     uint64_t allocations_ = 0;
 };
 

@@ -9,7 +9,7 @@
 extern "C" {
 
 #ifndef GRASS_HAS_GL
-GRASS_API grass_gl_desc grass_gl_default_desc(void) {
+GRASS_API grass_gl_desc grass_default_gl_desc(void) {
     grass_gl_desc d;
     std::memset(&d, 0, sizeof(d));
     d.type = GRASS_STRUCT_TYPE_GL_DESC;
@@ -30,7 +30,7 @@ GRASS_API grass_result grass_gl_render(grass_context* context) {
 #endif
 
 #ifndef GRASS_HAS_VULKAN
-GRASS_API grass_vk_desc grass_vk_default_desc(void) {
+GRASS_API grass_vk_desc grass_default_vk_desc(void) {
     grass_vk_desc d;
     std::memset(&d, 0, sizeof(d));
     d.type = GRASS_STRUCT_TYPE_VK_DESC;
@@ -38,7 +38,7 @@ GRASS_API grass_vk_desc grass_vk_default_desc(void) {
     d.frames_in_flight = 2;
     return d;
 }
-GRASS_API grass_vk_record_desc grass_vk_default_record_desc(void) {
+GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void) {
     grass_vk_record_desc d;
     std::memset(&d, 0, sizeof(d));
     d.type = GRASS_STRUCT_TYPE_VK_RECORD_DESC;

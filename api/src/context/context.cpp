@@ -1,6 +1,7 @@
 // The context: creation with a version check, logging, memory stats, destruction.
 #include "context/context.hpp"
 
+#include "context/abi_sizes.hpp"
 #include "context/raw_enum.hpp"
 #include "context/validate.hpp"
 
@@ -103,10 +104,12 @@ grass_result create_context(const char* function, uint32_t header_version, const
     if (!out_context) return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: out_context is NULL", function);
     if (!desc) return GRASS_ERROR_INVALID_ARGUMENT;
     const uint32_t major = header_version >> 22, minor = (header_version >> 12) & 0x3ff;
-    if (major != GRASS_VERSION_MAJOR || minor > GRASS_VERSION_MINOR) {
+    if (major != GRASS_VERSION_MAJOR || minor > GRASS_VERSION_MINOR || minor < kOldestHeaderMinor) {
         return early_fail(desc, GRASS_ERROR_VERSION_MISMATCH, GRASS_MSG_VERSION_MISMATCH,
-                          "%s: the caller was compiled against grass.h %u.%u but the library is %u.%u", function,
-                          major, minor, GRASS_VERSION_MAJOR, GRASS_VERSION_MINOR);
+                          "%s: the caller was compiled against grass.h %u.%u but the library is %u.%u, which runs "
+                          "programs built against grass.h %u.%u to %u.%u",
+                          function, major, minor, GRASS_VERSION_MAJOR, GRASS_VERSION_MINOR, GRASS_VERSION_MAJOR,
+                          kOldestHeaderMinor, GRASS_VERSION_MAJOR, GRASS_VERSION_MINOR);
     }
     if (raw_enum(desc->type) != GRASS_STRUCT_TYPE_CONTEXT_DESC) {
         return early_fail(desc, GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
@@ -137,6 +140,7 @@ grass_result create_context(const char* function, uint32_t header_version, const
     try {
         memory = bootstrap.allocate(sizeof(grass_context), alignof(grass_context));
         ctx = new (memory) grass_context(*desc, owner_tag_for(memory));
+        ctx->header_minor = minor;
     } catch (const std::bad_alloc&) {
         if (memory) bootstrap.deallocate(memory);
         return early_fail(desc, GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: out of host memory", function);
@@ -205,17 +209,20 @@ GRASS_API grass_result grass_create_context(uint32_t header_version, const grass
 
 GRASS_API void grass_destroy_context(grass_context* context) { grass::destroy_context(context); }
 
-GRASS_API grass_backend grass_context_backend(const grass_context* context) {
+GRASS_API grass_backend grass_get_context_backend(const grass_context* context) {
     return context && context->backend ? context->backend->kind() : GRASS_BACKEND_NONE;
 }
 
-GRASS_API const char* grass_last_error(const grass_context* context) { return context ? context->last_error : ""; }
+GRASS_API const char* grass_get_last_error(const grass_context* context) { return context ? context->last_error : ""; }
 
 GRASS_API grass_result grass_get_memory_stats(const grass_context* context, grass_memory_stats* out_stats) {
     if (!context || !out_stats) return GRASS_ERROR_INVALID_ARGUMENT;
-    out_stats->host_bytes = context->host.bytes();
-    out_stats->host_allocations = context->host.allocations();
-    out_stats->gpu_bytes = context->backend ? context->backend->gpu_bytes() : 0;
+    grass_memory_stats stats{};
+    stats.host_bytes = context->host.bytes();
+    stats.host_allocations = context->host.allocations();
+    stats.gpu_bytes = context->backend ? context->backend->gpu_bytes() : 0;
+    stats.host_bytes_peak = context->host.bytes_peak();
+    grass::write_out_struct(context->header_minor, stats, out_stats);
     return GRASS_SUCCESS;
 }
 

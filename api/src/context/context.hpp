@@ -73,6 +73,7 @@ struct grass_context {
     grass::HostAllocator host;
     grass_context_desc desc;
     uint16_t owner;
+    uint32_t header_minor = GRASS_VERSION_MINOR; // of the header the host was built against (abi_sizes.hpp)
     grass::Backend* backend = nullptr;
     grass::HandlePool<grass::Patch> patches;
     grass::HandlePool<grass::Field> fields;

@@ -1,4 +1,5 @@
 // C entry points for frames: begin (validate the view, plan), end, stats.
+#include "context/abi_sizes.hpp"
 #include "context/context.hpp"
 #include "plan/frame_planner.hpp"
 #include "context/validate.hpp"
@@ -116,7 +117,7 @@ GRASS_API grass_result grass_end_frame(grass_context* context) {
 
 GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass_frame_stats* out_stats) {
     if (!context || !out_stats) return GRASS_ERROR_INVALID_ARGUMENT;
-    *out_stats = context->plan.stats;
+    grass::write_out_struct(context->header_minor, context->plan.stats, out_stats);
     return GRASS_SUCCESS;
 }
 

@@ -1,4 +1,5 @@
 // C entry points for patches (grass types).
+#include "context/abi_sizes.hpp"
 #include "context/context.hpp"
 #include "patch/patch_generator.hpp"
 #include "context/validate.hpp"
@@ -146,14 +147,16 @@ GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_
     GRASS_TRY(grass::check_not_null(ctx, fn, "out_info", out_info));
     GRASS_TRY(grass::check_patch_id(ctx, fn, "patch", patch));
     const grass::PatchData& d = ctx->patches.get(patch.index - 1)->data;
-    out_info->blade_count = d.blade_count;
-    out_info->vertex_count = static_cast<uint32_t>(d.vertices.size());
-    out_info->triangle_count = static_cast<uint32_t>(d.indices.size() / 3);
+    grass_patch_info info{};
+    info.blade_count = d.blade_count;
+    info.vertex_count = static_cast<uint32_t>(d.vertices.size());
+    info.triangle_count = static_cast<uint32_t>(d.indices.size() / 3);
     for (int c = 0; c < 3; ++c) {
-        out_info->bounds_min[c] = d.bounds_min[c];
-        out_info->bounds_max[c] = d.bounds_max[c];
+        info.bounds_min[c] = d.bounds_min[c];
+        info.bounds_max[c] = d.bounds_max[c];
     }
-    out_info->content_hash = d.content_hash;
+    info.content_hash = d.content_hash;
+    grass::write_out_struct(ctx->header_minor, info, out_info);
     return GRASS_SUCCESS;
 }
 

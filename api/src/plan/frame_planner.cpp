@@ -420,6 +420,7 @@ grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
             return r;
         }
     }
+    plan.stats.draws = plan.draws.size();
     plan.stats.plan_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return GRASS_SUCCESS;
 }

@@ -1,0 +1,23 @@
+// The 0.3 names of functions renamed in 0.4: kept for binaries built against grass.h 0.3,
+// and declared in no current header. Each forwards to its new name, which every build has
+// (a backend left out of the build has stubs in context/backend_stubs.cpp), so the aliases
+// of the GL and Vulkan calls live here too.
+#include <grass/grass.h>
+#include <grass/grass_gl.h>
+#include <grass/grass_vk.h>
+
+extern "C" {
+
+GRASS_API grass_backend grass_context_backend(const grass_context* context);
+GRASS_API const char* grass_last_error(const grass_context* context);
+GRASS_API grass_gl_desc grass_gl_default_desc(void);
+GRASS_API grass_vk_desc grass_vk_default_desc(void);
+GRASS_API grass_vk_record_desc grass_vk_default_record_desc(void);
+
+GRASS_API grass_backend grass_context_backend(const grass_context* context) { return grass_get_context_backend(context); }
+GRASS_API const char* grass_last_error(const grass_context* context) { return grass_get_last_error(context); }
+GRASS_API grass_gl_desc grass_gl_default_desc(void) { return grass_default_gl_desc(); }
+GRASS_API grass_vk_desc grass_vk_default_desc(void) { return grass_default_vk_desc(); }
+GRASS_API grass_vk_record_desc grass_vk_default_record_desc(void) { return grass_default_vk_record_desc(); }
+
+} // extern "C"

@@ -1,0 +1,668 @@
+/*
+ * FROZEN COPY of grass.h 0.3 (git show 0ba0d4f:api/include/grass/grass.h), for
+ * tests/abi/old_header_host.c: a program built against the 0.3 headers must run against
+ * every later 0.x library. Never edit this file (only its include guard and its include
+ * of grass.h were renamed so that it cannot clash with the current headers).
+ */
+/*
+ * grass.h - the stable C interface of the grass renderer.
+ *
+ * One generated grass patch is tiled over the cells of a field, each cell randomly
+ * mirrored; per-blade density thresholds against a density map thin the grass. The host
+ * owns the GPU device, the frame and the rest of the scene; this library owns grass.
+ *
+ * This header is backend-neutral: it includes no GL or Vulkan header. The calls that
+ * hand over a GL context or a Vulkan device, and that draw, are in grass_gl.h and
+ * grass_vk.h.
+ *
+ * Conventions
+ *   - C99; every type and function is prefixed grass_, every macro and enum GRASS_.
+ *   - Objects made from a context are small id structs with a generation: a stale id (its
+ *     object was destroyed), a foreign id (made by another context) or the zero id is
+ *     refused with GRASS_ERROR_INVALID_HANDLE, never dereferenced.
+ *   - Every create call takes a *_desc struct that begins with its type tag and a next
+ *     pointer (reserved for extensions; must be NULL today). Fill a desc with its
+ *     grass_default_*_desc() and change what you need. Structs only grow at the end.
+ *   - Calls that can fail return grass_result. Bad input is refused with an error, a log
+ *     message names the argument and its value, and the earlier state stays intact.
+ *   - Units: metres, seconds, radians, linear RGB. Patch geometry is in *patch units*:
+ *     the ground square of a patch is 1 x 1 and a field scales it to its cell size.
+ *
+ * Thread safety
+ *   A context is externally synchronized: calls on one context must not overlap. Separate
+ *   contexts share nothing and may be used from separate threads. The library has no
+ *   global mutable state. Allocation and log callbacks are per context and are called on
+ *   the thread that made the call that triggered them.
+ *
+ * Ownership
+ *   Pointers passed in descs are read during the call only and never kept (map pixels are
+ *   copied). Strings passed to callbacks live until the callback returns.
+ */
+#ifndef GRASS_ABI_0_3_GRASS_H
+#define GRASS_ABI_0_3_GRASS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- Version ---------------------------------------------------------------------- */
+
+#define GRASS_VERSION_MAJOR 0
+#define GRASS_VERSION_MINOR 3
+#define GRASS_VERSION_PATCH 0
+/* The version this header declares. Pass it to the create-context calls: the library
+ * refuses a header whose major version differs from its own, or whose minor is newer. */
+#define GRASS_HEADER_VERSION \
+    ((uint32_t)((GRASS_VERSION_MAJOR << 22) | (GRASS_VERSION_MINOR << 12) | GRASS_VERSION_PATCH))
+
+#if defined(_WIN32) && defined(GRASS_SHARED)
+#  ifdef GRASS_BUILDING
+#    define GRASS_API __declspec(dllexport)
+#  else
+#    define GRASS_API __declspec(dllimport)
+#  endif
+#elif defined(__GNUC__)
+#  define GRASS_API __attribute__((visibility("default")))
+#else
+#  define GRASS_API
+#endif
+
+/* The version of the library that is linked (same encoding as GRASS_HEADER_VERSION). */
+GRASS_API uint32_t grass_library_version(void);
+
+/* ---- Results ---------------------------------------------------------------------- */
+
+typedef enum grass_result {
+    GRASS_SUCCESS = 0,
+    GRASS_ERROR_INVALID_ARGUMENT = -1,  /* a value is out of range, NaN, infinite or NULL */
+    GRASS_ERROR_INVALID_HANDLE = -2,    /* a stale, foreign or zero id */
+    GRASS_ERROR_WRONG_STRUCT_TYPE = -3, /* a desc whose type tag is not the one expected */
+    GRASS_ERROR_INVALID_STATE = -4,     /* a call in the wrong order (e.g. drawing outside a frame) */
+    GRASS_ERROR_OUT_OF_MEMORY = -5,     /* host or GPU memory could not be allocated */
+    GRASS_ERROR_VERSION_MISMATCH = -6,  /* the header and the library do not match */
+    GRASS_ERROR_BACKEND = -7,           /* the GPU API failed; the log says which call */
+    GRASS_ERROR_UNSUPPORTED = -8,       /* the device or the build lacks what is needed */
+    GRASS_ERROR_IN_USE = -9             /* the object is still used by another object */
+} grass_result;
+
+/* A static English name for a result code, e.g. "GRASS_ERROR_INVALID_HANDLE". */
+GRASS_API const char* grass_result_string(grass_result result);
+
+typedef uint32_t grass_bool; /* 0 = false, anything else = true */
+
+/* ---- Struct type tags ------------------------------------------------------------- */
+
+typedef enum grass_struct_type {
+    GRASS_STRUCT_TYPE_CONTEXT_DESC = 0x67720001,
+    GRASS_STRUCT_TYPE_PATCH_DESC = 0x67720002,
+    GRASS_STRUCT_TYPE_FIELD_DESC = 0x67720003,
+    GRASS_STRUCT_TYPE_MAP_DESC = 0x67720004,
+    GRASS_STRUCT_TYPE_VIEW_DESC = 0x67720005,
+    GRASS_STRUCT_TYPE_GRASS_TYPE_DESC = 0x67720006,
+    GRASS_STRUCT_TYPE_QUALITY_DESC = 0x67720007,
+    GRASS_STRUCT_TYPE_GL_DESC = 0x67720101,
+    GRASS_STRUCT_TYPE_VK_DESC = 0x67720201,
+    GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202
+} grass_struct_type;
+
+/* ---- Logging ---------------------------------------------------------------------- */
+
+typedef enum grass_log_level {
+    GRASS_LOG_ERROR = 0,   /* a call was refused or failed */
+    GRASS_LOG_WARNING = 1, /* a call succeeded but something looks wrong */
+    GRASS_LOG_INFO = 2     /* lifetime events (context, device, patch baked) */
+} grass_log_level;
+
+/* Numbered message ids: stable across versions, so hosts and tests can match them. */
+typedef enum grass_message_id {
+    GRASS_MSG_NONE = 0,
+    /* 1xx: arguments */
+    GRASS_MSG_NULL_ARGUMENT = 100,
+    GRASS_MSG_WRONG_STRUCT_TYPE = 101,
+    GRASS_MSG_NEXT_NOT_NULL = 102,
+    GRASS_MSG_NOT_FINITE = 103,       /* NaN or infinity in a number */
+    GRASS_MSG_OUT_OF_RANGE = 104,     /* a number outside its documented range */
+    GRASS_MSG_RANGE_INVERTED = 105,   /* a min greater than its max */
+    GRASS_MSG_ZERO_CELLS = 106,
+    GRASS_MSG_BAD_TRANSFORM = 107,    /* a matrix that is not rigid + uniform scale, or NaN */
+    GRASS_MSG_BAD_MAP = 108,          /* a design map of bad size, pitch or format */
+    GRASS_MSG_BAD_ENUM = 109,
+    GRASS_MSG_ZERO_VECTOR = 110,
+    GRASS_MSG_MAP_ROLE = 111,         /* a map whose format does not fit its role in a map stack */
+    GRASS_MSG_MAP_REGION = 112,       /* a map update outside the map or of another format */
+    /* 2xx: handles and lifetime */
+    GRASS_MSG_STALE_HANDLE = 200,
+    GRASS_MSG_FOREIGN_HANDLE = 201,
+    GRASS_MSG_NULL_HANDLE = 202,
+    GRASS_MSG_PATCH_IN_USE = 203,      /* also: a map still used by a field */
+    GRASS_MSG_TOO_MANY_OBJECTS = 204,
+    /* 3xx: call order */
+    GRASS_MSG_FRAME_NOT_BEGUN = 300,
+    GRASS_MSG_FRAME_ALREADY_BEGUN = 301,
+    GRASS_MSG_WRONG_BACKEND = 302,
+    GRASS_MSG_UPLOAD_NOT_RECORDED = 303,
+    /* 4xx: version and environment */
+    GRASS_MSG_VERSION_MISMATCH = 400,
+    GRASS_MSG_DEVICE_UNSUPPORTED = 401,
+    GRASS_MSG_BACKEND_CALL_FAILED = 402,
+    GRASS_MSG_OUT_OF_MEMORY = 403,
+    /* 5xx: information */
+    GRASS_MSG_CONTEXT_CREATED = 500,
+    GRASS_MSG_PATCH_GENERATED = 501
+} grass_message_id;
+
+/* Called for every message the context emits. `message` is one English sentence that
+ * names the call, the argument and the value. */
+typedef void (*grass_log_fn)(void* user_data, grass_log_level level, grass_message_id id,
+                             const char* message);
+
+/* ---- Allocation ------------------------------------------------------------------- */
+
+/* Host-memory hooks. All three are set or all are NULL (then malloc/free are used).
+ * `alignment` is a power of two no larger than 64. free_fn receives NULL never. */
+typedef struct grass_allocator {
+    void* (*alloc_fn)(void* user_data, size_t size, size_t alignment);
+    void (*free_fn)(void* user_data, void* ptr);
+    void* user_data;
+} grass_allocator;
+
+/* ---- Context ---------------------------------------------------------------------- */
+
+typedef struct grass_context grass_context; /* opaque */
+
+typedef enum grass_depth_mode {
+    GRASS_DEPTH_LESS = 0,    /* depth 0 is near: classic, the default */
+    GRASS_DEPTH_GREATER = 1  /* depth 1 is near: reversed-Z hosts */
+} grass_depth_mode;
+
+typedef struct grass_context_desc {
+    grass_struct_type type;     /* GRASS_STRUCT_TYPE_CONTEXT_DESC */
+    const void* next;           /* NULL */
+    grass_allocator allocator;  /* default: all NULL = malloc/free */
+    grass_log_fn log_fn;        /* default NULL: messages are dropped */
+    void* log_user_data;
+    grass_log_level log_level;  /* highest level passed to log_fn; default GRASS_LOG_WARNING */
+    grass_depth_mode depth_mode; /* the host's depth convention; default GRASS_DEPTH_LESS */
+    /* A directory where baked slices (the volume and image tiers' textures) are cached,
+     * keyed by a hash of the patch desc, so a host starts fast the second time. NULL (the
+     * default): bake every time. The directory must exist; the string is copied. */
+    const char* cache_directory;
+} grass_context_desc;
+
+GRASS_API grass_context_desc grass_default_context_desc(void);
+
+/* A context with no GPU backend: it generates patches, plans frames and reports stats,
+ * and draws nothing. For tools, tests and servers. The GPU contexts are made by
+ * grass_gl_create_context() and grass_vk_create_context(). */
+GRASS_API grass_result grass_create_context(uint32_t header_version, const grass_context_desc* desc,
+                                            grass_context** out_context);
+
+/* Destroys every object of the context and the context. NULL is accepted. For a GPU
+ * context the host's device must be idle with respect to grass work (Vulkan) or its GL
+ * context current (GL). */
+GRASS_API void grass_destroy_context(grass_context* context);
+
+typedef enum grass_backend {
+    GRASS_BACKEND_NONE = 0,
+    GRASS_BACKEND_GL = 1,
+    GRASS_BACKEND_VULKAN = 2
+} grass_backend;
+
+GRASS_API grass_backend grass_context_backend(const grass_context* context);
+
+/* The message of the last error this context reported, or "" if none. Valid until the
+ * next call on the context. */
+GRASS_API const char* grass_last_error(const grass_context* context);
+
+typedef struct grass_memory_stats {
+    uint64_t host_bytes;       /* host memory the context holds now, through its allocator */
+    uint64_t host_allocations; /* live host allocations */
+    uint64_t gpu_bytes;        /* GPU memory the backend holds (buffers + textures) */
+} grass_memory_stats;
+
+GRASS_API grass_result grass_get_memory_stats(const grass_context* context, grass_memory_stats* out_stats);
+
+/* ---- Handles ---------------------------------------------------------------------- */
+
+/* A zero-initialised id is the null id. Compare ids with grass_*_id_equal(). */
+typedef struct grass_patch_id {
+    uint32_t index;      /* slot + 1; 0 = null */
+    uint16_t generation; /* bumped when the slot is reused */
+    uint16_t owner;      /* tag of the context that made it */
+} grass_patch_id;
+
+typedef struct grass_field_id {
+    uint32_t index;
+    uint16_t generation;
+    uint16_t owner;
+} grass_field_id;
+
+typedef struct grass_map_id {
+    uint32_t index;
+    uint16_t generation;
+    uint16_t owner;
+} grass_map_id;
+
+/* ---- Patch: a grass type ---------------------------------------------------------- */
+
+typedef enum grass_threshold_mode {
+    /* Density thresholds spread at random over the patch: thinning keeps isolated blades. */
+    GRASS_THRESHOLD_UNIFORM = 0,
+    /* Thresholds follow equalised Perlin noise plus a Gaussian of width cluster_sigma
+     * (lemme2012 4.1.3): thin grass grows in clumps. */
+    GRASS_THRESHOLD_CLUSTERED = 1
+} grass_threshold_mode;
+
+/* One grass type. The generated blades are rooted on the unit ground square of the
+ * patch; tips may reach outside it. All lengths are in patch units (cell edge = 1).
+ * Every min/max pair must satisfy 0 <= min <= max. */
+typedef struct grass_patch_desc {
+    grass_struct_type type;     /* GRASS_STRUCT_TYPE_PATCH_DESC */
+    const void* next;           /* NULL */
+    uint32_t blade_count;       /* blades per patch, 1..65536; default 384 */
+    uint32_t subdivisions;      /* quads along a blade, 1..32; default 4 */
+    float length_min, length_max; /* blade arc length; default 0.45 .. 0.85 */
+    float width_min, width_max;   /* blade width at the root; default 0.018 .. 0.032 */
+    float tilt_min, tilt_max;     /* radians from vertical at the root, 0..1.5; default 0.05 .. 0.55 */
+    float bend_min, bend_max;     /* gravity pull on the trajectory, relative to length, 0..2; default 0.2 .. 0.7 */
+    float root_color[3];          /* linear RGB at the root; default (0.05, 0.12, 0.02) */
+    float tip_color[3];           /* linear RGB at the tip; default (0.28, 0.45, 0.09) */
+    float blade_color_variation;  /* 0..1: per-blade darkening and hue shift; default 0.35 */
+    float vertex_color_variation; /* 0..1: per-vertex modulation; default 0.08 */
+    grass_threshold_mode threshold_mode; /* default GRASS_THRESHOLD_CLUSTERED */
+    float cluster_sigma;          /* clustered mode: Gaussian width, 0..1; default 0.12 */
+    uint32_t cluster_frequency;   /* clustered mode: noise periods per patch, 1..64; default 3 */
+    float ao_impact;              /* B_impact of lemme eq. 6.11, 0..1; default 0.65 */
+    float ao_height;              /* B_height of eq. 6.11 in patch units, > 0; default 0.55 */
+    uint64_t seed;                /* default 1; the same desc and seed give identical blades */
+} grass_patch_desc;
+
+GRASS_API grass_patch_desc grass_default_patch_desc(void);
+
+/* Generates the patch. GPU contexts upload it at once (GL: the host's GL context must be
+ * current; Vulkan: it is copied to the device by the next grass_vk_prepare_frame()). */
+GRASS_API grass_result grass_create_patch(grass_context* context, const grass_patch_desc* desc,
+                                          grass_patch_id* out_patch);
+
+/* Fails with GRASS_ERROR_IN_USE while a field uses the patch. */
+GRASS_API grass_result grass_destroy_patch(grass_context* context, grass_patch_id patch);
+
+typedef struct grass_patch_info {
+    uint32_t blade_count;
+    uint32_t vertex_count;
+    uint32_t triangle_count;   /* per patch instance, all blades drawn */
+    float bounds_min[3];       /* patch units; tips may leave the unit square */
+    float bounds_max[3];
+    uint64_t content_hash;     /* FNV-1a 64 of the generated blade data: pins determinism */
+} grass_patch_info;
+
+GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_patch_id patch,
+                                            grass_patch_info* out_info);
+
+/* Reads the generated per-blade density thresholds, in blade order (for tools and tests).
+ * `capacity` is the number of floats `out_thresholds` holds; at least blade_count. */
+GRASS_API grass_result grass_get_patch_thresholds(const grass_context* context, grass_patch_id patch,
+                                                  float* out_thresholds, uint32_t capacity);
+
+/* ---- Design maps (lemme2012 6.4, boulanger2006 3.4-3.5) ---------------------------- */
+
+typedef enum grass_map_format {
+    GRASS_MAP_FORMAT_R8_UNORM = 1,     /* uint8, 0..255 -> 0..1 */
+    GRASS_MAP_FORMAT_R16_UNORM = 2,    /* uint16, 0..65535 -> 0..1 */
+    GRASS_MAP_FORMAT_R32_FLOAT = 3,    /* float, finite, 0..1 */
+    GRASS_MAP_FORMAT_RGBA8_UNORM = 4,  /* 4 x uint8 (colour maps) */
+    GRASS_MAP_FORMAT_RGBA16_UNORM = 5, /* 4 x uint16 (colour maps) */
+    GRASS_MAP_FORMAT_RGBA32_FLOAT = 6  /* 4 x float, finite, 0..1 (colour maps) */
+} grass_map_format;
+
+/* An image in host memory, copied by the call that takes it. Maps are projected along the
+ * field's up axis: texel (0, 0) is at map uv (0, 0) and rows run along +v. Sampled
+ * bilinearly with edge clamping; every value, whatever the format, means 0..1. */
+typedef struct grass_map_desc {
+    grass_struct_type type;  /* GRASS_STRUCT_TYPE_MAP_DESC */
+    const void* next;        /* NULL */
+    const void* pixels;      /* row 0 first; rows run along +v (field +z), texels along +u (+x) */
+    uint32_t width, height;  /* 1..16384 */
+    uint32_t row_pitch;      /* bytes between rows; 0 = tightly packed */
+    grass_map_format format; /* default GRASS_MAP_FORMAT_R8_UNORM */
+} grass_map_desc;
+
+GRASS_API grass_map_desc grass_default_map_desc(void);
+
+/* A design map on its own, which fields reference through their grass_map_stack; several
+ * fields may share one (GPU contexts upload it once). The core keeps a min/max pyramid of
+ * it, so the quadtree knows each node's terrain height range and whether it holds grass. */
+GRASS_API grass_result grass_create_map(grass_context* context, const grass_map_desc* desc, grass_map_id* out_map);
+
+/* Replaces the texels of the rectangle whose first texel is (x, y) and whose size is
+ * region->width x region->height, with region->pixels (same format as the map; its
+ * row_pitch applies). Paint or mow grass at run time: the next frame plans and draws with
+ * the new texels; nothing outside the rectangle changes. Not between grass_begin_frame and
+ * grass_end_frame. GL: the host's GL context must be current. Vulkan: the copy is recorded
+ * by the next grass_vk_prepare_frame(). */
+GRASS_API grass_result grass_update_map(grass_context* context, grass_map_id map, uint32_t x, uint32_t y,
+                                        const grass_map_desc* region);
+
+/* Fails with GRASS_ERROR_IN_USE while a field uses the map. */
+GRASS_API grass_result grass_destroy_map(grass_context* context, grass_map_id map);
+
+/* The design maps of a field (lemme figure 6.7). Every map is optional: a null id (all
+ * zero) means the field does without it, and its shaders do not sample it. */
+typedef struct grass_map_stack {
+    /* Single-channel: multiplies grass_field_desc.density. Blades whose density threshold
+     * lies above the local density are not drawn (bilinear, lemme 6.4.1); a quadtree node
+     * whose density is zero everywhere is discarded with its subtree. */
+    grass_map_id density;
+    /* RGBA: colour modulation C = A_c C_c + (1 - A_c) C_blade (lemme eq. 6.8); a high alpha
+     * paints field marks, a low alpha varies the lawn subtly. sRGB-encoded rgb, linear alpha. */
+    grass_map_id color;
+    /* Single-channel: the ambient light, with the scene's ambient occlusion already in it;
+     * multiplies grass_view_desc.ambient_color (lemme eq. 6.9-6.10; boulanger 3.5). */
+    grass_map_id ambient;
+    /* Single-channel: the diffuse (sun) light the scenery lets through: shadows cast by the
+     * host's buildings and trees; multiplies grass_view_desc.sun_color (lemme figure 7.8). */
+    grass_map_id diffuse;
+    /* Single-channel: the terrain height along the field's up axis, times height_scale
+     * metres (lemme 6.4.4). Every tier is displaced by it. */
+    grass_map_id height;
+    float height_scale;      /* metres for a height-map value of 1; finite, 0..1e5; default 1 */
+    /* Cell space to map space (lemme's configTf): map (u, v) = (m[0] x + m[2] z + m[4],
+     * m[1] x + m[3] z + m[5]) for a point (x, z) of the field in cells. All zero (the
+     * default): the maps span the whole field, u = x / cells_x, v = z / cells_z. Another
+     * transform lets several fields share one map stack, or maps a region in finer detail. */
+    double cell_to_map[6];
+} grass_map_stack;
+
+/* ---- Tiers and lod tests (lemme2012 6.1.2-6.1.3, 6.2) ------------------------------ */
+
+/* How a tier draws its instances. */
+typedef enum grass_tier_kind {
+    GRASS_TIER_GEOMETRY = 0, /* blades as geometry; cells only, never macro-cells */
+    GRASS_TIER_VOLUME = 1,   /* a ray-cast volume of vertical slices (the three-tier issue) */
+    GRASS_TIER_IMAGE = 2     /* one horizontal slice (the three-tier issue) */
+} grass_tier_kind;
+#define GRASS_TIER_KIND_COUNT 3
+#define GRASS_MAX_TIERS 8
+#define GRASS_MAX_LOD_TESTS 32
+
+typedef struct grass_tier_desc {
+    grass_tier_kind kind;
+    uint32_t slices;          /* volume tiers: vertical slices per axis, 1..64; 0 for the others */
+} grass_tier_desc;
+
+/* What a lod test answers for a quadtree node. */
+typedef enum grass_lod_answer {
+    GRASS_LOD_DISCARD = 0,    /* the node and its subtree are not drawn by this test's tier */
+    GRASS_LOD_SPLIT = 1,      /* ask again for the node's children (a cell is drawn instead) */
+    GRASS_LOD_DRAW = 2        /* draw the node whole (a macro-cell unless it is one cell) */
+} grass_lod_answer;
+
+/* A quadtree node as a lod test sees it. Level 0 nodes are cells; a node of level k spans
+ * up to 2^k x 2^k cells (fewer at the field's far edges). */
+typedef struct grass_lod_node {
+    uint32_t level;
+    uint32_t cell_x, cell_z;     /* its first cell */
+    uint32_t cells_x, cells_z;   /* cells it spans */
+    uint32_t tier;               /* index of the tier the asking test feeds */
+    double center[3];            /* world-space bounding sphere of its box */
+    double radius;
+    double distance_min;         /* metres from the camera to the nearest point of its box */
+    double distance_max;         /* ... and to the farthest */
+    double height_min;           /* metres: the lowest terrain height under the node (0 without a height map) */
+    double height_max;           /* ... and the highest */
+} grass_lod_node;
+
+typedef grass_lod_answer (*grass_lod_test_fn)(void* user_data, const grass_lod_node* node);
+
+typedef enum grass_lod_test_kind {
+    /* Draws the tier between begin and end metres from the camera: discards a node entirely
+     * outside, draws one entirely inside, splits one across an edge (see edge_ratio).
+     * transition_in and transition_out are the widths of its fade-in after begin and
+     * fade-out before end, where it shares cells with the neighbouring tier. */
+    GRASS_LOD_TEST_DISTANCE_BAND = 1,
+    /* Splits until a node spans at most max_macro_cells cells each way, then draws it whole. */
+    GRASS_LOD_TEST_MACRO_CELL = 2,
+    /* Asks the host's callback. */
+    GRASS_LOD_TEST_CALLBACK = 3,
+    /* Terrain unplanarity (lemme 6.4.4): splits a node whose terrain height range (highest
+     * minus lowest height of the height map over it, metres) exceeds max_unplanarity +
+     * unplanarity_ratio x its distance from the camera, and draws it otherwise. Keeps
+     * macro-cells on hills small enough that their flat slices follow the ground. */
+    GRASS_LOD_TEST_UNPLANARITY = 4,
+    /* Hilltop silhouettes (lemme 6.4.6, after Boulanger): discards the nodes whose bounding
+     * box lies entirely below the camera and draws the others (bound their size with a
+     * MACRO_CELL or UNPLANARITY test of the same tier). A tier with this test is an
+     * *overlay*: it draws every blade the density passes, on top of the tiers the distance
+     * bands share out, and takes no share itself. Give it a volume tier and a DISTANCE_BAND
+     * where the image tier draws, so that distant hilltops keep their blades against the sky. */
+    GRASS_LOD_TEST_HILLTOP = 5
+} grass_lod_test_kind;
+
+/* One lod test. All tests of a tier must answer draw for the tier to draw a node; any
+ * discard drops the node's subtree for that tier; otherwise the node is split. A node
+ * drawn or discarded by a tier is not asked again for that tier below it (the skip flags of
+ * lemme figure 6.3). A geometry tier draws cells only: it splits a larger node. */
+typedef struct grass_lod_test {
+    grass_lod_test_kind kind;
+    uint32_t tier;               /* index into grass_field_desc.tiers */
+    float begin, end;            /* DISTANCE_BAND: metres, 0 <= begin < end; end may be INFINITY */
+    float transition_in;         /* DISTANCE_BAND: metres, >= 0 */
+    float transition_out;        /* DISTANCE_BAND: metres, >= 0 */
+    /* DISTANCE_BAND: a node that crosses begin or end is drawn whole (instead of split
+     * down to cells) once its side is at most edge_ratio times its distance from the
+     * camera: 0 = exact edges, more = fewer nodes and instances for some drawing beyond the
+     * band (where the tier's blades are faded out). 0..1. */
+    float edge_ratio;
+    uint32_t max_macro_cells;    /* MACRO_CELL: cells, >= 1 */
+    grass_lod_test_fn callback;  /* CALLBACK: required; called during grass_begin_frame */
+    void* user_data;             /* CALLBACK */
+    float max_unplanarity;       /* UNPLANARITY: metres, >= 0 */
+    float unplanarity_ratio;     /* UNPLANARITY: metres of height range allowed per metre of distance, 0..1 */
+} grass_lod_test;
+
+#define GRASS_DEFAULT_TIER_COUNT 5
+#define GRASS_DEFAULT_LOD_TEST_COUNT 9
+
+/* Lemme's football-field setup (lemme2012 chapter 7). His distances are in cells (his cell
+ * is the unit patch), so they scale with cell_size: metres = value x cell_size.
+ *   tier 0 geometry           0 .. 20 cells
+ *   tier 1 volume, 8 slices   5 .. 80 cells, macro-cells up to 40 cells a side
+ *   tier 2 volume, 2 slices  50 .. 160 cells, macro-cells up to 40
+ *   tier 3 volume, 1 slice  100 .. 300 cells, macro-cells up to 40
+ *   tier 4 image            200 cells .. infinity, macro-cells up to 500
+ * Each overlap is the transition zone of the two tiers that share it; volume and image
+ * bands have an edge_ratio of 0.25. A field that leaves its lod tests NULL and has a
+ * height map also gets an UNPLANARITY test on its volume and image tiers (half a cell plus
+ * 2% of the distance). Fills
+ * GRASS_DEFAULT_TIER_COUNT tiers and GRASS_DEFAULT_LOD_TEST_COUNT tests. */
+GRASS_API void grass_default_lod_setup(double cell_size, grass_tier_desc* out_tiers, grass_lod_test* out_tests);
+
+/* ---- Quality: the speed/accuracy trade (docs/quality.md measures it) -------------- */
+
+typedef enum grass_quality_level {
+    GRASS_QUALITY_REFERENCE = 0, /* blades at every distance, 8 subdivisions, 4x MSAA: the ground truth */
+    GRASS_QUALITY_HIGH = 1,      /* Lemme's table twice as far, twice the slices */
+    GRASS_QUALITY_DEFAULT = 2,   /* Lemme's football table (grass_default_lod_setup), 4x MSAA */
+    GRASS_QUALITY_LOW = 3,       /* tiers nearer, larger macro-cells, fewer blades, no MSAA */
+    GRASS_QUALITY_FASTEST = 4    /* the cheapest setup that still looks like a lawn */
+} grass_quality_level;
+#define GRASS_QUALITY_LEVEL_COUNT 5
+
+/* The knobs behind the presets. Each one trades speed for accuracy (docs/quality.md). */
+typedef struct grass_quality_desc {
+    grass_struct_type type;        /* GRASS_STRUCT_TYPE_QUALITY_DESC */
+    const void* next;              /* NULL */
+    /* Blades at every distance (one geometry tier): the reference; the knobs below that
+     * shape the other tiers are then unused. */
+    grass_bool blades_everywhere;
+    float distance_scale;          /* multiplies the default table's tier distances, 0.1..16; default 1 */
+    float transition_scale;        /* multiplies its transition widths (after distance_scale), 0..1.2; default 1 */
+    float slice_scale;             /* multiplies its slices per axis (8, 2, 1), rounded, at least 1, at most 64; 0.125..8 */
+    float macro_cell_scale;        /* multiplies its macro-cell limits (40, 500), rounded, at least 1; 0.025..4 */
+    uint32_t blade_subdivisions;   /* quads along a blade, 1..32; default 4 */
+    float blade_fraction;          /* of the patch's blade_count kept (at least 1 blade), (0, 1]; default 1 */
+    uint32_t msaa_samples;         /* the sample count the preset is meant for (the host owns the target): 1, 2, 4 or 8 */
+} grass_quality_desc;
+
+/* The knobs of a preset. */
+GRASS_API grass_quality_desc grass_quality_preset(grass_quality_level level);
+
+/* Applies `quality` to a patch desc (blade count, subdivisions) and writes the lod setup for
+ * fields of `cell_size` metres: up to GRASS_MAX_TIERS tiers and GRASS_MAX_LOD_TESTS tests,
+ * their counts in *out_tier_count and *out_test_count. Refuses out-of-range knobs with an
+ * error naming them (through the context's log), writing nothing. */
+GRASS_API grass_result grass_apply_quality(grass_context* context, const grass_quality_desc* quality, double cell_size,
+                                           grass_patch_desc* inout_patch, grass_tier_desc* out_tiers,
+                                           uint32_t* out_tier_count, grass_lod_test* out_tests,
+                                           uint32_t* out_test_count);
+
+/* ---- Field: a grid of cells covered by one patch ---------------------------------- */
+
+/* Field space: cell (i, j) covers [i, i+1] x [j, j+1] cell edges along x and z, y up.
+ * base_transform maps field space scaled by cell_size (metres) to world space. */
+typedef struct grass_field_desc {
+    grass_struct_type type;      /* GRASS_STRUCT_TYPE_FIELD_DESC */
+    const void* next;            /* NULL, or a chain of grass_grass_type_desc: more grass types */
+    grass_patch_id patch;        /* required */
+    uint32_t cells_x, cells_z;   /* 1 .. 2^30 each; no default (0 is refused) */
+    double cell_size;            /* metres per cell edge, 1e-4 .. 1e4; default 0.25 */
+    double base_transform[16];   /* column-major, rotation + translation only, the translation
+                                    within +-1e12 m (as the camera); default identity */
+    float density;               /* uniform density 0..1 where no map is given, or the map's
+                                    multiplier; default 1 */
+    /* Optional, NULL = uniform density: a single-channel density map copied into this field
+     * alone and spanning it (the shortcut for maps.density, which is refused with it). */
+    const grass_map_desc* density_map;
+    grass_bool mirror_tiling;    /* mirror each cell along x and/or z at random; default 1 */
+    uint32_t mirror_seed;        /* selects the mirror pattern; default 0 */
+    /* The tiers and the lod tests that choose them per quadtree node. Both NULL (counts 0):
+     * grass_default_lod_setup(cell_size). Copied at creation. */
+    const grass_tier_desc* tiers;
+    uint32_t tier_count;         /* 1..GRASS_MAX_TIERS */
+    const grass_lod_test* lod_tests;
+    uint32_t lod_test_count;     /* 1..GRASS_MAX_LOD_TESTS; every tier needs at least one */
+    /* Where two tiers share a transition zone each blade is drawn by one of them; a blade
+     * crossing over fades out of one tier as it fades into the other over this half-width,
+     * in density-threshold units (lemme2012 eq. 5.26). Needs a multisampled target to show
+     * (alpha-to-coverage for blades, sample masks for the slices); without one the
+     * crossover is exact. 0..0.25; default 0.05. */
+    float transition_window;
+    /* The design maps: density (multiplying the density above and density_map), colour,
+     * ambient, diffuse light and height. Default: none. */
+    grass_map_stack maps;
+} grass_field_desc;
+
+GRASS_API grass_field_desc grass_default_field_desc(void);
+
+#define GRASS_MAX_GRASS_TYPES 8
+
+/* Another grass type on the same field (lemme 6.4.5): its own patch, density (and density
+ * map) and tiers with lod tests, so types grow in their own places and change tier at
+ * their own distances; it shares the field's cells, transform, mirroring and every other
+ * map (colour, ambient, diffuse, height). Chain them from grass_field_desc.next (each
+ * one's next points to the following type, the last one's is NULL): the field's own desc
+ * is the first type, up to GRASS_MAX_GRASS_TYPES in all. The field id stands for all of
+ * them; grass_destroy_field destroys them together. Frame stats count each type as a field. */
+typedef struct grass_grass_type_desc {
+    grass_struct_type type;       /* GRASS_STRUCT_TYPE_GRASS_TYPE_DESC */
+    const void* next;             /* the next grass_grass_type_desc, or NULL */
+    grass_patch_id patch;         /* required */
+    float density;                /* 0..1, as grass_field_desc.density; default 1 */
+    grass_map_id density_map;     /* single-channel, as grass_map_stack.density; default none */
+    const grass_tier_desc* tiers; /* as in grass_field_desc; both NULL: the default setup */
+    uint32_t tier_count;
+    const grass_lod_test* lod_tests;
+    uint32_t lod_test_count;
+} grass_grass_type_desc;
+
+GRASS_API grass_grass_type_desc grass_default_grass_type_desc(void);
+
+GRASS_API grass_result grass_create_field(grass_context* context, const grass_field_desc* desc,
+                                          grass_field_id* out_field);
+GRASS_API grass_result grass_destroy_field(grass_context* context, grass_field_id field);
+
+/* ---- Frames ----------------------------------------------------------------------- */
+
+typedef enum grass_view_flags {
+    GRASS_VIEW_FLAG_NONE = 0,
+    /* Debugging: draw without the depth test (grass is drawn over the host's scene). */
+    GRASS_VIEW_FLAG_NO_DEPTH_TEST = 1u << 0,
+    /* Debugging: tint each tier's grass: red geometry, yellow volume, blue image
+     * (boulanger2006 figure 12, lemme2012 figure 7.1); the transition zones show both. */
+    GRASS_VIEW_FLAG_DEBUG_TIERS = 1u << 1,
+    /* Debugging: instead of grass, draw every planned instance as a flat box on the ground
+     * in its tier's colour, the size of its cell or macro-cell. */
+    GRASS_VIEW_FLAG_DEBUG_CELLS = 1u << 2,
+    /* Debugging and tests: every tier writes, instead of its colour, the density threshold
+     * of the blade it draws (16 bits: red = high byte, green = low byte, written so that an
+     * 8-bit sRGB target stores those bytes exactly) and its tier kind in blue (0 geometry,
+     * 128 volume, 255 image). Use a single-sampled target. */
+    GRASS_VIEW_FLAG_DEBUG_THRESHOLDS = 1u << 3
+} grass_view_flags;
+
+/* The camera and lights of one frame. */
+typedef struct grass_view_desc {
+    grass_struct_type type;      /* GRASS_STRUCT_TYPE_VIEW_DESC */
+    const void* next;            /* NULL */
+    double camera_position[3];   /* world space, metres, within +-1e12 m each */
+    /* World-to-eye matrix, column-major. Only its rotation is used: translation comes
+     * from camera_position, so a host may pass a view built at the origin. */
+    float view[16];
+    /* Eye-to-clip matrix, column-major, exactly as the host uses it for its own scene
+     * (GL: z in -1..1; Vulkan: z in 0..1 and y down). */
+    float projection[16];
+    int32_t viewport[4];         /* x, y, width, height in pixels; width and height > 0 */
+    float sun_direction[3];      /* world-space direction towards the sun; not zero;
+                                    default (0.35, 0.8, 0.25) */
+    float sun_color[3];          /* linear RGB irradiance; default (1.0, 0.95, 0.85) */
+    float ambient_color[3];      /* linear RGB; default (0.30, 0.36, 0.45) */
+    double time;                 /* seconds; reserved for wind, default 0 */
+    uint32_t flags;              /* grass_view_flags; default 0 */
+} grass_view_desc;
+
+GRASS_API grass_view_desc grass_default_view_desc(void);
+
+/* Starts a frame: validates the view and plans what every field draws. Then draw with
+ * grass_gl_render() or grass_vk_record(), and close with grass_end_frame(). */
+GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_view_desc* view);
+GRASS_API grass_result grass_end_frame(grass_context* context);
+
+typedef struct grass_frame_stats {
+    uint64_t fields_drawn;
+    uint64_t nodes_visited;      /* quadtree nodes the traversal reached */
+    uint64_t cells_drawn;        /* geometry-tier patch instances (cells) */
+    uint64_t blades_submitted;   /* cells_drawn x blades per patch */
+    uint64_t blades_drawn;       /* blades the geometry tier draws, from the density and the
+                                    tier transitions at each cell's centre: exact without a map
+                                    and away from transition zones, an estimate elsewhere */
+    uint64_t triangles;          /* triangles of the drawn blades */
+    double plan_ms;              /* CPU time of the frame plan */
+    uint64_t lod_test_calls;     /* lod test evaluations */
+    uint64_t nodes_culled;       /* nodes rejected by the view-frustum test */
+    /* Per tier kind (grass_tier_kind), summed over fields and tiers of that kind: */
+    uint64_t instances[GRASS_TIER_KIND_COUNT];   /* cells plus macro-cells drawn */
+    uint64_t macro_cells[GRASS_TIER_KIND_COUNT]; /* instances larger than one cell */
+    uint64_t cells[GRASS_TIER_KIND_COUNT];       /* cells those instances cover */
+    uint64_t nodes_empty;        /* nodes discarded, subtree and all, because their density is zero everywhere */
+} grass_frame_stats;
+
+/* Stats of the last begun frame. */
+GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass_frame_stats* out_stats);
+
+/* GPU time of each tier kind (grass_tier_kind index) in the most recent frame whose timings are available, in milliseconds; *out_available = 0 where the device or driver has no timer queries (then the values are 0). */
+/* Timestamps are written around each kind's draws and read back without waiting: the
+ * figures lag the current frame by the frames in flight (GL: up to 4 frames). Also
+ * *out_available = 0 until a timed frame has finished on the GPU. Frames that draw
+ * nothing or draw GRASS_VIEW_FLAG_DEBUG_CELLS are not timed. Several draw calls of one
+ * frame (grass_gl_render, grass_vk_record) add up. GL: the host's GL context must be
+ * current; Vulkan: call grass_vk_prepare_frame every frame (it resets the queries). */
+GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, double out_ms[GRASS_TIER_KIND_COUNT], grass_bool* out_available);
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* GRASS_ABI_0_3_GRASS_H */

@@ -1,0 +1,58 @@
+/*
+ * FROZEN COPY of grass_gl.h 0.3 (git show 0ba0d4f:api/include/grass/grass_gl.h), for
+ * tests/abi/old_header_host.c: a program built against the 0.3 headers must run against
+ * every later 0.x library. Never edit this file (only its include guard and its include
+ * of grass.h were renamed so that it cannot clash with the current headers).
+ */
+/*
+ * grass_gl.h - what an OpenGL 4.5 core host hands over, and the draw call.
+ *
+ * Includes no GL header. The host creates a GL 4.5 context (core or compatibility),
+ * makes it current on the calling thread for every grass call of a GL context (create,
+ * destroy, patch, field, render), and gives a proc-address loader. The plugin draws into
+ * the framebuffer the host has bound, with the host's depth buffer, and restores every GL
+ * state it touches (see grass_gl_render).
+ */
+#ifndef GRASS_ABI_0_3_GRASS_GL_H
+#define GRASS_ABI_0_3_GRASS_GL_H
+
+#include "grass_0_3.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Returns the address of a GL entry point, e.g. eglGetProcAddress or glfwGetProcAddress. */
+typedef void* (*grass_gl_get_proc_address_fn)(void* user_data, const char* name);
+
+typedef struct grass_gl_desc {
+    grass_struct_type type;                      /* GRASS_STRUCT_TYPE_GL_DESC */
+    const void* next;                            /* NULL */
+    grass_gl_get_proc_address_fn get_proc_address; /* required */
+    void* get_proc_address_user_data;
+} grass_gl_desc;
+
+GRASS_API grass_gl_desc grass_gl_default_desc(void);
+
+/* Creates a context that draws with the current GL context, which must be 4.5 or newer. */
+GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const grass_context_desc* desc,
+                                               const grass_gl_desc* gl_desc, grass_context** out_context);
+
+/* Draws the begun frame into the currently bound draw framebuffer. Depth test on (the
+ * host's depth buffer is shared), depth writes on, no blending; when the framebuffer is
+ * multisampled, the blades use alpha-to-coverage and the volume and image tiers write
+ * their coverage as sample masks (the sample count is read from the bound framebuffer).
+ * Saved and restored: program, vertex array, array and
+ * element buffers, uniform buffer bindings 0-1 (and the generic uniform buffer binding),
+ * texture unit 0 (its 2D texture: the density map) and its sampler, texture units 3-5
+ * (their 2D array textures) and their samplers, texture units 6-9 (their 2D textures: the
+ * colour, ambient, diffuse and height maps) and their samplers, active texture, viewport, depth test/func/mask, cull face, blend, multisample and
+ * alpha-to-coverage enables, polygon mode. Returns GRASS_ERROR_INVALID_STATE outside
+ * grass_begin_frame()/grass_end_frame(). May be called more than once per frame. */
+GRASS_API grass_result grass_gl_render(grass_context* context);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* GRASS_ABI_0_3_GRASS_GL_H */

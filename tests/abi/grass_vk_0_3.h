@@ -1,0 +1,87 @@
+/*
+ * FROZEN COPY of grass_vk.h 0.3 (git show 0ba0d4f:api/include/grass/grass_vk.h), for
+ * tests/abi/old_header_host.c: a program built against the 0.3 headers must run against
+ * every later 0.x library. Never edit this file (only its include guard and its include
+ * of grass.h were renamed so that it cannot clash with the current headers).
+ */
+/*
+ * grass_vk.h - what a Vulkan host hands over, and the recording calls.
+ *
+ * Includes no Vulkan header: dispatchable handles (VkInstance, VkPhysicalDevice,
+ * VkDevice, VkCommandBuffer) travel as void*, non-dispatchable ones (VkRenderPass) as
+ * uint64_t, formats and sample counts as their VkFormat / VkSampleCountFlagBits values.
+ *
+ * The host owns the instance, device, queues, command buffers and render targets. The
+ * plugin owns its pipelines, buffers, images and descriptor pools, records into the
+ * host's command buffers and never submits, waits on a queue, or presents.
+ *
+ * Per frame:
+ *   grass_begin_frame(ctx, &view);            plan (CPU only)
+ *   grass_vk_prepare_frame(ctx, cmd);         outside a render pass: uploads + barriers
+ *   ... host begins its render pass ...
+ *   grass_vk_record(ctx, &record);            inside the pass, in its first subpass
+ *   ... host ends the pass, submits ...
+ *   grass_end_frame(ctx);
+ *
+ * Frames in flight: the plugin keeps frames_in_flight copies of its per-frame buffers and
+ * uses them in turn, one per grass_begin_frame(). The host must have waited for the GPU
+ * to finish frame N - frames_in_flight before it calls grass_begin_frame() for frame N,
+ * as it does for its own per-frame resources.
+ */
+#ifndef GRASS_ABI_0_3_GRASS_VK_H
+#define GRASS_ABI_0_3_GRASS_VK_H
+
+#include "grass_0_3.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* PFN_vkGetInstanceProcAddr, cast: (grass_vk_get_instance_proc_addr_fn)vkGetInstanceProcAddr */
+typedef void (*(*grass_vk_get_instance_proc_addr_fn)(void* instance, const char* name))(void);
+
+typedef struct grass_vk_desc {
+    grass_struct_type type;        /* GRASS_STRUCT_TYPE_VK_DESC */
+    const void* next;              /* NULL */
+    grass_vk_get_instance_proc_addr_fn get_instance_proc_addr; /* required */
+    void* instance;                /* VkInstance, required */
+    void* physical_device;         /* VkPhysicalDevice, required */
+    void* device;                  /* VkDevice, required; Vulkan 1.1 or newer */
+    uint32_t queue_family;         /* the family of the queue the host submits grass work on */
+    /* Either a render pass (the plugin draws in its subpass `subpass`) ... */
+    uint64_t render_pass;          /* VkRenderPass, or 0 for dynamic rendering */
+    uint32_t subpass;              /* default 0 */
+    /* ... or dynamic rendering (render_pass = 0; the host enabled dynamicRendering). */
+    uint32_t color_format;         /* VkFormat of the single colour attachment */
+    uint32_t depth_format;         /* VkFormat of the depth attachment, required */
+    uint32_t sample_count;         /* VkSampleCountFlagBits of the pass: 1, 2, 4, 8...; default 1 */
+    uint32_t frames_in_flight;     /* 1..8; default 2 */
+} grass_vk_desc;
+
+GRASS_API grass_vk_desc grass_vk_default_desc(void);
+
+GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const grass_context_desc* desc,
+                                               const grass_vk_desc* vk_desc, grass_context** out_context);
+
+/* Records pending uploads (patches, maps) and the barriers that make them visible to the
+ * vertex and fragment stages. Call between grass_begin_frame() and the render pass that
+ * grass_vk_record() draws in; it records nothing when nothing is pending. */
+GRASS_API grass_result grass_vk_prepare_frame(grass_context* context, void* command_buffer);
+
+typedef struct grass_vk_record_desc {
+    grass_struct_type type;        /* GRASS_STRUCT_TYPE_VK_RECORD_DESC */
+    const void* next;              /* NULL */
+    void* command_buffer;          /* VkCommandBuffer inside the host's render pass */
+} grass_vk_record_desc;
+
+GRASS_API grass_vk_record_desc grass_vk_default_record_desc(void);
+
+/* Records the draws of the begun frame. Binds its own pipeline and descriptor sets and
+ * sets viewport and scissor from the view; the host must rebind its own state after. */
+GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc* record);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* GRASS_ABI_0_3_GRASS_VK_H */
