@@ -206,7 +206,7 @@ void main() {
                 vec3 g = v_camera_local + dir * tg;
                 composite(vec3(g.x, layer_y, g.z), g, tg, 2, 1.0);
                 ground_pending = false;
-                if (g_alpha >= 0.99) break;
+                if (g_alpha >= kOpaqueAlpha) break;
             }
             prev_t = t;
             prev_above = above;
@@ -214,7 +214,7 @@ void main() {
             vec3 g = v_camera_local + dir * t_ground;
             composite(g, g, t_ground, 2, 1.0);
             ground_pending = false;
-            if (g_alpha >= 0.99) break;
+            if (g_alpha >= kOpaqueAlpha) break;
         }
         // The slice is looked up at the hit's height above the terrain (eq. 6.17-6.18); a
         // hit below the terrain or above the blades there meets nothing.
@@ -232,9 +232,9 @@ void main() {
         }
         if (t < t_in || y < 0.0 || y > size.y || slab <= 0.0) continue;
         composite(vec3(h.x, y, h.z), h, t, across_x ? 0 : 1, slab);
-        if (g_alpha >= 0.99) break;
+        if (g_alpha >= kOpaqueAlpha) break;
     }
-    if (ground_pending && g_alpha < 0.99) {
+    if (ground_pending && g_alpha < kOpaqueAlpha) {
         if (displaced) {
             vec3 e = v_camera_local + dir * t_end;
             float above = e.y - terrain_height(vec2(v_cell.xy) + e.xz) - layer_y;
