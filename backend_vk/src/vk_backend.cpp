@@ -44,10 +44,6 @@ VkDeviceSize slice_staging_layout(const Image& image, uint32_t texel_bytes, VkDe
     return offset;
 }
 
-const char* tier_kind_name(grass_tier_kind kind) {
-    return kind == GRASS_TIER_VOLUME ? "volume" : kind == GRASS_TIER_IMAGE ? "image" : "geometry";
-}
-
 } // namespace
 
 VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const Device& device)
@@ -249,8 +245,9 @@ const VkBackend::SliceGpu* VkBackend::draw_slices(const TierDraw& d) const {
 grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
     const char* function = "grass_create_field"; // slices are baked and uploaded for a field's tiers
     if (slot >= patches_.size() || !patches_[slot].live) {
-        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
-                          "%s: baked slices (N = %u) for the patch in slot %u, which the Vulkan backend does not hold",
+        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
+                          "%s: baked slices (N = %u) for the patch in slot %u, which the Vulkan backend does not hold "
+                          "(internal error)",
                           function, set.slices_per_axis, slot);
     }
     const uint32_t n = set.slices_per_axis;
@@ -258,20 +255,7 @@ grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
     fresh.patch_slot = slot;
     fresh.slices_per_axis = n;
     const bool empty = set.width == 0 || set.height == 0 || set.layers == 0 || set.mip_levels == 0;
-    const uint64_t texels = empty ? 0 : set.offset(set.layers, 0); // every level of every layer
-    if (set.layers != (n ? 2 * n + 1 : 1) && !empty) {
-        return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NONE,
-                          "%s: baked slices of the patch in slot %u have %u layers; N = %u needs %u", function, slot,
-                          set.layers, n, n ? 2 * n + 1 : 1);
-    }
-    if (set.color.size() != texels * 4 || set.normal.size() != texels * 4 || set.threshold.size() != texels * 4) {
-        return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NONE,
-                          "%s: baked slices (N = %u) of the patch in slot %u hold %zu colour, %zu normal and %zu "
-                          "threshold values; %u x %u texels, %u levels, %u layers need %llu, %llu and %llu",
-                          function, n, slot, set.color.size(), set.normal.size(), set.threshold.size(), set.width,
-                          set.height, set.mip_levels, set.layers, static_cast<unsigned long long>(texels * 4),
-                          static_cast<unsigned long long>(texels * 4), static_cast<unsigned long long>(texels));
-    }
+    // The core checked the set against the layout contract (check_slice_set).
     const VkPhysicalDeviceLimits& limits = device_.properties.limits;
     uint32_t full_chain = 1;
     while (!empty && ((set.width | set.height) >> full_chain) != 0) ++full_chain;
@@ -430,8 +414,9 @@ grass_result VkBackend::upload_map(uint32_t slot, const MapTexels& map) {
 grass_result VkBackend::update_map(uint32_t slot, const MapTexels& map, const MapRegion& region) {
     const char* function = "grass_update_map";
     if (slot >= maps_.size() || !maps_[slot].live) {
-        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
-                          "%s: the design map in slot %u, which the Vulkan backend does not hold", function, slot);
+        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
+                          "%s: the design map in slot %u, which the Vulkan backend does not hold (internal error)",
+                          function, slot);
     }
     MapGpu& m = maps_[slot];
     if (region.width == 0 || region.height == 0) return GRASS_SUCCESS;
@@ -548,20 +533,7 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
 
 grass_result VkBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
     const char* function = "grass_create_field";
-    for (uint32_t role = 0; role < kMapRoleCount; ++role) {
-        const uint32_t m = maps.map_slot[role];
-        const bool has = (maps.features >> role) & 1u;
-        if (has != (m != kNoMap) || (m != kNoMap && (m >= maps_.size() || !maps_[m].live))) {
-            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
-                              "%s: the field in slot %u samples map role %u from map slot %u (feature mask 0x%x), "
-                              "which the Vulkan backend does not hold",
-                              function, slot, role, m, maps.features);
-        }
-    }
-    if (maps.features >= kFeatureMaskCount) {
-        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE, "%s: feature mask 0x%x of the field in slot %u",
-                          function, maps.features, slot);
-    }
+    // The core checked the maps against the feature mask (check_field_maps).
     if (slot >= fields_.size()) fields_.resize(slot + 1, FieldGpu{}); // may throw: nothing made yet
     VkFailure failure;
     const char* what = "";
@@ -720,9 +692,10 @@ bool VkBackend::drawn(const TierDraw& d, bool debug_view) const {
         return false;
     }
     if (d.kind == GRASS_TIER_GEOMETRY) return true;
-    // A slice set baked empty has nothing to draw; a missing one is an error (record()).
+    // A slice set baked empty has nothing to draw (grass_begin_frame checked that every
+    // set a draw samples was uploaded: check_plan).
     const SliceGpu* s = draw_slices(d);
-    return s == nullptr || s->color.image != VK_NULL_HANDLE;
+    return s != nullptr && s->color.image != VK_NULL_HANDLE;
 }
 
 bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** problem) const {
@@ -759,17 +732,11 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
 grass_result VkBackend::record(VkCommandBuffer cmd) {
     const FramePlan& plan = ctx_->plan;
     const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
-    // Refuse before recording anything, so that the command buffer is left untouched.
+    // Refuse before recording anything, so that the command buffer is left untouched. The
+    // plan itself was checked by grass_begin_frame (check_plan in context/invariants.hpp).
     uint32_t draw_count = 0, slice_draws = 0;
     for (const TierDraw& d : plan.draws) {
         if (!drawn(d, debug_view)) continue;
-        if (!debug_view && d.kind != GRASS_TIER_GEOMETRY && draw_slices(d) == nullptr) {
-            const uint32_t n = d.kind == GRASS_TIER_VOLUME ? d.slices : 0;
-            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
-                              "grass_vk_record: tier %u (%s) of the field in slot %u draws the baked slices with N = %u "
-                              "of the patch in slot %u, which were never uploaded to the Vulkan backend",
-                              d.tier, tier_kind_name(d.kind), d.field_slot, n, d.patch_slot);
-        }
         const char* problem = "";
         if (!draw_ready(d, debug_view, &problem)) {
             return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_UPLOAD_NOT_RECORDED,
@@ -777,11 +744,6 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
                               "grass_vk_prepare_frame() with a command buffer that runs before this one, after "
                               "grass_begin_frame() and outside the render pass",
                               d.field_slot, problem);
-        }
-        if (d.features >= kFeatureMaskCount) {
-            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
-                              "grass_vk_record: tier %u of the field in slot %u has feature mask 0x%x", d.tier,
-                              d.field_slot, d.features);
         }
         // upload_field made the variant of the field's maps; one the plan asks for besides
         // is made here, before anything is recorded.
