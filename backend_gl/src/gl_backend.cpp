@@ -434,15 +434,12 @@ grass_result GlBackend::begin_frame(const FramePlan&) {
     // The plan is uploaded by the first grass_gl_render of the frame, where the host's
     // GL context is current by contract.
     frame_uploaded_ = false;
-    end_frame(); // a frame's timer set is closed when it ends; this is a safeguard
-    frame_timer_chosen_ = false;
-    frame_timer_ = -1;
+    timer_ring_.close_frame(); // a frame's timer set is closed when it ends; this is a safeguard
+    frame_timer_opened_ = false;
     return GRASS_SUCCESS;
 }
 
-void GlBackend::end_frame() {
-    if (frame_timer_ >= 0) timer_sets_[frame_timer_].closed = true;
-}
+void GlBackend::end_frame() { timer_ring_.close_frame(); }
 
 uint64_t GlBackend::gpu_bytes() const {
     uint64_t bytes = instances_.capacity() + uniforms_.capacity();

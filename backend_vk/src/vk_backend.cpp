@@ -56,7 +56,8 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
       fields_(StlAllocator<FieldGpu>(&context->host)), maps_(StlAllocator<MapGpu>(&context->host)), slices_(StlAllocator<SliceGpu>(&context->host)),
       draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),
-      regions_(StlAllocator<VkBufferImageCopy>(&context->host)) {}
+      regions_(StlAllocator<VkBufferImageCopy>(&context->host)),
+      timer_ring_(vk_desc.frames_in_flight, TierTimerRing::WhenBusy::drop_results) {}
 
 VkBackend::~VkBackend() {
     // The host guarantees the device is idle for grass work: everything goes at once.
@@ -582,10 +583,13 @@ void VkBackend::release_field(uint32_t slot) {
 grass_result VkBackend::begin_frame(const FramePlan& plan) {
     frame_ += 1;
     slot_ = static_cast<uint32_t>(frame_ % desc_.frames_in_flight);
-    // The slot's timestamps belong to frame frame_ - frames_in_flight, which has finished:
-    // read them (and any older) now, or drop them if they never ran.
+    // The previous frame writes no more stamps (the host has submitted it). The set this
+    // frame takes was written by frame frame_ - frames_in_flight, which has finished: read
+    // it (and any older) now; open_frame drops it if it never ran.
+    timer_ring_.close_frame();
     collect_timers();
-    timer_slots_[slot_] = TimerSlot{};
+    timer_set_ = timer_pool_ != VK_NULL_HANDLE ? timer_ring_.open_frame() : TierTimerRing::kUntimed;
+    timer_reset_ = false;
     // Frame frame_ - frames_in_flight has finished: what it was the last to use can go,
     // and the sets its volume and image draws used.
     deferred_.collect(frame_);
@@ -609,9 +613,10 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
 
 grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
     // This frame's timestamps (vk_timers.cpp), reset once, outside the render pass.
-    if (timer_pool_ != VK_NULL_HANDLE && !timer_slots_[slot_].reset) {
-        fn_.vkCmdResetQueryPool(cmd, timer_pool_, slot_ * kTimerQueriesPerSlot, kTimerQueriesPerSlot);
-        timer_slots_[slot_].reset = true;
+    if (timer_set_ != TierTimerRing::kUntimed && !timer_reset_) {
+        fn_.vkCmdResetQueryPool(cmd, timer_pool_, timer_set_ * TierTimerRing::kStampsPerSet,
+                                TierTimerRing::kStampsPerSet);
+        timer_reset_ = true;
     }
     if (pending_uploads_ == 0) return GRASS_SUCCESS;
 
@@ -815,7 +820,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     // the images on the ground far away.
     // The pipeline of each draw is the variant of its feature mask; binding one keeps the
     // vertex buffers and the descriptor set (same layout).
-    const uint32_t stamps = timer_stamps(); // UINT32_MAX: this record is not timed
+    const uint32_t stamps = timer_stamps(); // kUntimed: this record is not timed
     write_stamp(cmd, stamps, 0);
     VkPipeline bound_pipeline = VK_NULL_HANDLE;
     uint32_t bound_patch = UINT32_MAX;
