@@ -44,12 +44,12 @@ VkBackend::~VkBackend() {
     for (FieldGpu& f : fields_) destroy_field_now(&f);
     for (MapGpu& m : maps_) destroy_map_now(&m);
     deferred_.collect_all();
-    memory_.destroy_buffer(&default_white_staging_);
-    memory_.destroy_image(&default_white_);
-    memory_.destroy_buffer(&default_black_staging_);
-    memory_.destroy_image(&default_black_);
-    memory_.destroy_buffer(&default_slices_staging_);
-    memory_.destroy_image(&default_slices_);
+    deferred_.destroy_now(&default_white_staging_);
+    deferred_.destroy_now(&default_white_);
+    deferred_.destroy_now(&default_black_staging_);
+    deferred_.destroy_now(&default_black_);
+    deferred_.destroy_now(&default_slices_staging_);
+    memory_.destroy_image(&default_slices_); // never retired
     if (timer_pool_ != VK_NULL_HANDLE) fn_.vkDestroyQueryPool(device_.device, timer_pool_, nullptr);
     // The frame ring, pipelines and descriptor pools go with their members.
 }
@@ -79,7 +79,6 @@ grass_result VkBackend::init(const char* function) {
     // (x 1), a transparent black one for colour (weight 0) and height (0).
     const uint16_t white = 0xffff;
     const uint16_t black[4] = {0, 0, 0, 0};
-    deferred_.promise(2); // the staging buffers, retired once their copies are recorded
     if (!stage_image(&default_white_, &default_white_staging_, MapTexels{&white, 1, 1, 1}, &failure, &what)) {
         return fail(function, "the default white map", failure); // the destructor frees what was made
     }
@@ -91,10 +90,9 @@ grass_result VkBackend::init(const char* function) {
     pending_uploads_ += 1;
 
     // Bindings 3-5 of the draws that sample no slices: one transparent texel, no blade.
-    deferred_.promise(1);
     bool ok = memory_.create_array_image(1, 1, 1, 1, kSliceNormalFormat, kSliceUsage, &default_slices_, &failure) &&
-              memory_.create_buffer(kSliceNormalBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging,
-                                    &default_slices_staging_, &failure);
+              deferred_.create_buffer(kSliceNormalBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging,
+                                      &default_slices_staging_, &failure); // retired once its copy is recorded
     if (ok) {
         std::memset(default_slices_staging_.mapped, 0, kSliceNormalBytes);
         ok = memory_.flush(default_slices_staging_, 0, kSliceNormalBytes, &failure);
@@ -108,17 +106,17 @@ bool VkBackend::stage_image(Image* image, Buffer* staging, const MapTexels& texe
                             const char** what) {
     *what = "a design map image";
     const VkFormat format = texels.channels == 4 ? VK_FORMAT_R16G16B16A16_UNORM : kDensityMapFormat;
-    if (!memory_.create_image(texels.width, texels.height, format, kMapUsage, image, failure)) return false;
+    if (!deferred_.create_image(texels.width, texels.height, format, kMapUsage, image, failure)) return false;
     const VkDeviceSize bytes = VkDeviceSize(texels.width) * texels.height * texels.channels * sizeof(uint16_t);
     *what = "a design map staging buffer";
-    if (!memory_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, staging, failure)) {
-        memory_.destroy_image(image);
+    if (!deferred_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, staging, failure)) {
+        deferred_.destroy_now(image);
         return false;
     }
     std::memcpy(staging->mapped, texels.texels, static_cast<size_t>(bytes));
     if (!memory_.flush(*staging, 0, bytes, failure)) {
-        memory_.destroy_buffer(staging);
-        memory_.destroy_image(image);
+        deferred_.destroy_now(staging);
+        deferred_.destroy_now(image);
         return false;
     }
     return true;

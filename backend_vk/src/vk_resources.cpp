@@ -34,19 +34,18 @@ grass_result VkBackend::upload_patch(uint32_t slot, const PatchData& patch) {
     }
     const VkDeviceSize vertex_bytes = VkDeviceSize(patch.vertices.size()) * sizeof(BladeVertex);
     const VkDeviceSize index_bytes = VkDeviceSize(patch.indices.size()) * sizeof(uint32_t);
-    deferred_.promise(3); // vertices, indices, staging
 
     VkFailure failure;
     const char* what = "the patch vertex buffer";
-    bool ok = memory_.create_buffer(vertex_bytes, kVertexUsage, MemoryUse::device_local, &fresh.vertices, &failure);
+    bool ok = deferred_.create_buffer(vertex_bytes, kVertexUsage, MemoryUse::device_local, &fresh.vertices, &failure);
     if (ok) {
         what = "the patch index buffer";
-        ok = memory_.create_buffer(index_bytes, kIndexUsage, MemoryUse::device_local, &fresh.indices, &failure);
+        ok = deferred_.create_buffer(index_bytes, kIndexUsage, MemoryUse::device_local, &fresh.indices, &failure);
     }
     if (ok) {
         what = "the patch staging buffer";
-        ok = memory_.create_buffer(vertex_bytes + index_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging,
-                                   &fresh.staging, &failure);
+        ok = deferred_.create_buffer(vertex_bytes + index_bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging,
+                                     &fresh.staging, &failure);
     }
     if (ok) {
         auto* bytes = static_cast<unsigned char*>(fresh.staging.mapped);
@@ -56,7 +55,6 @@ grass_result VkBackend::upload_patch(uint32_t slot, const PatchData& patch) {
     }
     if (!ok) {
         destroy_patch_now(&fresh); // never recorded: no GPU work can use it
-        deferred_.forgo(3);
         return fail(function, what, failure);
     }
     fresh.pending = true;
@@ -68,9 +66,9 @@ grass_result VkBackend::upload_patch(uint32_t slot, const PatchData& patch) {
 void VkBackend::destroy_patch_now(PatchGpu* p) {
     // Context destruction (the device is idle for grass work) or a failed upload.
     if (p->pending) pending_uploads_ -= 1;
-    memory_.destroy_buffer(&p->vertices);
-    memory_.destroy_buffer(&p->indices);
-    memory_.destroy_buffer(&p->staging);
+    deferred_.destroy_now(&p->vertices);
+    deferred_.destroy_now(&p->indices);
+    deferred_.destroy_now(&p->staging);
     *p = PatchGpu{};
 }
 
@@ -79,8 +77,7 @@ void VkBackend::release_patch(uint32_t slot) {
     PatchGpu& p = patches_[slot];
     if (p.pending) {
         // Its copy was never recorded: the staging buffer goes now.
-        memory_.destroy_buffer(&p.staging);
-        deferred_.forgo(1);
+        deferred_.destroy_now(&p.staging);
         pending_uploads_ -= 1;
     }
     // Draws of frames still in flight may read the buffers.
@@ -153,20 +150,19 @@ grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
         return GRASS_SUCCESS;
     }
 
-    deferred_.promise(4); // colour, normal, threshold, staging
     VkFailure failure;
     const char* what = "the slice colour image";
-    bool ok = memory_.create_array_image(set.width, set.height, set.layers, set.mip_levels, kSliceColorFormat,
-                                         kSliceUsage, &fresh.color, &failure);
+    bool ok = deferred_.create_array_image(set.width, set.height, set.layers, set.mip_levels, kSliceColorFormat,
+                                           kSliceUsage, &fresh.color, &failure);
     if (ok) {
         what = "the slice normal image";
-        ok = memory_.create_array_image(set.width, set.height, set.layers, set.mip_levels, kSliceNormalFormat,
-                                        kSliceUsage, &fresh.normal, &failure);
+        ok = deferred_.create_array_image(set.width, set.height, set.layers, set.mip_levels, kSliceNormalFormat,
+                                          kSliceUsage, &fresh.normal, &failure);
     }
     if (ok) {
         what = "the slice threshold image";
-        ok = memory_.create_array_image(set.width, set.height, set.layers, set.mip_levels, kSliceThresholdFormat,
-                                        kSliceUsage, &fresh.threshold, &failure);
+        ok = deferred_.create_array_image(set.width, set.height, set.layers, set.mip_levels, kSliceThresholdFormat,
+                                          kSliceUsage, &fresh.threshold, &failure);
     }
     const auto no_visit = [](uint32_t, uint32_t, VkDeviceSize, uint32_t, uint32_t) {};
     VkDeviceSize bytes = slice_staging_layout(fresh.color, kSliceColorBytes, 0, no_visit);
@@ -174,8 +170,8 @@ grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
     bytes = slice_staging_layout(fresh.threshold, kSliceThresholdBytes, bytes, no_visit);
     if (ok) {
         what = "the slice staging buffer";
-        ok = memory_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, &fresh.staging,
-                                   &failure);
+        ok = deferred_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, &fresh.staging,
+                                     &failure);
     }
     if (ok) {
         // Level k of layer l starts at texel offset(l, k) of each array.
@@ -195,7 +191,6 @@ grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
     }
     if (!ok) {
         destroy_slices_now(&fresh); // never recorded: no GPU work can use it
-        deferred_.forgo(4);
         return fail(function, what, failure);
     }
     fresh.pending = true;
@@ -212,18 +207,17 @@ grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
 void VkBackend::destroy_slices_now(SliceGpu* s) {
     // Context destruction (the device is idle for grass work) or a failed upload.
     if (s->pending) pending_uploads_ -= 1;
-    memory_.destroy_image(&s->color);
-    memory_.destroy_image(&s->normal);
-    memory_.destroy_image(&s->threshold);
-    memory_.destroy_buffer(&s->staging);
+    deferred_.destroy_now(&s->color);
+    deferred_.destroy_now(&s->normal);
+    deferred_.destroy_now(&s->threshold);
+    deferred_.destroy_now(&s->staging);
     *s = SliceGpu{};
 }
 
 void VkBackend::release_slices(SliceGpu* s) {
     if (s->pending) {
         // Its copies were never recorded: the staging buffer goes now.
-        memory_.destroy_buffer(&s->staging);
-        deferred_.forgo(1);
+        deferred_.destroy_now(&s->staging);
         pending_uploads_ -= 1;
     }
     deferred_.retire(&s->color, frame_);
@@ -237,7 +231,7 @@ void VkBackend::release_slices(SliceGpu* s) {
 bool VkBackend::stage_region(Buffer* staging, const MapTexels& map, const MapRegion& region, VkFailure* failure) {
     const size_t row_bytes = size_t(region.width) * map.channels * sizeof(uint16_t);
     const VkDeviceSize bytes = VkDeviceSize(row_bytes) * region.height;
-    if (!memory_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, staging, failure)) {
+    if (!deferred_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, staging, failure)) {
         return false;
     }
     auto* out = static_cast<unsigned char*>(staging->mapped);
@@ -246,7 +240,7 @@ bool VkBackend::stage_region(Buffer* staging, const MapTexels& map, const MapReg
         std::memcpy(out + row * row_bytes, from, row_bytes);
     }
     if (!memory_.flush(*staging, 0, bytes, failure)) {
-        memory_.destroy_buffer(staging);
+        deferred_.destroy_now(staging);
         return false;
     }
     return true;
@@ -268,7 +262,6 @@ grass_result VkBackend::upload_map(uint32_t slot, const MapTexels& map) {
                           function, map.width, map.height, device_.properties.deviceName, limits.maxImageDimension2D);
     }
     if (slot >= maps_.size()) maps_.resize(slot + 1, MapGpu{}); // may throw: nothing made yet
-    deferred_.promise(2);                                        // image, staging
 
     MapGpu fresh;
     fresh.live = true;
@@ -276,7 +269,6 @@ grass_result VkBackend::upload_map(uint32_t slot, const MapTexels& map) {
     VkFailure failure;
     const char* what = "";
     if (!stage_image(&fresh.image, &fresh.staging, map, &failure, &what)) {
-        deferred_.forgo(2);
         return fail(function, what, failure);
     }
     fresh.pending = true;
@@ -317,16 +309,13 @@ grass_result VkBackend::update_map(uint32_t slot, const MapTexels& map, const Ma
         const uint32_t y1 = std::max(region.y + region.height, m.update.y + m.update.height);
         merged = MapRegion{x0, y0, x1 - x0, y1 - y0};
     }
-    deferred_.promise(1); // the staging buffer, retired once its copy is recorded
     Buffer staging;
     if (!stage_region(&staging, map, merged, &failure)) {
-        deferred_.forgo(1);
         return fail(function, "a design map update staging buffer", failure);
     }
     if (m.updating) {
         // Its copy was never recorded: the old staging buffer goes now.
-        memory_.destroy_buffer(&m.update_staging);
-        deferred_.forgo(1);
+        deferred_.destroy_now(&m.update_staging);
     } else {
         m.updating = true;
         pending_uploads_ += 1;
@@ -340,9 +329,9 @@ void VkBackend::destroy_map_now(MapGpu* m) {
     // Context destruction: the device is idle for grass work.
     if (m->pending) pending_uploads_ -= 1;
     if (m->updating) pending_uploads_ -= 1;
-    memory_.destroy_image(&m->image);
-    memory_.destroy_buffer(&m->staging);
-    memory_.destroy_buffer(&m->update_staging);
+    deferred_.destroy_now(&m->image);
+    deferred_.destroy_now(&m->staging);
+    deferred_.destroy_now(&m->update_staging);
     *m = MapGpu{};
 }
 
@@ -352,13 +341,11 @@ void VkBackend::release_map(uint32_t slot) {
     // Copies never recorded: their staging buffers go now. (Once recorded, a staging
     // buffer was retired by prepare_frame.)
     if (m.pending) {
-        memory_.destroy_buffer(&m.staging);
-        deferred_.forgo(1);
+        deferred_.destroy_now(&m.staging);
         pending_uploads_ -= 1;
     }
     if (m.updating) {
-        memory_.destroy_buffer(&m.update_staging);
-        deferred_.forgo(1);
+        deferred_.destroy_now(&m.update_staging);
         pending_uploads_ -= 1;
     }
     // Draws of frames still in flight may sample it.
@@ -377,8 +364,6 @@ grass_result VkBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
     // The shader variant of its maps, shared with every field of the same mask.
     if (!pipeline_.create_variant(maps.features, &failure, &what)) return fail(function, what, failure);
 
-    const uint32_t promised = desc_.frames_in_flight; // the sets
-    deferred_.promise(promised);
     FieldGpu fresh;
     fresh.live = true;
     fresh.features = maps.features;
@@ -386,11 +371,10 @@ grass_result VkBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
     bool ok = true;
     for (uint32_t i = 0; ok && i < desc_.frames_in_flight; ++i) {
         what = "a field descriptor set";
-        ok = descriptors_.allocate(pipeline_.set_layout(), &fresh.sets[i], &failure);
+        ok = deferred_.allocate_set(pipeline_.set_layout(), &fresh.sets[i], &failure);
     }
     if (!ok) {
-        for (DescriptorSet& s : fresh.sets) descriptors_.free(&s);
-        deferred_.forgo(promised);
+        for (DescriptorSet& s : fresh.sets) deferred_.destroy_now(&s);
         return fail(function, what, failure);
     }
     const VkImageView none[3] = {default_slices_.view, default_slices_.view, default_slices_.view};
@@ -401,7 +385,7 @@ grass_result VkBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
 
 void VkBackend::destroy_field_now(FieldGpu* f) {
     // Context destruction: the device is idle for grass work.
-    for (DescriptorSet& s : f->sets) descriptors_.free(&s);
+    for (DescriptorSet& s : f->sets) deferred_.destroy_now(&s);
     *f = FieldGpu{};
 }
 
