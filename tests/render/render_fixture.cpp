@@ -233,6 +233,19 @@ double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_
     return n ? double(g) / double(n) : 0.0;
 }
 
+double expect_grass(const grass_host::Image& image, const grass_host::TargetDesc& target, double min_share,
+                    const char* what) {
+    if (image.rgba.empty()) {
+        ADD_FAILURE() << what << ": no image";
+        return 0.0;
+    }
+    uint8_t sky[3];
+    expected_sky(target, sky);
+    const double share = grass_share(image, sky, 0, 0, image.width, image.height);
+    EXPECT_GE(share, min_share) << what << ": too little grass for the comparison to mean anything";
+    return share;
+}
+
 void look_at_basis(const double eye[3], const double target[3], double f[3], double r[3], double u[3]) {
     for (int c = 0; c < 3; ++c) f[c] = target[c] - eye[c];
     const double fl = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
