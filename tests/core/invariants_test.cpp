@@ -47,13 +47,7 @@ protected:
         band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
         band.begin = 0.0f;
         band.end = 100.0f;
-        grass_field_desc f = grass_default_field_desc();
-        f.patch = patch;
-        f.cells_x = f.cells_z = 8;
-        f.tiers = &tier;
-        f.tier_count = 1;
-        f.lod_tests = &band;
-        f.lod_test_count = 1;
+        const grass_field_desc f = one_tier_field(patch, 8, &tier, &band);
         ASSERT_EQ(grass_create_field(ctx, &f, &field), GRASS_SUCCESS) << last_message();
         const double eye[3] = {4.0, 3.0, -2.0}, target[3] = {4.0, 0.0, 4.0};
         view = test_view(eye, target);
