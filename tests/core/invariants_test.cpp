@@ -7,6 +7,9 @@
 #include "context/context.hpp"
 #include "context/invariants.hpp"
 
+#include <cstring>
+#include <type_traits>
+
 namespace {
 
 // A backend that holds and draws nothing but says it draws, so that the core checks the
@@ -98,7 +101,8 @@ TEST_F(InvariantsTest, ADrawOfAnObjectTheContextDoesNotHoldIsAnInternalError) {
     expect_plan_refused("a patch that is not the field's");
     ctx->plan.draws[0].instance_count = static_cast<uint32_t>(ctx->plan.instances.size()) + 1;
     expect_plan_refused("instances past the plan's");
-    ctx->plan.draws[0].kind = static_cast<grass_tier_kind>(9);
+    const std::underlying_type_t<grass_tier_kind> nine = 9; // no grass_tier_kind: written as raw bytes
+    std::memcpy(&ctx->plan.draws[0].kind, &nine, sizeof(nine));
     expect_plan_refused("an unknown tier kind");
 }
 

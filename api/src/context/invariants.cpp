@@ -2,6 +2,7 @@
 
 #include "context/context.hpp"
 #include "context/names.hpp"
+#include "context/raw_enum.hpp"
 
 namespace grass {
 
@@ -54,15 +55,15 @@ grass_result check_plan(grass_context* ctx, const char* fn) {
     for (const TierDraw& draw : plan.draws) {
         const Field* field = ctx->fields.get(draw.field_slot);
         const Patch* patch = ctx->patches.get(draw.patch_slot);
-        const bool known_kind =
-            draw.kind == GRASS_TIER_GEOMETRY || draw.kind == GRASS_TIER_VOLUME || draw.kind == GRASS_TIER_IMAGE;
+        const int64_t kind = raw_enum(draw.kind); // a broken plan may hold any value
+        const bool known_kind = kind == GRASS_TIER_GEOMETRY || kind == GRASS_TIER_VOLUME || kind == GRASS_TIER_IMAGE;
         const bool instances_ok = uint64_t(draw.first_instance) + draw.instance_count <= plan.instances.size();
         if (!known_kind || !field || !patch || field->patch_slot != draw.patch_slot || !instances_ok) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
                              "%s: the frame plan has a %s draw of patch slot %u, field slot %u, instances %u+%u of "
                              "%zu, which the context does not hold (internal error)",
-                             fn, tier_kind_name(draw.kind), draw.patch_slot, draw.field_slot, draw.first_instance,
-                             draw.instance_count, plan.instances.size());
+                             fn, known_kind ? tier_kind_name(draw.kind) : "unknown", draw.patch_slot,
+                             draw.field_slot, draw.first_instance, draw.instance_count, plan.instances.size());
         }
         if (draw.features != field->maps.features || draw.features != draw.uniforms.tiling[3]) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
