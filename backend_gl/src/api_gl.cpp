@@ -2,6 +2,7 @@
 #include "gl_backend.hpp"
 
 #include "context/context.hpp"
+#include "context/names.hpp"
 #include "context/raw_enum.hpp"
 
 #include <grass/grass_gl.h>
@@ -36,15 +37,6 @@ grass_result gl_backend_factory(grass_context* ctx, void* user_data, grass::Back
     return grass::GlBackend::create(ctx, *gl_desc, out_backend);
 }
 
-const char* creator_of(grass_backend kind) {
-    switch (kind) {
-    case GRASS_BACKEND_NONE: return "grass_create_context";
-    case GRASS_BACKEND_GL: return "grass_gl_create_context";
-    case GRASS_BACKEND_VULKAN: return "grass_vk_create_context";
-    }
-    return "an unknown backend";
-}
-
 } // namespace
 
 extern "C" {
@@ -68,7 +60,7 @@ GRASS_API grass_result grass_gl_render(grass_context* context) {
         if (kind != GRASS_BACKEND_GL) {
             return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
                                  "grass_gl_render: the context was made by %s, not grass_gl_create_context",
-                                 creator_of(kind));
+                                 grass::backend_creator(kind));
         }
         if (!context->in_frame) {
             return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,

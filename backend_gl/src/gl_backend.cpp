@@ -243,20 +243,7 @@ grass_result GlBackend::upload_slices(uint32_t slot, const SliceSet& set) {
     constexpr const char* kFunction = "grass_create_field";
     const uint32_t n = set.slices_per_axis;
     const uint64_t total_texels = set.offset(set.layers, 0);
-    // The sizes of a SliceSet are the core's promise (baked_slices.hpp); a broken promise
-    // is an internal error, caught here rather than as a read past the arrays.
-    uint32_t full_chain = 1;
-    for (uint32_t larger = set.width > set.height ? set.width : set.height; larger > 1; larger >>= 1) ++full_chain;
-    const bool shape_ok = set.width > 0 && set.height > 0 && set.layers == (n == 0 ? 1u : 2 * n + 1) &&
-                          set.mip_levels >= 1 && set.mip_levels <= full_chain;
-    if (!shape_ok || set.color.size() < total_texels * 4 || set.normal.size() < total_texels * 4 ||
-        set.threshold.size() < total_texels * 4) {
-        return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                          "%s: the baked slice set (N = %u) of patch slot %u is malformed: %u layers of %ux%u texels, "
-                          "%u mip levels, %zu/%zu/%zu colour/normal/threshold texels (internal error)",
-                          kFunction, n, slot, set.layers, set.width, set.height, set.mip_levels,
-                          set.color.size() / 4, set.normal.size() / 4, set.threshold.size() / 4);
-    }
+    // The core checked the set against the layout contract (check_slice_set).
     if (set.width > static_cast<uint32_t>(max_texture_size_) || set.height > static_cast<uint32_t>(max_texture_size_) ||
         set.layers > static_cast<uint32_t>(max_array_layers_)) {
         return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
@@ -356,7 +343,7 @@ grass_result GlBackend::upload_map(uint32_t slot, const MapTexels& map) {
     if (slot >= maps_.size()) maps_.resize(slot + 1);
     release_map(slot);
     if (map.texels == nullptr || map.width == 0 || map.height == 0 || (map.channels != 1 && map.channels != 4)) {
-        return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
                           "%s: map slot %u has %ux%u texels of %u channels (internal error)", kFunction, slot,
                           map.width, map.height, map.channels);
     }
@@ -397,7 +384,7 @@ grass_result GlBackend::update_map(uint32_t slot, const MapTexels& map, const Ma
                       uint64_t(region.x) + region.width <= map.width &&
                       uint64_t(region.y) + region.height <= map.height;
     if (!fits) {
-        return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
+        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
                           "%s: region %u,%u %ux%u of map slot %u does not fit the uploaded map (internal error)",
                           kFunction, region.x, region.y, region.width, region.height, slot);
     }
@@ -425,24 +412,8 @@ grass_result GlBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
     constexpr const char* kFunction = "grass_create_field";
     if (slot >= fields_.size()) fields_.resize(slot + 1);
     release_field(slot);
-    uint32_t features = 0;
-    for (uint32_t role = 0; role < kMapRoleCount; ++role) {
-        const uint32_t map = maps.map_slot[role];
-        if (map == kNoMap) continue;
-        const uint32_t channels = role == kMapColor ? 4u : 1u;
-        if (map >= maps_.size() || maps_[map].texture == 0 || maps_[map].channels != channels) {
-            return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                              "%s: field slot %u samples map slot %u as map role %u, which the GL backend does not "
-                              "hold with %u channel(s) (internal error)",
-                              kFunction, slot, map, role, channels);
-        }
-        features |= 1u << role;
-    }
-    if (features != maps.features) {
-        return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                          "%s: field slot %u has the feature mask 0x%x but maps for 0x%x (internal error)", kFunction,
-                          slot, maps.features, features);
-    }
+    // The core checked the maps against the feature mask (check_field_maps).
+    const uint32_t features = maps.features;
     // The field's program variants now, so that its first frame does not compile them (the
     // debug view's compiles when first drawn).
     for (GlProgramKind kind : {kProgramBlades, kProgramVolume, kProgramImage}) {
@@ -463,15 +434,12 @@ grass_result GlBackend::begin_frame(const FramePlan&) {
     // The plan is uploaded by the first grass_gl_render of the frame, where the host's
     // GL context is current by contract.
     frame_uploaded_ = false;
-    end_frame(); // a frame's timer set is closed when it ends; this is a safeguard
-    frame_timer_chosen_ = false;
-    frame_timer_ = -1;
+    timer_ring_.close_frame(); // a frame's timer set is closed when it ends; this is a safeguard
+    frame_timer_opened_ = false;
     return GRASS_SUCCESS;
 }
 
-void GlBackend::end_frame() {
-    if (frame_timer_ >= 0) timer_sets_[frame_timer_].closed = true;
-}
+void GlBackend::end_frame() { timer_ring_.close_frame(); }
 
 uint64_t GlBackend::gpu_bytes() const {
     uint64_t bytes = instances_.capacity() + uniforms_.capacity();

@@ -10,6 +10,7 @@
 
 #include "context/backend.hpp"
 #include "context/context.hpp"
+#include "timing/tier_timer_ring.hpp"
 
 #include <cstdint>
 
@@ -89,27 +90,18 @@ private:
     void draw_blades(const FramePlan& plan) const;
     void draw_sliced(const FramePlan& plan, grass_tier_kind kind) const; // volume or image draws
     void draw_debug(const FramePlan& plan) const;                        // GRASS_VIEW_FLAG_DEBUG_CELLS
-    // Timer queries (gl_timers.cpp). A frame's timestamps go to one set of a ring of
-    // kTimerSets; each grass_gl_render of the frame writes kStampsPerRender of them: before
-    // the blades, after the blades, after the volumes, after the images.
+    // Timer queries (gl_timers.cpp): one GL_TIMESTAMP query per stamp of the core's ring
+    // (timing/tier_timer_ring.hpp) of kTimerSets frames; each grass_gl_render of a frame is
+    // one pass of it.
     static constexpr uint32_t kTimerSets = 4;
-    static constexpr uint32_t kTimedRenders = 4; // per frame; more renders leave the frame untimed
-    static constexpr uint32_t kStampsPerRender = 4;
-    struct TimerSet {
-        GLuint queries[kTimedRenders * kStampsPerRender] = {};
-        uint32_t renders = 0;  // renders of its frame that wrote stamps
-        bool pending = false;  // written; results not read yet
-        bool closed = false;   // its frame has ended: no more stamps come
-        bool complete = true;  // every render of its frame was timed
-    };
+    static constexpr uint32_t kTimerQueries = kTimerSets * TierTimerRing::kStampsPerSet;
     void create_timers();
     void delete_timers();
-    // The stamps of this render (kStampsPerRender), or nullptr when it is not timed: no
-    // timer queries, the ring is full of unfinished frames (never waited for), or too many
-    // renders in this frame.
+    // The stamps of this render (TierTimerRing::kStampsPerPass), or nullptr when it is not
+    // timed: no timer queries, the ring is full of unfinished frames (never waited for), or
+    // too many renders in this frame.
     const GLuint* timer_stamps();
-    // Reads the finished sets, oldest first, without waiting; stops at the first one whose
-    // results are not available yet.
+    // Reads the finished sets without waiting (TierTimerRing::collect).
     void collect_timers();
     GLuint program_of(GlProgramKind kind, uint32_t features) const {
         return programs_[kind][features & (kFeatureVariants - 1)];
@@ -138,13 +130,9 @@ private:
     Vector<FieldGpu> fields_;
     Vector<MapGpu> maps_;
     bool timers_ = false;           // GL_TIMESTAMP has counter bits
-    GLint timer_bits_ = 0;
-    TimerSet timer_sets_[kTimerSets];
-    uint32_t next_timer_ = 0;       // the oldest set: the next frame's
-    int32_t frame_timer_ = -1;      // the set of the current frame, -1: untimed
-    bool frame_timer_chosen_ = false;
-    bool timings_valid_ = false;
-    double timings_ms_[GRASS_TIER_KIND_COUNT] = {};
+    GLuint timer_queries_[kTimerQueries] = {};
+    TierTimerRing timer_ring_{kTimerSets, TierTimerRing::WhenBusy::skip_frame};
+    bool frame_timer_opened_ = false; // the first render of the frame has opened its set
 };
 
 } // namespace grass

@@ -21,21 +21,6 @@ constexpr GLsizei kImageVertices = 6;   // one quad, corners from gl_VertexID (i
 constexpr GLsizei kImageVerticesWithSkirts = 30; // on a height map: the quad and 4 skirts (image.vert)
 constexpr GLsizei kVolumeVertices = 36; // a cuboid, every face (volume.vert)
 
-// The slice set a draw samples: its slices per axis for a volume tier, the horizontal
-// slice (N = 0) for an image tier.
-uint32_t slice_set_of(const TierDraw& draw) {
-    return draw.kind == GRASS_TIER_VOLUME ? draw.slices : 0;
-}
-
-const char* tier_kind_name(grass_tier_kind kind) {
-    switch (kind) {
-    case GRASS_TIER_GEOMETRY: return "geometry";
-    case GRASS_TIER_VOLUME: return "volume";
-    case GRASS_TIER_IMAGE: return "image";
-    default: return "unknown";
-    }
-}
-
 } // namespace
 
 // Uniform buffer layout: Frame at offset 0, then one Field block per draw of any kind
@@ -97,8 +82,8 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
     }
 }
 
-// Volume or image draws: instances only, sampling the patch's baked slices (render() has
-// checked that every set is there). Unit 0 is active.
+// Volume or image draws: instances only, sampling the patch's baked slices (grass_begin_frame
+// checked that every set was uploaded: check_plan). Unit 0 is active.
 void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
     bool bound = false;
     GLuint bound_program = 0;
@@ -119,7 +104,7 @@ void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
             gl_.UseProgram(program);
             bound_program = program;
         }
-        const SliceGpu* slices = find_slices(draw.patch_slot, slice_set_of(draw));
+        const SliceGpu* slices = find_slices(draw.patch_slot, draw_slice_set(draw));
         const GLuint textures[3][2] = {{static_cast<GLuint>(kSliceColorUnit), slices->color},
                                        {static_cast<GLuint>(kSliceNormalUnit), slices->normal},
                                        {static_cast<GLuint>(kSliceThresholdUnit), slices->threshold}};
@@ -163,38 +148,8 @@ grass_result GlBackend::render(const char* function) {
     if (plan.draws.empty()) return GRASS_SUCCESS;
     const bool debug = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
 
-    // Check the plan against what was uploaded before touching any GL state. Only the
-    // draws that use a patch need one (the debug view draws boxes), and volume and image
-    // draws need the patch's slice set too.
-    for (const TierDraw& draw : plan.draws) {
-        const bool known_kind =
-            draw.kind == GRASS_TIER_GEOMETRY || draw.kind == GRASS_TIER_VOLUME || draw.kind == GRASS_TIER_IMAGE;
-        const bool needs_patch = !debug;
-        const bool patch_ok =
-            !needs_patch || (draw.patch_slot < patches_.size() && patches_[draw.patch_slot].vertex_array != 0);
-        const bool instances_ok = uint64_t(draw.first_instance) + draw.instance_count <= plan.instances.size();
-        if (!known_kind || !patch_ok || draw.field_slot >= fields_.size() || !instances_ok) {
-            return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                              "%s: the frame plan has a %s draw of patch slot %u, field slot %u, instances %u+%u, "
-                              "which the GL backend does not hold (internal error)",
-                              function, tier_kind_name(draw.kind), draw.patch_slot, draw.field_slot,
-                              draw.first_instance, draw.instance_count);
-        }
-        if (draw.features != fields_[draw.field_slot].maps.features) {
-            return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                              "%s: a draw of field slot %u has the feature mask 0x%x, the field 0x%x (internal error)",
-                              function, draw.field_slot, draw.features, fields_[draw.field_slot].maps.features);
-        }
-        if (!debug && draw.kind != GRASS_TIER_GEOMETRY && draw.instance_count > 0 &&
-            find_slices(draw.patch_slot, slice_set_of(draw)) == nullptr) {
-            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_BACKEND_CALL_FAILED,
-                              "%s: tier %u (%s) of field slot %u draws patch slot %u with %u slices per axis, but no "
-                              "such slice set was uploaded for that patch (internal error: the core uploads every "
-                              "set a field's tiers need at field creation)",
-                              function, draw.tier, tier_kind_name(draw.kind), draw.field_slot, draw.patch_slot,
-                              slice_set_of(draw));
-        }
-    }
+    // grass_begin_frame checked the plan against what the core uploaded (check_plan in
+    // context/invariants.hpp): every draw's field, patch and slice set is here.
     // Every program variant the plan draws with (upload_field compiled the fields' tiers';
     // the debug view's are compiled on first use). Compiling binds nothing.
     for (const TierDraw& draw : plan.draws) {

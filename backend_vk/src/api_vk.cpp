@@ -1,5 +1,6 @@
 // The public entry points of grass_vk.h: argument checks, then the Vulkan backend.
 #include "context/context.hpp"
+#include "context/names.hpp"
 #include "vk_backend.hpp"
 #include "vk_desc_check.hpp"
 #include "vk_device.hpp"
@@ -11,15 +12,6 @@
 using grass::vk::VkBackend;
 
 namespace {
-
-const char* backend_name(grass_backend backend) {
-    switch (backend) {
-    case GRASS_BACKEND_NONE: return "GRASS_BACKEND_NONE (made by grass_create_context)";
-    case GRASS_BACKEND_GL: return "GRASS_BACKEND_GL (made by grass_gl_create_context)";
-    case GRASS_BACKEND_VULKAN: return "GRASS_BACKEND_VULKAN";
-    }
-    return "unknown";
-}
 
 grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** out_backend) {
     const char* function = "grass_vk_create_context";
@@ -49,9 +41,9 @@ grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** 
 grass_result check_frame_call(grass_context* ctx, const char* function, VkBackend** out) {
     if (ctx->backend == nullptr || ctx->backend->kind() != GRASS_BACKEND_VULKAN) {
         return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
-                         "%s: the context's backend is %s; only a context made by grass_vk_create_context records "
+                         "%s: the context was made by %s; only a context made by grass_vk_create_context records "
                          "Vulkan commands",
-                         function, backend_name(ctx->backend ? ctx->backend->kind() : GRASS_BACKEND_NONE));
+                         function, grass::backend_creator(ctx->backend ? ctx->backend->kind() : GRASS_BACKEND_NONE));
     }
     if (!ctx->in_frame) {
         return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,

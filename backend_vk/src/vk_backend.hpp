@@ -5,6 +5,7 @@
 #pragma once
 
 #include "context/backend.hpp"
+#include "timing/tier_timer_ring.hpp"
 #include "vk_debug_view.hpp"
 #include "vk_deferred.hpp"
 #include "vk_descriptors.hpp"
@@ -97,26 +98,14 @@ private:
         DescriptorSet sets[kMaxFramesInFlight];
     };
 
-    // Timer queries (vk_timers.cpp): one range of kTimerQueriesPerSlot timestamps per frame
-    // slot, reset by prepare_frame (outside the pass) and written by record: before the
-    // blades, after the blades, after the volumes, after the images; up to kTimedRecords
-    // records a frame.
-    static constexpr uint32_t kTimedRecords = 4;
-    static constexpr uint32_t kStampsPerRecord = 4;
-    static constexpr uint32_t kTimerQueriesPerSlot = kTimedRecords * kStampsPerRecord;
-    struct TimerSlot {
-        uint64_t frame = 0;    // the frame that wrote it
-        uint32_t records = 0;  // records of that frame that wrote stamps
-        bool reset = false;    // prepare_frame recorded the reset of its range this frame
-        bool pending = false;  // stamps written, results not read yet
-        bool complete = true;  // every record of its frame was timed
-    };
+    // Timer queries (vk_timers.cpp): one timestamp query per stamp of the core's ring
+    // (timing/tier_timer_ring.hpp) of frames_in_flight sets; a frame's range is reset by
+    // prepare_frame (outside the pass) and each record of the frame is one pass of it.
     void create_timers(); // no pool where the queue family has no timestamps
-    // The first query of this record's stamps, or UINT32_MAX when it is not timed.
+    // The first query of this record's stamps, or TierTimerRing::kUntimed.
     uint32_t timer_stamps();
     void write_stamp(VkCommandBuffer cmd, uint32_t first, uint32_t stamp);
-    // Reads the finished slots, oldest first, without waiting; stops at the first whose
-    // results are not available yet.
+    // Reads the finished sets without waiting (TierTimerRing::collect).
     void collect_timers();
 
     grass_result fail(const char* function, const char* what, const VkFailure& failure);
@@ -174,12 +163,10 @@ private:
     uint32_t pending_uploads_ = 0; // patches, slice sets, maps, map updates and the default images not yet recorded
     uint64_t frame_ = 0;           // frames begun; the current one while in a frame
     uint32_t slot_ = 0;            // frame_ % frames_in_flight
-    VkQueryPool timer_pool_ = VK_NULL_HANDLE; // frames_in_flight x kTimerQueriesPerSlot timestamps
-    double timestamp_period_ns_ = 0.0;
-    uint64_t timestamp_mask_ = 0;
-    TimerSlot timer_slots_[kMaxFramesInFlight];
-    bool timings_valid_ = false;
-    double timings_ms_[GRASS_TIER_KIND_COUNT] = {};
+    VkQueryPool timer_pool_ = VK_NULL_HANDLE; // frames_in_flight x TierTimerRing::kStampsPerSet timestamps
+    TierTimerRing timer_ring_;
+    uint32_t timer_set_ = TierTimerRing::kUntimed; // the current frame's set
+    bool timer_reset_ = false;     // prepare_frame recorded the reset of its range this frame
 };
 
 } // namespace grass::vk

@@ -28,8 +28,8 @@ FrameRing::FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames
 
 FrameRing::~FrameRing() {
     for (Slot& s : slots_) {
-        memory_.destroy_buffer(&s.instances);
-        memory_.destroy_buffer(&s.uniforms);
+        deferred_.destroy_now(&s.instances);
+        deferred_.destroy_now(&s.uniforms);
     }
 }
 
@@ -46,14 +46,9 @@ bool FrameRing::create(VkFailure* failure, const char** what) {
 bool FrameRing::replace_buffer(Buffer* buffer, VkDeviceSize size, VkBufferUsageFlags usage, uint64_t frame,
                                VkFailure* failure) {
     // The old buffer may still be read by frames in flight: it waits in the deferred
-    // deletion queue (room reserved first, so that nothing after the allocation throws).
-    const bool replace = buffer->buffer != VK_NULL_HANDLE;
-    if (replace) deferred_.promise(1);
+    // deletion queue (in the place its creation reserved, so that retiring cannot throw).
     Buffer fresh;
-    if (!memory_.create_buffer(size, usage, MemoryUse::streaming, &fresh, failure)) {
-        if (replace) deferred_.forgo(1);
-        return false;
-    }
+    if (!deferred_.create_buffer(size, usage, MemoryUse::streaming, &fresh, failure)) return false;
     deferred_.retire(buffer, frame);
     *buffer = fresh;
     return true;

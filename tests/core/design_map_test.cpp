@@ -449,6 +449,10 @@ TEST_F(DesignMapTest, ABadGrassTypeRefusesTheWholeFieldAndLeavesNothing) {
     grass_field_id f{};
     EXPECT_EQ(grass_create_field(ctx, &d, &f), GRASS_ERROR_INVALID_ARGUMENT);
     EXPECT_NE(last_message().find("grass type 1"), std::string::npos) << last_message();
+    EXPECT_EQ(last_id(), GRASS_MSG_IN_GRASS_TYPE);
+    ASSERT_GE(log.size(), 2u);
+    EXPECT_EQ(log[log.size() - 2].level, GRASS_LOG_ERROR);
+    EXPECT_EQ(log[log.size() - 2].id, GRASS_MSG_OUT_OF_RANGE) << "the error the warning points at";
     t.density = 1.0f;
     t.type = GRASS_STRUCT_TYPE_FIELD_DESC;
     EXPECT_EQ(grass_create_field(ctx, &d, &f), GRASS_ERROR_WRONG_STRUCT_TYPE);

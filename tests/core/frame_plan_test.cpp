@@ -192,12 +192,20 @@ TEST_F(PlanTest, StatsCountOnlyTheGeometryTiersShareInATransitionZone) {
 }
 
 TEST_F(PlanTest, ZeroDensityDrawsNoBlades) {
+    const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
     grass_field_desc d = field_desc(8);
+    grass_frame_stats s{};
+    // Positive control: the same field and view at full density draw blades.
+    const grass_field_id full = make_field(d);
+    plan(test_view(eye, target));
+    ASSERT_EQ(grass_get_frame_stats(ctx, &s), GRASS_SUCCESS);
+    EXPECT_GT(s.blades_drawn, 1000u) << "density 1 draws the view's blades";
+    EXPECT_GT(s.triangles, 0u);
+    ASSERT_EQ(grass_destroy_field(ctx, full), GRASS_SUCCESS);
+
     d.density = 0.0f;
     make_field(d);
-    const double eye[3] = {1.0, 3.5, 1.0}, target[3] = {1.0, 0.0, 1.0};
     plan(test_view(eye, target));
-    grass_frame_stats s{};
     ASSERT_EQ(grass_get_frame_stats(ctx, &s), GRASS_SUCCESS);
     EXPECT_EQ(s.blades_drawn, 0u);
     EXPECT_EQ(s.triangles, 0u);

@@ -228,13 +228,7 @@ TEST_F(LodTest, ACallbackAnsweringNonsenseFailsTheFrameCleanly) {
     grass_lod_test test{};
     test.kind = GRASS_LOD_TEST_CALLBACK;
     test.callback = bad_answer;
-    grass_field_desc d = grass_default_field_desc();
-    d.patch = patch;
-    d.cells_x = d.cells_z = 8;
-    d.tiers = &tier;
-    d.tier_count = 1;
-    d.lod_tests = &test;
-    d.lod_test_count = 1;
+    grass_field_desc d = one_tier_field(patch, 8, &tier, &test);
     const grass_field_id f = make_field(d);
     const double eye[3] = {1.0, 4.0, 1.0}, target[3] = {1.0, 0.0, 1.001};
     const grass_view_desc v = test_view(eye, target);

@@ -39,7 +39,11 @@ void RenderTest::start(const grass_host::TargetDesc& target) {
     host = grass_host::Host::create(GetParam(), target, &error);
     ASSERT_TRUE(host) << "cannot create the " << backend_name(GetParam()) << " host: " << error;
     grass_context_desc d = grass_default_context_desc();
-    d.log_fn = [](void* user, grass_log_level, grass_message_id id, const char* message) {
+    d.log_fn = [](void* user, grass_log_level level, grass_message_id id, const char* message) {
+        // Errors and warnings carry a stable message id (grass.h), whatever the path.
+        if (level != GRASS_LOG_INFO) {
+            EXPECT_NE(id, GRASS_MSG_NONE) << message;
+        }
         *static_cast<std::string*>(user) += std::to_string(static_cast<int>(id)) + ": " + message + "\n";
     };
     d.log_user_data = &log;
@@ -227,6 +231,19 @@ double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_
         }
     }
     return n ? double(g) / double(n) : 0.0;
+}
+
+double expect_grass(const grass_host::Image& image, const grass_host::TargetDesc& target, double min_share,
+                    const char* what) {
+    if (image.rgba.empty()) {
+        ADD_FAILURE() << what << ": no image";
+        return 0.0;
+    }
+    uint8_t sky[3];
+    expected_sky(target, sky);
+    const double share = grass_share(image, sky, 0, 0, image.width, image.height);
+    EXPECT_GE(share, min_share) << what << ": too little grass for the comparison to mean anything";
+    return share;
 }
 
 void look_at_basis(const double eye[3], const double target[3], double f[3], double r[3], double u[3]) {

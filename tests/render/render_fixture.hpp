@@ -87,5 +87,9 @@ bool project_point(const double eye[3], const double target[3], float fovy_degre
 // Share of pixels in [x0, x1) x [y0, y1) that are grass.
 double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_t x0, uint32_t y0, uint32_t x1,
                    uint32_t y1);
+// The share of `image` (rendered into `target`) that is grass, which must be at least
+// `min_share`: comparisons of two images prove nothing when both are all sky.
+double expect_grass(const grass_host::Image& image, const grass_host::TargetDesc& target, double min_share,
+                    const char* what);
 
 } // namespace grass_test

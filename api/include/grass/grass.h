@@ -155,6 +155,7 @@ typedef enum grass_message_id {
     GRASS_MSG_ZERO_VECTOR = 110,
     GRASS_MSG_MAP_ROLE = 111,         /* a map whose format does not fit its role in a map stack */
     GRASS_MSG_MAP_REGION = 112,       /* a map update outside the map or of another format */
+    GRASS_MSG_IN_GRASS_TYPE = 113,    /* warning after an error: which grass type of a desc->next chain it is in */
     /* 2xx: handles and lifetime */
     GRASS_MSG_STALE_HANDLE = 200,
     GRASS_MSG_FOREIGN_HANDLE = 201,
@@ -171,6 +172,10 @@ typedef enum grass_message_id {
     GRASS_MSG_DEVICE_UNSUPPORTED = 401,
     GRASS_MSG_BACKEND_CALL_FAILED = 402,
     GRASS_MSG_OUT_OF_MEMORY = 403,
+    GRASS_MSG_INTERNAL_ERROR = 404,   /* a broken internal invariant (a bug in grass, not the host's): the frame
+                                       * plan, a field's maps or a baked slice set disagree with what the core
+                                       * uploaded. Returned as GRASS_ERROR_INVALID_STATE: the context's state
+                                       * cannot serve the call; the same in every backend. Please report it. */
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501

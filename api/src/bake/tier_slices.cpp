@@ -3,6 +3,7 @@
 #include "bake/bake_cache.hpp"
 #include "patch/random.hpp"
 #include "bake/slice_baker.hpp"
+#include "context/invariants.hpp"
 #include "context/validate.hpp"
 
 namespace grass {
@@ -25,7 +26,8 @@ grass_result ensure_slices(grass_context* ctx, const char* fn, uint32_t patch_sl
                           fn, dir);
             }
         }
-        const grass_result r = ctx->backend->upload_slices(patch_slot, *set);
+        grass_result r = check_slice_set(ctx, fn, patch_slot, *set);
+        if (r == GRASS_SUCCESS) r = ctx->backend->upload_slices(patch_slot, *set);
         if (r != GRASS_SUCCESS) {
             ctx->host.destroy(set);
             return r;

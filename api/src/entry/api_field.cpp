@@ -1,5 +1,6 @@
 // C entry points for fields: a grid of cells covered by one patch.
 #include "context/context.hpp"
+#include "context/invariants.hpp"
 #include "maps/design_map.hpp"
 #include "plan/lod_setup.hpp"
 #include "bake/tier_slices.hpp"
@@ -200,7 +201,8 @@ grass_result create_one_field(grass_context* ctx, const char* fn, const grass_fi
     }
 
     const uint32_t slot = ctx->fields.insert(field);
-    const grass_result r = ctx->backend->upload_field(slot, field->maps);
+    grass_result r = check_field_maps(ctx, fn, slot, field->maps);
+    if (r == GRASS_SUCCESS) r = ctx->backend->upload_field(slot, field->maps);
     if (r != GRASS_SUCCESS) {
         ctx->backend->release_field(slot);
         const bool owned = field->owns_density_map;
@@ -278,7 +280,7 @@ grass_result create_field(grass_context* ctx, const grass_field_desc* desc, gras
         const grass_field_desc d = type_field_desc(first, *types[k]);
         const grass_result r = validate_field_desc(ctx, fn, &d);
         if (r != GRASS_SUCCESS) {
-            ctx->warn(GRASS_MSG_NONE, "%s: the error above is in grass type %u (desc->next chain)", fn, k + 1);
+            ctx->warn(GRASS_MSG_IN_GRASS_TYPE, "%s: the error above is in grass type %u (desc->next chain)", fn, k + 1);
             return r;
         }
     }

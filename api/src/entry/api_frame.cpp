@@ -1,6 +1,7 @@
 // C entry points for frames: begin (validate the view, plan), end, stats.
 #include "context/abi_sizes.hpp"
 #include "context/context.hpp"
+#include "context/invariants.hpp"
 #include "plan/frame_planner.hpp"
 #include "context/validate.hpp"
 
@@ -97,6 +98,7 @@ GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_vie
         }
         GRASS_TRY(grass::validate_view(context, fn, view));
         GRASS_TRY(grass::build_frame_plan(context, *view));
+        GRASS_TRY(grass::check_plan(context, fn));
         GRASS_TRY(context->backend->begin_frame(context->plan));
         context->in_frame = true;
         context->frame_number += 1;

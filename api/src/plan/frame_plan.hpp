@@ -67,6 +67,12 @@ struct TierDraw {
     FieldUniforms uniforms;
 };
 
+// The baked slice set a volume or image draw samples: its slices per axis for a volume
+// tier, the horizontal slice (N = 0) for an image tier (SliceSet::slices_per_axis).
+inline uint32_t draw_slice_set(const TierDraw& draw) {
+    return draw.kind == GRASS_TIER_VOLUME ? draw.slices : 0;
+}
+
 struct FramePlan {
     explicit FramePlan(HostAllocator* host) : instances(StlAllocator<TierInstance>(host)),
                                               draws(StlAllocator<TierDraw>(host)) {}

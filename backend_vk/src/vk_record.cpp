@@ -1,0 +1,314 @@
+// The Vulkan backend's frames: begin_frame writes the plan into the frame slot's buffers,
+// prepare_frame records the pending uploads (outside the render pass), record draws the
+// plan into the host's command buffer (inside it).
+#include "vk_backend.hpp"
+
+#include "context/context.hpp"
+#include "vk_staging.hpp"
+
+namespace grass::vk {
+
+// ---- Frames -----------------------------------------------------------------------------
+
+grass_result VkBackend::begin_frame(const FramePlan& plan) {
+    frame_ += 1;
+    slot_ = static_cast<uint32_t>(frame_ % desc_.frames_in_flight);
+    // The previous frame writes no more stamps (the host has submitted it). The set this
+    // frame takes was written by frame frame_ - frames_in_flight, which has finished: read
+    // it (and any older) now; open_frame drops it if it never ran.
+    timer_ring_.close_frame();
+    collect_timers();
+    timer_set_ = timer_pool_ != VK_NULL_HANDLE ? timer_ring_.open_frame() : TierTimerRing::kUntimed;
+    timer_reset_ = false;
+    // Frame frame_ - frames_in_flight has finished: what it was the last to use can go,
+    // and the sets its volume and image draws used.
+    deferred_.collect(frame_);
+    frame_sets_.reset(slot_);
+
+    bool uniforms_replaced = false;
+    VkFailure failure;
+    const char* what = "";
+    if (!ring_.write(slot_, plan, frame_, &uniforms_replaced, &failure, &what)) {
+        return fail("grass_begin_frame", what, failure);
+    }
+    if (uniforms_replaced) {
+        // This slot's sets were last used by frame frame_ - frames_in_flight, which is done.
+        const VkImageView none[3] = {default_slices_.view, default_slices_.view, default_slices_.view};
+        for (const FieldGpu& f : fields_) {
+            if (f.live) write_set(f.sets[slot_].set, slot_, f, none);
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
+grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
+    // This frame's timestamps (vk_timers.cpp), reset once, outside the render pass.
+    if (timer_set_ != TierTimerRing::kUntimed && !timer_reset_) {
+        fn_.vkCmdResetQueryPool(cmd, timer_pool_, timer_set_ * TierTimerRing::kStampsPerSet,
+                                TierTimerRing::kStampsPerSet);
+        timer_reset_ = true;
+    }
+    if (pending_uploads_ == 0) return GRASS_SUCCESS;
+
+    // Build the batch first: it may throw std::bad_alloc, and nothing has changed yet.
+    batch_.clear();
+    if (default_white_staging_.buffer) batch_.copy_image(default_white_staging_.buffer, 0, default_white_.image, 1, 1);
+    if (default_black_staging_.buffer) batch_.copy_image(default_black_staging_.buffer, 0, default_black_.image, 1, 1);
+    if (default_slices_staging_.buffer) {
+        batch_.copy_image(default_slices_staging_.buffer, 0, default_slices_.image, 1, 1);
+    }
+    for (const PatchGpu& p : patches_) {
+        if (!p.pending) continue;
+        batch_.copy_buffer(p.staging.buffer, 0, p.vertices.buffer, p.vertices.size, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
+        batch_.copy_buffer(p.staging.buffer, p.vertices.size, p.indices.buffer, p.indices.size, VK_ACCESS_INDEX_READ_BIT);
+    }
+    for (const MapGpu& m : maps_) {
+        // A map is either new (its whole image) or updated (a rectangle of it), never both.
+        if (m.pending) batch_.copy_image(m.staging.buffer, 0, m.image.image, m.image.width, m.image.height);
+        if (m.updating) {
+            batch_.update_image(m.update_staging.buffer, m.image.image, m.update.x, m.update.y, m.update.width,
+                                m.update.height);
+        }
+    }
+    for (const SliceGpu& s : slices_) {
+        if (!s.pending) continue;
+        // The staging layout upload_slices filled: colour, normal, then threshold texels.
+        VkDeviceSize at = 0;
+        const struct {
+            const Image* image;
+            uint32_t texel_bytes;
+        } images[3] = {{&s.color, kSliceColorBytes}, {&s.normal, kSliceNormalBytes}, {&s.threshold, kSliceThresholdBytes}};
+        for (const auto& im : images) {
+            regions_.clear();
+            at = slice_staging_layout(*im.image, im.texel_bytes, at,
+                                      [&](uint32_t layer, uint32_t level, VkDeviceSize offset, uint32_t w, uint32_t h) {
+                                          VkBufferImageCopy r{};
+                                          r.bufferOffset = offset;
+                                          r.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, layer, 1};
+                                          r.imageExtent = {w, h, 1};
+                                          regions_.push_back(r);
+                                      });
+            batch_.copy_image_regions(s.staging.buffer, im.image->image, im.image->levels, im.image->layers,
+                                      regions_.data(), static_cast<uint32_t>(regions_.size()));
+        }
+    }
+    batch_.record(fn_, cmd);
+
+    // The staging buffers wait until this frame's copies have run on the GPU.
+    deferred_.retire(&default_white_staging_, frame_);
+    deferred_.retire(&default_black_staging_, frame_);
+    deferred_.retire(&default_slices_staging_, frame_);
+    for (SliceGpu& s : slices_) {
+        if (!s.pending) continue;
+        deferred_.retire(&s.staging, frame_);
+        s.pending = false;
+    }
+    for (PatchGpu& p : patches_) {
+        if (!p.pending) continue;
+        deferred_.retire(&p.staging, frame_);
+        p.pending = false;
+    }
+    for (MapGpu& m : maps_) {
+        if (m.pending) deferred_.retire(&m.staging, frame_);
+        if (m.updating) deferred_.retire(&m.update_staging, frame_);
+        m.pending = m.updating = false;
+    }
+    pending_uploads_ = 0;
+    return GRASS_SUCCESS;
+}
+
+bool VkBackend::drawn(const TierDraw& d, bool debug_view) const {
+    // A draw whose field or patch was destroyed after grass_begin_frame is skipped, as is
+    // one of an empty patch (no blades: nothing to draw in any tier).
+    if (d.instance_count == 0 || d.field_slot >= fields_.size() || !fields_[d.field_slot].live) return false;
+    if (debug_view) return true;
+    if (d.kind != GRASS_TIER_GEOMETRY && d.kind != GRASS_TIER_VOLUME && d.kind != GRASS_TIER_IMAGE) return false;
+    if (d.patch_slot >= patches_.size() || !patches_[d.patch_slot].live || patches_[d.patch_slot].index_count == 0) {
+        return false;
+    }
+    if (d.kind == GRASS_TIER_GEOMETRY) return true;
+    // A slice set baked empty has nothing to draw (grass_begin_frame checked that every
+    // set a draw samples was uploaded: check_plan).
+    const SliceGpu* s = draw_slices(d);
+    return s != nullptr && s->color.image != VK_NULL_HANDLE;
+}
+
+bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** problem) const {
+    const FieldGpu& f = fields_[draw.field_slot];
+    if (!debug_view && patches_[draw.patch_slot].pending) {
+        *problem = "its patch";
+        return false;
+    }
+    if (!debug_view && draw.kind != GRASS_TIER_GEOMETRY && draw_slices(draw)->pending) {
+        *problem = draw.kind == GRASS_TIER_VOLUME ? "its patch's baked vertical slices" : "its patch's baked horizontal slice";
+        return false;
+    }
+    // The field's descriptor sets point at its maps (or the default ones): each must have
+    // its copies recorded, the first and any update since (the plan already follows the
+    // updated texels).
+    for (uint32_t role = 0; role < kMapRoleCount; ++role) {
+        const uint32_t m = f.map_slot[role];
+        if (m != kNoMap && m < maps_.size() && (maps_[m].pending || maps_[m].updating)) {
+            *problem = maps_[m].pending ? "one of its design maps" : "an update of one of its design maps";
+            return false;
+        }
+    }
+    if (default_white_staging_.buffer || default_black_staging_.buffer) {
+        *problem = "the default design maps";
+        return false;
+    }
+    if (default_slices_staging_.buffer) {
+        *problem = "the default slice image";
+        return false;
+    }
+    return true;
+}
+
+grass_result VkBackend::record(VkCommandBuffer cmd) {
+    const FramePlan& plan = ctx_->plan;
+    const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
+    // Refuse before recording anything, so that the command buffer is left untouched. The
+    // plan itself was checked by grass_begin_frame (check_plan in context/invariants.hpp).
+    uint32_t draw_count = 0, slice_draws = 0;
+    for (const TierDraw& d : plan.draws) {
+        if (!drawn(d, debug_view)) continue;
+        const char* problem = "";
+        if (!draw_ready(d, debug_view, &problem)) {
+            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_UPLOAD_NOT_RECORDED,
+                              "grass_vk_record: a field drawn this frame (slot %u) waits for the upload of %s; call "
+                              "grass_vk_prepare_frame() with a command buffer that runs before this one, after "
+                              "grass_begin_frame() and outside the render pass",
+                              d.field_slot, problem);
+        }
+        // upload_field made the variant of the field's maps; one the plan asks for besides
+        // is made here, before anything is recorded.
+        VkFailure failure;
+        const char* what = "";
+        if (!pipeline_.create_variant(d.features, &failure, &what)) return fail("grass_vk_record", what, failure);
+        draw_count += 1;
+        if (!debug_view && d.kind != GRASS_TIER_GEOMETRY) slice_draws += 1;
+    }
+    if (draw_count == 0) return GRASS_SUCCESS;
+
+    // The volume and image draws pair the field's design maps with the patch's slices: a
+    // fresh set each, from this frame slot's pools (never one a frame in flight may use).
+    if (slice_draws > 0) {
+        draw_sets_.assign(plan.draws.size(), VK_NULL_HANDLE); // may throw: nothing recorded yet
+        for (uint32_t i = 0; i < plan.draws.size(); ++i) {
+            const TierDraw& d = plan.draws[i];
+            if (!drawn(d, false) || d.kind == GRASS_TIER_GEOMETRY) continue;
+            VkFailure failure;
+            if (!frame_sets_.allocate(slot_, pipeline_.set_layout(), &draw_sets_[i], &failure)) {
+                return fail("grass_vk_record", "a descriptor set of a volume or image tier", failure);
+            }
+            const SliceGpu* s = draw_slices(d);
+            const VkImageView views[3] = {s->color.view, s->normal.view, s->threshold.view};
+            write_set(draw_sets_[i], slot_, fields_[d.field_slot], views);
+        }
+    }
+
+    const int32_t x = plan.viewport[0], y = plan.viewport[1], w = plan.viewport[2], h = plan.viewport[3];
+    const VkViewport viewport{float(x), float(y), float(w), float(h), 0.0f, 1.0f};
+    // The scissor is the viewport rectangle, clipped to the framebuffer's positive quadrant.
+    const int64_t x0 = x < 0 ? 0 : x, y0 = y < 0 ? 0 : y;
+    const int64_t x1 = int64_t(x) + w, y1 = int64_t(y) + h;
+    VkRect2D scissor{};
+    scissor.offset = {static_cast<int32_t>(x0), static_cast<int32_t>(y0)};
+    scissor.extent = {static_cast<uint32_t>(x1 > x0 ? x1 - x0 : 0), static_cast<uint32_t>(y1 > y0 ? y1 - y0 : 0)};
+
+    const bool depth_test = (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) == 0;
+    fn_.vkCmdSetViewport(cmd, 0, 1, &viewport);
+    fn_.vkCmdSetScissor(cmd, 0, 1, &scissor);
+
+    const VkBuffer instances = ring_.instance_buffer(slot_);
+    const VkDeviceSize zero = 0;
+    const auto bind_set = [&](uint32_t draw, VkDescriptorSet set) {
+        // Every draw has its Field block, whatever its kind.
+        const uint32_t offsets[2] = {ring_.frame_offset(), ring_.field_offset(draw)};
+        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), 0, 1, &set, 2, offsets);
+    };
+
+    if (debug_view) {
+        // Every draw as boxes, in plan order.
+        VkPipeline bound_pipeline = VK_NULL_HANDLE;
+        fn_.vkCmdBindVertexBuffers(cmd, DebugViewPipeline::kInstanceBinding, 1, &instances, &zero);
+        for (uint32_t i = 0; i < plan.draws.size(); ++i) {
+            const TierDraw& d = plan.draws[i];
+            if (!drawn(d, true)) continue;
+            const VkPipeline pipeline = pipeline_.pipeline(kPipelineDebugView, d.features, depth_test);
+            if (pipeline != bound_pipeline) {
+                fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+                bound_pipeline = pipeline;
+            }
+            bind_set(i, fields_[d.field_slot].sets[slot_].set);
+            fn_.vkCmdDraw(cmd, DebugViewPipeline::kVerticesPerBox, d.instance_count, 0, d.first_instance);
+        }
+        return GRASS_SUCCESS;
+    }
+
+    // Blades first (they fill the depth buffer near the camera), then the volumes, then
+    // the images on the ground far away.
+    // The pipeline of each draw is the variant of its feature mask; binding one keeps the
+    // vertex buffers and the descriptor set (same layout).
+    const uint32_t stamps = timer_stamps(); // kUntimed: this record is not timed
+    write_stamp(cmd, stamps, 0);
+    VkPipeline bound_pipeline = VK_NULL_HANDLE;
+    uint32_t bound_patch = UINT32_MAX;
+    for (uint32_t i = 0; i < plan.draws.size(); ++i) {
+        const TierDraw& d = plan.draws[i];
+        if (d.kind != GRASS_TIER_GEOMETRY || !drawn(d, false)) continue;
+        const VkPipeline pipeline = pipeline_.pipeline(kPipelineBlade, d.features, depth_test);
+        if (pipeline != bound_pipeline) {
+            fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+            bound_pipeline = pipeline;
+        }
+        bind_set(i, fields_[d.field_slot].sets[slot_].set);
+        const PatchGpu& p = patches_[d.patch_slot];
+        if (bound_patch != d.patch_slot) {
+            const VkBuffer buffers[2] = {p.vertices.buffer, instances};
+            const VkDeviceSize buffer_offsets[2] = {0, 0};
+            fn_.vkCmdBindVertexBuffers(cmd, 0, 2, buffers, buffer_offsets);
+            fn_.vkCmdBindIndexBuffer(cmd, p.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+            bound_patch = d.patch_slot;
+        }
+        fn_.vkCmdDrawIndexed(cmd, p.index_count, d.instance_count, 0, 0, d.first_instance);
+    }
+    write_stamp(cmd, stamps, 1);
+    if (slice_draws == 0) {
+        write_stamp(cmd, stamps, 2);
+        write_stamp(cmd, stamps, 3);
+        return GRASS_SUCCESS;
+    }
+    const struct {
+        grass_tier_kind kind;
+        PipelineKind pipeline;
+        uint32_t vertices;
+    } passes[2] = {
+        {GRASS_TIER_VOLUME, kPipelineVolume, SlicePipelines::kVerticesPerVolume},
+        {GRASS_TIER_IMAGE, kPipelineImage, SlicePipelines::kVerticesPerImage},
+    };
+    for (const auto& pass : passes) {
+        bound_pipeline = VK_NULL_HANDLE;
+        for (uint32_t i = 0; i < plan.draws.size(); ++i) {
+            const TierDraw& d = plan.draws[i];
+            if (d.kind != pass.kind || !draw_sets_[i]) continue;
+            const VkPipeline pipeline = pipeline_.pipeline(pass.pipeline, d.features, depth_test);
+            if (pipeline != bound_pipeline) {
+                if (!bound_pipeline) {
+                    // Binding 0 held the patch vertices of the blades.
+                    fn_.vkCmdBindVertexBuffers(cmd, SlicePipelines::kInstanceBinding, 1, &instances, &zero);
+                }
+                fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+                bound_pipeline = pipeline;
+            }
+            bind_set(i, draw_sets_[i]);
+            const bool skirts = pass.kind == GRASS_TIER_IMAGE && (d.features & (1u << kMapHeight)) != 0;
+            fn_.vkCmdDraw(cmd, skirts ? SlicePipelines::kVerticesPerImageWithSkirts : pass.vertices, d.instance_count, 0,
+                          d.first_instance);
+        }
+        write_stamp(cmd, stamps, pass.kind == GRASS_TIER_VOLUME ? 2 : 3);
+    }
+    return GRASS_SUCCESS;
+}
+
+} // namespace grass::vk
