@@ -11,6 +11,7 @@ packages=(
   libpng-dev nlohmann-json3-dev                                      # image I/O, JSON scenes
   libcli11-dev                                                       # the sample tools' command lines
   libgtest-dev libbenchmark-dev                                      # tests, benchmarks
+  python3-pytest python3-numpy python3-pip python3-setuptools        # the Python binding: tests, maps from arrays, pip install
 )
 
 missing=()

@@ -1,0 +1,319 @@
+"""The raw binding: every struct, enum, constant and function of grass.h, grass_gl.h and
+grass_vk.h, as ctypes declares them. Names are the C names. tests/test_header_layout.py
+checks this file against the headers (sizes, offsets, enum values, signatures)."""
+import ctypes
+import os
+from ctypes import (CFUNCTYPE, POINTER, Structure, c_char_p, c_double, c_float, c_int, c_int32, c_size_t,
+                    c_uint16, c_uint32, c_uint64, c_void_p)
+
+# ---- Constants (#define) -------------------------------------------------------------
+
+DEFINES = {
+    "GRASS_VERSION_MAJOR": 0,
+    "GRASS_VERSION_MINOR": 4,
+    "GRASS_VERSION_PATCH": 0,
+    "GRASS_TIER_KIND_COUNT": 3,
+    "GRASS_MAX_TIERS": 8,
+    "GRASS_MAX_LOD_TESTS": 32,
+    "GRASS_DEFAULT_TIER_COUNT": 5,
+    "GRASS_DEFAULT_LOD_TEST_COUNT": 9,
+    "GRASS_QUALITY_LEVEL_COUNT": 5,
+    "GRASS_MAX_GRASS_TYPES": 8,
+}
+DEFINES["GRASS_HEADER_VERSION"] = ((DEFINES["GRASS_VERSION_MAJOR"] << 22) | (DEFINES["GRASS_VERSION_MINOR"] << 12)
+                                   | DEFINES["GRASS_VERSION_PATCH"])
+globals().update(DEFINES)
+
+# ---- Enums (C enums are ints) ---------------------------------------------------------
+
+ENUMS = {
+    "grass_result": {
+        "GRASS_SUCCESS": 0, "GRASS_ERROR_INVALID_ARGUMENT": -1, "GRASS_ERROR_INVALID_HANDLE": -2,
+        "GRASS_ERROR_WRONG_STRUCT_TYPE": -3, "GRASS_ERROR_INVALID_STATE": -4, "GRASS_ERROR_OUT_OF_MEMORY": -5,
+        "GRASS_ERROR_VERSION_MISMATCH": -6, "GRASS_ERROR_BACKEND": -7, "GRASS_ERROR_UNSUPPORTED": -8,
+        "GRASS_ERROR_IN_USE": -9,
+    },
+    "grass_struct_type": {
+        "GRASS_STRUCT_TYPE_CONTEXT_DESC": 0x67720001, "GRASS_STRUCT_TYPE_PATCH_DESC": 0x67720002,
+        "GRASS_STRUCT_TYPE_FIELD_DESC": 0x67720003, "GRASS_STRUCT_TYPE_MAP_DESC": 0x67720004,
+        "GRASS_STRUCT_TYPE_VIEW_DESC": 0x67720005, "GRASS_STRUCT_TYPE_GRASS_TYPE_DESC": 0x67720006,
+        "GRASS_STRUCT_TYPE_QUALITY_DESC": 0x67720007, "GRASS_STRUCT_TYPE_GL_DESC": 0x67720101,
+        "GRASS_STRUCT_TYPE_VK_DESC": 0x67720201, "GRASS_STRUCT_TYPE_VK_RECORD_DESC": 0x67720202,
+    },
+    "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
+    "grass_message_id": {
+        "GRASS_MSG_NONE": 0,
+        "GRASS_MSG_NULL_ARGUMENT": 100, "GRASS_MSG_WRONG_STRUCT_TYPE": 101, "GRASS_MSG_NEXT_NOT_NULL": 102,
+        "GRASS_MSG_NOT_FINITE": 103, "GRASS_MSG_OUT_OF_RANGE": 104, "GRASS_MSG_RANGE_INVERTED": 105,
+        "GRASS_MSG_ZERO_CELLS": 106, "GRASS_MSG_BAD_TRANSFORM": 107, "GRASS_MSG_BAD_MAP": 108,
+        "GRASS_MSG_BAD_ENUM": 109, "GRASS_MSG_ZERO_VECTOR": 110, "GRASS_MSG_MAP_ROLE": 111,
+        "GRASS_MSG_MAP_REGION": 112,
+        "GRASS_MSG_STALE_HANDLE": 200, "GRASS_MSG_FOREIGN_HANDLE": 201, "GRASS_MSG_NULL_HANDLE": 202,
+        "GRASS_MSG_PATCH_IN_USE": 203, "GRASS_MSG_TOO_MANY_OBJECTS": 204,
+        "GRASS_MSG_FRAME_NOT_BEGUN": 300, "GRASS_MSG_FRAME_ALREADY_BEGUN": 301, "GRASS_MSG_WRONG_BACKEND": 302,
+        "GRASS_MSG_UPLOAD_NOT_RECORDED": 303,
+        "GRASS_MSG_VERSION_MISMATCH": 400, "GRASS_MSG_DEVICE_UNSUPPORTED": 401,
+        "GRASS_MSG_BACKEND_CALL_FAILED": 402, "GRASS_MSG_OUT_OF_MEMORY": 403,
+        "GRASS_MSG_CONTEXT_CREATED": 500, "GRASS_MSG_PATCH_GENERATED": 501,
+    },
+    "grass_depth_mode": {"GRASS_DEPTH_LESS": 0, "GRASS_DEPTH_GREATER": 1},
+    "grass_backend": {"GRASS_BACKEND_NONE": 0, "GRASS_BACKEND_GL": 1, "GRASS_BACKEND_VULKAN": 2},
+    "grass_threshold_mode": {"GRASS_THRESHOLD_UNIFORM": 0, "GRASS_THRESHOLD_CLUSTERED": 1},
+    "grass_map_format": {
+        "GRASS_MAP_FORMAT_R8_UNORM": 1, "GRASS_MAP_FORMAT_R16_UNORM": 2, "GRASS_MAP_FORMAT_R32_FLOAT": 3,
+        "GRASS_MAP_FORMAT_RGBA8_UNORM": 4, "GRASS_MAP_FORMAT_RGBA16_UNORM": 5, "GRASS_MAP_FORMAT_RGBA32_FLOAT": 6,
+    },
+    "grass_tier_kind": {"GRASS_TIER_GEOMETRY": 0, "GRASS_TIER_VOLUME": 1, "GRASS_TIER_IMAGE": 2},
+    "grass_lod_answer": {"GRASS_LOD_DISCARD": 0, "GRASS_LOD_SPLIT": 1, "GRASS_LOD_DRAW": 2},
+    "grass_lod_test_kind": {
+        "GRASS_LOD_TEST_DISTANCE_BAND": 1, "GRASS_LOD_TEST_MACRO_CELL": 2, "GRASS_LOD_TEST_CALLBACK": 3,
+        "GRASS_LOD_TEST_UNPLANARITY": 4, "GRASS_LOD_TEST_HILLTOP": 5,
+    },
+    "grass_quality_level": {
+        "GRASS_QUALITY_REFERENCE": 0, "GRASS_QUALITY_HIGH": 1, "GRASS_QUALITY_DEFAULT": 2, "GRASS_QUALITY_LOW": 3,
+        "GRASS_QUALITY_FASTEST": 4,
+    },
+    "grass_view_flags": {
+        "GRASS_VIEW_FLAG_NONE": 0, "GRASS_VIEW_FLAG_NO_DEPTH_TEST": 1, "GRASS_VIEW_FLAG_DEBUG_TIERS": 2,
+        "GRASS_VIEW_FLAG_DEBUG_CELLS": 4, "GRASS_VIEW_FLAG_DEBUG_THRESHOLDS": 8,
+    },
+}
+for _values in ENUMS.values():
+    globals().update(_values)
+
+grass_enum = c_int
+grass_bool = c_uint32
+
+# ---- Callback types -------------------------------------------------------------------
+
+grass_log_fn = CFUNCTYPE(None, c_void_p, grass_enum, grass_enum, c_char_p)
+grass_alloc_fn = CFUNCTYPE(c_void_p, c_void_p, c_size_t, c_size_t)
+grass_free_fn = CFUNCTYPE(None, c_void_p, c_void_p)
+# grass_gl_proc is a function pointer; a loader returns its address (or None).
+grass_gl_get_proc_address_fn = CFUNCTYPE(c_void_p, c_void_p, c_char_p)
+grass_vk_get_instance_proc_addr_fn = CFUNCTYPE(c_void_p, c_void_p, c_char_p)
+
+# ---- Structs ----------------------------------------------------------------------------
+
+
+class grass_allocator(Structure):
+    _fields_ = [("alloc_fn", grass_alloc_fn), ("free_fn", grass_free_fn), ("user_data", c_void_p)]
+
+
+class grass_context_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("allocator", grass_allocator), ("log_fn", grass_log_fn),
+                ("log_user_data", c_void_p), ("log_level", grass_enum), ("depth_mode", grass_enum),
+                ("cache_directory", c_char_p)]
+
+
+class grass_memory_stats(Structure):
+    _fields_ = [("host_bytes", c_uint64), ("host_allocations", c_uint64), ("gpu_bytes", c_uint64),
+                ("host_bytes_peak", c_uint64)]
+
+
+class grass_patch_id(Structure):
+    _fields_ = [("index", c_uint32), ("generation", c_uint16), ("owner", c_uint16)]
+
+
+class grass_field_id(Structure):
+    _fields_ = [("index", c_uint32), ("generation", c_uint16), ("owner", c_uint16)]
+
+
+class grass_map_id(Structure):
+    _fields_ = [("index", c_uint32), ("generation", c_uint16), ("owner", c_uint16)]
+
+
+class grass_patch_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("blade_count", c_uint32), ("subdivisions", c_uint32),
+                ("length_min", c_float), ("length_max", c_float), ("width_min", c_float), ("width_max", c_float),
+                ("tilt_min", c_float), ("tilt_max", c_float), ("bend_min", c_float), ("bend_max", c_float),
+                ("root_color", c_float * 3), ("tip_color", c_float * 3), ("blade_color_variation", c_float),
+                ("vertex_color_variation", c_float), ("threshold_mode", grass_enum), ("cluster_sigma", c_float),
+                ("cluster_frequency", c_uint32), ("ao_impact", c_float), ("ao_height", c_float), ("seed", c_uint64)]
+
+
+class grass_patch_info(Structure):
+    _fields_ = [("blade_count", c_uint32), ("vertex_count", c_uint32), ("triangle_count", c_uint32),
+                ("bounds_min", c_float * 3), ("bounds_max", c_float * 3), ("content_hash", c_uint64)]
+
+
+class grass_map_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("pixels", c_void_p), ("width", c_uint32),
+                ("height", c_uint32), ("row_pitch", c_uint32), ("format", grass_enum)]
+
+
+class grass_map_stack(Structure):
+    _fields_ = [("density", grass_map_id), ("color", grass_map_id), ("ambient", grass_map_id),
+                ("diffuse", grass_map_id), ("height", grass_map_id), ("height_scale", c_float),
+                ("cell_to_map", c_double * 6)]
+
+
+class grass_tier_desc(Structure):
+    _fields_ = [("kind", grass_enum), ("slices", c_uint32)]
+
+
+class grass_lod_node(Structure):
+    _fields_ = [("level", c_uint32), ("cell_x", c_uint32), ("cell_z", c_uint32), ("cells_x", c_uint32),
+                ("cells_z", c_uint32), ("tier", c_uint32), ("center", c_double * 3), ("radius", c_double),
+                ("distance_min", c_double), ("distance_max", c_double), ("height_min", c_double),
+                ("height_max", c_double)]
+
+
+grass_lod_test_fn = CFUNCTYPE(grass_enum, c_void_p, POINTER(grass_lod_node))
+
+
+class grass_lod_test(Structure):
+    _fields_ = [("kind", grass_enum), ("tier", c_uint32), ("begin", c_float), ("end", c_float),
+                ("transition_in", c_float), ("transition_out", c_float), ("edge_ratio", c_float),
+                ("max_macro_cells", c_uint32), ("callback", grass_lod_test_fn), ("user_data", c_void_p),
+                ("max_unplanarity", c_float), ("unplanarity_ratio", c_float)]
+
+
+class grass_quality_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("blades_everywhere", grass_bool),
+                ("distance_scale", c_float), ("transition_scale", c_float), ("slice_scale", c_float),
+                ("macro_cell_scale", c_float), ("blade_subdivisions", c_uint32), ("blade_fraction", c_float),
+                ("msaa_samples", c_uint32)]
+
+
+class grass_field_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("patch", grass_patch_id), ("cells_x", c_uint32),
+                ("cells_z", c_uint32), ("cell_size", c_double), ("base_transform", c_double * 16),
+                ("density", c_float), ("density_map", POINTER(grass_map_desc)), ("mirror_tiling", grass_bool),
+                ("mirror_seed", c_uint32), ("tiers", POINTER(grass_tier_desc)), ("tier_count", c_uint32),
+                ("lod_tests", POINTER(grass_lod_test)), ("lod_test_count", c_uint32),
+                ("transition_window", c_float), ("maps", grass_map_stack)]
+
+
+class grass_grass_type_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("patch", grass_patch_id), ("density", c_float),
+                ("density_map", grass_map_id), ("tiers", POINTER(grass_tier_desc)), ("tier_count", c_uint32),
+                ("lod_tests", POINTER(grass_lod_test)), ("lod_test_count", c_uint32)]
+
+
+class grass_view_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("camera_position", c_double * 3),
+                ("view", c_float * 16), ("projection", c_float * 16), ("viewport", c_int32 * 4),
+                ("sun_direction", c_float * 3), ("sun_color", c_float * 3), ("ambient_color", c_float * 3),
+                ("time", c_double), ("flags", c_uint32)]
+
+
+_KINDS = DEFINES["GRASS_TIER_KIND_COUNT"]
+
+
+class grass_frame_stats(Structure):
+    _fields_ = [("fields_drawn", c_uint64), ("nodes_visited", c_uint64), ("cells_drawn", c_uint64),
+                ("blades_submitted", c_uint64), ("blades_drawn", c_uint64), ("triangles", c_uint64),
+                ("plan_ms", c_double), ("lod_test_calls", c_uint64), ("nodes_culled", c_uint64),
+                ("instances", c_uint64 * _KINDS), ("macro_cells", c_uint64 * _KINDS), ("cells", c_uint64 * _KINDS),
+                ("nodes_empty", c_uint64), ("draws", c_uint64)]
+
+
+class grass_gl_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("get_proc_address", grass_gl_get_proc_address_fn),
+                ("get_proc_address_user_data", c_void_p)]
+
+
+class grass_vk_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p),
+                ("get_instance_proc_addr", grass_vk_get_instance_proc_addr_fn), ("instance", c_void_p),
+                ("physical_device", c_void_p), ("device", c_void_p), ("queue_family", c_uint32),
+                ("render_pass", c_uint64), ("subpass", c_uint32), ("color_format", c_uint32),
+                ("depth_format", c_uint32), ("sample_count", c_uint32), ("frames_in_flight", c_uint32)]
+
+
+class grass_vk_record_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("command_buffer", c_void_p)]
+
+
+STRUCTS = {name: cls for name, cls in globals().items()
+           if isinstance(cls, type) and issubclass(cls, Structure) and name.startswith("grass_")}
+
+# ---- Functions: name -> (restype, argtypes) -----------------------------------------------
+
+_ctx = c_void_p  # grass_context*, opaque
+_P = POINTER
+FUNCTIONS = {
+    # grass.h
+    "grass_library_version": (c_uint32, []),
+    "grass_result_string": (c_char_p, [grass_enum]),
+    "grass_default_context_desc": (grass_context_desc, []),
+    "grass_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(_ctx)]),
+    "grass_destroy_context": (None, [_ctx]),
+    "grass_get_context_backend": (grass_enum, [_ctx]),
+    "grass_get_last_error": (c_char_p, [_ctx]),
+    "grass_get_memory_stats": (grass_enum, [_ctx, _P(grass_memory_stats)]),
+    "grass_patch_id_equal": (grass_bool, [grass_patch_id, grass_patch_id]),
+    "grass_field_id_equal": (grass_bool, [grass_field_id, grass_field_id]),
+    "grass_map_id_equal": (grass_bool, [grass_map_id, grass_map_id]),
+    "grass_patch_id_is_null": (grass_bool, [grass_patch_id]),
+    "grass_field_id_is_null": (grass_bool, [grass_field_id]),
+    "grass_map_id_is_null": (grass_bool, [grass_map_id]),
+    "grass_default_patch_desc": (grass_patch_desc, []),
+    "grass_create_patch": (grass_enum, [_ctx, _P(grass_patch_desc), _P(grass_patch_id)]),
+    "grass_destroy_patch": (grass_enum, [_ctx, grass_patch_id]),
+    "grass_get_patch_info": (grass_enum, [_ctx, grass_patch_id, _P(grass_patch_info)]),
+    "grass_get_patch_thresholds": (grass_enum, [_ctx, grass_patch_id, _P(c_float), c_uint32]),
+    "grass_default_map_desc": (grass_map_desc, []),
+    "grass_create_map": (grass_enum, [_ctx, _P(grass_map_desc), _P(grass_map_id)]),
+    "grass_update_map": (grass_enum, [_ctx, grass_map_id, c_uint32, c_uint32, _P(grass_map_desc)]),
+    "grass_destroy_map": (grass_enum, [_ctx, grass_map_id]),
+    "grass_default_lod_setup": (None, [c_double, _P(grass_tier_desc), _P(grass_lod_test)]),
+    "grass_quality_preset": (grass_quality_desc, [grass_enum]),
+    "grass_apply_quality": (grass_enum, [_ctx, _P(grass_quality_desc), c_double, _P(grass_patch_desc),
+                                         _P(grass_tier_desc), _P(c_uint32), _P(grass_lod_test), _P(c_uint32)]),
+    "grass_default_field_desc": (grass_field_desc, []),
+    "grass_default_grass_type_desc": (grass_grass_type_desc, []),
+    "grass_create_field": (grass_enum, [_ctx, _P(grass_field_desc), _P(grass_field_id)]),
+    "grass_destroy_field": (grass_enum, [_ctx, grass_field_id]),
+    "grass_default_view_desc": (grass_view_desc, []),
+    "grass_begin_frame": (grass_enum, [_ctx, _P(grass_view_desc)]),
+    "grass_end_frame": (grass_enum, [_ctx]),
+    "grass_get_frame_stats": (grass_enum, [_ctx, _P(grass_frame_stats)]),
+    "grass_get_tier_gpu_ms": (grass_enum, [_ctx, _P(c_double), _P(grass_bool)]),
+    # grass_gl.h
+    "grass_default_gl_desc": (grass_gl_desc, []),
+    "grass_gl_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_gl_desc), _P(_ctx)]),
+    "grass_gl_render": (grass_enum, [_ctx]),
+    # grass_vk.h
+    "grass_default_vk_desc": (grass_vk_desc, []),
+    "grass_vk_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_vk_desc), _P(_ctx)]),
+    "grass_vk_prepare_frame": (grass_enum, [_ctx, c_void_p]),
+    "grass_default_vk_record_desc": (grass_vk_record_desc, []),
+    "grass_vk_record": (grass_enum, [_ctx, _P(grass_vk_record_desc)]),
+}
+
+
+def _candidates():
+    env = os.environ.get("GRASS_LIBRARY")
+    if env:
+        return [env]
+    here = os.path.dirname(os.path.abspath(__file__))
+    return [os.path.join(here, "libgrass.so.0"), os.path.join(here, "libgrass.so"), "libgrass.so.0"]
+
+
+def load_library():
+    """Loads libgrass: $GRASS_LIBRARY, else libgrass.so.0 next to this package, else the
+    system loader's libgrass.so.0 (an installed grass, or LD_LIBRARY_PATH). Declares every
+    function's signature and checks the library's major version."""
+    errors = []
+    for path in _candidates():
+        if os.sep in path and not os.path.exists(path):
+            errors.append(f"{path}: no such file")
+            continue
+        try:
+            lib = ctypes.CDLL(path)
+            break
+        except OSError as e:
+            errors.append(str(e))
+    else:
+        raise OSError("libgrass not found (set GRASS_LIBRARY to the path of libgrass.so): " + "; ".join(errors))
+    for name, (restype, argtypes) in FUNCTIONS.items():
+        fn = getattr(lib, name)
+        fn.restype = restype
+        fn.argtypes = argtypes
+    version = lib.grass_library_version()
+    if version >> 22 != GRASS_VERSION_MAJOR or ((version >> 12) & 0x3FF) < GRASS_VERSION_MINOR:
+        raise OSError(f"{lib._name} is version {version >> 22}.{(version >> 12) & 0x3FF}; this binding needs "
+                      f"{GRASS_VERSION_MAJOR}.{GRASS_VERSION_MINOR} or a later minor version")
+    return lib

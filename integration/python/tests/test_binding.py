@@ -1,0 +1,96 @@
+"""The Pythonic layer on a CPU context: objects, errors with message ids, frames, stats, maps."""
+import pytest
+
+import grass
+
+
+def overhead_view():
+    return grass.view_desc(eye=(8.0, 1.6, -1.0), target=(8.0, 0.0, 8.0), size=(320, 180))
+
+
+def test_a_cpu_context_plans_a_frame():
+    with grass.Context() as ctx:
+        assert ctx.backend == grass.GRASS_BACKEND_NONE
+        patch = ctx.create_patch(blade_count=256)
+        assert patch.info().blade_count == 256
+        assert len(patch.thresholds()) == 256
+        field = ctx.create_field(patch, cells_x=64, cells_z=64)
+        with ctx.frame(overhead_view()):
+            pass
+        stats = ctx.frame_stats()
+        assert stats.fields_drawn == 1 and stats.blades_drawn > 0 and stats.draws >= 1
+        assert ctx.memory_stats().host_bytes > 0
+        field.destroy()
+        patch.destroy()
+    assert ctx.handle is None
+
+
+def test_errors_carry_the_result_and_the_message_id():
+    messages = []
+    with grass.Context(log=lambda level, mid, text: messages.append(mid)) as ctx:
+        patch = ctx.create_patch()
+        with pytest.raises(grass.GrassError) as e:
+            ctx.create_field(patch, cells_x=0, cells_z=4)
+        assert e.value.result == grass.Result.GRASS_ERROR_INVALID_ARGUMENT
+        assert e.value.message_id == grass.MessageId.GRASS_MSG_ZERO_CELLS
+        assert "cells_x" in e.value.message
+        assert grass.GRASS_MSG_ZERO_CELLS in messages
+        with pytest.raises(grass.GrassError) as e:
+            ctx.end_frame()
+        assert e.value.message_id == grass.MessageId.GRASS_MSG_FRAME_NOT_BEGUN
+        field = ctx.create_field(patch, cells_x=4, cells_z=4)
+        with pytest.raises(grass.GrassError) as e:
+            patch.destroy()
+        assert e.value.result == grass.Result.GRASS_ERROR_IN_USE
+        field.destroy()
+        patch.destroy()
+
+
+def test_bad_field_names_are_refused_in_python():
+    with pytest.raises(AttributeError):
+        grass.patch_desc(blade_cuont=3)
+
+
+def test_maps_from_numpy_thin_the_grass():
+    np = pytest.importorskip("numpy")
+    with grass.Context() as ctx:
+        patch = ctx.create_patch()
+        with ctx.create_map(np.full((16, 16), 255, np.uint8)) as density:
+            field = ctx.create_field(patch, cells_x=64, cells_z=64, maps={"density": density})
+            with ctx.frame(overhead_view()):
+                pass
+            full = ctx.frame_stats().blades_drawn
+            density.update(0, 0, np.zeros((16, 16), np.uint8))
+            with ctx.frame(overhead_view()):
+                pass
+            assert ctx.frame_stats().blades_drawn == 0 < full
+            field.destroy()
+
+
+def test_quality_presets_and_id_helpers():
+    with grass.Context() as ctx:
+        patch_desc, tiers, tests = ctx.apply_quality(grass.GRASS_QUALITY_FASTEST, 0.25)
+        assert 1 <= len(tiers) <= grass.GRASS_MAX_TIERS and len(tests) >= len(tiers)
+        patch = ctx.create_patch(patch_desc)
+        field = ctx.create_field(patch, cells_x=32, cells_z=32, tiers=tiers, lod_tests=tests)
+        assert grass.lib.grass_patch_id_equal(patch.id, patch.id)
+        assert not grass.lib.grass_field_id_is_null(field.id)
+        assert grass.lib.grass_result_string(grass.GRASS_ERROR_IN_USE) == b"GRASS_ERROR_IN_USE"
+
+
+def test_a_lod_callback_from_python():
+    calls = []
+
+    def draw_everything(user_data, node):
+        calls.append(node.contents.level)
+        return grass.GRASS_LOD_DRAW
+
+    with grass.Context() as ctx:
+        patch = ctx.create_patch()
+        test = grass.grass_lod_test(kind=grass.GRASS_LOD_TEST_CALLBACK, tier=0,
+                                    callback=grass.grass_lod_test_fn(draw_everything))
+        tier = grass.grass_tier_desc(kind=grass.GRASS_TIER_GEOMETRY)
+        ctx.create_field(patch, cells_x=64, cells_z=64, tiers=[tier], lod_tests=[test])
+        with ctx.frame(overhead_view()):
+            pass
+        assert calls and ctx.frame_stats().cells_drawn > 0
