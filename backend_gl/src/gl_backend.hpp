@@ -129,7 +129,7 @@ private:
     Vector<SliceGpu> slices_; // every patch's sets, unordered
     Vector<FieldGpu> fields_;
     Vector<MapGpu> maps_;
-    bool timers_ = false;           // GL_TIMESTAMP has counter bits
+    bool timers_ = false; // GL_TIMESTAMP has counter bits
     GLuint timer_queries_[kTimerQueries] = {};
     TierTimerRing timer_ring_{kTimerSets, TierTimerRing::WhenBusy::skip_frame};
     bool frame_timer_opened_ = false; // the first render of the frame has opened its set
