@@ -12,6 +12,7 @@ packages=(
   libcli11-dev                                                       # the sample tools' command lines
   libgtest-dev libbenchmark-dev                                      # tests, benchmarks
   python3-pytest python3-numpy python3-pip python3-setuptools        # the Python binding: tests, maps from arrays, pip install
+  clang-format-15 python3                                            # the style check, the docs' link check
 )
 
 missing=()
