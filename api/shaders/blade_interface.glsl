@@ -25,6 +25,8 @@ layout(std140, binding = 0) uniform Frame {
     vec4 ambient_color;    // rgb
     vec4 params;           // x: time in seconds, y: view flags, z: +1 depth 0 near, -1 reversed depth,
                            // w: the target's samples per pixel (set by the backend)
+    vec4 target;           // x: 1 when the host's clip z runs 0..1 (Vulkan, GL_ZERO_TO_ONE clip control),
+                           // 0 for GL's default -1..1 (set by the backend)
 } frame;
 
 layout(std140, binding = 1) uniform Field {
@@ -96,13 +98,17 @@ int sample_count() {
 }
 
 
-// The window depth of a camera-relative world position, for gl_FragDepth (GL's default
-// depth range; Vulkan's clip z is already 0..1).
+// The window depth of a camera-relative world position, for gl_FragDepth: clip z / w
+// mapped as the host's clip convention maps it (frame.target.x: 0..1 or -1..1), then into
+// the depth range (GL: the host's glDepthRange; Vulkan: the viewport's 0..1, vk_record).
+// Reversed depth needs nothing here: it is in the host's projection.
 float window_depth(vec3 position) {
     vec4 clip = frame.view_projection * vec4(position, 1.0);
+    float z = clip.z / clip.w;
+    if (frame.target.x < 0.5) z = 0.5 * z + 0.5;
 #ifdef VULKAN
-    return clip.z / clip.w;
+    return z;
 #else
-    return 0.5 * (clip.z / clip.w) + 0.5;
+    return gl_DepthRange.near + gl_DepthRange.diff * z;
 #endif
 }
