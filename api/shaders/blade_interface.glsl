@@ -92,6 +92,20 @@ vec2 light_maps(vec2 cell_point) {
     return l;
 }
 
+// GRASS_VIEW_FLAG_ENCODE_SRGB (16 in frame.params.y): the host's target stores what the
+// shader writes (UNORM, or GL_FRAMEBUFFER_SRGB off), so the shader encodes to sRGB itself.
+bool encode_srgb() {
+    return (uint(frame.params.y + 0.5) & 16u) != 0u;
+}
+// The colour a tier writes: linear RGB, sRGB-encoded when the host asks for it. Alpha is
+// coverage and stays linear. Before a multisample resolve, as a UNORM target stores it.
+vec4 output_color(vec4 linear) {
+    if (!encode_srgb()) return linear;
+    vec3 c = clamp(linear.rgb, 0.0, 1.0);
+    vec3 encoded = mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+    return vec4(encoded, linear.a);
+}
+
 // The target's samples per pixel (1 without multisampling; set by the backend).
 int sample_count() {
     return max(int(frame.params.w + 0.5), 1);

@@ -636,7 +636,17 @@ typedef enum grass_view_flags {
      * of the blade it draws (16 bits: red = high byte, green = low byte, written so that an
      * 8-bit sRGB target stores those bytes exactly) and its tier kind in blue (0 geometry,
      * 128 volume, 255 image). Use a single-sampled target. */
-    GRASS_VIEW_FLAG_DEBUG_THRESHOLDS = 1u << 3
+    GRASS_VIEW_FLAG_DEBUG_THRESHOLDS = 1u << 3,
+    /* 0.4: Colour output. Grass writes linear RGB, for a target that encodes it to sRGB as it
+     * stores it (an sRGB format: GL_SRGB8_ALPHA8 with GL_FRAMEBUFFER_SRGB enabled,
+     * VK_FORMAT_*_SRGB) or keeps it linear (a float HDR target the host tone-maps later).
+     * A target that stores what the shader writes without conversion (a UNORM format, or GL
+     * with GL_FRAMEBUFFER_SRGB disabled) shows that linear colour about 3.5 times too dark
+     * in the mid tones: set this flag and grass encodes its colour to sRGB in the shader
+     * instead. Multisampled, such a target then averages encoded samples at blade edges
+     * (as it does for everything the host draws into it). The DEBUG_THRESHOLDS view keeps
+     * its exact bytes with this flag on a UNORM target. */
+    GRASS_VIEW_FLAG_ENCODE_SRGB = 1u << 4
 } grass_view_flags;
 
 /* The camera and lights of one frame. */
