@@ -7,6 +7,7 @@
 #include <grass/grass.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -101,6 +102,12 @@ public:
         (void)name;
         return nullptr;
     }
+
+    // GL hosts: called in render() right before grass_begin_frame (after the clear, the
+    // ground and the occluder) and right after grass_end_frame (before the read-back), for
+    // tests of the GL state grass draws under and leaves. Vulkan hosts do not call them.
+    std::function<void()> before_grass;
+    std::function<void()> after_grass;
 
 protected:
     explicit Host(const TargetDesc& target) : target_(target) {}

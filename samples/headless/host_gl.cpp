@@ -536,12 +536,14 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
         }
     }
 
+    if (before_grass) before_grass();
     grass_result result = grass_begin_frame(context, &view);
     if (result == GRASS_SUCCESS) {
         result = grass_gl_render(context);
         const grass_result end = grass_end_frame(context);
         if (result == GRASS_SUCCESS) result = end;
     }
+    if (after_grass) after_grass();
     if (target_.gl_clip_zero_to_one) gl_.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     if (result != GRASS_SUCCESS) {
         if (error) *error = grass_get_last_error(context);
