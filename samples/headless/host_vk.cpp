@@ -898,7 +898,8 @@ void VkHost::clear_occluder(VkCommandBuffer cmd, const grass_view_desc& view, co
     clears[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
     clears[0].colorAttachment = 0;
     for (int c = 0; c < 3; ++c) {
-        clears[0].clearValue.color.float32[c] = target_.unorm_color ? linear_to_srgb(occluder.color[c]) : occluder.color[c];
+        const float linear = occluder.color[c];
+        clears[0].clearValue.color.float32[c] = target_.unorm_color ? linear_to_srgb(linear) : linear;
     }
     clears[0].clearValue.color.float32[3] = 1.0f;
     clears[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;

@@ -57,7 +57,8 @@ TEST_P(DepthConventionTest, HostObjectsInFrontHideGrassAndGrassHidesWhatIsBehind
         start(t);
         for (int k = 0; k < 3; ++k) {
             SCOPED_TRACE(std::string(conventions[c].name) + ", " + kind_names[k] + " tier");
-            const grass_field_id field = make_field(solo_tier_field(16, kinds[k], kinds[k] == GRASS_TIER_VOLUME ? 8 : 0, 4));
+            const uint32_t slices = kinds[k] == GRASS_TIER_VOLUME ? 8 : 0;
+            const grass_field_id field = make_field(solo_tier_field(16, kinds[k], slices, 4));
             const double eye[3] = {2.0, 1.5, 2.0}, target[3] = {2.0, 0.0, 2.0001};
             const grass_view_desc v = view(eye, target);
             const grass_host::Image open = render(v);
