@@ -31,8 +31,7 @@ grass_result gl_backend_factory(grass_context* ctx, void* user_data, grass::Back
     }
     if (gl_desc->get_proc_address == nullptr) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
-                         "%s: gl_desc->get_proc_address is NULL; pass the GL loader (e.g. eglGetProcAddress)",
-                         kCreate);
+                         "%s: gl_desc->get_proc_address is NULL; pass the GL loader (e.g. eglGetProcAddress)", kCreate);
     }
     return grass::GlBackend::create(ctx, *gl_desc, out_backend);
 }
@@ -49,8 +48,8 @@ GRASS_API grass_gl_desc grass_default_gl_desc(void) {
 
 GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const grass_context_desc* desc,
                                                const grass_gl_desc* gl_desc, grass_context** out_context) {
-    return grass::create_context(kCreate, header_version, desc, gl_backend_factory,
-                                 const_cast<grass_gl_desc*>(gl_desc), out_context);
+    return grass::create_context(kCreate, header_version, desc, gl_backend_factory, const_cast<grass_gl_desc*>(gl_desc),
+                                 out_context);
 }
 
 GRASS_API grass_result grass_gl_render(grass_context* context) {

@@ -38,26 +38,31 @@ const VertexAttribute kBladeAttributes[] = {
 
 const char* gl_error_name(GLenum error) {
     switch (error) {
-    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-    case GL_STACK_OVERFLOW: return "GL_STACK_OVERFLOW";
-    case GL_STACK_UNDERFLOW: return "GL_STACK_UNDERFLOW";
-    default: return "an unknown GL error";
+    case GL_INVALID_ENUM:
+        return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE:
+        return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION:
+        return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION:
+        return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY:
+        return "GL_OUT_OF_MEMORY";
+    case GL_STACK_OVERFLOW:
+        return "GL_STACK_OVERFLOW";
+    case GL_STACK_UNDERFLOW:
+        return "GL_STACK_UNDERFLOW";
+    default:
+        return "an unknown GL error";
     }
 }
 
 } // namespace
 
 GlBackend::GlBackend(grass_context* ctx)
-    : ctx_(ctx),
-      uniform_staging_(StlAllocator<unsigned char>(&ctx->host)),
-      field_uniform_offsets_(StlAllocator<GLintptr>(&ctx->host)),
-      patches_(StlAllocator<PatchGpu>(&ctx->host)),
-      slices_(StlAllocator<SliceGpu>(&ctx->host)),
-      fields_(StlAllocator<FieldGpu>(&ctx->host)),
+    : ctx_(ctx), uniform_staging_(StlAllocator<unsigned char>(&ctx->host)),
+      field_uniform_offsets_(StlAllocator<GLintptr>(&ctx->host)), patches_(StlAllocator<PatchGpu>(&ctx->host)),
+      slices_(StlAllocator<SliceGpu>(&ctx->host)), fields_(StlAllocator<FieldGpu>(&ctx->host)),
       maps_(StlAllocator<MapGpu>(&ctx->host)) {}
 
 grass_result GlBackend::create(grass_context* ctx, const grass_gl_desc& desc, Backend** out_backend) {
@@ -187,8 +192,8 @@ grass_result GlBackend::check_errors(const char* function, const char* what) {
         out_of_memory = out_of_memory || error == GL_OUT_OF_MEMORY;
     }
     if (out_of_memory) {
-        return ctx_->fail(GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: GL_OUT_OF_MEMORY while %s",
-                          function, what);
+        return ctx_->fail(GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: GL_OUT_OF_MEMORY while %s", function,
+                          what);
     }
     if (first != GL_NO_ERROR) {
         return ctx_->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED, "%s: %s (0x%04X) while %s", function,

@@ -124,13 +124,13 @@ private:
     Vector<unsigned char> uniform_staging_;
     Vector<GLintptr> field_uniform_offsets_; // per draw (all kinds), into uniforms_
     bool frame_uploaded_ = false;
-    uint32_t frame_samples_ = 0; // the Frame block's params.w as uploaded
+    uint32_t frame_samples_ = 0;          // the Frame block's params.w as uploaded
     bool frame_clip_zero_to_one_ = false; // ... and its target.x
     Vector<PatchGpu> patches_;
     Vector<SliceGpu> slices_; // every patch's sets, unordered
     Vector<FieldGpu> fields_;
     Vector<MapGpu> maps_;
-    bool timers_ = false;           // GL_TIMESTAMP has counter bits
+    bool timers_ = false; // GL_TIMESTAMP has counter bits
     GLuint timer_queries_[kTimerQueries] = {};
     TierTimerRing timer_ring_{kTimerSets, TierTimerRing::WhenBusy::skip_frame};
     bool frame_timer_opened_ = false; // the first render of the frame has opened its set

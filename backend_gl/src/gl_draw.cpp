@@ -13,13 +13,11 @@ namespace grass {
 
 namespace {
 
-size_t align_up(size_t value, size_t alignment) {
-    return (value + alignment - 1) / alignment * alignment;
-}
+size_t align_up(size_t value, size_t alignment) { return (value + alignment - 1) / alignment * alignment; }
 
-constexpr GLsizei kImageVertices = 6;   // one quad, corners from gl_VertexID (image.vert)
+constexpr GLsizei kImageVertices = 6;            // one quad, corners from gl_VertexID (image.vert)
 constexpr GLsizei kImageVerticesWithSkirts = 30; // on a height map: the quad and 4 skirts (image.vert)
-constexpr GLsizei kVolumeVertices = 36; // a cuboid, every face (volume.vert)
+constexpr GLsizei kVolumeVertices = 36;          // a cuboid, every face (volume.vert)
 
 } // namespace
 
@@ -155,7 +153,7 @@ grass_result GlBackend::render(const char* function) {
     // Every program variant the plan draws with (upload_field compiled the fields' tiers';
     // the debug view's are compiled on first use). Compiling binds nothing.
     for (const TierDraw& draw : plan.draws) {
-        const GlProgramKind kind = debug                               ? kProgramDebugTiers
+        const GlProgramKind kind = debug                              ? kProgramDebugTiers
                                    : draw.kind == GRASS_TIER_GEOMETRY ? kProgramBlades
                                    : draw.kind == GRASS_TIER_VOLUME   ? kProgramVolume
                                                                       : kProgramImage;

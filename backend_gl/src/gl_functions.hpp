@@ -7,83 +7,83 @@
 #include <GL/glcorearb.h>
 
 // X(PFN type, name without the gl prefix)
-#define GRASS_GL_FUNCTIONS(X)                                                       \
-    /* queries and global state */                                                  \
-    X(PFNGLGETERRORPROC, GetError)                                                  \
-    X(PFNGLGETSTRINGPROC, GetString)                                                \
-    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                            \
-    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                                        \
-    X(PFNGLGETINTEGER64I_VPROC, GetInteger64i_v)                                    \
-    X(PFNGLGETBOOLEANVPROC, GetBooleanv)                                            \
-    X(PFNGLGETBOOLEANI_VPROC, GetBooleani_v)                                        \
-    X(PFNGLCOLORMASKIPROC, ColorMaski)                                              \
-    X(PFNGLISENABLEDPROC, IsEnabled)                                                \
-    X(PFNGLENABLEPROC, Enable)                                                      \
-    X(PFNGLDISABLEPROC, Disable)                                                    \
-    X(PFNGLVIEWPORTPROC, Viewport)                                                  \
-    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                \
-    X(PFNGLDEPTHMASKPROC, DepthMask)                                                \
-    X(PFNGLPOLYGONMODEPROC, PolygonMode)                                            \
-    X(PFNGLPIXELSTOREIPROC, PixelStorei)                                            \
-    /* shaders and programs */                                                      \
-    X(PFNGLCREATESHADERPROC, CreateShader)                                          \
-    X(PFNGLSHADERSOURCEPROC, ShaderSource)                                          \
-    X(PFNGLCOMPILESHADERPROC, CompileShader)                                        \
-    X(PFNGLGETSHADERIVPROC, GetShaderiv)                                            \
-    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                  \
-    X(PFNGLDELETESHADERPROC, DeleteShader)                                          \
-    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                        \
-    X(PFNGLATTACHSHADERPROC, AttachShader)                                          \
-    X(PFNGLDETACHSHADERPROC, DetachShader)                                          \
-    X(PFNGLLINKPROGRAMPROC, LinkProgram)                                            \
-    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                          \
-    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                \
-    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                              \
-    X(PFNGLPROGRAMUNIFORM1IPROC, ProgramUniform1i)                                  \
-    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                        \
-    X(PFNGLUSEPROGRAMPROC, UseProgram)                                              \
-    /* buffers */                                                                   \
-    X(PFNGLCREATEBUFFERSPROC, CreateBuffers)                                        \
-    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                        \
-    X(PFNGLNAMEDBUFFERSTORAGEPROC, NamedBufferStorage)                              \
-    X(PFNGLNAMEDBUFFERDATAPROC, NamedBufferData)                                    \
-    X(PFNGLNAMEDBUFFERSUBDATAPROC, NamedBufferSubData)                              \
-    X(PFNGLBINDBUFFERPROC, BindBuffer)                                              \
-    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                      \
-    X(PFNGLBINDBUFFERRANGEPROC, BindBufferRange)                                    \
-    /* vertex arrays */                                                             \
-    X(PFNGLCREATEVERTEXARRAYSPROC, CreateVertexArrays)                              \
-    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                              \
-    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                    \
-    X(PFNGLVERTEXARRAYVERTEXBUFFERPROC, VertexArrayVertexBuffer)                    \
-    X(PFNGLVERTEXARRAYELEMENTBUFFERPROC, VertexArrayElementBuffer)                  \
-    X(PFNGLVERTEXARRAYATTRIBFORMATPROC, VertexArrayAttribFormat)                    \
-    X(PFNGLVERTEXARRAYATTRIBIFORMATPROC, VertexArrayAttribIFormat)                  \
-    X(PFNGLVERTEXARRAYATTRIBBINDINGPROC, VertexArrayAttribBinding)                  \
-    X(PFNGLENABLEVERTEXARRAYATTRIBPROC, EnableVertexArrayAttrib)                    \
-    X(PFNGLVERTEXARRAYBINDINGDIVISORPROC, VertexArrayBindingDivisor)                \
-    /* textures and samplers */                                                     \
-    X(PFNGLCREATETEXTURESPROC, CreateTextures)                                      \
-    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                      \
-    X(PFNGLTEXTURESTORAGE2DPROC, TextureStorage2D)                                  \
-    X(PFNGLTEXTURESUBIMAGE2DPROC, TextureSubImage2D)                                \
-    X(PFNGLTEXTURESTORAGE3DPROC, TextureStorage3D)                                  \
-    X(PFNGLTEXTURESUBIMAGE3DPROC, TextureSubImage3D)                                \
-    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                        \
-    X(PFNGLBINDTEXTUREPROC, BindTexture)                                            \
-    X(PFNGLCREATESAMPLERSPROC, CreateSamplers)                                      \
-    X(PFNGLDELETESAMPLERSPROC, DeleteSamplers)                                      \
-    X(PFNGLSAMPLERPARAMETERIPROC, SamplerParameteri)                                \
-    X(PFNGLBINDSAMPLERPROC, BindSampler)                                            \
-    /* drawing */                                                                   \
-    X(PFNGLDRAWARRAYSINSTANCEDBASEINSTANCEPROC, DrawArraysInstancedBaseInstance)    \
+#define GRASS_GL_FUNCTIONS(X)                                                        \
+    /* queries and global state */                                                   \
+    X(PFNGLGETERRORPROC, GetError)                                                   \
+    X(PFNGLGETSTRINGPROC, GetString)                                                 \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                             \
+    X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                                         \
+    X(PFNGLGETINTEGER64I_VPROC, GetInteger64i_v)                                     \
+    X(PFNGLGETBOOLEANVPROC, GetBooleanv)                                             \
+    X(PFNGLGETBOOLEANI_VPROC, GetBooleani_v)                                         \
+    X(PFNGLCOLORMASKIPROC, ColorMaski)                                               \
+    X(PFNGLISENABLEDPROC, IsEnabled)                                                 \
+    X(PFNGLENABLEPROC, Enable)                                                       \
+    X(PFNGLDISABLEPROC, Disable)                                                     \
+    X(PFNGLVIEWPORTPROC, Viewport)                                                   \
+    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                 \
+    X(PFNGLDEPTHMASKPROC, DepthMask)                                                 \
+    X(PFNGLPOLYGONMODEPROC, PolygonMode)                                             \
+    X(PFNGLPIXELSTOREIPROC, PixelStorei)                                             \
+    /* shaders and programs */                                                       \
+    X(PFNGLCREATESHADERPROC, CreateShader)                                           \
+    X(PFNGLSHADERSOURCEPROC, ShaderSource)                                           \
+    X(PFNGLCOMPILESHADERPROC, CompileShader)                                         \
+    X(PFNGLGETSHADERIVPROC, GetShaderiv)                                             \
+    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                   \
+    X(PFNGLDELETESHADERPROC, DeleteShader)                                           \
+    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                         \
+    X(PFNGLATTACHSHADERPROC, AttachShader)                                           \
+    X(PFNGLDETACHSHADERPROC, DetachShader)                                           \
+    X(PFNGLLINKPROGRAMPROC, LinkProgram)                                             \
+    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                           \
+    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                 \
+    X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                               \
+    X(PFNGLPROGRAMUNIFORM1IPROC, ProgramUniform1i)                                   \
+    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                         \
+    X(PFNGLUSEPROGRAMPROC, UseProgram)                                               \
+    /* buffers */                                                                    \
+    X(PFNGLCREATEBUFFERSPROC, CreateBuffers)                                         \
+    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                         \
+    X(PFNGLNAMEDBUFFERSTORAGEPROC, NamedBufferStorage)                               \
+    X(PFNGLNAMEDBUFFERDATAPROC, NamedBufferData)                                     \
+    X(PFNGLNAMEDBUFFERSUBDATAPROC, NamedBufferSubData)                               \
+    X(PFNGLBINDBUFFERPROC, BindBuffer)                                               \
+    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                       \
+    X(PFNGLBINDBUFFERRANGEPROC, BindBufferRange)                                     \
+    /* vertex arrays */                                                              \
+    X(PFNGLCREATEVERTEXARRAYSPROC, CreateVertexArrays)                               \
+    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                               \
+    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                     \
+    X(PFNGLVERTEXARRAYVERTEXBUFFERPROC, VertexArrayVertexBuffer)                     \
+    X(PFNGLVERTEXARRAYELEMENTBUFFERPROC, VertexArrayElementBuffer)                   \
+    X(PFNGLVERTEXARRAYATTRIBFORMATPROC, VertexArrayAttribFormat)                     \
+    X(PFNGLVERTEXARRAYATTRIBIFORMATPROC, VertexArrayAttribIFormat)                   \
+    X(PFNGLVERTEXARRAYATTRIBBINDINGPROC, VertexArrayAttribBinding)                   \
+    X(PFNGLENABLEVERTEXARRAYATTRIBPROC, EnableVertexArrayAttrib)                     \
+    X(PFNGLVERTEXARRAYBINDINGDIVISORPROC, VertexArrayBindingDivisor)                 \
+    /* textures and samplers */                                                      \
+    X(PFNGLCREATETEXTURESPROC, CreateTextures)                                       \
+    X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                       \
+    X(PFNGLTEXTURESTORAGE2DPROC, TextureStorage2D)                                   \
+    X(PFNGLTEXTURESUBIMAGE2DPROC, TextureSubImage2D)                                 \
+    X(PFNGLTEXTURESTORAGE3DPROC, TextureStorage3D)                                   \
+    X(PFNGLTEXTURESUBIMAGE3DPROC, TextureSubImage3D)                                 \
+    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                         \
+    X(PFNGLBINDTEXTUREPROC, BindTexture)                                             \
+    X(PFNGLCREATESAMPLERSPROC, CreateSamplers)                                       \
+    X(PFNGLDELETESAMPLERSPROC, DeleteSamplers)                                       \
+    X(PFNGLSAMPLERPARAMETERIPROC, SamplerParameteri)                                 \
+    X(PFNGLBINDSAMPLERPROC, BindSampler)                                             \
+    /* drawing */                                                                    \
+    X(PFNGLDRAWARRAYSINSTANCEDBASEINSTANCEPROC, DrawArraysInstancedBaseInstance)     \
     X(PFNGLDRAWELEMENTSINSTANCEDBASEINSTANCEPROC, DrawElementsInstancedBaseInstance) \
-    /* timer queries (grass_get_tier_gpu_ms) */                                     \
-    X(PFNGLGETQUERYIVPROC, GetQueryiv)                                              \
-    X(PFNGLCREATEQUERIESPROC, CreateQueries)                                        \
-    X(PFNGLDELETEQUERIESPROC, DeleteQueries)                                        \
-    X(PFNGLQUERYCOUNTERPROC, QueryCounter)                                          \
-    X(PFNGLGETQUERYOBJECTIVPROC, GetQueryObjectiv)                                  \
+    /* timer queries (grass_get_tier_gpu_ms) */                                      \
+    X(PFNGLGETQUERYIVPROC, GetQueryiv)                                               \
+    X(PFNGLCREATEQUERIESPROC, CreateQueries)                                         \
+    X(PFNGLDELETEQUERIESPROC, DeleteQueries)                                         \
+    X(PFNGLQUERYCOUNTERPROC, QueryCounter)                                           \
+    X(PFNGLGETQUERYOBJECTIVPROC, GetQueryObjectiv)                                   \
     X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
 
 namespace grass {

@@ -27,10 +27,10 @@ struct SamplerUnit {
     GLint unit;
 };
 constexpr SamplerUnit kSamplerUnits[] = {
-    {"density_map", kMapUnit[kMapDensity]},  {"slice_color", kSliceColorUnit},
-    {"slice_normal", kSliceNormalUnit},      {"slice_threshold", kSliceThresholdUnit},
-    {"color_map", kMapUnit[kMapColor]},      {"ambient_map", kMapUnit[kMapAmbient]},
-    {"diffuse_map", kMapUnit[kMapDiffuse]},  {"height_map", kMapUnit[kMapHeight]},
+    {"density_map", kMapUnit[kMapDensity]}, {"slice_color", kSliceColorUnit},
+    {"slice_normal", kSliceNormalUnit},     {"slice_threshold", kSliceThresholdUnit},
+    {"color_map", kMapUnit[kMapColor]},     {"ambient_map", kMapUnit[kMapAmbient]},
+    {"diffuse_map", kMapUnit[kMapDiffuse]}, {"height_map", kMapUnit[kMapHeight]},
 };
 
 // Reads a shader or program info log through the context's allocator.
@@ -59,8 +59,8 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
 
     const GLuint shader = gl.CreateShader(stage);
     if (shader == 0) {
-        return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                         "%s: glCreateShader(%s) returned 0", function, stage_name);
+        return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED, "%s: glCreateShader(%s) returned 0",
+                         function, stage_name);
     }
     gl.ShaderSource(shader, 3, strings, lengths);
     gl.CompileShader(shader);
@@ -70,8 +70,8 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
         const Vector<char> log = info_log(ctx, shader, gl.GetShaderiv, gl.GetShaderInfoLog);
         gl.DeleteShader(shader);
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                         "%s: the GL driver failed to compile %s (features 0x%x): %s", function, stage_name,
-                         features, log.data());
+                         "%s: the GL driver failed to compile %s (features 0x%x): %s", function, stage_name, features,
+                         log.data());
     }
     *out_shader = shader;
     return GRASS_SUCCESS;
@@ -94,8 +94,8 @@ ProgramSource program_source(GlProgramKind kind) {
         return {"the image tier program", "image.vert", grass_gl_shaders::image_vert, "image.frag",
                 grass_gl_shaders::image_frag};
     case kProgramDebugTiers:
-        return {"the debug tiers program", "debug_tiers.vert", grass_gl_shaders::debug_tiers_vert,
-                "debug_tiers.frag", grass_gl_shaders::debug_tiers_frag};
+        return {"the debug tiers program", "debug_tiers.vert", grass_gl_shaders::debug_tiers_vert, "debug_tiers.frag",
+                grass_gl_shaders::debug_tiers_frag};
     case kProgramBlades:
     default:
         return {"the blade program", "blade.vert", grass_gl_shaders::blade_vert, "blade.frag",
@@ -110,8 +110,7 @@ grass_result create_program(grass_context* ctx, const GlFunctions& gl, const cha
     const ProgramSource source = program_source(kind);
     GLuint vert = 0;
     GLuint frag = 0;
-    grass_result result =
-        compile(ctx, gl, function, GL_VERTEX_SHADER, source.vert_name, source.vert, features, &vert);
+    grass_result result = compile(ctx, gl, function, GL_VERTEX_SHADER, source.vert_name, source.vert, features, &vert);
     if (result != GRASS_SUCCESS) return result;
     result = compile(ctx, gl, function, GL_FRAGMENT_SHADER, source.frag_name, source.frag, features, &frag);
     if (result != GRASS_SUCCESS) {

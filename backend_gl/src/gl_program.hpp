@@ -18,10 +18,9 @@ constexpr GLint kDensityMapUnit = 0;
 constexpr GLint kSliceColorUnit = 3;
 constexpr GLint kSliceNormalUnit = 4;
 constexpr GLint kSliceThresholdUnit = 5;
-constexpr GLint kMapUnit[kMapRoleCount] = {kDensityMapUnit, static_cast<GLint>(kMapBinding[kMapColor]),
-                                           static_cast<GLint>(kMapBinding[kMapAmbient]),
-                                           static_cast<GLint>(kMapBinding[kMapDiffuse]),
-                                           static_cast<GLint>(kMapBinding[kMapHeight])};
+constexpr GLint kMapUnit[kMapRoleCount] = {
+    kDensityMapUnit, static_cast<GLint>(kMapBinding[kMapColor]), static_cast<GLint>(kMapBinding[kMapAmbient]),
+    static_cast<GLint>(kMapBinding[kMapDiffuse]), static_cast<GLint>(kMapBinding[kMapHeight])};
 static_assert(kMapUnit[kMapColor] == 6 && kMapUnit[kMapHeight] == 9, "design map units 6-9");
 
 // The programs of the backend.

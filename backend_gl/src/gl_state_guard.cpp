@@ -15,7 +15,7 @@ void set_enabled(const GlFunctions& gl, GLenum capability, GLboolean enabled) {
 }
 
 constexpr GLenum kUnpackParameters[] = {
-    GL_UNPACK_ALIGNMENT,  GL_UNPACK_ROW_LENGTH,  GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS,
+    GL_UNPACK_ALIGNMENT,  GL_UNPACK_ROW_LENGTH,   GL_UNPACK_SKIP_ROWS,   GL_UNPACK_SKIP_PIXELS,
     GL_UNPACK_SWAP_BYTES, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES,
 };
 
@@ -29,11 +29,26 @@ static_assert(sizeof(kUnpackParameters) / sizeof(kUnpackParameters[0]) == 7, "Gl
 // for the draws, enabled again afterwards (grass_gl.h lists them). Every GL 4.5 context has
 // at least 8 clip distances.
 constexpr GLenum kHostDisabled[] = {
-    GL_STENCIL_TEST,       GL_SCISSOR_TEST,     GL_POLYGON_OFFSET_FILL, GL_RASTERIZER_DISCARD,
-    GL_SAMPLE_MASK,        GL_SAMPLE_SHADING,   GL_SAMPLE_COVERAGE,     GL_SAMPLE_ALPHA_TO_ONE,
-    GL_DEPTH_CLAMP,        GL_PRIMITIVE_RESTART, GL_PRIMITIVE_RESTART_FIXED_INDEX, GL_COLOR_LOGIC_OP,
-    GL_CLIP_DISTANCE0,     GL_CLIP_DISTANCE1,   GL_CLIP_DISTANCE2,      GL_CLIP_DISTANCE3,
-    GL_CLIP_DISTANCE4,     GL_CLIP_DISTANCE5,   GL_CLIP_DISTANCE6,      GL_CLIP_DISTANCE7,
+    GL_STENCIL_TEST,
+    GL_SCISSOR_TEST,
+    GL_POLYGON_OFFSET_FILL,
+    GL_RASTERIZER_DISCARD,
+    GL_SAMPLE_MASK,
+    GL_SAMPLE_SHADING,
+    GL_SAMPLE_COVERAGE,
+    GL_SAMPLE_ALPHA_TO_ONE,
+    GL_DEPTH_CLAMP,
+    GL_PRIMITIVE_RESTART,
+    GL_PRIMITIVE_RESTART_FIXED_INDEX,
+    GL_COLOR_LOGIC_OP,
+    GL_CLIP_DISTANCE0,
+    GL_CLIP_DISTANCE1,
+    GL_CLIP_DISTANCE2,
+    GL_CLIP_DISTANCE3,
+    GL_CLIP_DISTANCE4,
+    GL_CLIP_DISTANCE5,
+    GL_CLIP_DISTANCE6,
+    GL_CLIP_DISTANCE7,
 };
 constexpr int kHostDisabledCount = sizeof(kHostDisabled) / sizeof(kHostDisabled[0]);
 static_assert(kHostDisabledCount <= 32, "GlDrawStateGuard::host_enabled_ holds one bit each");

@@ -59,7 +59,7 @@ private:
     GLboolean alpha_to_coverage_ = GL_FALSE;
     GLint polygon_mode_[2] = {GL_FILL, GL_FILL};
     GLboolean color_mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE}; // draw buffer 0's
-    uint32_t host_enabled_ = 0; // bit i: kHostDisabled[i] was enabled by the host
+    uint32_t host_enabled_ = 0;                                      // bit i: kHostDisabled[i] was enabled by the host
 };
 
 // Around texture uploads from client memory: the unpack pixel-store state and the pixel

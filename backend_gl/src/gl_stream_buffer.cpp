@@ -2,9 +2,7 @@
 
 namespace grass {
 
-void GlStreamBuffer::create(const GlFunctions& gl) {
-    gl.CreateBuffers(1, &name_);
-}
+void GlStreamBuffer::create(const GlFunctions& gl) { gl.CreateBuffers(1, &name_); }
 
 void GlStreamBuffer::destroy(const GlFunctions& gl) {
     if (name_ != 0) gl.DeleteBuffers(1, &name_);

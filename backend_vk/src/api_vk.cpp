@@ -98,19 +98,21 @@ grass_result grass_vk_record(grass_context* ctx, const grass_vk_record_desc* rec
         VkBackend* backend = nullptr;
         grass_result r = check_frame_call(ctx, function, &backend);
         if (r != GRASS_SUCCESS) return r;
-        if (!record) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: record is NULL", function);
+        if (!record)
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: record is NULL", function);
         if (grass::raw_enum(record->type) != GRASS_STRUCT_TYPE_VK_RECORD_DESC) {
             return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                              "%s: record->type is 0x%08x; expected GRASS_STRUCT_TYPE_VK_RECORD_DESC (0x%08x)", function,
-                             static_cast<unsigned>(grass::raw_enum(record->type)), static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_RECORD_DESC));
+                             static_cast<unsigned>(grass::raw_enum(record->type)),
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_RECORD_DESC));
         }
         if (record->next) {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: record->next must be NULL",
                              function);
         }
         if (!record->command_buffer) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: record->command_buffer is NULL",
-                             function);
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+                             "%s: record->command_buffer is NULL", function);
         }
         return backend->record(static_cast<VkCommandBuffer>(record->command_buffer));
     });

@@ -32,8 +32,8 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment,
             vk_desc.sample_count),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
-      fields_(StlAllocator<FieldGpu>(&context->host)), maps_(StlAllocator<MapGpu>(&context->host)), slices_(StlAllocator<SliceGpu>(&context->host)),
-      draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),
+      fields_(StlAllocator<FieldGpu>(&context->host)), maps_(StlAllocator<MapGpu>(&context->host)),
+      slices_(StlAllocator<SliceGpu>(&context->host)), draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),
       regions_(StlAllocator<VkBufferImageCopy>(&context->host)),
       timer_ring_(vk_desc.frames_in_flight, TierTimerRing::WhenBusy::drop_results) {}
 
@@ -83,8 +83,8 @@ grass_result VkBackend::init(const char* function) {
         return fail(function, "the default white map", failure); // the destructor frees what was made
     }
     pending_uploads_ += 1;
-    if (!stage_image(&default_black_, &default_black_staging_, MapTexels{black, 1, 1, rgba16_maps_ ? 4u : 1u},
-                     &failure, &what)) {
+    if (!stage_image(&default_black_, &default_black_staging_, MapTexels{black, 1, 1, rgba16_maps_ ? 4u : 1u}, &failure,
+                     &what)) {
         return fail(function, "the default black map", failure);
     }
     pending_uploads_ += 1;
@@ -136,7 +136,8 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
     const VkDescriptorBufferInfo field_block{uniforms, 0, sizeof(FieldUniforms)};
     // The samplers are immutable, in the layout. Bindings 2..9: images[binding - 2].
     VkDescriptorImageInfo images[kBindingCount - kBindingDensityMap];
-    for (VkDescriptorImageInfo& i : images) i = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    for (VkDescriptorImageInfo& i : images)
+        i = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     for (uint32_t role = 0; role < kMapRoleCount; ++role) {
         images[kMapBinding[role] - kBindingDensityMap].imageView = map_view(field, role);
     }

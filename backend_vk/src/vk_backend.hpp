@@ -8,8 +8,8 @@
 #include "timing/tier_timer_ring.hpp"
 #include "vk_debug_view.hpp"
 #include "vk_deferred.hpp"
-#include "vk_descriptors.hpp"
 #include "vk_desc_check.hpp"
+#include "vk_descriptors.hpp"
 #include "vk_device.hpp"
 #include "vk_frame_ring.hpp"
 #include "vk_memory.hpp"
@@ -142,7 +142,7 @@ private:
     const Functions& fn_;
     Memory memory_;
     DescriptorAllocator descriptors_;
-    FrameDescriptors frame_sets_;  // the volume and image draws' sets, written per frame
+    FrameDescriptors frame_sets_; // the volume and image draws' sets, written per frame
     DeferredDeletion deferred_;
     BladePipeline pipeline_;
     FrameRing ring_;
@@ -150,15 +150,15 @@ private:
     Vector<PatchGpu> patches_;
     Vector<FieldGpu> fields_;
     Vector<MapGpu> maps_;
-    Vector<SliceGpu> slices_;      // every patch's slice sets, in no order
+    Vector<SliceGpu> slices_;           // every patch's slice sets, in no order
     Vector<VkDescriptorSet> draw_sets_; // record(): the set of each volume and image draw
     Vector<VkBufferImageCopy> regions_; // prepare_frame(): scratch for slice copies
-    Image default_white_;        // 1x1 white R16: density, ambient and diffuse of fields without them
+    Image default_white_;               // 1x1 white R16: density, ambient and diffuse of fields without them
     Buffer default_white_staging_;
-    Image default_black_;        // 1x1 transparent black RGBA16 (R16 where the device lacks it): colour, height
+    Image default_black_; // 1x1 transparent black RGBA16 (R16 where the device lacks it): colour, height
     Buffer default_black_staging_;
-    bool rgba16_maps_ = false;   // the device samples R16G16B16A16_UNORM with linear filtering
-    Image default_slices_;       // 1x1, one layer, zero: bindings 3-5 of draws without slices
+    bool rgba16_maps_ = false; // the device samples R16G16B16A16_UNORM with linear filtering
+    Image default_slices_;     // 1x1, one layer, zero: bindings 3-5 of draws without slices
     Buffer default_slices_staging_;
     uint32_t pending_uploads_ = 0; // patches, slice sets, maps, map updates and the default images not yet recorded
     uint64_t frame_ = 0;           // frames begun; the current one while in a frame
@@ -166,7 +166,7 @@ private:
     VkQueryPool timer_pool_ = VK_NULL_HANDLE; // frames_in_flight x TierTimerRing::kStampsPerSet timestamps
     TierTimerRing timer_ring_;
     uint32_t timer_set_ = TierTimerRing::kUntimed; // the current frame's set
-    bool timer_reset_ = false;     // prepare_frame recorded the reset of its range this frame
+    bool timer_reset_ = false;                     // prepare_frame recorded the reset of its range this frame
 };
 
 } // namespace grass::vk

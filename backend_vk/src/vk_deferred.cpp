@@ -45,7 +45,7 @@ bool DeferredDeletion::allocate_set(VkDescriptorSetLayout layout, DescriptorSet*
 
 void DeferredDeletion::push(const Item& item) {
     assert(places_ > 0 && items_.size() < items_.capacity()); // a handle made by a creator above
-    items_.push_back(item); // within the capacity its creator reserved: cannot throw
+    items_.push_back(item);                                   // within the capacity its creator reserved: cannot throw
     places_ -= 1;
 }
 

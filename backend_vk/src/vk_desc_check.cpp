@@ -11,7 +11,8 @@ grass_result check_vk_desc(grass_context* ctx, const char* function, const grass
     if (grass::raw_enum(d->type) != GRASS_STRUCT_TYPE_VK_DESC) {
         return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                          "%s: vk_desc->type is 0x%08x; expected GRASS_STRUCT_TYPE_VK_DESC (0x%08x)", function,
-                         static_cast<unsigned>(grass::raw_enum(d->type)), static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DESC));
+                         static_cast<unsigned>(grass::raw_enum(d->type)),
+                         static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DESC));
     }
     if (d->next) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: vk_desc->next must be NULL",
@@ -28,16 +29,17 @@ grass_result check_vk_desc(grass_context* ctx, const char* function, const grass
     };
     for (const auto& r : required) {
         if (r.missing) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: vk_desc->%s is NULL; it is required",
-                             function, r.name);
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+                             "%s: vk_desc->%s is NULL; it is required", function, r.name);
         }
     }
     const uint32_t s = d->sample_count;
     if (s == 0 || s > 64 || (s & (s - 1)) != 0) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                         "%s: vk_desc->sample_count is %u; it must be a VkSampleCountFlagBits value (1, 2, 4, 8, 16, 32 "
-                         "or 64)",
-                         function, s);
+        return ctx->fail(
+            GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            "%s: vk_desc->sample_count is %u; it must be a VkSampleCountFlagBits value (1, 2, 4, 8, 16, 32 "
+            "or 64)",
+            function, s);
     }
     if (d->frames_in_flight < 1 || d->frames_in_flight > kMaxFramesInFlight) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,

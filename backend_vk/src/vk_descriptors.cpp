@@ -75,8 +75,8 @@ void DescriptorAllocator::free(DescriptorSet* set) {
 // ---- FrameDescriptors -----------------------------------------------------------------------
 
 FrameDescriptors::FrameDescriptors(const Functions& functions, VkDevice device, HostAllocator* host)
-    : fn_(functions), device_(device),
-      slots_{Slot(host), Slot(host), Slot(host), Slot(host), Slot(host), Slot(host), Slot(host), Slot(host)} {
+    : fn_(functions), device_(device), slots_{Slot(host), Slot(host), Slot(host), Slot(host),
+                                              Slot(host), Slot(host), Slot(host), Slot(host)} {
     static_assert(kMaxFramesInFlight == 8, "one initialiser per frame slot");
 }
 
@@ -96,8 +96,7 @@ void FrameDescriptors::reset(uint32_t slot) {
     s.used = 0;
 }
 
-bool FrameDescriptors::allocate(uint32_t slot, VkDescriptorSetLayout layout, VkDescriptorSet* out,
-                                VkFailure* failure) {
+bool FrameDescriptors::allocate(uint32_t slot, VkDescriptorSetLayout layout, VkDescriptorSet* out, VkFailure* failure) {
     Slot& s = slots_[slot];
     if (s.current < s.pools.size() && s.used == kFrameSetsPerPool) {
         s.current += 1;

@@ -69,8 +69,8 @@ private:
     struct Slot {
         explicit Slot(HostAllocator* host) : pools(StlAllocator<VkDescriptorPool>(host)) {}
         Vector<VkDescriptorPool> pools;
-        uint32_t current = 0;     // the pool sets come from
-        uint32_t used = 0;        // sets taken from pools[current]
+        uint32_t current = 0; // the pool sets come from
+        uint32_t used = 0;    // sets taken from pools[current]
     };
     const Functions& fn_;
     VkDevice device_;

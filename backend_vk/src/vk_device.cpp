@@ -73,8 +73,8 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
                          function, vk_desc.queue_family);
     }
 
-    const VkSampleCountFlags samples = d.properties.limits.framebufferColorSampleCounts &
-                                       d.properties.limits.framebufferDepthSampleCounts;
+    const VkSampleCountFlags samples =
+        d.properties.limits.framebufferColorSampleCounts & d.properties.limits.framebufferDepthSampleCounts;
     if (!(samples & vk_desc.sample_count)) {
         return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
                          "%s: vk_desc->sample_count is %u; the device \"%s\" supports the sample counts 0x%x for "
@@ -122,7 +122,8 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
          "cannot sample VK_FORMAT_R8G8B8A8_UNORM images with linear filtering, which the baked slice normals of the "
          "volume and image tiers need"},
         {kSliceThresholdFormat, false,
-         "cannot sample VK_FORMAT_R16G16B16A16_UNORM images, which the baked slice thresholds of the volume and image tiers "
+         "cannot sample VK_FORMAT_R16G16B16A16_UNORM images, which the baked slice thresholds of the volume and image "
+         "tiers "
          "need"},
     };
     for (const auto& f : slice_formats) {

@@ -56,8 +56,8 @@ bool FrameRing::replace_buffer(Buffer* buffer, VkDeviceSize size, VkBufferUsageF
 
 bool FrameRing::grow_instances(Slot& s, uint32_t needed, uint64_t frame, VkFailure* failure) {
     const uint32_t capacity = grown_capacity(s.instance_capacity, needed);
-    if (!replace_buffer(&s.instances, VkDeviceSize(capacity) * sizeof(TierInstance),
-                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, frame, failure)) {
+    if (!replace_buffer(&s.instances, VkDeviceSize(capacity) * sizeof(TierInstance), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                        frame, failure)) {
         return false;
     }
     s.instance_capacity = capacity;
@@ -74,8 +74,8 @@ bool FrameRing::grow_uniforms(Slot& s, uint32_t needed, uint64_t frame, VkFailur
     return true;
 }
 
-bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool* uniforms_replaced,
-                      VkFailure* failure, const char** what) {
+bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool* uniforms_replaced, VkFailure* failure,
+                      const char** what) {
     Slot& s = slots_[slot];
     *uniforms_replaced = false;
     const uint32_t instances = static_cast<uint32_t>(plan.instances.size());

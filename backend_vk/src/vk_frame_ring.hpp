@@ -6,8 +6,8 @@
 #pragma once
 
 #include "plan/frame_plan.hpp"
-#include "vk_desc_check.hpp"
 #include "vk_deferred.hpp"
+#include "vk_desc_check.hpp"
 #include "vk_memory.hpp"
 
 #include <cstdint>
@@ -38,9 +38,7 @@ public:
     VkBuffer uniform_buffer(uint32_t slot) const { return slots_[slot].uniforms.buffer; }
     // Dynamic offsets of the Frame block and of draw i's Field block.
     uint32_t frame_offset() const { return 0; }
-    uint32_t field_offset(uint32_t draw) const {
-        return static_cast<uint32_t>(frame_stride_ + field_stride_ * draw);
-    }
+    uint32_t field_offset(uint32_t draw) const { return static_cast<uint32_t>(frame_stride_ + field_stride_ * draw); }
 
 private:
     struct Slot {

@@ -17,12 +17,14 @@ TypeRule rule_for(MemoryUse use) {
         return {0, {VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0}, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT};
     case MemoryUse::staging:
         // System memory, leaving the BAR window to the per-frame buffers.
-        return {VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, {VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, 0},
+        return {VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT,
+                {VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, 0},
                 VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT};
     case MemoryUse::streaming:
         // Coherent first (no flushes), then device-local (resizable BAR, unified memory).
         return {VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT,
-                {VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT}, 0};
+                {VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT},
+                0};
     }
     return {0, {0, 0}, 0};
 }

@@ -20,10 +20,10 @@ enum class MemoryUse {
 struct Buffer {
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkDeviceSize size = 0;       // bytes asked for
-    VkDeviceSize allocated = 0;  // bytes of device memory held
-    void* mapped = nullptr;      // staging and streaming buffers: mapped for their lifetime
-    bool coherent = true;        // false: writes must be flushed (Memory::flush)
+    VkDeviceSize size = 0;      // bytes asked for
+    VkDeviceSize allocated = 0; // bytes of device memory held
+    void* mapped = nullptr;     // staging and streaming buffers: mapped for their lifetime
+    bool coherent = true;       // false: writes must be flushed (Memory::flush)
 };
 
 struct Image {

@@ -3,8 +3,8 @@
 #include "vk_debug_view.hpp"
 #include "vk_slice_pipelines.hpp"
 
-#include "plan/frame_plan.hpp"
 #include "patch/patch_data.hpp"
+#include "plan/frame_plan.hpp"
 
 #include <cstddef>
 
@@ -38,8 +38,7 @@ constexpr VkVertexInputAttributeDescription kAttributes[] = {
 static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_shape) == 24 &&
                   offsetof(BladeVertex, color) == 40 && offsetof(BladeVertex, threshold) == 44,
               "vertex layout of blade.vert");
-static_assert(offsetof(TierInstance, cell) == 16 && offsetof(TierInstance, terrain) == 32 &&
-                  sizeof(TierInstance) == 48,
+static_assert(offsetof(TierInstance, cell) == 16 && offsetof(TierInstance, terrain) == 32 && sizeof(TierInstance) == 48,
               "instance layout of blade.vert");
 
 PipelineShape blade_shape() {
@@ -49,9 +48,12 @@ PipelineShape blade_shape() {
     vertex_input.vertexAttributeDescriptionCount = sizeof(kAttributes) / sizeof(kAttributes[0]);
     vertex_input.pVertexAttributeDescriptions = kAttributes;
     // With multisampling, the blade edge alpha becomes coverage (blade.frag).
-    return PipelineShape{grass_vk_spirv::blade_vert, grass_vk_spirv::blade_vert_size,
-                         grass_vk_spirv::blade_frag, grass_vk_spirv::blade_frag_size,
-                         vertex_input,               true,
+    return PipelineShape{grass_vk_spirv::blade_vert,
+                         grass_vk_spirv::blade_vert_size,
+                         grass_vk_spirv::blade_frag,
+                         grass_vk_spirv::blade_frag_size,
+                         vertex_input,
+                         true,
                          "the blade pipelines"};
 }
 
@@ -248,7 +250,8 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
     vertex_input.pVertexAttributeDescriptions = attributes;
     for (uint32_t i = 0; i < shape.vertex_input.vertexAttributeDescriptionCount && i < 16; ++i) {
         const VkVertexInputAttributeDescription& a = shape.vertex_input.pVertexAttributeDescriptions[i];
-        if (a.location < 32 && ((inputs >> a.location) & 1u)) attributes[vertex_input.vertexAttributeDescriptionCount++] = a;
+        if (a.location < 32 && ((inputs >> a.location) & 1u))
+            attributes[vertex_input.vertexAttributeDescriptionCount++] = a;
     }
 
     // GRASS_FEATURES (blade_interface.glsl): the map feature mask, constant id 0, both stages.

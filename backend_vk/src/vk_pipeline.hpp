@@ -48,7 +48,7 @@ struct PipelineTarget {
     VkFormat color_format = VK_FORMAT_UNDEFINED;
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    bool depth_greater = false;                // reversed-Z host: GREATER_OR_EQUAL
+    bool depth_greater = false; // reversed-Z host: GREATER_OR_EQUAL
 };
 
 // What differs between the graphics pipelines of the backend; the rest (viewport and
@@ -59,8 +59,8 @@ struct PipelineShape {
     const uint32_t* fragment_code;
     size_t fragment_code_size;
     VkPipelineVertexInputStateCreateInfo vertex_input; // its arrays live as long as the program
-    bool alpha_to_coverage; // only with multisampling
-    const char* name;       // for *what: "the blade pipelines"
+    bool alpha_to_coverage;                            // only with multisampling
+    const char* name;                                  // for *what: "the blade pipelines"
 };
 
 // The vertex input of the shaders that read instances only (locations 5, 6 and 7 on
@@ -107,9 +107,9 @@ private:
     const Functions& fn_;
     VkDevice device_;
     PipelineTarget target_;
-    VkSampler sampler_ = VK_NULL_HANDLE;         // design maps: bilinear, one mip
-    VkSampler slice_linear_ = VK_NULL_HANDLE;    // slice colour and normal: trilinear
-    VkSampler slice_nearest_ = VK_NULL_HANDLE;   // slice thresholds: never blended
+    VkSampler sampler_ = VK_NULL_HANDLE;       // design maps: bilinear, one mip
+    VkSampler slice_linear_ = VK_NULL_HANDLE;  // slice colour and normal: trilinear
+    VkSampler slice_nearest_ = VK_NULL_HANDLE; // slice thresholds: never blended
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     // [features][kind][0 = depth tested, 1 = depth off]

@@ -59,8 +59,10 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
     }
     for (const PatchGpu& p : patches_) {
         if (!p.pending) continue;
-        batch_.copy_buffer(p.staging.buffer, 0, p.vertices.buffer, p.vertices.size, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
-        batch_.copy_buffer(p.staging.buffer, p.vertices.size, p.indices.buffer, p.indices.size, VK_ACCESS_INDEX_READ_BIT);
+        batch_.copy_buffer(p.staging.buffer, 0, p.vertices.buffer, p.vertices.size,
+                           VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
+        batch_.copy_buffer(p.staging.buffer, p.vertices.size, p.indices.buffer, p.indices.size,
+                           VK_ACCESS_INDEX_READ_BIT);
     }
     for (const MapGpu& m : maps_) {
         // A map is either new (its whole image) or updated (a rectangle of it), never both.
@@ -77,7 +79,8 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
         const struct {
             const Image* image;
             uint32_t texel_bytes;
-        } images[3] = {{&s.color, kSliceColorBytes}, {&s.normal, kSliceNormalBytes}, {&s.threshold, kSliceThresholdBytes}};
+        } images[3] = {
+            {&s.color, kSliceColorBytes}, {&s.normal, kSliceNormalBytes}, {&s.threshold, kSliceThresholdBytes}};
         for (const auto& im : images) {
             regions_.clear();
             at = slice_staging_layout(*im.image, im.texel_bytes, at,
@@ -140,7 +143,8 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
         return false;
     }
     if (!debug_view && draw.kind != GRASS_TIER_GEOMETRY && draw_slices(draw)->pending) {
-        *problem = draw.kind == GRASS_TIER_VOLUME ? "its patch's baked vertical slices" : "its patch's baked horizontal slice";
+        *problem =
+            draw.kind == GRASS_TIER_VOLUME ? "its patch's baked vertical slices" : "its patch's baked horizontal slice";
         return false;
     }
     // The field's descriptor sets point at its maps (or the default ones): each must have
@@ -303,8 +307,8 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
             }
             bind_set(i, draw_sets_[i]);
             const bool skirts = pass.kind == GRASS_TIER_IMAGE && (d.features & (1u << kMapHeight)) != 0;
-            fn_.vkCmdDraw(cmd, skirts ? SlicePipelines::kVerticesPerImageWithSkirts : pass.vertices, d.instance_count, 0,
-                          d.first_instance);
+            fn_.vkCmdDraw(cmd, skirts ? SlicePipelines::kVerticesPerImageWithSkirts : pass.vertices, d.instance_count,
+                          0, d.first_instance);
         }
         write_stamp(cmd, stamps, pass.kind == GRASS_TIER_VOLUME ? 2 : 3);
     }

@@ -177,12 +177,12 @@ grass_result VkBackend::upload_slices(uint32_t slot, const SliceSet& set) {
         // Level k of layer l starts at texel offset(l, k) of each array.
         auto* staging = static_cast<unsigned char*>(fresh.staging.mapped);
         const auto copier = [&](const void* source, uint32_t texel_bytes) {
-            return [&, source, texel_bytes](uint32_t layer, uint32_t level, VkDeviceSize offset, uint32_t w,
-                                            uint32_t h) {
-                const uint64_t first = set.offset(layer, level);
-                std::memcpy(staging + offset, static_cast<const unsigned char*>(source) + first * texel_bytes,
-                            size_t(w) * h * texel_bytes);
-            };
+            return
+                [&, source, texel_bytes](uint32_t layer, uint32_t level, VkDeviceSize offset, uint32_t w, uint32_t h) {
+                    const uint64_t first = set.offset(layer, level);
+                    std::memcpy(staging + offset, static_cast<const unsigned char*>(source) + first * texel_bytes,
+                                size_t(w) * h * texel_bytes);
+                };
         };
         VkDeviceSize at = slice_staging_layout(fresh.color, kSliceColorBytes, 0, copier(set.color.data(), 4));
         at = slice_staging_layout(fresh.normal, kSliceNormalBytes, at, copier(set.normal.data(), 4));

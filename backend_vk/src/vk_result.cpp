@@ -9,7 +9,8 @@ namespace grass::vk {
 const char* vk_result_name(VkResult result, char (&scratch)[32]) {
     switch (result) {
 #define GRASS_VK_RESULT_CASE(name) \
-    case name: return #name;
+    case name:                     \
+        return #name;
         GRASS_VK_RESULT_CASE(VK_SUCCESS)
         GRASS_VK_RESULT_CASE(VK_NOT_READY)
         GRASS_VK_RESULT_CASE(VK_TIMEOUT)
@@ -38,12 +39,11 @@ const char* vk_result_name(VkResult result, char (&scratch)[32]) {
     }
 }
 
-grass_result report_failure(grass_context* context, const char* function, const char* what,
-                            const VkFailure& failure) {
+grass_result report_failure(grass_context* context, const char* function, const char* what, const VkFailure& failure) {
     char scratch[32];
     const char* name = vk_result_name(failure.result, scratch);
-    const bool out_of_memory = failure.result == VK_ERROR_OUT_OF_HOST_MEMORY ||
-                               failure.result == VK_ERROR_OUT_OF_DEVICE_MEMORY;
+    const bool out_of_memory =
+        failure.result == VK_ERROR_OUT_OF_HOST_MEMORY || failure.result == VK_ERROR_OUT_OF_DEVICE_MEMORY;
     if (out_of_memory) {
         return context->fail(GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: %s failed with %s (%s)", function,
                              failure.call ? failure.call : "a Vulkan call", name, what);

@@ -29,7 +29,6 @@ const char* vk_result_name(VkResult result, char (&scratch)[32]);
 
 // Logs "<function>: <call> failed with <VkResult> (<what>)" and returns
 // GRASS_ERROR_OUT_OF_MEMORY for the out-of-memory results, GRASS_ERROR_BACKEND otherwise.
-grass_result report_failure(grass_context* context, const char* function, const char* what,
-                            const VkFailure& failure);
+grass_result report_failure(grass_context* context, const char* function, const char* what, const VkFailure& failure);
 
 } // namespace grass::vk

@@ -17,16 +17,15 @@ namespace grass::vk {
 // blade_interface.glsl), not through alpha to coverage. No culling (shared state):
 // volume.frag keeps the back faces itself.
 PipelineShape SlicePipelines::volume_shape() {
-    return PipelineShape{grass_vk_spirv::volume_vert, grass_vk_spirv::volume_vert_size,
-                         grass_vk_spirv::volume_frag, grass_vk_spirv::volume_frag_size,
+    return PipelineShape{grass_vk_spirv::volume_vert,  grass_vk_spirv::volume_vert_size,
+                         grass_vk_spirv::volume_frag,  grass_vk_spirv::volume_frag_size,
                          instance_only_vertex_input(), false,
                          "the volume tier pipelines"};
 }
 
 PipelineShape SlicePipelines::image_shape() {
-    return PipelineShape{grass_vk_spirv::image_vert, grass_vk_spirv::image_vert_size,
-                         grass_vk_spirv::image_frag, grass_vk_spirv::image_frag_size,
-                         instance_only_vertex_input(), false,
+    return PipelineShape{grass_vk_spirv::image_vert,      grass_vk_spirv::image_vert_size, grass_vk_spirv::image_frag,
+                         grass_vk_spirv::image_frag_size, instance_only_vertex_input(),    false,
                          "the image tier pipelines"};
 }
 

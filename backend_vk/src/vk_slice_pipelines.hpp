@@ -16,8 +16,8 @@ namespace grass::vk {
 struct SlicePipelines {
     // The vertex binding of the tier instances, and the vertices each instance draws.
     static constexpr uint32_t kInstanceBinding = 0;
-    static constexpr uint32_t kVerticesPerVolume = 36; // 6 faces x 2 triangles
-    static constexpr uint32_t kVerticesPerImage = 6;   // 2 triangles
+    static constexpr uint32_t kVerticesPerVolume = 36;          // 6 faces x 2 triangles
+    static constexpr uint32_t kVerticesPerImage = 6;            // 2 triangles
     static constexpr uint32_t kVerticesPerImageWithSkirts = 30; // on a height map: the quad and 4 skirts (image.vert)
 
     static PipelineShape volume_shape();

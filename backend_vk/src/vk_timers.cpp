@@ -49,7 +49,7 @@ void VkBackend::write_stamp(VkCommandBuffer cmd, uint32_t first, uint32_t stamp)
 void VkBackend::collect_timers() {
     if (timer_pool_ == VK_NULL_HANDLE) return;
     timer_ring_.collect([&](uint32_t first, uint32_t count, uint64_t* stamps) {
-        if (count == 0) return true; // no record of its frame was timed
+        if (count == 0) return true;                            // no record of its frame was timed
         uint64_t results[TierTimerRing::kStampsPerSet][2] = {}; // value, availability
         const VkResult r = fn_.vkGetQueryPoolResults(device_.device, timer_pool_, first, count, sizeof(results),
                                                      results, sizeof(results[0]),

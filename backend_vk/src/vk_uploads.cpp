@@ -69,8 +69,8 @@ void UploadBatch::record(const Functions& fn, VkCommandBuffer cmd) {
     for (const ImageCopy& c : image_copies_) {
         const VkImageLayout from = c.update ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
         if (c.update) src_stages = VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-        image_barriers_.push_back(image_barrier(c.dst, c.levels, c.layers, from, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
-                                                VK_ACCESS_TRANSFER_WRITE_BIT));
+        image_barriers_.push_back(image_barrier(c.dst, c.levels, c.layers, from, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                                0, VK_ACCESS_TRANSFER_WRITE_BIT));
     }
     if (!image_barriers_.empty()) {
         fn.vkCmdPipelineBarrier(cmd, src_stages, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,

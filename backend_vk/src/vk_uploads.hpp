@@ -16,8 +16,7 @@ class UploadBatch {
 public:
     explicit UploadBatch(HostAllocator* host)
         : buffer_copies_(StlAllocator<BufferCopy>(host)), image_copies_(StlAllocator<ImageCopy>(host)),
-          regions_(StlAllocator<VkBufferImageCopy>(host)),
-          buffer_barriers_(StlAllocator<VkBufferMemoryBarrier>(host)),
+          regions_(StlAllocator<VkBufferImageCopy>(host)), buffer_barriers_(StlAllocator<VkBufferMemoryBarrier>(host)),
           image_barriers_(StlAllocator<VkImageMemoryBarrier>(host)) {}
 
     // The adds may throw std::bad_alloc; nothing is recorded until record().
@@ -49,7 +48,7 @@ private:
         VkImage dst;
         uint32_t levels, layers;
         uint32_t first_region, region_count; // in regions_
-        bool update;                          // the image holds texels that are kept (update_image)
+        bool update;                         // the image holds texels that are kept (update_image)
     };
     Vector<BufferCopy> buffer_copies_;
     Vector<ImageCopy> image_copies_;

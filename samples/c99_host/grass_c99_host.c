@@ -61,8 +61,9 @@ static int ok(grass_result result, const char* call) {
 static int create_gl_context(void) {
     PFNEGLGETPLATFORMDISPLAYEXTPROC get_platform_display =
         (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     EGLDisplay display;
     EGLContext context;
     if (!get_platform_display) return 0;
@@ -87,8 +88,8 @@ static int load_host_gl(void) {
     gl_clear_bufferfv = (PFNGLCLEARBUFFERFVPROC)eglGetProcAddress("glClearBufferfv");
     gl_read_pixels = (PFNGLREADPIXELSPROC)eglGetProcAddress("glReadPixels");
     return gl_create_renderbuffers && gl_named_renderbuffer_storage && gl_create_framebuffers &&
-           gl_named_framebuffer_renderbuffer && gl_check_named_framebuffer_status && gl_bind_framebuffer &&
-           gl_enable && gl_disable && gl_clear_bufferfv && gl_read_pixels;
+           gl_named_framebuffer_renderbuffer && gl_check_named_framebuffer_status && gl_bind_framebuffer && gl_enable &&
+           gl_disable && gl_clear_bufferfv && gl_read_pixels;
 }
 
 /* The target: sRGB colour (grass writes linear RGB; GL encodes it) and 24-bit depth. */

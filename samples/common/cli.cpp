@@ -35,8 +35,9 @@ CLI::Option* add_backend_option(CLI::App& app, grass_backend* out, const std::st
             return parse_backend(text, &b) ? std::string() : "\"" + text + "\" is not a backend (gl or vk)";
         },
         "gl|vk");
-    return app.add_option_function<std::string>(
-                  "--backend", [out](const std::string& text) { parse_backend(text, out); }, help)
+    return app
+        .add_option_function<std::string>(
+            "--backend", [out](const std::string& text) { parse_backend(text, out); }, help)
         ->check(is_backend)
         ->default_str(backend_name(*out));
 }
@@ -53,10 +54,10 @@ CLI::Option* add_size_option(CLI::App& app, uint32_t* width, uint32_t* height, u
             return std::string();
         },
         "WxH");
-    return app.add_option_function<std::string>(
-                  "--size", [width, height](const std::string& text) {
-                      std::sscanf(text.c_str(), "%ux%u", width, height);
-                  }, help)
+    return app
+        .add_option_function<std::string>(
+            "--size", [width, height](const std::string& text) { std::sscanf(text.c_str(), "%ux%u", width, height); },
+            help)
         ->check(is_size)
         ->default_str(std::to_string(*width) + "x" + std::to_string(*height));
 }
@@ -73,11 +74,14 @@ CLI::Option* add_point_option(CLI::App& app, const std::string& name, double out
             return std::string();
         },
         "X,Y,Z");
-    return app.add_option_function<std::string>(
-                  name, [out, given](const std::string& text) {
-                      std::sscanf(text.c_str(), "%lf,%lf,%lf", &out[0], &out[1], &out[2]);
-                      *given = true;
-                  }, help)
+    return app
+        .add_option_function<std::string>(
+            name,
+            [out, given](const std::string& text) {
+                std::sscanf(text.c_str(), "%lf,%lf,%lf", &out[0], &out[1], &out[2]);
+                *given = true;
+            },
+            help)
         ->check(is_point);
 }
 

@@ -75,7 +75,8 @@ void check_keys(const json& j, const char* where, std::initializer_list<const ch
 void load_density_png(const std::string& path, Scene* s) {
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&png, path.c_str())) throw std::runtime_error("cannot read " + path + ": " + png.message);
+    if (!png_image_begin_read_from_file(&png, path.c_str()))
+        throw std::runtime_error("cannot read " + path + ": " + png.message);
     png.format = PNG_FORMAT_GRAY;
     s->density_texels.resize(PNG_IMAGE_SIZE(png));
     if (!png_image_finish_read(&png, nullptr, s->density_texels.data(), 0, nullptr)) {
@@ -91,11 +92,13 @@ void load_density_png(const std::string& path, Scene* s) {
 Scene::MapImage load_map_png(const std::string& path, bool color) {
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&png, path.c_str())) throw std::runtime_error("cannot read " + path + ": " + png.message);
+    if (!png_image_begin_read_from_file(&png, path.c_str()))
+        throw std::runtime_error("cannot read " + path + ": " + png.message);
     Scene::MapImage m;
     const bool sixteen = (png.format & PNG_FORMAT_FLAG_LINEAR) != 0 && !color;
     png.format = color ? PNG_FORMAT_RGBA : (sixteen ? PNG_FORMAT_LINEAR_Y : PNG_FORMAT_GRAY);
-    m.format = color ? GRASS_MAP_FORMAT_RGBA8_UNORM : (sixteen ? GRASS_MAP_FORMAT_R16_UNORM : GRASS_MAP_FORMAT_R8_UNORM);
+    m.format =
+        color ? GRASS_MAP_FORMAT_RGBA8_UNORM : (sixteen ? GRASS_MAP_FORMAT_R16_UNORM : GRASS_MAP_FORMAT_R8_UNORM);
     m.pixels.resize(PNG_IMAGE_SIZE(png));
     if (!png_image_finish_read(&png, nullptr, m.pixels.data(), 0, nullptr)) {
         throw std::runtime_error("cannot decode " + path + ": " + png.message);
@@ -119,10 +122,14 @@ void read_tiers(const json& list, Scene* s) {
         check_keys(t, "a tier", {"kind", "slices"});
         grass_tier_desc tier{};
         const std::string kind = t.at("kind").get<std::string>();
-        if (kind == "geometry") tier.kind = GRASS_TIER_GEOMETRY;
-        else if (kind == "volume") tier.kind = GRASS_TIER_VOLUME;
-        else if (kind == "image") tier.kind = GRASS_TIER_IMAGE;
-        else throw std::runtime_error("a tier's \"kind\" must be geometry, volume or image, not \"" + kind + "\"");
+        if (kind == "geometry")
+            tier.kind = GRASS_TIER_GEOMETRY;
+        else if (kind == "volume")
+            tier.kind = GRASS_TIER_VOLUME;
+        else if (kind == "image")
+            tier.kind = GRASS_TIER_IMAGE;
+        else
+            throw std::runtime_error("a tier's \"kind\" must be geometry, volume or image, not \"" + kind + "\"");
         read(t, "slices", &tier.slices);
         s->tiers.push_back(tier);
     }
@@ -133,15 +140,22 @@ void read_tiers(const json& list, Scene* s) {
 void read_lod_tests(const json& list, Scene* s) {
     s->lod_tests.clear();
     for (const json& t : list) {
-        check_keys(t, "a lod test", {"kind", "tier", "begin", "end", "transition_in", "transition_out", "max_macro_cells",
-                                     "edge_ratio", "max_unplanarity", "unplanarity_ratio"});
+        check_keys(t, "a lod test",
+                   {"kind", "tier", "begin", "end", "transition_in", "transition_out", "max_macro_cells", "edge_ratio",
+                    "max_unplanarity", "unplanarity_ratio"});
         grass_lod_test test{};
         const std::string kind = t.at("kind").get<std::string>();
-        if (kind == "band") test.kind = GRASS_LOD_TEST_DISTANCE_BAND;
-        else if (kind == "macro") test.kind = GRASS_LOD_TEST_MACRO_CELL;
-        else if (kind == "unplanarity") test.kind = GRASS_LOD_TEST_UNPLANARITY;
-        else if (kind == "hilltop") test.kind = GRASS_LOD_TEST_HILLTOP;
-        else throw std::runtime_error("a lod test's \"kind\" must be band, macro, unplanarity or hilltop, not \"" + kind + "\"");
+        if (kind == "band")
+            test.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+        else if (kind == "macro")
+            test.kind = GRASS_LOD_TEST_MACRO_CELL;
+        else if (kind == "unplanarity")
+            test.kind = GRASS_LOD_TEST_UNPLANARITY;
+        else if (kind == "hilltop")
+            test.kind = GRASS_LOD_TEST_HILLTOP;
+        else
+            throw std::runtime_error("a lod test's \"kind\" must be band, macro, unplanarity or hilltop, not \"" +
+                                     kind + "\"");
         read(t, "edge_ratio", &test.edge_ratio);
         read(t, "max_unplanarity", &test.max_unplanarity);
         read(t, "unplanarity_ratio", &test.unplanarity_ratio);
@@ -180,9 +194,10 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
         }
         if (j.contains("patch")) {
             const json& p = j["patch"];
-            check_keys(p, "\"patch\"", {"blade_count", "subdivisions", "length", "width", "tilt", "bend", "root_color",
-                                        "tip_color", "blade_color_variation", "vertex_color_variation", "threshold_mode",
-                                        "cluster_sigma", "cluster_frequency", "ao_impact", "ao_height", "seed"});
+            check_keys(p, "\"patch\"",
+                       {"blade_count", "subdivisions", "length", "width", "tilt", "bend", "root_color", "tip_color",
+                        "blade_color_variation", "vertex_color_variation", "threshold_mode", "cluster_sigma",
+                        "cluster_frequency", "ao_impact", "ao_height", "seed"});
             auto& d = s->patch;
             read(p, "blade_count", &d.blade_count);
             read(p, "subdivisions", &d.subdivisions);
@@ -203,9 +218,13 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
             read(p, "vertex_color_variation", &d.vertex_color_variation);
             if (p.contains("threshold_mode")) {
                 const auto mode = p["threshold_mode"].get<std::string>();
-                if (mode == "uniform") d.threshold_mode = GRASS_THRESHOLD_UNIFORM;
-                else if (mode == "clustered") d.threshold_mode = GRASS_THRESHOLD_CLUSTERED;
-                else throw std::runtime_error("\"patch.threshold_mode\" must be \"uniform\" or \"clustered\", not \"" + mode + "\"");
+                if (mode == "uniform")
+                    d.threshold_mode = GRASS_THRESHOLD_UNIFORM;
+                else if (mode == "clustered")
+                    d.threshold_mode = GRASS_THRESHOLD_CLUSTERED;
+                else
+                    throw std::runtime_error("\"patch.threshold_mode\" must be \"uniform\" or \"clustered\", not \"" +
+                                             mode + "\"");
             }
             read(p, "cluster_sigma", &d.cluster_sigma);
             read(p, "cluster_frequency", &d.cluster_frequency);
@@ -215,8 +234,9 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
         }
         if (j.contains("field")) {
             const json& f = j["field"];
-            check_keys(f, "\"field\"", {"cells", "cell_size", "origin", "density", "density_map", "mirror_tiling",
-                                        "mirror_seed", "tiers", "lod_tests", "maps"});
+            check_keys(f, "\"field\"",
+                       {"cells", "cell_size", "origin", "density", "density_map", "mirror_tiling", "mirror_seed",
+                        "tiers", "lod_tests", "maps"});
             if (f.contains("maps")) {
                 const json& m = f["maps"];
                 check_keys(m, "\"field.maps\"", {"density", "color", "ambient", "diffuse", "height", "height_scale"});
@@ -302,11 +322,16 @@ const char* map_role_name(MapRole role) {
 
 grass_map_id* map_slot(grass_map_stack* stack, MapRole role) {
     switch (role) {
-    case MapRole::density: return &stack->density;
-    case MapRole::color: return &stack->color;
-    case MapRole::ambient: return &stack->ambient;
-    case MapRole::diffuse: return &stack->diffuse;
-    case MapRole::height: return &stack->height;
+    case MapRole::density:
+        return &stack->density;
+    case MapRole::color:
+        return &stack->color;
+    case MapRole::ambient:
+        return &stack->ambient;
+    case MapRole::diffuse:
+        return &stack->diffuse;
+    case MapRole::height:
+        return &stack->height;
     }
     return nullptr;
 }

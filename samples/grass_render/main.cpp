@@ -111,12 +111,14 @@ int main(int argc, char** argv) {
         r = grass_sample::create_scene_maps(ctx, scene, &scene.field.maps);
         if (r == GRASS_SUCCESS) r = grass_create_field(ctx, &scene.field, &field);
     }
-    const double field_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_field).count();
+    const double field_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_field).count();
     grass_host::Image image;
     double frame_ms = 0.0;
     const bool scene_ready = r == GRASS_SUCCESS;
     if (scene_ready) {
-        grass_view_desc view = grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees, 0.05f, scene.far_m);
+        grass_view_desc view =
+            grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees, 0.05f, scene.far_m);
         if (o.debug_tiers) view.flags |= GRASS_VIEW_FLAG_DEBUG_TIERS;
         if (o.debug_cells) view.flags |= GRASS_VIEW_FLAG_DEBUG_CELLS;
         grass_sample::apply_light(scene, &view);
@@ -125,8 +127,9 @@ int main(int argc, char** argv) {
         frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - f0).count();
     }
     if (r != GRASS_SUCCESS) {
-        status = fail(std::string(scene_ready ? "rendering failed: " : "the scene was refused: ") + grass_result_string(r) +
-                      " (" + grass_get_last_error(ctx) + ")" + (error.empty() || error == grass_get_last_error(ctx) ? "" : " " + error));
+        status = fail(std::string(scene_ready ? "rendering failed: " : "the scene was refused: ") +
+                      grass_result_string(r) + " (" + grass_get_last_error(ctx) + ")" +
+                      (error.empty() || error == grass_get_last_error(ctx) ? "" : " " + error));
     } else if (!grass_host::write_png(output, image, &error)) {
         status = fail(error);
     } else {
@@ -134,29 +137,35 @@ int main(int argc, char** argv) {
         grass_get_frame_stats(ctx, &stats);
         grass_patch_info info{};
         grass_get_patch_info(ctx, patch, &info);
-        std::printf("grass-render: wrote %s (%ux%u, %u samples)\n", output.c_str(), image.width, image.height, scene.samples);
+        std::printf("grass-render: wrote %s (%ux%u, %u samples)\n", output.c_str(), image.width, image.height,
+                    scene.samples);
         std::printf("  backend         %s (%s)\n", grass_sample::backend_name(backend), host->device_name().c_str());
         std::printf("  patch           %u blades, %u triangles, hash %016llx, generated in %.1f ms\n", info.blade_count,
                     info.triangle_count, static_cast<unsigned long long>(info.content_hash),
                     std::chrono::duration<double, std::milli>(t1 - t0).count());
-        std::printf("  field           %u x %u cells of %.3f m, created in %.1f ms (slices baked or read from the cache)\n",
-                    scene.field.cells_x, scene.field.cells_z, scene.field.cell_size, field_ms);
+        std::printf(
+            "  field           %u x %u cells of %.3f m, created in %.1f ms (slices baked or read from the cache)\n",
+            scene.field.cells_x, scene.field.cells_z, scene.field.cell_size, field_ms);
         std::printf("  quadtree        %llu nodes visited, %llu culled, %llu lod-test calls\n",
-                    static_cast<unsigned long long>(stats.nodes_visited), static_cast<unsigned long long>(stats.nodes_culled),
+                    static_cast<unsigned long long>(stats.nodes_visited),
+                    static_cast<unsigned long long>(stats.nodes_culled),
                     static_cast<unsigned long long>(stats.lod_test_calls));
         static const char* const kinds[GRASS_TIER_KIND_COUNT] = {"geometry", "volume", "image"};
         for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) {
             std::printf("  %-15s %llu instances (%llu macro-cells) covering %llu cells\n", kinds[k],
-                        static_cast<unsigned long long>(stats.instances[k]), static_cast<unsigned long long>(stats.macro_cells[k]),
+                        static_cast<unsigned long long>(stats.instances[k]),
+                        static_cast<unsigned long long>(stats.macro_cells[k]),
                         static_cast<unsigned long long>(stats.cells[k]));
         }
-        std::printf("  blades          %llu drawn of %llu submitted\n", static_cast<unsigned long long>(stats.blades_drawn),
+        std::printf("  blades          %llu drawn of %llu submitted\n",
+                    static_cast<unsigned long long>(stats.blades_drawn),
                     static_cast<unsigned long long>(stats.blades_submitted));
         std::printf("  triangles       %llu\n", static_cast<unsigned long long>(stats.triangles));
         std::printf("  plan            %.3f ms\n", stats.plan_ms);
         std::printf("  frame           %.1f ms (wall, incl. read-back)\n", frame_ms);
         if (host->validation_messages() != 0) {
-            std::printf("  validation      %u messages:\n%s\n", host->validation_messages(), host->validation_log().c_str());
+            std::printf("  validation      %u messages:\n%s\n", host->validation_messages(),
+                        host->validation_log().c_str());
             status = 1;
         }
     }

@@ -17,9 +17,9 @@ namespace grass_host {
 struct TargetDesc {
     uint32_t width = 256;
     uint32_t height = 256;
-    uint32_t samples = 1;                          // 1 or 4 (multisampled target, resolved for read-back)
+    uint32_t samples = 1;                               // 1 or 4 (multisampled target, resolved for read-back)
     float clear_color[4] = {0.55f, 0.70f, 0.90f, 1.0f}; // linear RGB sky
-    bool vk_dynamic_rendering = false;             // Vulkan: dynamic rendering instead of a render pass
+    bool vk_dynamic_rendering = false;                  // Vulkan: dynamic rendering instead of a render pass
     // A linear float colour target (GL_RGBA32F / VK_FORMAT_R32G32B32A32_SFLOAT) instead of
     // sRGB RGBA8: the shaders' output is stored unclamped, so NaN and infinity survive to the
     // read-back (Image::rgba_f32). For tests; use samples = 1 (blending is off either way).
@@ -27,7 +27,7 @@ struct TargetDesc {
     // The host's own terrain: a flat ground at world height 0 under the grass, drawn before
     // grass like an engine's scene. Off for tests that count sky pixels.
     bool ground = false;
-    float ground_color[3] = {0.045f, 0.036f, 0.018f};  // linear albedo: dark soil
+    float ground_color[3] = {0.045f, 0.036f, 0.018f}; // linear albedo: dark soil
     // The host's depth convention. reversed_z: depth 1 is near: the projection maps the near
     // plane to 1, the host clears depth to 0 and tests GREATER (give grass GRASS_DEPTH_GREATER).
     bool reversed_z = false;
@@ -49,13 +49,13 @@ float linear_to_srgb(float linear);
 // the origin at the top-left of the image, x1/y1 exclusive.
 struct Occluder {
     int32_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-    float distance = 1.0f;                          // metres along the view axis
-    float color[3] = {0.8f, 0.1f, 0.1f};            // linear RGB
+    float distance = 1.0f;               // metres along the view axis
+    float color[3] = {0.8f, 0.1f, 0.1f}; // linear RGB
 };
 
 struct Image {
     uint32_t width = 0, height = 0;
-    std::vector<uint8_t> rgba;                      // sRGB-encoded RGBA8, top row first
+    std::vector<uint8_t> rgba; // sRGB-encoded RGBA8, top row first
     // Float targets only (TargetDesc::float_color): the linear RGBA floats as stored, top row
     // first; `rgba` then holds them clamped to 0..1 and sRGB-encoded (NaN as 0), so the
     // 8-bit helpers and PNG output work on either target.

@@ -1,5 +1,5 @@
-#include "headless_host.hpp"
 #include "ground.hpp"
+#include "headless_host.hpp"
 #include "host_factories.hpp"
 
 #include <cmath>
@@ -50,8 +50,8 @@ grass_view_desc make_view(const Host& host, const double eye[3], const double ta
     }
     m[15] = 1.0f;
     const TargetDesc& t = host.target();
-    host.projection(fovy_degrees * 3.14159265358979f / 180.0f, static_cast<float>(t.width) / static_cast<float>(t.height),
-                    near_m, far_m, v.projection);
+    host.projection(fovy_degrees * 3.14159265358979f / 180.0f,
+                    static_cast<float>(t.width) / static_cast<float>(t.height), near_m, far_m, v.projection);
     v.viewport[0] = 0;
     v.viewport[1] = 0;
     v.viewport[2] = static_cast<int32_t>(t.width);
@@ -81,7 +81,8 @@ GroundUniforms make_ground_uniforms(const grass_view_desc& view, const TargetDes
     for (int col = 0; col < 4; ++col) {
         for (int row = 0; row < 4; ++row) {
             double s = 0.0;
-            for (int k = 0; k < 3; ++k) s += double(view.projection[4 * k + row]) * (col < 3 ? view.view[4 * col + k] : 0.0);
+            for (int k = 0; k < 3; ++k)
+                s += double(view.projection[4 * k + row]) * (col < 3 ? view.view[4 * col + k] : 0.0);
             if (col == 3) s = view.projection[12 + row];
             g.view_projection[4 * col + row] = static_cast<float>(s);
         }

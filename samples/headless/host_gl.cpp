@@ -32,52 +32,52 @@ namespace grass_host {
 
 namespace {
 
-#define GRASS_HOST_GL_FUNCTIONS(X)                                                  \
-    X(PFNGLGETERRORPROC, GetError)                                                  \
-    X(PFNGLGETSTRINGPROC, GetString)                                                \
-    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                            \
-    X(PFNGLENABLEPROC, Enable)                                                      \
-    X(PFNGLDISABLEPROC, Disable)                                                    \
-    X(PFNGLVIEWPORTPROC, Viewport)                                                  \
-    X(PFNGLSCISSORPROC, Scissor)                                                    \
-    X(PFNGLDEPTHMASKPROC, DepthMask)                                                \
-    X(PFNGLCOLORMASKPROC, ColorMask)                                                \
-    X(PFNGLPIXELSTOREIPROC, PixelStorei)                                            \
-    X(PFNGLCREATERENDERBUFFERSPROC, CreateRenderbuffers)                            \
-    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                            \
+#define GRASS_HOST_GL_FUNCTIONS(X)                                                       \
+    X(PFNGLGETERRORPROC, GetError)                                                       \
+    X(PFNGLGETSTRINGPROC, GetString)                                                     \
+    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                 \
+    X(PFNGLENABLEPROC, Enable)                                                           \
+    X(PFNGLDISABLEPROC, Disable)                                                         \
+    X(PFNGLVIEWPORTPROC, Viewport)                                                       \
+    X(PFNGLSCISSORPROC, Scissor)                                                         \
+    X(PFNGLDEPTHMASKPROC, DepthMask)                                                     \
+    X(PFNGLCOLORMASKPROC, ColorMask)                                                     \
+    X(PFNGLPIXELSTOREIPROC, PixelStorei)                                                 \
+    X(PFNGLCREATERENDERBUFFERSPROC, CreateRenderbuffers)                                 \
+    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                                 \
     X(PFNGLNAMEDRENDERBUFFERSTORAGEMULTISAMPLEPROC, NamedRenderbufferStorageMultisample) \
-    X(PFNGLCREATEFRAMEBUFFERSPROC, CreateFramebuffers)                              \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                              \
-    X(PFNGLNAMEDFRAMEBUFFERRENDERBUFFERPROC, NamedFramebufferRenderbuffer)          \
-    X(PFNGLCHECKNAMEDFRAMEBUFFERSTATUSPROC, CheckNamedFramebufferStatus)            \
-    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                    \
-    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                                        \
-    X(PFNGLBLITNAMEDFRAMEBUFFERPROC, BlitNamedFramebuffer)                          \
-    X(PFNGLREADPIXELSPROC, ReadPixels)                                              \
-    X(PFNGLDEBUGMESSAGECALLBACKPROC, DebugMessageCallback)                          \
-    X(PFNGLDEBUGMESSAGECONTROLPROC, DebugMessageControl)                            \
-    X(PFNGLCREATESHADERPROC, CreateShader)                                          \
-    X(PFNGLSHADERSOURCEPROC, ShaderSource)                                          \
-    X(PFNGLCOMPILESHADERPROC, CompileShader)                                        \
-    X(PFNGLGETSHADERIVPROC, GetShaderiv)                                            \
-    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                  \
-    X(PFNGLDELETESHADERPROC, DeleteShader)                                          \
-    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                        \
-    X(PFNGLATTACHSHADERPROC, AttachShader)                                          \
-    X(PFNGLLINKPROGRAMPROC, LinkProgram)                                            \
-    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                          \
-    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                \
-    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                        \
-    X(PFNGLUSEPROGRAMPROC, UseProgram)                                              \
-    X(PFNGLCREATEBUFFERSPROC, CreateBuffers)                                        \
-    X(PFNGLNAMEDBUFFERDATAPROC, NamedBufferData)                                    \
-    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                        \
-    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                      \
-    X(PFNGLCREATEVERTEXARRAYSPROC, CreateVertexArrays)                              \
-    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                              \
-    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                    \
-    X(PFNGLDRAWARRAYSPROC, DrawArrays)                                              \
-    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                \
+    X(PFNGLCREATEFRAMEBUFFERSPROC, CreateFramebuffers)                                   \
+    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                                   \
+    X(PFNGLNAMEDFRAMEBUFFERRENDERBUFFERPROC, NamedFramebufferRenderbuffer)               \
+    X(PFNGLCHECKNAMEDFRAMEBUFFERSTATUSPROC, CheckNamedFramebufferStatus)                 \
+    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                         \
+    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                                             \
+    X(PFNGLBLITNAMEDFRAMEBUFFERPROC, BlitNamedFramebuffer)                               \
+    X(PFNGLREADPIXELSPROC, ReadPixels)                                                   \
+    X(PFNGLDEBUGMESSAGECALLBACKPROC, DebugMessageCallback)                               \
+    X(PFNGLDEBUGMESSAGECONTROLPROC, DebugMessageControl)                                 \
+    X(PFNGLCREATESHADERPROC, CreateShader)                                               \
+    X(PFNGLSHADERSOURCEPROC, ShaderSource)                                               \
+    X(PFNGLCOMPILESHADERPROC, CompileShader)                                             \
+    X(PFNGLGETSHADERIVPROC, GetShaderiv)                                                 \
+    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                       \
+    X(PFNGLDELETESHADERPROC, DeleteShader)                                               \
+    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                             \
+    X(PFNGLATTACHSHADERPROC, AttachShader)                                               \
+    X(PFNGLLINKPROGRAMPROC, LinkProgram)                                                 \
+    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                               \
+    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                     \
+    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                             \
+    X(PFNGLUSEPROGRAMPROC, UseProgram)                                                   \
+    X(PFNGLCREATEBUFFERSPROC, CreateBuffers)                                             \
+    X(PFNGLNAMEDBUFFERDATAPROC, NamedBufferData)                                         \
+    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                             \
+    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                           \
+    X(PFNGLCREATEVERTEXARRAYSPROC, CreateVertexArrays)                                   \
+    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                                   \
+    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                         \
+    X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                   \
+    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                     \
     X(PFNGLCLIPCONTROLPROC, ClipControl)
 
 struct HostGl {
@@ -145,7 +145,7 @@ private:
     GLuint ground_program_ = 0, ground_buffer_ = 0, ground_vao_ = 0;
     uint32_t count_gl_errors(const char* where);
     static void APIENTRY debug_callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
-                                         const GLchar* message, const void* user_param);
+                                        const GLchar* message, const void* user_param);
 
     Path path_ = Path::none;
     EGLDisplay egl_display_ = EGL_NO_DISPLAY;
@@ -250,9 +250,15 @@ bool GlHost::init_egl(std::string* error) {
         return false;
     }
     EGLint attributes[] = {
-        EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-        EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-        EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE,
+        EGL_CONTEXT_MAJOR_VERSION,
+        4,
+        EGL_CONTEXT_MINOR_VERSION,
+        5,
+        EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+        EGL_CONTEXT_OPENGL_DEBUG,
+        EGL_TRUE,
+        EGL_NONE,
     };
     egl_context_ = eglCreateContext(egl_display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (egl_context_ == EGL_NO_CONTEXT) {
@@ -282,16 +288,28 @@ bool GlHost::init_osmesa(std::string* error) {
     auto create = reinterpret_cast<OsMesaCreateContextAttribsFn>(dlsym(osmesa_library_, "OSMesaCreateContextAttribs"));
     osmesa_make_current_ = reinterpret_cast<OsMesaMakeCurrentFn>(dlsym(osmesa_library_, "OSMesaMakeCurrent"));
     osmesa_destroy_context_ = reinterpret_cast<OsMesaDestroyContextFn>(dlsym(osmesa_library_, "OSMesaDestroyContext"));
-    osmesa_get_proc_address_ =
-        reinterpret_cast<OsMesaGetProcAddressFn>(dlsym(osmesa_library_, "OSMesaGetProcAddress"));
+    osmesa_get_proc_address_ = reinterpret_cast<OsMesaGetProcAddressFn>(dlsym(osmesa_library_, "OSMesaGetProcAddress"));
     if (!create || !osmesa_make_current_ || !osmesa_destroy_context_ || !osmesa_get_proc_address_) {
         *error = "libOSMesa.so.8 lacks OSMesaCreateContextAttribs, OSMesaMakeCurrent, OSMesaDestroyContext or "
                  "OSMesaGetProcAddress";
         return false;
     }
     const int attributes[] = {
-        kOsMesaFormat, kOsMesaRgba, kOsMesaDepthBits, 0, kOsMesaStencilBits, 0, kOsMesaAccumBits, 0,
-        kOsMesaProfile, kOsMesaCoreProfile, kOsMesaContextMajorVersion, 4, kOsMesaContextMinorVersion, 5, 0,
+        kOsMesaFormat,
+        kOsMesaRgba,
+        kOsMesaDepthBits,
+        0,
+        kOsMesaStencilBits,
+        0,
+        kOsMesaAccumBits,
+        0,
+        kOsMesaProfile,
+        kOsMesaCoreProfile,
+        kOsMesaContextMajorVersion,
+        4,
+        kOsMesaContextMinorVersion,
+        5,
+        0,
     };
     osmesa_context_ = create(attributes, nullptr);
     if (!osmesa_context_) {
@@ -321,11 +339,11 @@ grass_gl_proc GlHost::load_proc(void* user_data, const char* name) {
 }
 
 bool GlHost::load_functions(std::string* error) {
-#define GRASS_HOST_GL_LOAD(type, name)                                              \
-    gl_.name = reinterpret_cast<type>(gl_proc_address("gl" #name));                    \
-    if (!gl_.name) {                                                                \
-        *error = "the GL loader has no gl" #name;                                   \
-        return false;                                                               \
+#define GRASS_HOST_GL_LOAD(type, name)                              \
+    gl_.name = reinterpret_cast<type>(gl_proc_address("gl" #name)); \
+    if (!gl_.name) {                                                \
+        *error = "the GL loader has no gl" #name;                   \
+        return false;                                               \
     }
     GRASS_HOST_GL_FUNCTIONS(GRASS_HOST_GL_LOAD)
 #undef GRASS_HOST_GL_LOAD
@@ -602,7 +620,7 @@ uint32_t GlHost::count_gl_errors(const char* where) {
 }
 
 void APIENTRY GlHost::debug_callback(GLenum, GLenum type, GLuint id, GLenum, GLsizei length, const GLchar* message,
-                                       const void* user_param) {
+                                     const void* user_param) {
     if (type != GL_DEBUG_TYPE_ERROR) return;
     auto* host = static_cast<GlHost*>(const_cast<void*>(user_param));
     ++host->debug_errors_;

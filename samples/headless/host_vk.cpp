@@ -30,7 +30,7 @@ namespace grass_host {
 
 namespace {
 
-constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB; // linear shader output is sRGB-encoded
+constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB;            // linear shader output is sRGB-encoded
 constexpr VkFormat kFloatColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT; // TargetDesc::float_color
 constexpr VkFormat kUnormColorFormat = VK_FORMAT_R8G8B8A8_UNORM;      // TargetDesc::unorm_color
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
@@ -52,7 +52,7 @@ struct Attachment {
 class VkHost final : public Host {
 public:
     explicit VkHost(const TargetDesc& target)
-        : Host(target), color_format_(target.float_color  ? kFloatColorFormat
+        : Host(target), color_format_(target.float_color   ? kFloatColorFormat
                                       : target.unorm_color ? kUnormColorFormat
                                                            : kColorFormat),
           texel_bytes_(target.float_color ? 16u : 4u) {}
@@ -107,13 +107,13 @@ private:
     PFN_vkCmdBeginRendering begin_rendering_ = nullptr;
     PFN_vkCmdEndRendering end_rendering_ = nullptr;
 
-    const VkFormat color_format_;  // kColorFormat, or kFloatColorFormat for float targets
-    const uint32_t texel_bytes_;   // of color_format_
+    const VkFormat color_format_; // kColorFormat, or kFloatColorFormat for float targets
+    const uint32_t texel_bytes_;  // of color_format_
     VkSampleCountFlagBits samples_ = VK_SAMPLE_COUNT_1_BIT;
-    Attachment color_;   // multisampled when samples_ > 1
+    Attachment color_; // multisampled when samples_ > 1
     Attachment depth_;
-    Attachment resolve_; // only when samples_ > 1
-    VkRenderPass render_pass_ = VK_NULL_HANDLE;   // null with dynamic rendering
+    Attachment resolve_;                        // only when samples_ > 1
+    VkRenderPass render_pass_ = VK_NULL_HANDLE; // null with dynamic rendering
     VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
     VkBuffer readback_ = VK_NULL_HANDLE;
     VkDeviceMemory readback_memory_ = VK_NULL_HANDLE;
@@ -140,8 +140,8 @@ private:
 };
 
 VKAPI_ATTR VkBool32 VKAPI_CALL VkHost::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                  VkDebugUtilsMessageTypeFlagsEXT, const VkDebugUtilsMessengerCallbackDataEXT* data,
-                                                  void* user) {
+                                                  VkDebugUtilsMessageTypeFlagsEXT,
+                                                  const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
     auto* host = static_cast<VkHost*>(user);
     host->messages_ += 1;
     host->log_ += severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "[error] " : "[warning] ";
@@ -202,7 +202,8 @@ bool VkHost::create_instance(std::string* error) {
     VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     messenger.messageSeverity =
         VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                            VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                             VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     messenger.pfnUserCallback = &VkHost::on_message;
     messenger.pUserData = this;
@@ -267,8 +268,8 @@ bool VkHost::pick_device(std::string* error) {
         return false;
     }
 
-    const VkSampleCountFlags supported = properties_.limits.framebufferColorSampleCounts &
-                                         properties_.limits.framebufferDepthSampleCounts;
+    const VkSampleCountFlags supported =
+        properties_.limits.framebufferColorSampleCounts & properties_.limits.framebufferDepthSampleCounts;
     if (!(supported & samples_)) {
         *error = "the Vulkan device \"" + device_name_ + "\" cannot render with " + std::to_string(target_.samples) +
                  " samples";
@@ -362,8 +363,8 @@ bool VkHost::create_device(std::string* error) {
     return true;
 }
 
-bool VkHost::allocate_memory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags,
-                             VkDeviceMemory* out, std::string* error) {
+bool VkHost::allocate_memory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags, VkDeviceMemory* out,
+                             std::string* error) {
     for (uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {
         if ((requirements.memoryTypeBits & (1u << i)) &&
             (memory_properties_.memoryTypes[i].propertyFlags & flags) == flags) {
@@ -512,7 +513,8 @@ bool VkHost::create_render_pass(std::string* error) {
     dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                                    VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
     dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
-                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
     dependencies[0].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
     dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
                                     VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
@@ -830,7 +832,8 @@ void VkHost::begin_pass(VkCommandBuffer cmd) {
         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
     barriers[1].subresourceRange.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     barriers[2].image = resolve_.image;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+    vkCmdPipelineBarrier(cmd,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
                              VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
                          VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
                              VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,

@@ -62,24 +62,47 @@ struct BenchScene {
 // Hills: 80 m x 100 m of the 200 m x 200 m hills (160 x 200 cells of 0.5 m) around the
 // valley camera of docs/design-maps.md, with the host's ground drawn (see main).
 const BenchScene kScenes[] = {
-    {"football", "football.json", 150, 0, 80, 240, 32, 0.05f, 0.08f,
+    {"football",
+     "football.json",
+     150,
+     0,
+     80,
+     240,
+     32,
+     0.05f,
+     0.08f,
      {{"high", {47.5, 60, -40}, {47.5, 0, 80}},
       {"player", {47.5, 1.7, 6}, {47.5, 0, 60}},
       {"ant", {47.3, 0.05, 6}, {47.3, 0.04, 20}},
       {"grazing", {47.3, 3, -2}, {47.3, 2.9, 400}}}},
-    {"park", "park.json", 0, 0, 160, 160, 24, 0.05f, 0.08f,
+    {"park",
+     "park.json",
+     0,
+     0,
+     160,
+     160,
+     24,
+     0.05f,
+     0.08f,
      {{"high", {20, 30, -15}, {20, 0, 22}},
       {"player", {20, 1.7, 2}, {20, 0, 30}},
       {"ant", {30, 0.05, 5}, {30, 0.04, 19}},
       {"grazing", {20, 3, -2}, {20, 2.9, 400}}}},
-    {"hills", "hills.json", 120, 0, 160, 200, 24, 0.0f, 0.0f,
+    {"hills",
+     "hills.json",
+     120,
+     0,
+     160,
+     200,
+     24,
+     0.0f,
+     0.0f,
      {{"high", {100, 40, -30}, {100, 0, 60}},
       {"player", {100, 1.7, 5}, {100, 4, 60}},
       {"ant", {100, 0.05, 5}, {100, 0.04, 19}},
       {"grazing", {100, 3, -2}, {100, 2.9, 400}}}},
 };
 constexpr int kSceneCount = int(sizeof(kScenes) / sizeof(kScenes[0]));
-
 
 // ---- Terrain heights for cameras over a height map ---------------------------------------
 
@@ -89,7 +112,8 @@ double terrain_height(const grass_sample::Scene& s, uint32_t full_cells_x, uint3
     if (m.pixels.empty()) return 0.0;
     const double cs = s.field.cell_size;
     // The scene's full field starts at its own origin (base_transform before the bench moves it).
-    const double u = (x - s.field.base_transform[12]) / (cs * full_cells_x), v = (z - s.field.base_transform[14]) / (cs * full_cells_z);
+    const double u = (x - s.field.base_transform[12]) / (cs * full_cells_x),
+                 v = (z - s.field.base_transform[14]) / (cs * full_cells_z);
     auto texel = [&](int64_t tx, int64_t tz) {
         tx = std::clamp<int64_t>(tx, 0, m.width - 1);
         tz = std::clamp<int64_t>(tz, 0, m.height - 1);
@@ -119,9 +143,11 @@ bool lod_setup(grass_context* ctx, const grass_quality_desc& q, const grass_samp
     tiers->assign(GRASS_MAX_TIERS, grass_tier_desc{});
     tests->assign(GRASS_MAX_LOD_TESTS, grass_lod_test{});
     uint32_t tc = 0, lc = 0;
-    const grass_result r = grass_apply_quality(ctx, &q, s.field.cell_size, patch, tiers->data(), &tc, tests->data(), &lc);
+    const grass_result r =
+        grass_apply_quality(ctx, &q, s.field.cell_size, patch, tiers->data(), &tc, tests->data(), &lc);
     if (r != GRASS_SUCCESS) {
-        *error = std::string("grass_apply_quality failed: ") + grass_result_string(r) + " (" + grass_get_last_error(ctx) + ")";
+        *error = std::string("grass_apply_quality failed: ") + grass_result_string(r) + " (" +
+                 grass_get_last_error(ctx) + ")";
         return false;
     }
     tiers->resize(tc);
@@ -247,8 +273,8 @@ struct Reference {
 // warm-up and opt.frames timed frames each). The reference preset's frames go into *ref;
 // every other frame is measured against them. Appends a row per camera; a failed frame is
 // reported and sets *status to 1; false (with *error) when the run cannot go on.
-bool render_variant(const Options& opt, grass_backend backend, const PreparedScene& ps, const Variant& v, Reference* ref,
-                    std::chrono::steady_clock::time_point t_start, std::vector<Row>* rows, int* status,
+bool render_variant(const Options& opt, grass_backend backend, const PreparedScene& ps, const Variant& v,
+                    Reference* ref, std::chrono::steady_clock::time_point t_start, std::vector<Row>* rows, int* status,
                     std::string* error) {
     const char* be = grass_sample::backend_name(backend);
     const BenchScene& bs = *ps.bench;
@@ -302,13 +328,13 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
     if (r != GRASS_SUCCESS) {
         const std::string e = grass_get_last_error(ctx);
         grass_destroy_context(ctx);
-        *error = std::string(bs.name) + ", " + v.name + ": the field was refused: " + call + " failed: " +
-                 grass_result_string(r) + " (" + e + ")";
+        *error = std::string(bs.name) + ", " + v.name + ": the field was refused: " + call +
+                 " failed: " + grass_result_string(r) + " (" + e + ")";
         return false;
     }
     for (const int ci : opt.cameras) {
-        grass_view_desc view = grass_host::make_view(*host, ps.cams[ci][0], ps.cams[ci][1], scene.fov_degrees, 0.05f,
-                                                     scene.far_m);
+        grass_view_desc view =
+            grass_host::make_view(*host, ps.cams[ci][0], ps.cams[ci][1], scene.fov_degrees, 0.05f, scene.far_m);
         grass_sample::apply_light(scene, &view);
         Row row;
         row.scene = bs.name;
@@ -331,7 +357,8 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
             const auto f0 = std::chrono::steady_clock::now();
             r = host->render(ctx, view, nullptr, dst ? dst : &scratch, error);
             const double ms = seconds_since(f0) * 1e3;
-            if (r == GRASS_SUCCESS) grass_sample::check(grass_get_frame_stats(ctx, &stats), "grass_get_frame_stats", ctx);
+            if (r == GRASS_SUCCESS)
+                grass_sample::check(grass_get_frame_stats(ctx, &stats), "grass_get_frame_stats", ctx);
             if (f == 0) continue; // the warm-up: uploads, first use of the pipelines
             wall.push_back(ms);
             plan.push_back(stats.plan_ms);
@@ -343,8 +370,9 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
             }
         }
         if (r != GRASS_SUCCESS) {
-            std::fprintf(stderr, "grass-measure bench: %s %s %s %s: rendering failed: %s (%s) %s\n", bs.name, row.camera.c_str(), be,
-                         row.preset.c_str(), grass_result_string(r), grass_get_last_error(ctx), error->c_str());
+            std::fprintf(stderr, "grass-measure bench: %s %s %s %s: rendering failed: %s (%s) %s\n", bs.name,
+                         row.camera.c_str(), be, row.preset.c_str(), grass_result_string(r), grass_get_last_error(ctx),
+                         error->c_str());
             *status = 1;
             r = GRASS_SUCCESS;
             continue;
@@ -372,7 +400,8 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
             grass_host::Image diff;
             diff.width = image.width;
             diff.height = image.height;
-            diff.rgba = grass_bench::difference_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height, 4.0);
+            diff.rgba =
+                grass_bench::difference_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height, 4.0);
             if (!grass_host::write_png(stem + "-error.png", diff, error)) {
                 grass_destroy_context(ctx);
                 return false;
@@ -381,8 +410,8 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
         std::fprintf(stderr,
                      "[%6.0f s] %-8s %-7s %s %-9s frame %8.1f ms (x%.3f) plan %6.2f ms  gpu %s  SSIM %.4f  PSNR %s  "
                      "%llu triangles\n",
-                     seconds_since(t_start), bs.name, row.camera.c_str(), be, row.preset.c_str(), row.frame_ms, row.ratio,
-                     row.plan_ms, gpu_text(row, -1).c_str(), row.ssim, psnr_text(row.psnr).c_str(),
+                     seconds_since(t_start), bs.name, row.camera.c_str(), be, row.preset.c_str(), row.frame_ms,
+                     row.ratio, row.plan_ms, gpu_text(row, -1).c_str(), row.ssim, psnr_text(row.psnr).c_str(),
                      static_cast<unsigned long long>(row.triangles));
         rows->push_back(row);
     }
@@ -411,18 +440,36 @@ std::vector<Variant> sweep_variants() {
         void (*set)(grass_quality_desc*, double);
     };
     const Knob knobs[] = {
-        {"distance_scale", {0.5, 2.0}, base.distance_scale, [](grass_quality_desc* q, double x) { q->distance_scale = float(x); }},
-        {"transition_scale", {0.0, 0.5, 1.2}, base.transition_scale,
+        {"distance_scale",
+         {0.5, 2.0},
+         base.distance_scale,
+         [](grass_quality_desc* q, double x) { q->distance_scale = float(x); }},
+        {"transition_scale",
+         {0.0, 0.5, 1.2},
+         base.transition_scale,
          [](grass_quality_desc* q, double x) { q->transition_scale = float(x); }},
-        {"slice_scale", {0.5, 2.0}, base.slice_scale, [](grass_quality_desc* q, double x) { q->slice_scale = float(x); }},
-        {"macro_cell_scale", {0.5, 2.0}, base.macro_cell_scale,
+        {"slice_scale",
+         {0.5, 2.0},
+         base.slice_scale,
+         [](grass_quality_desc* q, double x) { q->slice_scale = float(x); }},
+        {"macro_cell_scale",
+         {0.5, 2.0},
+         base.macro_cell_scale,
          [](grass_quality_desc* q, double x) { q->macro_cell_scale = float(x); }},
-        {"blade_subdivisions", {2, 8}, double(base.blade_subdivisions),
+        {"blade_subdivisions",
+         {2, 8},
+         double(base.blade_subdivisions),
          [](grass_quality_desc* q, double x) { q->blade_subdivisions = uint32_t(x); }},
-        {"blade_fraction", {0.5, 0.75}, base.blade_fraction, [](grass_quality_desc* q, double x) { q->blade_fraction = float(x); }},
+        {"blade_fraction",
+         {0.5, 0.75},
+         base.blade_fraction,
+         [](grass_quality_desc* q, double x) { q->blade_fraction = float(x); }},
         // Not 2: the headless hosts are meant for 1 or 4 samples (headless_host.hpp), and on
         // llvmpipe a 2-sample target renders the very image of DEFAULT's 4.
-        {"msaa_samples", {1}, double(base.msaa_samples), [](grass_quality_desc* q, double x) { q->msaa_samples = uint32_t(x); }},
+        {"msaa_samples",
+         {1},
+         double(base.msaa_samples),
+         [](grass_quality_desc* q, double x) { q->msaa_samples = uint32_t(x); }},
     };
     for (const Knob& k : knobs) {
         for (const double x : k.values) {
@@ -482,7 +529,8 @@ int run(Options opt, bool quick) {
     if (opt.cameras.empty()) opt.cameras = {0, 1, 2, 3};
     if (opt.cache.empty()) opt.cache = opt.out + "/cache";
     const std::string docs = opt.docs.empty() ? opt.out : opt.docs;
-    if (!grass_sample::make_dirs(opt.out + "/images") || !grass_sample::make_dirs(opt.cache) || !grass_sample::make_dirs(docs)) {
+    if (!grass_sample::make_dirs(opt.out + "/images") || !grass_sample::make_dirs(opt.cache) ||
+        !grass_sample::make_dirs(docs)) {
         throw grass_sample::Failure("cannot create " + opt.out + ", " + opt.cache + " or " + docs);
     }
 
@@ -523,11 +571,12 @@ int run(Options opt, bool quick) {
         std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) { return rank(a) < rank(b); });
         const double total_s = seconds_since(t_start);
         const std::string md = sweep_markdown(rows, opt, total_s);
-        if (!grass_sample::write_text(docs + "/sweep.csv", sweep_csv(rows, opt)) || !grass_sample::write_text(docs + "/sweep.md", md)) {
+        if (!grass_sample::write_text(docs + "/sweep.csv", sweep_csv(rows, opt)) ||
+            !grass_sample::write_text(docs + "/sweep.md", md)) {
             throw grass_sample::Failure("cannot write into " + docs);
         }
-        std::printf("%s\ngrass-bench: %zu frames in %.0f s; wrote %s/sweep.csv, sweep.md; images in %s/images\n", md.c_str(),
-                    rows.size(), total_s, docs.c_str(), opt.out.c_str());
+        std::printf("%s\ngrass-bench: %zu frames in %.0f s; wrote %s/sweep.csv, sweep.md; images in %s/images\n",
+                    md.c_str(), rows.size(), total_s, docs.c_str(), opt.out.c_str());
         return status;
     }
     // Rows in the order scene, camera, backend, preset.
@@ -537,12 +586,14 @@ int run(Options opt, bool quick) {
     std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) { return rank(a) < rank(b); });
     const double total_s = seconds_since(t_start);
     const std::string md = markdown(rows, opt, total_s);
-    if (!grass_sample::write_text(docs + "/bench.csv", csv(rows, opt)) || !grass_sample::write_text(docs + "/bench.md", md) ||
+    if (!grass_sample::write_text(docs + "/bench.csv", csv(rows, opt)) ||
+        !grass_sample::write_text(docs + "/bench.md", md) ||
         !grass_sample::write_text(docs + "/cost-vs-error.svg", svg(rows))) {
         throw grass_sample::Failure("cannot write into " + docs);
     }
-    std::printf("%s\ngrass-bench: %zu frames in %.0f s; wrote %s/bench.csv, bench.md, cost-vs-error.svg; images in %s/images\n",
-                md.c_str(), rows.size(), total_s, docs.c_str(), opt.out.c_str());
+    std::printf(
+        "%s\ngrass-bench: %zu frames in %.0f s; wrote %s/bench.csv, bench.md, cost-vs-error.svg; images in %s/images\n",
+        md.c_str(), rows.size(), total_s, docs.c_str(), opt.out.c_str());
     return status;
 }
 
@@ -560,8 +611,10 @@ Subcommand add_bench(CLI::App& measure) {
            "--backend",
            [o](const std::string& b) {
                grass_backend one = GRASS_BACKEND_GL;
-               if (grass_sample::parse_backend(b, &one)) o->backends = {one};
-               else o->backends = {GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN};
+               if (grass_sample::parse_backend(b, &one))
+                   o->backends = {one};
+               else
+                   o->backends = {GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN};
            },
            "backends: gl, vk or both")
         ->check(CLI::Validator(

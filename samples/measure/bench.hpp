@@ -36,15 +36,15 @@ extern const char* const kLevelNames[GRASS_QUALITY_LEVEL_COUNT];
 
 struct Options {
     std::vector<grass_backend> backends = {GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN};
-    std::vector<int> scenes;   // indices into kScenes; empty = all
-    std::vector<int> cameras;  // 0..3; empty = all
+    std::vector<int> scenes;  // indices into kScenes; empty = all
+    std::vector<int> cameras; // 0..3; empty = all
     std::string scene_dir = GRASS_SCENE_DIR;
     std::string out = "grass-bench-out";
-    std::string docs;          // CSV, Markdown and SVG here; empty: into --out
-    std::string cache;         // slice cache; empty: <out>/cache
+    std::string docs;  // CSV, Markdown and SVG here; empty: into --out
+    std::string cache; // slice cache; empty: <out>/cache
     uint32_t width = 320, height = 180;
     int frames = 3;
-    bool sweep = false;        // --sweep: one knob at a time from DEFAULT instead of the presets
+    bool sweep = false; // --sweep: one knob at a time from DEFAULT instead of the presets
 };
 
 struct Row {

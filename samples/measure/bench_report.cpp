@@ -44,8 +44,8 @@ std::string csv(const std::vector<Row>& rows, const Options& o) {
          "plan_ms,gpu_ms,gpu_geometry_ms,gpu_volume_ms,gpu_image_ms,ssim,psnr_db,triangles,geometry_instances,"
          "volume_instances,image_instances,field_create_ms\n";
     for (const Row& r : rows) {
-        s << r.scene << ',' << r.camera << ',' << r.backend << ',' << r.preset << ',' << o.width << ',' << o.height << ','
-          << r.msaa << ',' << r.blades << ',' << r.subdivisions << ',' << fmt("%.2f", r.frame_ms) << ','
+        s << r.scene << ',' << r.camera << ',' << r.backend << ',' << r.preset << ',' << o.width << ',' << o.height
+          << ',' << r.msaa << ',' << r.blades << ',' << r.subdivisions << ',' << fmt("%.2f", r.frame_ms) << ','
           << fmt("%.2f", r.frame_min_ms) << ',' << fmt("%.4f", r.ratio) << ',' << fmt("%.3f", r.plan_ms) << ','
           << gpu_text(r, -1) << ',' << gpu_text(r, 0) << ',' << gpu_text(r, 1) << ',' << gpu_text(r, 2) << ','
           << fmt("%.5f", r.ssim) << ',' << psnr_text(r.psnr) << ',' << r.triangles << ',' << r.instances[0] << ','
@@ -57,10 +57,13 @@ std::string csv(const std::vector<Row>& rows, const Options& o) {
 std::string markdown(const std::vector<Row>& rows, const Options& o, double total_s) {
     std::ostringstream s;
     s << "# grass-bench results\n\n"
-      << "Written by `grass-measure bench` (samples/measure/bench.cpp; docs/quality.md explains it). " << o.width << " x " << o.height
-      << " pixels, each preset on a target with its own MSAA sample count; frame = wall time of a rendered and read-back "
+      << "Written by `grass-measure bench` (samples/measure/bench.cpp; docs/quality.md explains it). " << o.width
+      << " x " << o.height
+      << " pixels, each preset on a target with its own MSAA sample count; frame = wall time of a rendered and "
+         "read-back "
          "frame, median of "
-      << o.frames << " after one warm-up; cost = frame / the reference's frame (same scene, camera, backend); "
+      << o.frames
+      << " after one warm-up; cost = frame / the reference's frame (same scene, camera, backend); "
          "SSIM (luma, Gaussian window 11, sigma 1.5) and PSNR (sRGB RGB) against the reference's image of the same "
          "backend; GPU = grass_get_tier_gpu_ms summed over the tiers (n/a: no timer result). The run took "
       << fmt("%.0f", total_s) << " s.\n\n";
@@ -86,7 +89,8 @@ std::string markdown(const std::vector<Row>& rows, const Options& o, double tota
         }
     }
     s << "\n## Every frame\n\n"
-      << "| scene | camera | backend | preset | MSAA | blades x subdiv | frame (ms) | cost / ref | plan (ms) | GPU (ms) | "
+      << "| scene | camera | backend | preset | MSAA | blades x subdiv | frame (ms) | cost / ref | plan (ms) | GPU "
+         "(ms) | "
          "SSIM | PSNR (dB) | triangles | instances g / v / i |\n"
       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows) {
@@ -123,14 +127,15 @@ std::string svg(const std::vector<Row>& rows) {
     s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" viewBox=\"0 0 " << W
       << ' ' << H << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << "<text x=\"" << L << "\" y=\"22\" font-size=\"15\">grass-bench: frame cost against image error, every scene and camera</text>\n";
+      << "<text x=\"" << L
+      << "\" y=\"22\" font-size=\"15\">grass-bench: frame cost against image error, every scene and camera</text>\n";
     // Axes, grid and ticks.
     s << "<g stroke=\"#ddd\">\n";
     for (double d = xmin; d <= xmax + 1e-9; d += 1.0) {
         for (int m = 2; m < 10 && d < xmax; ++m) {
             const double x = px(std::pow(10.0, d) * m);
-            s << "<line x1=\"" << fmt("%.1f", x) << "\" y1=\"" << T << "\" x2=\"" << fmt("%.1f", x) << "\" y2=\"" << H - B
-              << "\" stroke=\"#f2f2f2\"/>\n";
+            s << "<line x1=\"" << fmt("%.1f", x) << "\" y1=\"" << T << "\" x2=\"" << fmt("%.1f", x) << "\" y2=\""
+              << H - B << "\" stroke=\"#f2f2f2\"/>\n";
         }
         s << "<line x1=\"" << fmt("%.1f", px(std::pow(10.0, d))) << "\" y1=\"" << T << "\" x2=\""
           << fmt("%.1f", px(std::pow(10.0, d))) << "\" y2=\"" << H - B << "\"/>\n";
@@ -139,11 +144,11 @@ std::string svg(const std::vector<Row>& rows) {
         s << "<line x1=\"" << L << "\" y1=\"" << fmt("%.1f", py(ytop * k / 5)) << "\" x2=\"" << W - R << "\" y2=\""
           << fmt("%.1f", py(ytop * k / 5)) << "\"/>\n";
     }
-    s << "</g>\n<g stroke=\"black\"><line x1=\"" << L << "\" y1=\"" << H - B << "\" x2=\"" << W - R << "\" y2=\"" << H - B
-      << "\"/><line x1=\"" << L << "\" y1=\"" << T << "\" x2=\"" << L << "\" y2=\"" << H - B << "\"/></g>\n";
+    s << "</g>\n<g stroke=\"black\"><line x1=\"" << L << "\" y1=\"" << H - B << "\" x2=\"" << W - R << "\" y2=\""
+      << H - B << "\"/><line x1=\"" << L << "\" y1=\"" << T << "\" x2=\"" << L << "\" y2=\"" << H - B << "\"/></g>\n";
     for (double d = xmin; d <= xmax + 1e-9; d += 1.0) {
-        s << "<text x=\"" << fmt("%.1f", px(std::pow(10.0, d))) << "\" y=\"" << H - B + 16 << "\" text-anchor=\"middle\">"
-          << fmt("%g", std::pow(10.0, d)) << "</text>\n";
+        s << "<text x=\"" << fmt("%.1f", px(std::pow(10.0, d))) << "\" y=\"" << H - B + 16
+          << "\" text-anchor=\"middle\">" << fmt("%g", std::pow(10.0, d)) << "</text>\n";
     }
     for (int k = 0; k <= 5; ++k) {
         s << "<text x=\"" << L - 6 << "\" y=\"" << fmt("%.1f", py(ytop * k / 5) + 4) << "\" text-anchor=\"end\">"
@@ -157,8 +162,8 @@ std::string svg(const std::vector<Row>& rows) {
     for (const Row& r : rows) {
         if (!(r.ratio > 0) || !std::isfinite(r.ratio)) continue;
         const double x = px(r.ratio), y = py(1.0 - r.ssim);
-        const std::string title = "<title>" + r.scene + ", " + r.camera + ", " + r.backend + ", " + r.preset + ": cost " +
-                                  fmt("%.3f", r.ratio) + ", SSIM " + fmt("%.4f", r.ssim) + "</title>";
+        const std::string title = "<title>" + r.scene + ", " + r.camera + ", " + r.backend + ", " + r.preset +
+                                  ": cost " + fmt("%.3f", r.ratio) + ", SSIM " + fmt("%.4f", r.ssim) + "</title>";
         const char* c = kLevelColors[r.level];
         if (r.backend == "gl") {
             s << "<circle cx=\"" << fmt("%.1f", x) << "\" cy=\"" << fmt("%.1f", y) << "\" r=\"4\" fill=\"" << c
@@ -172,8 +177,8 @@ std::string svg(const std::vector<Row>& rows) {
     // Legend.
     double ly = T + 10;
     for (int l = 0; l < GRASS_QUALITY_LEVEL_COUNT; ++l, ly += 20) {
-        s << "<circle cx=\"" << W - R + 20 << "\" cy=\"" << ly << "\" r=\"5\" fill=\"" << kLevelColors[l] << "\"/><text x=\""
-          << W - R + 32 << "\" y=\"" << ly + 4 << "\">" << kLevelNames[l] << "</text>\n";
+        s << "<circle cx=\"" << W - R + 20 << "\" cy=\"" << ly << "\" r=\"5\" fill=\"" << kLevelColors[l]
+          << "\"/><text x=\"" << W - R + 32 << "\" y=\"" << ly + 4 << "\">" << kLevelNames[l] << "</text>\n";
     }
     ly += 10;
     s << "<circle cx=\"" << W - R + 20 << "\" cy=\"" << ly << "\" r=\"4\" fill=\"#777\"/><text x=\"" << W - R + 32
@@ -186,7 +191,6 @@ std::string svg(const std::vector<Row>& rows) {
     return s.str();
 }
 
-
 std::string sweep_csv(const std::vector<Row>& rows, const Options& o) {
     std::ostringstream s;
     s << "backend,scene,camera,knob,value,width,height,msaa,blades_per_patch,subdivisions,frame_ms,frame_min_ms,"
@@ -195,11 +199,11 @@ std::string sweep_csv(const std::vector<Row>& rows, const Options& o) {
     for (const Row& r : rows) {
         const Row* b = sweep_baseline(rows, r);
         s << r.backend << ',' << r.scene << ',' << r.camera << ',' << r.knob << ',' << r.value << ',' << o.width << ','
-          << o.height << ',' << r.msaa << ',' << r.blades << ',' << r.subdivisions << ',' << fmt("%.2f", r.frame_ms) << ','
-          << fmt("%.2f", r.frame_min_ms) << ',' << ratio_text(r.frame_ms, b) << ',' << fmt("%.4f", r.ratio) << ','
-          << fmt("%.3f", r.plan_ms) << ',' << gpu_text(r, -1) << ',' << fmt("%.5f", r.ssim) << ',' << psnr_text(r.psnr)
-          << ',' << error_change_text(r, b) << ',' << r.triangles << ',' << r.instances[0] << ',' << r.instances[1] << ','
-          << r.instances[2] << ',' << fmt("%.1f", r.field_ms) << '\n';
+          << o.height << ',' << r.msaa << ',' << r.blades << ',' << r.subdivisions << ',' << fmt("%.2f", r.frame_ms)
+          << ',' << fmt("%.2f", r.frame_min_ms) << ',' << ratio_text(r.frame_ms, b) << ',' << fmt("%.4f", r.ratio)
+          << ',' << fmt("%.3f", r.plan_ms) << ',' << gpu_text(r, -1) << ',' << fmt("%.5f", r.ssim) << ','
+          << psnr_text(r.psnr) << ',' << error_change_text(r, b) << ',' << r.triangles << ',' << r.instances[0] << ','
+          << r.instances[1] << ',' << r.instances[2] << ',' << fmt("%.1f", r.field_ms) << '\n';
     }
     return s.str();
 }
@@ -208,16 +212,19 @@ std::string sweep_markdown(const std::vector<Row>& rows, const Options& o, doubl
     const grass_quality_desc d = grass_quality_preset(GRASS_QUALITY_DEFAULT);
     std::ostringstream s;
     s << "# grass-bench sweep: one knob at a time from DEFAULT\n\n"
-      << "Written by `grass-measure bench --sweep` (samples/measure/bench.cpp; docs/quality.md explains the knobs and the "
+      << "Written by `grass-measure bench --sweep` (samples/measure/bench.cpp; docs/quality.md explains the knobs and "
+         "the "
          "measures). Each row is DEFAULT with one knob of `grass_quality_desc` changed (the others at DEFAULT's: "
          "distance_scale "
       << fmt("%g", d.distance_scale) << ", transition_scale " << fmt("%g", d.transition_scale) << ", slice_scale "
       << fmt("%g", d.slice_scale) << ", macro_cell_scale " << fmt("%g", d.macro_cell_scale) << ", blade_subdivisions "
-      << d.blade_subdivisions << ", blade_fraction " << fmt("%g", d.blade_fraction) << ", msaa_samples " << d.msaa_samples
-      << "); the rows `preset` are the REFERENCE and DEFAULT presets themselves. " << o.width << " x " << o.height
+      << d.blade_subdivisions << ", blade_fraction " << fmt("%g", d.blade_fraction) << ", msaa_samples "
+      << d.msaa_samples << "); the rows `preset` are the REFERENCE and DEFAULT presets themselves. " << o.width << " x "
+      << o.height
       << " pixels, each row on a target with its own MSAA sample count; frame = wall time of a rendered and read-back "
          "frame, median of "
-      << o.frames << " after one warm-up; cost = frame / DEFAULT's or the reference's frame (same backend, scene, "
+      << o.frames
+      << " after one warm-up; cost = frame / DEFAULT's or the reference's frame (same backend, scene, "
          "camera); SSIM (luma) and PSNR (sRGB RGB) against the reference's image of the same frame; change of 1 - SSIM "
          "= (1 - SSIM) - DEFAULT's (positive: further from the reference). The run took "
       << fmt("%.0f", total_s) << " s.\n\n";
@@ -246,21 +253,22 @@ std::string sweep_markdown(const std::vector<Row>& rows, const Options& o, doubl
                 ssim.push_back(x.ssim);
             }
             s << "| " << r.backend << " | " << r.knob << " | " << r.value << " | "
-              << (to_default.empty() ? "n/a" : fmt("%.3f", median(to_default))) << " | " << fmt("%.3f", median(to_reference))
-              << " | " << fmt("%.4f", median(ssim)) << " | " << (change.empty() ? "n/a" : fmt("%+.4f", median(change)))
-              << " |\n";
+              << (to_default.empty() ? "n/a" : fmt("%.3f", median(to_default))) << " | "
+              << fmt("%.3f", median(to_reference)) << " | " << fmt("%.4f", median(ssim)) << " | "
+              << (change.empty() ? "n/a" : fmt("%+.4f", median(change))) << " |\n";
         }
         s << "\n## Every frame\n\n";
     }
-    s << "| backend | scene | camera | knob | value | frame (ms) | cost / default | cost / reference | SSIM | PSNR (dB) | "
+    s << "| backend | scene | camera | knob | value | frame (ms) | cost / default | cost / reference | SSIM | PSNR "
+         "(dB) | "
          "change of 1 - SSIM vs default | triangles |\n"
       << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows) {
         const Row* b = sweep_baseline(rows, r);
         s << "| " << r.backend << " | " << r.scene << " | " << r.camera << " | " << r.knob << " | " << r.value << " | "
           << fmt("%.1f", r.frame_ms) << " | " << ratio_text(r.frame_ms, b) << " | " << fmt("%.3f", r.ratio) << " | "
-          << fmt("%.4f", r.ssim) << " | " << psnr_text(r.psnr) << " | " << error_change_text(r, b) << " | " << r.triangles
-          << " |\n";
+          << fmt("%.4f", r.ssim) << " | " << psnr_text(r.psnr) << " | " << error_change_text(r, b) << " | "
+          << r.triangles << " |\n";
     }
     return s.str();
 }

@@ -11,8 +11,8 @@
 namespace grass_bench {
 
 struct SsimParams {
-    int window = 11;     // Gaussian window side (odd)
-    double sigma = 1.5;  // its standard deviation, pixels
+    int window = 11;    // Gaussian window side (odd)
+    double sigma = 1.5; // its standard deviation, pixels
     double k1 = 0.01, k2 = 0.03;
     double range = 255.0; // L: the dynamic range of the values
 };

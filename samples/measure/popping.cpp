@@ -45,7 +45,7 @@ namespace grass_measure {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kWalkSpeed = 1.4;  // m/s
+constexpr double kWalkSpeed = 1.4; // m/s
 constexpr double kFps = 30.0;
 constexpr float kNear = 0.05f;
 
@@ -55,8 +55,8 @@ struct Options {
     std::string cache_dir;
     int frames = 30;
     uint32_t width = 320, height = 180, samples = 4;
-    double canopy = 0.2;       // m: the height where a view ray meets the lawn (see docs/popping.md)
-    uint64_t cell_budget = 150;  // reference geometry cells per zone window
+    double canopy = 0.2;                // m: the height where a view ray meets the lawn (see docs/popping.md)
+    uint64_t cell_budget = 150;         // reference geometry cells per zone window
     uint64_t max_reference_cells = 600; // a zone whose narrowest window needs more is not measured
     bool agreement = true;
 };
@@ -459,12 +459,12 @@ void narrow_windows(const Options& o, const grass_sample::Scene& s, std::vector<
 // Renders the dolly in the zone's window with the lod setup and with the reference, and
 // measures the zone's pixels; a zone whose reference needs more than --max-reference-cells
 // is reported on stderr and left unmeasured. *device: the host's device name.
-void measure_zone(const Options& o, const grass_sample::Scene& s, const LodSetup& setup, Zone* z,
-                  std::string* device) {
+void measure_zone(const Options& o, const grass_sample::Scene& s, const LodSetup& setup, Zone* z, std::string* device) {
     std::string error;
     if (z->reference_cells > o.max_reference_cells) {
-        std::fprintf(stderr, "grass-measure popping: zone %s/%s not measured: its reference needs %llu cells (raise "
-                             "--max-reference-cells)\n",
+        std::fprintf(stderr,
+                     "grass-measure popping: zone %s/%s not measured: its reference needs %llu cells (raise "
+                     "--max-reference-cells)\n",
                      tier_name(setup.tiers[z->tier_a]).c_str(), tier_name(setup.tiers[z->tier_b]).c_str(),
                      static_cast<unsigned long long>(z->reference_cells));
         return;
@@ -515,13 +515,16 @@ void measure_zone(const Options& o, const grass_sample::Scene& s, const LodSetup
         prev_lod.swap(cur_lod);
         prev_ref.swap(cur_ref);
     }
-    if (host->validation_messages() != 0) throw grass_sample::Failure("validation messages:\n" + host->validation_log());
+    if (host->validation_messages() != 0)
+        throw grass_sample::Failure("validation messages:\n" + host->validation_log());
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::fprintf(stderr, "grass-measure popping: %s zone %s/%s %.1f-%.1f m: window %ux%u at (%u, %u), %llu zone pixels, "
-                         "reference %llu cells, %d frames in %.1f s\n",
-                 grass_sample::backend_name(o.backend), tier_name(setup.tiers[z->tier_a]).c_str(), tier_name(setup.tiers[z->tier_b]).c_str(), z->begin,
-                 z->end, t.width, t.height, z->x0, z->y0, static_cast<unsigned long long>(zone_pixels),
-                 static_cast<unsigned long long>(z->reference_cells), o.frames, secs);
+    std::fprintf(stderr,
+                 "grass-measure popping: %s zone %s/%s %.1f-%.1f m: window %ux%u at (%u, %u), %llu zone pixels, "
+                 "reference %llu cells, %d frames in %.1f s\n",
+                 grass_sample::backend_name(o.backend), tier_name(setup.tiers[z->tier_a]).c_str(),
+                 tier_name(setup.tiers[z->tier_b]).c_str(), z->begin, z->end, t.width, t.height, z->x0, z->y0,
+                 static_cast<unsigned long long>(zone_pixels), static_cast<unsigned long long>(z->reference_cells),
+                 o.frames, secs);
 }
 
 // The Markdown report on stdout: a row per zone, then the per-tier mean colours.
@@ -533,7 +536,8 @@ void print_report(const Options& o, const grass_sample::Scene& s, const LodSetup
                 "sRGB levels (Rec. 709 weights); run %.0f s\n\n",
                 o.scene_path.c_str(), o.width, o.height, o.samples, s.eye[1], kWalkSpeed / kFps, kWalkSpeed, kFps,
                 o.frames, o.canopy, total);
-    std::printf("| zone | distance (m) | rows | columns | pixels | ref. cells (blades to m) | mean dY lod | mean dY ref | ratio | p95 dY lod | "
+    std::printf("| zone | distance (m) | rows | columns | pixels | ref. cells (blades to m) | mean dY lod | mean dY "
+                "ref | ratio | p95 dY lod | "
                 "p95 dY ref | ratio | mean Y lod | mean Y ref |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Zone& z : zones) {
@@ -542,33 +546,37 @@ void print_report(const Options& o, const grass_sample::Scene& s, const LodSetup
             for (uint32_t x = z.x0; x < z.x1; ++x) pixels += z.mask[size_t(y) * o.width + x];
         }
         if (z.delta_lod.empty()) {
-            std::printf("| %s / %s | %.2f-%.2f | %u-%u | %u-%u | %llu | %llu (%.0f) | not measured (--max-reference-cells) "
-                        "| | | | | | | |\n",
-                        tier_name(lod.tiers[z.tier_a]).c_str(), tier_name(lod.tiers[z.tier_b]).c_str(), z.begin, z.end, z.y0,
-                        z.y1 - 1, z.x0, z.x1 - 1, static_cast<unsigned long long>(pixels),
-                        static_cast<unsigned long long>(z.reference_cells), z.reference_end);
+            std::printf(
+                "| %s / %s | %.2f-%.2f | %u-%u | %u-%u | %llu | %llu (%.0f) | not measured (--max-reference-cells) "
+                "| | | | | | | |\n",
+                tier_name(lod.tiers[z.tier_a]).c_str(), tier_name(lod.tiers[z.tier_b]).c_str(), z.begin, z.end, z.y0,
+                z.y1 - 1, z.x0, z.x1 - 1, static_cast<unsigned long long>(pixels),
+                static_cast<unsigned long long>(z.reference_cells), z.reference_end);
             continue;
         }
         const double ml = grass_sample::mean(z.delta_lod), mr = grass_sample::mean(z.delta_ref);
         const double pl = grass_sample::percentile(z.delta_lod, 0.95), pr = grass_sample::percentile(z.delta_ref, 0.95);
-        std::printf("| %s / %s | %.2f-%.2f | %u-%u | %u-%u | %llu | %llu (%.0f) | %.2f | %.2f | %.2f | %.1f | %.1f | %.2f | %.1f | %.1f |\n",
-                    tier_name(lod.tiers[z.tier_a]).c_str(), tier_name(lod.tiers[z.tier_b]).c_str(), z.begin, z.end, z.y0,
-                    z.y1 - 1, z.x0, z.x1 - 1, static_cast<unsigned long long>(pixels),
-                    static_cast<unsigned long long>(z.reference_cells), z.reference_end,
-                    ml, mr, mr > 0 ? ml / mr : 0.0, pl, pr, pr > 0 ? pl / pr : 0.0,
-                    z.luma_samples ? z.luma_lod / double(z.luma_samples) : 0.0,
+        std::printf("| %s / %s | %.2f-%.2f | %u-%u | %u-%u | %llu | %llu (%.0f) | %.2f | %.2f | %.2f | %.1f | %.1f | "
+                    "%.2f | %.1f | %.1f |\n",
+                    tier_name(lod.tiers[z.tier_a]).c_str(), tier_name(lod.tiers[z.tier_b]).c_str(), z.begin, z.end,
+                    z.y0, z.y1 - 1, z.x0, z.x1 - 1, static_cast<unsigned long long>(pixels),
+                    static_cast<unsigned long long>(z.reference_cells), z.reference_end, ml, mr, mr > 0 ? ml / mr : 0.0,
+                    pl, pr, pr > 0 ? pl / pr : 0.0, z.luma_samples ? z.luma_lod / double(z.luma_samples) : 0.0,
                     z.luma_samples ? z.luma_ref / double(z.luma_samples) : 0.0);
     }
     if (!agreement.empty()) {
-        std::printf("\nPer-tier mean colour: 8 x 8 cells at ~9 m, each tier alone, 128x128, 4x MSAA; mean sRGB over the "
-                    "pixels that are grass in every render\n\n");
-        std::printf("| tier | coverage | mean sRGB | minus geometry | largest channel difference |\n|---|---|---|---|---|\n");
+        std::printf(
+            "\nPer-tier mean colour: 8 x 8 cells at ~9 m, each tier alone, 128x128, 4x MSAA; mean sRGB over the "
+            "pixels that are grass in every render\n\n");
+        std::printf(
+            "| tier | coverage | mean sRGB | minus geometry | largest channel difference |\n|---|---|---|---|---|\n");
         for (const Agreement& a : agreement) {
             const double* g = agreement[0].mean;
             double largest = 0.0;
             for (int c = 0; c < 3; ++c) largest = std::max(largest, std::fabs(a.mean[c] - g[c]));
-            std::printf("| %s | %.3f | (%.1f, %.1f, %.1f) | (%+.1f, %+.1f, %+.1f) | %.1f |\n", a.name.c_str(), a.coverage,
-                        a.mean[0], a.mean[1], a.mean[2], a.mean[0] - g[0], a.mean[1] - g[1], a.mean[2] - g[2], largest);
+            std::printf("| %s | %.3f | (%.1f, %.1f, %.1f) | (%+.1f, %+.1f, %+.1f) | %.1f |\n", a.name.c_str(),
+                        a.coverage, a.mean[0], a.mean[1], a.mean[2], a.mean[0] - g[0], a.mean[1] - g[1],
+                        a.mean[2] - g[2], largest);
         }
     }
 }

@@ -65,8 +65,8 @@ struct Setup {
 // The tiers of the --maps and --features tables, single cells each.
 extern const Setup kSingleTiers[3];
 
-constexpr uint32_t kCells = 32;       // the field's cells a side (of the default 0.25 m)
-constexpr uint32_t kMapSize = 128;    // texels a side of --maps' maps, over the field
+constexpr uint32_t kCells = 32;    // the field's cells a side (of the default 0.25 m)
+constexpr uint32_t kMapSize = 128; // texels a side of --maps' maps, over the field
 
 // The maps of one row of the --maps table: a bit per map role, as GRASS_FEATURES.
 enum MapBits : uint32_t { kDensity = 1, kColor = 2, kAmbient = 4, kDiffuse = 8, kHeight = 16, kAll = 31 };

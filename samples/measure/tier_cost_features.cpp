@@ -182,8 +182,8 @@ void print_rows(size_t i, const TierRows& t) {
         } else {
             std::snprintf(count, sizeof count, "%llu", static_cast<unsigned long long>(t.instances[r]));
         }
-        std::printf("| %s | %s | %s | %.1f | %.2f | %.1f | %.2f | %.3f | %.2f | %+.0f |\n", s.name, kRows[r].name, count,
-                    c.median, c.median / plain.median, c.fastest, c.fastest / plain.fastest,
+        std::printf("| %s | %s | %s | %.1f | %.2f | %.1f | %.2f | %.3f | %.2f | %+.0f |\n", s.name, kRows[r].name,
+                    count, c.median, c.median / plain.median, c.fastest, c.fastest / plain.fastest,
                     grass_sample::median_high(t.plans[r]), t.gpu_bytes[r] / 1048576.0,
                     (double(t.gpu_bytes[r]) - double(t.gpu_bytes[0])) / 1024.0);
     }
@@ -204,12 +204,13 @@ int run_features(Rig& rig) {
     std::printf("grass-tier-cost --features: %s (%s), %ux%u, 1024 cells of 0.25 m, %.1f .. %.1f m from the "
                 "camera, transition zones %.0f .. %.0f m; %d rounds of %d frames per row, rows interleaved; "
                 "frame with no grass %.2f ms; GPU memory with no field %.2f MiB\n\n",
-                grass_sample::backend_name(o.backend), rig.host().device_name().c_str(), o.width, o.height,
-                zone.near_m, zone.far_m, double(zone.begin), double(zone.end), o.rounds, o.frames, rig.empty_ms(),
+                grass_sample::backend_name(o.backend), rig.host().device_name().c_str(), o.width, o.height, zone.near_m,
+                zone.far_m, double(zone.begin), double(zone.end), o.rounds, o.frames, rig.empty_ms(),
                 base.gpu_bytes / 1048576.0);
-    std::printf("| tier | feature | instances | frame - empty, median (ms) | ratio to plain | fastest frame - empty (ms) | "
-                "ratio to plain | plan, median (ms) | GPU memory (MiB) | vs plain (KiB) |\n"
-                "|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| tier | feature | instances | frame - empty, median (ms) | ratio to plain | fastest frame - empty (ms) | "
+        "ratio to plain | plan, median (ms) | GPU memory (MiB) | vs plain (KiB) |\n"
+        "|---|---|---|---|---|---|---|---|---|---|\n");
     std::fflush(stdout);
     for (size_t i = 0; i < sizeof kSingleTiers / sizeof kSingleTiers[0]; ++i) {
         // Each round draws every row once (after the empty frame again), so that a load that

@@ -19,7 +19,7 @@ struct MapRow {
     uint32_t maps;
 };
 
-const MapRow kRows[] = {{"plain (no maps)", 0}, {"density", kDensity}, {"colour", kColor},   {"ambient", kAmbient},
+const MapRow kRows[] = {{"plain (no maps)", 0}, {"density", kDensity}, {"colour", kColor}, {"ambient", kAmbient},
                         {"diffuse", kDiffuse},  {"height", kHeight},   {"all five", kAll}, {"plain again", 0}};
 constexpr size_t kRowCount = sizeof kRows / sizeof kRows[0];
 
@@ -66,8 +66,9 @@ int run_maps(Rig& rig) {
                 "GPU memory with no field %.2f MiB\n\n",
                 grass_sample::backend_name(o.backend), rig.host().device_name().c_str(), o.width, o.height, kMapSize,
                 kMapSize, o.rounds, o.frames, rig.empty_ms(), base.gpu_bytes / 1048576.0);
-    std::printf("| tier | maps | instances | frame - empty, median (ms) | ratio to plain | fastest frame - empty (ms) | "
-                "ratio to plain | GPU memory (MiB) | vs plain (KiB) |\n|---|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| tier | maps | instances | frame - empty, median (ms) | ratio to plain | fastest frame - empty (ms) | "
+        "ratio to plain | GPU memory (MiB) | vs plain (KiB) |\n|---|---|---|---|---|---|---|---|---|\n");
     std::fflush(stdout);
     for (const Setup& s : kSingleTiers) {
         // Each round draws every row once (after the empty frame again), so that a load

@@ -14,13 +14,19 @@ namespace tier_cost {
 
 int run_plain(Rig& rig) {
     const Setup setups[] = {
-        {"geometry", GRASS_TIER_GEOMETRY, 0, 1}, {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 1},
-        {"volume, 2 slices", GRASS_TIER_VOLUME, 2, 1}, {"volume, 1 slice", GRASS_TIER_VOLUME, 1, 1},
+        {"geometry", GRASS_TIER_GEOMETRY, 0, 1},
+        {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 1},
+        {"volume, 2 slices", GRASS_TIER_VOLUME, 2, 1},
+        {"volume, 1 slice", GRASS_TIER_VOLUME, 1, 1},
         {"image", GRASS_TIER_IMAGE, 0, 1},
-        {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 2}, {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 4},
-        {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 8}, {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 16},
-        {"image", GRASS_TIER_IMAGE, 0, 2}, {"image", GRASS_TIER_IMAGE, 0, 4},
-        {"image", GRASS_TIER_IMAGE, 0, 8}, {"image", GRASS_TIER_IMAGE, 0, 16},
+        {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 2},
+        {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 4},
+        {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 8},
+        {"volume, 8 slices", GRASS_TIER_VOLUME, 8, 16},
+        {"image", GRASS_TIER_IMAGE, 0, 2},
+        {"image", GRASS_TIER_IMAGE, 0, 4},
+        {"image", GRASS_TIER_IMAGE, 0, 8},
+        {"image", GRASS_TIER_IMAGE, 0, 16},
     };
     const Options& o = rig.options();
     grass_context* ctx = rig.ctx();

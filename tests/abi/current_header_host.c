@@ -12,12 +12,12 @@
 
 static int failures = 0;
 
-#define CHECK(condition)                                                                   \
-    do {                                                                                   \
-        if (!(condition)) {                                                                \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition);  \
-            failures += 1;                                                                 \
-        }                                                                                  \
+#define CHECK(condition)                                                                  \
+    do {                                                                                  \
+        if (!(condition)) {                                                               \
+            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
+            failures += 1;                                                                \
+        }                                                                                 \
     } while (0)
 
 #define CHECK_OK(call) CHECK((call) == GRASS_SUCCESS)

@@ -10,12 +10,12 @@
 #include "grass_vk_0_3.h"
 
 #ifdef GRASS_GRASS_H
-#error "the current grass.h is on this host's include path; it must see only the frozen 0.3 headers"
+#    error "the current grass.h is on this host's include path; it must see only the frozen 0.3 headers"
 #endif
 
 #ifdef GRASS_ABI_TEST_EGL
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
+#    include <EGL/egl.h>
+#    include <EGL/eglext.h>
 #endif
 
 #include <math.h>
@@ -30,22 +30,21 @@ typedef char patch_info_is_48_bytes[sizeof(grass_patch_info) == 48 ? 1 : -1];
 
 static int failures = 0;
 
-#define CHECK(condition)                                                                   \
-    do {                                                                                   \
-        if (!(condition)) {                                                                \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition);  \
-            failures += 1;                                                                 \
-        }                                                                                  \
+#define CHECK(condition)                                                                  \
+    do {                                                                                  \
+        if (!(condition)) {                                                               \
+            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
+            failures += 1;                                                                \
+        }                                                                                 \
     } while (0)
 
-#define CHECK_OK(call)                                                                     \
-    do {                                                                                   \
-        grass_result r_ = (call);                                                          \
-        if (r_ != GRASS_SUCCESS) {                                                         \
-            fprintf(stderr, "%s:%d: %s returned %s\n", __FILE__, __LINE__, #call,          \
-                    grass_result_string(r_));                                              \
-            failures += 1;                                                                 \
-        }                                                                                  \
+#define CHECK_OK(call)                                                                                      \
+    do {                                                                                                    \
+        grass_result r_ = (call);                                                                           \
+        if (r_ != GRASS_SUCCESS) {                                                                          \
+            fprintf(stderr, "%s:%d: %s returned %s\n", __FILE__, __LINE__, #call, grass_result_string(r_)); \
+            failures += 1;                                                                                  \
+        }                                                                                                   \
     } while (0)
 
 enum { kCanaryBytes = 64, kCanary = 0xc5 };
@@ -221,8 +220,9 @@ static int make_gl_current(EGLDisplay* out_display, EGLContext* out_context) {
     EGLDisplay display;
     EGLContext context;
     EGLint major = 0, minor = 0;
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     void (*proc)(void) = eglGetProcAddress("eglGetPlatformDisplayEXT");
     if (!client || !strstr(client, "EGL_MESA_platform_surfaceless") || !proc) return 0;
     memcpy(&get_display, &proc, sizeof(get_display));
@@ -279,9 +279,9 @@ int main(void) {
     CHECK(GRASS_HEADER_VERSION == ((0u << 22) | (3u << 12)));
     CHECK(library >> 22 == 0);
     CHECK(((library >> 12) & 0x3ff) >= 3);
-    printf("old_header_host: built against grass.h %d.%d.%d, running against libgrass %u.%u.%u\n",
-           GRASS_VERSION_MAJOR, GRASS_VERSION_MINOR, GRASS_VERSION_PATCH, (unsigned)(library >> 22),
-           (unsigned)((library >> 12) & 0x3ff), (unsigned)(library & 0xfff));
+    printf("old_header_host: built against grass.h %d.%d.%d, running against libgrass %u.%u.%u\n", GRASS_VERSION_MAJOR,
+           GRASS_VERSION_MINOR, GRASS_VERSION_PATCH, (unsigned)(library >> 22), (unsigned)((library >> 12) & 0x3ff),
+           (unsigned)(library & 0xfff));
 
     /* The 0.3 names of the default descs (0.4: grass_default_gl_desc and so on). */
     CHECK(gl.type == GRASS_STRUCT_TYPE_GL_DESC && gl.next == NULL && gl.get_proc_address == NULL);

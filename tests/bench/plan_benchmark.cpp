@@ -17,7 +17,7 @@ namespace {
 
 struct Camera {
     const char* name;
-    double eye[3];    // relative to the field's centre line: x from its middle, z from its near end
+    double eye[3]; // relative to the field's centre line: x from its middle, z from its near end
     double target[3];
 };
 
@@ -80,8 +80,9 @@ void register_all() {
             benchmark::RegisterBenchmark(("plan/football/" + std::string(cam.name) + far).c_str(),
                                          [&cam, far_m](benchmark::State& s) { plan_field(s, 380, 532, cam, far_m); })
                 ->Unit(benchmark::kMicrosecond);
-            benchmark::RegisterBenchmark(("plan/1e10/" + std::string(cam.name) + far).c_str(),
-                                         [&cam, far_m](benchmark::State& s) { plan_field(s, 100000, 100000, cam, far_m); })
+            benchmark::RegisterBenchmark(
+                ("plan/1e10/" + std::string(cam.name) + far).c_str(),
+                [&cam, far_m](benchmark::State& s) { plan_field(s, 100000, 100000, cam, far_m); })
                 ->Unit(benchmark::kMicrosecond);
         }
     }

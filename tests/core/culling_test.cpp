@@ -124,21 +124,23 @@ TEST_F(CoreTest, CullingNeverDropsACellThatMeetsTheFrustum) {
                 extra_total += kept && !meets;
                 single_total += single[size_t(j) * n + i] != 0;
                 single_extra += single[size_t(j) * n + i] != 0 && !meets;
-                ASSERT_TRUE(!meets || kept) << "camera " << cam << " dropped cell (" << i << ", " << j << "): eye (" << eye[0]
-                                            << ", " << eye[1] << ", " << eye[2] << ") target (" << target[0] << ", "
-                                            << target[1] << ", " << target[2] << ") fov " << fov << " aspect " << aspect
-                                            << " near " << near_m << " far " << far_m;
+                ASSERT_TRUE(!meets || kept)
+                    << "camera " << cam << " dropped cell (" << i << ", " << j << "): eye (" << eye[0] << ", " << eye[1]
+                    << ", " << eye[2] << ") target (" << target[0] << ", " << target[1] << ", " << target[2] << ") fov "
+                    << fov << " aspect " << aspect << " near " << near_m << " far " << far_m;
             }
         }
     }
-    std::printf("[ measured ] %d random cameras: %llu cells meet the frustum, %llu kept, %llu extra (%.1f%%)\n", cameras,
-                static_cast<unsigned long long>(truth_total), static_cast<unsigned long long>(kept_total),
+    std::printf("[ measured ] %d random cameras: %llu cells meet the frustum, %llu kept, %llu extra (%.1f%%)\n",
+                cameras, static_cast<unsigned long long>(truth_total), static_cast<unsigned long long>(kept_total),
                 static_cast<unsigned long long>(extra_total), 100.0 * double(extra_total) / double(truth_total));
-    std::printf("[ measured ] of them drawn as single cells: %llu, of which %llu (%.1f%%) miss the frustum; the rest of the "
-                "extra are cells inside macro-cells that are drawn whole\n",
-                static_cast<unsigned long long>(single_total), static_cast<unsigned long long>(single_extra),
-                100.0 * double(single_extra) / double(single_total));
-    std::printf("[ measured ] culled: %llu of %llu cell views (%.1f%%)\n", static_cast<unsigned long long>(culled_total),
+    std::printf(
+        "[ measured ] of them drawn as single cells: %llu, of which %llu (%.1f%%) miss the frustum; the rest of the "
+        "extra are cells inside macro-cells that are drawn whole\n",
+        static_cast<unsigned long long>(single_total), static_cast<unsigned long long>(single_extra),
+        100.0 * double(single_extra) / double(single_total));
+    std::printf("[ measured ] culled: %llu of %llu cell views (%.1f%%)\n",
+                static_cast<unsigned long long>(culled_total),
                 static_cast<unsigned long long>(uint64_t(cameras) * n * n),
                 100.0 * double(culled_total) / (double(cameras) * n * n));
     EXPECT_GT(truth_total, 10000u) << "the cameras see the field";

@@ -144,19 +144,22 @@ TEST_F(DesignMapTest, TheMapStackRefusesWrongRolesScalesAndTransforms) {
 TEST_F(DesignMapTest, UpdatesOutsideTheMapOrOfAnotherFormatAreRefusedAndChangeNothing) {
     std::vector<uint8_t> px(8 * 8, 255);
     const grass_map_id m = make_map(px.data(), 8, 8, GRASS_MAP_FORMAT_R8_UNORM);
-    const std::vector<uint16_t> before(ctx->maps.get(m.index - 1)->texels.begin(), ctx->maps.get(m.index - 1)->texels.end());
+    const std::vector<uint16_t> before(ctx->maps.get(m.index - 1)->texels.begin(),
+                                       ctx->maps.get(m.index - 1)->texels.end());
     uint8_t zeros[16] = {0};
     grass_map_desc r = grass_default_map_desc();
     r.pixels = zeros;
     r.width = r.height = 4;
-    EXPECT_EQ(grass_update_map(ctx, m, 5, 0, &r), GRASS_ERROR_INVALID_ARGUMENT) << "4 wide from x = 5 leaves an 8-wide map";
+    EXPECT_EQ(grass_update_map(ctx, m, 5, 0, &r), GRASS_ERROR_INVALID_ARGUMENT)
+        << "4 wide from x = 5 leaves an 8-wide map";
     EXPECT_EQ(last_id(), GRASS_MSG_BAD_MAP);
     EXPECT_EQ(grass_update_map(ctx, m, 8, 0, &r), GRASS_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(last_id(), GRASS_MSG_MAP_REGION);
     r.format = GRASS_MAP_FORMAT_R16_UNORM;
     EXPECT_EQ(grass_update_map(ctx, m, 0, 0, &r), GRASS_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(last_id(), GRASS_MSG_MAP_REGION);
-    const std::vector<uint16_t> after(ctx->maps.get(m.index - 1)->texels.begin(), ctx->maps.get(m.index - 1)->texels.end());
+    const std::vector<uint16_t> after(ctx->maps.get(m.index - 1)->texels.begin(),
+                                      ctx->maps.get(m.index - 1)->texels.end());
     EXPECT_EQ(before, after);
     r.format = GRASS_MAP_FORMAT_R8_UNORM;
     EXPECT_EQ(grass_update_map(ctx, m, 4, 4, &r), GRASS_SUCCESS) << last_message();
@@ -223,7 +226,8 @@ TEST_F(DesignMapTest, ADensityOfZeroPlansNothing) {
 std::vector<uint16_t> ramp(uint32_t n) {
     std::vector<uint16_t> px(size_t(n) * n);
     for (uint32_t z = 0; z < n; ++z) {
-        for (uint32_t x = 0; x < n; ++x) px[size_t(z) * n + x] = static_cast<uint16_t>(std::lround(65535.0 * (x + 0.5) / n));
+        for (uint32_t x = 0; x < n; ++x)
+            px[size_t(z) * n + x] = static_cast<uint16_t>(std::lround(65535.0 * (x + 0.5) / n));
     }
     return px;
 }

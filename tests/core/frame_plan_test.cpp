@@ -61,7 +61,8 @@ protected:
             if (d.kind != GRASS_TIER_GEOMETRY) continue;
             for (uint32_t k = 0; k < d.instance_count; ++k) {
                 const auto& inst = ctx->plan.instances[d.first_instance + k];
-                out.push_back(d.uniforms.tiling[1] ? grass::mirror_bits(inst.cell[0], inst.cell[1], d.uniforms.tiling[0]) : 0u);
+                out.push_back(
+                    d.uniforms.tiling[1] ? grass::mirror_bits(inst.cell[0], inst.cell[1], d.uniforms.tiling[0]) : 0u);
             }
         }
         return out;

@@ -74,9 +74,7 @@ protected:
     grass_view_desc view{};
 };
 
-TEST_F(InvariantsTest, AWholePlanPasses) {
-    EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
-}
+TEST_F(InvariantsTest, AWholePlanPasses) { EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message(); }
 
 TEST_F(InvariantsTest, AVolumeDrawWhoseSliceSetWasNeverUploadedIsAnInternalError) {
     ctx->plan.draws[0].kind = GRASS_TIER_VOLUME;

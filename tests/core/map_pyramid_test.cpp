@@ -19,7 +19,8 @@ struct Checker {
         *lo = 1.0f, *hi = 0.0f;
         for (int j = 0; j <= 40; ++j) {
             for (int i = 0; i <= 40; ++i) {
-                const float s = grass::sample_map(texels.data(), w, h, 1, u0 + (u1 - u0) * i / 40.0, v0 + (v1 - v0) * j / 40.0);
+                const float s =
+                    grass::sample_map(texels.data(), w, h, 1, u0 + (u1 - u0) * i / 40.0, v0 + (v1 - v0) * j / 40.0);
                 *lo = std::min(*lo, s), *hi = std::max(*hi, s);
             }
         }

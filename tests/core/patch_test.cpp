@@ -112,7 +112,8 @@ TEST_F(CoreTest, ColourVariesPerBladeAndPerVertex) {
     // Same height (root) on different blades: per-blade modulation.
     int differing_blades = 0;
     for (uint32_t b = 1; b < p.blade_count; ++b) {
-        differing_blades += std::memcmp(p.vertices[0].color, p.vertices[size_t(b) * p.vertices_per_blade].color, 3) != 0;
+        differing_blades +=
+            std::memcmp(p.vertices[0].color, p.vertices[size_t(b) * p.vertices_per_blade].color, 3) != 0;
     }
     EXPECT_GT(differing_blades, int(p.blade_count) / 2);
     // Two sides of one blade at the same height: per-vertex modulation.

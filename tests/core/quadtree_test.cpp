@@ -17,7 +17,7 @@ namespace {
 TEST(Quadtree, LevelsFollowLemmesDepthFormula) {
     EXPECT_EQ(grass::QuadtreeShape(1, 1).levels(), 1u);
     EXPECT_EQ(grass::QuadtreeShape(2, 1).levels(), 2u);
-    EXPECT_EQ(grass::QuadtreeShape(5, 3).levels(), 4u);   // ceil(log2 5) + 1
+    EXPECT_EQ(grass::QuadtreeShape(5, 3).levels(), 4u);      // ceil(log2 5) + 1
     EXPECT_EQ(grass::QuadtreeShape(380, 532).levels(), 11u); // ceil(log2 532) + 1
     EXPECT_EQ(grass::QuadtreeShape(100000, 100000).levels(), 18u);
 }
@@ -144,7 +144,8 @@ TEST_F(LodTest, EveryTierDrawsWhereItsTestsSayAndNowhereElse) {
         }
         for (uint64_t j = p.z0; j < p.z0 + p.count_z; ++j) {
             for (uint64_t i = p.x0; i < p.x0 + p.count_x; ++i) {
-                ASSERT_TRUE(seen.insert({p.tier, j * d.cells_x + i}).second) << "tier " << p.tier << " draws a cell twice";
+                ASSERT_TRUE(seen.insert({p.tier, j * d.cells_x + i}).second)
+                    << "tier " << p.tier << " draws a cell twice";
             }
         }
     }
@@ -168,8 +169,10 @@ grass_lod_answer split_half(void* user, const grass_lod_node* n) {
     auto* log = static_cast<CallbackLog*>(user);
     // Draw nodes of 4 cells or less in the x < 32 half, discard the x >= 32 half.
     grass_lod_answer a = GRASS_LOD_SPLIT;
-    if (n->cell_x >= 32) a = GRASS_LOD_DISCARD;
-    else if (n->cells_x <= 4 && n->cell_x + n->cells_x <= 32) a = GRASS_LOD_DRAW;
+    if (n->cell_x >= 32)
+        a = GRASS_LOD_DISCARD;
+    else if (n->cells_x <= 4 && n->cell_x + n->cells_x <= 32)
+        a = GRASS_LOD_DRAW;
     log->asked.push_back(*n);
     log->answers.push_back(a);
     return a;
@@ -297,9 +300,9 @@ TEST(DefaultLodSetup, IsLemmesFootballTableInCells) {
     EXPECT_EQ(tiers[2].slices, 2u);
     EXPECT_EQ(tiers[3].slices, 1u);
     EXPECT_EQ(tiers[4].kind, GRASS_TIER_IMAGE);
-    EXPECT_FLOAT_EQ(tests[0].end, 10.0f);   // 20 cells of 0.5 m
-    EXPECT_FLOAT_EQ(tests[1].begin, 2.5f);  // 5 cells
-    EXPECT_FLOAT_EQ(tests[1].end, 40.0f);   // 80 cells
+    EXPECT_FLOAT_EQ(tests[0].end, 10.0f);  // 20 cells of 0.5 m
+    EXPECT_FLOAT_EQ(tests[1].begin, 2.5f); // 5 cells
+    EXPECT_FLOAT_EQ(tests[1].end, 40.0f);  // 80 cells
     EXPECT_EQ(tests[2].max_macro_cells, 40u);
     EXPECT_FLOAT_EQ(tests[7].begin, 100.0f); // image from 200 cells
     EXPECT_TRUE(std::isinf(tests[7].end));

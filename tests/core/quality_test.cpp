@@ -85,7 +85,8 @@ TEST_F(QualityTest, KnobsShapeThePatchAndTheLodSetup) {
             }
             EXPECT_FLOAT_EQ(tests[k].transition_out, 1.0f * defaults[k].transition_out);
         } else {
-            EXPECT_EQ(tests[k].max_macro_cells, std::max<uint32_t>(1, uint32_t(std::lround(0.1 * defaults[k].max_macro_cells))));
+            EXPECT_EQ(tests[k].max_macro_cells,
+                      std::max<uint32_t>(1, uint32_t(std::lround(0.1 * defaults[k].max_macro_cells))));
         }
     }
 }
@@ -103,7 +104,8 @@ TEST_F(QualityTest, BadKnobsAreRefusedNamingThemAndNothingIsWritten) {
         {[](grass_quality_desc* q) { q->distance_scale = std::numeric_limits<float>::quiet_NaN(); }, "distance_scale"},
         {[](grass_quality_desc* q) { q->transition_scale = 2.0f; }, "transition_scale"},
         {[](grass_quality_desc* q) { q->slice_scale = 0.0f; }, "slice_scale"},
-        {[](grass_quality_desc* q) { q->macro_cell_scale = std::numeric_limits<float>::infinity(); }, "macro_cell_scale"},
+        {[](grass_quality_desc* q) { q->macro_cell_scale = std::numeric_limits<float>::infinity(); },
+         "macro_cell_scale"},
         {[](grass_quality_desc* q) { q->blade_subdivisions = 0; }, "blade_subdivisions"},
         {[](grass_quality_desc* q) { q->blade_fraction = 0.0f; }, "blade_fraction"},
         {[](grass_quality_desc* q) { q->msaa_samples = 3; }, "msaa_samples"},
@@ -111,7 +113,8 @@ TEST_F(QualityTest, BadKnobsAreRefusedNamingThemAndNothingIsWritten) {
     for (const Case& c : cases) {
         grass_quality_desc q = grass_quality_preset(GRASS_QUALITY_LOW);
         c.spoil(&q);
-        EXPECT_EQ(grass_apply_quality(ctx, &q, 0.25, &pd, tiers, &nt, tests, &nk), GRASS_ERROR_INVALID_ARGUMENT) << c.name;
+        EXPECT_EQ(grass_apply_quality(ctx, &q, 0.25, &pd, tiers, &nt, tests, &nk), GRASS_ERROR_INVALID_ARGUMENT)
+            << c.name;
         EXPECT_NE(last_message().find(c.name), std::string::npos) << last_message();
     }
     // The documented ends of every range are accepted, as floats (1.2f lies above 1.2).

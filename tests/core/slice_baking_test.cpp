@@ -4,11 +4,11 @@
 
 #include "bake/bake_cache.hpp"
 #include "bake/baked_slices.hpp"
-#include "context/context.hpp"
-#include "patch/random.hpp"
 #include "bake/slice_baker.hpp"
 #include "bake/slice_mips.hpp"
 #include "bake/slice_set_hash.hpp"
+#include "context/context.hpp"
+#include "patch/random.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -87,8 +87,7 @@ void write_file(const std::string& path, const std::vector<uint8_t>& bytes) {
 bool same_bytes(const SliceSet& a, const SliceSet& b) {
     return a.slices_per_axis == b.slices_per_axis && a.layers == b.layers && a.width == b.width &&
            a.height == b.height && a.mip_levels == b.mip_levels && a.height_patch_units == b.height_patch_units &&
-           a.content_hash == b.content_hash && a.color == b.color && a.normal == b.normal &&
-           a.threshold == b.threshold;
+           a.content_hash == b.content_hash && a.color == b.color && a.normal == b.normal && a.threshold == b.threshold;
 }
 
 // Pins the baked slices of the default patch. If this fails, the baked bytes changed (the

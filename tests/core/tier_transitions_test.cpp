@@ -32,13 +32,15 @@ TEST(TierTransitions, EveryVisibleBladeIsDrawnByExactlyOneTierWithoutTheWindow) 
                 float sum = 0.0f;
                 int drawers = 0;
                 for (uint32_t t = 0; t < bands.size(); ++t) {
-                    const float o = grass::tier_blade_opacity(bands.data(), uint32_t(bands.size()), t, d, threshold, density, 0.0f);
+                    const float o =
+                        grass::tier_blade_opacity(bands.data(), uint32_t(bands.size()), t, d, threshold, density, 0.0f);
                     ASSERT_TRUE(o == 0.0f || o == 1.0f);
                     sum += o;
                     drawers += o > 0.0f;
                 }
                 const bool visible = threshold <= density;
-                ASSERT_EQ(drawers, visible ? 1 : 0) << "d " << d << " threshold " << threshold << " density " << density;
+                ASSERT_EQ(drawers, visible ? 1 : 0)
+                    << "d " << d << " threshold " << threshold << " density " << density;
                 ASSERT_EQ(sum, visible ? 1.0f : 0.0f);
             }
         }
@@ -64,14 +66,15 @@ TEST(TierTransitions, BladesMoveFromTheFineToTheCoarseTierAcrossTheZoneInThresho
     auto share = [&](uint32_t tier, float d) {
         int drawn = 0;
         for (int k = 1; k <= 1000; ++k) {
-            drawn += grass::tier_blade_opacity(bands.data(), uint32_t(bands.size()), tier, d, k / 1000.0f, 1.0f, 0.0f) > 0.0f;
+            drawn += grass::tier_blade_opacity(bands.data(), uint32_t(bands.size()), tier, d, k / 1000.0f, 1.0f, 0.0f) >
+                     0.0f;
         }
         return drawn / 1000.0;
     };
-    EXPECT_NEAR(share(0, 1.0f), 1.0, 1e-9);   // before the zone: all geometry
+    EXPECT_NEAR(share(0, 1.0f), 1.0, 1e-9);    // before the zone: all geometry
     EXPECT_NEAR(share(0, 3.125f), 0.5, 0.002); // middle of the zone: half and half
     EXPECT_NEAR(share(1, 3.125f), 0.5, 0.002);
-    EXPECT_NEAR(share(1, 6.0f), 1.0, 1e-9);   // after it: all volume
+    EXPECT_NEAR(share(1, 6.0f), 1.0, 1e-9); // after it: all volume
     // Threshold inversion: the coarse tier takes the low thresholds, so a blade that has
     // moved to the coarse tier stays there as the camera moves away.
     EXPECT_GT(grass::tier_blade_opacity(bands.data(), 5, 1, 3.125f, 0.1f, 1.0f, 0.0f), 0.0f);

@@ -86,8 +86,10 @@ void compare(uint32_t samples, uint32_t block, double max_mean_difference, doubl
                 "4x4 blocks %.4f levels (%.4f%% > 32), 40x40 blocks %.4f levels\n",
                 samples, per_pixel.mean, 100.0 * per_pixel.share, blocks.mean, 100.0 * blocks.share, whole.mean);
     if (const char* dir = std::getenv("GRASS_TEST_IMAGE_DIR")) {
-        grass_host::write_png(std::string(dir) + "/agreement_gl_" + std::to_string(samples) + ".png", gl.image, nullptr);
-        grass_host::write_png(std::string(dir) + "/agreement_vk_" + std::to_string(samples) + ".png", vk.image, nullptr);
+        grass_host::write_png(std::string(dir) + "/agreement_gl_" + std::to_string(samples) + ".png", gl.image,
+                              nullptr);
+        grass_host::write_png(std::string(dir) + "/agreement_vk_" + std::to_string(samples) + ".png", vk.image,
+                              nullptr);
     }
     const Difference& judged = block == 1 ? per_pixel : blocks;
     EXPECT_LE(judged.mean, max_mean_difference);

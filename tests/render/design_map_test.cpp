@@ -133,9 +133,8 @@ protected:
 
 TEST_P(DesignMapTest, TheZeroRegionOfADensityMapShowsNoGrassAndTheRestDoes) {
     // Zero in texels 8..23 of 32 both ways: no density between their centres, 0.53..1.47 m.
-    const grass_map_id map = make_r8_map(32, 32, [](uint32_t x, uint32_t y) {
-        return (x >= 8 && x < 24 && y >= 8 && y < 24) ? 0 : 255;
-    });
+    const grass_map_id map =
+        make_r8_map(32, 32, [](uint32_t x, uint32_t y) { return (x >= 8 && x < 24 && y >= 8 && y < 24) ? 0 : 255; });
     grass_field_desc d = field_desc(kCells);
     d.maps.density = map;
     make_field(d);

@@ -44,10 +44,10 @@ struct Frame {
 // A field the test made, for the bounds of the plan's counts.
 struct Placed {
     grass_field_id id;
-    double ox, oz, cell;    // corner (identity rotation) and cell size, metres
+    double ox, oz, cell; // corner (identity rotation) and cell size, metres
     uint32_t cx, cz;
-    uint32_t tiers;         // tier count
-    uint32_t largest;       // cells a side of its largest instance
+    uint32_t tiers;   // tier count
+    uint32_t largest; // cells a side of its largest instance
     uint64_t quadtree_nodes;
 };
 
@@ -114,9 +114,9 @@ protected:
     }
     void remove(grass_field_id id) {
         EXPECT_EQ(grass_destroy_field(ctx, id), GRASS_SUCCESS) << log;
-        fields_.erase(std::remove_if(fields_.begin(), fields_.end(),
-                                     [&](const Placed& p) { return p.id.index == id.index; }),
-                      fields_.end());
+        fields_.erase(
+            std::remove_if(fields_.begin(), fields_.end(), [&](const Placed& p) { return p.id.index == id.index; }),
+            fields_.end());
     }
     void remove_all() {
         while (!fields_.empty()) remove(fields_.back().id);
@@ -169,8 +169,10 @@ protected:
                 hi[a] = std::max(hi[a], cell);
             }
         }
-        const double x0 = std::max(0.0, std::floor(lo[0] - margin)), x1 = std::min(double(p.cx), std::ceil(hi[0] + margin));
-        const double z0 = std::max(0.0, std::floor(lo[1] - margin)), z1 = std::min(double(p.cz), std::ceil(hi[1] + margin));
+        const double x0 = std::max(0.0, std::floor(lo[0] - margin)),
+                     x1 = std::min(double(p.cx), std::ceil(hi[0] + margin));
+        const double z0 = std::max(0.0, std::floor(lo[1] - margin)),
+                     z1 = std::min(double(p.cz), std::ceil(hi[1] + margin));
         return std::max(0.0, x1 - x0) * std::max(0.0, z1 - z0);
     }
 
@@ -225,9 +227,9 @@ protected:
         std::printf("[ measured ] %s %-22s %7.1f ms (plan %.2f ms), %6llu nodes, instances %llu/%llu/%llu, "
                     "blades %llu of %llu, brightest %.3f\n",
                     backend_name(GetParam()).c_str(), tag.c_str(), f.ms, st.plan_ms,
-                    static_cast<unsigned long long>(st.nodes_visited),
-                    static_cast<unsigned long long>(st.instances[0]), static_cast<unsigned long long>(st.instances[1]),
-                    static_cast<unsigned long long>(st.instances[2]), static_cast<unsigned long long>(st.blades_drawn),
+                    static_cast<unsigned long long>(st.nodes_visited), static_cast<unsigned long long>(st.instances[0]),
+                    static_cast<unsigned long long>(st.instances[1]), static_cast<unsigned long long>(st.instances[2]),
+                    static_cast<unsigned long long>(st.blades_drawn),
                     static_cast<unsigned long long>(st.blades_submitted), double(largest));
     }
 
@@ -469,12 +471,10 @@ TEST_P(ExtremesTest, SunAtTheZenithOnTheHorizonAndBelowTheGround) {
     const Frame below = shoot(s, "sun_below", sun(0.3f, -1.0f, 0.2f));
     const Frame nadir = shoot(s, "sun_nadir", sun(0.0f, -1.0f, 0.0f));
     // No sun at all: ambient light only.
-    const Frame dark = shoot(s, "sun_off", [](grass_view_desc& v) {
-        v.sun_color[0] = v.sun_color[1] = v.sun_color[2] = 0.0f;
-    });
+    const Frame dark =
+        shoot(s, "sun_off", [](grass_view_desc& v) { v.sun_color[0] = v.sun_color[1] = v.sun_color[2] = 0.0f; });
     const double lz = mean_drawn_luminance(zenith), lh = mean_drawn_luminance(horizon),
-                 lb = mean_drawn_luminance(below), ln = mean_drawn_luminance(nadir),
-                 l0 = mean_drawn_luminance(dark);
+                 lb = mean_drawn_luminance(below), ln = mean_drawn_luminance(nadir), l0 = mean_drawn_luminance(dark);
     std::printf("[ measured ] %s: mean luminance of the grass, sun at the zenith %.4f, horizon %.4f, below %.4f, "
                 "nadir %.4f, no sun %.4f\n",
                 backend_name(GetParam()).c_str(), lz, lh, lb, ln, l0);
@@ -502,8 +502,8 @@ TEST_P(ExtremesTest, VolumeRayMarchAtItsIterationBound) {
             // Rows clearly below the horizon: the lower 40%.
             uint8_t sky[3];
             expected_sky(host->target(), sky);
-            const double below = grass_share(frame.image, sky, 0, frame.image.height * 6 / 10, frame.image.width,
-                                             frame.image.height);
+            const double below =
+                grass_share(frame.image, sky, 0, frame.image.height * 6 / 10, frame.image.width, frame.image.height);
             std::printf("[ measured ] %s: diagonal grazing ray, grass below the horizon %.3f\n",
                         backend_name(GetParam()).c_str(), below);
             EXPECT_GT(below, 0.97);

@@ -67,7 +67,8 @@ TEST_P(FarFromOriginTest, MillimetreMovesFarOutShiftTheGrassSmoothlyBySubPixelAm
     }
     // Each millimetre changes the picture, by less than half a pixel of motion.
     for (int k = 1; k <= steps; ++k) {
-        EXPECT_GT(mean_difference(far_out.frames[k], far_out.frames[k - 1]), 0.0) << "step " << k << " mm moves the grass";
+        EXPECT_GT(mean_difference(far_out.frames[k], far_out.frames[k - 1]), 0.0)
+            << "step " << k << " mm moves the grass";
         EXPECT_LT(std::fabs(far_out.shift[k] - far_out.shift[k - 1]), 0.5) << "step " << k << " mm: no jump";
     }
     // The amount: a ground point moves dx * f_px / depth (least-squares slope through zero).

@@ -47,8 +47,11 @@ class FarTiersTest : public RenderTest {
 protected:
     // Lemme's five tiers (geometry, volume 8, 2, 1 slices, image), their bands scaled to the
     // field: every tier and every transition zone lies within 12 m.
-    grass_tier_desc tiers_[5] = {{GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 8}, {GRASS_TIER_VOLUME, 2},
-                                 {GRASS_TIER_VOLUME, 1}, {GRASS_TIER_IMAGE, 0}};
+    grass_tier_desc tiers_[5] = {{GRASS_TIER_GEOMETRY, 0},
+                                 {GRASS_TIER_VOLUME, 8},
+                                 {GRASS_TIER_VOLUME, 2},
+                                 {GRASS_TIER_VOLUME, 1},
+                                 {GRASS_TIER_IMAGE, 0}};
     grass_lod_test tests_[9] = {};
 
     grass_field_desc lod_field() {

@@ -7,7 +7,9 @@
 
 namespace grass_test {
 
-std::string backend_name(grass_backend b) { return b == GRASS_BACKEND_GL ? "gl" : b == GRASS_BACKEND_VULKAN ? "vk" : "none"; }
+std::string backend_name(grass_backend b) {
+    return b == GRASS_BACKEND_GL ? "gl" : b == GRASS_BACKEND_VULKAN ? "vk" : "none";
+}
 
 std::vector<grass_backend> enabled_backends() {
     std::vector<grass_backend> b;

@@ -44,11 +44,11 @@ protected:
     // above its centre looking straight down (50 degree fov); the camera moves `step_m` along
     // +x, `steps` times. The field is destroyed afterwards.
     struct CameraSteps {
-        std::vector<grass_host::Image> frames;      // steps + 1
-        std::vector<double> shift;                  // grass centroid (px) minus the first frame's
-        double slope = 0.0;                         // px per step, least-squares through zero (< 0: the
-                                                    // grass moves left as the camera moves right)
-        double px_per_step = 0.0;                   // |slope|
+        std::vector<grass_host::Image> frames;       // steps + 1
+        std::vector<double> shift;                   // grass centroid (px) minus the first frame's
+        double slope = 0.0;                          // px per step, least-squares through zero (< 0: the
+                                                     // grass moves left as the camera moves right)
+        double px_per_step = 0.0;                    // |slope|
         double expected_lo = 0.0, expected_hi = 0.0; // px per step for the ground .. the tallest blades
     };
     CameraSteps step_camera(double ox, double oz, int steps, double step_m, double height = 3.0, uint32_t cells = 8);

@@ -19,9 +19,7 @@ const double kEye[3] = {2.0, 3.0, -10.0};
 const double kTarget[3] = {2.0, 0.25, 0.5};
 constexpr float kFov = 20.0f;
 
-double ramp_texel(uint32_t i) {
-    return std::clamp(((i + 0.5) / kRampTexels - 0.25) / 0.5, 0.0, 1.0);
-}
+double ramp_texel(uint32_t i) { return std::clamp(((i + 0.5) / kRampTexels - 0.25) / 0.5, 0.0, 1.0); }
 
 // The map as the GPU samples it: bilinear between texel centres, clamped at the edges.
 double ramp_height(double x_metres) {
@@ -61,7 +59,8 @@ protected:
         return id;
     }
 
-    static constexpr double kSkirtPx = 3.0; // a cell's skirt on the ramp: its terrain range with the bilinear neighbours
+    static constexpr double kSkirtPx =
+        3.0; // a cell's skirt on the ramp: its terrain range with the bilinear neighbours
 
     // The lowest grass pixel row of every column (-1: none).
     std::vector<int> bottom_rows(const grass_host::Image& image) const {
@@ -100,7 +99,8 @@ protected:
         d.maps.height_scale = float(kRampScale);
         make_field(d);
         const auto image_ramp = render(v);
-        const std::string tag = backend_name(GetParam()) + "." + std::to_string(int(kind)) + (debug_view ? ".debug" : "");
+        const std::string tag =
+            backend_name(GetParam()) + "." + std::to_string(int(kind)) + (debug_view ? ".debug" : "");
         save(image_flat, tag + ".flat");
         save(image_ramp, tag + ".ramp");
         const std::vector<int> flat_rows = bottom_rows(image_flat), ramp_rows = bottom_rows(image_ramp);
@@ -138,9 +138,11 @@ protected:
             worst = std::max(worst, std::abs(e));
             raised = std::max(raised, flat_y - ramp_y);
         }
-        std::printf("[ measured ] %s tier %d%s: %d columns, %d within 1.5 px of the ramp, %d within 0.75 px, worst %.1f px, "
-                    "%d flat rows on the ground line; the ramp rises %.1f px\n",
-                    backend_name(GetParam()).c_str(), int(kind), debug_view ? " (debug view)" : "", columns, close, exact, worst, flat_on_ground, raised);
+        std::printf(
+            "[ measured ] %s tier %d%s: %d columns, %d within 1.5 px of the ramp, %d within 0.75 px, worst %.1f px, "
+            "%d flat rows on the ground line; the ramp rises %.1f px\n",
+            backend_name(GetParam()).c_str(), int(kind), debug_view ? " (debug view)" : "", columns, close, exact,
+            worst, flat_on_ground, raised);
         ASSERT_GT(columns, int(w) / (debug_view ? 3 : 2)); // the debug boxes leave gaps
         ASSERT_GT(raised, 10.0) << "the ramp must show";
         EXPECT_GE(close, columns * 9 / 10) << "the grass follows the terrain";
@@ -149,13 +151,9 @@ protected:
     }
 };
 
-TEST_P(TerrainDisplacementTest, BladeRootsSitOnTheTerrain) {
-    check_follows_the_ramp(GRASS_TIER_GEOMETRY, 0.0);
-}
+TEST_P(TerrainDisplacementTest, BladeRootsSitOnTheTerrain) { check_follows_the_ramp(GRASS_TIER_GEOMETRY, 0.0); }
 
-TEST_P(TerrainDisplacementTest, TheVolumeTierStandsOnTheTerrain) {
-    check_follows_the_ramp(GRASS_TIER_VOLUME, 0.0);
-}
+TEST_P(TerrainDisplacementTest, TheVolumeTierStandsOnTheTerrain) { check_follows_the_ramp(GRASS_TIER_VOLUME, 0.0); }
 
 TEST_P(TerrainDisplacementTest, TheImageTierLiesOnTheTerrain) {
     // The quad floats half the slice height (about 0.1 m) above the ground.

@@ -88,12 +88,14 @@ TEST_P(TierDensityTest, ThinGrassCoversAboutAsMuchInEveryTier) {
     }
     // A resolved pixel is the sky and the grass mixed by the covered share of its samples.
     auto coverage = [&](const grass_host::Image& im, int k) {
-        const double full_distance = std::fabs(grass_colour[k][0] - sky_d[0]) + std::fabs(grass_colour[k][1] - sky_d[1]) +
+        const double full_distance = std::fabs(grass_colour[k][0] - sky_d[0]) +
+                                     std::fabs(grass_colour[k][1] - sky_d[1]) +
                                      std::fabs(grass_colour[k][2] - sky_d[2]);
         double sum = 0.0;
         for (uint32_t y = 0; y < im.height; ++y) {
             for (uint32_t x = 0; x < im.width; ++x) {
-                if (footprint[size_t(y) * im.width + x]) sum += std::min(1.0, distance(im.pixel(x, y), sky_d) / full_distance);
+                if (footprint[size_t(y) * im.width + x])
+                    sum += std::min(1.0, distance(im.pixel(x, y), sky_d) / full_distance);
             }
         }
         return sum / double(area);

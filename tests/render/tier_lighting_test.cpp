@@ -69,9 +69,7 @@ TEST_P(TierLightingTest, TheSameCellsLookAlikeInEveryTier) {
         const double c = byte / 255.0;
         return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
     };
-    auto srgb = [](double l) {
-        return 255.0 * (l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055);
-    };
+    auto srgb = [](double l) { return 255.0 * (l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055); };
     double coverage[3] = {0, 0, 0}, mean[3][3] = {};
     for (int k = 0; k < 3; ++k) {
         const grass_host::Image& black = images[0][k];
@@ -80,7 +78,8 @@ TEST_P(TierLightingTest, TheSameCellsLookAlikeInEveryTier) {
         for (uint32_t y = 0; y < black.height; ++y) {
             for (uint32_t x = 0; x < black.width; ++x) {
                 double c = 0.0;
-                for (int ch = 0; ch < 3; ++ch) c += 1.0 - (linear(white.pixel(x, y)[ch]) - linear(black.pixel(x, y)[ch]));
+                for (int ch = 0; ch < 3; ++ch)
+                    c += 1.0 - (linear(white.pixel(x, y)[ch]) - linear(black.pixel(x, y)[ch]));
                 c = std::clamp(c / 3.0, 0.0, 1.0);
                 covered += c;
                 for (int ch = 0; ch < 3; ++ch) sum[ch] += linear(black.pixel(x, y)[ch]);

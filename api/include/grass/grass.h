@@ -78,15 +78,15 @@ extern "C" {
     ((uint32_t)((GRASS_VERSION_MAJOR << 22) | (GRASS_VERSION_MINOR << 12) | GRASS_VERSION_PATCH))
 
 #if defined(_WIN32) && defined(GRASS_SHARED)
-#  ifdef GRASS_BUILDING
-#    define GRASS_API __declspec(dllexport)
-#  else
-#    define GRASS_API __declspec(dllimport)
-#  endif
+#    ifdef GRASS_BUILDING
+#        define GRASS_API __declspec(dllexport)
+#    else
+#        define GRASS_API __declspec(dllimport)
+#    endif
 #elif defined(__GNUC__)
-#  define GRASS_API __attribute__((visibility("default")))
+#    define GRASS_API __attribute__((visibility("default")))
 #else
-#  define GRASS_API
+#    define GRASS_API
 #endif
 
 /* The version of the library that is linked (same encoding as GRASS_HEADER_VERSION). */
@@ -142,25 +142,25 @@ typedef enum grass_message_id {
     GRASS_MSG_NULL_ARGUMENT = 100,
     GRASS_MSG_WRONG_STRUCT_TYPE = 101,
     GRASS_MSG_NEXT_NOT_NULL = 102,
-    GRASS_MSG_NOT_FINITE = 103,       /* NaN or infinity in a number */
-    GRASS_MSG_OUT_OF_RANGE = 104,     /* a number outside its documented range */
-    GRASS_MSG_RANGE_INVERTED = 105,   /* a min greater than its max */
+    GRASS_MSG_NOT_FINITE = 103,     /* NaN or infinity in a number */
+    GRASS_MSG_OUT_OF_RANGE = 104,   /* a number outside its documented range */
+    GRASS_MSG_RANGE_INVERTED = 105, /* a min greater than its max */
     GRASS_MSG_ZERO_CELLS = 106,
     /* a matrix the call cannot use: a field's base_transform that is not a proper rotation
      * (orthonormal within 1e-5, no mirroring) plus translation with last row (0, 0, 0, 1);
      * a singular view rotation; an all-zero projection; a singular maps.cell_to_map */
     GRASS_MSG_BAD_TRANSFORM = 107,
-    GRASS_MSG_BAD_MAP = 108,          /* a design map of bad size, pitch or format */
+    GRASS_MSG_BAD_MAP = 108, /* a design map of bad size, pitch or format */
     GRASS_MSG_BAD_ENUM = 109,
     GRASS_MSG_ZERO_VECTOR = 110,
-    GRASS_MSG_MAP_ROLE = 111,         /* a map whose format does not fit its role in a map stack */
-    GRASS_MSG_MAP_REGION = 112,       /* a map update outside the map or of another format */
-    GRASS_MSG_IN_GRASS_TYPE = 113,    /* warning after an error: which grass type of a desc->next chain it is in */
+    GRASS_MSG_MAP_ROLE = 111,      /* a map whose format does not fit its role in a map stack */
+    GRASS_MSG_MAP_REGION = 112,    /* a map update outside the map or of another format */
+    GRASS_MSG_IN_GRASS_TYPE = 113, /* warning after an error: which grass type of a desc->next chain it is in */
     /* 2xx: handles and lifetime */
     GRASS_MSG_STALE_HANDLE = 200,
     GRASS_MSG_FOREIGN_HANDLE = 201,
     GRASS_MSG_NULL_HANDLE = 202,
-    GRASS_MSG_PATCH_IN_USE = 203,      /* also: a map still used by a field */
+    GRASS_MSG_PATCH_IN_USE = 203, /* also: a map still used by a field */
     GRASS_MSG_TOO_MANY_OBJECTS = 204,
     /* 3xx: call order */
     GRASS_MSG_FRAME_NOT_BEGUN = 300,
@@ -172,7 +172,7 @@ typedef enum grass_message_id {
     GRASS_MSG_DEVICE_UNSUPPORTED = 401,
     GRASS_MSG_BACKEND_CALL_FAILED = 402,
     GRASS_MSG_OUT_OF_MEMORY = 403,
-    GRASS_MSG_INTERNAL_ERROR = 404,   /* a broken internal invariant (a bug in grass, not the host's): the frame
+    GRASS_MSG_INTERNAL_ERROR = 404, /* a broken internal invariant (a bug in grass, not the host's): the frame
                                        * plan, a field's maps or a baked slice set disagree with what the core
                                        * uploaded. Returned as GRASS_ERROR_INVALID_STATE: the context's state
                                        * cannot serve the call; the same in every backend. Please report it. */
@@ -183,8 +183,7 @@ typedef enum grass_message_id {
 
 /* Called for every message the context emits. `message` is one English sentence that
  * names the call, the argument and the value. */
-typedef void (*grass_log_fn)(void* user_data, grass_log_level level, grass_message_id id,
-                             const char* message);
+typedef void (*grass_log_fn)(void* user_data, grass_log_level level, grass_message_id id, const char* message);
 
 /* ---- Allocation ------------------------------------------------------------------- */
 
@@ -201,17 +200,17 @@ typedef struct grass_allocator {
 typedef struct grass_context grass_context; /* opaque */
 
 typedef enum grass_depth_mode {
-    GRASS_DEPTH_LESS = 0,    /* depth 0 is near: classic, the default */
-    GRASS_DEPTH_GREATER = 1  /* depth 1 is near: reversed-Z hosts */
+    GRASS_DEPTH_LESS = 0,   /* depth 0 is near: classic, the default */
+    GRASS_DEPTH_GREATER = 1 /* depth 1 is near: reversed-Z hosts */
 } grass_depth_mode;
 
 typedef struct grass_context_desc {
-    grass_struct_type type;     /* GRASS_STRUCT_TYPE_CONTEXT_DESC */
-    const void* next;           /* NULL */
-    grass_allocator allocator;  /* default: all NULL = malloc/free */
-    grass_log_fn log_fn;        /* default NULL: messages are dropped */
+    grass_struct_type type;    /* GRASS_STRUCT_TYPE_CONTEXT_DESC */
+    const void* next;          /* NULL */
+    grass_allocator allocator; /* default: all NULL = malloc/free */
+    grass_log_fn log_fn;       /* default NULL: messages are dropped */
     void* log_user_data;
-    grass_log_level log_level;  /* highest level passed to log_fn; default GRASS_LOG_WARNING */
+    grass_log_level log_level;   /* highest level passed to log_fn; default GRASS_LOG_WARNING */
     grass_depth_mode depth_mode; /* the host's depth convention; default GRASS_DEPTH_LESS */
     /* A directory where baked slices (the volume and image tiers' textures) are cached,
      * keyed by a hash of the patch desc, so a host starts fast the second time. NULL (the
@@ -232,11 +231,7 @@ GRASS_API grass_result grass_create_context(uint32_t header_version, const grass
  * context current (GL). */
 GRASS_API void grass_destroy_context(grass_context* context);
 
-typedef enum grass_backend {
-    GRASS_BACKEND_NONE = 0,
-    GRASS_BACKEND_GL = 1,
-    GRASS_BACKEND_VULKAN = 2
-} grass_backend;
+typedef enum grass_backend { GRASS_BACKEND_NONE = 0, GRASS_BACKEND_GL = 1, GRASS_BACKEND_VULKAN = 2 } grass_backend;
 
 GRASS_API grass_backend grass_get_context_backend(const grass_context* context);
 
@@ -249,7 +244,7 @@ typedef struct grass_memory_stats {
     uint64_t host_allocations; /* live host allocations */
     uint64_t gpu_bytes;        /* GPU memory the backend holds (buffers + textures) */
     /* 0.4: */
-    uint64_t host_bytes_peak;  /* the highest host_bytes since the context was created */
+    uint64_t host_bytes_peak; /* the highest host_bytes since the context was created */
 } grass_memory_stats;
 
 GRASS_API grass_result grass_get_memory_stats(const grass_context* context, grass_memory_stats* out_stats);
@@ -299,10 +294,10 @@ typedef enum grass_threshold_mode {
  * patch; tips may reach outside it. All lengths are in patch units (cell edge = 1).
  * Every min/max pair must satisfy 0 <= min <= max. */
 typedef struct grass_patch_desc {
-    grass_struct_type type;     /* GRASS_STRUCT_TYPE_PATCH_DESC */
-    const void* next;           /* NULL */
-    uint32_t blade_count;       /* blades per patch, 1..65536; default 384 */
-    uint32_t subdivisions;      /* quads along a blade, 1..32; default 4 */
+    grass_struct_type type;       /* GRASS_STRUCT_TYPE_PATCH_DESC */
+    const void* next;             /* NULL */
+    uint32_t blade_count;         /* blades per patch, 1..65536; default 384 */
+    uint32_t subdivisions;        /* quads along a blade, 1..32; default 4 */
     float length_min, length_max; /* blade arc length; default 0.45 .. 0.85 */
     float width_min, width_max;   /* blade width at the root; default 0.018 .. 0.032 */
     float tilt_min, tilt_max;     /* radians from vertical at the root, 0..1.5; default 0.05 .. 0.55 */
@@ -312,11 +307,11 @@ typedef struct grass_patch_desc {
     float blade_color_variation;  /* 0..1: per-blade darkening and hue shift; default 0.35 */
     float vertex_color_variation; /* 0..1: per-vertex modulation; default 0.08 */
     grass_threshold_mode threshold_mode; /* default GRASS_THRESHOLD_CLUSTERED */
-    float cluster_sigma;          /* clustered mode: Gaussian width, 0..1; default 0.12 */
-    uint32_t cluster_frequency;   /* clustered mode: noise periods per patch, 1..64; default 3 */
-    float ao_impact;              /* B_impact of lemme eq. 6.11, 0..1; default 0.65 */
-    float ao_height;              /* B_height of eq. 6.11 in patch units, > 0; default 0.55 */
-    uint64_t seed;                /* default 1; the same desc and seed give identical blades */
+    float cluster_sigma;                 /* clustered mode: Gaussian width, 0..1; default 0.12 */
+    uint32_t cluster_frequency;          /* clustered mode: noise periods per patch, 1..64; default 3 */
+    float ao_impact;                     /* B_impact of lemme eq. 6.11, 0..1; default 0.65 */
+    float ao_height;                     /* B_height of eq. 6.11 in patch units, > 0; default 0.55 */
+    uint64_t seed;                       /* default 1; the same desc and seed give identical blades */
 } grass_patch_desc;
 
 GRASS_API grass_patch_desc grass_default_patch_desc(void);
@@ -332,10 +327,10 @@ GRASS_API grass_result grass_destroy_patch(grass_context* context, grass_patch_i
 typedef struct grass_patch_info {
     uint32_t blade_count;
     uint32_t vertex_count;
-    uint32_t triangle_count;   /* per patch instance, all blades drawn */
-    float bounds_min[3];       /* patch units; tips may leave the unit square */
+    uint32_t triangle_count; /* per patch instance, all blades drawn */
+    float bounds_min[3];     /* patch units; tips may leave the unit square */
     float bounds_max[3];
-    uint64_t content_hash;     /* FNV-1a 64 of the generated blade data: pins determinism */
+    uint64_t content_hash; /* FNV-1a 64 of the generated blade data: pins determinism */
 } grass_patch_info;
 
 GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_patch_id patch,
@@ -407,7 +402,7 @@ typedef struct grass_map_stack {
     /* Single-channel: the terrain height along the field's up axis, times height_scale
      * metres (lemme 6.4.4). Every tier is displaced by it. */
     grass_map_id height;
-    float height_scale;      /* metres for a height-map value of 1; finite, 0..1e5; default 1 */
+    float height_scale; /* metres for a height-map value of 1; finite, 0..1e5; default 1 */
     /* Cell space to map space (lemme's configTf): map (u, v) = (m[0] x + m[2] z + m[4],
      * m[1] x + m[3] z + m[5]) for a point (x, z) of the field in cells. All zero (the
      * default): the maps span the whole field, u = x / cells_x, v = z / cells_z. Another
@@ -431,29 +426,29 @@ typedef enum grass_tier_kind {
 
 typedef struct grass_tier_desc {
     grass_tier_kind kind;
-    uint32_t slices;          /* volume tiers: vertical slices per axis, 1..64; 0 for the others */
+    uint32_t slices; /* volume tiers: vertical slices per axis, 1..64; 0 for the others */
 } grass_tier_desc;
 
 /* What a lod test answers for a quadtree node. */
 typedef enum grass_lod_answer {
-    GRASS_LOD_DISCARD = 0,    /* the node and its subtree are not drawn by this test's tier */
-    GRASS_LOD_SPLIT = 1,      /* ask again for the node's children (a cell is drawn instead) */
-    GRASS_LOD_DRAW = 2        /* draw the node whole (a macro-cell unless it is one cell) */
+    GRASS_LOD_DISCARD = 0, /* the node and its subtree are not drawn by this test's tier */
+    GRASS_LOD_SPLIT = 1,   /* ask again for the node's children (a cell is drawn instead) */
+    GRASS_LOD_DRAW = 2     /* draw the node whole (a macro-cell unless it is one cell) */
 } grass_lod_answer;
 
 /* A quadtree node as a lod test sees it. Level 0 nodes are cells; a node of level k spans
  * up to 2^k x 2^k cells (fewer at the field's far edges). */
 typedef struct grass_lod_node {
     uint32_t level;
-    uint32_t cell_x, cell_z;     /* its first cell */
-    uint32_t cells_x, cells_z;   /* cells it spans */
-    uint32_t tier;               /* index of the tier the asking test feeds */
-    double center[3];            /* world-space bounding sphere of its box */
+    uint32_t cell_x, cell_z;   /* its first cell */
+    uint32_t cells_x, cells_z; /* cells it spans */
+    uint32_t tier;             /* index of the tier the asking test feeds */
+    double center[3];          /* world-space bounding sphere of its box */
     double radius;
-    double distance_min;         /* metres from the camera to the nearest point of its box */
-    double distance_max;         /* ... and to the farthest */
-    double height_min;           /* metres: the lowest terrain height under the node (0 without a height map) */
-    double height_max;           /* ... and the highest */
+    double distance_min; /* metres from the camera to the nearest point of its box */
+    double distance_max; /* ... and to the farthest */
+    double height_min;   /* metres: the lowest terrain height under the node (0 without a height map) */
+    double height_max;   /* ... and the highest */
 } grass_lod_node;
 
 typedef grass_lod_answer (*grass_lod_test_fn)(void* user_data, const grass_lod_node* node);
@@ -488,20 +483,20 @@ typedef enum grass_lod_test_kind {
  * lemme figure 6.3). A geometry tier draws cells only: it splits a larger node. */
 typedef struct grass_lod_test {
     grass_lod_test_kind kind;
-    uint32_t tier;               /* index into grass_field_desc.tiers */
-    float begin, end;            /* DISTANCE_BAND: metres, 0 <= begin < end; end may be INFINITY */
-    float transition_in;         /* DISTANCE_BAND: metres, >= 0 */
-    float transition_out;        /* DISTANCE_BAND: metres, >= 0 */
+    uint32_t tier;        /* index into grass_field_desc.tiers */
+    float begin, end;     /* DISTANCE_BAND: metres, 0 <= begin < end; end may be INFINITY */
+    float transition_in;  /* DISTANCE_BAND: metres, >= 0 */
+    float transition_out; /* DISTANCE_BAND: metres, >= 0 */
     /* DISTANCE_BAND: a node that crosses begin or end is drawn whole (instead of split
      * down to cells) once its side is at most edge_ratio times its distance from the
      * camera: 0 = exact edges, more = fewer nodes and instances for some drawing beyond the
      * band (where the tier's blades are faded out). 0..1. */
     float edge_ratio;
-    uint32_t max_macro_cells;    /* MACRO_CELL: cells, >= 1 */
-    grass_lod_test_fn callback;  /* CALLBACK: required; called during grass_begin_frame */
-    void* user_data;             /* CALLBACK */
-    float max_unplanarity;       /* UNPLANARITY: metres, >= 0 */
-    float unplanarity_ratio;     /* UNPLANARITY: metres of height range allowed per metre of distance, 0..1 */
+    uint32_t max_macro_cells;   /* MACRO_CELL: cells, >= 1 */
+    grass_lod_test_fn callback; /* CALLBACK: required; called during grass_begin_frame */
+    void* user_data;            /* CALLBACK */
+    float max_unplanarity;      /* UNPLANARITY: metres, >= 0 */
+    float unplanarity_ratio;    /* UNPLANARITY: metres of height range allowed per metre of distance, 0..1 */
 } grass_lod_test;
 
 #define GRASS_DEFAULT_TIER_COUNT 5
@@ -534,18 +529,18 @@ typedef enum grass_quality_level {
 
 /* The knobs behind the presets. Each one trades speed for accuracy (docs/quality.md). */
 typedef struct grass_quality_desc {
-    grass_struct_type type;        /* GRASS_STRUCT_TYPE_QUALITY_DESC */
-    const void* next;              /* NULL */
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_QUALITY_DESC */
+    const void* next;       /* NULL */
     /* Blades at every distance (one geometry tier): the reference; the knobs below that
      * shape the other tiers are then unused. */
     grass_bool blades_everywhere;
-    float distance_scale;          /* multiplies the default table's tier distances, 0.1..16; default 1 */
-    float transition_scale;        /* multiplies its transition widths (after distance_scale), 0..1.2; default 1 */
-    float slice_scale;             /* multiplies its slices per axis (8, 2, 1), rounded, at least 1, at most 64; 0.125..8 */
-    float macro_cell_scale;        /* multiplies its macro-cell limits (40, 500), rounded, at least 1; 0.025..4 */
-    uint32_t blade_subdivisions;   /* quads along a blade, 1..32; default 4 */
-    float blade_fraction;          /* of the patch's blade_count kept (at least 1 blade), (0, 1]; default 1 */
-    uint32_t msaa_samples;         /* the sample count the preset is meant for (the host owns the target): 1, 2, 4 or 8 */
+    float distance_scale;   /* multiplies the default table's tier distances, 0.1..16; default 1 */
+    float transition_scale; /* multiplies its transition widths (after distance_scale), 0..1.2; default 1 */
+    float slice_scale;      /* multiplies its slices per axis (8, 2, 1), rounded, at least 1, at most 64; 0.125..8 */
+    float macro_cell_scale; /* multiplies its macro-cell limits (40, 500), rounded, at least 1; 0.025..4 */
+    uint32_t blade_subdivisions; /* quads along a blade, 1..32; default 4 */
+    float blade_fraction;        /* of the patch's blade_count kept (at least 1 blade), (0, 1]; default 1 */
+    uint32_t msaa_samples;       /* the sample count the preset is meant for (the host owns the target): 1, 2, 4 or 8 */
 } grass_quality_desc;
 
 /* The knobs of a preset. */
@@ -565,26 +560,26 @@ GRASS_API grass_result grass_apply_quality(grass_context* context, const grass_q
 /* Field space: cell (i, j) covers [i, i+1] x [j, j+1] cell edges along x and z, y up.
  * base_transform maps field space scaled by cell_size (metres) to world space. */
 typedef struct grass_field_desc {
-    grass_struct_type type;      /* GRASS_STRUCT_TYPE_FIELD_DESC */
-    const void* next;            /* NULL, or a chain of grass_grass_type_desc: more grass types */
-    grass_patch_id patch;        /* required */
-    uint32_t cells_x, cells_z;   /* 1 .. 2^30 each; no default (0 is refused) */
-    double cell_size;            /* metres per cell edge, 1e-4 .. 1e4; default 0.25 */
-    double base_transform[16];   /* column-major, rotation + translation only, the translation
+    grass_struct_type type;    /* GRASS_STRUCT_TYPE_FIELD_DESC */
+    const void* next;          /* NULL, or a chain of grass_grass_type_desc: more grass types */
+    grass_patch_id patch;      /* required */
+    uint32_t cells_x, cells_z; /* 1 .. 2^30 each; no default (0 is refused) */
+    double cell_size;          /* metres per cell edge, 1e-4 .. 1e4; default 0.25 */
+    double base_transform[16]; /* column-major, rotation + translation only, the translation
                                     within +-1e12 m (as the camera); default identity */
-    float density;               /* uniform density 0..1 where no map is given, or the map's
+    float density;             /* uniform density 0..1 where no map is given, or the map's
                                     multiplier; default 1 */
     /* Optional, NULL = uniform density: a single-channel density map copied into this field
      * alone and spanning it (the shortcut for maps.density, which is refused with it). */
     const grass_map_desc* density_map;
-    grass_bool mirror_tiling;    /* mirror each cell along x and/or z at random; default 1 */
-    uint32_t mirror_seed;        /* selects the mirror pattern; default 0 */
+    grass_bool mirror_tiling; /* mirror each cell along x and/or z at random; default 1 */
+    uint32_t mirror_seed;     /* selects the mirror pattern; default 0 */
     /* The tiers and the lod tests that choose them per quadtree node. Both NULL (counts 0):
      * grass_default_lod_setup(cell_size). Copied at creation. */
     const grass_tier_desc* tiers;
-    uint32_t tier_count;         /* 1..GRASS_MAX_TIERS */
+    uint32_t tier_count; /* 1..GRASS_MAX_TIERS */
     const grass_lod_test* lod_tests;
-    uint32_t lod_test_count;     /* 1..GRASS_MAX_LOD_TESTS; every tier needs at least one */
+    uint32_t lod_test_count; /* 1..GRASS_MAX_LOD_TESTS; every tier needs at least one */
     /* Where two tiers share a transition zone each blade is drawn by one of them; a blade
      * crossing over fades out of one tier as it fades into the other over this half-width,
      * in density-threshold units (lemme2012 eq. 5.26). Needs a multisampled target to show
@@ -656,9 +651,9 @@ typedef enum grass_view_flags {
 
 /* The camera and lights of one frame. */
 typedef struct grass_view_desc {
-    grass_struct_type type;      /* GRASS_STRUCT_TYPE_VIEW_DESC */
-    const void* next;            /* NULL */
-    double camera_position[3];   /* world space, metres, within +-1e12 m each */
+    grass_struct_type type;    /* GRASS_STRUCT_TYPE_VIEW_DESC */
+    const void* next;          /* NULL */
+    double camera_position[3]; /* world space, metres, within +-1e12 m each */
     /* World-to-eye matrix, column-major. Only its rotation is used: translation comes
      * from camera_position, so a host may pass a view built at the origin. */
     float view[16];
@@ -682,12 +677,12 @@ typedef struct grass_view_desc {
      * target; grass does not know the target's size and draws nothing where the rectangle
      * misses it, silently. */
     int32_t viewport[4];
-    float sun_direction[3];      /* world-space direction towards the sun; not zero;
+    float sun_direction[3]; /* world-space direction towards the sun; not zero;
                                     default (0.35, 0.8, 0.25) */
-    float sun_color[3];          /* linear RGB irradiance; default (1.0, 0.95, 0.85) */
-    float ambient_color[3];      /* linear RGB; default (0.30, 0.36, 0.45) */
-    double time;                 /* seconds; reserved for wind, default 0 */
-    uint32_t flags;              /* grass_view_flags; default 0 */
+    float sun_color[3];     /* linear RGB irradiance; default (1.0, 0.95, 0.85) */
+    float ambient_color[3]; /* linear RGB; default (0.30, 0.36, 0.45) */
+    double time;            /* seconds; reserved for wind, default 0 */
+    uint32_t flags;         /* grass_view_flags; default 0 */
 } grass_view_desc;
 
 GRASS_API grass_view_desc grass_default_view_desc(void);
@@ -699,21 +694,21 @@ GRASS_API grass_result grass_end_frame(grass_context* context);
 
 typedef struct grass_frame_stats {
     uint64_t fields_drawn;
-    uint64_t nodes_visited;      /* quadtree nodes the traversal reached */
-    uint64_t cells_drawn;        /* geometry-tier patch instances (cells) */
-    uint64_t blades_submitted;   /* cells_drawn x blades per patch */
-    uint64_t blades_drawn;       /* blades the geometry tier draws, from the density and the
+    uint64_t nodes_visited;    /* quadtree nodes the traversal reached */
+    uint64_t cells_drawn;      /* geometry-tier patch instances (cells) */
+    uint64_t blades_submitted; /* cells_drawn x blades per patch */
+    uint64_t blades_drawn;     /* blades the geometry tier draws, from the density and the
                                     tier transitions at each cell's centre: exact without a map
                                     and away from transition zones, an estimate elsewhere */
-    uint64_t triangles;          /* triangles of the drawn blades */
-    double plan_ms;              /* CPU time of the frame plan */
-    uint64_t lod_test_calls;     /* lod test evaluations */
-    uint64_t nodes_culled;       /* nodes rejected by the view-frustum test */
+    uint64_t triangles;        /* triangles of the drawn blades */
+    double plan_ms;            /* CPU time of the frame plan */
+    uint64_t lod_test_calls;   /* lod test evaluations */
+    uint64_t nodes_culled;     /* nodes rejected by the view-frustum test */
     /* Per tier kind (grass_tier_kind), summed over fields and tiers of that kind: */
     uint64_t instances[GRASS_TIER_KIND_COUNT];   /* cells plus macro-cells drawn */
     uint64_t macro_cells[GRASS_TIER_KIND_COUNT]; /* instances larger than one cell */
     uint64_t cells[GRASS_TIER_KIND_COUNT];       /* cells those instances cover */
-    uint64_t nodes_empty;        /* nodes discarded, subtree and all, because their density is zero everywhere */
+    uint64_t nodes_empty; /* nodes discarded, subtree and all, because their density is zero everywhere */
     /* 0.4: */
     /* Instanced draws in the frame plan: one per field (each grass type counts as a field)
      * and tier that draws at least one instance. Each grass_gl_render() or grass_vk_record()
@@ -733,7 +728,8 @@ GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass
  * nothing or draw GRASS_VIEW_FLAG_DEBUG_CELLS are not timed. Several draw calls of one
  * frame (grass_gl_render, grass_vk_record) add up. GL: the host's GL context must be
  * current; Vulkan: call grass_vk_prepare_frame every frame (it resets the queries). */
-GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, double out_ms[GRASS_TIER_KIND_COUNT], grass_bool* out_available);
+GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, double out_ms[GRASS_TIER_KIND_COUNT],
+                                             grass_bool* out_available);
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -24,8 +24,8 @@ typedef void (*grass_gl_proc)(void);
 typedef grass_gl_proc (*grass_gl_get_proc_address_fn)(void* user_data, const char* name);
 
 typedef struct grass_gl_desc {
-    grass_struct_type type;                      /* GRASS_STRUCT_TYPE_GL_DESC */
-    const void* next;                            /* NULL */
+    grass_struct_type type;                        /* GRASS_STRUCT_TYPE_GL_DESC */
+    const void* next;                              /* NULL */
     grass_gl_get_proc_address_fn get_proc_address; /* required */
     void* get_proc_address_user_data;
 } grass_gl_desc;

@@ -35,21 +35,21 @@ extern "C" {
 typedef void (*(*grass_vk_get_instance_proc_addr_fn)(void* instance, const char* name))(void);
 
 typedef struct grass_vk_desc {
-    grass_struct_type type;        /* GRASS_STRUCT_TYPE_VK_DESC */
-    const void* next;              /* NULL */
+    grass_struct_type type;                                    /* GRASS_STRUCT_TYPE_VK_DESC */
+    const void* next;                                          /* NULL */
     grass_vk_get_instance_proc_addr_fn get_instance_proc_addr; /* required */
-    void* instance;                /* VkInstance, required */
-    void* physical_device;         /* VkPhysicalDevice, required */
-    void* device;                  /* VkDevice, required; Vulkan 1.1 or newer */
-    uint32_t queue_family;         /* the family of the queue the host submits grass work on */
+    void* instance;                                            /* VkInstance, required */
+    void* physical_device;                                     /* VkPhysicalDevice, required */
+    void* device;                                              /* VkDevice, required; Vulkan 1.1 or newer */
+    uint32_t queue_family; /* the family of the queue the host submits grass work on */
     /* Either a render pass (the plugin draws in its subpass `subpass`) ... */
-    uint64_t render_pass;          /* VkRenderPass, or 0 for dynamic rendering */
-    uint32_t subpass;              /* default 0 */
+    uint64_t render_pass; /* VkRenderPass, or 0 for dynamic rendering */
+    uint32_t subpass;     /* default 0 */
     /* ... or dynamic rendering (render_pass = 0; the host enabled dynamicRendering). */
-    uint32_t color_format;         /* VkFormat of the single colour attachment */
-    uint32_t depth_format;         /* VkFormat of the depth attachment, required */
-    uint32_t sample_count;         /* VkSampleCountFlagBits of the pass: 1, 2, 4, 8...; default 1 */
-    uint32_t frames_in_flight;     /* 1..8; default 2 */
+    uint32_t color_format;     /* VkFormat of the single colour attachment */
+    uint32_t depth_format;     /* VkFormat of the depth attachment, required */
+    uint32_t sample_count;     /* VkSampleCountFlagBits of the pass: 1, 2, 4, 8...; default 1 */
+    uint32_t frames_in_flight; /* 1..8; default 2 */
 } grass_vk_desc;
 
 GRASS_API grass_vk_desc grass_default_vk_desc(void);
@@ -63,9 +63,9 @@ GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const gr
 GRASS_API grass_result grass_vk_prepare_frame(grass_context* context, void* command_buffer);
 
 typedef struct grass_vk_record_desc {
-    grass_struct_type type;        /* GRASS_STRUCT_TYPE_VK_RECORD_DESC */
-    const void* next;              /* NULL */
-    void* command_buffer;          /* VkCommandBuffer inside the host's render pass */
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_RECORD_DESC */
+    const void* next;       /* NULL */
+    void* command_buffer;   /* VkCommandBuffer inside the host's render pass */
 } grass_vk_record_desc;
 
 GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);

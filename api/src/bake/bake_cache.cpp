@@ -1,16 +1,16 @@
 #include "bake/bake_cache.hpp"
 
-#include "patch/random.hpp"
 #include "bake/slice_baker.hpp"
 #include "bake/slice_mips.hpp"
 #include "bake/slice_set_hash.hpp"
+#include "patch/random.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
-#include <algorithm>
 #include <type_traits>
 
 namespace grass {
@@ -18,8 +18,8 @@ namespace grass {
 namespace {
 
 constexpr char kMagic[8] = {'G', 'R', 'S', 'L', 'I', 'C', 'E', 'S'};
-constexpr size_t kHeaderBytes = 72; // the last 8: FNV-1a 64 of the first 64
-constexpr uint32_t kMaxSize = 16384;      // texels along s or t
+constexpr size_t kHeaderBytes = 72;  // the last 8: FNV-1a 64 of the first 64
+constexpr uint32_t kMaxSize = 16384; // texels along s or t
 constexpr uint32_t kMaxSlicesPerAxis = 1024;
 constexpr size_t kMaxPath = 4096;
 
@@ -195,7 +195,8 @@ bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceS
         set.normal.resize(texels * 4);
         set.threshold.resize(texels * 4);
         const uint64_t values = texels * 4; // threshold + coverage curve per texel
-        if (!read_exact(f, set.color.data(), set.color.size()) || !read_exact(f, set.normal.data(), set.normal.size())) {
+        if (!read_exact(f, set.color.data(), set.color.size()) ||
+            !read_exact(f, set.normal.data(), set.normal.size())) {
             break;
         }
         bool read_ok = true;
@@ -242,10 +243,9 @@ bool store_baked(const char* directory, uint64_t key, const SliceSet& set) {
     // A name no other writer uses at the same time (a process-wide counter, a stack address
     // and the clock); two writers of one key write the same bytes anyway.
     static std::atomic<uint64_t> counter{0};
-    const uint64_t unique = (counter.fetch_add(1) + 1) * 0x9e3779b97f4a7c15ull ^
-                            static_cast<uint64_t>(reinterpret_cast<uintptr_t>(&path)) ^
-                            static_cast<uint64_t>(std::time(nullptr)) * 0xc2b2ae3d27d4eb4full ^
-                            static_cast<uint64_t>(std::clock());
+    const uint64_t unique =
+        (counter.fetch_add(1) + 1) * 0x9e3779b97f4a7c15ull ^ static_cast<uint64_t>(reinterpret_cast<uintptr_t>(&path)) ^
+        static_cast<uint64_t>(std::time(nullptr)) * 0xc2b2ae3d27d4eb4full ^ static_cast<uint64_t>(std::clock());
     std::snprintf(suffix, sizeof(suffix), ".tmp-%016llx", static_cast<unsigned long long>(unique));
     if (!file_path(directory, key, "", path, sizeof(path)) || !file_path(directory, key, suffix, temp, sizeof(temp))) {
         return false;

@@ -5,8 +5,8 @@
 // everything before it trusts anything; a store writes a temporary file and renames it.
 #pragma once
 
-#include "context/allocator.hpp"
 #include "bake/baked_slices.hpp"
+#include "context/allocator.hpp"
 
 #include <grass/grass.h>
 

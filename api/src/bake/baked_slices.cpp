@@ -1,8 +1,8 @@
 // Out-of-line parts of the SliceSet contract (baked_slices.hpp).
 #include "bake/baked_slices.hpp"
 
-#include "patch/random.hpp"
 #include "bake/slice_set_hash.hpp"
+#include "patch/random.hpp"
 
 namespace grass {
 

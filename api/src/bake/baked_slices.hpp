@@ -46,7 +46,7 @@ struct SliceSet {
     // most 1/4, 1/2 and 3/4 (the rest of the curve: 0 at 0, 1 at 1), so that a tier draws
     // alpha x (curve(high) - curve(low)) for the thresholds its density and transitions select.
     Vector<uint16_t> threshold;
-    uint64_t content_hash = 0;    // FNV-1a 64 over color, normal, threshold
+    uint64_t content_hash = 0; // FNV-1a 64 over color, normal, threshold
 
     // Offset (in texels) of mip `level` of `layer` in the arrays.
     uint64_t offset(uint32_t layer, uint32_t level) const;

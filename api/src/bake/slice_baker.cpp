@@ -31,11 +31,11 @@ struct Triangle {
 
 // What a layer sees: depth axis and its slab, the axes of s and t, the viewer side.
 struct View {
-    int depth_axis;      // 0 = x, 2 = z, 1 = y (horizontal: depth = -y)
+    int depth_axis; // 0 = x, 2 = z, 1 = y (horizontal: depth = -y)
     double slab_lo, slab_hi;
     bool clip_slab;
-    int s_axis, t_axis;  // patch axes of s and t
-    double t_scale;      // t = p[t_axis] * t_scale
+    int s_axis, t_axis; // patch axes of s and t
+    double t_scale;     // t = p[t_axis] * t_scale
     float toward_viewer[3];
 };
 
@@ -65,8 +65,8 @@ void prepare_triangles(const PatchData& patch, Vector<Triangle>* out) {
             }
         }
         const uint32_t blade = patch.vertices_per_blade ? patch.indices[k * 3] / patch.vertices_per_blade : 0;
-        tri.threshold = quantise_threshold(blade < patch.thresholds.size() ? patch.thresholds[blade]
-                                                                           : patch.vertices[patch.indices[k * 3]].threshold);
+        tri.threshold = quantise_threshold(
+            blade < patch.thresholds.size() ? patch.thresholds[blade] : patch.vertices[patch.indices[k * 3]].threshold);
     }
 }
 
@@ -125,7 +125,8 @@ void draw_view(const Vector<Triangle>& triangles, const View& view, double heigh
                     continue;
                 }
                 const int da = view.depth_axis;
-                if (view.clip_slab && (tri.hi[da] + offset[da] < view.slab_lo || tri.lo[da] + offset[da] > view.slab_hi)) {
+                if (view.clip_slab &&
+                    (tri.hi[da] + offset[da] < view.slab_lo || tri.lo[da] + offset[da] > view.slab_hi)) {
                     continue;
                 }
                 int n = 3;
@@ -224,8 +225,8 @@ void rasterize_slice_layer(const PatchData& patch, uint32_t slices_per_axis, uin
     raster.resolve(out);
 }
 
-void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t width, uint32_t height,
-                 HostAllocator* host, SliceSet* out) {
+void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t width, uint32_t height, HostAllocator* host,
+                 SliceSet* out) {
     default_sizes(slices_per_axis, &width, &height);
     const double h = patch_height(patch);
     out->slices_per_axis = slices_per_axis;

@@ -4,10 +4,10 @@
 // the coverage-preserving filters and colour bleeding of slice_mips.hpp.
 #pragma once
 
-#include "context/allocator.hpp"
 #include "bake/baked_slices.hpp"
-#include "patch/patch_data.hpp"
 #include "bake/slice_image.hpp"
+#include "context/allocator.hpp"
+#include "patch/patch_data.hpp"
 
 #include <cstdint>
 
@@ -25,8 +25,8 @@ constexpr uint32_t kDefaultHorizontalSliceSize = 128;
 // slab z in [i/N, (i+1)/N] seen along +z (viewer at -z), s = x; t = y / bounds_max[1].
 // N = 0: the single horizontal slice seen from above, s = x, t = z. Deterministic: the same
 // patch and parameters give identical bytes. `out` is overwritten.
-void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t width, uint32_t height,
-                 HostAllocator* host, SliceSet* out);
+void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t width, uint32_t height, HostAllocator* host,
+                 SliceSet* out);
 
 // Level 0 of one layer in floating point, before mip-mapping and encoding (layer numbering
 // and sizes as bake_slices, 0 sizes meaning the defaults). For tests and tools.

@@ -10,9 +10,8 @@ namespace grass {
 
 struct SliceImage {
     explicit SliceImage(HostAllocator* host)
-        : alpha(StlAllocator<float>(host)), color(StlAllocator<float>(host)),
-          normal(StlAllocator<float>(host)), threshold(StlAllocator<uint16_t>(host)),
-          coverage(StlAllocator<float>(host)) {}
+        : alpha(StlAllocator<float>(host)), color(StlAllocator<float>(host)), normal(StlAllocator<float>(host)),
+          threshold(StlAllocator<uint16_t>(host)), coverage(StlAllocator<float>(host)) {}
 
     void resize(uint32_t w, uint32_t h) {
         width = w;

@@ -55,9 +55,12 @@ double coverage_scale(const Vector<float>& raw, uint64_t target, Vector<float>* 
     }
     // a'_r of eq. 4.13: halfway between the last value that passes and the first that fails.
     double reference;
-    if (m == 0) reference = 2.0 * s[0];
-    else if (m == n) reference = 0.5 * s[n - 1];
-    else reference = 0.5 * (static_cast<double>(s[m - 1]) + static_cast<double>(s[m]));
+    if (m == 0)
+        reference = 2.0 * s[0];
+    else if (m == n)
+        reference = 0.5 * s[n - 1];
+    else
+        reference = 0.5 * (static_cast<double>(s[m - 1]) + static_cast<double>(s[m]));
     return static_cast<double>(kCoverageReference) / reference; // eq. 4.14
 }
 
@@ -106,7 +109,7 @@ void build_coverage_mips(Vector<SliceImage>* levels, uint32_t level_count, HostA
     const uint64_t base_texels = level0.texels();
 
     auto filter = [base](const SliceImage& p, uint32_t x0, uint32_t x1, uint32_t y0, uint32_t y1, SliceImage* out,
-                     size_t texel) {
+                         size_t texel) {
         double sum_a = 0, color[3] = {0, 0, 0}, normal[4] = {0, 0, 0, 0}, plain[3] = {0, 0, 0};
         double curve[3] = {0, 0, 0}, plain_curve[3] = {0, 0, 0};
         float max_a = 0;
@@ -136,11 +139,13 @@ void build_coverage_mips(Vector<SliceImage>* levels, uint32_t level_count, HostA
         for (int c = 0; c < 3; ++c) oc[c] = static_cast<float>(color[c] / s_a); // eq. 4.10
         // Mean normals stay unnormalised, so their length keeps the spread (slice_rasterizer.cpp).
         const double footprint_texels = static_cast<double>(x1 - x0) * (y1 - y0);
-        for (int c = 0; c < 3; ++c) on[c] = static_cast<float>(sum_a > 0.0 ? normal[c] / sum_a : plain[c] / footprint_texels);
+        for (int c = 0; c < 3; ++c)
+            on[c] = static_cast<float>(sum_a > 0.0 ? normal[c] / sum_a : plain[c] / footprint_texels);
         on[3] = static_cast<float>(normal[3] / s_a);
         // The coverage curve is a share of the coverage: alpha-weighted like the colour.
         for (int c = 0; c < 3; ++c) {
-            out->coverage[texel * 3 + c] = static_cast<float>(sum_a > 0.0 ? curve[c] / sum_a : plain_curve[c] / footprint_texels);
+            out->coverage[texel * 3 + c] =
+                static_cast<float>(sum_a > 0.0 ? curve[c] / sum_a : plain_curve[c] / footprint_texels);
         }
         // The value the coverage scale applies to: eq. 4.12 (max) or the footprint's mean.
         out->alpha[texel] = base == MipAlphaBase::kMax ? max_a : static_cast<float>(sum_a / ((x1 - x0) * (y1 - y0)));
@@ -177,11 +182,12 @@ void build_box_mips(Vector<SliceImage>* levels, uint32_t level_count, HostAlloca
             }
         }
         const double inv = 1.0 / (static_cast<double>(x1 - x0) * (y1 - y0));
-        out->alpha[texel] = static_cast<float>(sum[0] * inv); // eq. 4.8
+        out->alpha[texel] = static_cast<float>(sum[0] * inv);                                         // eq. 4.8
         for (int c = 0; c < 3; ++c) out->color[texel * 3 + c] = static_cast<float>(sum[1 + c] * inv); // eq. 4.7
         for (int c = 0; c < 4; ++c) out->normal[texel * 4 + c] = static_cast<float>(sum[4 + c] * inv);
         out->threshold[texel] = p.threshold[static_cast<size_t>(y0) * p.width + x0];
-        for (int c = 0; c < 3; ++c) out->coverage[texel * 3 + c] = p.coverage[(static_cast<size_t>(y0) * p.width + x0) * 3 + c];
+        for (int c = 0; c < 3; ++c)
+            out->coverage[texel * 3 + c] = p.coverage[(static_cast<size_t>(y0) * p.width + x0) * 3 + c];
     };
     append_levels(levels, level_count, host, filter);
 }
@@ -204,7 +210,8 @@ void bleed_colours(Vector<SliceImage>* levels) {
                         static_cast<float>(a * level.color[i * 3 + c] + (1.0 - a) * next.color[j * 3 + c]); // eq. 4.16
                 }
                 for (int c = 0; c < 4; ++c) {
-                    level.normal[i * 4 + c] = static_cast<float>(a * level.normal[i * 4 + c] + (1.0 - a) * next.normal[j * 4 + c]);
+                    level.normal[i * 4 + c] =
+                        static_cast<float>(a * level.normal[i * 4 + c] + (1.0 - a) * next.normal[j * 4 + c]);
                 }
             }
         }

@@ -4,8 +4,8 @@
 // in the tests, the coverage it loses.
 #pragma once
 
-#include "context/allocator.hpp"
 #include "bake/slice_image.hpp"
+#include "context/allocator.hpp"
 
 #include <cstdint>
 

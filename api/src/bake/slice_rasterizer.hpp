@@ -5,19 +5,19 @@
 // same triangles give the same bits on every platform.
 #pragma once
 
-#include "context/allocator.hpp"
 #include "bake/slice_image.hpp"
+#include "context/allocator.hpp"
 
 #include <cstdint>
 
 namespace grass {
 
 struct RasterVertex {
-    double s = 0, t = 0;      // target coordinates, [0, 1] across the target (row 0 at t = 0)
-    double depth = 0;         // smaller is nearer the viewer
+    double s = 0, t = 0;         // target coordinates, [0, 1] across the target (row 0 at t = 0)
+    double depth = 0;            // smaller is nearer the viewer
     float albedo[3] = {0, 0, 0}; // linear rgb
     float normal[3] = {0, 0, 0}; // patch space (need not face the viewer, nor be unit)
-    float height = 0;         // height above the ground / the slice's height, for normal.w
+    float height = 0;            // height above the ground / the slice's height, for normal.w
 };
 
 class SliceRasterizer {
@@ -51,9 +51,9 @@ private:
     uint32_t samples_w_, samples_h_; // sample grid: row-major, kSamplesPerAxis per texel
     float toward_viewer_[3];
     Vector<float> depth_;
-    Vector<uint16_t> threshold_; // 0 = not covered
-    Vector<uint16_t> min_threshold_; // the lowest threshold of any blade over the sample (0xffff: none)
-    Vector<float> attributes_;   // kAttributes per sample
+    Vector<uint16_t> threshold_;               // 0 = not covered
+    Vector<uint16_t> min_threshold_;           // the lowest threshold of any blade over the sample (0xffff: none)
+    Vector<float> attributes_;                 // kAttributes per sample
     static constexpr uint32_t kAttributes = 7; // albedo rgb, normal xyz, height
 };
 

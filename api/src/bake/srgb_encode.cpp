@@ -47,8 +47,10 @@ uint8_t linear_to_srgb8(float linear) {
     int lo = 0, hi = 255;
     while (lo < hi) {
         const int mid = (lo + hi) / 2;
-        if (m[mid] <= v) lo = mid + 1;
-        else hi = mid;
+        if (m[mid] <= v)
+            lo = mid + 1;
+        else
+            hi = mid;
     }
     return static_cast<uint8_t>(lo);
 }

@@ -1,10 +1,10 @@
 #include "bake/tier_slices.hpp"
 
 #include "bake/bake_cache.hpp"
-#include "patch/random.hpp"
 #include "bake/slice_baker.hpp"
 #include "context/invariants.hpp"
 #include "context/validate.hpp"
+#include "patch/random.hpp"
 
 namespace grass {
 
@@ -18,7 +18,8 @@ grass_result ensure_slices(grass_context* ctx, const char* fn, uint32_t patch_sl
         const char* dir = ctx->desc.cache_directory;
         // The desc and the generated patch itself: a change of the generator never serves
         // stale slices from the cache.
-        const uint64_t key = fnv1a64(&patch->data.content_hash, sizeof(uint64_t), bake_key(patch->desc, slices_per_axis, 0, 0));
+        const uint64_t key =
+            fnv1a64(&patch->data.content_hash, sizeof(uint64_t), bake_key(patch->desc, slices_per_axis, 0, 0));
         if (!dir || !load_baked(dir, key, &ctx->host, set)) {
             bake_slices(patch->data, slices_per_axis, 0, 0, &ctx->host, set);
             if (dir && !store_baked(dir, key, *set)) {

@@ -6,12 +6,12 @@ namespace {
 
 // Sizes in grass.h 0.3 (tests/abi/grass_0_3.h, the frozen copy; tests/abi/old_header_host.c
 // checks them against it). Literal numbers: they must never change.
-constexpr size_t kFrameStats03 = 152;  // 9 x 8 bytes, 3 arrays of GRASS_TIER_KIND_COUNT uint64, nodes_empty
-constexpr size_t kMemoryStats03 = 24;  // host_bytes, host_allocations, gpu_bytes
-constexpr size_t kPatchInfo03 = 48;    // 3 x uint32, 6 floats, content_hash at offset 40
+constexpr size_t kFrameStats03 = 152; // 9 x 8 bytes, 3 arrays of GRASS_TIER_KIND_COUNT uint64, nodes_empty
+constexpr size_t kMemoryStats03 = 24; // host_bytes, host_allocations, gpu_bytes
+constexpr size_t kPatchInfo03 = 48;   // 3 x uint32, 6 floats, content_hash at offset 40
 
 // Sizes in grass.h 0.4 (the current header).
-constexpr size_t kFrameStats04 = kFrameStats03 + 8; // + draws
+constexpr size_t kFrameStats04 = kFrameStats03 + 8;   // + draws
 constexpr size_t kMemoryStats04 = kMemoryStats03 + 8; // + host_bytes_peak
 constexpr size_t kPatchInfo04 = kPatchInfo03;
 
@@ -28,9 +28,12 @@ static_assert(offsetof(grass_memory_stats, host_bytes_peak) == kMemoryStats03, "
 size_t out_struct_size(OutStruct which, uint32_t header_minor) {
     const bool v03 = header_minor <= 3;
     switch (which) {
-    case OutStruct::frame_stats: return v03 ? kFrameStats03 : kFrameStats04;
-    case OutStruct::memory_stats: return v03 ? kMemoryStats03 : kMemoryStats04;
-    case OutStruct::patch_info: return v03 ? kPatchInfo03 : kPatchInfo04;
+    case OutStruct::frame_stats:
+        return v03 ? kFrameStats03 : kFrameStats04;
+    case OutStruct::memory_stats:
+        return v03 ? kMemoryStats03 : kMemoryStats04;
+    case OutStruct::patch_info:
+        return v03 ? kPatchInfo03 : kPatchInfo04;
     }
     return 0;
 }

@@ -60,9 +60,13 @@ public:
 
     HostAllocator* host() const noexcept { return host_; }
     template <class U>
-    bool operator==(const StlAllocator<U>& o) const noexcept { return host_ == o.host(); }
+    bool operator==(const StlAllocator<U>& o) const noexcept {
+        return host_ == o.host();
+    }
     template <class U>
-    bool operator!=(const StlAllocator<U>& o) const noexcept { return host_ != o.host(); }
+    bool operator!=(const StlAllocator<U>& o) const noexcept {
+        return host_ != o.host();
+    }
 
 private:
     HostAllocator* host_;

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "bake/baked_slices.hpp"
-#include "plan/frame_plan.hpp"
 #include "patch/patch_data.hpp"
+#include "plan/frame_plan.hpp"
 
 #include <grass/grass.h>
 
@@ -16,7 +16,14 @@ namespace grass {
 // The roles of a field's design maps (grass_map_stack). A shader variant samples the maps
 // of the roles in its feature mask (bit = 1 << role) and no others; the texture bindings
 // are those of api/shaders/blade_interface.glsl.
-enum MapRole : uint32_t { kMapDensity = 0, kMapColor = 1, kMapAmbient = 2, kMapDiffuse = 3, kMapHeight = 4, kMapRoleCount = 5 };
+enum MapRole : uint32_t {
+    kMapDensity = 0,
+    kMapColor = 1,
+    kMapAmbient = 2,
+    kMapDiffuse = 3,
+    kMapHeight = 4,
+    kMapRoleCount = 5
+};
 constexpr uint32_t kMapBinding[kMapRoleCount] = {2, 6, 7, 8, 9};
 constexpr uint32_t kNoMap = 0xffffffffu;
 

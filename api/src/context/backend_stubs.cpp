@@ -15,7 +15,8 @@ GRASS_API grass_gl_desc grass_default_gl_desc(void) {
     d.type = GRASS_STRUCT_TYPE_GL_DESC;
     return d;
 }
-GRASS_API grass_result grass_gl_create_context(uint32_t, const grass_context_desc* desc, const grass_gl_desc*, grass_context**) {
+GRASS_API grass_result grass_gl_create_context(uint32_t, const grass_context_desc* desc, const grass_gl_desc*,
+                                               grass_context**) {
     if (desc && desc->log_fn) {
         desc->log_fn(desc->log_user_data, GRASS_LOG_ERROR, GRASS_MSG_DEVICE_UNSUPPORTED,
                      "grass_gl_create_context: this build of grass has no GL backend (GRASS_BUILD_GL=OFF)");
@@ -44,7 +45,8 @@ GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void) {
     d.type = GRASS_STRUCT_TYPE_VK_RECORD_DESC;
     return d;
 }
-GRASS_API grass_result grass_vk_create_context(uint32_t, const grass_context_desc* desc, const grass_vk_desc*, grass_context**) {
+GRASS_API grass_result grass_vk_create_context(uint32_t, const grass_context_desc* desc, const grass_vk_desc*,
+                                               grass_context**) {
     if (desc && desc->log_fn) {
         desc->log_fn(desc->log_user_data, GRASS_LOG_ERROR, GRASS_MSG_DEVICE_UNSUPPORTED,
                      "grass_vk_create_context: this build of grass has no Vulkan backend (GRASS_BUILD_VULKAN=OFF)");
@@ -53,8 +55,9 @@ GRASS_API grass_result grass_vk_create_context(uint32_t, const grass_context_des
 }
 GRASS_API grass_result grass_vk_prepare_frame(grass_context* context, void*) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
-    return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
-                         "grass_vk_prepare_frame: the context is not a Vulkan context (this build has no Vulkan backend)");
+    return context->fail(
+        GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+        "grass_vk_prepare_frame: the context is not a Vulkan context (this build has no Vulkan backend)");
 }
 GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc*) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;

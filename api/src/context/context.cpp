@@ -10,8 +10,8 @@
 #include <cstring>
 
 grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
-    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), maps(&host), plan(&host), plan_scratch(&host),
-      cache_directory(grass::StlAllocator<char>(&host)) {
+    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), maps(&host), plan(&host),
+      plan_scratch(&host), cache_directory(grass::StlAllocator<char>(&host)) {
     if (d.cache_directory && d.cache_directory[0]) {
         cache_directory.assign(d.cache_directory, d.cache_directory + std::strlen(d.cache_directory) + 1);
         desc.cache_directory = cache_directory.data();
@@ -72,14 +72,14 @@ namespace grass {
 namespace {
 
 // Logs through the desc's callback before a context exists (version or desc errors).
-grass_result early_fail(const grass_context_desc* desc, grass_result result, grass_message_id id,
-                        const char* format, ...)
+grass_result early_fail(const grass_context_desc* desc, grass_result result, grass_message_id id, const char* format,
+                        ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 4, 5)))
 #endif
     ;
-grass_result early_fail(const grass_context_desc* desc, grass_result result, grass_message_id id,
-                        const char* format, ...) {
+grass_result early_fail(const grass_context_desc* desc, grass_result result, grass_message_id id, const char* format,
+                        ...) {
     if (desc && desc->log_fn) {
         char message[512];
         va_list args;
@@ -105,7 +105,9 @@ uint16_t owner_tag_for(const void* p) {
 
 grass_result create_context(const char* function, uint32_t header_version, const grass_context_desc* desc,
                             BackendFactory factory, void* factory_user_data, grass_context** out_context) {
-    if (!out_context) return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: out_context is NULL", function);
+    if (!out_context)
+        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: out_context is NULL",
+                          function);
     if (!desc) return GRASS_ERROR_INVALID_ARGUMENT;
     const uint32_t major = header_version >> 22, minor = (header_version >> 12) & 0x3ff;
     if (major != GRASS_VERSION_MAJOR || minor > GRASS_VERSION_MINOR || minor < kOldestHeaderMinor) {
@@ -118,9 +120,12 @@ grass_result create_context(const char* function, uint32_t header_version, const
     if (raw_enum(desc->type) != GRASS_STRUCT_TYPE_CONTEXT_DESC) {
         return early_fail(desc, GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                           "%s: desc->type is 0x%08llx; expected GRASS_STRUCT_TYPE_CONTEXT_DESC (0x%08x)", function,
-                          static_cast<unsigned long long>(raw_enum(desc->type)), static_cast<unsigned>(GRASS_STRUCT_TYPE_CONTEXT_DESC));
+                          static_cast<unsigned long long>(raw_enum(desc->type)),
+                          static_cast<unsigned>(GRASS_STRUCT_TYPE_CONTEXT_DESC));
     }
-    if (desc->next) return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: desc->next must be NULL", function);
+    if (desc->next)
+        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: desc->next must be NULL",
+                          function);
     const grass_allocator& a = desc->allocator;
     if ((a.alloc_fn == nullptr) != (a.free_fn == nullptr)) {
         return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
@@ -128,8 +133,8 @@ grass_result create_context(const char* function, uint32_t header_version, const
     }
     const int64_t log_level = raw_enum(desc->log_level), depth_mode = raw_enum(desc->depth_mode);
     if (log_level < GRASS_LOG_ERROR || log_level > GRASS_LOG_INFO) {
-        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: desc->log_level is %lld; it must be 0..2",
-                          function, static_cast<long long>(log_level));
+        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                          "%s: desc->log_level is %lld; it must be 0..2", function, static_cast<long long>(log_level));
     }
     if (depth_mode != GRASS_DEPTH_LESS && depth_mode != GRASS_DEPTH_GREATER) {
         return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
@@ -182,16 +187,26 @@ GRASS_API uint32_t grass_library_version(void) { return GRASS_HEADER_VERSION; }
 
 GRASS_API const char* grass_result_string(grass_result result) {
     switch (result) {
-    case GRASS_SUCCESS: return "GRASS_SUCCESS";
-    case GRASS_ERROR_INVALID_ARGUMENT: return "GRASS_ERROR_INVALID_ARGUMENT";
-    case GRASS_ERROR_INVALID_HANDLE: return "GRASS_ERROR_INVALID_HANDLE";
-    case GRASS_ERROR_WRONG_STRUCT_TYPE: return "GRASS_ERROR_WRONG_STRUCT_TYPE";
-    case GRASS_ERROR_INVALID_STATE: return "GRASS_ERROR_INVALID_STATE";
-    case GRASS_ERROR_OUT_OF_MEMORY: return "GRASS_ERROR_OUT_OF_MEMORY";
-    case GRASS_ERROR_VERSION_MISMATCH: return "GRASS_ERROR_VERSION_MISMATCH";
-    case GRASS_ERROR_BACKEND: return "GRASS_ERROR_BACKEND";
-    case GRASS_ERROR_UNSUPPORTED: return "GRASS_ERROR_UNSUPPORTED";
-    case GRASS_ERROR_IN_USE: return "GRASS_ERROR_IN_USE";
+    case GRASS_SUCCESS:
+        return "GRASS_SUCCESS";
+    case GRASS_ERROR_INVALID_ARGUMENT:
+        return "GRASS_ERROR_INVALID_ARGUMENT";
+    case GRASS_ERROR_INVALID_HANDLE:
+        return "GRASS_ERROR_INVALID_HANDLE";
+    case GRASS_ERROR_WRONG_STRUCT_TYPE:
+        return "GRASS_ERROR_WRONG_STRUCT_TYPE";
+    case GRASS_ERROR_INVALID_STATE:
+        return "GRASS_ERROR_INVALID_STATE";
+    case GRASS_ERROR_OUT_OF_MEMORY:
+        return "GRASS_ERROR_OUT_OF_MEMORY";
+    case GRASS_ERROR_VERSION_MISMATCH:
+        return "GRASS_ERROR_VERSION_MISMATCH";
+    case GRASS_ERROR_BACKEND:
+        return "GRASS_ERROR_BACKEND";
+    case GRASS_ERROR_UNSUPPORTED:
+        return "GRASS_ERROR_UNSUPPORTED";
+    case GRASS_ERROR_IN_USE:
+        return "GRASS_ERROR_IN_USE";
     }
     return "GRASS_ERROR_UNKNOWN";
 }

@@ -4,13 +4,13 @@
 
 #include "context/allocator.hpp"
 #include "context/backend.hpp"
-#include "maps/design_map.hpp"
-#include "plan/frame_plan.hpp"
 #include "context/handle_pool.hpp"
+#include "maps/design_map.hpp"
+#include "patch/patch_data.hpp"
+#include "plan/frame_plan.hpp"
 #include "plan/lod_setup_types.hpp"
 #include "plan/plan_scratch.hpp"
 #include "plan/quadtree.hpp"
-#include "patch/patch_data.hpp"
 
 #include <grass/grass.h>
 
@@ -36,29 +36,29 @@ struct Patch {
     PatchData data;
     HostAllocator* host;
     grass_patch_desc desc{};
-    uint32_t field_users = 0;      // fields that use this patch
-    Vector<SliceSet*> slice_sets;  // baked on demand by the fields' tiers, uploaded once each
+    uint32_t field_users = 0;     // fields that use this patch
+    Vector<SliceSet*> slice_sets; // baked on demand by the fields' tiers, uploaded once each
 };
 
 struct Field {
-    grass_field_desc desc{};          // pointers in it are cleared; maps are referenced below
+    grass_field_desc desc{}; // pointers in it are cleared; maps are referenced below
     uint32_t patch_slot = 0;
-    FieldMaps maps;                   // map slot per role (kNoMap: none) and the feature mask
-    bool owns_density_map = false;    // maps.map_slot[kMapDensity] was made from desc.density_map
+    FieldMaps maps;                             // map slot per role (kNoMap: none) and the feature mask
+    bool owns_density_map = false;              // maps.map_slot[kMapDensity] was made from desc.density_map
     double cell_to_map[6] = {0, 0, 0, 0, 0, 0}; // cell (x, z) -> map (u, v), lemme's configTf
-    double height_scale = 0.0;        // metres per height-map unit (0 without a height map)
+    double height_scale = 0.0;                  // metres per height-map unit (0 without a height map)
     // Grass types (lemme 6.4.5): the first type is the field the host holds an id for; the
     // others are fields of their own, hidden behind it, made and destroyed with it.
-    uint32_t parent = 0xffffffffu;    // slot of the host's field for a hidden type, else none
+    uint32_t parent = 0xffffffffu; // slot of the host's field for a hidden type, else none
     uint32_t children[GRASS_MAX_GRASS_TYPES - 1] = {};
     uint32_t child_count = 0;
     double rotation[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}; // base transform's rotation, column-major
     double translation[3] = {0, 0, 0};
-    LodSetup lod;                      // tiers and lod tests, copied from the desc
-    QuadtreeShape tree;                // implicit: nothing per node or cell
-    LevelExtent extents[32];           // vertical extent of each level's nodes, in cells
+    LodSetup lod;                         // tiers and lod tests, copied from the desc
+    QuadtreeShape tree;                   // implicit: nothing per node or cell
+    LevelExtent extents[32];              // vertical extent of each level's nodes, in cells
     float bands[GRASS_MAX_TIERS][4] = {}; // per tier: its distance band (begin, end, in, out) for the transitions
-    double overhang = 0.0;             // how far blade tips may leave their cell, in cells
+    double overhang = 0.0;                // how far blade tips may leave their cell, in cells
 };
 
 // Creates the backend of a new context; the context's allocator and log are ready.

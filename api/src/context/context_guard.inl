@@ -11,7 +11,8 @@ grass_result guarded(grass_context* ctx, const char* function, Body&& body) noex
     try {
         return body();
     } catch (const std::bad_alloc&) {
-        if (ctx) return ctx->fail(GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: out of host memory", function);
+        if (ctx)
+            return ctx->fail(GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: out of host memory", function);
         return GRASS_ERROR_OUT_OF_MEMORY;
     } catch (const std::exception& e) {
         if (ctx) return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED, "%s: %s", function, e.what());

@@ -13,8 +13,8 @@ enum class HandleCheck { ok, null_id, foreign, stale };
 template <class T>
 class HandlePool {
 public:
-    explicit HandlePool(HostAllocator* host) : host_(host), slots_(StlAllocator<Slot>(host)),
-                                               free_(StlAllocator<uint32_t>(host)) {}
+    explicit HandlePool(HostAllocator* host)
+        : host_(host), slots_(StlAllocator<Slot>(host)), free_(StlAllocator<uint32_t>(host)) {}
     ~HandlePool() {
         for (Slot& s : slots_) host_->destroy(s.object);
     }
@@ -35,7 +35,8 @@ public:
     void erase(uint32_t slot) {
         host_->destroy(slots_[slot].object);
         slots_[slot].object = nullptr;
-        slots_[slot].generation = static_cast<uint16_t>(slots_[slot].generation + 1 == 0 ? 1 : slots_[slot].generation + 1);
+        slots_[slot].generation =
+            static_cast<uint16_t>(slots_[slot].generation + 1 == 0 ? 1 : slots_[slot].generation + 1);
         free_.push_back(slot);
     }
     uint16_t generation(uint32_t slot) const { return slots_[slot].generation; }

@@ -62,8 +62,8 @@ grass_result check_plan(grass_context* ctx, const char* fn) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
                              "%s: the frame plan has a %s draw of patch slot %u, field slot %u, instances %u+%u of "
                              "%zu, which the context does not hold (internal error)",
-                             fn, known_kind ? tier_kind_name(draw.kind) : "unknown", draw.patch_slot,
-                             draw.field_slot, draw.first_instance, draw.instance_count, plan.instances.size());
+                             fn, known_kind ? tier_kind_name(draw.kind) : "unknown", draw.patch_slot, draw.field_slot,
+                             draw.first_instance, draw.instance_count, plan.instances.size());
         }
         if (draw.features != field->maps.features || draw.features != draw.uniforms.tiling[3]) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,

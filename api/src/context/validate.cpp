@@ -5,13 +5,16 @@ namespace grass {
 grass_result check_desc_header(grass_context* ctx, const char* function, const char* name, const void* desc,
                                int64_t actual, const void* next, grass_struct_type expected,
                                const char* expected_name) {
-    if (!desc) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s is NULL", function, name);
+    if (!desc)
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s is NULL", function, name);
     if (actual != static_cast<int64_t>(expected)) {
         return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                          "%s: %s->type is 0x%08x; expected %s (0x%08x)", function, name, static_cast<unsigned>(actual),
                          expected_name, static_cast<unsigned>(expected));
     }
-    if (next) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: %s->next must be NULL", function, name);
+    if (next)
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: %s->next must be NULL", function,
+                         name);
     return GRASS_SUCCESS;
 }
 
@@ -26,7 +29,8 @@ grass_result check_finite(grass_context* ctx, const char* function, const char* 
                      name, value);
 }
 
-grass_result check_range(grass_context* ctx, const char* function, const char* name, double value, double lo, double hi) {
+grass_result check_range(grass_context* ctx, const char* function, const char* name, double value, double lo,
+                         double hi) {
     GRASS_TRY(check_finite(ctx, function, name, value));
     if (value >= lo && value <= hi) return GRASS_SUCCESS;
     return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE, "%s: %s is %g; it must be in [%g, %g]",
@@ -67,7 +71,8 @@ template <class Pool>
 grass_result check_id(grass_context* ctx, const char* function, const char* name, const Pool& pool, uint32_t index,
                       uint16_t generation, uint16_t owner) {
     switch (pool.check(index, generation, owner, ctx->owner)) {
-    case HandleCheck::ok: return GRASS_SUCCESS;
+    case HandleCheck::ok:
+        return GRASS_SUCCESS;
     case HandleCheck::null_id:
         return ctx->fail(GRASS_ERROR_INVALID_HANDLE, GRASS_MSG_NULL_HANDLE, "%s: %s is the null id", function, name);
     case HandleCheck::foreign:

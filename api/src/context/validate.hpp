@@ -14,16 +14,18 @@ namespace grass {
 // The type tag and next pointer every desc begins with.
 // `actual` is the raw value of desc->type (see raw_enum.hpp).
 grass_result check_desc_header(grass_context* ctx, const char* function, const char* name, const void* desc,
-                               int64_t actual, const void* next, grass_struct_type expected,
-                               const char* expected_name);
+                               int64_t actual, const void* next, grass_struct_type expected, const char* expected_name);
 
-#define GRASS_CHECK_DESC(ctx, fn, desc, EXPECTED) \
-    ::grass::check_desc_header((ctx), (fn), #desc, (desc), (desc) ? ::grass::raw_enum((desc)->type) : int64_t{EXPECTED}, (desc) ? (desc)->next : nullptr, EXPECTED, #EXPECTED)
+#define GRASS_CHECK_DESC(ctx, fn, desc, EXPECTED)                                            \
+    ::grass::check_desc_header((ctx), (fn), #desc, (desc),                                   \
+                               (desc) ? ::grass::raw_enum((desc)->type) : int64_t{EXPECTED}, \
+                               (desc) ? (desc)->next : nullptr, EXPECTED, #EXPECTED)
 
 grass_result check_not_null(grass_context* ctx, const char* function, const char* name, const void* p);
 grass_result check_finite(grass_context* ctx, const char* function, const char* name, double value);
 // lo <= value <= hi, and finite.
-grass_result check_range(grass_context* ctx, const char* function, const char* name, double value, double lo, double hi);
+grass_result check_range(grass_context* ctx, const char* function, const char* name, double value, double lo,
+                         double hi);
 // 0 <= lo <= hi <= limit for a min/max pair.
 grass_result check_min_max(grass_context* ctx, const char* function, const char* name_min, const char* name_max,
                            double lo, double hi, double limit);
@@ -36,9 +38,9 @@ grass_result check_field_id(grass_context* ctx, const char* function, const char
 grass_result check_map_id(grass_context* ctx, const char* function, const char* name, grass_map_id id);
 
 // Early return on error: GRASS_TRY(check_...(...));
-#define GRASS_TRY(expr)                              \
-    do {                                             \
-        const grass_result grass_try_r_ = (expr);    \
+#define GRASS_TRY(expr)                                         \
+    do {                                                        \
+        const grass_result grass_try_r_ = (expr);               \
         if (grass_try_r_ != GRASS_SUCCESS) return grass_try_r_; \
     } while (0)
 

@@ -14,7 +14,9 @@ GRASS_API grass_gl_desc grass_gl_default_desc(void);
 GRASS_API grass_vk_desc grass_vk_default_desc(void);
 GRASS_API grass_vk_record_desc grass_vk_default_record_desc(void);
 
-GRASS_API grass_backend grass_context_backend(const grass_context* context) { return grass_get_context_backend(context); }
+GRASS_API grass_backend grass_context_backend(const grass_context* context) {
+    return grass_get_context_backend(context);
+}
 GRASS_API const char* grass_last_error(const grass_context* context) { return grass_get_last_error(context); }
 GRASS_API grass_gl_desc grass_gl_default_desc(void) { return grass_default_gl_desc(); }
 GRASS_API grass_vk_desc grass_vk_default_desc(void) { return grass_default_vk_desc(); }

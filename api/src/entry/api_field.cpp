@@ -1,10 +1,10 @@
 // C entry points for fields: a grid of cells covered by one patch.
+#include "bake/tier_slices.hpp"
 #include "context/context.hpp"
 #include "context/invariants.hpp"
+#include "context/validate.hpp"
 #include "maps/design_map.hpp"
 #include "plan/lod_setup.hpp"
-#include "bake/tier_slices.hpp"
-#include "context/validate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +28,8 @@ grass_result validate_base_transform(grass_context* ctx, const char* fn, const d
     for (int c = 12; c < 15; ++c) {
         if (std::fabs(m[c]) > 1e12) {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                             "%s: desc->base_transform[%d] (translation) is %g; it must be within +-1e12 m", fn, c, m[c]);
+                             "%s: desc->base_transform[%d] (translation) is %g; it must be within +-1e12 m", fn, c,
+                             m[c]);
         }
     }
     constexpr double kTolerance = 1e-5;
@@ -43,11 +44,12 @@ grass_result validate_base_transform(grass_context* ctx, const char* fn, const d
             }
         }
     }
-    const double det = m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
-                       m[8] * (m[1] * m[6] - m[5] * m[2]);
+    const double det =
+        m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) + m[8] * (m[1] * m[6] - m[5] * m[2]);
     if (det < 0.0) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM,
-                         "%s: desc->base_transform mirrors space (determinant %g); it must be a proper rotation", fn, det);
+                         "%s: desc->base_transform mirrors space (determinant %g); it must be a proper rotation", fn,
+                         det);
     }
     return GRASS_SUCCESS;
 }
@@ -82,10 +84,11 @@ grass_result validate_map_stack(grass_context* ctx, const char* fn, const grass_
     for (double v : m.cell_to_map) all_zero = all_zero && v == 0.0;
     const double det = m.cell_to_map[0] * m.cell_to_map[3] - m.cell_to_map[1] * m.cell_to_map[2];
     if (!all_zero && !(std::fabs(det) > 0.0)) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM,
-                         "%s: desc->maps.cell_to_map maps the field onto a line (determinant %g); it must be invertible, "
-                         "or all zero for maps that span the field",
-                         fn, det);
+        return ctx->fail(
+            GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM,
+            "%s: desc->maps.cell_to_map maps the field onto a line (determinant %g); it must be invertible, "
+            "or all zero for maps that span the field",
+            fn, det);
     }
     return GRASS_SUCCESS;
 }
@@ -125,8 +128,8 @@ grass_result create_one_field(grass_context* ctx, const char* fn, const grass_fi
     field->lod = lod;
     field->parent = parent;
     if (desc->density_map) {
-        const grass_result r = make_map(ctx, fn, "desc->density_map", desc->density_map, true,
-                                        &field->maps.map_slot[kMapDensity]);
+        const grass_result r =
+            make_map(ctx, fn, "desc->density_map", desc->density_map, true, &field->maps.map_slot[kMapDensity]);
         if (r != GRASS_SUCCESS) {
             ctx->host.destroy(field);
             return r;
@@ -134,8 +137,9 @@ grass_result create_one_field(grass_context* ctx, const char* fn, const grass_fi
         if (ctx->maps.get(field->maps.map_slot[kMapDensity])->channels != 1) {
             release_map(ctx, field->maps.map_slot[kMapDensity]);
             ctx->host.destroy(field);
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_MAP_ROLE,
-                             "%s: desc->density_map has an RGBA format; a density map needs a single-channel (R) format", fn);
+            return ctx->fail(
+                GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_MAP_ROLE,
+                "%s: desc->density_map has an RGBA format; a density map needs a single-channel (R) format", fn);
         }
         field->owns_density_map = true;
     }
@@ -331,7 +335,8 @@ GRASS_API grass_grass_type_desc grass_default_grass_type_desc(void) {
     return d;
 }
 
-GRASS_API grass_result grass_create_field(grass_context* context, const grass_field_desc* desc, grass_field_id* out_field) {
+GRASS_API grass_result grass_create_field(grass_context* context, const grass_field_desc* desc,
+                                          grass_field_id* out_field) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_create_field", [&] { return grass::create_field(context, desc, out_field); });
 }

@@ -2,8 +2,8 @@
 #include "context/abi_sizes.hpp"
 #include "context/context.hpp"
 #include "context/invariants.hpp"
-#include "plan/frame_planner.hpp"
 #include "context/validate.hpp"
+#include "plan/frame_planner.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -19,14 +19,16 @@ grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_
         // Beyond 1e12 m, double itself loses the millimetre.
         if (std::fabs(v.camera_position[c]) > 1e12) {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                             "%s: view->camera_position[%d] is %g; it must be within +-1e12 m", fn, c, v.camera_position[c]);
+                             "%s: view->camera_position[%d] is %g; it must be within +-1e12 m", fn, c,
+                             v.camera_position[c]);
         }
     }
     GRASS_TRY(check_finite_array(ctx, fn, "view->view", v.view, 16));
     GRASS_TRY(check_finite_array(ctx, fn, "view->projection", v.projection, 16));
-    double det = v.view[0] * (static_cast<double>(v.view[5]) * v.view[10] - static_cast<double>(v.view[9]) * v.view[6]) -
-                 v.view[4] * (static_cast<double>(v.view[1]) * v.view[10] - static_cast<double>(v.view[9]) * v.view[2]) +
-                 v.view[8] * (static_cast<double>(v.view[1]) * v.view[6] - static_cast<double>(v.view[5]) * v.view[2]);
+    double det =
+        v.view[0] * (static_cast<double>(v.view[5]) * v.view[10] - static_cast<double>(v.view[9]) * v.view[6]) -
+        v.view[4] * (static_cast<double>(v.view[1]) * v.view[10] - static_cast<double>(v.view[9]) * v.view[2]) +
+        v.view[8] * (static_cast<double>(v.view[1]) * v.view[6] - static_cast<double>(v.view[5]) * v.view[2]);
     if (!(std::fabs(det) > 1e-6)) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM,
                          "%s: view->view has a singular rotation (determinant %g)", fn, det);
@@ -34,7 +36,8 @@ grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_
     bool projection_zero = true;
     for (float p : v.projection) projection_zero = projection_zero && p == 0.0f;
     if (projection_zero) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM, "%s: view->projection is all zeros", fn);
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM, "%s: view->projection is all zeros",
+                         fn);
     }
     if (v.viewport[2] <= 0 || v.viewport[3] <= 0) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
@@ -52,16 +55,18 @@ grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_
                          static_cast<double>(v.sun_direction[2]));
     }
     static const char* const sun_names[3] = {"view->sun_color[0]", "view->sun_color[1]", "view->sun_color[2]"};
-    static const char* const amb_names[3] = {"view->ambient_color[0]", "view->ambient_color[1]", "view->ambient_color[2]"};
+    static const char* const amb_names[3] = {"view->ambient_color[0]", "view->ambient_color[1]",
+                                             "view->ambient_color[2]"};
     for (int c = 0; c < 3; ++c) {
         GRASS_TRY(check_range(ctx, fn, sun_names[c], v.sun_color[c], 0.0, 1e6));
         GRASS_TRY(check_range(ctx, fn, amb_names[c], v.ambient_color[c], 0.0, 1e6));
     }
     GRASS_TRY(check_finite(ctx, fn, "view->time", v.time));
-    if (v.flags & ~static_cast<uint32_t>(GRASS_VIEW_FLAG_NO_DEPTH_TEST | GRASS_VIEW_FLAG_DEBUG_TIERS | GRASS_VIEW_FLAG_DEBUG_CELLS |
-                                           GRASS_VIEW_FLAG_DEBUG_THRESHOLDS | GRASS_VIEW_FLAG_ENCODE_SRGB)) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: view->flags is 0x%x; unknown bits are set",
-                         fn, v.flags);
+    if (v.flags & ~static_cast<uint32_t>(GRASS_VIEW_FLAG_NO_DEPTH_TEST | GRASS_VIEW_FLAG_DEBUG_TIERS |
+                                         GRASS_VIEW_FLAG_DEBUG_CELLS | GRASS_VIEW_FLAG_DEBUG_THRESHOLDS |
+                                         GRASS_VIEW_FLAG_ENCODE_SRGB)) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                         "%s: view->flags is 0x%x; unknown bits are set", fn, v.flags);
     }
     return GRASS_SUCCESS;
 }

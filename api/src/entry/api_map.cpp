@@ -1,7 +1,7 @@
 // C entry points for design maps: images a field's map stack references (lemme2012 6.4).
 #include "context/context.hpp"
-#include "maps/design_map.hpp"
 #include "context/validate.hpp"
+#include "maps/design_map.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -21,8 +21,8 @@ MapTexels texels_of(const DesignMap& m) {
 
 } // namespace
 
-grass_result make_map(grass_context* ctx, const char* fn, const char* name, const grass_map_desc* desc, bool field_private,
-                      uint32_t* out_slot) {
+grass_result make_map(grass_context* ctx, const char* fn, const char* name, const grass_map_desc* desc,
+                      bool field_private, uint32_t* out_slot) {
     constexpr uint32_t kMaxSide = 16384;
     Vector<uint16_t> texels{StlAllocator<uint16_t>(&ctx->host)};
     GRASS_TRY(convert_map(ctx, fn, name, desc, kMaxSide, kMaxSide, &texels));
@@ -70,7 +70,8 @@ grass_result update_map(grass_context* ctx, grass_map_id id, uint32_t x, uint32_
     if (raw_enum(region->format) != raw_enum(map.format)) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_MAP_REGION,
                          "%s: region->format is %lld; it must be the map's format (%lld)", fn,
-                         static_cast<long long>(raw_enum(region->format)), static_cast<long long>(raw_enum(map.format)));
+                         static_cast<long long>(raw_enum(region->format)),
+                         static_cast<long long>(raw_enum(map.format)));
     }
     Vector<uint16_t> texels{StlAllocator<uint16_t>(&ctx->host)};
     GRASS_TRY(convert_map(ctx, fn, "region", region, map.width - x, map.height - y, &texels));
@@ -144,7 +145,8 @@ GRASS_API grass_result grass_destroy_map(grass_context* context, grass_map_id ma
         const uint32_t users = context->maps.get(slot)->field_users;
         if (users > 0) {
             return context->fail(GRASS_ERROR_IN_USE, GRASS_MSG_PATCH_IN_USE,
-                                 "%s: map (index %u) is still used by %u field(s); destroy them first", fn, map.index, users);
+                                 "%s: map (index %u) is still used by %u field(s); destroy them first", fn, map.index,
+                                 users);
         }
         grass::release_map(context, slot);
         return GRASS_SUCCESS;

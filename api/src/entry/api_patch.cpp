@@ -1,8 +1,8 @@
 // C entry points for patches (grass types).
 #include "context/abi_sizes.hpp"
 #include "context/context.hpp"
-#include "patch/patch_generator.hpp"
 #include "context/validate.hpp"
+#include "patch/patch_generator.hpp"
 
 #include <cstring>
 
@@ -16,12 +16,12 @@ grass_result validate_patch_desc(grass_context* ctx, const char* fn, const grass
     GRASS_TRY(check_range(ctx, fn, "desc->subdivisions", d.subdivisions, 1, 32));
     GRASS_TRY(check_min_max(ctx, fn, "desc->length_min", "desc->length_max", d.length_min, d.length_max, 1e3));
     if (d.length_max <= 0.0f) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE, "%s: desc->length_max is %g; it must be > 0", fn,
-                         static_cast<double>(d.length_max));
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: desc->length_max is %g; it must be > 0", fn, static_cast<double>(d.length_max));
     }
     if (d.length_min <= 0.0f) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE, "%s: desc->length_min is %g; it must be > 0", fn,
-                         static_cast<double>(d.length_min));
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: desc->length_min is %g; it must be > 0", fn, static_cast<double>(d.length_min));
     }
     GRASS_TRY(check_min_max(ctx, fn, "desc->width_min", "desc->width_max", d.width_min, d.width_max, 1e3));
     GRASS_TRY(check_min_max(ctx, fn, "desc->tilt_min", "desc->tilt_max", d.tilt_min, d.tilt_max, 1.5));
@@ -38,9 +38,10 @@ grass_result validate_patch_desc(grass_context* ctx, const char* fn, const grass
     GRASS_TRY(check_range(ctx, fn, "desc->vertex_color_variation", d.vertex_color_variation, 0.0, 1.0));
     const int64_t mode = raw_enum(d.threshold_mode);
     if (mode != GRASS_THRESHOLD_UNIFORM && mode != GRASS_THRESHOLD_CLUSTERED) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
-                         "%s: desc->threshold_mode is %lld; it must be GRASS_THRESHOLD_UNIFORM or GRASS_THRESHOLD_CLUSTERED",
-                         fn, static_cast<long long>(mode));
+        return ctx->fail(
+            GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+            "%s: desc->threshold_mode is %lld; it must be GRASS_THRESHOLD_UNIFORM or GRASS_THRESHOLD_CLUSTERED", fn,
+            static_cast<long long>(mode));
     }
     GRASS_TRY(check_range(ctx, fn, "desc->cluster_sigma", d.cluster_sigma, 0.0, 1.0));
     GRASS_TRY(check_range(ctx, fn, "desc->cluster_frequency", d.cluster_frequency, 1, 64));
@@ -113,7 +114,8 @@ GRASS_API grass_patch_desc grass_default_patch_desc(void) {
     return d;
 }
 
-GRASS_API grass_result grass_create_patch(grass_context* context, const grass_patch_desc* desc, grass_patch_id* out_patch) {
+GRASS_API grass_result grass_create_patch(grass_context* context, const grass_patch_desc* desc,
+                                          grass_patch_id* out_patch) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_create_patch", [&] { return grass::create_patch(context, desc, out_patch); });
 }
@@ -140,7 +142,8 @@ GRASS_API grass_result grass_destroy_patch(grass_context* context, grass_patch_i
     });
 }
 
-GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_patch_id patch, grass_patch_info* out_info) {
+GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_patch_id patch,
+                                            grass_patch_info* out_info) {
     auto* ctx = const_cast<grass_context*>(context); // logging only
     if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
     const char* fn = "grass_get_patch_info";
@@ -160,8 +163,8 @@ GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_
     return GRASS_SUCCESS;
 }
 
-GRASS_API grass_result grass_get_patch_thresholds(const grass_context* context, grass_patch_id patch, float* out_thresholds,
-                                                  uint32_t capacity) {
+GRASS_API grass_result grass_get_patch_thresholds(const grass_context* context, grass_patch_id patch,
+                                                  float* out_thresholds, uint32_t capacity) {
     auto* ctx = const_cast<grass_context*>(context);
     if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
     const char* fn = "grass_get_patch_thresholds";

@@ -64,7 +64,8 @@ grass_result apply_quality(grass_context* ctx, const grass_quality_desc* q, doub
     GRASS_TRY(check_not_null(ctx, fn, "out_tests", tests));
     GRASS_TRY(check_not_null(ctx, fn, "out_test_count", test_count));
 
-    patch->blade_count = std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(patch->blade_count * double(q->blade_fraction))));
+    patch->blade_count =
+        std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(patch->blade_count * double(q->blade_fraction))));
     patch->subdivisions = q->blade_subdivisions;
     if (q->blades_everywhere) {
         std::memset(&tiers[0], 0, sizeof(tiers[0]));
@@ -104,11 +105,16 @@ extern "C" {
 GRASS_API grass_quality_desc grass_quality_preset(grass_quality_level level) {
     using grass::make;
     switch (level) {
-    case GRASS_QUALITY_REFERENCE: return make(1, 1.0f, 1.0f, 1.0f, 1.0f, 8, 1.0f, 4);
-    case GRASS_QUALITY_HIGH: return make(0, 2.0f, 1.0f, 2.0f, 0.5f, 6, 1.0f, 4);
-    case GRASS_QUALITY_DEFAULT: return make(0, 1.0f, 1.0f, 1.0f, 1.0f, 4, 1.0f, 4);
-    case GRASS_QUALITY_LOW: return make(0, 0.6f, 1.0f, 1.0f, 2.0f, 3, 0.75f, 1);
-    case GRASS_QUALITY_FASTEST: return make(0, 0.35f, 0.6f, 0.5f, 4.0f, 2, 0.5f, 1);
+    case GRASS_QUALITY_REFERENCE:
+        return make(1, 1.0f, 1.0f, 1.0f, 1.0f, 8, 1.0f, 4);
+    case GRASS_QUALITY_HIGH:
+        return make(0, 2.0f, 1.0f, 2.0f, 0.5f, 6, 1.0f, 4);
+    case GRASS_QUALITY_DEFAULT:
+        return make(0, 1.0f, 1.0f, 1.0f, 1.0f, 4, 1.0f, 4);
+    case GRASS_QUALITY_LOW:
+        return make(0, 0.6f, 1.0f, 1.0f, 2.0f, 3, 0.75f, 1);
+    case GRASS_QUALITY_FASTEST:
+        return make(0, 0.35f, 0.6f, 0.5f, 4.0f, 2, 0.5f, 1);
     }
     // Not a level: a desc with no type tag, which grass_apply_quality refuses.
     grass_quality_desc none;
@@ -118,7 +124,8 @@ GRASS_API grass_quality_desc grass_quality_preset(grass_quality_level level) {
 
 GRASS_API grass_result grass_apply_quality(grass_context* context, const grass_quality_desc* quality, double cell_size,
                                            grass_patch_desc* inout_patch, grass_tier_desc* out_tiers,
-                                           uint32_t* out_tier_count, grass_lod_test* out_tests, uint32_t* out_test_count) {
+                                           uint32_t* out_tier_count, grass_lod_test* out_tests,
+                                           uint32_t* out_test_count) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return grass::guarded(context, "grass_apply_quality", [&] {
         return grass::apply_quality(context, quality, cell_size, inout_patch, out_tiers, out_tier_count, out_tests,

@@ -14,19 +14,21 @@ namespace {
 uint32_t component_bytes(int64_t format) {
     switch (format) {
     case GRASS_MAP_FORMAT_R8_UNORM:
-    case GRASS_MAP_FORMAT_RGBA8_UNORM: return 1;
+    case GRASS_MAP_FORMAT_RGBA8_UNORM:
+        return 1;
     case GRASS_MAP_FORMAT_R16_UNORM:
-    case GRASS_MAP_FORMAT_RGBA16_UNORM: return 2;
+    case GRASS_MAP_FORMAT_RGBA16_UNORM:
+        return 2;
     case GRASS_MAP_FORMAT_R32_FLOAT:
-    case GRASS_MAP_FORMAT_RGBA32_FLOAT: return 4;
-    default: return 0;
+    case GRASS_MAP_FORMAT_RGBA32_FLOAT:
+        return 4;
+    default:
+        return 0;
     }
 }
 
 // sRGB-encoded 0..1 to linear 0..1 (the colour map's rgb; its alpha stays linear).
-double srgb_to_linear(double c) {
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
+double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
 } // namespace
 
@@ -34,11 +36,14 @@ uint32_t map_format_channels(int64_t format) {
     switch (format) {
     case GRASS_MAP_FORMAT_R8_UNORM:
     case GRASS_MAP_FORMAT_R16_UNORM:
-    case GRASS_MAP_FORMAT_R32_FLOAT: return 1;
+    case GRASS_MAP_FORMAT_R32_FLOAT:
+        return 1;
     case GRASS_MAP_FORMAT_RGBA8_UNORM:
     case GRASS_MAP_FORMAT_RGBA16_UNORM:
-    case GRASS_MAP_FORMAT_RGBA32_FLOAT: return 4;
-    default: return 0;
+    case GRASS_MAP_FORMAT_RGBA32_FLOAT:
+        return 4;
+    default:
+        return 0;
     }
 }
 
@@ -52,7 +57,8 @@ grass_result convert_map(grass_context* ctx, const char* fn, const char* name, c
     const uint32_t bytes = component_bytes(format);
     if (channels == 0) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
-                         "%s: %s->format is %lld; it must be a grass_map_format", fn, name, static_cast<long long>(format));
+                         "%s: %s->format is %lld; it must be a grass_map_format", fn, name,
+                         static_cast<long long>(format));
     }
     if (d.width < 1 || d.width > max_width || d.height < 1 || d.height > max_height) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
@@ -63,11 +69,13 @@ grass_result convert_map(grass_context* ctx, const char* fn, const char* name, c
     const uint64_t row_bytes = static_cast<uint64_t>(d.width) * texel_bytes;
     const uint64_t pitch = d.row_pitch ? d.row_pitch : row_bytes;
     if (pitch < row_bytes || pitch % bytes != 0) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
-                         "%s: %s->row_pitch is %u bytes; it must be at least width x texel size (%llu) and a multiple of %u",
-                         fn, name, d.row_pitch, static_cast<unsigned long long>(row_bytes), bytes);
+        return ctx->fail(
+            GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
+            "%s: %s->row_pitch is %u bytes; it must be at least width x texel size (%llu) and a multiple of %u", fn,
+            name, d.row_pitch, static_cast<unsigned long long>(row_bytes), bytes);
     }
-    if (!d.pixels) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s->pixels is NULL", fn, name);
+    if (!d.pixels)
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s->pixels is NULL", fn, name);
 
     Vector<uint16_t> texels{StlAllocator<uint16_t>(&ctx->host)};
     texels.resize(static_cast<size_t>(d.width) * d.height * channels);
@@ -87,9 +95,10 @@ grass_result convert_map(grass_context* ctx, const char* fn, const char* name, c
                 float f;
                 std::memcpy(&f, row + 4 * i, 4);
                 if (!(f >= 0.0f && f <= 1.0f)) { // also catches NaN
-                    return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
-                                     "%s: %s texel (%u, %u) channel %u is %g; float maps must hold finite values in [0, 1]",
-                                     fn, name, i / channels, y, i % channels, static_cast<double>(f));
+                    return ctx->fail(
+                        GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
+                        "%s: %s texel (%u, %u) channel %u is %g; float maps must hold finite values in [0, 1]", fn,
+                        name, i / channels, y, i % channels, static_cast<double>(f));
                 }
                 v = f;
             }

@@ -17,9 +17,9 @@ struct DesignMap {
     explicit DesignMap(HostAllocator* host) : texels(StlAllocator<uint16_t>(host)), pyramid(host) {}
     Vector<uint16_t> texels; // width x height x channels, row-major, tightly packed
     uint32_t width = 0, height = 0;
-    uint32_t channels = 1;   // 1 or 4
+    uint32_t channels = 1; // 1 or 4
     grass_map_format format = GRASS_MAP_FORMAT_R8_UNORM;
-    MapPyramid pyramid;      // single-channel maps only
+    MapPyramid pyramid; // single-channel maps only
     uint32_t field_users = 0;
     bool field_private = false; // made from grass_field_desc.density_map: owned by its field, no public id
 };

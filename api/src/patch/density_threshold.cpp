@@ -15,9 +15,8 @@ void rank_of(const Vector<double>& values, Vector<uint32_t>& order, Vector<uint3
     const uint32_t n = static_cast<uint32_t>(values.size());
     order.resize(n);
     for (uint32_t k = 0; k < n; ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        return values[a] < values[b] || (values[a] == values[b] && a < b);
-    });
+    std::sort(order.begin(), order.end(),
+              [&](uint32_t a, uint32_t b) { return values[a] < values[b] || (values[a] == values[b] && a < b); });
     ranks.resize(n);
     for (uint32_t r = 0; r < n; ++r) ranks[order[r]] = r;
 }

@@ -12,8 +12,8 @@ namespace grass {
 
 struct ThresholdParams {
     grass_threshold_mode mode = GRASS_THRESHOLD_UNIFORM;
-    double cluster_sigma = 0.12;     // width of the Gaussian around the noise value
-    uint32_t cluster_frequency = 3;  // noise periods per patch
+    double cluster_sigma = 0.12;    // width of the Gaussian around the noise value
+    uint32_t cluster_frequency = 3; // noise periods per patch
     uint64_t seed = 1;
 };
 

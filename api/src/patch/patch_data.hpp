@@ -10,18 +10,18 @@ namespace grass {
 
 // One vertex of a blade. Layout matches api/shaders/blade_interface.glsl, locations 0-4.
 struct BladeVertex {
-    float position[3];    // location 0: patch units, root on the unit ground square
-    float normal[3];      // location 1: unit, orthogonal to the blade's tangent
-    float root_shape[4];  // location 2: root x, root z, u across the blade (0..1), v along it (0 root, 1 tip)
-    uint8_t color[4];     // location 3: linear RGB modulation of the blade and vertex, unorm8; a = 255
-    float threshold;      // location 4: the blade's density threshold in (0, 1]
+    float position[3];   // location 0: patch units, root on the unit ground square
+    float normal[3];     // location 1: unit, orthogonal to the blade's tangent
+    float root_shape[4]; // location 2: root x, root z, u across the blade (0..1), v along it (0 root, 1 tip)
+    uint8_t color[4];    // location 3: linear RGB modulation of the blade and vertex, unorm8; a = 255
+    float threshold;     // location 4: the blade's density threshold in (0, 1]
 };
 static_assert(sizeof(BladeVertex) == 48, "BladeVertex must match the shader's vertex layout");
 
 struct PatchData {
-    explicit PatchData(HostAllocator* host) : vertices(StlAllocator<BladeVertex>(host)),
-                                              indices(StlAllocator<uint32_t>(host)),
-                                              thresholds(StlAllocator<float>(host)) {}
+    explicit PatchData(HostAllocator* host)
+        : vertices(StlAllocator<BladeVertex>(host)), indices(StlAllocator<uint32_t>(host)),
+          thresholds(StlAllocator<float>(host)) {}
     Vector<BladeVertex> vertices; // blade after blade, (subdivisions + 1) * 2 each
     Vector<uint32_t> indices;     // triangle list, subdivisions * 6 per blade
     Vector<float> thresholds;     // one per blade
@@ -30,9 +30,9 @@ struct PatchData {
     uint32_t indices_per_blade = 0;
     float bounds_min[3] = {0, 0, 0};
     float bounds_max[3] = {0, 0, 0};
-    float ao_impact = 0;          // B_impact (lemme eq. 6.11)
-    float ao_height = 0;          // B_height, patch units
-    uint64_t content_hash = 0;    // FNV-1a 64 over vertices then indices
+    float ao_impact = 0;       // B_impact (lemme eq. 6.11)
+    float ao_height = 0;       // B_height, patch units
+    uint64_t content_hash = 0; // FNV-1a 64 over vertices then indices
 };
 
 } // namespace grass

@@ -48,41 +48,39 @@ static_assert(sizeof(FieldUniforms) == 304, "std140 Field block");
 // cell coordinates let a shader mirror every cell of a macro-cell as that cell is mirrored
 // on its own (mirror_tiling.hpp and lighting.glsl share the hash) and find design-map uvs.
 struct TierInstance {
-    float origin[3];    // location 5 xyz: the (macro-)cell's (0,0) corner relative to the camera, world metres
-    float reserved;     // location 5 w
-    uint32_t cell[2];   // location 6 xy: the first cell (field x, z)
-    uint32_t count[2];  // location 6 zw: size in cells along field x and z (1, 1 for a cell)
-    float terrain[4];   // location 7: x = lowest, y = highest terrain height under the instance, in patch
-                        // units (cell edges) along the field's up axis (0, 0 without a height map); zw = 0
+    float origin[3];   // location 5 xyz: the (macro-)cell's (0,0) corner relative to the camera, world metres
+    float reserved;    // location 5 w
+    uint32_t cell[2];  // location 6 xy: the first cell (field x, z)
+    uint32_t count[2]; // location 6 zw: size in cells along field x and z (1, 1 for a cell)
+    float terrain[4];  // location 7: x = lowest, y = highest terrain height under the instance, in patch
+                       // units (cell edges) along the field's up axis (0, 0 without a height map); zw = 0
 };
 static_assert(sizeof(TierInstance) == 48, "TierInstance must match the shader's instance layout");
 
 // One instanced draw: the instances one tier of one field draws this frame.
 struct TierDraw {
-    grass_tier_kind kind;    // how to draw: blades (geometry), volume or image
-    uint32_t tier;           // index of the tier in its field
-    uint32_t slices;         // volume tiers: slices per axis
+    grass_tier_kind kind; // how to draw: blades (geometry), volume or image
+    uint32_t tier;        // index of the tier in its field
+    uint32_t slices;      // volume tiers: slices per axis
     uint32_t field_slot;
     uint32_t patch_slot;
     uint32_t first_instance; // into FramePlan::instances
     uint32_t instance_count;
-    uint32_t features;       // shader variant: the field's maps (bit = 1 << MapRole); equals uniforms.tiling[3]
+    uint32_t features; // shader variant: the field's maps (bit = 1 << MapRole); equals uniforms.tiling[3]
     FieldUniforms uniforms;
 };
 
 // The baked slice set a volume or image draw samples: its slices per axis for a volume
 // tier, the horizontal slice (N = 0) for an image tier (SliceSet::slices_per_axis).
-inline uint32_t draw_slice_set(const TierDraw& draw) {
-    return draw.kind == GRASS_TIER_VOLUME ? draw.slices : 0;
-}
+inline uint32_t draw_slice_set(const TierDraw& draw) { return draw.kind == GRASS_TIER_VOLUME ? draw.slices : 0; }
 
 struct FramePlan {
-    explicit FramePlan(HostAllocator* host) : instances(StlAllocator<TierInstance>(host)),
-                                              draws(StlAllocator<TierDraw>(host)) {}
+    explicit FramePlan(HostAllocator* host)
+        : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)) {}
     FrameUniforms frame{};
     int32_t viewport[4] = {0, 0, 0, 0};
-    uint32_t flags = 0;                  // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
-                                         // draw as debug boxes instead of its tier
+    uint32_t flags = 0;             // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
+                                    // draw as debug boxes instead of its tier
     Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
     Vector<TierDraw> draws;         // per field, per tier that draws something
     grass_frame_stats stats{};

@@ -1,9 +1,9 @@
 #include "plan/frame_planner.hpp"
 
+#include "context/validate.hpp"
 #include "maps/design_map.hpp"
 #include "plan/lod_setup.hpp"
 #include "plan/tier_transitions.hpp"
-#include "context/validate.hpp"
 #include "plan/view_culling.hpp"
 
 #include <algorithm>
@@ -33,7 +33,7 @@ uint64_t blades_passing(double density, uint32_t blade_count) {
 
 // A field seen from the camera: its frame in camera-relative world space.
 struct FieldFrame {
-    double cam_local[3]; // camera in field space, cells
+    double cam_local[3];  // camera in field space, cells
     double origin_rel[3]; // field origin relative to the camera, metres
     double axis[3][3];    // one cell along field x, y, z, in world metres
     double cell_size;
@@ -60,7 +60,7 @@ void to_camera(const FieldFrame& f, double x, double y, double z, double out[3])
 }
 
 struct NodeBox {
-    double lo[3], hi[3]; // field space, cells
+    double lo[3], hi[3];                       // field space, cells
     double terrain_lo = 0.0, terrain_hi = 0.0; // terrain height range under the node, cells
 };
 
@@ -197,7 +197,8 @@ private:
                     return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                                       "grass_begin_frame: lod test %u of field %u (a callback) answered %lld for node "
                                       "(level %u, cell %u, %u); it must answer a grass_lod_answer",
-                                      k, slot_ + 1, static_cast<long long>(answer), node.level, info.cell_x, info.cell_z);
+                                      k, slot_ + 1, static_cast<long long>(answer), node.level, info.cell_x,
+                                      info.cell_z);
                 }
             } else {
                 answer = evaluate_builtin_test(test, info, node_top, camera_height);
@@ -250,8 +251,8 @@ private:
         PlanCandidate c;
         double origin[3], centre[3];
         to_camera(frame_, double(cells.x0), 0.0, double(cells.z0), origin);
-        to_camera(frame_, double(cells.x0) + 0.5 * double(cells.count_x), 0.0, double(cells.z0) + 0.5 * double(cells.count_z),
-                  centre);
+        to_camera(frame_, double(cells.x0) + 0.5 * double(cells.count_x), 0.0,
+                  double(cells.z0) + 0.5 * double(cells.count_z), centre);
         c.distance2 = centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2];
         for (int a = 0; a < 3; ++a) c.instance.origin[a] = static_cast<float>(origin[a]);
         c.instance.reserved = 0.0f;
@@ -262,7 +263,8 @@ private:
         c.instance.terrain[0] = static_cast<float>(box.terrain_lo);
         c.instance.terrain[1] = static_cast<float>(box.terrain_hi);
         c.instance.terrain[2] = c.instance.terrain[3] = 0.0f;
-        c.density = density_at(double(cells.x0) + 0.5 * double(cells.count_x), double(cells.z0) + 0.5 * double(cells.count_z));
+        c.density =
+            density_at(double(cells.x0) + 0.5 * double(cells.count_x), double(cells.z0) + 0.5 * double(cells.count_z));
         ctx_->plan_scratch.per_tier[tier].push_back(c);
     }
 
@@ -313,7 +315,8 @@ private:
                         if (b > t) lo += w;
                         if (b == t) self = w;
                     }
-                    const double share_lo = total > 0.0f ? lo / total : 0.0, share_hi = total > 0.0f ? (lo + self) / total : 0.0;
+                    const double share_lo = total > 0.0f ? lo / total : 0.0,
+                                 share_hi = total > 0.0f ? (lo + self) / total : 0.0;
                     const uint64_t passing = blades_passing(c.density * share_hi, pd.blade_count) -
                                              blades_passing(c.density * share_lo, pd.blade_count);
                     plan.stats.cells_drawn += 1;

@@ -67,10 +67,11 @@ grass_result validate_test(grass_context* ctx, const char* fn, uint32_t k, const
         return GRASS_SUCCESS;
     case GRASS_LOD_TEST_HILLTOP:
         if (geometry) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                             "%s: desc->lod_tests[%u] is a hilltop test on tier %u, a geometry tier; hilltop silhouettes "
-                             "are drawn by a volume (or image) tier",
-                             fn, k, t.tier);
+            return ctx->fail(
+                GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                "%s: desc->lod_tests[%u] is a hilltop test on tier %u, a geometry tier; hilltop silhouettes "
+                "are drawn by a volume (or image) tier",
+                fn, k, t.tier);
         }
         return GRASS_SUCCESS;
     case GRASS_LOD_TEST_CALLBACK:
@@ -155,7 +156,8 @@ grass_result make_lod_setup(grass_context* ctx, const char* fn, const grass_fiel
     return GRASS_SUCCESS;
 }
 
-grass_lod_answer evaluate_builtin_test(const grass_lod_test& t, const grass_lod_node& n, double node_top, double camera_height) {
+grass_lod_answer evaluate_builtin_test(const grass_lod_test& t, const grass_lod_node& n, double node_top,
+                                       double camera_height) {
     if (t.kind == GRASS_LOD_TEST_DISTANCE_BAND) {
         if (n.distance_min > t.end || n.distance_max < t.begin) return GRASS_LOD_DISCARD;
         if (n.distance_min >= t.begin && n.distance_max <= t.end) return GRASS_LOD_DRAW;
@@ -166,7 +168,7 @@ grass_lod_answer evaluate_builtin_test(const grass_lod_test& t, const grass_lod_
     if (t.kind == GRASS_LOD_TEST_UNPLANARITY) {
         const double unplanarity = n.height_max - n.height_min;
         return unplanarity <= t.max_unplanarity + double(t.unplanarity_ratio) * n.distance_min ? GRASS_LOD_DRAW
-                                                                                                : GRASS_LOD_SPLIT;
+                                                                                               : GRASS_LOD_SPLIT;
     }
     if (t.kind == GRASS_LOD_TEST_HILLTOP) {
         return node_top <= camera_height ? GRASS_LOD_DISCARD : GRASS_LOD_DRAW;
@@ -177,22 +179,29 @@ grass_lod_answer evaluate_builtin_test(const grass_lod_test& t, const grass_lod_
 
 } // namespace grass
 
-extern "C" GRASS_API void grass_default_lod_setup(double cell_size, grass_tier_desc* out_tiers, grass_lod_test* out_tests) {
+extern "C" GRASS_API void grass_default_lod_setup(double cell_size, grass_tier_desc* out_tiers,
+                                                  grass_lod_test* out_tests) {
     if (!out_tiers || !out_tests) return;
     // Lemme's distances are in cells (his cell is the unit patch): his player-height view
     // draws c_g = 106 geometry cells, which a 20-cell radius gives and a 20 m one at 0.25 m
     // cells (thousands of cells) does not. So metres = table value x cell size.
     const double scale = (std::isfinite(cell_size) && cell_size > 0.0) ? cell_size : 1.0;
-    const grass_tier_desc tiers[GRASS_DEFAULT_TIER_COUNT] = {
-        {GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 8}, {GRASS_TIER_VOLUME, 2}, {GRASS_TIER_VOLUME, 1}, {GRASS_TIER_IMAGE, 0}};
+    const grass_tier_desc tiers[GRASS_DEFAULT_TIER_COUNT] = {{GRASS_TIER_GEOMETRY, 0},
+                                                             {GRASS_TIER_VOLUME, 8},
+                                                             {GRASS_TIER_VOLUME, 2},
+                                                             {GRASS_TIER_VOLUME, 1},
+                                                             {GRASS_TIER_IMAGE, 0}};
     std::memcpy(out_tiers, tiers, sizeof(tiers));
     struct Band {
         double begin, end, in, out;
         uint32_t macro;
     };
     const double inf = std::numeric_limits<double>::infinity();
-    const Band bands[GRASS_DEFAULT_TIER_COUNT] = {
-        {0, 20, 0, 15, 1}, {5, 80, 15, 30, 40}, {50, 160, 30, 60, 40}, {100, 300, 60, 100, 40}, {200, inf, 100, 0, 500}};
+    const Band bands[GRASS_DEFAULT_TIER_COUNT] = {{0, 20, 0, 15, 1},
+                                                  {5, 80, 15, 30, 40},
+                                                  {50, 160, 30, 60, 40},
+                                                  {100, 300, 60, 100, 40},
+                                                  {200, inf, 100, 0, 500}};
     uint32_t k = 0;
     for (uint32_t t = 0; t < GRASS_DEFAULT_TIER_COUNT; ++t) {
         grass_lod_test band;

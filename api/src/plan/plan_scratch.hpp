@@ -27,11 +27,14 @@ struct PlanScratch {
     using Candidates = Vector<PlanCandidate>;
     static_assert(GRASS_MAX_TIERS == 8, "one initialiser per tier below");
     explicit PlanScratch(HostAllocator* host)
-        : stack(StlAllocator<PlanNode>(host)),
-          per_tier{Candidates(StlAllocator<PlanCandidate>(host)), Candidates(StlAllocator<PlanCandidate>(host)),
-                   Candidates(StlAllocator<PlanCandidate>(host)), Candidates(StlAllocator<PlanCandidate>(host)),
-                   Candidates(StlAllocator<PlanCandidate>(host)), Candidates(StlAllocator<PlanCandidate>(host)),
-                   Candidates(StlAllocator<PlanCandidate>(host)), Candidates(StlAllocator<PlanCandidate>(host))} {}
+        : stack(StlAllocator<PlanNode>(host)), per_tier{Candidates(StlAllocator<PlanCandidate>(host)),
+                                                        Candidates(StlAllocator<PlanCandidate>(host)),
+                                                        Candidates(StlAllocator<PlanCandidate>(host)),
+                                                        Candidates(StlAllocator<PlanCandidate>(host)),
+                                                        Candidates(StlAllocator<PlanCandidate>(host)),
+                                                        Candidates(StlAllocator<PlanCandidate>(host)),
+                                                        Candidates(StlAllocator<PlanCandidate>(host)),
+                                                        Candidates(StlAllocator<PlanCandidate>(host))} {}
     Vector<PlanNode> stack;
     Candidates per_tier[GRASS_MAX_TIERS];
 };

@@ -10,7 +10,7 @@
 namespace grass {
 
 struct NodeCells {
-    uint64_t x0, z0;          // first cell
+    uint64_t x0, z0;           // first cell
     uint64_t count_x, count_z; // cells spanned (>= 1)
 };
 
@@ -19,7 +19,7 @@ public:
     QuadtreeShape() = default;
     QuadtreeShape(uint32_t cells_x, uint32_t cells_z);
 
-    uint32_t levels() const { return levels_; }     // level levels()-1 is the root
+    uint32_t levels() const { return levels_; } // level levels()-1 is the root
     uint32_t root_level() const { return levels_ - 1; }
     uint64_t nodes_x(uint32_t level) const { return (uint64_t(cells_x_) + (uint64_t(1) << level) - 1) >> level; }
     uint64_t nodes_z(uint32_t level) const { return (uint64_t(cells_z_) + (uint64_t(1) << level) - 1) >> level; }

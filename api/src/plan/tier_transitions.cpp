@@ -35,7 +35,8 @@ float tier_blade_opacity(const TierBand* bands, uint32_t count, uint32_t tier, f
     const float r = threshold / density;
     const float a = lo / total, b = (lo + self) / total;
     // Interval (a, b]; its open ends at 0 and 1 need no window.
-    const float enter = a <= 0.0f ? 1.0f : (window > 0.0f ? smoothstep(a - window, a + window, r) : (r > a ? 1.0f : 0.0f));
+    const float enter =
+        a <= 0.0f ? 1.0f : (window > 0.0f ? smoothstep(a - window, a + window, r) : (r > a ? 1.0f : 0.0f));
     const float leave =
         b >= 1.0f ? 1.0f : (window > 0.0f ? 1.0f - smoothstep(b - window, b + window, r) : (r <= b ? 1.0f : 0.0f));
     return enter * leave;

@@ -3,7 +3,10 @@
 namespace grass {
 
 TierTimerRing::TierTimerRing(uint32_t sets, WhenBusy when_busy)
-    : set_count_(sets < 1 ? 1 : sets > kMaxSets ? kMaxSets : sets), when_busy_(when_busy) {}
+    : set_count_(sets < 1          ? 1
+                 : sets > kMaxSets ? kMaxSets
+                                   : sets),
+      when_busy_(when_busy) {}
 
 void TierTimerRing::set_clock(uint32_t valid_bits, double ns_per_tick) {
     mask_ = valid_bits >= 64 ? ~uint64_t(0) : (uint64_t(1) << valid_bits) - 1;
@@ -53,8 +56,7 @@ void TierTimerRing::accept(const uint64_t* stamps) {
     next_unread(&first, &count);
     Set& set = sets_[first / kStampsPerSet];
     // Stamps 0-1 of a pass bracket the blades, 1-2 the volumes, 2-3 the images.
-    static const grass_tier_kind kinds[kStampsPerPass - 1] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME,
-                                                              GRASS_TIER_IMAGE};
+    static const grass_tier_kind kinds[kStampsPerPass - 1] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
     double ms[GRASS_TIER_KIND_COUNT] = {};
     for (uint32_t p = 0; p < set.passes; ++p) {
         for (uint32_t k = 0; k + 1 < kStampsPerPass; ++k) {

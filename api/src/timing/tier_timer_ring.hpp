@@ -73,7 +73,7 @@ private:
     WhenBusy when_busy_;
     uint64_t mask_ = ~uint64_t(0);
     double ns_per_tick_ = 1.0;
-    uint32_t next_ = 0;      // the oldest set: the next frame's
+    uint32_t next_ = 0;        // the oldest set: the next frame's
     uint32_t open_ = kUntimed; // the set of the open frame
     bool valid_ = false;
     double ms_[GRASS_TIER_KIND_COUNT] = {};
