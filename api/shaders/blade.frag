@@ -32,5 +32,6 @@ void main() {
     // stays opaque (the scale is at least 2), or far grass would wash out to the sky.
     float edge = 0.5 - abs(v_shape.x - 0.5);
     float alpha = clamp(edge * max(1.0 / max(fwidth(v_shape.x), 1e-6), 2.0) + 0.5, 0.0, 1.0);
-    out_color = debug_thresholds() ? threshold_code(v_threshold) : vec4(debug_tint(color), alpha * v_opacity);
+    out_color =
+        debug_thresholds() ? threshold_code(v_threshold) : output_color(vec4(debug_tint(color), alpha * v_opacity));
 }

@@ -25,6 +25,8 @@ layout(std140, binding = 0) uniform Frame {
     vec4 ambient_color;    // rgb
     vec4 params;           // x: time in seconds, y: view flags, z: +1 depth 0 near, -1 reversed depth,
                            // w: the target's samples per pixel (set by the backend)
+    vec4 target;           // x: 1 when the host's clip z runs 0..1 (Vulkan, GL_ZERO_TO_ONE clip control),
+                           // 0 for GL's default -1..1 (set by the backend)
 } frame;
 
 layout(std140, binding = 1) uniform Field {
@@ -90,19 +92,37 @@ vec2 light_maps(vec2 cell_point) {
     return l;
 }
 
+// GRASS_VIEW_FLAG_ENCODE_SRGB (16 in frame.params.y): the host's target stores what the
+// shader writes (UNORM, or GL_FRAMEBUFFER_SRGB off), so the shader encodes to sRGB itself.
+bool encode_srgb() {
+    return (uint(frame.params.y + 0.5) & 16u) != 0u;
+}
+// The colour a tier writes: linear RGB, sRGB-encoded when the host asks for it. Alpha is
+// coverage and stays linear. Before a multisample resolve, as a UNORM target stores it.
+vec4 output_color(vec4 linear) {
+    if (!encode_srgb()) return linear;
+    vec3 c = clamp(linear.rgb, 0.0, 1.0);
+    vec3 encoded = mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+    return vec4(encoded, linear.a);
+}
+
 // The target's samples per pixel (1 without multisampling; set by the backend).
 int sample_count() {
     return max(int(frame.params.w + 0.5), 1);
 }
 
 
-// The window depth of a camera-relative world position, for gl_FragDepth (GL's default
-// depth range; Vulkan's clip z is already 0..1).
+// The window depth of a camera-relative world position, for gl_FragDepth: clip z / w
+// mapped as the host's clip convention maps it (frame.target.x: 0..1 or -1..1), then into
+// the depth range (GL: the host's glDepthRange; Vulkan: the viewport's 0..1, vk_record).
+// Reversed depth needs nothing here: it is in the host's projection.
 float window_depth(vec3 position) {
     vec4 clip = frame.view_projection * vec4(position, 1.0);
+    float z = clip.z / clip.w;
+    if (frame.target.x < 0.5) z = 0.5 * z + 0.5;
 #ifdef VULKAN
-    return clip.z / clip.w;
+    return z;
 #else
-    return 0.5 * (clip.z / clip.w) + 0.5;
+    return gl_DepthRange.near + gl_DepthRange.diff * z;
 #endif
 }

@@ -64,5 +64,5 @@ void main() {
     // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
     vec3 color = grass_lighting_lobes(modulate_color(albedo.rgb, cell_point), n, vec3(1.0, 0.0, 1.0), to_camera, sun, ao,
                                       light_maps(cell_point));
-    out_color = debug_thresholds() ? threshold_code(threshold) : vec4(debug_tint(color), alpha);
+    out_color = debug_thresholds() ? threshold_code(threshold) : output_color(vec4(debug_tint(color), alpha));
 }

@@ -39,7 +39,8 @@ vec3 debug_tint(vec3 color) {
 
 // GRASS_VIEW_FLAG_DEBUG_THRESHOLDS (8 in frame.params.y): the blade's threshold in 16 bits
 // (red high byte, green low byte) and the tier kind in blue, as linear values that an sRGB
-// target encodes back to exactly those bytes.
+// target encodes back to exactly those bytes; with GRASS_VIEW_FLAG_ENCODE_SRGB (a target
+// that stores what it is given) as the bytes themselves.
 bool debug_thresholds() {
     return (uint(frame.params.y + 0.5) & 8u) != 0u;
 }
@@ -51,6 +52,7 @@ vec4 threshold_code(float threshold) {
     uint code = uint(clamp(threshold, 0.0, 1.0) * 65535.0 + 0.5);
     float kind = field.blade_params.z;
     float blue = kind < 0.5 ? 0.0 : kind < 1.5 ? 128.0 : 255.0;
+    if (encode_srgb()) return vec4(float(code >> 8) / 255.0, float(code & 255u) / 255.0, blue / 255.0, 1.0);
     return vec4(srgb_byte_to_linear(float(code >> 8)), srgb_byte_to_linear(float(code & 255u)),
                 srgb_byte_to_linear(blue), 1.0);
 }

@@ -249,7 +249,8 @@ void main() {
         }
     }
     if (!write_coverage(g_alpha)) discard;
-    out_color = debug_thresholds() ? threshold_code(g_depth_threshold) : vec4(debug_tint(g_color / g_alpha), g_alpha);
+    out_color = debug_thresholds() ? threshold_code(g_depth_threshold)
+                                   : output_color(vec4(debug_tint(g_color / g_alpha), g_alpha));
     // The last level at or below half the ray's alpha (1/2 for an opaque ray).
     int level = 0;
     for (int i = 1; i < g_depth_reached; ++i) {

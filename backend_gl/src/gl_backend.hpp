@@ -86,7 +86,7 @@ private:
     void delete_slices(SliceGpu& slices);
     const SliceGpu* find_slices(uint32_t patch_slot, uint32_t slices_per_axis) const;
     // gl_draw.cpp
-    void upload_frame(uint32_t samples);
+    void upload_frame(uint32_t samples, bool clip_zero_to_one);
     void draw_blades(const FramePlan& plan) const;
     void draw_sliced(const FramePlan& plan, grass_tier_kind kind) const; // volume or image draws
     void draw_debug(const FramePlan& plan) const;                        // GRASS_VIEW_FLAG_DEBUG_CELLS
@@ -124,7 +124,8 @@ private:
     Vector<unsigned char> uniform_staging_;
     Vector<GLintptr> field_uniform_offsets_; // per draw (all kinds), into uniforms_
     bool frame_uploaded_ = false;
-    uint32_t frame_samples_ = 0; // the Frame block's params.w as uploaded
+    uint32_t frame_samples_ = 0;          // the Frame block's params.w as uploaded
+    bool frame_clip_zero_to_one_ = false; // ... and its target.x
     Vector<PatchGpu> patches_;
     Vector<SliceGpu> slices_; // every patch's sets, unordered
     Vector<FieldGpu> fields_;

@@ -24,8 +24,8 @@ constexpr GLsizei kVolumeVertices = 36;          // a cuboid, every face (volume
 // Uniform buffer layout: Frame at offset 0, then one Field block per draw of any kind
 // (the debug view draws them all), each at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT. The Frame
 // block's params.w holds the target's samples per pixel (sample_count() of
-// blade_interface.glsl).
-void GlBackend::upload_frame(uint32_t samples) {
+// blade_interface.glsl), its target.x the host's clip depth convention (1: 0..1).
+void GlBackend::upload_frame(uint32_t samples, bool clip_zero_to_one) {
     const FramePlan& plan = ctx_->plan;
     const size_t alignment = static_cast<size_t>(uniform_alignment_);
 
@@ -38,6 +38,7 @@ void GlBackend::upload_frame(uint32_t samples) {
     uniform_staging_.assign(size, 0);
     FrameUniforms frame = plan.frame;
     frame.params[3] = static_cast<float>(samples);
+    frame.target[0] = clip_zero_to_one ? 1.0f : 0.0f;
     std::memcpy(uniform_staging_.data(), &frame, sizeof(FrameUniforms));
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &plan.draws[i].uniforms,
@@ -47,6 +48,7 @@ void GlBackend::upload_frame(uint32_t samples) {
     instances_.upload(gl_, plan.instances.data(), plan.instances.size() * sizeof(TierInstance));
     frame_uploaded_ = true;
     frame_samples_ = samples;
+    frame_clip_zero_to_one_ = clip_zero_to_one;
 }
 
 void GlBackend::bind_field_maps(const FieldGpu& field) const {
@@ -164,8 +166,16 @@ grass_result GlBackend::render(const char* function) {
     gl_.GetIntegerv(GL_SAMPLES, &samples);
     const bool multisampled = sample_buffers > 0;
     const uint32_t sample_count = multisampled ? static_cast<uint32_t>(std::max(samples, 1)) : 1u;
-    // Once per frame; again if a later call of the frame draws into a target of another kind.
-    if (!frame_uploaded_ || frame_samples_ != sample_count) upload_frame(sample_count);
+    // The host's clip convention (glClipControl), read and never changed: the volume tier
+    // maps its gl_FragDepth with it (window_depth() of blade_interface.glsl).
+    GLint clip_depth_mode = GL_NEGATIVE_ONE_TO_ONE;
+    gl_.GetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth_mode);
+    const bool clip_zero_to_one = clip_depth_mode == GL_ZERO_TO_ONE;
+    // Once per frame; again if a later call of the frame draws into a target of another kind
+    // or with another clip convention.
+    if (!frame_uploaded_ || frame_samples_ != sample_count || frame_clip_zero_to_one_ != clip_zero_to_one) {
+        upload_frame(sample_count, clip_zero_to_one);
+    }
 
     GlDrawStateGuard guard(gl_); // also makes texture unit 0 active
     gl_.Viewport(plan.viewport[0], plan.viewport[1], plan.viewport[2], plan.viewport[3]);

@@ -15,6 +15,8 @@
     X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                                         \
     X(PFNGLGETINTEGER64I_VPROC, GetInteger64i_v)                                     \
     X(PFNGLGETBOOLEANVPROC, GetBooleanv)                                             \
+    X(PFNGLGETBOOLEANI_VPROC, GetBooleani_v)                                         \
+    X(PFNGLCOLORMASKIPROC, ColorMaski)                                               \
     X(PFNGLISENABLEDPROC, IsEnabled)                                                 \
     X(PFNGLENABLEPROC, Enable)                                                       \
     X(PFNGLDISABLEPROC, Disable)                                                     \

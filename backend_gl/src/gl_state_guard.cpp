@@ -25,6 +25,34 @@ constexpr GLint kMapUnitList[] = {kMapUnit[kMapColor], kMapUnit[kMapAmbient], kM
 
 static_assert(sizeof(kUnpackParameters) / sizeof(kUnpackParameters[0]) == 7, "GlUnpackStateGuard::kParameters");
 
+// Host state that would hide or distort grass if it stayed on while grass draws: disabled
+// for the draws, enabled again afterwards (grass_gl.h lists them). Every GL 4.5 context has
+// at least 8 clip distances.
+constexpr GLenum kHostDisabled[] = {
+    GL_STENCIL_TEST,
+    GL_SCISSOR_TEST,
+    GL_POLYGON_OFFSET_FILL,
+    GL_RASTERIZER_DISCARD,
+    GL_SAMPLE_MASK,
+    GL_SAMPLE_SHADING,
+    GL_SAMPLE_COVERAGE,
+    GL_SAMPLE_ALPHA_TO_ONE,
+    GL_DEPTH_CLAMP,
+    GL_PRIMITIVE_RESTART,
+    GL_PRIMITIVE_RESTART_FIXED_INDEX,
+    GL_COLOR_LOGIC_OP,
+    GL_CLIP_DISTANCE0,
+    GL_CLIP_DISTANCE1,
+    GL_CLIP_DISTANCE2,
+    GL_CLIP_DISTANCE3,
+    GL_CLIP_DISTANCE4,
+    GL_CLIP_DISTANCE5,
+    GL_CLIP_DISTANCE6,
+    GL_CLIP_DISTANCE7,
+};
+constexpr int kHostDisabledCount = sizeof(kHostDisabled) / sizeof(kHostDisabled[0]);
+static_assert(kHostDisabledCount <= 32, "GlDrawStateGuard::host_enabled_ holds one bit each");
+
 } // namespace
 
 GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl) : gl_(gl) {
@@ -64,6 +92,13 @@ GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl) : gl_(gl) {
     multisample_ = gl.IsEnabled(GL_MULTISAMPLE);
     alpha_to_coverage_ = gl.IsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE);
     gl.GetIntegerv(GL_POLYGON_MODE, polygon_mode_); // core profiles report front and back alike
+    gl.GetBooleani_v(GL_COLOR_WRITEMASK, 0, color_mask_);
+    gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    for (int i = 0; i < kHostDisabledCount; ++i) {
+        if (!gl.IsEnabled(kHostDisabled[i])) continue;
+        host_enabled_ |= 1u << i;
+        gl.Disable(kHostDisabled[i]);
+    }
 }
 
 GlDrawStateGuard::~GlDrawStateGuard() {
@@ -107,6 +142,10 @@ GlDrawStateGuard::~GlDrawStateGuard() {
     set_enabled(gl, GL_MULTISAMPLE, multisample_);
     set_enabled(gl, GL_SAMPLE_ALPHA_TO_COVERAGE, alpha_to_coverage_);
     gl.PolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
+    gl.ColorMaski(0, color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
+    for (int i = 0; i < kHostDisabledCount; ++i) {
+        if (host_enabled_ & (1u << i)) gl.Enable(kHostDisabled[i]);
+    }
 }
 
 GlUnpackStateGuard::GlUnpackStateGuard(const GlFunctions& gl, GLint alignment) : gl_(gl) {

@@ -9,7 +9,10 @@ namespace grass {
 
 // Around drawing: exactly the state grass_gl.h documents for grass_gl_render, with the
 // slice units 3-5 (their 2D array texture and sampler) and the design-map units 6-9 (their
-// 2D texture and sampler). On construction texture unit 0 is made active.
+// 2D texture and sampler). On construction texture unit 0 is made active, and the host's
+// draw state that would change or hide grass is set aside: draw buffer 0's colour mask is
+// made all true and the capabilities of kHostDisabled are disabled (only those the host
+// left enabled are touched; the destructor enables them again).
 class GlDrawStateGuard {
 public:
     explicit GlDrawStateGuard(const GlFunctions& gl);
@@ -55,6 +58,8 @@ private:
     GLboolean multisample_ = GL_FALSE;
     GLboolean alpha_to_coverage_ = GL_FALSE;
     GLint polygon_mode_[2] = {GL_FILL, GL_FILL};
+    GLboolean color_mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE}; // draw buffer 0's
+    uint32_t host_enabled_ = 0;                                      // bit i: kHostDisabled[i] was enabled by the host
 };
 
 // Around texture uploads from client memory: the unpack pixel-store state and the pixel

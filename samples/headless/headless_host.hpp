@@ -7,6 +7,7 @@
 #include <grass/grass.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,7 +28,21 @@ struct TargetDesc {
     // grass like an engine's scene. Off for tests that count sky pixels.
     bool ground = false;
     float ground_color[3] = {0.045f, 0.036f, 0.018f}; // linear albedo: dark soil
+    // The host's depth convention. reversed_z: depth 1 is near: the projection maps the near
+    // plane to 1, the host clears depth to 0 and tests GREATER (give grass GRASS_DEPTH_GREATER).
+    bool reversed_z = false;
+    // GL: glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) while the frame draws, and projections
+    // with clip z 0..1 (Vulkan's convention; Vulkan hosts ignore this: they always have it).
+    bool gl_clip_zero_to_one = false;
+    // An 8-bit UNORM colour target (GL_RGBA8 / VK_FORMAT_R8G8B8A8_UNORM) instead of sRGB: it
+    // stores what the shaders write. The host encodes its clear and occluder colours to sRGB
+    // itself, as an engine without sRGB targets does (the ground is not encoded: leave it
+    // off). Pair it with GRASS_VIEW_FLAG_ENCODE_SRGB.
+    bool unorm_color = false;
 };
+
+// Linear to sRGB-encoded, 0..1 (clamped).
+float linear_to_srgb(float linear);
 
 // An opaque camera-facing rectangle the host draws into its own colour and depth before
 // grass draws: a box face `distance` metres in front of the camera. Pixel rectangle with
@@ -87,6 +102,12 @@ public:
         (void)name;
         return nullptr;
     }
+
+    // GL hosts: called in render() right before grass_begin_frame (after the clear, the
+    // ground and the occluder) and right after grass_end_frame (before the read-back), for
+    // tests of the GL state grass draws under and leaves. Vulkan hosts do not call them.
+    std::function<void()> before_grass;
+    std::function<void()> after_grass;
 
 protected:
     explicit Host(const TargetDesc& target) : target_(target) {}

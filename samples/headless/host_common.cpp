@@ -59,13 +59,18 @@ grass_view_desc make_view(const Host& host, const double eye[3], const double ta
     return v;
 }
 
+float linear_to_srgb(float v) {
+    v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; // NaN fails v > 0: 0
+    return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+}
+
 void encode_float_image(Image* image) {
     const size_t n = image->rgba_f32.size();
     image->rgba.resize(n);
     for (size_t k = 0; k < n; ++k) {
         float v = image->rgba_f32[k];
         v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; // NaN fails v > 0: 0
-        if (k % 4 != 3) v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+        if (k % 4 != 3) v = linear_to_srgb(v);
         image->rgba[k] = static_cast<uint8_t>(std::lround(v * 255.0f));
     }
 }

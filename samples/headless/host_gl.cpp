@@ -77,7 +77,8 @@ namespace {
     X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                                   \
     X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                         \
     X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                   \
-    X(PFNGLDEPTHFUNCPROC, DepthFunc)
+    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                     \
+    X(PFNGLCLIPCONTROLPROC, ClipControl)
 
 struct HostGl {
 #define GRASS_HOST_GL_DECLARE(type, name) type name = nullptr;
@@ -367,7 +368,7 @@ bool GlHost::create_target(std::string* error) {
     }
     const GLsizei w = GLsizei(t.width), h = GLsizei(t.height);
     const GLsizei samples = t.samples > 1 ? GLsizei(t.samples) : 0;
-    const GLenum color_format = t.float_color ? GL_RGBA32F : GL_SRGB8_ALPHA8;
+    const GLenum color_format = t.float_color ? GL_RGBA32F : t.unorm_color ? GL_RGBA8 : GL_SRGB8_ALPHA8;
     gl_.CreateRenderbuffers(1, &color_rb_);
     gl_.NamedRenderbufferStorageMultisample(color_rb_, samples, color_format, w, h);
     gl_.CreateRenderbuffers(1, &depth_rb_);
@@ -430,15 +431,29 @@ grass_result GlHost::create_context(const grass_context_desc& desc, grass_contex
     return grass_gl_create_context(GRASS_HEADER_VERSION, &desc, &gl_desc, out);
 }
 
-// Right-handed, looking down -z, clip z in -1..1 (gluPerspective).
+// Right-handed, looking down -z, clip z in -1..1 (gluPerspective), or in 0..1 with
+// gl_clip_zero_to_one; reversed_z maps the near plane to the top of the range.
 void GlHost::projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const {
     const float f = 1.0f / std::tan(0.5f * fovy_radians);
     for (int i = 0; i < 16; ++i) out[i] = 0.0f;
     out[0] = f / aspect;
     out[5] = f;
-    out[10] = (far_m + near_m) / (near_m - far_m);
     out[11] = -1.0f;
-    out[14] = 2.0f * far_m * near_m / (near_m - far_m);
+    if (target_.gl_clip_zero_to_one) {
+        out[10] = far_m / (near_m - far_m);
+        out[14] = far_m * near_m / (near_m - far_m);
+        if (target_.reversed_z) { // z' = w - z: depth 1 - d
+            out[10] = -1.0f - out[10];
+            out[14] = -out[14];
+        }
+    } else {
+        out[10] = (far_m + near_m) / (near_m - far_m);
+        out[14] = 2.0f * far_m * near_m / (near_m - far_m);
+        if (target_.reversed_z) { // z' = -z: depth 1 - d
+            out[10] = -out[10];
+            out[14] = -out[14];
+        }
+    }
 }
 
 // Clears colour and depth inside `rect` (x, y, width, height; GL bottom-left origin).
@@ -493,7 +508,7 @@ void GlHost::draw_ground(const grass_view_desc& view) {
     gl_.BindVertexArray(ground_vao_);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, 0, ground_buffer_);
     gl_.Enable(GL_DEPTH_TEST);
-    gl_.DepthFunc(GL_LESS);
+    gl_.DepthFunc(target_.reversed_z ? GL_GREATER : GL_LESS);
     gl_.DrawArrays(GL_TRIANGLES, 0, 6);
     gl_.Disable(GL_DEPTH_TEST);
     gl_.BindVertexArray(0);
@@ -508,8 +523,14 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     gl_.Viewport(0, 0, w, h);
     gl_.DepthMask(GL_TRUE);
     gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (target_.gl_clip_zero_to_one) gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     const int32_t whole[4] = {0, 0, w, h};
-    clear_rect(target_.clear_color, 1.0f, whole);
+    float clear_color[4] = {target_.clear_color[0], target_.clear_color[1], target_.clear_color[2],
+                            target_.clear_color[3]};
+    if (target_.unorm_color) {
+        for (int c = 0; c < 3; ++c) clear_color[c] = linear_to_srgb(clear_color[c]);
+    }
+    clear_rect(clear_color, target_.reversed_z ? 0.0f : 1.0f, whole);
 
     if (target_.ground) draw_ground(view);
 
@@ -519,22 +540,29 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
         const float z = -occluder->distance;
         const float clip_z = p[10] * z + p[14];
         const float clip_w = p[11] * z + p[15];
-        const float depth = 0.5f * (clip_z / clip_w) + 0.5f;
+        const float ndc_z = clip_z / clip_w;
+        const float depth = target_.gl_clip_zero_to_one ? ndc_z : 0.5f * ndc_z + 0.5f;
         const int32_t x0 = std::max(occluder->x0, 0), x1 = std::min(occluder->x1, w);
         const int32_t y0 = std::max(occluder->y0, 0), y1 = std::min(occluder->y1, h);
         if (x1 > x0 && y1 > y0) {
-            const float color[4] = {occluder->color[0], occluder->color[1], occluder->color[2], 1.0f};
+            float color[4] = {occluder->color[0], occluder->color[1], occluder->color[2], 1.0f};
+            if (target_.unorm_color) {
+                for (int c = 0; c < 3; ++c) color[c] = linear_to_srgb(color[c]);
+            }
             const int32_t rect[4] = {x0, h - y1, x1 - x0, y1 - y0}; // top-left -> bottom-left origin
             clear_rect(color, depth, rect);
         }
     }
 
+    if (before_grass) before_grass();
     grass_result result = grass_begin_frame(context, &view);
     if (result == GRASS_SUCCESS) {
         result = grass_gl_render(context);
         const grass_result end = grass_end_frame(context);
         if (result == GRASS_SUCCESS) result = end;
     }
+    if (after_grass) after_grass();
+    if (target_.gl_clip_zero_to_one) gl_.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     if (result != GRASS_SUCCESS) {
         if (error) *error = grass_get_last_error(context);
         gl_.Disable(GL_FRAMEBUFFER_SRGB);

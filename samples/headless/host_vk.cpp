@@ -32,6 +32,7 @@ namespace {
 
 constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB;            // linear shader output is sRGB-encoded
 constexpr VkFormat kFloatColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT; // TargetDesc::float_color
+constexpr VkFormat kUnormColorFormat = VK_FORMAT_R8G8B8A8_UNORM;      // TargetDesc::unorm_color
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
@@ -51,7 +52,9 @@ struct Attachment {
 class VkHost final : public Host {
 public:
     explicit VkHost(const TargetDesc& target)
-        : Host(target), color_format_(target.float_color ? kFloatColorFormat : kColorFormat),
+        : Host(target), color_format_(target.float_color   ? kFloatColorFormat
+                                      : target.unorm_color ? kUnormColorFormat
+                                                           : kColorFormat),
           texel_bytes_(target.float_color ? 16u : 4u) {}
     ~VkHost() override;
     VkHost(const VkHost&) = delete;
@@ -701,7 +704,7 @@ bool VkHost::create_ground_pipeline(std::string* error) {
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     depth.depthTestEnable = VK_TRUE;
     depth.depthWriteEnable = VK_TRUE;
-    depth.depthCompareOp = VK_COMPARE_OP_LESS;
+    depth.depthCompareOp = target_.reversed_z ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
     VkPipelineColorBlendAttachmentState attachment{};
     attachment.colorWriteMask = 0xf;
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
@@ -773,7 +776,8 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
 }
 
-// Right-handed view looking down -z; clip y points down and z runs 0 (near) .. 1 (far).
+// Right-handed view looking down -z; clip y points down and z runs 0 (near) .. 1 (far), or 1 .. 0
+// with reversed_z.
 void VkHost::projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const {
     const float f = 1.0f / std::tan(0.5f * fovy_radians);
     for (int i = 0; i < 16; ++i) out[i] = 0.0f;
@@ -782,6 +786,10 @@ void VkHost::projection(float fovy_radians, float aspect, float near_m, float fa
     out[10] = far_m / (near_m - far_m);
     out[11] = -1.0f;
     out[14] = far_m * near_m / (near_m - far_m);
+    if (target_.reversed_z) { // z' = w - z: depth 1 - d
+        out[10] = -1.0f - out[10];
+        out[14] = -out[14];
+    }
 }
 
 // ---- A frame ------------------------------------------------------------------------------
@@ -789,7 +797,10 @@ void VkHost::projection(float fovy_radians, float aspect, float near_m, float fa
 void VkHost::begin_pass(VkCommandBuffer cmd) {
     VkClearValue clears[2] = {};
     for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = target_.clear_color[c];
-    clears[1].depthStencil = {1.0f, 0};
+    if (target_.unorm_color) {
+        for (int c = 0; c < 3; ++c) clears[0].color.float32[c] = linear_to_srgb(target_.clear_color[c]);
+    }
+    clears[1].depthStencil = {target_.reversed_z ? 0.0f : 1.0f, 0};
     const VkRect2D area{{0, 0}, {target_.width, target_.height}};
     if (render_pass_) {
         VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
@@ -889,7 +900,10 @@ void VkHost::clear_occluder(VkCommandBuffer cmd, const grass_view_desc& view, co
     VkClearAttachment clears[2] = {};
     clears[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
     clears[0].colorAttachment = 0;
-    for (int c = 0; c < 3; ++c) clears[0].clearValue.color.float32[c] = occluder.color[c];
+    for (int c = 0; c < 3; ++c) {
+        const float linear = occluder.color[c];
+        clears[0].clearValue.color.float32[c] = target_.unorm_color ? linear_to_srgb(linear) : linear;
+    }
     clears[0].clearValue.color.float32[3] = 1.0f;
     clears[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
     clears[1].clearValue.depthStencil = {depth, 0};

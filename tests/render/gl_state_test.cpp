@@ -4,6 +4,8 @@
 
 #include <GL/glcorearb.h>
 
+#include <cstring>
+
 namespace grass_test {
 namespace {
 
@@ -223,6 +225,190 @@ TEST_P(GlStateTest, RenderRestoresTheHostsGlState) {
     gl.DepthMask(GL_TRUE);
     gl.DepthFunc(GL_LESS);
     gl.ActiveTexture(GL_TEXTURE0);
+}
+
+// The host's draw state that grass does not bind but depends on (issue 16). grass_gl.h
+// sorts it: state grass sets for its draws and restores (colour mask of draw buffer 0,
+// stencil, scissor, polygon offset, clip distances, rasterizer discard, sample mask, sample
+// shading, sample coverage and alpha-to-one, depth clamp, primitive restart, logic op) and
+// state it reads as the host's choice (sRGB conversion, clip control, depth range, dither;
+// front face does not matter: grass culls no faces). A host that leaves each in an unusual
+// state gets the same picture as one with GL's defaults, and every value back.
+struct DrawState {
+    GLboolean color_mask[4], stencil, scissor, offset_fill, discard, sample_mask_on, sample_shading, sample_coverage,
+        alpha_to_one, depth_clamp, restart, restart_fixed, logic_op, dither, srgb;
+    GLboolean clip[8];
+    GLint sample_mask, stencil_func, scissor_box[4], restart_index, logic_op_mode, front_face;
+    GLfloat offset_factor, offset_units, min_sample_shading;
+    bool operator==(const DrawState& o) const { return std::memcmp(this, &o, sizeof(DrawState)) == 0; }
+};
+
+struct StateGl {
+    PFNGLGETINTEGERVPROC GetIntegerv;
+    PFNGLGETINTEGERI_VPROC GetIntegeri_v;
+    PFNGLGETBOOLEANI_VPROC GetBooleani_v;
+    PFNGLGETFLOATVPROC GetFloatv;
+    PFNGLISENABLEDPROC IsEnabled;
+    PFNGLENABLEPROC Enable;
+    PFNGLDISABLEPROC Disable;
+    PFNGLCOLORMASKPROC ColorMask;
+    PFNGLSTENCILFUNCPROC StencilFunc;
+    PFNGLSCISSORPROC Scissor;
+    PFNGLPOLYGONOFFSETPROC PolygonOffset;
+    PFNGLSAMPLEMASKIPROC SampleMaski;
+    PFNGLMINSAMPLESHADINGPROC MinSampleShading;
+    PFNGLSAMPLECOVERAGEPROC SampleCoverage;
+    PFNGLPRIMITIVERESTARTINDEXPROC PrimitiveRestartIndex;
+    PFNGLLOGICOPPROC LogicOp;
+    PFNGLFRONTFACEPROC FrontFace;
+};
+
+DrawState draw_state(const StateGl& gl) {
+    DrawState s;
+    std::memset(&s, 0, sizeof(s)); // padding too: compared with memcmp
+    gl.GetBooleani_v(GL_COLOR_WRITEMASK, 0, s.color_mask);
+    s.stencil = gl.IsEnabled(GL_STENCIL_TEST);
+    s.scissor = gl.IsEnabled(GL_SCISSOR_TEST);
+    s.offset_fill = gl.IsEnabled(GL_POLYGON_OFFSET_FILL);
+    s.discard = gl.IsEnabled(GL_RASTERIZER_DISCARD);
+    s.sample_mask_on = gl.IsEnabled(GL_SAMPLE_MASK);
+    s.sample_shading = gl.IsEnabled(GL_SAMPLE_SHADING);
+    s.sample_coverage = gl.IsEnabled(GL_SAMPLE_COVERAGE);
+    s.alpha_to_one = gl.IsEnabled(GL_SAMPLE_ALPHA_TO_ONE);
+    s.depth_clamp = gl.IsEnabled(GL_DEPTH_CLAMP);
+    s.restart = gl.IsEnabled(GL_PRIMITIVE_RESTART);
+    s.restart_fixed = gl.IsEnabled(GL_PRIMITIVE_RESTART_FIXED_INDEX);
+    s.logic_op = gl.IsEnabled(GL_COLOR_LOGIC_OP);
+    s.dither = gl.IsEnabled(GL_DITHER);
+    s.srgb = gl.IsEnabled(GL_FRAMEBUFFER_SRGB);
+    for (int i = 0; i < 8; ++i) s.clip[i] = gl.IsEnabled(GL_CLIP_DISTANCE0 + i);
+    gl.GetIntegeri_v(GL_SAMPLE_MASK_VALUE, 0, &s.sample_mask);
+    gl.GetIntegerv(GL_STENCIL_FUNC, &s.stencil_func);
+    gl.GetIntegerv(GL_SCISSOR_BOX, s.scissor_box);
+    gl.GetIntegerv(GL_PRIMITIVE_RESTART_INDEX, &s.restart_index);
+    gl.GetIntegerv(GL_LOGIC_OP_MODE, &s.logic_op_mode);
+    gl.GetIntegerv(GL_FRONT_FACE, &s.front_face);
+    gl.GetFloatv(GL_POLYGON_OFFSET_FACTOR, &s.offset_factor);
+    gl.GetFloatv(GL_POLYGON_OFFSET_UNITS, &s.offset_units);
+    gl.GetFloatv(GL_MIN_SAMPLE_SHADING_VALUE, &s.min_sample_shading);
+    return s;
+}
+
+void set_unusual_state(const StateGl& gl) {
+    gl.ColorMask(GL_FALSE, GL_TRUE, GL_TRUE, GL_FALSE);
+    gl.Enable(GL_STENCIL_TEST);
+    gl.StencilFunc(GL_NEVER, 1, 0xff);
+    gl.Enable(GL_SCISSOR_TEST);
+    gl.Scissor(0, 0, 8, 8);
+    gl.Enable(GL_POLYGON_OFFSET_FILL);
+    gl.PolygonOffset(0.0f, 1e7f);
+    for (int i = 0; i < 8; ++i) gl.Enable(GL_CLIP_DISTANCE0 + i);
+    gl.Enable(GL_RASTERIZER_DISCARD);
+    gl.Enable(GL_SAMPLE_MASK);
+    gl.SampleMaski(0, 0x1);
+    gl.Enable(GL_SAMPLE_SHADING);
+    gl.MinSampleShading(1.0f);
+    gl.Enable(GL_SAMPLE_COVERAGE);
+    gl.SampleCoverage(0.25f, GL_FALSE);
+    gl.Enable(GL_SAMPLE_ALPHA_TO_ONE);
+    gl.Enable(GL_DEPTH_CLAMP);
+    gl.Enable(GL_PRIMITIVE_RESTART);
+    gl.PrimitiveRestartIndex(0);
+    gl.Enable(GL_COLOR_LOGIC_OP);
+    gl.LogicOp(GL_XOR);
+    gl.Disable(GL_DITHER);
+    gl.FrontFace(GL_CW);
+}
+
+void set_default_state(const StateGl& gl) {
+    gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl.Disable(GL_STENCIL_TEST);
+    gl.StencilFunc(GL_ALWAYS, 0, 0xff);
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.Disable(GL_POLYGON_OFFSET_FILL);
+    gl.PolygonOffset(0.0f, 0.0f);
+    for (int i = 0; i < 8; ++i) gl.Disable(GL_CLIP_DISTANCE0 + i);
+    gl.Disable(GL_RASTERIZER_DISCARD);
+    gl.Disable(GL_SAMPLE_MASK);
+    gl.SampleMaski(0, ~0u);
+    gl.Disable(GL_SAMPLE_SHADING);
+    gl.MinSampleShading(0.0f);
+    gl.Disable(GL_SAMPLE_COVERAGE);
+    gl.SampleCoverage(1.0f, GL_FALSE);
+    gl.Disable(GL_SAMPLE_ALPHA_TO_ONE);
+    gl.Disable(GL_DEPTH_CLAMP);
+    gl.Disable(GL_PRIMITIVE_RESTART);
+    gl.PrimitiveRestartIndex(0);
+    gl.Disable(GL_COLOR_LOGIC_OP);
+    gl.LogicOp(GL_COPY);
+    gl.Enable(GL_DITHER);
+    gl.FrontFace(GL_CCW);
+}
+
+TEST_P(GlStateTest, AHostsUnusualDrawStateChangesNeitherTheGrassNorItself) {
+    StateGl gl{};
+    load(*host, &gl.GetIntegerv, "glGetIntegerv");
+    load(*host, &gl.GetIntegeri_v, "glGetIntegeri_v");
+    load(*host, &gl.GetBooleani_v, "glGetBooleani_v");
+    load(*host, &gl.GetFloatv, "glGetFloatv");
+    load(*host, &gl.IsEnabled, "glIsEnabled");
+    load(*host, &gl.Enable, "glEnable");
+    load(*host, &gl.Disable, "glDisable");
+    load(*host, &gl.ColorMask, "glColorMask");
+    load(*host, &gl.StencilFunc, "glStencilFunc");
+    load(*host, &gl.Scissor, "glScissor");
+    load(*host, &gl.PolygonOffset, "glPolygonOffset");
+    load(*host, &gl.SampleMaski, "glSampleMaski");
+    load(*host, &gl.MinSampleShading, "glMinSampleShading");
+    load(*host, &gl.SampleCoverage, "glSampleCoverage");
+    load(*host, &gl.PrimitiveRestartIndex, "glPrimitiveRestartIndex");
+    load(*host, &gl.LogicOp, "glLogicOp");
+    load(*host, &gl.FrontFace, "glFrontFace");
+
+    for (const uint32_t samples : {1u, 4u}) {
+        SCOPED_TRACE(std::to_string(samples) + " samples");
+        grass_host::TargetDesc t;
+        t.width = t.height = 128;
+        t.samples = samples;
+        start(t);
+        // Every tier (Lemme's setup over a large field) and a host wall the near grass hides.
+        grass_field_desc d = grass_default_field_desc();
+        d.patch = patch;
+        d.cells_x = d.cells_z = 1024;
+        make_field(d);
+        const double eye[3] = {128.0, 1.7, 1.0}, target[3] = {128.0, 0.0, 12.0};
+        const grass_view_desc v = view(eye, target, 60.0f);
+        grass_host::Occluder wall;
+        wall.x0 = 32;
+        wall.x1 = 96;
+        wall.y0 = 48;
+        wall.y1 = 128;
+        wall.distance = 6.0f;
+        const grass_host::Image clean = render(v, &wall);
+
+        DrawState before{}, after{};
+        host->before_grass = [&] {
+            set_unusual_state(gl);
+            before = draw_state(gl);
+        };
+        host->after_grass = [&] {
+            after = draw_state(gl);
+            set_default_state(gl); // the host's own read-back (a blit) obeys the scissor
+        };
+        const grass_host::Image unusual = render(v, &wall);
+        host->before_grass = nullptr;
+        host->after_grass = nullptr;
+        save(clean, std::to_string(samples) + "x_clean");
+        save(unusual, std::to_string(samples) + "x_unusual");
+
+        EXPECT_TRUE(before == after) << "grass_gl_render left the host's draw state changed";
+        EXPECT_EQ(after.scissor_box[2], 8);
+        EXPECT_EQ(after.front_face, GL_CW);
+        EXPECT_EQ(after.sample_mask, 1);
+        // Grass sees its own draw state either way: the same picture (the occluder's clear is
+        // the host's, before its state changed).
+        EXPECT_LT(mean_difference(clean, unusual), 0.05) << "the host's draw state changed the grass";
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, GlStateTest, ::testing::Values(GRASS_BACKEND_GL),

@@ -49,6 +49,7 @@ void RenderTest::start(const grass_host::TargetDesc& target) {
         *static_cast<std::string*>(user) += std::to_string(static_cast<int>(id)) + ": " + message + "\n";
     };
     d.log_user_data = &log;
+    d.depth_mode = target.reversed_z ? GRASS_DEPTH_GREATER : GRASS_DEPTH_LESS;
     ASSERT_EQ(host->create_context(d, &ctx), GRASS_SUCCESS) << log;
     grass_patch_desc p = grass_default_patch_desc();
     ASSERT_EQ(grass_create_patch(ctx, &p, &patch), GRASS_SUCCESS) << log;

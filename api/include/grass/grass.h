@@ -636,7 +636,17 @@ typedef enum grass_view_flags {
      * of the blade it draws (16 bits: red = high byte, green = low byte, written so that an
      * 8-bit sRGB target stores those bytes exactly) and its tier kind in blue (0 geometry,
      * 128 volume, 255 image). Use a single-sampled target. */
-    GRASS_VIEW_FLAG_DEBUG_THRESHOLDS = 1u << 3
+    GRASS_VIEW_FLAG_DEBUG_THRESHOLDS = 1u << 3,
+    /* 0.4: Colour output. Grass writes linear RGB, for a target that encodes it to sRGB as it
+     * stores it (an sRGB format: GL_SRGB8_ALPHA8 with GL_FRAMEBUFFER_SRGB enabled,
+     * VK_FORMAT_*_SRGB) or keeps it linear (a float HDR target the host tone-maps later).
+     * A target that stores what the shader writes without conversion (a UNORM format, or GL
+     * with GL_FRAMEBUFFER_SRGB disabled) shows that linear colour about 3.5 times too dark
+     * in the mid tones: set this flag and grass encodes its colour to sRGB in the shader
+     * instead. Multisampled, such a target then averages encoded samples at blade edges
+     * (as it does for everything the host draws into it). The DEBUG_THRESHOLDS view keeps
+     * its exact bytes with this flag on a UNORM target. */
+    GRASS_VIEW_FLAG_ENCODE_SRGB = 1u << 4
 } grass_view_flags;
 
 /* The camera and lights of one frame. */
@@ -647,10 +657,26 @@ typedef struct grass_view_desc {
     /* World-to-eye matrix, column-major. Only its rotation is used: translation comes
      * from camera_position, so a host may pass a view built at the origin. */
     float view[16];
-    /* Eye-to-clip matrix, column-major, exactly as the host uses it for its own scene
-     * (GL: z in -1..1; Vulkan: z in 0..1 and y down). */
+    /* Eye-to-clip matrix, column-major: exactly the projection the host renders its own
+     * scene with in this frame and this viewport, the one its depth buffer was written with,
+     * including its depth convention (reversed Z goes with GRASS_DEPTH_GREATER) and any
+     * sub-pixel jitter (TAA); not a culling, shadow, LOD or un-jittered projection. Of an
+     * engine's several projection matrices pass the one its render system draws with (the
+     * API's clip z range and y direction, the depth range adjusted; docs/api.md names
+     * Ogre's), in column-major order. GL: clip z in -1..1, or in 0..1 when the host sets
+     * glClipControl(..., GL_ZERO_TO_ONE) (read at each grass_gl_render), y up. Vulkan: clip
+     * z in 0..1 and y down (put the flip in the matrix: a negative viewport height is
+     * refused). grass culls with it and takes every fragment's depth from it. */
     float projection[16];
-    int32_t viewport[4];    /* x, y, width, height in pixels; width and height > 0 */
+    /* x, y, width, height in pixels of the host's target: the viewport the host draws its
+     * scene with; width and height > 0. The origin follows the API, as the host's own
+     * viewport call does: GL: (x, y) is the lower-left corner, y up from the bottom row
+     * (glViewport); Vulkan: the upper-left corner, y down from the top row (VkViewport;
+     * grass also sets the scissor to this rectangle). An engine with a top-left origin on GL
+     * passes y = target height - top - height. x and y may be negative or reach past the
+     * target; grass does not know the target's size and draws nothing where the rectangle
+     * misses it, silently. */
+    int32_t viewport[4];
     float sun_direction[3]; /* world-space direction towards the sun; not zero;
                                     default (0.35, 0.8, 0.25) */
     float sun_color[3];     /* linear RGB irradiance; default (1.0, 0.95, 0.85) */

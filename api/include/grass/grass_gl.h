@@ -36,17 +36,38 @@ GRASS_API grass_gl_desc grass_default_gl_desc(void);
 GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const grass_context_desc* desc,
                                                const grass_gl_desc* gl_desc, grass_context** out_context);
 
-/* Draws the begun frame into the currently bound draw framebuffer. Depth test on (the
- * host's depth buffer is shared), depth writes on, no blending; when the framebuffer is
- * multisampled, the blades use alpha-to-coverage and the volume and image tiers write
- * their coverage as sample masks (the sample count is read from the bound framebuffer).
- * Saved and restored: program, vertex array, array and
- * element buffers, uniform buffer bindings 0-1 (and the generic uniform buffer binding),
- * texture unit 0 (its 2D texture: the density map) and its sampler, texture units 3-5
- * (their 2D array textures) and their samplers, texture units 6-9 (their 2D textures: the
- * colour, ambient, diffuse and height maps) and their samplers, active texture, viewport, depth test/func/mask, cull face, blend, multisample and
- * alpha-to-coverage enables, polygon mode. Returns GRASS_ERROR_INVALID_STATE outside
- * grass_begin_frame()/grass_end_frame(). May be called more than once per frame. */
+/* Draws the begun frame into the currently bound draw framebuffer, to its draw buffer 0.
+ * Depth test on (the host's depth buffer is shared), depth writes on, no blending; when the
+ * framebuffer is multisampled, the blades use alpha-to-coverage and the volume and image
+ * tiers write their coverage as sample masks (the sample count is read from the bound
+ * framebuffer). Returns GRASS_ERROR_INVALID_STATE outside grass_begin_frame()/
+ * grass_end_frame(). May be called more than once per frame.
+ *
+ * Set for the draws, then restored as the host left it:
+ *   - bindings: program, vertex array, array and element buffers, uniform buffer bindings
+ *     0-1 (and the generic uniform buffer binding), texture unit 0 (its 2D texture: the
+ *     density map) and its sampler, texture units 3-5 (their 2D array textures) and their
+ *     samplers, texture units 6-9 (their 2D textures: the colour, ambient, diffuse and
+ *     height maps) and their samplers, active texture;
+ *   - viewport (from grass_view_desc.viewport), depth test/func/mask, cull face (off: no
+ *     face is culled, so the front-face winding does not matter), blend (off), multisample
+ *     and alpha-to-coverage enables, polygon mode (fill), draw buffer 0's colour mask (all
+ *     channels written; alpha holds coverage);
+ *   - turned off while grass draws, if the host left them on: stencil test, scissor test
+ *     (grass draws the whole viewport; give a split-screen view its own viewport, as on
+ *     Vulkan where grass sets the scissor to the viewport), polygon offset (fill), clip
+ *     distances 0-7, rasterizer discard, sample mask, sample shading, sample coverage,
+ *     alpha-to-one, depth clamp, primitive restart (both kinds), colour logic op. Their
+ *     values (stencil func, scissor box, offsets, masks, restart index...) are not touched.
+ *
+ * Read as the host's conventions and honoured, never changed:
+ *   - the bound draw framebuffer and its sample count;
+ *   - glClipControl's depth mode (GL_CLIP_DEPTH_MODE) and glDepthRange: the volume tier
+ *     writes gl_FragDepth with them. The origin is the host's too (grass draws through the
+ *     host's projection as its scene does; only GL_LOWER_LEFT is tested);
+ *   - GL_FRAMEBUFFER_SRGB and the target's format: grass writes linear colour; where the
+ *     target does not encode it, set GRASS_VIEW_FLAG_ENCODE_SRGB (grass.h);
+ *   - GL_DITHER (on by default), the stencil and depth buffers' other state. */
 GRASS_API grass_result grass_gl_render(grass_context* context);
 
 #ifdef __cplusplus

@@ -63,7 +63,8 @@ grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_
     }
     GRASS_TRY(check_finite(ctx, fn, "view->time", v.time));
     if (v.flags & ~static_cast<uint32_t>(GRASS_VIEW_FLAG_NO_DEPTH_TEST | GRASS_VIEW_FLAG_DEBUG_TIERS |
-                                         GRASS_VIEW_FLAG_DEBUG_CELLS | GRASS_VIEW_FLAG_DEBUG_THRESHOLDS)) {
+                                         GRASS_VIEW_FLAG_DEBUG_CELLS | GRASS_VIEW_FLAG_DEBUG_THRESHOLDS |
+                                         GRASS_VIEW_FLAG_ENCODE_SRGB)) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                          "%s: view->flags is 0x%x; unknown bits are set", fn, v.flags);
     }

@@ -19,8 +19,11 @@ struct FrameUniforms {
     float ambient_color[4];    // rgb
     float params[4];           // x = time (s), y = flags, z = +1 (depth 0 is near) or -1 (reversed depth),
                                // w = 1 when the target is multisampled: the backend sets it (0 from the core)
+    float target[4];           // x = 1 when the host's clip z runs 0..1 (Vulkan; GL with glClipControl's
+                               // GL_ZERO_TO_ONE), 0 for GL's default -1..1: the GL backend reads it at each
+                               // render (the core sets 1 for Vulkan, 0 for GL); yzw = 0
 };
-static_assert(sizeof(FrameUniforms) == 128, "std140 Frame block");
+static_assert(sizeof(FrameUniforms) == 144, "std140 Frame block");
 
 // std140 uniform block `Field` (binding 1).
 struct FieldUniforms {

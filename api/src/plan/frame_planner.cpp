@@ -409,6 +409,10 @@ grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
     plan.frame.params[1] = static_cast<float>(view.flags);
     plan.frame.params[2] = ctx->desc.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
     plan.frame.params[3] = 0.0f;
+    // The clip convention: Vulkan's is 0..1; a GL backend reads the host's at each render.
+    const bool vulkan = ctx->backend && ctx->backend->kind() == GRASS_BACKEND_VULKAN;
+    plan.frame.target[0] = vulkan ? 1.0f : 0.0f;
+    plan.frame.target[1] = plan.frame.target[2] = plan.frame.target[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;
 

@@ -95,14 +95,25 @@ ViewCulling::ViewCulling(const double m[16], grass_depth_mode depth_mode) {
         cos_angle_ = cos_min;
         sin_angle_ = std::sqrt(std::max(0.0, 1.0 - cos_min * cos_min));
     }
-    const double far_depth = depth_mode == GRASS_DEPTH_GREATER ? 0.0 : 1.0;
+    // The far plane: NDC z 1 for classic depth in either clip convention. Reversed depth puts
+    // it at -1 in GL's default -1..1 and at 0 in 0..1 (Vulkan, GL clip control), which the
+    // core does not know: -1 first, which for a 0..1 projection lies beyond its far plane,
+    // behind the camera, then 0.
     double far_corner[4][3];
     double far_distance = 0.0;
-    for (int k = 0; k < 4; ++k) {
-        const double x = (k & 1) ? 1.0 : -1.0, y = (k & 2) ? 1.0 : -1.0;
-        if (!unproject(inv, x, y, far_depth, far_corner[k]) || dot(far_corner[k], axis_) <= 0.0)
-            return; // infinite far plane
-        far_distance = std::max(far_distance, dot(far_corner[k], axis_));
+    const auto far_corners = [&](double far_depth) {
+        far_distance = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            const double x = (k & 1) ? 1.0 : -1.0, y = (k & 2) ? 1.0 : -1.0;
+            if (!unproject(inv, x, y, far_depth, far_corner[k]) || dot(far_corner[k], axis_) <= 0.0) return false;
+            far_distance = std::max(far_distance, dot(far_corner[k], axis_));
+        }
+        return true;
+    };
+    if (depth_mode == GRASS_DEPTH_GREATER) {
+        if (!far_corners(-1.0) && !far_corners(0.0)) return; // infinite far plane
+    } else if (!far_corners(1.0)) {
+        return; // infinite far plane
     }
     // Centre half-way to the far plane (the near plane is ~0 away); radius through the far
     // corners, which also covers the camera.
