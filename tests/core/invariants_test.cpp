@@ -14,7 +14,7 @@ namespace {
 
 // A backend that holds and draws nothing but says it draws, so that the core checks the
 // plan's slice sets as it does for GL and Vulkan.
-class DrawingStub final : public grass::Backend {
+class DrawingTestBackend final : public grass::Backend {
 public:
     grass_backend kind() const override { return GRASS_BACKEND_VULKAN; }
     grass_result upload_patch(uint32_t, const grass::PatchData&) override { return GRASS_SUCCESS; }
@@ -34,13 +34,13 @@ public:
 class InvariantsTest : public CoreTest {
 protected:
     void SetUp() override {
-        // The fixture's log, on a context whose backend is the stub.
+        // The fixture's log, on a context whose backend is the test backend.
         CoreTest::SetUp();
         grass_context_desc d = ctx->desc;
         grass_destroy_context(ctx);
         ctx = nullptr;
         const auto factory = [](grass_context* c, void*, grass::Backend** out) {
-            *out = c->host.create<DrawingStub>();
+            *out = c->host.create<DrawingTestBackend>();
             return GRASS_SUCCESS;
         };
         ASSERT_EQ(grass::create_context("test", GRASS_HEADER_VERSION, &d, factory, nullptr, &ctx), GRASS_SUCCESS);

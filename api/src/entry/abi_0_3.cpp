@@ -1,7 +1,7 @@
 // The 0.3 names of functions renamed in 0.4: kept for binaries built against grass.h 0.3,
 // and declared in no current header. Each forwards to its new name, which every build has
-// (a backend left out of the build has stubs in context/backend_stubs.cpp), so the aliases
-// of the GL and Vulkan calls live here too.
+// (a backend left out of the build keeps its entry points, which say so, in
+// context/absent_backends.cpp), so the aliases of the GL and Vulkan calls live here too.
 #include <grass/grass.h>
 #include <grass/grass_gl.h>
 #include <grass/grass_vk.h>
