@@ -32,7 +32,7 @@ using grass_viewer::Window;
 
 struct Options {
     grass_backend backend = GRASS_BACKEND_GL;
-    std::string scene = "demo", screenshot;
+    std::string scene = "demo", screenshot, cache_dir;
     double camera[3] = {0, 0, 0}, target[3] = {0, 0, 0};
     bool have_camera = false, have_target = false;
     float fov = 0.0f, far_m = 0.0f;
@@ -79,6 +79,7 @@ void add_options(CLI::App& app, Options* o) {
     app.add_flag("--no-overlay", o->no_overlay, "start without the overlay (key F1)");
     app.add_flag("--no-vsync", o->no_vsync, "present without waiting for the display");
     app.add_flag("--no-validation", o->no_validation, "Vulkan: without the validation layers");
+    app.add_option("--cache", o->cache_dir, "cache baked slices in DIR (an existing directory), as grass-render");
     app.footer(std::string("Keys:\n") + grass_viewer::kKeysHelp);
 }
 
@@ -126,10 +127,12 @@ struct Grass {
         if (ctx) grass_destroy_context(ctx);
         ctx = nullptr;
     }
+    std::string cache_dir;
     bool make(Window& window, const grass_sample::Scene& s, int quality, std::string* error) {
         reset();
         grass_context_desc cd = grass_default_context_desc();
         cd.log_fn = grass_sample::log_to_stderr;
+        if (!cache_dir.empty()) cd.cache_directory = cache_dir.c_str();
         const grass_result r = window.create_context(cd, &ctx);
         if (r != GRASS_SUCCESS) {
             *error = std::string("cannot create the grass context: ") + grass_result_string(r);
@@ -151,6 +154,7 @@ int run(const Options& o, grass_sample::Scene& scene) {
     auto window = Window::create(o.backend, wd, &error);
     if (!window) return fail("cannot open the window: " + error);
     Grass grass;
+    grass.cache_dir = o.cache_dir;
     if (!grass.make(*window, scene, o.quality, &error)) return fail(error);
 
     FreeCamera camera;

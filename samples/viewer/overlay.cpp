@@ -31,7 +31,7 @@ void build_overlay(const OverlayInfo& info) {
     ImGui::Text("%s  %s", info.backend, info.device.c_str());
     ImGui::Text("%s  quality %s  %ux%u  %s", info.scene.c_str(), info.quality, info.width, info.height,
                 info.samples > 1 ? "MSAA 4x" : "no MSAA");
-    ImGui::Text("frame %.2f ms (%.0f fps)  plan %.3f ms", info.frame_ms,
+    ImGui::Text("frame %.2f ms (%.1f fps)  plan %.3f ms", info.frame_ms,
                 info.frame_ms > 0.0 ? 1000.0 / info.frame_ms : 0.0, info.stats.plan_ms);
     static const char* const kinds[GRASS_TIER_KIND_COUNT] = {"geometry", "volume", "image"};
     if (ImGui::BeginTable("tiers", 4, ImGuiTableFlags_SizingFixedFit)) {
