@@ -142,13 +142,14 @@ struct Grass {
     }
 };
 
-int run(const Options& o, grass_sample::Scene& scene) {
+int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLog* validation) {
     grass_viewer::WindowDesc wd;
     wd.width = scene.width;
     wd.height = scene.height;
     wd.samples = scene.samples;
     wd.vsync = !o.no_vsync;
     wd.validation = !o.no_validation;
+    wd.validation_log = validation;
     wd.scene = grass_sample::target_desc(scene);
     std::string error;
     auto window = Window::create(o.backend, wd, &error);
@@ -160,6 +161,8 @@ int run(const Options& o, grass_sample::Scene& scene) {
     FreeCamera camera;
     camera.look_at(glm::dvec3(scene.eye[0], scene.eye[1], scene.eye[2]),
                    glm::dvec3(scene.target[0], scene.target[1], scene.target[2]));
+    // A key pressed and released between two frames still counts (slow frames, scripted input).
+    glfwSetInputMode(window->glfw(), GLFW_STICKY_KEYS, GLFW_TRUE);
     Keys keys(window->glfw());
     grass_viewer::OverlayInfo info;
     info.backend = grass_sample::backend_name(o.backend);
@@ -273,13 +276,7 @@ int run(const Options& o, grass_sample::Scene& scene) {
         }
         if (o.exit && o.frames != 0 && frame >= o.frames) break;
     }
-    if (window->validation_messages() != 0) {
-        std::fprintf(stderr, "grass-viewer: %u validation messages:\n%s\n", window->validation_messages(),
-                     window->validation_log().c_str());
-        status = 1;
-    }
-    grass.reset();
-    return status;
+    return status; // grass's context, then the window are destroyed
 }
 
 } // namespace
@@ -310,10 +307,14 @@ int main(int argc, char** argv) {
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;
     int status = 0;
+    grass_viewer::ValidationLog validation;
     try {
-        status = run(o, scene);
+        status = run(o, scene, &validation);
     } catch (const std::exception& e) {
         status = fail(e.what());
+    }
+    if (validation.messages != 0) {
+        status = fail(std::to_string(validation.messages) + " validation messages:\n" + validation.text);
     }
     ImGui::DestroyContext();
     glfwTerminate();

@@ -19,11 +19,23 @@ struct ImDrawData;
 
 namespace grass_viewer {
 
+// Validation messages: Vulkan's layers' warnings and errors, GL's debug-output errors. The
+// caller keeps it, so that the messages of the window's destruction count too.
+struct ValidationLog {
+    uint32_t messages = 0;
+    std::string text;
+    void add(const std::string& line) {
+        ++messages;
+        text += line + "\n";
+    }
+};
+
 struct WindowDesc {
     uint32_t width = 640, height = 360; // framebuffer pixels
     uint32_t samples = 4;               // 1 or 4
     bool vsync = true;
-    bool validation = true; // Vulkan: the validation layers when installed
+    bool validation = true;                  // Vulkan: the validation layers when installed
+    ValidationLog* validation_log = nullptr; // required
     // The host's scene: sky colour and ground (the headless hosts' TargetDesc fields).
     grass_host::TargetDesc scene;
 };
@@ -62,10 +74,6 @@ public:
     // first failing grass call's result, or GRASS_ERROR_BACKEND with *error for the host's.
     virtual grass_result draw_frame(grass_context* ctx, const grass_view_desc& view, ImDrawData* overlay,
                                     grass_host::Image* screenshot, std::string* error) = 0;
-
-    // Vulkan: validation messages (warnings and errors) so far; GL: debug-output errors.
-    virtual uint32_t validation_messages() const = 0;
-    virtual std::string validation_log() const = 0;
 
 protected:
     explicit Window(const WindowDesc& desc)

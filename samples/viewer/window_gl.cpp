@@ -44,8 +44,6 @@ public:
     void overlay_new_frame() override { ImGui_ImplOpenGL3_NewFrame(); }
     grass_result draw_frame(grass_context* ctx, const grass_view_desc& view, ImDrawData* overlay,
                             grass_host::Image* screenshot, std::string* error) override;
-    uint32_t validation_messages() const override { return messages_; }
-    std::string validation_log() const override { return log_; }
 
 private:
     bool create_target(std::string* error);
@@ -61,8 +59,6 @@ private:
     GLuint draw_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0; // multisampled when samples_ > 1
     GLuint resolve_fbo_ = 0, resolve_rb_ = 0;           // only when multisampled
     GLuint ground_program_ = 0, ground_buffer_ = 0, ground_vao_ = 0;
-    uint32_t messages_ = 0;
-    std::string log_;
 };
 
 // Loaders return function pointers, as grass_gl_get_proc_address_fn does.
@@ -88,7 +84,7 @@ bool GlWindow::init(std::string* error) {
     }
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     device_name_ = renderer ? renderer : "unknown GL renderer";
-    glDebugMessageCallback(&GlWindow::on_debug, this);
+    glDebugMessageCallback(&GlWindow::on_debug, desc_.validation_log);
     glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
@@ -118,11 +114,9 @@ GlWindow::~GlWindow() {
 void APIENTRY GlWindow::on_debug(GLenum, GLenum type, GLuint id, GLenum, GLsizei length, const GLchar* message,
                                  const void* user) {
     if (type != GL_DEBUG_TYPE_ERROR) return;
-    auto* w = static_cast<GlWindow*>(const_cast<void*>(user));
-    ++w->messages_;
-    w->log_ += "GL debug error " + std::to_string(id) + ": ";
-    w->log_.append(message, length >= 0 ? size_t(length) : std::strlen(message));
-    w->log_ += "\n";
+    auto* log = static_cast<ValidationLog*>(const_cast<void*>(user));
+    log->add("GL debug error " + std::to_string(id) + ": " +
+             std::string(message, length >= 0 ? size_t(length) : std::strlen(message)));
 }
 
 grass_result GlWindow::create_context(const grass_context_desc& desc, grass_context** out) {

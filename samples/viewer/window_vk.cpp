@@ -83,8 +83,6 @@ public:
     void overlay_new_frame() override { ImGui_ImplVulkan_NewFrame(); }
     grass_result draw_frame(grass_context* ctx, const grass_view_desc& view, ImDrawData* overlay,
                             grass_host::Image* screenshot, std::string* error) override;
-    uint32_t validation_messages() const override { return messages_; }
-    std::string validation_log() const override { return log_; }
 
 private:
     bool create_instance(std::string* error);
@@ -146,18 +144,14 @@ private:
     bool overlay_glfw_ = false, overlay_vk_ = false;
 
     Buffer readback_;
-    uint32_t messages_ = 0;
-    std::string log_;
 };
 
 VKAPI_ATTR VkBool32 VKAPI_CALL VkWindow::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                     VkDebugUtilsMessageTypeFlagsEXT,
                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-    auto* w = static_cast<VkWindow*>(user);
-    ++w->messages_;
-    w->log_ += severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "[error] " : "[warning] ";
-    w->log_ += data && data->pMessage ? data->pMessage : "(no message)";
-    w->log_ += '\n';
+    static_cast<ValidationLog*>(user)->add(
+        std::string(severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "[error] " : "[warning] ") +
+        (data && data->pMessage ? data->pMessage : "(no message)"));
     return VK_FALSE;
 }
 
@@ -206,7 +200,7 @@ bool VkWindow::create_instance(std::string* error) {
                             VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                             VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
     messenger.pfnUserCallback = &VkWindow::on_message;
-    messenger.pUserData = this;
+    messenger.pUserData = desc_.validation_log;
     VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     info.pNext = validation ? &messenger : nullptr;
     info.pApplicationInfo = &app;
