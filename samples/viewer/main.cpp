@@ -119,16 +119,19 @@ void glfw_error(int code, const char* message) {
 // The grass context with the scene's grass, made again when the window's sample count changes
 // the render pass.
 struct Grass {
+    explicit Grass(Window& w) : window(w) {}
+    Window& window;
     grass_context* ctx = nullptr;
     ViewerScene scene;
     ~Grass() { reset(); }
     void reset() {
+        if (ctx) window.wait_idle();
         scene.destroy();
         if (ctx) grass_destroy_context(ctx);
         ctx = nullptr;
     }
     std::string cache_dir;
-    bool make(Window& window, const grass_sample::Scene& s, int quality, std::string* error) {
+    bool make(const grass_sample::Scene& s, int quality, std::string* error) {
         reset();
         grass_context_desc cd = grass_default_context_desc();
         cd.log_fn = grass_sample::log_to_stderr;
@@ -154,9 +157,9 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
     std::string error;
     auto window = Window::create(o.backend, wd, &error);
     if (!window) return fail("cannot open the window: " + error);
-    Grass grass;
+    Grass grass(*window);
     grass.cache_dir = o.cache_dir;
-    if (!grass.make(*window, scene, o.quality, &error)) return fail(error);
+    if (!grass.make(scene, o.quality, &error)) return fail(error);
 
     FreeCamera camera;
     camera.look_at(glm::dvec3(scene.eye[0], scene.eye[1], scene.eye[2]),
@@ -192,6 +195,7 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
             if (keys.pressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window->glfw(), GLFW_TRUE);
             for (int q = grass_viewer::kSceneSetup; q < GRASS_QUALITY_LEVEL_COUNT; ++q) {
                 if (!keys.pressed(GLFW_KEY_1 + q) || q == grass.scene.quality()) continue;
+                window->wait_idle(); // the old patch and field go
                 info.status = grass.scene.set_quality(q, &error) == GRASS_SUCCESS
                                   ? std::string("quality ") + grass_viewer::quality_name(q)
                                   : error;
@@ -206,7 +210,7 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
                 const int quality = grass.scene.quality();
                 if (!window->set_samples(window->samples() > 1 ? 1 : 4, &stale, &error)) {
                     info.status = error;
-                } else if (stale && !grass.make(*window, scene, quality, &error)) {
+                } else if (stale && !grass.make(scene, quality, &error)) {
                     return fail(error);
                 }
             }

@@ -49,7 +49,7 @@ void build_overlay(const OverlayInfo& info) {
             ImGui::TableNextColumn();
             ImGui::Text("%llu", static_cast<unsigned long long>(info.stats.cells[k]));
             ImGui::TableNextColumn();
-            if (info.gpu_available) {
+            if (info.gpu_available && info.stats.instances[k] != 0) { // an undrawn tier has no time of its own
                 ImGui::Text("%.3f", info.gpu_ms[k]);
             } else {
                 ImGui::TextUnformatted("-");

@@ -65,6 +65,10 @@ public:
     // must be made again (Vulkan: the render pass changed); *error on failure.
     virtual bool set_samples(uint32_t samples, bool* contexts_stale, std::string* error) = 0;
 
+    // Waits until the device has finished every frame submitted (Vulkan); grass objects may
+    // be destroyed only then (docs/api.md). GL: nothing to wait for.
+    virtual void wait_idle() {}
+
     // Starts the overlay's frame (ImGui's backends) before ImGui::NewFrame.
     virtual void overlay_new_frame() = 0;
 

@@ -80,6 +80,7 @@ public:
         return p;
     }
     bool set_samples(uint32_t samples, bool* contexts_stale, std::string* error) override;
+    void wait_idle() override { vkDeviceWaitIdle(device_); }
     void overlay_new_frame() override { ImGui_ImplVulkan_NewFrame(); }
     grass_result draw_frame(grass_context* ctx, const grass_view_desc& view, ImDrawData* overlay,
                             grass_host::Image* screenshot, std::string* error) override;
