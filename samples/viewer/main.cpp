@@ -11,6 +11,7 @@
 #include "scene.hpp"
 #include "tool.hpp"
 #include "viewer_scene.hpp"
+#include "viewer_script.hpp"
 #include "window.hpp"
 
 #define GLFW_INCLUDE_NONE
@@ -38,6 +39,7 @@ struct Options {
     float fov = 0.0f, far_m = 0.0f;
     uint32_t width = 0, height = 0, samples = 0, frames = 0;
     int quality = grass_viewer::kSceneSetup;
+    std::vector<grass_viewer::ScriptStep> script;
     bool no_ground = false, debug_tiers = false, debug_cells = false, exit = false, no_overlay = false;
     bool no_vsync = false, no_validation = false;
 };
@@ -76,6 +78,21 @@ void add_options(CLI::App& app, Options* o) {
     app.add_option("--frames", o->frames, "render N frames, then take the --screenshot")->check(CLI::Range(1, 100000));
     app.add_option("--screenshot", o->screenshot, "after --frames N, write the presented image (FILE.png)");
     app.add_flag("--exit", o->exit, "quit after --frames N");
+    app.add_option_function<std::string>(
+           "--script",
+           [o](const std::string& text) {
+               std::string ignored;
+               grass_viewer::parse_script(text, &o->script, &ignored);
+           },
+           "keys and window sizes at given frames: FRAME:KEY or FRAME:size=WxH, comma-separated "
+           "(e.g. 2:m,3:5,4:size=320x180)")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                std::vector<grass_viewer::ScriptStep> steps;
+                std::string error;
+                return grass_viewer::parse_script(text, &steps, &error) ? std::string() : error;
+            },
+            "STEPS"));
     app.add_flag("--no-overlay", o->no_overlay, "start without the overlay (key F1)");
     app.add_flag("--no-vsync", o->no_vsync, "present without waiting for the display");
     app.add_flag("--no-validation", o->no_validation, "Vulkan: without the validation layers");
@@ -100,16 +117,25 @@ class Keys {
 public:
     explicit Keys(GLFWwindow* w) : window_(w) {}
     bool pressed(int key) {
+        if (injected(key)) return true;
         const bool down = glfwGetKey(window_, key) == GLFW_PRESS;
         const bool was = down_[key];
         down_[key] = down;
         return down && !was;
     }
     bool down(int key) const { return glfwGetKey(window_, key) == GLFW_PRESS; }
+    // A scripted press: pressed(key) answers true once.
+    void press(int key) { down_[key] = false, injected_[key] = true; }
+    bool injected(int key) {
+        const bool was = injected_[key];
+        injected_[key] = false;
+        return was;
+    }
 
 private:
     GLFWwindow* window_;
     bool down_[GLFW_KEY_LAST + 1] = {};
+    bool injected_[GLFW_KEY_LAST + 1] = {};
 };
 
 void glfw_error(int code, const char* message) {
@@ -181,6 +207,11 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
     int status = 0;
     while (!glfwWindowShouldClose(window->glfw())) {
         glfwPollEvents();
+        for (const grass_viewer::ScriptStep& step : o.script) {
+            if (step.frame != frame + 1) continue;
+            if (step.key) keys.press(step.key);
+            if (step.width) glfwSetWindowSize(window->glfw(), int(step.width), int(step.height));
+        }
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
         last = now;
@@ -230,6 +261,7 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
         last_y = y;
         if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) camera.scale_speed(io.MouseWheel);
 
+        window->update_size(); // the view's aspect and viewport are the frame's
         grass_view_desc view = grass_default_view_desc();
         const glm::dvec3 p = camera.position();
         for (int c = 0; c < 3; ++c) view.camera_position[c] = p[c];

@@ -31,13 +31,11 @@ bool Window::open(const char* title, std::string* error) {
     return true;
 }
 
-bool Window::update_size() {
+void Window::update_size() {
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_, &w, &h);
-    const bool changed = uint32_t(w) != width_ || uint32_t(h) != height_;
     width_ = uint32_t(w > 0 ? w : 0);
     height_ = uint32_t(h > 0 ? h : 0);
-    return changed;
 }
 
 } // namespace grass_viewer

@@ -51,7 +51,10 @@ public:
     GLFWwindow* glfw() const { return window_; }
     virtual grass_backend backend() const = 0;
     virtual std::string device_name() const = 0;
-    // The framebuffer's size now (it follows the window).
+    // Reads the window's framebuffer size (call it before making the frame's view: the next
+    // draw_frame makes its targets that size).
+    void update_size();
+    // The framebuffer's size at the last update_size (it follows the window).
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
     uint32_t samples() const { return samples_; }
@@ -84,8 +87,6 @@ protected:
         : desc_(desc), width_(desc.width), height_(desc.height), samples_(desc.samples) {}
     // Opens the GLFW window (after the backend's hints) and follows its framebuffer size.
     bool open(const char* title, std::string* error);
-    // Reads the framebuffer size; true when it changed since the last call.
-    bool update_size();
 
     WindowDesc desc_;
     GLFWwindow* window_ = nullptr;

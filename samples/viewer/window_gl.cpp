@@ -58,6 +58,7 @@ private:
     bool imgui_ = false;
     GLuint draw_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0; // multisampled when samples_ > 1
     GLuint resolve_fbo_ = 0, resolve_rb_ = 0;           // only when multisampled
+    uint32_t target_width_ = 0, target_height_ = 0;     // the size they were made
     GLuint ground_program_ = 0, ground_buffer_ = 0, ground_vao_ = 0;
 };
 
@@ -129,6 +130,8 @@ grass_result GlWindow::create_context(const grass_context_desc& desc, grass_cont
 bool GlWindow::create_target(std::string* error) {
     const GLsizei w = GLsizei(width_ ? width_ : 1), h = GLsizei(height_ ? height_ : 1);
     const GLsizei samples = samples_ > 1 ? GLsizei(samples_) : 0;
+    target_width_ = uint32_t(w);
+    target_height_ = uint32_t(h);
     glCreateRenderbuffers(1, &color_rb_);
     glNamedRenderbufferStorageMultisample(color_rb_, samples, GL_SRGB8_ALPHA8, w, h);
     glCreateRenderbuffers(1, &depth_rb_);
@@ -212,7 +215,7 @@ void GlWindow::draw_ground(const grass_view_desc& view) {
 
 grass_result GlWindow::draw_frame(grass_context* ctx, const grass_view_desc& view, ImDrawData* overlay,
                                   grass_host::Image* screenshot, std::string* error) {
-    if (update_size() && width_ > 0 && height_ > 0) {
+    if ((width_ != target_width_ || height_ != target_height_) && width_ > 0 && height_ > 0) {
         destroy_target();
         if (!create_target(error)) return GRASS_ERROR_BACKEND;
     }
@@ -244,8 +247,11 @@ grass_result GlWindow::draw_frame(grass_context* ctx, const grass_view_desc& vie
         source = resolve_fbo_;
     }
     glDisable(GL_FRAMEBUFFER_SRGB);
-    glBlitNamedFramebuffer(source, 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    // A viewport set on the window's framebuffer: Mesa's software GLX resizes the window's
+    // buffers only then (without it, the frames after a resize went to stale, black buffers).
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, w, h);
+    glBlitNamedFramebuffer(source, 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     if (overlay) ImGui_ImplOpenGL3_RenderDrawData(overlay);
     if (screenshot) read_back(screenshot);
     glfwSwapBuffers(window_);

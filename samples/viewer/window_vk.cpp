@@ -852,7 +852,7 @@ grass_result VkWindow::draw_frame(grass_context* ctx, const grass_view_desc& vie
     vkWaitForFences(device_, 1, &f.done, VK_TRUE, UINT64_MAX);
     uint32_t image = 0;
     for (int attempt = 0;; ++attempt) {
-        if (update_size() || swapchain_stale_ || !swapchain_) {
+        if (width_ != extent_.width || height_ != extent_.height || swapchain_stale_ || !swapchain_) {
             vkDeviceWaitIdle(device_);
             destroy_targets();
             destroy_swapchain();
