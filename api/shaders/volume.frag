@@ -118,7 +118,11 @@ void main() {
     vec3 ray = v_local - v_camera_local;
     // The back face ends the ray; a front face leaves the work to the back face behind it.
     // (Decided geometrically: no dependence on the host's winding or clip conventions.)
-    if (dot(v_face_normal, ray) <= 0.0) discard;
+    // A discarded front face also gets an empty march and no ground hit below: on lavapipe
+    // its lanes go on through the code after `discard` (masked), and marched every ray a
+    // second time (docs/records/tier-cost.md).
+    bool front = dot(v_face_normal, ray) <= 0.0;
+    if (front) discard;
     float t_out = length(ray);
     vec3 dir = ray / t_out;
     vec3 size = vec3(float(v_cell.z), field.blade_params.w, float(v_cell.w));
@@ -184,13 +188,13 @@ void main() {
     float layer_y = 0.1 * size.y;
     float t_ground = !displaced && dir.y < 0.0 ? (layer_y - v_camera_local.y) / dir.y : kHuge;
     float t_floor = !displaced && dir.y < 0.0 ? (box_min.y - v_camera_local.y) / dir.y : kHuge; // the ground
-    bool ground_pending = displaced || (t_ground >= t_in && t_ground <= t_end);
+    bool ground_pending = !front && (displaced || (t_ground >= t_in && t_ground <= t_end));
     float prev_t = t_in, prev_above = -1.0;
     if (displaced) prev_above = start.y - terrain_height(vec2(v_cell.xy) + start.xz) - layer_y;
     // Every slice plane the ray crosses in the cuboid and the 4 cells beyond it is crossed
     // once: a fixed bound from the slice count and the macro-cell size, so a grazing ray
     // cannot loop for ever.
-    int max_steps = int(n) * int(v_cell.z + v_cell.w + 8u) + 4;
+    int max_steps = front ? 0 : int(n) * int(v_cell.z + v_cell.w + 8u) + 4;
     for (int i = 0; i < max_steps; ++i) {
         bool across_x = tx < tz;
         float t = across_x ? tx : tz;

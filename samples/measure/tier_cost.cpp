@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <string>
 
 namespace grass_measure {
@@ -32,20 +33,24 @@ Rig::Rig(const Options& options) : options_(options) {
     const grass_patch_desc pd = grass_default_patch_desc();
     grass_sample::check(grass_create_patch(ctx_, &pd, &patch_), "grass_create_patch", ctx_);
     view_ = grass_host::make_view(*host_, eye_, look_, 55.0f, 0.05f, 200.0f);
-    empty_ms_ = grass_sample::median_high(frame_times(options.frames));
+    std::vector<double> cpu;
+    empty_ms_ = grass_sample::median_high(frame_times(options.frames, nullptr, &cpu));
+    empty_cpu_ms_ = grass_sample::median_high(cpu);
 }
 
 Rig::~Rig() {
     if (ctx_) grass_destroy_context(ctx_);
 }
 
-std::vector<double> Rig::frame_times(int count, std::vector<double>* plan_ms) {
+std::vector<double> Rig::frame_times(int count, std::vector<double>* plan_ms, std::vector<double>* cpu_ms) {
     std::vector<double> times;
     grass_host::Image image;
     std::string error;
     for (int r = 0; r < count + 1; ++r) {
         const auto t0 = std::chrono::steady_clock::now();
+        const std::clock_t c0 = std::clock(); // the process's CPU time, all threads
         const grass_result result = host_->render(ctx_, view_, nullptr, &image, &error);
+        const double cpu = 1000.0 * double(std::clock() - c0) / CLOCKS_PER_SEC;
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         if (result != GRASS_SUCCESS) {
             throw grass_sample::Failure(std::string("rendering failed: ") + grass_result_string(result) + " (" +
@@ -53,6 +58,7 @@ std::vector<double> Rig::frame_times(int count, std::vector<double>* plan_ms) {
         }
         if (r == 0) continue; // the first frame uploads
         times.push_back(ms);
+        if (cpu_ms) cpu_ms->push_back(cpu);
         if (plan_ms) plan_ms->push_back(frame_stats().plan_ms);
     }
     return times;
@@ -178,8 +184,12 @@ Subcommand add_tier_cost(CLI::App& measure) {
     grass_sample::add_backend_option(*app, &o->backend);
     grass_sample::add_size_option(*app, &o->width, &o->height, 16, 4096, "image size in pixels");
     CLI::Option* maps = app->add_flag("--maps", o->maps, "the cost of each design map instead (docs/feature-cost.md)");
-    app->add_flag("--features", o->features, "the cost of the other optional features instead (docs/feature-cost.md)")
-        ->excludes(maps);
+    CLI::Option* features = app->add_flag("--features", o->features,
+                                          "the cost of the other optional features instead (docs/feature-cost.md)")
+                                ->excludes(maps);
+    app->add_flag("--single", o->single, "only the tiers alone in single cells (geometry, volume 8 slices, image)")
+        ->excludes(maps)
+        ->excludes(features);
     app->add_option("--frames", o->frames, "frames measured per row (after one that uploads; median)")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));

@@ -31,8 +31,14 @@
 // more; frames of the largest row before the table size the context's instance buffers
 // (which keep their largest size) for every row, and each row's memory is read at least 2
 // frames after its upload (Vulkan frees what the GPU may still read 2 frames late).
+// The plain table also gives each row's CPU time per basic cell: the process's CPU time over
+// the frame (every thread, the software rasteriser's included) minus the empty frame's. On a
+// machine that others load, wall time grows with their load and CPU time far less, so the
+// CPU column is the one to compare between backends there.
+// --single: only the three tiers alone in single cells (geometry, volume 8 slices, image).
 // --frames N: frames measured per row (after one that uploads); default 5 (median).
-// Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features] [--frames N] [--rounds N]
+// Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features | --single] [--frames N]
+//        [--rounds N]
 #pragma once
 
 #include <grass/grass.h>
@@ -50,6 +56,7 @@ struct Options {
     grass_backend backend = GRASS_BACKEND_GL;
     uint32_t width = 320, height = 240;
     bool maps = false, features = false;
+    bool single = false; // only the tiers alone in single cells (kSingleTiers)
     int frames = 5;
     int rounds = 3; // --maps and --features only
 };
@@ -86,12 +93,15 @@ public:
     grass_context* ctx() { return ctx_; }
     grass_patch_id patch() const { return patch_; }
     const double* eye() const { return eye_; }
-    // The median frame with no grass, measured when the rig was made.
+    // The median frame with no grass, measured when the rig was made: wall and CPU time.
     double empty_ms() const { return empty_ms_; }
+    double empty_cpu_ms() const { return empty_cpu_ms_; }
 
     // The wall times of `count` frames after one that uploads (and compiles); with plan_ms,
-    // also each measured frame's plan time (grass_frame_stats.plan_ms).
-    std::vector<double> frame_times(int count, std::vector<double>* plan_ms = nullptr);
+    // also each measured frame's plan time (grass_frame_stats.plan_ms); with cpu_ms, the
+    // CPU time the process spent on each (every thread: the software rasteriser's too).
+    std::vector<double> frame_times(int count, std::vector<double>* plan_ms = nullptr,
+                                    std::vector<double>* cpu_ms = nullptr);
     grass_frame_stats frame_stats();
     grass_memory_stats memory_stats();
 
@@ -106,7 +116,7 @@ private:
     grass_patch_id patch_{};
     const double eye_[3] = {4.0, 4.5, -4.0}, look_[3] = {4.0, 0.0, 4.0};
     grass_view_desc view_{};
-    double empty_ms_ = 0.0;
+    double empty_ms_ = 0.0, empty_cpu_ms_ = 0.0;
 };
 
 // A field of the 32 x 32 cells with one tier drawn alone at every distance.

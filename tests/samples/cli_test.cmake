@@ -20,6 +20,11 @@ expect("grass-measure --help" 0 "Usage: grass-measure.*bench.*tier-cost.*popping
 expect("grass-measure without a subcommand" 2 "subcommand is required" ${MEASURE})
 expect("grass-measure with an unknown subcommand" 2 "not expected: frobnicate" ${MEASURE} frobnicate)
 
+# tier-cost --single draws the plain table's single-cell rows only: not with --maps or --features.
+expect("tier-cost --single --maps" 2 "--(single excludes --maps|maps excludes --single)" ${MEASURE} tier-cost --single --maps)
+expect("tier-cost --features --single" 2 "--(single excludes --features|features excludes --single)" ${MEASURE} tier-cost
+       --features --single)
+
 set(tools "grass-render" "bench" "tier-cost" "popping")
 if(VIEWER)
   list(APPEND tools "grass-viewer")
