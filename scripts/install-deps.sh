@@ -13,6 +13,11 @@ packages=(
   libgtest-dev libbenchmark-dev                                      # tests, benchmarks
   python3-pytest python3-numpy python3-pip python3-setuptools        # the Python binding: tests, maps from arrays, pip install
   clang-format-15 python3                                            # the style check, the docs' link check
+  # The Qt Quick 3D adapter (integration/qtquick3d) and its tests under a virtual X server
+  qt6-base-dev qt6-base-dev-tools qt6-declarative-dev qt6-qpa-plugins
+  qml6-module-qtquick qml6-module-qtquick-window qml6-module-qtqml-workerscript
+  qml6-module-quick3d qml6-module-quick3d-helpers
+  xvfb xauth
 )
 
 missing=()
