@@ -148,7 +148,8 @@ TEST(SceneGraphLifetime, GrassItemsMadeAndDestroyedLeaveNothingBehind) {
         EXPECT_EQ(grass_qt::liveContexts(), 0) << "item " << k;
     }
     // The window and its scene graph destroyed (sceneGraphInvalidated) and made again with
-    // 4 samples, then 1: the MSAA change a host makes.
+    // 4 samples, then 1: the MSAA change a host makes (the old window goes first).
+    window.reset();
     for (int samples : {4, 1}) {
         window = make_window(QString::fromUtf8(kScene), samples, kClear);
         ASSERT_TRUE(window);

@@ -38,7 +38,8 @@ FieldRenderer::FieldRenderer(QQuickWindow* window, std::shared_ptr<RendererRepor
     connect(window, &QQuickWindow::beforeRendering, this, &FieldRenderer::frame_start, Qt::DirectConnection);
     connect(window, &QQuickWindow::afterRenderPassRecording, this, &FieldRenderer::main_pass_end, Qt::DirectConnection);
     // The window's device or GL context goes: grass's objects on it go first.
-    connect(window, &QQuickWindow::sceneGraphInvalidated, this, &FieldRenderer::destroy_context, Qt::DirectConnection);
+    connect(window, &QQuickWindow::sceneGraphInvalidated, this, &FieldRenderer::scene_graph_invalidated,
+            Qt::DirectConnection);
 }
 
 FieldRenderer::~FieldRenderer() { g_live_renderers.deref(); }
@@ -48,6 +49,11 @@ int FieldRenderer::live_count() { return g_live_renderers.loadRelaxed(); }
 int FieldRenderer::live_contexts() { return g_live_contexts.loadRelaxed(); }
 
 grass_result FieldRenderer::prepare(QString*) { return GRASS_SUCCESS; }
+
+void FieldRenderer::scene_graph_invalidated() {
+    destroy_context();
+    if (retired_) deleteLater(); // its item is gone: nothing else will delete it
+}
 
 void FieldRenderer::begin_external_commands() {
     window_->beginExternalCommands();

@@ -12,6 +12,7 @@
 #include <QString>
 #include <QVariantMap>
 
+#include <atomic>
 #include <functional>
 #include <memory>
 
@@ -41,6 +42,7 @@ public:
 
     // Its item is gone: draws no more, and destroys itself (and its context) once the
     // window's command buffers that recorded grass have been recorded again without it.
+    // Any thread (the item's); the renderer acts on it in its next frame or at invalidation.
     void retire() { retired_ = true; }
 
     // Renderers alive in the process (tests check that rebuilds do not leak them).
@@ -69,6 +71,7 @@ protected:
 private:
     void frame_start();
     void begin_external_commands();
+    void scene_graph_invalidated();
     void main_pass_end();
     bool rebuild(const FieldSettings& settings);
     void destroy_objects();
@@ -79,7 +82,7 @@ private:
     std::unique_ptr<FieldSettings> pending_;
     FrameInput frame_;
     bool failed_ = false;
-    bool retired_ = false;
+    std::atomic<bool> retired_{false};
     int frames_since_retired_ = 0;
     bool frame_begun_ = false;
     grass_patch_id patch_{};

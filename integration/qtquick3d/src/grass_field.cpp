@@ -5,7 +5,6 @@
 
 #include <QQmlFile>
 #include <QQuickWindow>
-#include <QRunnable>
 #include <QSGRendererInterface>
 #include <QSurfaceFormat>
 #include <QtQml/qqml.h>
@@ -16,24 +15,14 @@ namespace grass_qt {
 
 namespace {
 
-// Retires a renderer on the render thread (scheduled when its item leaves the window).
-class RetireRendererJob : public QRunnable {
-public:
-    explicit RetireRendererJob(FieldRenderer* renderer) : renderer_(renderer) {}
-    void run() override { renderer_->retire(); }
-
-private:
-    FieldRenderer* renderer_;
-};
-
 QString number(double v) { return QString::number(v, 'g', 10); }
 
 } // namespace
 
 GrassField::GrassField(QQuickItem* parent) : QQuickItem(parent), report_(std::make_shared<RendererReport>()) {
-    QPointer<GrassField> self(this);
-    // Called by the renderer under the report's mutex, on the render thread.
-    report_->notify = [self]() { QMetaObject::invokeMethod(self.data(), "reportFrame", Qt::QueuedConnection); };
+    // Called by the renderer under the report's mutex, on the render thread; the destructor
+    // clears it under that mutex, so `this` is alive whenever it runs.
+    report_->notify = [this]() { QMetaObject::invokeMethod(this, "reportFrame", Qt::QueuedConnection); };
     connect(this, &QQuickItem::windowChanged, this, &GrassField::attachWindow);
 }
 
@@ -46,11 +35,13 @@ GrassField::~GrassField() {
 }
 
 void GrassField::dropRenderer() {
-    if (renderer_ && window_) {
-        window_->scheduleRenderJob(new RetireRendererJob(renderer_), QQuickWindow::BeforeSynchronizingStage);
-        window_->update();
+    if (renderer_) {
+        // It destroys itself on the render thread: after the frames in flight, or when the
+        // scene graph is invalidated, whichever comes first.
+        renderer_->retire();
+        if (window_) window_->update();
     }
-    renderer_ = nullptr; // without a window its scene graph is gone, and the renderer with it
+    renderer_ = nullptr;
     settings_dirty_ = true;
 }
 
@@ -77,7 +68,6 @@ void GrassField::attachWindow(QQuickWindow* window) {
 
 // Render thread, GUI thread blocked: the item's state is read here and nowhere else.
 void GrassField::sync() {
-    if (!window_) window_ = window(); // windowChanged may come before the item's window is set
     if (!window_) return;
     if (!renderer_) {
         renderer_ = FieldRenderer::create(window_, report_);

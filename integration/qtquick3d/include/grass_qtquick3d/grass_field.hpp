@@ -120,7 +120,7 @@ private:
     bool depth_test_ = true;
     bool settings_dirty_ = true;        // handed to the renderer at the next sync
     FieldRenderer* renderer_ = nullptr; // lives and dies on the render thread
-    QPointer<QQuickWindow> window_;
+    QQuickWindow* window_ = nullptr;    // the window attached to, as windowChanged said
     std::shared_ptr<RendererReport> report_;
     QString last_error_;
 };
@@ -130,7 +130,7 @@ enum class GraphicsApi { opengl, vulkan };
 
 // Call before the first window is created: selects the API (QQuickWindow::setGraphicsApi)
 // and the default surface format's sample count (1 = no MSAA); on OpenGL it also requests
-// the 4.5 core context grass needs (Qt's default format asks for 2.0). The host still owns
+// the 4.5 core context grass needs (Qt's default format asks for no version). The host still owns
 // the QVulkanInstance (QQuickWindow::setVulkanInstance) if it wants one of its own.
 void setUpGraphics(GraphicsApi api, int samples);
 
