@@ -68,7 +68,7 @@ TEST_P(HostImageTest, OutsideTheGrassTheEnginesImageIsUnchanged) {
             if (on.pixel(x, y) == off.pixel(x, y)) continue;
             ++changed;
             bool near_grass = false;
-            const int r = samples > 1 ? 2 : 0; // MSAA resolves mix grass into the pixels around it
+            const int r = samples > 1 ? 1 : 0; // a resolved edge pixel mixes grass and the scene
             for (int dy = -r; dy <= r; ++dy)
                 for (int dx = -r; dx <= r; ++dx) {
                     const QPoint q(x + dx, y + dy);
@@ -88,8 +88,8 @@ TEST_P(HostImageTest, OutsideTheGrassTheEnginesImageIsUnchanged) {
     EXPECT_TRUE(qt_test::take_validation_messages().empty());
 }
 
-// 1 sample only for now: at 4 samples a few pixels (16 of 76800 on lavapipe) change that are
-// neither grass nor next to it, not yet explained.
+// 1 sample only for now. At 4 samples, lavapipe: 64 changed pixels of 76,800 are neither grass
+// nor next to it; llvmpipe: grass changes fewer pixels than the 10% this test asks for. Open.
 INSTANTIATE_TEST_SUITE_P(Samples, HostImageTest, ::testing::Values(1));
 
 qulonglong stat(QObject* grass, const char* key) {

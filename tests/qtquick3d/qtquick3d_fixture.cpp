@@ -31,6 +31,17 @@ bool collect(VkDebugReportFlagsEXT flags, VkDebugReportObjectTypeEXT, uint64_t, 
     return false; // Qt prints it too
 }
 
+// The bytes the window stores, alpha ignored. grass writes coverage into alpha and
+// grabWindow() declares the image premultiplied: a conversion to an opaque format would
+// un-premultiply (divide by that alpha) on the way, so the alpha is dropped by reinterpreting.
+QImage stored_rgb(QImage image) {
+    if (image.format() == QImage::Format_ARGB32_Premultiplied || image.format() == QImage::Format_ARGB32)
+        image.reinterpretAsFormat(QImage::Format_RGB32);
+    else if (image.format() == QImage::Format_RGBA8888_Premultiplied || image.format() == QImage::Format_RGBA8888)
+        image.reinterpretAsFormat(QImage::Format_RGBX8888);
+    return image.convertToFormat(QImage::Format_RGBX8888);
+}
+
 } // namespace
 
 grass_qt::GraphicsApi backend() {
@@ -90,9 +101,7 @@ QImage render(QQuickView* window, QObject* grass, int frames) {
     }
     EXPECT_GE(grass->property("framesDrawn").toInt(), target)
         << "GrassField drew no frames: " << grass->property("errorString").toString().toStdString();
-    // The stored bytes: grass writes coverage into alpha, and grabWindow() hands the image out as
-    // premultiplied, which a straight-alpha conversion would divide by that alpha.
-    return image.convertToFormat(QImage::Format_RGBX8888);
+    return stored_rgb(image);
 }
 
 QImage render_frames(QQuickView* window, int frames) {
@@ -102,9 +111,7 @@ QImage render_frames(QQuickView* window, int frames) {
         QCoreApplication::processEvents();
         QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // no exec() loop here
     }
-    // The stored bytes: grass writes coverage into alpha, and grabWindow() hands the image out as
-    // premultiplied, which a straight-alpha conversion would divide by that alpha.
-    return image.convertToFormat(QImage::Format_RGBX8888);
+    return stored_rgb(image);
 }
 
 } // namespace qt_test

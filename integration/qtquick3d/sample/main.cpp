@@ -54,8 +54,13 @@ int main(int argc, char** argv) {
     if (parser.isSet(screenshot)) {
         const QString path = parser.value(screenshot);
         QTimer::singleShot(1500, &app, [window, path]() {
-            // RGBX: the window's stored colour (grass keeps coverage in alpha; the window is opaque).
-            const bool saved = window->grabWindow().convertToFormat(QImage::Format_RGBX8888).save(path);
+            // The window's stored colour: grass keeps coverage in alpha and the window is opaque;
+            // the grab is declared premultiplied, so alpha is dropped without un-premultiplying.
+            QImage image = window->grabWindow();
+            if (image.format() == QImage::Format_ARGB32_Premultiplied) image.reinterpretAsFormat(QImage::Format_RGB32);
+            if (image.format() == QImage::Format_RGBA8888_Premultiplied)
+                image.reinterpretAsFormat(QImage::Format_RGBX8888);
+            const bool saved = image.save(path);
             QCoreApplication::exit(saved ? 0 : 1);
         });
     }
