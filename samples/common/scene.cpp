@@ -358,6 +358,7 @@ grass_host::TargetDesc target_desc(const Scene& scene) {
     t.height = scene.height;
     t.samples = scene.samples;
     t.ground = scene.ground;
+    t.meshes = scene.meshes;
     std::memcpy(t.ground_color, scene.ground_color, sizeof(t.ground_color));
     return t;
 }

@@ -5,6 +5,7 @@
 #include <grass/grass.h>
 
 #include "headless_host.hpp"
+#include "host_mesh.hpp"
 
 #include <cstdint>
 #include <string>
@@ -39,6 +40,7 @@ struct Scene {
     double eye[3] = {0.0, 1.7, -6.4};
     double target[3] = {0.0, 0.0, 1.0};
     float fov_degrees = 55.0f;
+    float near_m = 0.05f; // the host projection's near plane
     float far_m = 500.0f; // the host projection's far plane
     // Tiers and lod tests; empty = grass_default_lod_setup (Lemme's football table).
     std::vector<grass_tier_desc> tiers;
@@ -50,6 +52,9 @@ struct Scene {
     // The host's ground under the grass (an engine's terrain stand-in).
     bool ground = true;
     float ground_color[3] = {0.040f, 0.042f, 0.016f};
+    // The host's own meshes (a glTF scene's terrain, rocks and buildings), drawn before grass
+    // into the depth it shares.
+    std::vector<grass_host::HostMesh> meshes;
 };
 
 // The demo: a 12 m x 12 m lawn of 0.25 m cells centred on the origin, clustered blades,
