@@ -72,8 +72,7 @@ Elements locate(const tinygltf::Model& model, int index, const std::string& what
     if (csize == 0) refuse(what, index, "has componentType " + std::to_string(a.componentType));
     if (e.count > kMaxAccessorCount) {
         refuse(what, index,
-               "has count " + std::to_string(e.count) + "; at most " + std::to_string(kMaxAccessorCount) +
-                   " are read");
+               "has count " + std::to_string(e.count) + "; at most " + std::to_string(kMaxAccessorCount) + " are read");
     }
     if (a.bufferView < 0) return e; // zeros
     size_t view_size = 0;
@@ -108,16 +107,15 @@ T load(const unsigned char* p) {
 
 } // namespace
 
-const unsigned char* buffer_view_bytes(const tinygltf::Model& model, int index, size_t* size,
-                                       const std::string& what) {
+const unsigned char* buffer_view_bytes(const tinygltf::Model& model, int index, size_t* size, const std::string& what) {
     if (index < 0 || size_t(index) >= model.bufferViews.size()) {
         throw std::runtime_error(what + " is buffer view " + std::to_string(index) + "; the file has " +
                                  std::to_string(model.bufferViews.size()));
     }
     const tinygltf::BufferView& v = model.bufferViews[size_t(index)];
     if (v.buffer < 0 || size_t(v.buffer) >= model.buffers.size()) {
-        throw std::runtime_error("buffer view " + std::to_string(index) + " names buffer " +
-                                 std::to_string(v.buffer) + "; the file has " + std::to_string(model.buffers.size()));
+        throw std::runtime_error("buffer view " + std::to_string(index) + " names buffer " + std::to_string(v.buffer) +
+                                 "; the file has " + std::to_string(model.buffers.size()));
     }
     const std::vector<unsigned char>& data = model.buffers[size_t(v.buffer)].data;
     if (v.byteOffset > data.size() || v.byteLength > data.size() - v.byteOffset) {
@@ -135,8 +133,8 @@ std::vector<float> read_float_accessor(const tinygltf::Model& model, int index, 
     const Elements e = locate(model, index, what);
     const bool colour = normalized_ok && components == 4;
     if (e.components != components && !(colour && e.components == 3)) {
-        refuse(what, index, "has " + std::to_string(e.components) + " components; " + std::to_string(components) +
-                                " expected");
+        refuse(what, index,
+               "has " + std::to_string(e.components) + " components; " + std::to_string(components) + " expected");
     }
     const bool is_float = e.component_type == TINYGLTF_COMPONENT_TYPE_FLOAT;
     const bool is_unorm = e.normalized && (e.component_type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
@@ -162,8 +160,9 @@ std::vector<float> read_float_accessor(const tinygltf::Model& model, int index, 
                 v = float(load<uint16_t>(p + 2 * c)) / 65535.0f;
             }
             if (!std::isfinite(v)) {
-                refuse(what, index, "element " + std::to_string(i) + " component " + std::to_string(c) + " is " +
-                                        (std::isnan(v) ? "NaN" : "infinite"));
+                refuse(what, index,
+                       "element " + std::to_string(i) + " component " + std::to_string(c) + " is " +
+                           (std::isnan(v) ? "NaN" : "infinite"));
             }
             dst[c] = v;
         }

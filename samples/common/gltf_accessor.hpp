@@ -27,7 +27,6 @@ std::vector<uint32_t> read_index_accessor(const tinygltf::Model& model, int inde
                                           const std::string& what);
 
 // The bytes of buffer view `index`, range-checked against its buffer.
-const unsigned char* buffer_view_bytes(const tinygltf::Model& model, int index, size_t* size,
-                                       const std::string& what);
+const unsigned char* buffer_view_bytes(const tinygltf::Model& model, int index, size_t* size, const std::string& what);
 
 } // namespace grass_sample

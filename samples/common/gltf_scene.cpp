@@ -24,12 +24,12 @@ using Mat4 = std::array<double, 16>; // column-major
 using tinygltf::Model;
 using tinygltf::Value;
 
-constexpr uint64_t kMaxFileBytes = uint64_t(256) << 20;  // a .gltf, .glb or a file it names
-constexpr uint64_t kMaxTriangles = uint64_t(1) << 22;    // of all meshes together
-constexpr uint32_t kMaxCellsPerSide = 1u << 20;          // of the terrain's field
-constexpr uint32_t kDefaultMaxMapTexels = 1024;          // per side, when texel_size is not given
-constexpr uint32_t kMaxMapTexels = 4096;                 // per side, texel_size given
-constexpr uint32_t kMaxTextureTexels = 8192;             // per side of a density texture
+constexpr uint64_t kMaxFileBytes = uint64_t(256) << 20; // a .gltf, .glb or a file it names
+constexpr uint64_t kMaxTriangles = uint64_t(1) << 22;   // of all meshes together
+constexpr uint32_t kMaxCellsPerSide = 1u << 20;         // of the terrain's field
+constexpr uint32_t kDefaultMaxMapTexels = 1024;         // per side, when texel_size is not given
+constexpr uint32_t kMaxMapTexels = 4096;                // per side, texel_size given
+constexpr uint32_t kMaxTextureTexels = 8192;            // per side of a density texture
 
 [[noreturn]] void refuse(const std::string& why) { throw std::runtime_error(why); }
 
@@ -187,8 +187,8 @@ std::string node_label(const Model& model, int n) {
 }
 
 void check_finite(const std::vector<double>& v, size_t size, const std::string& what) {
-    if (!v.empty() && v.size() != size) refuse(what + " has " + std::to_string(v.size()) + " numbers, not " +
-                                               std::to_string(size));
+    if (!v.empty() && v.size() != size)
+        refuse(what + " has " + std::to_string(v.size()) + " numbers, not " + std::to_string(size));
     for (double x : v)
         if (!std::isfinite(x)) refuse(what + " holds a number that is not finite");
 }
@@ -228,12 +228,12 @@ Mat4 local_transform(const Model& model, int n) {
 // ---- extras: {"grass": {...}} ----------------------------------------------------------
 
 struct GrassExtras {
-    std::string role;                   // "", "terrain", "collider"
+    std::string role; // "", "terrain", "collider"
     double cell_size = 0.0, texel_size = 0.0;
-    std::string density;                // "", "vertex_color", "texture", "uniform"
-    int density_channel = 0;            // r, g, b, a
+    std::string density;     // "", "vertex_color", "texture", "uniform"
+    int density_channel = 0; // r, g, b, a
     const Value* density_texture = nullptr;
-    std::string shape;                  // colliders: "sphere", "capsule"
+    std::string shape; // colliders: "sphere", "capsule"
     double radius = -1.0, height = -1.0;
 };
 
@@ -307,7 +307,7 @@ bool named_terrain(const std::string& name) {
 
 struct Terrain {
     std::vector<TerrainVertex> triangles;
-    GrassExtras extras; // of the first terrain node
+    GrassExtras extras;  // of the first terrain node
     std::string density; // the density source used
     int texture = -1;    // the density texture's index
     bool any = false;
@@ -387,7 +387,8 @@ void add_primitive(Walk* w, int node, const Mat4& m, const tinygltf::Primitive& 
     for (int c = 0; c < 3; ++c) lo[c] = std::numeric_limits<double>::infinity(), hi[c] = -lo[c];
     for (size_t v = 0; v < vertices; ++v) {
         point(m, &p[3 * v], &world[3 * v]);
-        for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], world[3 * v + c]), hi[c] = std::max(hi[c], world[3 * v + c]);
+        for (int c = 0; c < 3; ++c)
+            lo[c] = std::min(lo[c], world[3 * v + c]), hi[c] = std::max(hi[c], world[3 * v + c]);
     }
     std::vector<float> normals;
     const auto normal = prim.attributes.find("NORMAL");
@@ -573,7 +574,8 @@ void walk_scene(Walk* w) {
         if (n < 0 || size_t(n) >= model.nodes.size()) {
             refuse("names node " + std::to_string(n) + "; it has " + std::to_string(model.nodes.size()));
         }
-        if (seen[size_t(n)]) refuse("has " + node_label(model, n) + " twice in its hierarchy (a cycle or a shared child)");
+        if (seen[size_t(n)])
+            refuse("has " + node_label(model, n) + " twice in its hierarchy (a cycle or a shared child)");
         seen[size_t(n)] = 1;
         const Mat4 m = multiply(parent, local_transform(model, n));
         visit_node(w, n, m);

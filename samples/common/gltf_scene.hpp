@@ -20,21 +20,21 @@ namespace grass_sample {
 struct GltfCollider {
     enum class Shape { sphere, capsule };
     Shape shape = Shape::sphere;
-    std::string node;                // the node's name, or "node N"
-    double a[3] = {0.0, 0.0, 0.0};   // sphere: its centre; capsule: one end of its segment (m)
-    double b[3] = {0.0, 0.0, 0.0};   // capsule: the other end (a sphere: its centre again)
-    double radius = 0.0;             // metres
+    std::string node;              // the node's name, or "node N"
+    double a[3] = {0.0, 0.0, 0.0}; // sphere: its centre; capsule: one end of its segment (m)
+    double b[3] = {0.0, 0.0, 0.0}; // capsule: the other end (a sphere: its centre again)
+    double radius = 0.0;           // metres
 };
 
 // What the loader found besides the Scene.
 struct GltfInfo {
     std::vector<GltfCollider> colliders;
-    std::string camera;              // the camera node's name; empty: the file has none
-    std::string terrain;             // the terrain nodes' names, comma-separated
+    std::string camera;                     // the camera node's name; empty: the file has none
+    std::string terrain;                    // the terrain nodes' names, comma-separated
     uint32_t map_width = 0, map_height = 0; // the height and density maps' texels
     uint64_t terrain_triangles = 0;
-    uint64_t mesh_triangles = 0;     // of every host mesh, terrain included
-    std::vector<std::string> notes;  // what the file has and the loader leaves out
+    uint64_t mesh_triangles = 0;    // of every host mesh, terrain included
+    std::vector<std::string> notes; // what the file has and the loader leaves out
 };
 
 // True for a path ending in .gltf or .glb (any case).

@@ -17,8 +17,8 @@ struct HostMesh {
     double origin[3] = {0.0, 0.0, 0.0};
     // Interleaved per vertex: position x, y, z (metres, relative to origin), normal x, y, z.
     std::vector<float> vertices;
-    std::vector<uint32_t> indices;               // triangle list, each below vertices.size() / 6
-    float color[3] = {0.5f, 0.5f, 0.5f};         // linear albedo: Lambert + ambient
+    std::vector<uint32_t> indices;       // triangle list, each below vertices.size() / 6
+    float color[3] = {0.5f, 0.5f, 0.5f}; // linear albedo: Lambert + ambient
     static constexpr uint32_t kFloatsPerVertex = 6;
     uint32_t vertex_count() const { return static_cast<uint32_t>(vertices.size() / kFloatsPerVertex); }
 };

@@ -108,11 +108,11 @@ bool GlMeshDrawer::init(ProcLoader loader, void* user_data, const std::vector<Ho
     std::string ignored;
     std::string* e = error ? error : &ignored;
     Impl& g = *impl_;
-#define GRASS_MESH_GL_LOAD(type, name)                                  \
-    g.name = reinterpret_cast<type>(loader(user_data, "gl" #name));     \
-    if (!g.name) {                                                      \
-        *e = "the GL loader has no gl" #name;                           \
-        return false;                                                   \
+#define GRASS_MESH_GL_LOAD(type, name)                              \
+    g.name = reinterpret_cast<type>(loader(user_data, "gl" #name)); \
+    if (!g.name) {                                                  \
+        *e = "the GL loader has no gl" #name;                       \
+        return false;                                               \
     }
     GRASS_MESH_GL_FUNCTIONS(GRASS_MESH_GL_LOAD)
 #undef GRASS_MESH_GL_LOAD

@@ -29,8 +29,8 @@ struct VkPassTarget {
     VkFormat color_format = VK_FORMAT_R8G8B8A8_SRGB;
     VkFormat depth_format = VK_FORMAT_D32_SFLOAT;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    bool reversed_z = false;   // depth test GREATER instead of LESS
-    bool encode_srgb = false;  // the colour target stores what the shader writes (UNORM)
+    bool reversed_z = false;  // depth test GREATER instead of LESS
+    bool encode_srgb = false; // the colour target stores what the shader writes (UNORM)
 };
 
 // A graphics pipeline of the hosts' own (ground, meshes): triangle list, no culling, depth

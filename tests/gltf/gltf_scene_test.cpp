@@ -326,7 +326,8 @@ TEST(GltfScene, ADensityTextureOutsideItsBufferIsRefused) {
     g.doc["textures"] = json::parse(R"([{"source": 0}])");
     g.doc["images"] = json::parse(R"([{"bufferView": 3, "mimeType": "image/png"}])");
     g.doc["bufferViews"].push_back(json::parse(R"({"buffer": 0, "byteOffset": 100, "byteLength": 100000})"));
-    g.doc["accessors"].push_back(json::parse(R"({"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC2"})"));
+    g.doc["accessors"].push_back(
+        json::parse(R"({"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC2"})"));
     g.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 3;
     expect_refused(load_bytes("texture.glb", g.glb()), {"buffer view 3", "lies outside buffer 0"});
     g.doc["meshes"][0]["primitives"][0]["attributes"].erase("TEXCOORD_0");
