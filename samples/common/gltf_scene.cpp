@@ -24,12 +24,13 @@ using Mat4 = std::array<double, 16>; // column-major
 using tinygltf::Model;
 using tinygltf::Value;
 
-constexpr uint64_t kMaxFileBytes = uint64_t(256) << 20; // a .gltf, .glb or a file it names
-constexpr uint64_t kMaxTriangles = uint64_t(1) << 22;   // of all meshes together
-constexpr uint32_t kMaxCellsPerSide = 1u << 20;         // of the terrain's field
-constexpr uint32_t kDefaultMaxMapTexels = 1024;         // per side, when texel_size is not given
-constexpr uint32_t kMaxMapTexels = 4096;                // per side, texel_size given
-constexpr uint32_t kMaxTextureTexels = 8192;            // per side of a density texture
+constexpr uint64_t kMaxFileBytes = uint64_t(256) << 20;      // a .gltf, .glb or a file it names
+constexpr uint64_t kMaxTriangles = uint64_t(1) << 22;        // of all meshes together
+constexpr uint32_t kMaxCellsPerSide = 1u << 20;              // of the terrain's field
+constexpr uint32_t kDefaultMaxMapTexels = 1024;              // per side, when texel_size is not given
+constexpr uint32_t kMaxMapTexels = 4096;                     // per side, texel_size given
+constexpr uint32_t kMaxTextureTexels = 8192;                 // per side of a density texture
+constexpr double kMaxTexelTests = double(uint64_t(1) << 28); // texels the rasteriser may visit
 
 [[noreturn]] void refuse(const std::string& why) { throw std::runtime_error(why); }
 
@@ -668,11 +669,26 @@ void make_field(Walk* w) {
     }
     // The default texel (a cell) grows for large terrains: at most kDefaultMaxMapTexels a side.
     const double longest = std::max(map_x, map_z);
-    if (longest > kDefaultMaxMapTexels) {
+    if (t.extras.texel_size <= 0.0 && longest > kDefaultMaxMapTexels) {
         map_x = std::max(1.0, std::ceil(map_x * kDefaultMaxMapTexels / longest));
         map_z = std::max(1.0, std::ceil(map_z * kDefaultMaxMapTexels / longest));
     }
     const uint32_t mw = uint32_t(map_x), mh = uint32_t(map_z);
+    // The rasteriser visits each triangle's bounding box of texels: many large overlapping
+    // triangles would take hours, so their sum is bounded.
+    double tests = 0.0;
+    for (size_t k = 0; k + 2 < t.triangles.size(); k += 3) {
+        double x0 = t.triangles[k].x, x1 = x0, z0 = t.triangles[k].z, z1 = z0;
+        for (size_t v = k + 1; v < k + 3; ++v) {
+            x0 = std::min(x0, t.triangles[v].x), x1 = std::max(x1, t.triangles[v].x);
+            z0 = std::min(z0, t.triangles[v].z), z1 = std::max(z1, t.triangles[v].z);
+        }
+        tests += ((x1 - x0) / size_x * mw + 1.0) * ((z1 - z0) / size_z * mh + 1.0);
+    }
+    if (tests > kMaxTexelTests) {
+        refuse("has terrain triangles that cover the maps' texels " + std::to_string(tests / (double(mw) * mh)) +
+               " times over; at most " + std::to_string(kMaxTexelTests / (double(mw) * mh)) + " are rasterised");
+    }
     TerrainRaster raster = rasterise_terrain(t.triangles, lo[0], lo[2], size_x, size_z, mw, mh);
 
     Scene& s = w->scene;

@@ -274,6 +274,20 @@ TEST(GltfScene, MissingOrEmptyBuffersAreRefused) {
     expect_refused(load_bytes("zero.glb", g.glb()), {"zero.glb"});
 }
 
+TEST(GltfScene, TerrainsThatWouldTakeHoursToRasteriseAreRefused) {
+    // 20,000 copies of the quad's two triangles (all over the whole map) through one index list.
+    Gltf g = Gltf::quad();
+    std::vector<uint16_t> indices;
+    for (int k = 0; k < 20000; ++k) indices.insert(indices.end(), {0, 2, 1, 1, 2, 3});
+    const size_t offset = g.bin.size();
+    g.append(indices.data(), indices.size());
+    g.doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", indices.size() * 2}});
+    g.doc["buffers"][0]["byteLength"] = g.bin.size();
+    g.doc["accessors"][1] = {{"bufferView", 3}, {"componentType", 5123}, {"count", indices.size()}, {"type", "SCALAR"}};
+    g.doc["nodes"][0]["extras"]["grass"]["texel_size"] = 0.002; // 2000 x 2000 texels
+    expect_refused(load_bytes("overlap.glb", g.glb()), {"times over"});
+}
+
 TEST(GltfScene, NonTrianglePrimitivesAreRefused) {
     Gltf g = Gltf::quad();
     g.doc["meshes"][0]["primitives"][0]["mode"] = 1; // lines

@@ -46,12 +46,13 @@ TEST_P(HostMeshTest, AWallHidesTheGrassBehindItAndTheGrassInFrontHidesItsFoot) {
             const Convention conv = gl ? gl_conventions[c] : vk_conventions[c];
             SCOPED_TRACE(std::string(conv.reversed ? "reversed" : "classic") + " depth, clip z " +
                          (conv.clip_zero_to_one || !gl ? "0..1" : "-1..1") + ", " + std::to_string(samples) +
-                         " samples");
+                         " samples" + (gl || samples == 1 ? "" : ", dynamic rendering"));
             grass_host::TargetDesc t;
             t.width = t.height = 96;
             t.samples = samples;
             t.reversed_z = conv.reversed;
             t.gl_clip_zero_to_one = conv.clip_zero_to_one;
+            t.vk_dynamic_rendering = !gl && samples == 4; // the mesh pipeline for both Vulkan pass kinds
             t.meshes = {wall(0.0)};
             start(t);
             grass_field_desc d = field_desc(24);
@@ -114,8 +115,8 @@ TEST_P(HostMeshTest, TheGltfSampleSceneRendersWithGrassOnItsTerrain) {
     }
     d.maps.height_scale = scene.height_scale;
     const grass_field_id field = make_field(d);
-    grass_view_desc v = grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees, scene.near_m,
-                                              scene.far_m);
+    grass_view_desc v =
+        grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees, scene.near_m, scene.far_m);
     const grass_host::Image image = render(v);
     int green = 0;
     for (uint32_t y = 60; y < 90; ++y)
