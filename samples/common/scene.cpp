@@ -1,5 +1,7 @@
 #include "scene.hpp"
 
+#include "gltf_scene.hpp"
+
 #include <nlohmann/json.hpp>
 #include <png.h>
 
@@ -313,6 +315,12 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
         return false;
     }
     return true;
+}
+
+bool load_scene_file(const std::string& path, Scene* scene, GltfInfo* gltf, std::string* error) {
+    if (!is_gltf_path(path)) return load_scene(path, scene, error);
+    GltfInfo ignored;
+    return load_gltf_scene(path, scene, gltf ? gltf : &ignored, error);
 }
 
 const char* map_role_name(MapRole role) {

@@ -64,6 +64,13 @@ Scene demo_scene();
 // Reads a scene file over the demo's defaults. False and *error on a bad file or key.
 bool load_scene(const std::string& path, Scene* scene, std::string* error);
 
+struct GltfInfo; // gltf_scene.hpp
+
+// Reads a scene file of either kind by its extension: a glTF scene (.gltf, .glb: what
+// load_gltf_scene finds besides the Scene goes into *gltf, which may be null) or a JSON
+// scene file. The one call for any host that takes "any scene file".
+bool load_scene_file(const std::string& path, Scene* scene, GltfInfo* gltf, std::string* error);
+
 // Creates the scene's design maps on `ctx` into `stack` (their ids; its height scale the
 // scene's). Stops at the first grass_create_map that fails and returns its result.
 grass_result create_scene_maps(grass_context* ctx, const Scene& scene, grass_map_stack* stack);

@@ -85,12 +85,10 @@ int main(int argc, char** argv) {
     std::string error;
     grass_sample::GltfInfo gltf;
     const bool is_gltf = grass_sample::is_gltf_path(o.scene_path);
-    if (is_gltf && !grass_sample::load_gltf_scene(o.scene_path, &scene, &gltf, &error)) {
+    if (!o.scene_path.empty() && !grass_sample::load_scene_file(o.scene_path, &scene, &gltf, &error)) {
         fail(error);
-        return 2; // a bad input file, like a bad option value
+        return is_gltf ? 2 : 1; // a bad glTF file is refused like a bad option value
     }
-    if (!is_gltf && !o.scene_path.empty() && !grass_sample::load_scene(o.scene_path, &scene, &error))
-        return fail(error);
     if (o.have_camera) std::memcpy(scene.eye, o.camera, sizeof(o.camera));
     if (o.have_target) std::memcpy(scene.target, o.target, sizeof(o.target));
     if (o.fov > 0.0f) scene.fov_degrees = o.fov;
