@@ -1,5 +1,7 @@
 #include "scene.hpp"
 
+#include "gltf_scene.hpp"
+
 #include <nlohmann/json.hpp>
 #include <png.h>
 
@@ -319,6 +321,12 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
     return true;
 }
 
+bool load_scene_file(const std::string& path, Scene* scene, GltfInfo* gltf, std::string* error) {
+    if (!is_gltf_path(path)) return load_scene(path, scene, error);
+    GltfInfo ignored;
+    return load_gltf_scene(path, scene, gltf ? gltf : &ignored, error);
+}
+
 const char* map_role_name(MapRole role) {
     static const char* const names[kMapRoleCount] = {"density", "color", "ambient", "diffuse", "height"};
     return names[int(role)];
@@ -362,6 +370,7 @@ grass_host::TargetDesc target_desc(const Scene& scene) {
     t.height = scene.height;
     t.samples = scene.samples;
     t.ground = scene.ground;
+    t.meshes = scene.meshes;
     std::memcpy(t.ground_color, scene.ground_color, sizeof(t.ground_color));
     return t;
 }

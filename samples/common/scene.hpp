@@ -5,6 +5,7 @@
 #include <grass/grass.h>
 
 #include "headless_host.hpp"
+#include "host_mesh.hpp"
 
 #include <cstdint>
 #include <string>
@@ -39,6 +40,7 @@ struct Scene {
     double eye[3] = {0.0, 1.7, -6.4};
     double target[3] = {0.0, 0.0, 1.0};
     float fov_degrees = 55.0f;
+    float near_m = 0.05f; // the host projection's near plane
     float far_m = 500.0f; // the host projection's far plane
     // Tiers and lod tests; empty = grass_default_lod_setup (Lemme's football table).
     std::vector<grass_tier_desc> tiers;
@@ -50,6 +52,9 @@ struct Scene {
     // The host's ground under the grass (an engine's terrain stand-in).
     bool ground = true;
     float ground_color[3] = {0.040f, 0.042f, 0.016f};
+    // The host's own meshes (a glTF scene's terrain, rocks and buildings), drawn before grass
+    // into the depth it shares.
+    std::vector<grass_host::HostMesh> meshes;
 };
 
 // The demo: a 12 m x 12 m lawn of 0.25 m cells centred on the origin, clustered blades,
@@ -60,6 +65,13 @@ Scene demo_scene();
 // scene file starts from the library's default tiers and uniform density. False and *error
 // on a bad file or key.
 bool load_scene(const std::string& path, Scene* scene, std::string* error);
+
+struct GltfInfo; // gltf_scene.hpp
+
+// Reads a scene file of either kind by its extension: a glTF scene (.gltf, .glb: what
+// load_gltf_scene finds besides the Scene goes into *gltf, which may be null) or a JSON
+// scene file. The one call for any host that takes "any scene file".
+bool load_scene_file(const std::string& path, Scene* scene, GltfInfo* gltf, std::string* error);
 
 // Creates the scene's design maps on `ctx` into `stack` (their ids; its height scale the
 // scene's). Stops at the first grass_create_map that fails and returns its result.

@@ -3,6 +3,7 @@
 #include <grass/grass.h>
 
 #include "cli.hpp"
+#include "gltf_scene.hpp"
 #include "headless_host.hpp"
 #include "image_io.hpp"
 #include "scene.hpp"
@@ -28,7 +29,8 @@ struct Options {
 
 void add_options(CLI::App& app, Options* o) {
     grass_sample::add_backend_option(app, &o->backend);
-    app.add_option("--scene", o->scene_path, "scene file (FILE.json; default: the built-in demo)");
+    app.add_option("--scene", o->scene_path,
+                   "scene file (FILE.json, FILE.gltf or FILE.glb; default: the built-in demo)");
     app.add_option("--output", o->output, "image to write (FILE.png)")->capture_default_str();
     grass_sample::add_size_option(app, &o->width, &o->height, 1, 8192,
                                   "image size in pixels (default from the scene, 640x360)")
@@ -45,6 +47,23 @@ void add_options(CLI::App& app, Options* o) {
     app.add_option("--far", o->far_m, "far plane of the host's projection in metres (default from the scene, 500)")
         ->check(grass_sample::open_range(1, 1e8));
     app.add_option("--cache", o->cache_dir, "cache baked slices in DIR (an existing directory)");
+}
+
+// What a glTF scene brought besides grass; colliders are listed until grass has them.
+void print_gltf(const grass_sample::GltfInfo& g, const grass_sample::Scene& scene) {
+    std::printf("  glTF terrain    %s: %llu triangles, maps of %u x %u texels\n", g.terrain.c_str(),
+                static_cast<unsigned long long>(g.terrain_triangles), g.map_width, g.map_height);
+    std::printf("  glTF meshes     %zu drawn by the host, %llu triangles\n", scene.meshes.size(),
+                static_cast<unsigned long long>(g.mesh_triangles));
+    std::printf("  glTF camera     %s\n", g.camera.empty() ? "none (the defaults or --camera)" : g.camera.c_str());
+    for (const grass_sample::GltfCollider& c : g.colliders) {
+        const bool sphere = c.shape == grass_sample::GltfCollider::Shape::sphere;
+        std::printf("  glTF collider   %s: %s radius %.3f m at (%.3f, %.3f, %.3f)", c.node.c_str(),
+                    sphere ? "sphere" : "capsule", c.radius, c.a[0], c.a[1], c.a[2]);
+        if (!sphere) std::printf(" to (%.3f, %.3f, %.3f)", c.b[0], c.b[1], c.b[2]);
+        std::printf(" (not passed to grass: it has no colliders yet)\n");
+    }
+    for (const std::string& note : g.notes) std::printf("  glTF note       %s\n", note.c_str());
 }
 
 int fail(const std::string& message) { return grass_sample::fail("grass-render", message); }
@@ -64,7 +83,12 @@ int main(int argc, char** argv) {
     grass_sample::Scene scene = grass_sample::demo_scene();
 
     std::string error;
-    if (!o.scene_path.empty() && !grass_sample::load_scene(o.scene_path, &scene, &error)) return fail(error);
+    grass_sample::GltfInfo gltf;
+    const bool is_gltf = grass_sample::is_gltf_path(o.scene_path);
+    if (!o.scene_path.empty() && !grass_sample::load_scene_file(o.scene_path, &scene, &gltf, &error)) {
+        fail(error);
+        return is_gltf ? 2 : 1; // a bad glTF file is refused like a bad option value
+    }
     if (o.have_camera) std::memcpy(scene.eye, o.camera, sizeof(o.camera));
     if (o.have_target) std::memcpy(scene.target, o.target, sizeof(o.target));
     if (o.fov > 0.0f) scene.fov_degrees = o.fov;
@@ -118,7 +142,7 @@ int main(int argc, char** argv) {
     const bool scene_ready = r == GRASS_SUCCESS;
     if (scene_ready) {
         grass_view_desc view =
-            grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees, 0.05f, scene.far_m);
+            grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees, scene.near_m, scene.far_m);
         if (o.debug_tiers) view.flags |= GRASS_VIEW_FLAG_DEBUG_TIERS;
         if (o.debug_cells) view.flags |= GRASS_VIEW_FLAG_DEBUG_CELLS;
         grass_sample::apply_light(scene, &view);
@@ -163,6 +187,7 @@ int main(int argc, char** argv) {
         std::printf("  triangles       %llu\n", static_cast<unsigned long long>(stats.triangles));
         std::printf("  plan            %.3f ms\n", stats.plan_ms);
         std::printf("  frame           %.1f ms (wall, incl. read-back)\n", frame_ms);
+        if (is_gltf) print_gltf(gltf, scene);
         if (host->validation_messages() != 0) {
             std::printf("  validation      %u messages:\n%s\n", host->validation_messages(),
                         host->validation_log().c_str());

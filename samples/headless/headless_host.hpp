@@ -6,6 +6,8 @@
 
 #include <grass/grass.h>
 
+#include "host_mesh.hpp"
+
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -39,6 +41,9 @@ struct TargetDesc {
     // itself, as an engine without sRGB targets does (the ground is not encoded: leave it
     // off). Pair it with GRASS_VIEW_FLAG_ENCODE_SRGB.
     bool unorm_color = false;
+    // The host's own scene: meshes drawn before grass, Lambert + ambient under the view's
+    // sun, into the colour and depth grass draws over (see host_mesh.hpp).
+    std::vector<HostMesh> meshes;
 };
 
 // Linear to sRGB-encoded, 0..1 (clamped).

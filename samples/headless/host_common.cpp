@@ -1,6 +1,7 @@
 #include "ground.hpp"
 #include "headless_host.hpp"
 #include "host_factories.hpp"
+#include "mesh_draw.hpp"
 
 #include <cmath>
 
@@ -75,30 +76,55 @@ void encode_float_image(Image* image) {
     }
 }
 
-GroundUniforms make_ground_uniforms(const grass_view_desc& view, const TargetDesc& target) {
-    GroundUniforms g{};
-    // projection * rotation (the view's translation is not used: camera-relative).
+void camera_relative_view_projection(const grass_view_desc& view, float out[16]) {
     for (int col = 0; col < 4; ++col) {
         for (int row = 0; row < 4; ++row) {
             double s = 0.0;
             for (int k = 0; k < 3; ++k)
                 s += double(view.projection[4 * k + row]) * (col < 3 ? view.view[4 * col + k] : 0.0);
             if (col == 3) s = view.projection[12 + row];
-            g.view_projection[4 * col + row] = static_cast<float>(s);
+            out[4 * col + row] = static_cast<float>(s);
         }
     }
-    g.plane[0] = static_cast<float>(0.0 - view.camera_position[1]);
-    g.plane[1] = 2000.0f;
+}
+
+namespace {
+void unit_sun(const grass_view_desc& view, float out[3]) {
     const double sun_len = std::sqrt(double(view.sun_direction[0]) * view.sun_direction[0] +
                                      double(view.sun_direction[1]) * view.sun_direction[1] +
                                      double(view.sun_direction[2]) * view.sun_direction[2]);
+    for (int c = 0; c < 3; ++c) out[c] = static_cast<float>(view.sun_direction[c] / sun_len);
+}
+} // namespace
+
+GroundUniforms make_ground_uniforms(const grass_view_desc& view, const TargetDesc& target) {
+    GroundUniforms g{};
+    camera_relative_view_projection(view, g.view_projection);
+    g.plane[0] = static_cast<float>(0.0 - view.camera_position[1]);
+    g.plane[1] = 2000.0f;
+    unit_sun(view, g.sun_direction);
     for (int c = 0; c < 3; ++c) {
         g.color[c] = target.ground_color[c];
-        g.sun_direction[c] = static_cast<float>(view.sun_direction[c] / sun_len);
         g.sun_color[c] = view.sun_color[c];
         g.ambient_color[c] = view.ambient_color[c];
     }
     return g;
+}
+
+MeshDraw make_mesh_draw(const grass_view_desc& view, const HostMesh& mesh, bool encode_srgb) {
+    MeshDraw d{};
+    camera_relative_view_projection(view, d.view_projection);
+    unit_sun(view, d.sun_direction);
+    for (int c = 0; c < 3; ++c) {
+        d.offset[c] = static_cast<float>(mesh.origin[c] - view.camera_position[c]);
+        d.albedo[c] = mesh.color[c];
+        d.sun_color[c] = view.sun_color[c];
+    }
+    d.offset[3] = view.ambient_color[0];
+    d.albedo[3] = view.ambient_color[1];
+    d.sun_direction[3] = view.ambient_color[2];
+    d.sun_color[3] = encode_srgb ? 1.0f : 0.0f;
+    return d;
 }
 
 } // namespace grass_host

@@ -7,6 +7,7 @@
 #include "driver_residency.hpp"
 #include "ground.hpp"
 #include "host_factories.hpp"
+#include "mesh_drawer_gl.hpp"
 
 #include <grass/grass_gl.h>
 
@@ -143,6 +144,7 @@ private:
     bool create_ground(std::string* error);
     void draw_ground(const grass_view_desc& view);
     GLuint ground_program_ = 0, ground_buffer_ = 0, ground_vao_ = 0;
+    std::unique_ptr<GlMeshDrawer> meshes_; // target.meshes
     uint32_t count_gl_errors(const char* where);
     static void APIENTRY debug_callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                                         const GLchar* message, const void* user_param);
@@ -214,6 +216,11 @@ bool GlHost::init(std::string* error) {
 
     if (!create_target(error)) return false;
     if (target_.ground && !create_ground(error)) return false;
+    if (!target_.meshes.empty()) {
+        meshes_ = std::make_unique<GlMeshDrawer>();
+        auto loader = [](void* self, const char* name) { return static_cast<GlHost*>(self)->gl_proc_address(name); };
+        if (!meshes_->init(loader, this, target_.meshes, error)) return false;
+    }
     count_gl_errors("host initialisation");
     return true;
 }
@@ -404,6 +411,7 @@ GlHost::~GlHost() {
         if (ground_program_) gl_.DeleteProgram(ground_program_);
         if (ground_buffer_) gl_.DeleteBuffers(1, &ground_buffer_);
         if (ground_vao_) gl_.DeleteVertexArrays(1, &ground_vao_);
+        meshes_.reset();
         if (debug_output_) gl_.DebugMessageCallback(nullptr, nullptr);
     }
     release_egl();
@@ -533,6 +541,7 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     clear_rect(clear_color, target_.reversed_z ? 0.0f : 1.0f, whole);
 
     if (target_.ground) draw_ground(view);
+    if (meshes_) meshes_->draw(view, target_.reversed_z, target_.unorm_color);
 
     if (occluder) {
         // The window depth of a camera-facing plane at view-space z = -distance.

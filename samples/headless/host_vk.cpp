@@ -8,6 +8,7 @@
 #include "driver_residency.hpp"
 #include "ground.hpp"
 #include "host_factories.hpp"
+#include "mesh_drawer_vk.hpp"
 
 #include <grass/grass_vk.h>
 
@@ -80,6 +81,7 @@ private:
     bool create_commands(std::string* error);
     bool create_ground(std::string* error);
     bool create_ground_pipeline(std::string* error);
+    bool create_meshes(std::string* error);
     void draw_ground(VkCommandBuffer cmd, const grass_view_desc& view);
     bool allocate_memory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags, VkDeviceMemory* out,
                          std::string* error);
@@ -129,6 +131,8 @@ private:
     VkDescriptorSet ground_set_ = VK_NULL_HANDLE;
     VkPipelineLayout ground_layout_ = VK_NULL_HANDLE;
     VkPipeline ground_pipeline_ = VK_NULL_HANDLE;
+    std::unique_ptr<VkMeshDrawer> meshes_; // target.meshes
+    VkPassTarget pass_target() const;
 
     VkCommandPool command_pool_ = VK_NULL_HANDLE;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
@@ -163,7 +167,25 @@ bool VkHost::init(std::string* error) {
         return false;
     }
     return create_instance(error) && pick_device(error) && create_device(error) && create_target(error) &&
-           create_render_pass(error) && create_commands(error) && (!target_.ground || create_ground(error));
+           create_render_pass(error) && create_commands(error) && (!target_.ground || create_ground(error)) &&
+           create_meshes(error);
+}
+
+VkPassTarget VkHost::pass_target() const {
+    VkPassTarget t;
+    t.render_pass = render_pass_;
+    t.color_format = color_format_;
+    t.depth_format = kDepthFormat;
+    t.samples = samples_;
+    t.reversed_z = target_.reversed_z;
+    t.encode_srgb = target_.unorm_color;
+    return t;
+}
+
+bool VkHost::create_meshes(std::string* error) {
+    if (target_.meshes.empty()) return true;
+    meshes_ = std::make_unique<VkMeshDrawer>();
+    return meshes_->init(physical_device_, device_, pass_target(), target_.meshes, error);
 }
 
 bool VkHost::create_instance(std::string* error) {
@@ -586,6 +608,7 @@ bool VkHost::create_commands(std::string* error) {
 VkHost::~VkHost() {
     if (device_) {
         vkDeviceWaitIdle(device_);
+        meshes_.reset();
         if (ground_pipeline_) vkDestroyPipeline(device_, ground_pipeline_, nullptr);
         if (ground_layout_) vkDestroyPipelineLayout(device_, ground_layout_, nullptr);
         if (ground_pool_) vkDestroyDescriptorPool(device_, ground_pool_, nullptr); // frees ground_set_
@@ -672,71 +695,14 @@ bool VkHost::create_ground(std::string* error) {
 }
 
 bool VkHost::create_ground_pipeline(std::string* error) {
-    VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
-    const uint32_t* code[2] = {grass_host_spirv::ground_vert, grass_host_spirv::ground_frag};
-    const size_t code_size[2] = {grass_host_spirv::ground_vert_size, grass_host_spirv::ground_frag_size};
-    VkResult r = VK_SUCCESS;
-    for (int i = 0; i < 2 && r == VK_SUCCESS; ++i) {
-        VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-        info.codeSize = code_size[i];
-        info.pCode = code[i];
-        r = vkCreateShaderModule(device_, &info, nullptr, &modules[i]);
-    }
-    VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-                                                 {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = modules[0];
-    stages[0].pName = "main";
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = modules[1];
-    stages[1].pName = "main";
-    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = samples_;
-    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depth.depthTestEnable = VK_TRUE;
-    depth.depthWriteEnable = VK_TRUE;
-    depth.depthCompareOp = target_.reversed_z ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
-    VkPipelineColorBlendAttachmentState attachment{};
-    attachment.colorWriteMask = 0xf;
-    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = 1;
-    blend.pAttachments = &attachment;
-    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = 2;
-    dynamic.pDynamicStates = dynamic_states;
-    const VkFormat color_format = color_format_;
-    VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &color_format;
-    rendering.depthAttachmentFormat = kDepthFormat;
-    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    info.pNext = render_pass_ ? nullptr : &rendering;
-    info.stageCount = 2;
-    info.pStages = stages;
-    info.pVertexInputState = &vertex_input;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &depth;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamic;
-    info.layout = ground_layout_;
-    info.renderPass = render_pass_;
-    if (r == VK_SUCCESS) r = vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &ground_pipeline_);
-    for (VkShaderModule m : modules) {
-        if (m) vkDestroyShaderModule(device_, m, nullptr);
-    }
+    VkHostPipelineDesc desc;
+    desc.vertex_code = grass_host_spirv::ground_vert;
+    desc.vertex_code_size = grass_host_spirv::ground_vert_size;
+    desc.fragment_code = grass_host_spirv::ground_frag;
+    desc.fragment_code_size = grass_host_spirv::ground_frag_size;
+    desc.layout = ground_layout_;
+    desc.target = pass_target();
+    const VkResult r = create_host_pipeline(device_, desc, &ground_pipeline_);
     if (r != VK_SUCCESS) {
         *error = vk_error("creating the ground pipeline", r);
         return false;
@@ -951,6 +917,7 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     if (frame_begun) result = grass_vk_prepare_frame(context, cmd_);
     begin_pass(cmd_);
     if (target_.ground) draw_ground(cmd_, view);
+    if (meshes_) meshes_->record(cmd_, view, target_.width, target_.height);
     if (occluder) clear_occluder(cmd_, view, *occluder);
     if (result == GRASS_SUCCESS) {
         grass_vk_record_desc record = grass_default_vk_record_desc();

@@ -50,3 +50,15 @@ foreach(tool IN LISTS tools)
   expect("${tool} --backend without a value" 2 "--backend" ${command} --backend)
   expect("${tool} --size 10" 2 "--size: \"10\" is not WxH" ${command} --size 10)
 endforeach()
+
+# glTF scenes: a bad file is refused before any rendering, with exit 2 and an error that
+# names the file and what is wrong with it (tests/gltf holds the full list of hostile files).
+set(scratch "${CMAKE_CURRENT_BINARY_DIR}/cli-test-gltf")
+file(MAKE_DIRECTORY "${scratch}")
+file(WRITE "${scratch}/short.glb" "glTF")
+expect("grass-render --scene short.glb" 2 "short.glb: is 4 bytes: too short for a GLB header"
+       ${RENDER} --scene "${scratch}/short.glb")
+file(WRITE "${scratch}/bad-mesh.gltf"
+     "{\"asset\": {\"version\": \"2.0\"}, \"scenes\": [{\"nodes\": [0]}], \"nodes\": [{\"name\": \"terrain\", \"mesh\": 3}]}")
+expect("grass-render --scene bad-mesh.gltf" 2 "bad-mesh.gltf: .*node 0 \"terrain\" names mesh 3; the file has 0"
+       ${RENDER} --scene "${scratch}/bad-mesh.gltf")

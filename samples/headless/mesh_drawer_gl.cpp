@@ -1,0 +1,176 @@
+#include "mesh_drawer_gl.hpp"
+
+#include "mesh_draw.hpp"
+
+#include <GL/glcorearb.h>
+
+namespace grass_host_shaders {
+extern const char* const mesh_vert;
+extern const char* const mesh_frag;
+} // namespace grass_host_shaders
+
+namespace grass_host {
+
+#define GRASS_MESH_GL_FUNCTIONS(X)                                 \
+    X(PFNGLCREATESHADERPROC, CreateShader)                         \
+    X(PFNGLSHADERSOURCEPROC, ShaderSource)                         \
+    X(PFNGLCOMPILESHADERPROC, CompileShader)                       \
+    X(PFNGLGETSHADERIVPROC, GetShaderiv)                           \
+    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                 \
+    X(PFNGLDELETESHADERPROC, DeleteShader)                         \
+    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                       \
+    X(PFNGLATTACHSHADERPROC, AttachShader)                         \
+    X(PFNGLLINKPROGRAMPROC, LinkProgram)                           \
+    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                         \
+    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)               \
+    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                       \
+    X(PFNGLUSEPROGRAMPROC, UseProgram)                             \
+    X(PFNGLCREATEBUFFERSPROC, CreateBuffers)                       \
+    X(PFNGLNAMEDBUFFERSTORAGEPROC, NamedBufferStorage)             \
+    X(PFNGLNAMEDBUFFERSUBDATAPROC, NamedBufferSubData)             \
+    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                       \
+    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                     \
+    X(PFNGLCREATEVERTEXARRAYSPROC, CreateVertexArrays)             \
+    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)             \
+    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                   \
+    X(PFNGLVERTEXARRAYVERTEXBUFFERPROC, VertexArrayVertexBuffer)   \
+    X(PFNGLVERTEXARRAYELEMENTBUFFERPROC, VertexArrayElementBuffer) \
+    X(PFNGLENABLEVERTEXARRAYATTRIBPROC, EnableVertexArrayAttrib)   \
+    X(PFNGLVERTEXARRAYATTRIBFORMATPROC, VertexArrayAttribFormat)   \
+    X(PFNGLVERTEXARRAYATTRIBBINDINGPROC, VertexArrayAttribBinding) \
+    X(PFNGLDRAWELEMENTSBASEVERTEXPROC, DrawElementsBaseVertex)     \
+    X(PFNGLENABLEPROC, Enable)                                     \
+    X(PFNGLDISABLEPROC, Disable)                                   \
+    X(PFNGLDEPTHFUNCPROC, DepthFunc)                               \
+    X(PFNGLDEPTHMASKPROC, DepthMask)
+
+struct GlMeshDrawer::Impl {
+#define GRASS_MESH_GL_DECLARE(type, name) type name = nullptr;
+    GRASS_MESH_GL_FUNCTIONS(GRASS_MESH_GL_DECLARE)
+#undef GRASS_MESH_GL_DECLARE
+    GLuint program = 0, vao = 0, geometry = 0, uniforms = 0;
+    struct Range {
+        const HostMesh* mesh;
+        size_t first_index; // in the geometry buffer's index part
+        GLint base_vertex;
+    };
+    std::vector<HostMesh> meshes;
+    std::vector<Range> ranges;
+    size_t index_offset = 0; // bytes: where the indices begin in `geometry`
+
+    GLuint compile(std::string* error) {
+        const char* sources[2] = {grass_host_shaders::mesh_vert, grass_host_shaders::mesh_frag};
+        const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+        const GLuint p = CreateProgram();
+        for (int k = 0; k < 2; ++k) {
+            const GLuint shader = CreateShader(stages[k]);
+            ShaderSource(shader, 1, &sources[k], nullptr);
+            CompileShader(shader);
+            GLint ok = 0;
+            GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+            if (!ok) {
+                char log[1024] = {0};
+                GetShaderInfoLog(shader, sizeof(log), nullptr, log);
+                *error = std::string("mesh shader: ") + log;
+                DeleteShader(shader);
+                DeleteProgram(p);
+                return 0;
+            }
+            AttachShader(p, shader);
+            DeleteShader(shader);
+        }
+        LinkProgram(p);
+        GLint linked = 0;
+        GetProgramiv(p, GL_LINK_STATUS, &linked);
+        if (!linked) {
+            char log[1024] = {0};
+            GetProgramInfoLog(p, sizeof(log), nullptr, log);
+            *error = std::string("mesh program: ") + log;
+            DeleteProgram(p);
+            return 0;
+        }
+        return p;
+    }
+};
+
+GlMeshDrawer::GlMeshDrawer() : impl_(std::make_unique<Impl>()) {}
+
+GlMeshDrawer::~GlMeshDrawer() {
+    Impl& g = *impl_;
+    if (!g.DeleteProgram) return; // never initialised
+    if (g.program) g.DeleteProgram(g.program);
+    const GLuint buffers[2] = {g.geometry, g.uniforms};
+    g.DeleteBuffers(2, buffers); // zero names are ignored
+    if (g.vao) g.DeleteVertexArrays(1, &g.vao);
+}
+
+bool GlMeshDrawer::init(ProcLoader loader, void* user_data, const std::vector<HostMesh>& meshes, std::string* error) {
+    std::string ignored;
+    std::string* e = error ? error : &ignored;
+    Impl& g = *impl_;
+#define GRASS_MESH_GL_LOAD(type, name)                              \
+    g.name = reinterpret_cast<type>(loader(user_data, "gl" #name)); \
+    if (!g.name) {                                                  \
+        *e = "the GL loader has no gl" #name;                       \
+        return false;                                               \
+    }
+    GRASS_MESH_GL_FUNCTIONS(GRASS_MESH_GL_LOAD)
+#undef GRASS_MESH_GL_LOAD
+    g.program = g.compile(e);
+    if (!g.program) return false;
+
+    // One buffer: every mesh's vertices, then every mesh's indices.
+    g.meshes = meshes;
+    size_t vertex_floats = 0, indices = 0;
+    for (const HostMesh& m : g.meshes) {
+        g.ranges.push_back({&m, indices, GLint(vertex_floats / HostMesh::kFloatsPerVertex)});
+        vertex_floats += m.vertices.size();
+        indices += m.indices.size();
+    }
+    g.index_offset = vertex_floats * sizeof(float);
+    const size_t bytes = g.index_offset + indices * sizeof(uint32_t);
+    g.CreateBuffers(1, &g.geometry);
+    g.NamedBufferStorage(g.geometry, GLsizeiptr(bytes ? bytes : 4), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    size_t v = 0, i = g.index_offset;
+    for (const HostMesh& m : g.meshes) {
+        g.NamedBufferSubData(g.geometry, GLintptr(v), GLsizeiptr(m.vertices.size() * sizeof(float)), m.vertices.data());
+        g.NamedBufferSubData(g.geometry, GLintptr(i), GLsizeiptr(m.indices.size() * sizeof(uint32_t)),
+                             m.indices.data());
+        v += m.vertices.size() * sizeof(float);
+        i += m.indices.size() * sizeof(uint32_t);
+    }
+    g.CreateBuffers(1, &g.uniforms);
+    g.NamedBufferStorage(g.uniforms, sizeof(MeshDraw), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    g.CreateVertexArrays(1, &g.vao);
+    g.VertexArrayVertexBuffer(g.vao, 0, g.geometry, 0, GLsizei(HostMesh::kFloatsPerVertex * sizeof(float)));
+    g.VertexArrayElementBuffer(g.vao, g.geometry);
+    for (GLuint a = 0; a < 2; ++a) {
+        g.EnableVertexArrayAttrib(g.vao, a);
+        g.VertexArrayAttribFormat(g.vao, a, 3, GL_FLOAT, GL_FALSE, GLuint(3 * a * sizeof(float)));
+        g.VertexArrayAttribBinding(g.vao, a, 0);
+    }
+    return true;
+}
+
+void GlMeshDrawer::draw(const grass_view_desc& view, bool reversed_z, bool encode_srgb) {
+    Impl& g = *impl_;
+    if (!g.program || g.ranges.empty()) return;
+    g.UseProgram(g.program);
+    g.BindVertexArray(g.vao);
+    g.BindBufferBase(GL_UNIFORM_BUFFER, 0, g.uniforms);
+    g.Enable(GL_DEPTH_TEST);
+    g.DepthMask(GL_TRUE);
+    g.DepthFunc(reversed_z ? GL_GREATER : GL_LESS);
+    for (const Impl::Range& r : g.ranges) {
+        const MeshDraw d = make_mesh_draw(view, *r.mesh, encode_srgb);
+        g.NamedBufferSubData(g.uniforms, 0, sizeof(d), &d);
+        const auto offset = static_cast<uintptr_t>(g.index_offset + r.first_index * sizeof(uint32_t));
+        g.DrawElementsBaseVertex(GL_TRIANGLES, GLsizei(r.mesh->indices.size()), GL_UNSIGNED_INT,
+                                 reinterpret_cast<const void*>(offset), r.base_vertex);
+    }
+    g.Disable(GL_DEPTH_TEST);
+    g.BindVertexArray(0);
+    g.UseProgram(0);
+}
+
+} // namespace grass_host
