@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libbenchmark-dev                                      # tests, benchmarks
   python3-pytest python3-numpy python3-pip python3-setuptools        # the Python binding: tests, maps from arrays, pip install
   clang-format-15 python3                                            # the style check, the docs' link check
+  libopenscenegraph-dev openscenegraph xvfb xauth                    # the OSG adapter (integration/osg): its library, osgconv, the sample under Xvfb
 )
 
 missing=()
