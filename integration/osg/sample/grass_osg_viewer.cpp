@@ -136,8 +136,10 @@ int main(int argc, char** argv) {
     manipulators->addMatrixManipulator('1', "Trackball", new osgGA::TrackballManipulator);
     manipulators->addMatrixManipulator('2', "Terrain", new osgGA::TerrainManipulator);
     manipulators->addMatrixManipulator('3', "FirstPerson", new osgGA::FirstPersonManipulator);
+    // Home: standing in the grass at the field's corner, looking at the cottage.
+    manipulators->setHomePosition(osg::Vec3d(-11, -17, 2.2), osg::Vec3d(2, 2, 1.6), osg::Vec3d(0, 0, 1));
+    manipulators->setAutoComputeHomePosition(false);
     viewer.setCameraManipulator(manipulators.get());
-    manipulators->setHomePosition(osg::Vec3d(-14, -22, 5), osg::Vec3d(0, 0, 1.5), osg::Vec3d(0, 0, 1));
     viewer.addEventHandler(new osgGA::StateSetManipulator(viewer.getCamera()->getOrCreateStateSet()));
     viewer.addEventHandler(new osgViewer::StatsHandler);
     osg::ref_ptr<Screenshot> screenshot = new Screenshot;
