@@ -6,6 +6,8 @@
 #include <osg/Texture2D>
 #include <osgViewer/GraphicsWindow>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstdlib>
 
@@ -69,6 +71,11 @@ grass_osg::FieldDesc field_desc(uint32_t cells) {
     d.field.cells_x = cells;
     d.field.cells_z = cells;
     d.field.cell_size = 0.25;
+    // The volume and image tiers' slices are baked once and read back by the other tests.
+    const std::string cache = std::string(GRASS_OSG_TEST_OUT) + "/slice-cache";
+    mkdir(GRASS_OSG_TEST_OUT, 0755);
+    mkdir(cache.c_str(), 0755);
+    d.cache_directory = cache;
     return d;
 }
 
