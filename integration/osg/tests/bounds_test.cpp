@@ -55,7 +55,8 @@ TEST_F(BoundsTest, TheBoxHoldsTheCellsTheBladesAndTheTerrain) {
     grass_osg::FieldDesc d = raised_field(3.0f);
     const double origin[3] = {10.0, 20.0, 30.0};
     grass_osg::z_up_base_transform(origin, d.field.base_transform);
-    const osg::BoundingBox& up = field_drawable(d)->getBoundingBox();
+    osg::ref_ptr<grass_osg::FieldDrawable> turned = field_drawable(d);
+    const osg::BoundingBox& up = turned->getBoundingBox();
     EXPECT_NEAR(up.zMin(), 33.0f, 0.05f);
     EXPECT_GT(up.zMax(), 33.3f);
     EXPECT_NEAR(up.yMax(), 20.0f, 0.3f);

@@ -41,8 +41,6 @@ struct GlTarget::Impl {
 
 namespace {
 
-int display_users = 0; // the surfaceless display is one per process: terminate it with its last user
-
 EGLDisplay open_display(std::string* error) {
     auto get_platform_display =
         reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
@@ -53,15 +51,7 @@ EGLDisplay open_display(std::string* error) {
         *error = "no EGL surfaceless display";
         return EGL_NO_DISPLAY;
     }
-    ++display_users;
     return display;
-}
-
-void close_display(EGLDisplay display) {
-    if (--display_users == 0) {
-        eglTerminate(display);
-        eglReleaseThread();
-    }
 }
 
 } // namespace
@@ -136,7 +126,11 @@ GlTarget::~GlTarget() {
         eglMakeCurrent(g.display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         eglDestroyContext(g.display, g.context);
     }
-    if (g.display != EGL_NO_DISPLAY) close_display(g.display);
+    // The display stays initialised until the process exits: eglTerminate would unload
+    // Mesa's driver, and LeakSanitizer could then no longer name the library of the
+    // allocations Mesa keeps until exit (tests/sanitizer/lsan.supp suppresses them by name).
+    // Other users of the one surfaceless display (the headless host) may still terminate it;
+    // eglInitialize in open_display brings it back.
 }
 
 void GlTarget::make_current() { eglMakeCurrent(impl_->display, EGL_NO_SURFACE, EGL_NO_SURFACE, impl_->context); }

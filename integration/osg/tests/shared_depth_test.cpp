@@ -11,6 +11,10 @@ struct Variant {
     bool ground; // an OSG ground under the grass
 };
 
+void PrintTo(const Variant& v, std::ostream* out) {
+    *out << v.samples << " sample(s)" << (v.ground ? ", an OSG ground" : "");
+}
+
 class SharedDepthTest : public ::testing::TestWithParam<Variant> {
 protected:
     void SetUp() override {
