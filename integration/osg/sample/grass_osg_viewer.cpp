@@ -161,6 +161,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     if (frames == 0) return viewer.run();
+    // Counted frames: the last frame's draw must have finished when frame() returns.
+    viewer.setThreadingModel(osgViewer::Viewer::SingleThreaded);
     for (int i = 0; i < frames && !viewer.done(); ++i) {
         last_frame->armed = i == frames - 1;
         viewer.frame();
