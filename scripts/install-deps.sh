@@ -13,7 +13,9 @@ packages=(
   libgtest-dev libbenchmark-dev                                      # tests, benchmarks
   python3-pytest python3-numpy python3-pip python3-setuptools        # the Python binding: tests, maps from arrays, pip install
   clang-format-15 python3                                            # the style check, the docs' link check
-  libopenscenegraph-dev openscenegraph xvfb xauth                    # the OSG adapter (integration/osg): its library, osgconv, the sample under Xvfb
+  libglfw3-dev libimgui-dev libglm-dev libstb-dev                    # the windowed viewers: window, overlay, camera maths
+  xvfb xauth                                                         # the viewers' window test (xvfb-run)
+  libopenscenegraph-dev openscenegraph                               # the OSG adapter (integration/osg): its library, osgconv
 )
 
 missing=()

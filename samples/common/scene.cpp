@@ -177,10 +177,15 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
         std::ifstream in(path);
         if (!in) throw std::runtime_error("cannot open " + path);
         const json j = json::parse(in, nullptr, true, true);
-        // The demo's lod setup is made for its small lawn: a scene file starts from the
-        // library's default tiers unless it gives its own.
+        // The demo's lod setup and its winding path of thin grass are made for its small
+        // lawn: a scene file starts from the library's default tiers and uniform density
+        // unless it gives its own. (Inherited, the path showed in every scene file without
+        // "density_map": null, stretched over its field: holes in the far tiers over no
+        // ground, a darker seam over a ground, that looked like artefacts of the tiers.)
         s->tiers.clear();
         s->lod_tests.clear();
+        s->density_texels.clear();
+        s->density_width = s->density_height = 0;
         check_keys(j, "the scene", {"patch", "field", "camera", "light", "image", "ground"});
         if (j.contains("ground")) {
             const json& g = j["ground"];
@@ -247,7 +252,6 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
                     s->maps[r] = load_map_png(beside(path, m[key].get<std::string>()), role == MapRole::color);
                 }
                 read(m, "height_scale", &s->height_scale);
-                if (m.contains("density")) s->density_texels.clear(); // not the demo's path as well
             }
             auto& d = s->field;
             if (f.contains("cells")) {

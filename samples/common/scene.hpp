@@ -56,7 +56,9 @@ struct Scene {
 // a winding path of thin grass in the density map, seen from 1.7 m.
 Scene demo_scene();
 
-// Reads a scene file over the demo's defaults. False and *error on a bad file or key.
+// Reads a scene file over the demo's defaults, but for its lod setup and density path: a
+// scene file starts from the library's default tiers and uniform density. False and *error
+// on a bad file or key.
 bool load_scene(const std::string& path, Scene* scene, std::string* error);
 
 // Creates the scene's design maps on `ctx` into `stack` (their ids; its height scale the

@@ -1,7 +1,7 @@
 # The sample tools' command lines (ctest sample_cli): every tool and subcommand answers
 # --help with its usage and exit 0, and refuses an unknown option and a bad --backend value
 # with exit 2 and an error that names the option and the value. Nothing is rendered.
-#   cmake -DRENDER=<grass-render> -DMEASURE=<grass-measure> -P cli_test.cmake
+#   cmake -DRENDER=<grass-render> -DMEASURE=<grass-measure> [-DVIEWER=<grass-viewer>] -P cli_test.cmake
 set(failures 0)
 
 function(expect name expected_rc regex)
@@ -21,10 +21,20 @@ expect("grass-measure without a subcommand" 2 "subcommand is required" ${MEASURE
 expect("grass-measure with an unknown subcommand" 2 "not expected: frobnicate" ${MEASURE} frobnicate)
 
 set(tools "grass-render" "bench" "tier-cost" "popping")
+if(VIEWER)
+  list(APPEND tools "grass-viewer")
+  # The viewer refuses what it cannot do before it opens a window (no display needed).
+  expect("grass-viewer --quality best" 2 "--quality: .*best" ${VIEWER} --quality best)
+  expect("grass-viewer --screenshot without --frames" 1 "--screenshot needs --frames N" ${VIEWER} --screenshot x.png)
+  expect("grass-viewer --scene nosuch.json" 1 "cannot open nosuch.json" ${VIEWER} --scene nosuch.json)
+endif()
 foreach(tool IN LISTS tools)
   if(tool STREQUAL "grass-render")
     set(command ${RENDER})
     set(usage "Usage: grass-render")
+  elseif(tool STREQUAL "grass-viewer")
+    set(command ${VIEWER})
+    set(usage "Usage: grass-viewer")
   else()
     set(command ${MEASURE} ${tool})
     set(usage "Usage: grass-measure ${tool}")

@@ -1,0 +1,964 @@
+// The Vulkan viewer window: a GLFW window without a GL context; the viewer owns the instance
+// (validation layers on when installed and asked for), the device, the swapchain (sRGB,
+// recreated on resize), a render pass with a depth buffer (multisampled and resolved into
+// the swapchain image when MSAA is on) and two frames in flight. grass records with
+// grass_vk_prepare_frame / grass_vk_record in that pass, after the host's ground and before
+// the overlay; a screenshot copies the swapchain image before it is presented.
+#include "ground.hpp"
+#include "window.hpp"
+
+#include <grass/grass_vk.h>
+
+#include <vulkan/vulkan.h>
+#define GLFW_INCLUDE_NONE
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_vulkan.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+namespace grass_host_spirv {
+extern const uint32_t ground_vert[];
+extern const uint32_t ground_vert_size; // bytes
+extern const uint32_t ground_frag[];
+extern const uint32_t ground_frag_size;
+} // namespace grass_host_spirv
+
+namespace grass_viewer {
+
+namespace {
+
+constexpr uint32_t kFramesInFlight = 2;
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+std::string vk_error(const char* call, VkResult r) {
+    return std::string(call) + " failed with VkResult " + std::to_string(int(r));
+}
+
+struct Image {
+    VkImage image = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+};
+
+struct Buffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr;
+    VkDeviceSize size = 0;
+};
+
+// What one frame in flight owns.
+struct Frame {
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VkFence done = VK_NULL_HANDLE; // signalled when the GPU has finished the frame
+    VkSemaphore acquired = VK_NULL_HANDLE;
+    Buffer ground; // the ground's uniforms
+    VkDescriptorSet ground_set = VK_NULL_HANDLE;
+};
+
+class VkWindow final : public Window {
+public:
+    explicit VkWindow(const WindowDesc& desc) : Window(desc) {}
+    ~VkWindow() override;
+    bool init(std::string* error);
+
+    grass_backend backend() const override { return GRASS_BACKEND_VULKAN; }
+    std::string device_name() const override { return properties_.deviceName; }
+    grass_result create_context(const grass_context_desc& desc, grass_context** out) override;
+    glm::mat4 projection(float fovy, float aspect, float near_m, float far_m) const override {
+        glm::mat4 p = glm::perspectiveRH_ZO(fovy, aspect, near_m, far_m);
+        p[1][1] = -p[1][1]; // clip y down
+        return p;
+    }
+    bool set_samples(uint32_t samples, bool* contexts_stale, std::string* error) override;
+    void wait_idle() override { vkDeviceWaitIdle(device_); }
+    void overlay_new_frame() override { ImGui_ImplVulkan_NewFrame(); }
+    grass_result draw_frame(grass_context* ctx, const grass_view_desc& view, ImDrawData* overlay,
+                            grass_host::Image* screenshot, std::string* error) override;
+
+private:
+    bool create_instance(std::string* error);
+    bool pick_device(std::string* error);
+    bool create_device(std::string* error);
+    bool create_frames(std::string* error);
+    bool create_swapchain(std::string* error);
+    void destroy_swapchain();
+    bool create_render_pass(std::string* error);
+    bool create_targets(std::string* error); // depth, MSAA colour, framebuffers
+    void destroy_targets();
+    bool create_ground_pipeline(std::string* error);
+    bool start_overlay(std::string* error);
+    void stop_overlay();
+    bool create_image(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
+                      VkImageAspectFlags aspect, Image* out, std::string* error);
+    void destroy_image(Image* image);
+    bool create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, Buffer* out, std::string* error);
+    void destroy_buffer(Buffer* buffer);
+    bool memory_type(uint32_t bits, VkMemoryPropertyFlags flags, uint32_t* out) const;
+    bool submit_once(void (*record)(VkCommandBuffer), std::string* error);
+    void record_copy(VkCommandBuffer cmd, uint32_t image_index);
+    void read_copy(grass_host::Image* out) const;
+    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                     VkDebugUtilsMessageTypeFlagsEXT types,
+                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+
+    VkInstance instance_ = VK_NULL_HANDLE;
+    uint32_t api_version_ = VK_API_VERSION_1_1;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memory_{};
+    VkDevice device_ = VK_NULL_HANDLE;
+    uint32_t family_ = 0;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    Frame frames_[kFramesInFlight];
+    uint32_t frame_ = 0;
+
+    VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
+    VkSurfaceFormatKHR format_{};
+    VkExtent2D extent_{};
+    std::vector<VkImage> images_;
+    std::vector<VkImageView> views_;
+    std::vector<VkSemaphore> rendered_; // per swapchain image: the frame's drawing is done
+    bool swapchain_stale_ = false;
+    bool can_copy_ = false; // the swapchain images allow transfers (screenshots)
+
+    VkRenderPass render_pass_ = VK_NULL_HANDLE;
+    Image depth_, msaa_color_;
+    std::vector<VkFramebuffer> framebuffers_;
+
+    VkDescriptorSetLayout ground_set_layout_ = VK_NULL_HANDLE;
+    VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE; // the ground's sets and the overlay's font
+    VkPipelineLayout ground_layout_ = VK_NULL_HANDLE;
+    VkPipeline ground_pipeline_ = VK_NULL_HANDLE;
+    bool overlay_glfw_ = false, overlay_vk_ = false;
+
+    Buffer readback_;
+};
+
+VKAPI_ATTR VkBool32 VKAPI_CALL VkWindow::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                    VkDebugUtilsMessageTypeFlagsEXT,
+                                                    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+    static_cast<ValidationLog*>(user)->add(
+        std::string(severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "[error] " : "[warning] ") +
+        (data && data->pMessage ? data->pMessage : "(no message)"));
+    return VK_FALSE;
+}
+
+// ---- Creation ------------------------------------------------------------------------------
+
+bool VkWindow::init(std::string* error) {
+    if (!glfwVulkanSupported()) {
+        *error = "GLFW finds no Vulkan loader";
+        return false;
+    }
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    if (!open("grass-viewer (Vulkan)", error) || !create_instance(error)) return false;
+    VkResult r = glfwCreateWindowSurface(instance_, window_, nullptr, &surface_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("glfwCreateWindowSurface", r);
+        return false;
+    }
+    return pick_device(error) && create_device(error) && create_frames(error) && create_swapchain(error) &&
+           create_render_pass(error) && create_targets(error) && create_ground_pipeline(error) && start_overlay(error);
+}
+
+bool VkWindow::create_instance(std::string* error) {
+    uint32_t loader = VK_API_VERSION_1_0;
+    vkEnumerateInstanceVersion(&loader);
+    api_version_ = loader >= VK_API_VERSION_1_3 ? VK_API_VERSION_1_3 : VK_API_VERSION_1_1;
+    uint32_t count = 0;
+    const char** glfw_extensions = glfwGetRequiredInstanceExtensions(&count);
+    std::vector<const char*> extensions(glfw_extensions, glfw_extensions + count);
+    std::vector<VkLayerProperties> layers;
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    layers.resize(count);
+    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    bool validation = false;
+    for (const VkLayerProperties& l : layers)
+        validation |= desc_.validation && !std::strcmp(l.layerName, kValidationLayer);
+    if (validation) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "grass-viewer";
+    app.pEngineName = "grass";
+    app.apiVersion = api_version_;
+    VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    messenger.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                            VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                            VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    messenger.pfnUserCallback = &VkWindow::on_message;
+    messenger.pUserData = desc_.validation_log;
+    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    info.pNext = validation ? &messenger : nullptr;
+    info.pApplicationInfo = &app;
+    info.enabledLayerCount = validation ? 1 : 0;
+    info.ppEnabledLayerNames = &kValidationLayer;
+    info.enabledExtensionCount = uint32_t(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
+    VkResult r = vkCreateInstance(&info, nullptr, &instance_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateInstance", r);
+        return false;
+    }
+    if (validation) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+        r = create ? create(instance_, &messenger, nullptr, &messenger_) : VK_ERROR_EXTENSION_NOT_PRESENT;
+        if (r != VK_SUCCESS) {
+            *error = vk_error("vkCreateDebugUtilsMessengerEXT", r);
+            return false;
+        }
+    }
+    return true;
+}
+
+// The first device with a queue family that draws and presents to the window.
+bool VkWindow::pick_device(std::string* error) {
+    uint32_t count = 0;
+    vkEnumeratePhysicalDevices(instance_, &count, nullptr);
+    std::vector<VkPhysicalDevice> devices(count);
+    vkEnumeratePhysicalDevices(instance_, &count, devices.data());
+    for (VkPhysicalDevice d : devices) {
+        vkGetPhysicalDeviceProperties(d, &properties_);
+        if (properties_.apiVersion < VK_API_VERSION_1_1) continue;
+        uint32_t n = 0;
+        vkGetPhysicalDeviceQueueFamilyProperties(d, &n, nullptr);
+        std::vector<VkQueueFamilyProperties> families(n);
+        vkGetPhysicalDeviceQueueFamilyProperties(d, &n, families.data());
+        for (uint32_t i = 0; i < n; ++i) {
+            VkBool32 present = VK_FALSE;
+            vkGetPhysicalDeviceSurfaceSupportKHR(d, i, surface_, &present);
+            if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && present) {
+                physical_ = d;
+                family_ = i;
+                vkGetPhysicalDeviceMemoryProperties(d, &memory_);
+                return true;
+            }
+        }
+    }
+    *error = "no Vulkan 1.1 device draws and presents to the window";
+    return false;
+}
+
+bool VkWindow::create_device(std::string* error) {
+    const float priority = 1.0f;
+    VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    queue.queueFamilyIndex = family_;
+    queue.queueCount = 1;
+    queue.pQueuePriorities = &priority;
+    const char* extensions[] = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+    info.queueCreateInfoCount = 1;
+    info.pQueueCreateInfos = &queue;
+    info.enabledExtensionCount = 1;
+    info.ppEnabledExtensionNames = extensions;
+    VkResult r = vkCreateDevice(physical_, &info, nullptr, &device_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateDevice", r);
+        return false;
+    }
+    vkGetDeviceQueue(device_, family_, 0, &queue_);
+    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pool.queueFamilyIndex = family_;
+    r = vkCreateCommandPool(device_, &pool, nullptr, &pool_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateCommandPool", r);
+        return false;
+    }
+    return true;
+}
+
+// Per frame in flight: a command buffer, its fence and semaphore, the ground's uniforms.
+bool VkWindow::create_frames(std::string* error) {
+    const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
+                                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo set_layout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    set_layout.bindingCount = 1;
+    set_layout.pBindings = &binding;
+    VkResult r = vkCreateDescriptorSetLayout(device_, &set_layout, nullptr, &ground_set_layout_);
+    const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
+                                           {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+    VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT; // the overlay frees its font's set
+    pool.maxSets = kFramesInFlight + 1;
+    pool.poolSizeCount = 2;
+    pool.pPoolSizes = sizes;
+    if (r == VK_SUCCESS) r = vkCreateDescriptorPool(device_, &pool, nullptr, &descriptor_pool_);
+    VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    layout.setLayoutCount = 1;
+    layout.pSetLayouts = &ground_set_layout_;
+    if (r == VK_SUCCESS) r = vkCreatePipelineLayout(device_, &layout, nullptr, &ground_layout_);
+    for (Frame& f : frames_) {
+        VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        alloc.commandPool = pool_;
+        alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        alloc.commandBufferCount = 1;
+        if (r == VK_SUCCESS) r = vkAllocateCommandBuffers(device_, &alloc, &f.cmd);
+        VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+        if (r == VK_SUCCESS) r = vkCreateFence(device_, &fence, nullptr, &f.done);
+        VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+        if (r == VK_SUCCESS) r = vkCreateSemaphore(device_, &semaphore, nullptr, &f.acquired);
+        VkDescriptorSetAllocateInfo set{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+        set.descriptorPool = descriptor_pool_;
+        set.descriptorSetCount = 1;
+        set.pSetLayouts = &ground_set_layout_;
+        if (r == VK_SUCCESS) r = vkAllocateDescriptorSets(device_, &set, &f.ground_set);
+        if (r != VK_SUCCESS) break;
+        if (!create_buffer(sizeof(grass_host::GroundUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &f.ground, error)) {
+            return false;
+        }
+        const VkDescriptorBufferInfo buffer{f.ground.buffer, 0, sizeof(grass_host::GroundUniforms)};
+        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        write.dstSet = f.ground_set;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        write.pBufferInfo = &buffer;
+        vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+    }
+    if (r != VK_SUCCESS) *error = vk_error("creating the frames in flight", r);
+    return r == VK_SUCCESS;
+}
+
+// An sRGB swapchain of the window's size; the render targets follow it.
+bool VkWindow::create_swapchain(std::string* error) {
+    VkSurfaceCapabilitiesKHR caps{};
+    vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physical_, surface_, &caps);
+    uint32_t count = 0;
+    vkGetPhysicalDeviceSurfaceFormatsKHR(physical_, surface_, &count, nullptr);
+    std::vector<VkSurfaceFormatKHR> formats(count);
+    vkGetPhysicalDeviceSurfaceFormatsKHR(physical_, surface_, &count, formats.data());
+    format_.format = VK_FORMAT_UNDEFINED;
+    for (const VkSurfaceFormatKHR& f : formats) {
+        if ((f.format == VK_FORMAT_B8G8R8A8_SRGB || f.format == VK_FORMAT_R8G8B8A8_SRGB) &&
+            f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR && format_.format == VK_FORMAT_UNDEFINED) {
+            format_ = f;
+        }
+    }
+    if (format_.format == VK_FORMAT_UNDEFINED) {
+        *error = "the window's surface offers no B8G8R8A8_SRGB or R8G8B8A8_SRGB format";
+        return false;
+    }
+    vkGetPhysicalDeviceSurfacePresentModesKHR(physical_, surface_, &count, nullptr);
+    std::vector<VkPresentModeKHR> modes(count);
+    vkGetPhysicalDeviceSurfacePresentModesKHR(physical_, surface_, &count, modes.data());
+    VkPresentModeKHR mode = VK_PRESENT_MODE_FIFO_KHR; // always there: vsync
+    if (!desc_.vsync) {
+        for (VkPresentModeKHR m : modes) {
+            if (m == VK_PRESENT_MODE_IMMEDIATE_KHR ||
+                (m == VK_PRESENT_MODE_MAILBOX_KHR && mode == VK_PRESENT_MODE_FIFO_KHR))
+                mode = m;
+        }
+    }
+    extent_ = caps.currentExtent.width != 0xFFFFFFFFu ? caps.currentExtent : VkExtent2D{width_, height_};
+    width_ = extent_.width;
+    height_ = extent_.height;
+    if (width_ == 0 || height_ == 0) return true; // minimised: no swapchain until it has a size
+    can_copy_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
+    VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+    info.surface = surface_;
+    info.minImageCount = std::max(caps.minImageCount, 2u);
+    if (caps.maxImageCount) info.minImageCount = std::min(info.minImageCount + 1, caps.maxImageCount);
+    info.imageFormat = format_.format;
+    info.imageColorSpace = format_.colorSpace;
+    info.imageExtent = extent_;
+    info.imageArrayLayers = 1;
+    info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (can_copy_ ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0);
+    info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.preTransform = caps.currentTransform;
+    info.compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+    info.presentMode = mode;
+    info.clipped = VK_TRUE;
+    VkResult r = vkCreateSwapchainKHR(device_, &info, nullptr, &swapchain_);
+    if (r != VK_SUCCESS) {
+        *error = vk_error("vkCreateSwapchainKHR", r);
+        return false;
+    }
+    vkGetSwapchainImagesKHR(device_, swapchain_, &count, nullptr);
+    images_.resize(count);
+    vkGetSwapchainImagesKHR(device_, swapchain_, &count, images_.data());
+    for (VkImage image : images_) {
+        VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        view.image = image;
+        view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        view.format = format_.format;
+        view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        views_.push_back(VK_NULL_HANDLE);
+        rendered_.push_back(VK_NULL_HANDLE);
+        VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+        r = vkCreateImageView(device_, &view, nullptr, &views_.back());
+        if (r == VK_SUCCESS) r = vkCreateSemaphore(device_, &semaphore, nullptr, &rendered_.back());
+        if (r != VK_SUCCESS) {
+            *error = vk_error("creating the swapchain's views", r);
+            return false;
+        }
+    }
+    swapchain_stale_ = false;
+    return true;
+}
+
+void VkWindow::destroy_swapchain() {
+    for (VkImageView v : views_) vkDestroyImageView(device_, v, nullptr);
+    for (VkSemaphore s : rendered_) vkDestroySemaphore(device_, s, nullptr);
+    views_.clear();
+    rendered_.clear();
+    images_.clear();
+    if (swapchain_) vkDestroySwapchainKHR(device_, swapchain_, nullptr);
+    swapchain_ = VK_NULL_HANDLE;
+}
+
+// Colour (the swapchain image, or a multisampled image resolved into it) and depth; the
+// swapchain image ends ready to present.
+bool VkWindow::create_render_pass(std::string* error) {
+    const bool msaa = samples_ > 1;
+    const auto samples = static_cast<VkSampleCountFlagBits>(samples_);
+    VkAttachmentDescription attachments[3] = {};
+    attachments[0].format = format_.format;
+    attachments[0].samples = samples;
+    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    attachments[0].storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
+    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    attachments[0].finalLayout = msaa ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    attachments[1] = attachments[0];
+    attachments[1].format = kDepthFormat;
+    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    attachments[2] = attachments[0];
+    attachments[2].samples = VK_SAMPLE_COUNT_1_BIT;
+    attachments[2].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachments[2].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    attachments[2].finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    const VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    const VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    const VkAttachmentReference resolve{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription subpass{};
+    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    subpass.colorAttachmentCount = 1;
+    subpass.pColorAttachments = &color;
+    subpass.pResolveAttachments = msaa ? &resolve : nullptr;
+    subpass.pDepthStencilAttachment = &depth;
+    VkSubpassDependency dependencies[2] = {};
+    // The acquired image and the last frame's depth are free before this pass writes them.
+    dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+    dependencies[0].dstSubpass = 0;
+    dependencies[0].srcStageMask =
+        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    dependencies[0].srcAccessMask = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT |
+                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    // A screenshot's copy of the presented image comes after the pass's writes (and resolve).
+    dependencies[1].srcSubpass = 0;
+    dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+    dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    info.attachmentCount = msaa ? 3 : 2;
+    info.pAttachments = attachments;
+    info.subpassCount = 1;
+    info.pSubpasses = &subpass;
+    info.dependencyCount = 2;
+    info.pDependencies = dependencies;
+    const VkResult r = vkCreateRenderPass(device_, &info, nullptr, &render_pass_);
+    if (r != VK_SUCCESS) *error = vk_error("vkCreateRenderPass", r);
+    return r == VK_SUCCESS;
+}
+
+bool VkWindow::create_targets(std::string* error) {
+    if (!swapchain_) return true;
+    const auto samples = static_cast<VkSampleCountFlagBits>(samples_);
+    if (!create_image(kDepthFormat, samples, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
+                      &depth_, error)) {
+        return false;
+    }
+    if (samples_ > 1 && !create_image(format_.format, samples,
+                                      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT,
+                                      VK_IMAGE_ASPECT_COLOR_BIT, &msaa_color_, error)) {
+        return false;
+    }
+    for (VkImageView view : views_) {
+        const VkImageView single[2] = {view, depth_.view};
+        const VkImageView resolved[3] = {msaa_color_.view, depth_.view, view};
+        VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        fb.renderPass = render_pass_;
+        fb.attachmentCount = samples_ > 1 ? 3 : 2;
+        fb.pAttachments = samples_ > 1 ? resolved : single;
+        fb.width = extent_.width;
+        fb.height = extent_.height;
+        fb.layers = 1;
+        framebuffers_.push_back(VK_NULL_HANDLE);
+        const VkResult r = vkCreateFramebuffer(device_, &fb, nullptr, &framebuffers_.back());
+        if (r != VK_SUCCESS) {
+            *error = vk_error("vkCreateFramebuffer", r);
+            return false;
+        }
+    }
+    return true;
+}
+
+void VkWindow::destroy_targets() {
+    for (VkFramebuffer fb : framebuffers_) vkDestroyFramebuffer(device_, fb, nullptr);
+    framebuffers_.clear();
+    destroy_image(&msaa_color_);
+    destroy_image(&depth_);
+}
+
+// The headless hosts' ground (samples/headless/shaders/ground.*) in this render pass.
+bool VkWindow::create_ground_pipeline(std::string* error) {
+    VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+    const uint32_t* code[2] = {grass_host_spirv::ground_vert, grass_host_spirv::ground_frag};
+    const size_t code_size[2] = {grass_host_spirv::ground_vert_size, grass_host_spirv::ground_frag_size};
+    VkResult r = VK_SUCCESS;
+    for (int i = 0; i < 2 && r == VK_SUCCESS; ++i) {
+        VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+        info.codeSize = code_size[i];
+        info.pCode = code[i];
+        r = vkCreateShaderModule(device_, &info, nullptr, &modules[i]);
+    }
+    VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
+                                                 {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = modules[0];
+    stages[0].pName = "main";
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = modules[1];
+    stages[1].pName = "main";
+    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    raster.cullMode = VK_CULL_MODE_NONE;
+    raster.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    multisample.rasterizationSamples = static_cast<VkSampleCountFlagBits>(samples_);
+    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    depth.depthTestEnable = VK_TRUE;
+    depth.depthWriteEnable = VK_TRUE;
+    depth.depthCompareOp = VK_COMPARE_OP_LESS;
+    VkPipelineColorBlendAttachmentState attachment{};
+    attachment.colorWriteMask = 0xf;
+    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    blend.attachmentCount = 1;
+    blend.pAttachments = &attachment;
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dynamic.dynamicStateCount = 2;
+    dynamic.pDynamicStates = dynamic_states;
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.stageCount = 2;
+    info.pStages = stages;
+    info.pVertexInputState = &vertex_input;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = ground_layout_;
+    info.renderPass = render_pass_;
+    if (r == VK_SUCCESS) r = vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &ground_pipeline_);
+    for (VkShaderModule m : modules) {
+        if (m) vkDestroyShaderModule(device_, m, nullptr);
+    }
+    if (r != VK_SUCCESS) *error = vk_error("creating the ground's pipeline", r);
+    return r == VK_SUCCESS;
+}
+
+void check_overlay_result(VkResult r) {
+    if (r != VK_SUCCESS)
+        std::fprintf(stderr, "grass-viewer: the overlay's Vulkan call failed with VkResult %d\n", int(r));
+}
+
+// ImGui's Vulkan backend, in this render pass, with its font uploaded.
+bool VkWindow::start_overlay(std::string* error) {
+    if (!overlay_glfw_) overlay_glfw_ = ImGui_ImplGlfw_InitForVulkan(window_, true);
+    ImGui_ImplVulkan_InitInfo info{};
+    info.Instance = instance_;
+    info.PhysicalDevice = physical_;
+    info.Device = device_;
+    info.QueueFamily = family_;
+    info.Queue = queue_;
+    info.DescriptorPool = descriptor_pool_;
+    info.MinImageCount = 2;
+    info.ImageCount = std::max<uint32_t>(uint32_t(images_.size()), kFramesInFlight);
+    info.MSAASamples = static_cast<VkSampleCountFlagBits>(samples_);
+    info.CheckVkResultFn = check_overlay_result;
+    overlay_vk_ = overlay_glfw_ && ImGui_ImplVulkan_Init(&info, render_pass_);
+    if (!overlay_vk_) {
+        *error = "the overlay (ImGui's GLFW and Vulkan backends) cannot start";
+        return false;
+    }
+    if (!submit_once([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); }, error)) return false;
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+    return true;
+}
+
+void VkWindow::stop_overlay() {
+    if (overlay_vk_) ImGui_ImplVulkan_Shutdown();
+    overlay_vk_ = false;
+}
+
+bool VkWindow::submit_once(void (*record)(VkCommandBuffer), std::string* error) {
+    VkCommandBuffer cmd = frames_[0].cmd;
+    vkWaitForFences(device_, 1, &frames_[0].done, VK_TRUE, UINT64_MAX);
+    vkResetCommandBuffer(cmd, 0);
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VkResult r = vkBeginCommandBuffer(cmd, &begin);
+    if (r == VK_SUCCESS) {
+        record(cmd);
+        r = vkEndCommandBuffer(cmd);
+    }
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &cmd;
+    if (r == VK_SUCCESS) r = vkQueueSubmit(queue_, 1, &submit, VK_NULL_HANDLE);
+    if (r == VK_SUCCESS) r = vkQueueWaitIdle(queue_);
+    if (r != VK_SUCCESS) *error = vk_error("a one-time submission", r);
+    return r == VK_SUCCESS;
+}
+
+bool VkWindow::memory_type(uint32_t bits, VkMemoryPropertyFlags flags, uint32_t* out) const {
+    for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+        if ((bits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & flags) == flags) {
+            *out = i;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool VkWindow::create_image(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
+                            VkImageAspectFlags aspect, Image* out, std::string* error) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {extent_.width, extent_.height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = samples;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    VkResult r = vkCreateImage(device_, &info, nullptr, &out->image);
+    VkMemoryRequirements req{};
+    if (r == VK_SUCCESS) vkGetImageMemoryRequirements(device_, out->image, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    if (r == VK_SUCCESS &&
+        !memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &alloc.memoryTypeIndex))
+        r = VK_ERROR_FEATURE_NOT_PRESENT;
+    if (r == VK_SUCCESS) r = vkAllocateMemory(device_, &alloc, nullptr, &out->memory);
+    if (r == VK_SUCCESS) r = vkBindImageMemory(device_, out->image, out->memory, 0);
+    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    view.image = out->image;
+    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.format = format;
+    view.subresourceRange = {aspect, 0, 1, 0, 1};
+    if (r == VK_SUCCESS) r = vkCreateImageView(device_, &view, nullptr, &out->view);
+    if (r != VK_SUCCESS) *error = vk_error("creating a render target", r);
+    return r == VK_SUCCESS;
+}
+
+void VkWindow::destroy_image(Image* image) {
+    if (image->view) vkDestroyImageView(device_, image->view, nullptr);
+    if (image->image) vkDestroyImage(device_, image->image, nullptr);
+    if (image->memory) vkFreeMemory(device_, image->memory, nullptr);
+    *image = Image{};
+}
+
+// A host-visible, coherent, mapped buffer.
+bool VkWindow::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, Buffer* out, std::string* error) {
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    VkResult r = vkCreateBuffer(device_, &info, nullptr, &out->buffer);
+    VkMemoryRequirements req{};
+    if (r == VK_SUCCESS) vkGetBufferMemoryRequirements(device_, out->buffer, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    if (r == VK_SUCCESS &&
+        !memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                     &alloc.memoryTypeIndex))
+        r = VK_ERROR_FEATURE_NOT_PRESENT;
+    if (r == VK_SUCCESS) r = vkAllocateMemory(device_, &alloc, nullptr, &out->memory);
+    if (r == VK_SUCCESS) r = vkBindBufferMemory(device_, out->buffer, out->memory, 0);
+    if (r == VK_SUCCESS) r = vkMapMemory(device_, out->memory, 0, VK_WHOLE_SIZE, 0, &out->mapped);
+    out->size = size;
+    if (r != VK_SUCCESS) *error = vk_error("creating a host-visible buffer", r);
+    return r == VK_SUCCESS;
+}
+
+void VkWindow::destroy_buffer(Buffer* buffer) {
+    if (buffer->buffer) vkDestroyBuffer(device_, buffer->buffer, nullptr);
+    if (buffer->memory) vkFreeMemory(device_, buffer->memory, nullptr);
+    *buffer = Buffer{};
+}
+
+VkWindow::~VkWindow() {
+    if (device_) {
+        vkDeviceWaitIdle(device_);
+        stop_overlay();
+        if (overlay_glfw_) ImGui_ImplGlfw_Shutdown();
+        destroy_targets();
+        destroy_swapchain();
+        destroy_buffer(&readback_);
+        for (Frame& f : frames_) {
+            destroy_buffer(&f.ground);
+            if (f.done) vkDestroyFence(device_, f.done, nullptr);
+            if (f.acquired) vkDestroySemaphore(device_, f.acquired, nullptr);
+        }
+        if (ground_pipeline_) vkDestroyPipeline(device_, ground_pipeline_, nullptr);
+        if (ground_layout_) vkDestroyPipelineLayout(device_, ground_layout_, nullptr);
+        if (descriptor_pool_) vkDestroyDescriptorPool(device_, descriptor_pool_, nullptr);
+        if (ground_set_layout_) vkDestroyDescriptorSetLayout(device_, ground_set_layout_, nullptr);
+        if (render_pass_) vkDestroyRenderPass(device_, render_pass_, nullptr);
+        if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);
+        vkDestroyDevice(device_, nullptr);
+    }
+    if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
+    if (messenger_) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+        if (destroy) destroy(instance_, messenger_, nullptr);
+    }
+    if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+// ---- The grass context and the sample count -------------------------------------------------
+
+grass_result VkWindow::create_context(const grass_context_desc& desc, grass_context** out) {
+    grass_vk_desc vk = grass_default_vk_desc();
+    vk.get_instance_proc_addr = (grass_vk_get_instance_proc_addr_fn)vkGetInstanceProcAddr;
+    vk.instance = instance_;
+    vk.physical_device = physical_;
+    vk.device = device_;
+    vk.queue_family = family_;
+    vk.render_pass = reinterpret_cast<uint64_t>(render_pass_);
+    vk.subpass = 0;
+    vk.color_format = format_.format;
+    vk.depth_format = kDepthFormat;
+    vk.sample_count = samples_;
+    vk.frames_in_flight = kFramesInFlight;
+    return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
+}
+
+// A new render pass for the new count: the pipelines made for the old one (the ground's, the
+// overlay's, grass's) are made again.
+bool VkWindow::set_samples(uint32_t samples, bool* contexts_stale, std::string* error) {
+    const VkSampleCountFlags supported =
+        properties_.limits.framebufferColorSampleCounts & properties_.limits.framebufferDepthSampleCounts;
+    if (!(supported & samples)) {
+        *error = "the device cannot render with " + std::to_string(samples) + " samples";
+        return false;
+    }
+    vkDeviceWaitIdle(device_);
+    stop_overlay();
+    destroy_targets();
+    vkDestroyPipeline(device_, ground_pipeline_, nullptr);
+    vkDestroyRenderPass(device_, render_pass_, nullptr);
+    ground_pipeline_ = VK_NULL_HANDLE;
+    render_pass_ = VK_NULL_HANDLE;
+    samples_ = samples;
+    *contexts_stale = true;
+    return create_render_pass(error) && create_targets(error) && create_ground_pipeline(error) && start_overlay(error);
+}
+
+// ---- A frame -----------------------------------------------------------------------------
+
+void VkWindow::record_copy(VkCommandBuffer cmd, uint32_t image_index) {
+    VkImageMemoryBarrier to_copy{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    to_copy.srcAccessMask = 0; // made available by the pass's dependency to VK_SUBPASS_EXTERNAL
+    to_copy.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    to_copy.oldLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    to_copy.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    to_copy.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    to_copy.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    to_copy.image = images_[image_index];
+    to_copy.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,
+                         1, &to_copy);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {extent_.width, extent_.height, 1};
+    vkCmdCopyImageToBuffer(cmd, images_[image_index], VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1,
+                           &region);
+    VkImageMemoryBarrier to_present = to_copy;
+    to_present.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    to_present.dstAccessMask = 0;
+    to_present.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    to_present.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    VkBufferMemoryBarrier to_host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    to_host.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    to_host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    to_host.buffer = readback_.buffer;
+    to_host.size = VK_WHOLE_SIZE;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &to_host,
+                         1, &to_present);
+}
+
+// The copied swapchain image as RGBA8 (swizzled from BGRA), top row first.
+void VkWindow::read_copy(grass_host::Image* out) const {
+    out->width = extent_.width;
+    out->height = extent_.height;
+    out->rgba.resize(size_t(extent_.width) * extent_.height * 4);
+    const auto* src = static_cast<const uint8_t*>(readback_.mapped);
+    const bool bgra = format_.format == VK_FORMAT_B8G8R8A8_SRGB;
+    for (size_t i = 0; i < out->rgba.size(); i += 4) {
+        out->rgba[i + 0] = src[i + (bgra ? 2 : 0)];
+        out->rgba[i + 1] = src[i + 1];
+        out->rgba[i + 2] = src[i + (bgra ? 0 : 2)];
+        out->rgba[i + 3] = 255; // opaque, as presented
+    }
+}
+
+grass_result VkWindow::draw_frame(grass_context* ctx, const grass_view_desc& view, ImDrawData* overlay,
+                                  grass_host::Image* screenshot, std::string* error) {
+    auto host_failure = [&](const char* call, VkResult r) {
+        *error = vk_error(call, r);
+        return GRASS_ERROR_BACKEND;
+    };
+    Frame& f = frames_[frame_];
+    // The GPU has finished this frame's previous use (frames_in_flight frames ago), as grass
+    // requires before grass_begin_frame.
+    vkWaitForFences(device_, 1, &f.done, VK_TRUE, UINT64_MAX);
+    uint32_t image = 0;
+    for (int attempt = 0;; ++attempt) {
+        if (width_ != extent_.width || height_ != extent_.height || swapchain_stale_ || !swapchain_) {
+            vkDeviceWaitIdle(device_);
+            destroy_targets();
+            destroy_swapchain();
+            if (!create_swapchain(error) || !create_targets(error)) return GRASS_ERROR_BACKEND;
+            if (swapchain_) ImGui_ImplVulkan_SetMinImageCount(2);
+        }
+        if (!swapchain_) return GRASS_SUCCESS; // minimised
+        const VkResult r = vkAcquireNextImageKHR(device_, swapchain_, UINT64_MAX, f.acquired, VK_NULL_HANDLE, &image);
+        if (r == VK_SUCCESS || r == VK_SUBOPTIMAL_KHR) break;
+        if (r != VK_ERROR_OUT_OF_DATE_KHR || attempt > 2) return host_failure("vkAcquireNextImageKHR", r);
+        swapchain_stale_ = true;
+    }
+    if (screenshot && !can_copy_) {
+        *error = "the swapchain's images cannot be copied: no screenshot";
+        screenshot = nullptr;
+    }
+    const VkDeviceSize bytes = VkDeviceSize(extent_.width) * extent_.height * 4;
+    if (screenshot && readback_.size < bytes) {
+        vkDeviceWaitIdle(device_);
+        destroy_buffer(&readback_);
+        if (!create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, &readback_, error)) return GRASS_ERROR_BACKEND;
+    }
+    vkResetFences(device_, 1, &f.done);
+    vkResetCommandBuffer(f.cmd, 0);
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(f.cmd, &begin);
+
+    // grass plans, records its uploads outside the pass and its draws inside, after the ground.
+    grass_result result = grass_begin_frame(ctx, &view);
+    const bool begun = result == GRASS_SUCCESS;
+    if (begun) result = grass_vk_prepare_frame(ctx, f.cmd);
+    VkClearValue clears[2] = {};
+    for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = desc_.scene.clear_color[c];
+    clears[1].depthStencil = {1.0f, 0};
+    VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    pass.renderPass = render_pass_;
+    pass.framebuffer = framebuffers_[image];
+    pass.renderArea = {{0, 0}, extent_};
+    pass.clearValueCount = 2;
+    pass.pClearValues = clears;
+    vkCmdBeginRenderPass(f.cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
+    if (desc_.scene.ground) {
+        const grass_host::GroundUniforms u = grass_host::make_ground_uniforms(view, desc_.scene);
+        std::memcpy(f.ground.mapped, &u, sizeof(u));
+        const VkViewport viewport{0.0f, 0.0f, float(extent_.width), float(extent_.height), 0.0f, 1.0f};
+        const VkRect2D scissor{{0, 0}, extent_};
+        vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_pipeline_);
+        vkCmdSetViewport(f.cmd, 0, 1, &viewport);
+        vkCmdSetScissor(f.cmd, 0, 1, &scissor);
+        vkCmdBindDescriptorSets(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_layout_, 0, 1, &f.ground_set, 0,
+                                nullptr);
+        vkCmdDraw(f.cmd, 6, 1, 0, 0);
+    }
+    if (result == GRASS_SUCCESS) {
+        grass_vk_record_desc record = grass_default_vk_record_desc();
+        record.command_buffer = f.cmd;
+        result = grass_vk_record(ctx, &record);
+    }
+    if (overlay) ImGui_ImplVulkan_RenderDrawData(overlay, f.cmd);
+    vkCmdEndRenderPass(f.cmd);
+    if (screenshot) record_copy(f.cmd, image);
+    VkResult r = vkEndCommandBuffer(f.cmd);
+
+    const VkPipelineStageFlags wait_stage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.waitSemaphoreCount = 1;
+    submit.pWaitSemaphores = &f.acquired;
+    submit.pWaitDstStageMask = &wait_stage;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &f.cmd;
+    submit.signalSemaphoreCount = 1;
+    submit.pSignalSemaphores = &rendered_[image];
+    if (r == VK_SUCCESS) r = vkQueueSubmit(queue_, 1, &submit, f.done);
+    if (begun) {
+        const grass_result end = grass_end_frame(ctx);
+        if (result == GRASS_SUCCESS) result = end;
+    }
+    if (r != VK_SUCCESS) return host_failure("vkQueueSubmit", r);
+    if (screenshot) {
+        vkWaitForFences(device_, 1, &f.done, VK_TRUE, UINT64_MAX);
+        read_copy(screenshot);
+    }
+    VkPresentInfoKHR present{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+    present.waitSemaphoreCount = 1;
+    present.pWaitSemaphores = &rendered_[image];
+    present.swapchainCount = 1;
+    present.pSwapchains = &swapchain_;
+    present.pImageIndices = &image;
+    r = vkQueuePresentKHR(queue_, &present);
+    if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) {
+        swapchain_stale_ = true;
+    } else if (r != VK_SUCCESS) {
+        return host_failure("vkQueuePresentKHR", r);
+    }
+    frame_ = (frame_ + 1) % kFramesInFlight;
+    if (result != GRASS_SUCCESS) *error = grass_get_last_error(ctx);
+    return result;
+}
+
+} // namespace
+
+std::unique_ptr<Window> create_vk_window(const WindowDesc& desc, std::string* error) {
+    auto window = std::make_unique<VkWindow>(desc);
+    if (!window->init(error)) return nullptr;
+    return window;
+}
+
+} // namespace grass_viewer
