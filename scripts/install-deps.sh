@@ -20,6 +20,7 @@ packages=(
   qt6-base-dev qt6-base-dev-tools qt6-declarative-dev qt6-qpa-plugins
   qml6-module-qtquick qml6-module-qtquick-window qml6-module-qtqml-workerscript
   qml6-module-quick3d qml6-module-quick3d-helpers
+  libopenscenegraph-dev openscenegraph                               # the OSG adapter (integration/osg): its library, osgconv
 )
 
 missing=()
