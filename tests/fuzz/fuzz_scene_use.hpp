@@ -64,7 +64,7 @@ inline void use_scene(const grass_sample::Scene& scene) {
                 // scene (the headless host builds the real view from a GPU target).
                 grass_view_desc v = grass_default_view_desc();
                 std::memcpy(v.camera_position, scene.eye, sizeof(v.camera_position));
-                const float view[16] = {1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1};
+                const float view[16] = {1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1};
                 const float proj[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.0002f, -1, 0, 0, -0.20002f, 0};
                 std::memcpy(v.view, view, sizeof(view));
                 std::memcpy(v.projection, proj, sizeof(proj));

@@ -139,7 +139,9 @@ int allocation_scenario(grass_host::Host& host, int fail_at) {
     grass_destroy_context(ctx);
     EXPECT_EQ(vi::live().total(), 0) << "allocation " << fail_at << ": left behind: " << vi::live().describe();
     EXPECT_EQ(host.validation_messages(), 0u) << host.validation_log();
-    if (fail_at > 0) EXPECT_EQ(vi::failures_injected(), injected_before + 1) << "allocation " << fail_at;
+    if (fail_at > 0) {
+        EXPECT_EQ(vi::failures_injected(), injected_before + 1) << "allocation " << fail_at;
+    }
     return static_cast<int>(allocations);
 }
 

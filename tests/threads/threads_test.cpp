@@ -28,9 +28,9 @@ struct CpuResult {
 grass_view_desc top_view(double x) {
     grass_view_desc v = grass_default_view_desc();
     v.camera_position[0] = x;
-    v.camera_position[1] = 6.0;
+    v.camera_position[1] = 3.0; // within the geometry tier (20 cells)
     v.camera_position[2] = 4.0;
-    const float view[16] = {1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1}; // looking straight down
+    const float view[16] = {1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1}; // looking straight down
     const float proj[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.0002f, -1, 0, 0, -0.20002f, 0};
     std::memcpy(v.view, view, sizeof(view));
     std::memcpy(v.projection, proj, sizeof(proj));
