@@ -104,17 +104,25 @@ void put_file(const std::string& path, const std::vector<char>& bytes) {
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
+// A fresh cache directory (*dir) and the first picture drawn with it, which must show grass:
+// comparisons of all-sky pictures prove nothing.
+grass_host::Image first_cached_picture(grass_backend backend, std::string* dir) {
+    char pattern[] = "/tmp/grass-cache-test-XXXXXX";
+    EXPECT_NE(mkdtemp(pattern), nullptr);
+    *dir = pattern;
+    const auto image = render_with_cache(backend, *dir);
+    grass_host::TargetDesc t;
+    t.width = t.height = 96;
+    expect_grass(image, t, 0.1, "the first picture");
+    return image;
+}
+
 // Damaged files (truncated, empty, a flipped byte, another patch's file under the name) are
 // baked again with one warning each, naming the file and the damage, and rewritten whole:
 // the picture does not change and the next context reads every file without a word.
 TEST_P(SliceCacheTest, DamagedFilesAreBakedAgainWithAWarningAndRewritten) {
-    char pattern[] = "/tmp/grass-cache-test-XXXXXX";
-    ASSERT_NE(mkdtemp(pattern), nullptr);
-    const std::string dir = pattern;
-    const auto first = render_with_cache(GetParam(), dir);
-    grass_host::TargetDesc t;
-    t.width = t.height = 96;
-    expect_grass(first, t, 0.1, "the first picture"); // comparisons of all-sky pictures prove nothing
+    std::string dir;
+    const auto first = first_cached_picture(GetParam(), &dir);
     const std::vector<std::string> files = cache_files(dir);
     ASSERT_EQ(files.size(), 4u);
     std::vector<std::vector<char>> good;
@@ -145,13 +153,8 @@ TEST_P(SliceCacheTest, DamagedFilesAreBakedAgainWithAWarningAndRewritten) {
 // A cache directory that cannot be written (missing, or a file) costs one warning per
 // context, not one per slice set, and the picture is the same as without a cache.
 TEST_P(SliceCacheTest, AnUnwritableDirectoryWarnsOnceAndDrawsTheSame) {
-    char pattern[] = "/tmp/grass-cache-test-XXXXXX";
-    ASSERT_NE(mkdtemp(pattern), nullptr);
-    const std::string dir = pattern;
-    const auto cached = render_with_cache(GetParam(), dir);
-    grass_host::TargetDesc t;
-    t.width = t.height = 96;
-    expect_grass(cached, t, 0.1, "the cached picture");
+    std::string dir;
+    const auto cached = first_cached_picture(GetParam(), &dir);
     put_file(dir + "/a-file", {'x'});
     for (const std::string& bad : {dir + "/missing", dir + "/a-file"}) {
         CacheWarnings w;
