@@ -1,6 +1,6 @@
 // The soak: a long run of frames the way a game drives grass. A camera circles a field
 // (one lap every --period frames), a design map is painted every frame, a second field is
-// created and destroyed every 100 frames. At the same point of every lap after the first,
+// created every 100 frames and destroyed 50 frames later. At the same point of every lap after the first,
 // everything grass holds must be what it held at the end of the first lap: host memory and
 // allocations (grass_get_memory_stats), GPU memory, the process's resident memory (within
 // --rss-slack-kb), GL object names / Vulkan objects; and the GL debug output (KHR_debug) or
@@ -155,13 +155,11 @@ int main(int argc, char** argv) {
         if (grass_update_map(ctx, density, static_cast<uint32_t>((frame * 3) % 48), static_cast<uint32_t>(frame % 64),
                              &region) != GRASS_SUCCESS)
             return fail("grass_update_map");
-        if (frame % 100 == 0) {
-            if (frame % 200 == 0) {
-                if (grass_create_field(ctx, &vd, &visitor) != GRASS_SUCCESS) return fail("grass_create_field");
-            } else if (grass_destroy_field(ctx, visitor) != GRASS_SUCCESS) {
-                return fail("grass_destroy_field");
-            }
+        // The visitor field is made every 100 frames and destroyed 50 frames later.
+        if (frame % 100 == 0 && grass_create_field(ctx, &vd, &visitor) != GRASS_SUCCESS) {
+            return fail("grass_create_field");
         }
+        if (frame % 100 == 50 && grass_destroy_field(ctx, visitor) != GRASS_SUCCESS) return fail("grass_destroy_field");
         const double angle = 6.283185307179586 * (frame % o.period) / o.period;
         const double eye[3] = {centre + 9.0 * std::cos(angle), 1.8, centre + 9.0 * std::sin(angle)};
         const double look[3] = {centre, 0.0, centre};
