@@ -23,3 +23,15 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
+
+# Threads under ThreadSanitizer: only the thread tests (four contexts on four threads,
+# CPU-only and GL), in a build of the library without the Vulkan backend they do not use.
+cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_TESTS=ON -DGRASS_TSAN=ON \
+  -DGRASS_BUILD_SAMPLES=OFF -DGRASS_BUILD_VULKAN=OFF >/dev/null
+cmake --build build-tsan -j "$jobs" --target grass_thread_tests
+TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sanitizer/tsan.supp" \
+  ctest --test-dir build-tsan -L threads --output-on-failure
+
+# Fuzzing: every libFuzzer target of tests/fuzz for 20 s over its corpus (clang, ASan +
+# UBSan; CPU-only contexts, so no backend is built). The long runs: docs/testing.md.
+FUZZ_BUILD_DIR=build-fuzz-short FUZZ_CMAKE_ARGS="-DGRASS_BUILD_GL=OFF -DGRASS_BUILD_VULKAN=OFF" bash scripts/fuzz.sh 20

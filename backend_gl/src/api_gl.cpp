@@ -65,7 +65,7 @@ GRASS_API grass_result grass_gl_render(grass_context* context) {
             return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
                                  "grass_gl_render: no frame has begun; call grass_begin_frame first");
         }
-        return static_cast<grass::GlBackend*>(context->backend)->render("grass_gl_render");
+        return static_cast<grass::GlBackend*>(context->backend)->render_checked("grass_gl_render");
     });
 }
 

@@ -101,6 +101,9 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     if (uniform_alignment_ < 1) uniform_alignment_ = 256;
     gl_.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture_size_);
     gl_.GetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_array_layers_);
+    GLint flags = 0;
+    gl_.GetIntegerv(GL_CONTEXT_FLAGS, &flags);
+    debug_context_ = (flags & GL_CONTEXT_FLAG_DEBUG_BIT) != 0;
 
     // The variants of fields without design maps; the others come with their fields.
     grass_result result = GRASS_SUCCESS;
@@ -200,6 +203,20 @@ grass_result GlBackend::check_errors(const char* function, const char* what) {
                           gl_error_name(first), first, what);
     }
     return GRASS_SUCCESS;
+}
+
+grass_result GlBackend::render_checked(const char* function) {
+    if (!debug_context_) return render(function); // glGetError stalls: only where the host asked to debug
+    GLenum pending = gl_.GetError();
+    if (pending != GL_NO_ERROR) {
+        ctx_->warn(GRASS_MSG_BACKEND_CALL_FAILED,
+                   "%s: the host's GL context had %s (0x%04X) pending before the call; grass cleared it", function,
+                   gl_error_name(pending), pending);
+        for (int i = 0; i < 32 && pending != GL_NO_ERROR; ++i) pending = gl_.GetError();
+    }
+    const grass_result result = render(function);
+    return result == GRASS_SUCCESS ? check_errors(function, "drawing (a debug context is checked after each call)")
+                                   : result;
 }
 
 grass_result GlBackend::upload_patch(uint32_t slot, const PatchData& patch) {

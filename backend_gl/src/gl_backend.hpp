@@ -42,8 +42,11 @@ public:
     uint64_t gpu_bytes() const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
 
-    // Draws the context's plan into the bound draw framebuffer (gl_draw.cpp).
-    grass_result render(const char* function);
+    // Draws the context's plan into the bound draw framebuffer (gl_draw.cpp). In a debug
+    // context (GL_CONTEXT_FLAG_DEBUG_BIT) the GL error flags are checked after the draws:
+    // an error there fails the call with GRASS_ERROR_BACKEND naming it (errors the host left
+    // pending before the call are cleared first, with a warning, and not counted as grass's).
+    grass_result render_checked(const char* function);
 
 private:
     struct PatchGpu {
@@ -83,6 +86,7 @@ private:
     // texture, at unit 0; the others where the field has them. Leaves unit 0 active.
     void bind_field_maps(const FieldGpu& field) const;
     grass_result check_errors(const char* function, const char* what);
+    grass_result render(const char* function);
     void delete_slices(SliceGpu& slices);
     const SliceGpu* find_slices(uint32_t patch_slot, uint32_t slices_per_axis) const;
     // gl_draw.cpp
@@ -119,6 +123,7 @@ private:
     GLint uniform_alignment_ = 256;
     GLint max_texture_size_ = 0;
     GLint max_array_layers_ = 0;
+    bool debug_context_ = false; // GL_CONTEXT_FLAG_DEBUG_BIT: glGetError after every render
     GlStreamBuffer instances_;
     GlStreamBuffer uniforms_;
     Vector<unsigned char> uniform_staging_;

@@ -48,6 +48,12 @@ grass_result report_failure(grass_context* context, const char* function, const 
         return context->fail(GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: %s failed with %s (%s)", function,
                              failure.call ? failure.call : "a Vulkan call", name, what);
     }
+    if (failure.result == VK_ERROR_DEVICE_LOST) {
+        return context->fail(GRASS_ERROR_BACKEND, GRASS_MSG_DEVICE_LOST,
+                             "%s: %s failed with VK_ERROR_DEVICE_LOST (%s): the device is lost; destroy this context "
+                             "and make a new one on a new device",
+                             function, failure.call ? failure.call : "a Vulkan call", what);
+    }
     return context->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED, "%s: %s failed with %s (%s)", function,
                          failure.call ? failure.call : "a Vulkan call", name, what);
 }

@@ -28,7 +28,9 @@ inline bool vk_ok(VkResult result, const char* call, VkFailure* failure) {
 const char* vk_result_name(VkResult result, char (&scratch)[32]);
 
 // Logs "<function>: <call> failed with <VkResult> (<what>)" and returns
-// GRASS_ERROR_OUT_OF_MEMORY for the out-of-memory results, GRASS_ERROR_BACKEND otherwise.
+// GRASS_ERROR_OUT_OF_MEMORY for the out-of-memory results (GRASS_MSG_OUT_OF_MEMORY),
+// GRASS_ERROR_BACKEND otherwise: GRASS_MSG_DEVICE_LOST for VK_ERROR_DEVICE_LOST,
+// GRASS_MSG_BACKEND_CALL_FAILED for the rest.
 grass_result report_failure(grass_context* context, const char* function, const char* what, const VkFailure& failure);
 
 } // namespace grass::vk

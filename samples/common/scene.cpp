@@ -74,11 +74,24 @@ void check_keys(const json& j, const char* where, std::initializer_list<const ch
     }
 }
 
+// A PNG whose header claims more texels than a design map may have (grass_map_desc: at most
+// 16384 a side) is refused before its pixels are allocated: a 60-byte file could otherwise
+// ask for gigabytes (found by fuzz_png_map).
+void check_png_size(png_image* png, const std::string& path) {
+    constexpr png_uint_32 kMaxSide = 16384;
+    if (png->width > kMaxSide || png->height > kMaxSide) {
+        const std::string size = std::to_string(png->width) + " x " + std::to_string(png->height);
+        png_image_free(png);
+        throw std::runtime_error(path + " is " + size + " pixels; a design map is at most 16384 x 16384");
+    }
+}
+
 void load_density_png(const std::string& path, Scene* s) {
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
     if (!png_image_begin_read_from_file(&png, path.c_str()))
         throw std::runtime_error("cannot read " + path + ": " + png.message);
+    check_png_size(&png, path);
     png.format = PNG_FORMAT_GRAY;
     s->density_texels.resize(PNG_IMAGE_SIZE(png));
     if (!png_image_finish_read(&png, nullptr, s->density_texels.data(), 0, nullptr)) {
@@ -96,6 +109,7 @@ Scene::MapImage load_map_png(const std::string& path, bool color) {
     png.version = PNG_IMAGE_VERSION;
     if (!png_image_begin_read_from_file(&png, path.c_str()))
         throw std::runtime_error("cannot read " + path + ": " + png.message);
+    check_png_size(&png, path);
     Scene::MapImage m;
     const bool sixteen = (png.format & PNG_FORMAT_FLAG_LINEAR) != 0 && !color;
     png.format = color ? PNG_FORMAT_RGBA : (sixteen ? PNG_FORMAT_LINEAR_Y : PNG_FORMAT_GRAY);

@@ -44,6 +44,13 @@ struct TargetDesc {
     // The host's own scene: meshes drawn before grass, Lambert + ambient under the view's
     // sun, into the colour and depth grass draws over (see host_mesh.hpp).
     std::vector<HostMesh> meshes;
+    // Vulkan: the vkGetInstanceProcAddr the host hands grass (grass_vk_desc's
+    // get_instance_proc_addr); nullptr: the loader's own. Tests pass a wrapper that counts
+    // handles or makes a call fail, for grass's dispatch table only.
+    void (*(*vk_get_instance_proc_addr)(void* instance, const char* name))(void) = nullptr;
+    // GL: given each GL entry point grass asks the host's loader for (its name and the real
+    // one), returns the one grass gets; nullptr: the real ones. For fault-injection tests.
+    void (*(*gl_proc_filter)(const char* name, void (*real)(void)))(void) = nullptr;
 };
 
 // Linear to sRGB-encoded, 0..1 (clamped).

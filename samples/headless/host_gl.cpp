@@ -342,7 +342,9 @@ grass_gl_proc GlHost::proc(const char* name) const {
 void* GlHost::gl_proc_address(const char* name) const { return reinterpret_cast<void*>(proc(name)); }
 
 grass_gl_proc GlHost::load_proc(void* user_data, const char* name) {
-    return static_cast<const GlHost*>(user_data)->proc(name);
+    const auto* host = static_cast<const GlHost*>(user_data);
+    const grass_gl_proc real = host->proc(name);
+    return host->target_.gl_proc_filter ? host->target_.gl_proc_filter(name, real) : real;
 }
 
 bool GlHost::load_functions(std::string* error) {

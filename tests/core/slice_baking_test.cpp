@@ -21,6 +21,7 @@
 
 namespace {
 
+using grass::CacheMiss;
 using grass::SliceSet;
 
 class SliceBakingTest : public CoreTest {
@@ -367,34 +368,36 @@ TEST_F(SliceBakingTest, CacheRoundTripsAndRejectsDamagedFiles) {
 
     SliceSet loaded(host());
     const auto start = std::chrono::steady_clock::now();
-    ASSERT_TRUE(grass::load_baked(dir.c_str(), key, host(), &loaded));
+    ASSERT_EQ(grass::load_baked(dir.c_str(), key, host(), &loaded), CacheMiss::none);
     std::printf("[ cache    ] load of %zu bytes: %.2f ms\n", good.size(),
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     EXPECT_TRUE(same_bytes(v, loaded));
 
-    auto expect_rejected = [&](const std::vector<uint8_t>& bytes, const char* what) {
+    // Each damage is rejected with its own reason (the warning a context logs names it).
+    auto expect_rejected = [&](const std::vector<uint8_t>& bytes, const char* what, CacheMiss why) {
         write_file(path, bytes);
         SliceSet s(host());
-        EXPECT_FALSE(grass::load_baked(dir.c_str(), key, host(), &s)) << what;
+        EXPECT_EQ(grass::load_baked(dir.c_str(), key, host(), &s), why) << what;
         EXPECT_TRUE(s.color.empty() && s.normal.empty() && s.threshold.empty()) << what;
     };
     std::vector<uint8_t> bad = good;
     bad[72 + good.size() / 2] ^= 0x10;
-    expect_rejected(bad, "a corrupted data byte");
+    expect_rejected(bad, "a corrupted data byte", CacheMiss::content_hash);
     bad = good;
     bad[good.size() - 1] ^= 0x01;
-    expect_rejected(bad, "a corrupted threshold byte");
+    expect_rejected(bad, "a corrupted threshold byte", CacheMiss::content_hash);
     for (size_t cut : {size_t(0), size_t(10), size_t(63), size_t(64), size_t(72), good.size() / 2, good.size() - 1}) {
-        expect_rejected(std::vector<uint8_t>(good.begin(), good.begin() + long(cut)), "a truncated file");
+        expect_rejected(std::vector<uint8_t>(good.begin(), good.begin() + long(cut)), "a truncated file",
+                        CacheMiss::truncated);
     }
     bad = good;
     bad.push_back(0);
-    expect_rejected(bad, "trailing bytes");
+    expect_rejected(bad, "trailing bytes", CacheMiss::truncated);
     for (size_t field : {size_t(0), size_t(8), size_t(16), size_t(24), size_t(28), size_t(32), size_t(36), size_t(40),
                          size_t(44), size_t(48), size_t(56), size_t(64)}) {
         bad = good;
         bad[field + 1] ^= 0x40; // magic, version, key, sizes, height, texel count, hashes
-        expect_rejected(bad, "a corrupted header field");
+        expect_rejected(bad, "a corrupted header field", CacheMiss::corrupt); // the header hash no longer matches
     }
     // Huge sizes in an otherwise consistent header (header hash recomputed) must not be
     // trusted: the file is too short for them, and that is checked before allocating.
@@ -405,9 +408,14 @@ TEST_F(SliceBakingTest, CacheRoundTripsAndRejectsDamagedFiles) {
     put(32, 16384, 4);
     put(36, 16384, 4);
     put(40, 15, 4);
-    put(48, 4 * grass::slice_layer_texels(16384, 16384, 15), 8);
+    put(48, uint64_t(v.layers) * grass::slice_layer_texels(16384, 16384, 15), 8);
     put(64, grass::fnv1a64(bad.data(), 64, grass::kFnvOffset), 8);
-    expect_rejected(bad, "huge sizes");
+    expect_rejected(bad, "huge sizes", CacheMiss::truncated);
+    // Another format version (an older grass), its header hash consistent.
+    bad = good;
+    put(8, grass::kBakeFormatVersion - 1, 4);
+    put(64, grass::fnv1a64(bad.data(), 64, grass::kFnvOffset), 8);
+    expect_rejected(bad, "another format version", CacheMiss::other_version);
 
     // The right file under the wrong key: the key in the header does not match.
     write_file(path, good);
@@ -416,11 +424,11 @@ TEST_F(SliceBakingTest, CacheRoundTripsAndRejectsDamagedFiles) {
     const std::string other_path = dir + (dir.empty() || dir.back() == '/' ? "" : "/") + other;
     write_file(other_path, good);
     SliceSet s(host());
-    EXPECT_FALSE(grass::load_baked(dir.c_str(), key + 1, host(), &s)) << "a wrong key";
-    EXPECT_FALSE(grass::load_baked(dir.c_str(), key + 2, host(), &s)) << "no file";
-    EXPECT_FALSE(grass::load_baked((dir + "/no-such-directory").c_str(), key, host(), &s));
+    EXPECT_EQ(grass::load_baked(dir.c_str(), key + 1, host(), &s), CacheMiss::other_patch) << "a wrong key";
+    EXPECT_EQ(grass::load_baked(dir.c_str(), key + 2, host(), &s), CacheMiss::missing) << "no file";
+    EXPECT_EQ(grass::load_baked((dir + "/no-such-directory").c_str(), key, host(), &s), CacheMiss::missing);
     EXPECT_FALSE(grass::store_baked((dir + "/no-such-directory").c_str(), key, v));
-    EXPECT_TRUE(grass::load_baked(dir.c_str(), key, host(), &s)) << "the good file still loads";
+    EXPECT_EQ(grass::load_baked(dir.c_str(), key, host(), &s), CacheMiss::none) << "the good file still loads";
     EXPECT_TRUE(same_bytes(v, s));
     std::remove(path.c_str());
     std::remove(other_path.c_str());

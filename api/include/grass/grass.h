@@ -176,6 +176,15 @@ typedef enum grass_message_id {
                                        * plan, a field's maps or a baked slice set disagree with what the core
                                        * uploaded. Returned as GRASS_ERROR_INVALID_STATE: the context's state
                                        * cannot serve the call; the same in every backend. Please report it. */
+    /* 0.4: warning: a file of the bake cache (grass_context_desc.cache_directory) was truncated,
+     * corrupt, of another grass version or of another patch, and was baked again and
+     * rewritten; or the cache directory cannot be written (missing, read-only, full): said
+     * once per context, which then bakes without the cache. */
+    GRASS_MSG_BAKE_CACHE = 405,
+    /* 0.4: the GPU device was lost (Vulkan VK_ERROR_DEVICE_LOST), returned as
+     * GRASS_ERROR_BACKEND: the context cannot draw again; destroy it (that stays safe) and
+     * make a new one on a new device. */
+    GRASS_MSG_DEVICE_LOST = 406,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501

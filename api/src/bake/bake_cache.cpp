@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -21,7 +22,7 @@ constexpr char kMagic[8] = {'G', 'R', 'S', 'L', 'I', 'C', 'E', 'S'};
 constexpr size_t kHeaderBytes = 72;  // the last 8: FNV-1a 64 of the first 64
 constexpr uint32_t kMaxSize = 16384; // texels along s or t
 constexpr uint32_t kMaxSlicesPerAxis = 1024;
-constexpr size_t kMaxPath = 4096;
+constexpr size_t kMaxPath = kCachePathCapacity;
 
 struct Header {
     uint32_t version = 0;
@@ -164,21 +165,58 @@ uint64_t bake_key(const grass_patch_desc& d, uint32_t slices_per_axis, uint32_t 
     return h;
 }
 
-bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceSet* out) {
+const char* cache_miss_phrase(CacheMiss miss) {
+    switch (miss) {
+    case CacheMiss::none:
+        return "was read";
+    case CacheMiss::missing:
+        return "is missing";
+    case CacheMiss::unreadable:
+        return "cannot be read";
+    case CacheMiss::truncated:
+        return "is truncated (or longer than its header says)";
+    case CacheMiss::corrupt:
+        return "is corrupt (not a grass cache file, or its header is damaged)";
+    case CacheMiss::other_version:
+        return "was written by another version of grass";
+    case CacheMiss::other_patch:
+        return "holds the slices of another patch";
+    case CacheMiss::content_hash:
+        return "holds slices that do not match their content hash";
+    }
+    return "cannot be used";
+}
+
+CacheMiss load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceSet* out, char* path_out) {
     clear_set(out);
     char path[kMaxPath];
-    if (!file_path(directory, key, "", path, sizeof(path))) return false;
+    if (!file_path(directory, key, "", path, sizeof(path))) return CacheMiss::missing;
+    if (path_out) std::memcpy(path_out, path, sizeof(path));
     std::FILE* f = std::fopen(path, "rb");
-    if (!f) return false;
-    bool ok = false;
+    if (!f) return errno == ENOENT || errno == ENOTDIR ? CacheMiss::missing : CacheMiss::unreadable;
+    CacheMiss miss = CacheMiss::none;
     do {
-        if (std::fseek(f, 0, SEEK_END) != 0) break;
+        if (std::fseek(f, 0, SEEK_END) != 0) {
+            miss = CacheMiss::unreadable;
+            break;
+        }
         const long length = std::ftell(f);
-        if (length < static_cast<long>(kHeaderBytes) || std::fseek(f, 0, SEEK_SET) != 0) break;
+        if (length < 0 || std::fseek(f, 0, SEEK_SET) != 0) {
+            miss = CacheMiss::unreadable;
+            break;
+        }
+        miss = CacheMiss::truncated;
+        if (length < static_cast<long>(kHeaderBytes)) break;
         uint8_t bytes[kHeaderBytes];
         Header h;
-        if (!read_exact(f, bytes, kHeaderBytes) || !decode_header(bytes, &h)) break;
-        if (h.version != kBakeFormatVersion || h.key != key) break;
+        if (!read_exact(f, bytes, kHeaderBytes)) break;
+        miss = CacheMiss::corrupt;
+        if (!decode_header(bytes, &h)) break;
+        miss = CacheMiss::other_version;
+        if (h.version != kBakeFormatVersion) break;
+        miss = CacheMiss::other_patch;
+        if (h.key != key) break;
+        miss = CacheMiss::corrupt;
         if (h.slices_per_axis > kMaxSlicesPerAxis || h.width == 0 || h.height == 0 || h.width > kMaxSize ||
             h.height > kMaxSize) {
             break;
@@ -189,6 +227,7 @@ bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceS
         // Bounded above: at most 1024 * 2 + 1 layers of 16384^2 * 4 / 3 texels, no overflow.
         const uint64_t texels = h.layers * slice_layer_texels(h.width, h.height, h.mip_levels);
         if (h.texels != texels) break;
+        miss = CacheMiss::truncated;
         if (static_cast<uint64_t>(length) != kHeaderBytes + texels * 16) break; // checked before allocating
         SliceSet set(host);
         set.color.resize(texels * 4);
@@ -217,6 +256,7 @@ bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceS
         set.mip_levels = h.mip_levels;
         set.height_patch_units = h.height_patch_units;
         set.content_hash = slice_content_hash(set);
+        miss = CacheMiss::content_hash;
         if (set.content_hash != h.content_hash) break;
         out->slices_per_axis = set.slices_per_axis;
         out->layers = set.layers;
@@ -228,10 +268,10 @@ bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceS
         out->color = std::move(set.color);
         out->normal = std::move(set.normal);
         out->threshold = std::move(set.threshold);
-        ok = true;
+        miss = CacheMiss::none;
     } while (false);
     std::fclose(f);
-    return ok;
+    return miss;
 }
 
 bool store_baked(const char* directory, uint64_t key, const SliceSet& set) {

@@ -23,10 +23,27 @@ constexpr uint32_t kBakeFormatVersion = 5; // 4: the threshold channel holds the
 // defaults of slice_baker.hpp, so both spellings share a file).
 uint64_t bake_key(const grass_patch_desc& desc, uint32_t slices_per_axis, uint32_t width, uint32_t height);
 
-// Reads the file of `key` in `directory` into `out`. Returns false, leaving `out` empty of
-// data, when the file is missing, unreadable, truncated, too long, or any header field, the
-// key or the recomputed content hash does not match.
-bool load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceSet* out);
+// Why a cache file was not used (load_baked).
+enum class CacheMiss {
+    none,          // loaded
+    missing,       // no file of the key (the first run): not worth a warning
+    unreadable,    // it exists but cannot be read
+    truncated,     // shorter or longer than its header says, or empty
+    corrupt,       // not a grass cache file, a broken header hash or impossible sizes
+    other_version, // written by a grass whose baked bytes differ (kBakeFormatVersion)
+    other_patch,   // the file of another key under this name
+    content_hash,  // the slices do not match the content hash of the header
+};
+// A short English phrase for a miss ("is truncated"), for the warning that names the file.
+const char* cache_miss_phrase(CacheMiss miss);
+
+// Reads the file of `key` in `directory` into `out`. Returns CacheMiss::none on success;
+// otherwise `out` is left empty of data and the result says why: the file is missing,
+// unreadable, truncated, too long, or any header field, the key or the recomputed content
+// hash does not match. Sizes are checked against the file's length before anything is
+// allocated. `path_out` (optional, kCachePathCapacity chars) receives the file's path.
+constexpr size_t kCachePathCapacity = 4096;
+CacheMiss load_baked(const char* directory, uint64_t key, HostAllocator* host, SliceSet* out, char* path_out = nullptr);
 
 // Writes `set` as the file of `key` in `directory` (which must exist), atomically: a
 // temporary file in the same directory renamed over the final name. Returns false on any

@@ -20,10 +20,19 @@ grass_result ensure_slices(grass_context* ctx, const char* fn, uint32_t patch_sl
         // stale slices from the cache.
         const uint64_t key =
             fnv1a64(&patch->data.content_hash, sizeof(uint64_t), bake_key(patch->desc, slices_per_axis, 0, 0));
-        if (!dir || !load_baked(dir, key, &ctx->host, set)) {
+        char path[kCachePathCapacity] = "";
+        const CacheMiss miss = dir ? load_baked(dir, key, &ctx->host, set, path) : CacheMiss::missing;
+        if (miss != CacheMiss::none) {
+            if (miss != CacheMiss::missing) {
+                ctx->warn(GRASS_MSG_BAKE_CACHE, "%s: the bake cache file %s %s; its slices are baked again", fn, path,
+                          cache_miss_phrase(miss));
+            }
             bake_slices(patch->data, slices_per_axis, 0, 0, &ctx->host, set);
-            if (dir && !store_baked(dir, key, *set)) {
-                ctx->warn(GRASS_MSG_BACKEND_CALL_FAILED, "%s: could not write baked slices to the cache directory %s",
+            if (dir && !store_baked(dir, key, *set) && !ctx->cache_write_warned) {
+                ctx->cache_write_warned = true;
+                ctx->warn(GRASS_MSG_BAKE_CACHE,
+                          "%s: cannot write to the cache directory %s (missing, not a directory, read-only or full); "
+                          "the slices this context bakes are not kept",
                           fn, dir);
             }
         }

@@ -186,7 +186,8 @@ extern "C" {
 GRASS_API uint32_t grass_library_version(void) { return GRASS_HEADER_VERSION; }
 
 GRASS_API const char* grass_result_string(grass_result result) {
-    switch (result) {
+    // A C host may pass any int: read it as one (raw_enum.hpp).
+    switch (grass::raw_enum(result)) {
     case GRASS_SUCCESS:
         return "GRASS_SUCCESS";
     case GRASS_ERROR_INVALID_ARGUMENT:

@@ -84,6 +84,7 @@ struct grass_context {
     uint64_t frame_number = 0;
     char last_error[512] = {0};
     grass::Vector<char> cache_directory; // copy of desc.cache_directory (empty: no disk cache)
+    bool cache_write_warned = false;     // the cache directory could not be written: said once
 
     // Logs `message` (printf format) at error level with `id`, keeps it as the last error,
     // and returns `result`: `return ctx->fail(GRASS_ERROR_..., GRASS_MSG_..., "...", ...);`

@@ -21,7 +21,8 @@ public:
     HandlePool(const HandlePool&) = delete;
     HandlePool& operator=(const HandlePool&) = delete;
 
-    // Takes ownership of `object` (made with host->create) and returns its slot.
+    // Takes ownership of `object` (made with host->create) and returns its slot. When the
+    // pool cannot grow (std::bad_alloc) it destroys `object` before the exception leaves.
     uint32_t insert(T* object) {
         if (!free_.empty()) {
             const uint32_t slot = free_.back();
@@ -29,7 +30,15 @@ public:
             slots_[slot].object = object;
             return slot;
         }
-        slots_.push_back(Slot{object, 1});
+        try {
+            // Room in free_ for every slot, so that erase() never allocates (and never fails
+            // after destroying its object).
+            free_.reserve(slots_.size() + 1);
+            slots_.push_back(Slot{object, 1});
+        } catch (...) {
+            host_->destroy(object);
+            throw;
+        }
         return static_cast<uint32_t>(slots_.size() - 1);
     }
     void erase(uint32_t slot) {

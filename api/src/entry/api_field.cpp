@@ -128,8 +128,13 @@ grass_result create_one_field(grass_context* ctx, const char* fn, const grass_fi
     field->lod = lod;
     field->parent = parent;
     if (desc->density_map) {
-        const grass_result r =
-            make_map(ctx, fn, "desc->density_map", desc->density_map, true, &field->maps.map_slot[kMapDensity]);
+        grass_result r = GRASS_SUCCESS;
+        try {
+            r = make_map(ctx, fn, "desc->density_map", desc->density_map, true, &field->maps.map_slot[kMapDensity]);
+        } catch (...) { // out of memory: nothing of this call is left
+            ctx->host.destroy(field);
+            throw;
+        }
         if (r != GRASS_SUCCESS) {
             ctx->host.destroy(field);
             return r;
@@ -204,15 +209,31 @@ grass_result create_one_field(grass_context* ctx, const char* fn, const grass_fi
         field->translation[c] = m[12 + c];
     }
 
-    const uint32_t slot = ctx->fields.insert(field);
-    grass_result r = check_field_maps(ctx, fn, slot, field->maps);
-    if (r == GRASS_SUCCESS) r = ctx->backend->upload_field(slot, field->maps);
-    if (r != GRASS_SUCCESS) {
+    // On any failure from here on, nothing of this call is left (nor on std::bad_alloc).
+    const bool owned = field->owns_density_map;
+    const uint32_t density_slot = field->maps.map_slot[kMapDensity];
+    uint32_t slot = 0;
+    try {
+        slot = ctx->fields.insert(field); // destroys the field if the pool cannot grow
+    } catch (...) {
+        if (owned) release_map(ctx, density_slot);
+        throw;
+    }
+    auto undo = [&] {
         ctx->backend->release_field(slot);
-        const bool owned = field->owns_density_map;
-        const uint32_t density_slot = field->maps.map_slot[kMapDensity];
         ctx->fields.erase(slot);
         if (owned) release_map(ctx, density_slot);
+    };
+    grass_result r = GRASS_SUCCESS;
+    try {
+        r = check_field_maps(ctx, fn, slot, field->maps);
+        if (r == GRASS_SUCCESS) r = ctx->backend->upload_field(slot, field->maps);
+    } catch (...) {
+        undo();
+        throw;
+    }
+    if (r != GRASS_SUCCESS) {
+        undo();
         return r;
     }
     ctx->patches.get(field->patch_slot)->field_users += 1;
@@ -293,7 +314,13 @@ grass_result create_field(grass_context* ctx, const grass_field_desc* desc, gras
     for (uint32_t k = 0; k < type_count; ++k) {
         const grass_field_desc d = type_field_desc(first, *types[k]);
         uint32_t child = 0;
-        const grass_result r = create_one_field(ctx, fn, &d, slot, &child);
+        grass_result r = GRASS_SUCCESS;
+        try {
+            r = create_one_field(ctx, fn, &d, slot, &child);
+        } catch (...) { // out of memory: nothing of this call is left either
+            destroy_field_and_types(ctx, slot);
+            throw;
+        }
         if (r != GRASS_SUCCESS) {
             destroy_field_and_types(ctx, slot); // nothing of this call is left
             return r;

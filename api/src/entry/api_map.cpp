@@ -33,7 +33,14 @@ grass_result make_map(grass_context* ctx, const char* fn, const char* name, cons
     map->channels = map_format_channels(raw_enum(desc->format));
     map->format = desc->format;
     map->field_private = field_private;
-    if (map->channels == 1) map->pyramid.build(map->texels.data(), map->width, map->height);
+    if (map->channels == 1) {
+        try {
+            map->pyramid.build(map->texels.data(), map->width, map->height);
+        } catch (...) {
+            ctx->host.destroy(map);
+            throw;
+        }
+    }
     const uint32_t slot = ctx->maps.insert(map);
     const grass_result r = ctx->backend->upload_map(slot, texels_of(*map));
     if (r != GRASS_SUCCESS) {

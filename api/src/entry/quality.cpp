@@ -2,6 +2,7 @@
 // A preset is a grass_quality_desc; applying one shapes a patch desc and Lemme's default lod
 // setup (lod_setup.cpp) by a few scales, so every level is the same method, nearer or further.
 #include "context/context.hpp"
+#include "context/raw_enum.hpp"
 #include "context/validate.hpp"
 
 #include <algorithm>
@@ -104,7 +105,7 @@ extern "C" {
 
 GRASS_API grass_quality_desc grass_quality_preset(grass_quality_level level) {
     using grass::make;
-    switch (level) {
+    switch (grass::raw_enum(level)) { // a C host may pass any int
     case GRASS_QUALITY_REFERENCE:
         return make(1, 1.0f, 1.0f, 1.0f, 1.0f, 8, 1.0f, 4);
     case GRASS_QUALITY_HIGH:

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (tests/fuzz; clang-15, ASan + UBSan) in build-fuzz and runs
+# each one for a while over its corpus (tests/fuzz/corpus/<target>) with its dictionary.
+# New inputs go to a scratch directory, never into the repository's corpus; a crash, leak or
+# timeout stops the run, leaves its input in build-fuzz/findings/<target>/ and fails.
+#
+#   bash scripts/fuzz.sh                 # every target, 20 s each (the test command's run)
+#   bash scripts/fuzz.sh 3600 scene      # one target for an hour (the long runs of docs/records/testing.md)
+#   FUZZ_RUNS=1000000 bash scripts/fuzz.sh 0 bake_cache   # a number of executions instead
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-20}
+shift || true
+targets=("$@")
+[ ${#targets[@]} -eq 0 ] && targets=(api_sequence bake_cache scene png_map)
+jobs=${FUZZ_BUILD_JOBS:-$(nproc)}
+build=${FUZZ_BUILD_DIR:-build-fuzz}
+
+CC=clang-15 CXX=clang++-15 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_FUZZ=ON ${FUZZ_CMAKE_ARGS:-} \
+  -DGRASS_BUILD_TESTS=OFF -DGRASS_BUILD_SAMPLES=ON >/dev/null
+cmake --build "$build" -j "$jobs" --target $(printf 'fuzz_%s ' "${targets[@]}")
+
+export ASAN_OPTIONS="detect_leaks=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export ASAN_SYMBOLIZER_PATH=/usr/bin/llvm-symbolizer
+status=0
+for t in "${targets[@]}"; do
+  scratch=$(mktemp -d)
+  findings=$build/findings/$t
+  mkdir -p "$findings"
+  args=(-timeout=30 -rss_limit_mb=2048 -max_len=65536 -artifact_prefix="$findings/" -print_final_stats=1)
+  [ -f "tests/fuzz/$t.dict" ] && args+=(-dict="tests/fuzz/$t.dict")
+  if [ -n "${FUZZ_RUNS:-}" ]; then args+=(-runs="$FUZZ_RUNS"); else args+=(-max_total_time="$seconds"); fi
+  echo "== fuzz_$t: ${FUZZ_RUNS:+$FUZZ_RUNS runs}${FUZZ_RUNS:-$seconds s}"
+  if ! "$build/tests/fuzz/fuzz_$t" "${args[@]}" "$scratch" "tests/fuzz/corpus/$t" 2>"$build/findings/$t.log"; then
+    echo "fuzz_$t found a failure: $build/findings/$t.log, input in $findings/"
+    tail -40 "$build/findings/$t.log"
+    status=1
+  fi
+  grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)" \
+    "$build/findings/$t.log" || true
+  rm -rf "$scratch"
+done
+exit $status

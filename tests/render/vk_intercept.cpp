@@ -1,0 +1,176 @@
+#include "vk_intercept.hpp"
+
+#include <vulkan/vulkan.h>
+
+#include <atomic>
+#include <cstring>
+
+namespace grass_test::vk_intercept {
+namespace {
+
+PFN_vkGetDeviceProcAddr real_device_proc_addr = nullptr;
+Live counts;
+struct Failure {
+    const char* call = nullptr;
+    VkResult result = VK_SUCCESS;
+    int count = 0, skip = 0;
+} failure;
+int injected = 0;
+
+// True (and counted) when this call of `call` is to fail.
+bool fails(const char* call) {
+    if (!failure.call || std::strcmp(failure.call, call) != 0 || failure.count == 0) return false;
+    if (failure.skip > 0) {
+        failure.skip -= 1;
+        return false;
+    }
+    failure.count -= 1;
+    injected += 1;
+    return true;
+}
+
+#define GRASS_REAL(name) PFN_##name real_##name = nullptr;
+GRASS_REAL(vkCreateBuffer)
+GRASS_REAL(vkDestroyBuffer)
+GRASS_REAL(vkCreateImage)
+GRASS_REAL(vkDestroyImage)
+GRASS_REAL(vkCreateImageView)
+GRASS_REAL(vkDestroyImageView)
+GRASS_REAL(vkAllocateMemory)
+GRASS_REAL(vkFreeMemory)
+GRASS_REAL(vkMapMemory)
+GRASS_REAL(vkCreateSampler)
+GRASS_REAL(vkDestroySampler)
+GRASS_REAL(vkCreateDescriptorPool)
+GRASS_REAL(vkDestroyDescriptorPool)
+GRASS_REAL(vkAllocateDescriptorSets)
+GRASS_REAL(vkCreateGraphicsPipelines)
+GRASS_REAL(vkDestroyPipeline)
+GRASS_REAL(vkCreateQueryPool)
+GRASS_REAL(vkDestroyQueryPool)
+#undef GRASS_REAL
+
+// A create call: fails when told to, else counts what it made.
+#define GRASS_CREATE(name, Info, Handle, counter)                                                            \
+    VKAPI_ATTR VkResult VKAPI_CALL wrap_##name(VkDevice d, const Info* info, const VkAllocationCallbacks* a, \
+                                               Handle* out) {                                                \
+        if (fails(#name)) return failure.result;                                                             \
+        const VkResult r = real_##name(d, info, a, out);                                                     \
+        if (r == VK_SUCCESS) counts.counter += 1;                                                            \
+        return r;                                                                                            \
+    }
+#define GRASS_DESTROY(name, Handle, counter)                                                       \
+    VKAPI_ATTR void VKAPI_CALL wrap_##name(VkDevice d, Handle h, const VkAllocationCallbacks* a) { \
+        if (h != VK_NULL_HANDLE) counts.counter -= 1;                                              \
+        real_##name(d, h, a);                                                                      \
+    }
+GRASS_CREATE(vkCreateBuffer, VkBufferCreateInfo, VkBuffer, buffers)
+GRASS_DESTROY(vkDestroyBuffer, VkBuffer, buffers)
+GRASS_CREATE(vkCreateImage, VkImageCreateInfo, VkImage, images)
+GRASS_DESTROY(vkDestroyImage, VkImage, images)
+GRASS_CREATE(vkCreateImageView, VkImageViewCreateInfo, VkImageView, views)
+GRASS_DESTROY(vkDestroyImageView, VkImageView, views)
+VKAPI_ATTR VkResult VKAPI_CALL wrap_vkAllocateMemory(VkDevice d, const VkMemoryAllocateInfo* info,
+                                                     const VkAllocationCallbacks* a, VkDeviceMemory* out) {
+    if (fails("vkAllocateMemory")) return failure.result;
+    const VkResult r = real_vkAllocateMemory(d, info, a, out);
+    if (r == VK_SUCCESS) {
+        counts.memory += 1;
+        counts.memory_made += 1;
+    }
+    return r;
+}
+GRASS_DESTROY(vkFreeMemory, VkDeviceMemory, memory)
+GRASS_CREATE(vkCreateSampler, VkSamplerCreateInfo, VkSampler, samplers)
+GRASS_DESTROY(vkDestroySampler, VkSampler, samplers)
+GRASS_CREATE(vkCreateDescriptorPool, VkDescriptorPoolCreateInfo, VkDescriptorPool, pools)
+GRASS_DESTROY(vkDestroyDescriptorPool, VkDescriptorPool, pools)
+GRASS_CREATE(vkCreateQueryPool, VkQueryPoolCreateInfo, VkQueryPool, queries)
+GRASS_DESTROY(vkDestroyQueryPool, VkQueryPool, queries)
+GRASS_DESTROY(vkDestroyPipeline, VkPipeline, pipelines)
+#undef GRASS_CREATE
+#undef GRASS_DESTROY
+
+VKAPI_ATTR VkResult VKAPI_CALL wrap_vkMapMemory(VkDevice d, VkDeviceMemory m, VkDeviceSize offset, VkDeviceSize size,
+                                                VkMemoryMapFlags flags, void** out) {
+    if (fails("vkMapMemory")) return failure.result;
+    return real_vkMapMemory(d, m, offset, size, flags, out);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL wrap_vkAllocateDescriptorSets(VkDevice d, const VkDescriptorSetAllocateInfo* info,
+                                                             VkDescriptorSet* out) {
+    if (fails("vkAllocateDescriptorSets")) return failure.result;
+    return real_vkAllocateDescriptorSets(d, info, out);
+}
+
+VKAPI_ATTR VkResult VKAPI_CALL wrap_vkCreateGraphicsPipelines(VkDevice d, VkPipelineCache cache, uint32_t n,
+                                                              const VkGraphicsPipelineCreateInfo* infos,
+                                                              const VkAllocationCallbacks* a, VkPipeline* out) {
+    if (fails("vkCreateGraphicsPipelines")) return failure.result;
+    const VkResult r = real_vkCreateGraphicsPipelines(d, cache, n, infos, a, out);
+    if (r == VK_SUCCESS) counts.pipelines += n;
+    return r;
+}
+
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL wrap_vkGetDeviceProcAddr(VkDevice device, const char* name) {
+    const PFN_vkVoidFunction real = real_device_proc_addr(device, name);
+    if (!real) return real;
+#define GRASS_WRAP(fn)                                           \
+    if (std::strcmp(name, #fn) == 0) {                           \
+        real_##fn = reinterpret_cast<PFN_##fn>(real);            \
+        return reinterpret_cast<PFN_vkVoidFunction>(&wrap_##fn); \
+    }
+    GRASS_WRAP(vkCreateBuffer)
+    GRASS_WRAP(vkDestroyBuffer)
+    GRASS_WRAP(vkCreateImage)
+    GRASS_WRAP(vkDestroyImage)
+    GRASS_WRAP(vkCreateImageView)
+    GRASS_WRAP(vkDestroyImageView)
+    GRASS_WRAP(vkAllocateMemory)
+    GRASS_WRAP(vkFreeMemory)
+    GRASS_WRAP(vkMapMemory)
+    GRASS_WRAP(vkCreateSampler)
+    GRASS_WRAP(vkDestroySampler)
+    GRASS_WRAP(vkCreateDescriptorPool)
+    GRASS_WRAP(vkDestroyDescriptorPool)
+    GRASS_WRAP(vkAllocateDescriptorSets)
+    GRASS_WRAP(vkCreateGraphicsPipelines)
+    GRASS_WRAP(vkDestroyPipeline)
+    GRASS_WRAP(vkCreateQueryPool)
+    GRASS_WRAP(vkDestroyQueryPool)
+#undef GRASS_WRAP
+    return real;
+}
+
+void (*wrap_get_instance_proc_addr(void* instance, const char* name))(void) {
+    const PFN_vkVoidFunction real = vkGetInstanceProcAddr(static_cast<VkInstance>(instance), name);
+    if (real && std::strcmp(name, "vkGetDeviceProcAddr") == 0) {
+        real_device_proc_addr = reinterpret_cast<PFN_vkGetDeviceProcAddr>(real);
+        return reinterpret_cast<PFN_vkVoidFunction>(&wrap_vkGetDeviceProcAddr);
+    }
+    return real;
+}
+
+} // namespace
+
+GetInstanceProcAddr get_instance_proc_addr() { return &wrap_get_instance_proc_addr; }
+
+void fail_calls(const char* call, int32_t vk_result, int count, int skip) {
+    failure.call = call;
+    failure.result = static_cast<VkResult>(vk_result);
+    failure.count = count;
+    failure.skip = skip;
+}
+
+void clear_failures() { failure = Failure{}; }
+int failures_injected() { return injected; }
+Live live() { return counts; }
+
+std::string Live::describe() const {
+    return std::to_string(buffers) + " buffers, " + std::to_string(images) + " images, " + std::to_string(views) +
+           " views, " + std::to_string(memory) + " allocations, " + std::to_string(samplers) + " samplers, " +
+           std::to_string(pools) + " descriptor pools, " + std::to_string(pipelines) + " pipelines, " +
+           std::to_string(queries) + " query pools";
+}
+
+} // namespace grass_test::vk_intercept

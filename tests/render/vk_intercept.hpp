@@ -1,0 +1,34 @@
+// A vkGetInstanceProcAddr for grass's dispatch table (TargetDesc::vk_get_instance_proc_addr)
+// that wraps some device functions: it counts the live Vulkan objects grass holds and can
+// make a chosen call fail. The host's own calls go straight to the loader. One device at a
+// time per process (the wrappers keep the loader's pointers in globals).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace grass_test::vk_intercept {
+
+using GetInstanceProcAddr = void (*(*)(void* instance, const char* name))(void);
+
+// The wrapper to give the host.
+GetInstanceProcAddr get_instance_proc_addr();
+
+// The next `count` calls of `call` ("vkAllocateMemory", "vkAllocateDescriptorSets",
+// "vkCreateBuffer", "vkMapMemory") return `vk_result` (a VkResult) without calling the
+// driver, after `skip` calls that go through.
+void fail_calls(const char* call, int32_t vk_result, int count = 1, int skip = 0);
+void clear_failures();
+int failures_injected();
+
+// Objects grass created and has not destroyed: buffers, images, image views, memory
+// allocations, samplers, descriptor pools, pipelines, query pools.
+struct Live {
+    int64_t buffers = 0, images = 0, views = 0, memory = 0, samplers = 0, pools = 0, pipelines = 0, queries = 0;
+    int64_t memory_made = 0; // vkAllocateMemory calls that succeeded, ever
+    int64_t total() const { return buffers + images + views + memory + samplers + pools + pipelines + queries; }
+    std::string describe() const;
+};
+Live live();
+
+} // namespace grass_test::vk_intercept
