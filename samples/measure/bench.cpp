@@ -436,6 +436,21 @@ bool make_truths(const Options& opt, const PreparedScene& ps, std::chrono::stead
     return true;
 }
 
+// The key of the reference's timed frames (the real scenes': one frame, no warm-up).
+std::string timed_reference_key(const Options& opt, const PreparedScene& ps, int ci, grass_backend backend) {
+    const int frames = ps.bench->real ? 1 : opt.frames;
+    return reference_key(ps, ci, "timed frames " + std::to_string(frames), backend, opt.width, opt.height, 1, 0);
+}
+
+// The reference's frame times from the cache, for a run without the reference preset.
+void cached_reference_times(const Options& opt, const PreparedScene& ps, grass_backend backend, Reference* ref) {
+    for (const int ci : ps.cameras) {
+        CachedReference cached;
+        if (load_reference(opt.references, timed_reference_key(opt, ps, ci, backend), &cached))
+            ref->ms[ci] = cached.frame_ms;
+    }
+}
+
 // Renders one variant of one scene on one backend: a host with the variant's sample count,
 // a context, a field made with grass_apply_quality, then every selected camera (one
 // warm-up and opt.frames timed frames each; the reference of a real scene: one frame, timed).
@@ -473,9 +488,7 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
         row.subdivisions = session.pd.subdivisions;
         row.field_ms = session.field_ms;
         grass_host::Image image;
-        const std::string key = is_reference ? reference_key(ps, ci, "timed frames " + std::to_string(frames), backend,
-                                                             opt.width, opt.height, 1, 0)
-                                             : std::string();
+        const std::string key = is_reference ? timed_reference_key(opt, ps, ci, backend) : std::string();
         CachedReference cached;
         grass_result r = GRASS_SUCCESS;
         if (is_reference && load_reference(opt.references, key, &cached)) {
@@ -526,12 +539,14 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
         const std::string stem = opt.out + "/images/" + bs.name + "-" + row.camera + "-" + be + "-" + v.file;
         if (!grass_host::write_png(stem + ".png", image, error)) return false;
         if (is_reference) ref->ms[ci] = row.frame_ms;
-        if (ref->ms[ci] > 0) row.ratio = row.frame_ms / ref->ms[ci];
+        // Without the reference's frame (--preset without reference) the cost is unknown.
+        row.ratio = ref->ms[ci] > 0 ? row.frame_ms / ref->ms[ci] : std::numeric_limits<double>::quiet_NaN();
         // Against the truth of the scene's seeds, normalised by the other seeds' error.
         const grass_host::Image& t = truth[ci].a;
         const uint8_t* img = image.rgba.data();
         row.ssim = grass_bench::ssim_rgba(t.rgba.data(), img, image.width, image.height);
         row.psnr = grass_bench::psnr_rgba(t.rgba.data(), img, image.width, image.height);
+        row.ssim_other = grass_bench::ssim_rgba(truth[ci].b.rgba.data(), img, image.width, image.height);
         row.error = grass_bench::image_error(t.rgba.data(), img, image.width, image.height);
         row.seed = truth[ci].seed;
         row.norm = grass_bench::normalised(row.error, row.seed);
@@ -630,6 +645,11 @@ int scene_index(const std::string& name) {
         if (name == kScenes[s].name) return s;
     return -1;
 }
+int preset_index(const std::string& name) {
+    for (int l = 0; l < GRASS_QUALITY_LEVEL_COUNT; ++l)
+        if (name == kLevelNames[l]) return l;
+    return -1;
+}
 int camera_index(const std::string& name) {
     for (int c = 0; c < 4; ++c)
         if (name == kScenes[0].cameras[c].name) return c;
@@ -707,7 +727,10 @@ int run(Options opt, bool quick) {
     if (opt.sweep) {
         variants = sweep_variants();
     } else {
-        for (int level = 0; level < GRASS_QUALITY_LEVEL_COUNT; ++level) variants.push_back(preset_variant(level));
+        for (int level = 0; level < GRASS_QUALITY_LEVEL_COUNT; ++level) {
+            if (opt.presets.empty() || std::count(opt.presets.begin(), opt.presets.end(), level) > 0)
+                variants.push_back(preset_variant(level));
+        }
     }
     const auto t_start = std::chrono::steady_clock::now();
     std::vector<Row> rows;
@@ -721,6 +744,7 @@ int run(Options opt, bool quick) {
         for (const grass_backend backend : opt.backends) {
             // The reference comes first (variants[0]): every other frame's cost is set against it.
             Reference reference;
+            if (variants.front().level != GRASS_QUALITY_REFERENCE) cached_reference_times(opt, ps, backend, &reference);
             for (const Variant& v : variants) {
                 if (!render_variant(opt, backend, ps, v, truth, &reference, t_start, &rows, &status, &error)) {
                     throw grass_sample::Failure(error);
@@ -803,6 +827,10 @@ Subcommand add_bench(CLI::App& measure) {
                             "football, park or hills (repeatable; default all)", &o->scenes);
     bench::add_names_option(*app, "--camera", bench::camera_index, "camera", "high, player, ant, grazing",
                             "high, player, ant or grazing (repeatable; default all)", &o->cameras);
+    bench::add_names_option(*app, "--preset", bench::preset_index, "preset", "reference, high, default, low, fastest",
+                            "reference, high, default, low or fastest (repeatable; default all). Without reference "
+                            "the cost against it is n/a, unless the reference's frame is in the cache",
+                            &o->presets);
     app->add_flag("--quick", *quick, "one scene and one camera (the reduced football, player): a smoke run");
     app->add_flag("--sweep", o->sweep,
                   "instead of the presets: DEFAULT with one knob at a time changed (a few values each around "

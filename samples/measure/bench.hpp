@@ -47,6 +47,7 @@ struct Options {
     std::vector<grass_backend> backends = {GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN};
     std::vector<int> scenes;  // indices into kScenes; empty = all
     std::vector<int> cameras; // 0..3; empty = all
+    std::vector<int> presets; // quality levels; empty = all (ignored by --sweep)
     std::string scene_dir = GRASS_SCENE_DIR;
     std::string out = "grass-bench-out";
     std::string docs;       // CSV, Markdown and SVG here; empty: into --out
@@ -68,6 +69,7 @@ struct Row {
     bool gpu_available = false;
     double gpu_ms[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
     double ssim = 1, psnr = std::numeric_limits<double>::infinity(); // against the truth (seeds A)
+    double ssim_other = 1;                                           // against the truth of the other seeds (B)
     grass_bench::ImageError error;                                   // against the truth (seeds A)
     grass_bench::ImageError seed;                                    // the truth with seeds B against A
     grass_bench::ImageError norm;                                    // error / seed

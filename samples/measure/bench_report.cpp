@@ -58,7 +58,7 @@ std::string csv(const std::vector<Row>& rows, const Options& o) {
          "seed_ssim_error_x1,seed_ssim_error_x2,seed_ssim_error_x4,seed_rms_x1,seed_rms_x2,seed_rms_x4,"
          "norm_ssim_error_x1,norm_ssim_error_x2,norm_ssim_error_x4,norm_rms_x1,norm_rms_x2,norm_rms_x4,"
          "band_colour_levels,colour_band,seed_band_colour_levels,band_coverage,coverage_band,seed_band_coverage,"
-         "supersample,backend_diff_mean_levels,backend_diff_max_levels\n";
+         "supersample,backend_diff_mean_levels,backend_diff_max_levels,ssim_vs_other_seeds\n";
     for (const Row& r : rows) {
         s << r.scene << ',' << r.camera << ',' << r.backend << ',' << r.preset << ',' << o.width << ',' << o.height
           << ',' << r.msaa << ',' << r.blades << ',' << r.subdivisions << ',' << fmt("%.2f", r.frame_ms) << ','
@@ -71,7 +71,8 @@ std::string csv(const std::vector<Row>& rows, const Options& o) {
           << ',' << fmt("%.3f", r.error.band_colour) << ',' << r.error.colour_band << ','
           << fmt("%.3f", r.seed.band_colour) << ',' << fmt("%.4f", r.error.band_coverage) << ','
           << r.error.coverage_band << ',' << fmt("%.4f", r.seed.band_coverage) << ',' << o.supersample << ','
-          << fmt("%.3f", r.backend_diff_mean) << ',' << fmt("%.0f", r.backend_diff_max) << '\n';
+          << fmt("%.3f", r.backend_diff_mean) << ',' << fmt("%.0f", r.backend_diff_max) << ','
+          << fmt("%.5f", r.ssim_other) << '\n';
     }
     return s.str();
 }
