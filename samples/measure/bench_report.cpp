@@ -44,6 +44,8 @@ std::string scales_csv(const double* v) {
 }
 // The largest of the three scales' values.
 double worst(const double* v) { return std::max({v[0], v[1], v[2]}); }
+// The worst normalised error of a row: 1 - SSIM and RMS, every scale.
+double worst_normalised(const Row& r) { return std::max(worst(r.norm.ssim_error), worst(r.norm.rms)); }
 
 } // namespace
 
@@ -105,16 +107,19 @@ std::string markdown(const std::vector<Row>& rows, const Options& o, double tota
       << "|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Row& r : rows) {
         s << "| " << r.scene << " | " << r.camera << " | " << r.backend << " | " << r.preset << " | "
-          << fmt("%.3f", r.ratio) << (r.cached ? " (cached)" : "") << " | " << scales_text(r.norm.ssim_error) << " | "
-          << scales_text(r.norm.rms) << " | " << fmt("%.2f", std::max(worst(r.norm.ssim_error), worst(r.norm.rms)))
-          << " | " << fmt("%+.1f", r.error.band_colour) << " (" << fmt("%.1f", std::fabs(r.seed.band_colour)) << ") | "
-          << fmt("%+.3f", r.error.band_coverage) << " (" << fmt("%.3f", std::fabs(r.seed.band_coverage)) << ") |\n";
+          << (std::isnan(r.ratio) ? std::string("n/a") : fmt("%.3f", r.ratio)) << (r.cached ? " (cached)" : "") << " | "
+          << scales_text(r.norm.ssim_error) << " | " << scales_text(r.norm.rms) << " | "
+          << fmt("%.2f", worst_normalised(r)) << " | " << fmt("%+.1f", r.error.band_colour) << " ("
+          << fmt("%.1f", std::fabs(r.seed.band_colour)) << ") | " << fmt("%+.3f", r.error.band_coverage) << " ("
+          << fmt("%.3f", std::fabs(r.seed.band_coverage)) << ") |\n";
     }
     s << "\n## The seed-to-seed error: truth B against truth A\n\n"
       << "| scene | camera | SSIM x1 / x2 / x4 | RMS x1 / x2 / x4 (levels) | band colour | band coverage |\n"
       << "|---|---|---|---|---|---|\n";
-    for (const Row& r : rows) {
-        if (r.level != GRASS_QUALITY_REFERENCE || r.backend != rows.front().backend) continue;
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const Row& r = rows[i];
+        // The first row of each scene and camera (every row of one carries its seed-to-seed error).
+        if (i > 0 && rows[i - 1].scene == r.scene && rows[i - 1].camera == r.camera) continue;
         const double ssim[3] = {1 - r.seed.ssim_error[0], 1 - r.seed.ssim_error[1], 1 - r.seed.ssim_error[2]};
         s << "| " << r.scene << " | " << r.camera << " | " << scales_text(ssim, "%.3f") << " | "
           << scales_text(r.seed.rms) << " | " << fmt("%+.1f", r.seed.band_colour) << " | "
@@ -168,7 +173,8 @@ std::string markdown(const std::vector<Row>& rows, const Options& o, double tota
     return s.str();
 }
 
-// x: cost relative to the reference, log10; y: 1 - SSIM. A marker per frame: colour per
+// x: cost relative to the reference, log10; y: the worst normalised error (1 - SSIM and RMS at
+// the three scales, each divided by the seed-to-seed error). A marker per frame: colour per
 // preset, circle GL, square Vulkan; hovering shows the frame.
 std::string svg(const std::vector<Row>& rows) {
     const double W = 760, H = 480, L = 70, R = 150, T = 40, B = 60;
@@ -177,7 +183,7 @@ std::string svg(const std::vector<Row>& rows) {
         if (!(r.ratio > 0) || !std::isfinite(r.ratio)) continue;
         xmin = std::min(xmin, std::floor(std::log10(r.ratio)));
         xmax = std::max(xmax, std::ceil(std::log10(r.ratio)));
-        ymax = std::max(ymax, 1.0 - r.ssim);
+        ymax = std::max(ymax, worst_normalised(r));
     }
     if (xmax <= xmin) xmax = xmin + 1;
     // A tidy top for the y axis: 1, 2 or 5 times a power of ten.
@@ -222,13 +228,14 @@ std::string svg(const std::vector<Row>& rows) {
     s << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 18
       << "\" text-anchor=\"middle\">frame cost / reference's frame cost (log scale)</text>\n"
       << "<text transform=\"translate(18," << (T + H - B) / 2
-      << ") rotate(-90)\" text-anchor=\"middle\">1 - SSIM against the reference</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\">worst error / seed-to-seed error</text>\n";
     // Markers.
     for (const Row& r : rows) {
         if (!(r.ratio > 0) || !std::isfinite(r.ratio)) continue;
-        const double x = px(r.ratio), y = py(1.0 - r.ssim);
+        const double x = px(r.ratio), y = py(worst_normalised(r));
         const std::string title = "<title>" + r.scene + ", " + r.camera + ", " + r.backend + ", " + r.preset +
-                                  ": cost " + fmt("%.3f", r.ratio) + ", SSIM " + fmt("%.4f", r.ssim) + "</title>";
+                                  ": cost " + fmt("%.3f", r.ratio) + ", error / seed " +
+                                  fmt("%.2f", worst_normalised(r)) + "</title>";
         const char* c = kLevelColors[r.level];
         if (r.backend == "gl") {
             s << "<circle cx=\"" << fmt("%.1f", x) << "\" cy=\"" << fmt("%.1f", y) << "\" r=\"4\" fill=\"" << c
