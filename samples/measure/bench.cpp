@@ -4,11 +4,13 @@
 
 #include <grass/grass.h>
 
+#include "accuracy.hpp"
 #include "cli.hpp"
 #include "headless_host.hpp"
 #include "image_io.hpp"
 #include "image_metrics.hpp"
 #include "measure.hpp"
+#include "reference_cache.hpp"
 #include "scene.hpp"
 #include "stats.hpp"
 #include "tool.hpp"
@@ -18,8 +20,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <memory>
+#include <numeric>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -40,9 +45,11 @@ struct Camera {
     double target[3];
 };
 
-// A scene file, reduced so that its reference (blades everywhere) renders in seconds on
-// llvmpipe: a part of the field (the maps are mapped so that the part keeps its place in
-// them), fewer and wider blades per patch. Heights of cameras over a height map are above
+// A scene file on a part of its field (the maps are mapped so that the part keeps its place
+// in them). The reduced variants (football, park, hills) also have fewer and wider blades per
+// patch, so that their reference (blades everywhere) renders in seconds on llvmpipe; the
+// real ones (football-real, ...) keep the scene file's patch (blade_count 0), and their
+// references take minutes: by default they are measured from the player camera only. Heights of cameras over a height map are above
 // the terrain under the eye (the target moves up by the same amount, so the view direction
 // is the flat one).
 struct BenchScene {
@@ -50,9 +57,11 @@ struct BenchScene {
     const char* file;
     uint32_t first_x, first_z; // the part of the scene's field, in its cells
     uint32_t cells_x, cells_z;
-    uint32_t blade_count;
-    float width_min, width_max; // patch units
-    Camera cameras[4];
+    uint32_t blade_count;       // 0: the scene file's
+    float width_min, width_max; // patch units; 0: the scene file's
+    const Camera* cameras;      // 4: high, player, ant, grazing
+    // The scene file's patch: by default the player camera only, the reference timed on one frame.
+    bool real;
 };
 
 // Football: scripts/football-cameras.sh's cameras. The field's centre strip, 20 m wide and
@@ -61,46 +70,27 @@ struct BenchScene {
 // Park: the whole 40 m x 40 m park (its maps are the scene), fewer blades.
 // Hills: 80 m x 100 m of the 200 m x 200 m hills (160 x 200 cells of 0.5 m) around the
 // valley camera of docs/design-maps.md, with the host's ground drawn (see main).
+// The real variants: the same parts and cameras with the scene files' patches (football 3100
+// blades of 0.02..0.03 patch units, park and hills 1200 of the default width).
+const Camera kFootballCameras[4] = {{"high", {47.5, 60, -40}, {47.5, 0, 80}},
+                                    {"player", {47.5, 1.7, 6}, {47.5, 0, 60}},
+                                    {"ant", {47.3, 0.05, 6}, {47.3, 0.04, 20}},
+                                    {"grazing", {47.3, 3, -2}, {47.3, 2.9, 400}}};
+const Camera kParkCameras[4] = {{"high", {20, 30, -15}, {20, 0, 22}},
+                                {"player", {20, 1.7, 2}, {20, 0, 30}},
+                                {"ant", {30, 0.05, 5}, {30, 0.04, 19}},
+                                {"grazing", {20, 3, -2}, {20, 2.9, 400}}};
+const Camera kHillsCameras[4] = {{"high", {100, 40, -30}, {100, 0, 60}},
+                                 {"player", {100, 1.7, 5}, {100, 4, 60}},
+                                 {"ant", {100, 0.05, 5}, {100, 0.04, 19}},
+                                 {"grazing", {100, 3, -2}, {100, 2.9, 400}}};
 const BenchScene kScenes[] = {
-    {"football",
-     "football.json",
-     150,
-     0,
-     80,
-     240,
-     32,
-     0.05f,
-     0.08f,
-     {{"high", {47.5, 60, -40}, {47.5, 0, 80}},
-      {"player", {47.5, 1.7, 6}, {47.5, 0, 60}},
-      {"ant", {47.3, 0.05, 6}, {47.3, 0.04, 20}},
-      {"grazing", {47.3, 3, -2}, {47.3, 2.9, 400}}}},
-    {"park",
-     "park.json",
-     0,
-     0,
-     160,
-     160,
-     24,
-     0.05f,
-     0.08f,
-     {{"high", {20, 30, -15}, {20, 0, 22}},
-      {"player", {20, 1.7, 2}, {20, 0, 30}},
-      {"ant", {30, 0.05, 5}, {30, 0.04, 19}},
-      {"grazing", {20, 3, -2}, {20, 2.9, 400}}}},
-    {"hills",
-     "hills.json",
-     120,
-     0,
-     160,
-     200,
-     24,
-     0.0f,
-     0.0f,
-     {{"high", {100, 40, -30}, {100, 0, 60}},
-      {"player", {100, 1.7, 5}, {100, 4, 60}},
-      {"ant", {100, 0.05, 5}, {100, 0.04, 19}},
-      {"grazing", {100, 3, -2}, {100, 2.9, 400}}}},
+    {"football", "football.json", 150, 0, 80, 240, 32, 0.05f, 0.08f, kFootballCameras, false},
+    {"park", "park.json", 0, 0, 160, 160, 24, 0.05f, 0.08f, kParkCameras, false},
+    {"hills", "hills.json", 120, 0, 160, 200, 24, 0.0f, 0.0f, kHillsCameras, false},
+    {"football-real", "football.json", 150, 0, 80, 240, 0, 0.0f, 0.0f, kFootballCameras, true},
+    {"park-real", "park.json", 0, 0, 160, 160, 0, 0.0f, 0.0f, kParkCameras, true},
+    {"hills-real", "hills.json", 120, 0, 160, 200, 0, 0.0f, 0.0f, kHillsCameras, true},
 };
 constexpr int kSceneCount = int(sizeof(kScenes) / sizeof(kScenes[0]));
 
@@ -202,7 +192,19 @@ struct PreparedScene {
     const BenchScene* bench = nullptr;
     grass_sample::Scene scene;
     double cams[4][2][3] = {};
+    std::vector<int> cameras; // the cameras to measure
+    std::string identity;     // what defines its images but the camera (reference_key)
 };
+
+// FNV-1a 64 of a file's bytes, as hex; "none" for an empty path, "missing" for an unreadable one.
+std::string file_hash(const std::string& path) {
+    if (path.empty()) return "none";
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return "missing";
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return reference_hash(bytes.str());
+}
 
 bool prepare_scene(const Options& opt, const BenchScene& bs, PreparedScene* ps, std::string* error) {
     ps->bench = &bs;
@@ -230,7 +232,7 @@ bool prepare_scene(const Options& opt, const BenchScene& bs, PreparedScene* ps, 
     double* m = scene.field.maps.cell_to_map;
     m[0] = 1.0 / full_x, m[1] = 0.0, m[2] = 0.0, m[3] = 1.0 / full_z;
     m[4] = double(bs.first_x) / full_x, m[5] = double(bs.first_z) / full_z;
-    scene.patch.blade_count = bs.blade_count;
+    if (bs.blade_count > 0) scene.patch.blade_count = bs.blade_count;
     if (bs.width_max > 0.0f) scene.patch.width_min = bs.width_min, scene.patch.width_max = bs.width_max;
     // The hills scene draws no ground (the host's ground is flat); with the bench's
     // sparse blades the sky showed through the grass, so the flat ground at y = 0, under
@@ -240,6 +242,16 @@ bool prepare_scene(const Options& opt, const BenchScene& bs, PreparedScene* ps, 
         *error = std::string(bs.name) + ": the bench reads density through the map stack only";
         return false;
     }
+    ps->cameras = opt.cameras;
+    if (ps->cameras.empty()) ps->cameras = bs.real ? std::vector<int>{1} : std::vector<int>{0, 1, 2, 3};
+    // The scene file's bytes, its maps' texels and the bench's changes define its images.
+    std::ostringstream id;
+    id << "scene " << bs.name << " file " << file_hash(opt.scene_dir + "/" + bs.file) << " maps";
+    for (const auto& map : scene.maps) id << ' ' << reference_hash(std::string(map.pixels.begin(), map.pixels.end()));
+    id << " part " << bs.first_x << ',' << bs.first_z << ',' << bs.cells_x << ',' << bs.cells_z << " blades "
+       << scene.patch.blade_count << " width " << scene.patch.width_min << ',' << scene.patch.width_max << " seed "
+       << scene.patch.seed << " mirror " << scene.field.mirror_seed << " ground " << scene.ground;
+    ps->identity = id.str();
     return true;
 }
 
@@ -261,55 +273,68 @@ Variant preset_variant(int level) {
     return v;
 }
 
-// The reference's image and frame time per camera, of one scene and backend: what the
-// other frames of that scene and backend are measured against.
+// The ground truth of one scene and camera, shared by both backends: the reference rendered
+// supersampled with the scene's seeds (A, what every frame is measured against) and with the
+// other seeds (B), and B's error against A (the seed-to-seed error every error is divided by).
+struct Truth {
+    grass_host::Image a, b;
+    grass_bench::ImageError seed;
+};
+
+// The reference's timed frame per camera, of one scene and backend: the cost every other frame
+// of that scene and backend is set against.
 struct Reference {
-    grass_host::Image image[4];
     double ms[4] = {0, 0, 0, 0};
 };
 
-// Renders one variant of one scene on one backend: a host with the variant's sample count,
-// a context, a field made with grass_apply_quality, then every selected camera (one
-// warm-up and opt.frames timed frames each). The reference preset's frames go into *ref;
-// every other frame is measured against them. Appends a row per camera; a failed frame is
-// reported and sets *status to 1; false (with *error) when the run cannot go on.
-bool render_variant(const Options& opt, grass_backend backend, const PreparedScene& ps, const Variant& v,
-                    Reference* ref, std::chrono::steady_clock::time_point t_start, std::vector<Row>* rows, int* status,
-                    std::string* error) {
+// A host with a target of the given size and samples, a context, and a field of the scene made
+// with grass_apply_quality(q); the patch and mirror seeds moved by seed_offset.
+struct Session {
+    std::unique_ptr<grass_host::Host> host;
+    grass_context* ctx = nullptr;
+    grass_patch_desc pd{};
+    double field_ms = 0;
+    Session() = default;
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+    ~Session() {
+        if (ctx) grass_destroy_context(ctx);
+    }
+};
+
+bool open_session(const Options& opt, grass_backend backend, const PreparedScene& ps, const grass_quality_desc& q,
+                  uint64_t seed_offset, uint32_t width, uint32_t height, Session* session, std::string* error) {
     const char* be = grass_sample::backend_name(backend);
-    const BenchScene& bs = *ps.bench;
     const grass_sample::Scene& scene = ps.scene;
-    const grass_quality_desc& q = v.q;
     grass_host::TargetDesc td = grass_sample::target_desc(scene);
-    td.width = opt.width;
-    td.height = opt.height;
+    td.width = width;
+    td.height = height;
     td.samples = q.msaa_samples;
-    auto host = grass_host::Host::create(backend, td, error);
-    if (!host) {
+    session->host = grass_host::Host::create(backend, td, error);
+    if (!session->host) {
         *error = std::string("cannot create the ") + be + " host: " + *error;
         return false;
     }
     grass_context_desc cd = grass_default_context_desc();
     cd.log_fn = grass_sample::log_to_stderr;
     cd.cache_directory = opt.cache.c_str();
-    grass_context* ctx = nullptr;
-    const grass_result created = host->create_context(cd, &ctx);
+    const grass_result created = session->host->create_context(cd, &session->ctx);
     if (created != GRASS_SUCCESS) {
         *error = std::string("grass_create_context failed: ") + grass_result_string(created);
         return false;
     }
-    grass_patch_desc pd = scene.patch;
+    grass_context* ctx = session->ctx;
+    session->pd = scene.patch;
+    session->pd.seed += seed_offset;
     std::vector<grass_tier_desc> tiers;
     std::vector<grass_lod_test> tests;
-    if (!lod_setup(ctx, q, scene, &pd, &tiers, &tests, error)) {
-        grass_destroy_context(ctx);
-        return false;
-    }
+    if (!lod_setup(ctx, q, scene, &session->pd, &tiers, &tests, error)) return false;
     const auto t_field = std::chrono::steady_clock::now();
     grass_patch_id patch{};
     grass_field_desc fd = scene.field;
+    fd.mirror_seed += uint32_t(seed_offset);
     const char* call = "grass_create_patch";
-    grass_result r = grass_create_patch(ctx, &pd, &patch);
+    grass_result r = grass_create_patch(ctx, &session->pd, &patch);
     if (r == GRASS_SUCCESS) {
         call = "grass_create_map";
         r = grass_sample::create_scene_maps(ctx, scene, &fd.maps);
@@ -324,18 +349,132 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
         call = "grass_create_field";
         r = grass_create_field(ctx, &fd, &field);
     }
-    const double field_ms = seconds_since(t_field) * 1e3;
+    session->field_ms = seconds_since(t_field) * 1e3;
     if (r != GRASS_SUCCESS) {
-        const std::string e = grass_get_last_error(ctx);
-        grass_destroy_context(ctx);
-        *error = std::string(bs.name) + ", " + v.name + ": the field was refused: " + call +
-                 " failed: " + grass_result_string(r) + " (" + e + ")";
+        *error = std::string(ps.bench->name) + ": the field was refused: " + call +
+                 " failed: " + grass_result_string(r) + " (" + grass_get_last_error(ctx) + ")";
         return false;
     }
-    for (const int ci : opt.cameras) {
-        grass_view_desc view =
-            grass_host::make_view(*host, ps.cams[ci][0], ps.cams[ci][1], scene.fov_degrees, 0.05f, scene.far_m);
-        grass_sample::apply_light(scene, &view);
+    return true;
+}
+
+grass_view_desc camera_view(const Session& session, const PreparedScene& ps, int ci) {
+    grass_view_desc view = grass_host::make_view(*session.host, ps.cams[ci][0], ps.cams[ci][1], ps.scene.fov_degrees,
+                                                 0.05f, ps.scene.far_m);
+    grass_sample::apply_light(ps.scene, &view);
+    return view;
+}
+
+// The text that names everything defining a reference image: what it is (`kind`), the
+// backend that renders it, the library's version and its blade-drawing sources (hashed when
+// the build was configured), the scene, the camera, the size and the samples.
+std::string reference_key(const PreparedScene& ps, int ci, const std::string& kind, grass_backend backend,
+                          uint32_t width, uint32_t height, uint32_t supersample, uint64_t seed_offset) {
+    const grass_quality_desc q = grass_quality_preset(GRASS_QUALITY_REFERENCE);
+    std::ostringstream k;
+    k.precision(9);
+    k << "grass-measure reference: " << kind << " backend " << grass_sample::backend_name(backend) << " grass "
+      << GRASS_VERSION_MAJOR << '.' << GRASS_VERSION_MINOR << '.' << GRASS_VERSION_PATCH << " sources "
+      << GRASS_REFERENCE_SOURCE_HASH << ' ' << ps.identity << " seed+" << seed_offset << " camera "
+      << ps.bench->cameras[ci].name;
+    for (int e = 0; e < 2; ++e) k << ' ' << ps.cams[ci][e][0] << ',' << ps.cams[ci][e][1] << ',' << ps.cams[ci][e][2];
+    k << " size " << width << 'x' << height << " supersample " << supersample << " msaa " << q.msaa_samples
+      << " subdivisions " << q.blade_subdivisions;
+    return k.str();
+}
+
+// One reference image (blades everywhere) of a scene and camera, rendered supersample times
+// larger and box-downsampled in linear light to the bench's size (grass_bench::downsample_rgba),
+// from the cache when it has it. Rendered on GL (one truth serves both backends; the bench
+// reports how far the backends' references differ).
+bool truth_image(const Options& opt, const PreparedScene& ps, int ci, uint64_t seed_offset,
+                 std::chrono::steady_clock::time_point t_start, grass_host::Image* out, std::string* error) {
+    const grass_backend backend = GRASS_BACKEND_GL;
+    const uint32_t k = opt.supersample, w = opt.width * k, h = opt.height * k;
+    const std::string key = reference_key(ps, ci, "truth", backend, opt.width, opt.height, k, seed_offset);
+    CachedReference ref;
+    const char* what = seed_offset == 0 ? "A" : "B";
+    if (load_reference(opt.references, key, &ref)) {
+        std::fprintf(stderr, "[%6.0f s] %-13s %-7s truth %s from the cache (%s, rendered in %.0f s)\n",
+                     seconds_since(t_start), ps.bench->name, ps.bench->cameras[ci].name, what,
+                     reference_hash(key).c_str(), ref.render_s);
+        *out = std::move(ref.image);
+        return true;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    Session session;
+    if (!open_session(opt, backend, ps, grass_quality_preset(GRASS_QUALITY_REFERENCE), seed_offset, w, h, &session,
+                      error))
+        return false;
+    grass_host::Image big;
+    const grass_result r = session.host->render(session.ctx, camera_view(session, ps, ci), nullptr, &big, error);
+    if (r != GRASS_SUCCESS) {
+        *error = std::string(ps.bench->name) + " truth: rendering failed: " + grass_result_string(r) + " (" +
+                 grass_get_last_error(session.ctx) + ") " + *error;
+        return false;
+    }
+    ref.image.rgba =
+        grass_bench::downsample_rgba(big.rgba.data(), big.width, big.height, k, &ref.image.width, &ref.image.height);
+    ref.render_s = seconds_since(t0);
+    std::fprintf(stderr, "[%6.0f s] %-13s %-7s truth %s rendered at %ux%u in %.1f s (%s)\n", seconds_since(t_start),
+                 ps.bench->name, ps.bench->cameras[ci].name, what, w, h, ref.render_s, reference_hash(key).c_str());
+    if (!store_reference(opt.references, key, ref, error)) return false;
+    *out = std::move(ref.image);
+    return true;
+}
+
+// The truths of every measured camera of a scene.
+bool make_truths(const Options& opt, const PreparedScene& ps, std::chrono::steady_clock::time_point t_start,
+                 Truth truth[4], std::string* error) {
+    for (const int ci : ps.cameras) {
+        if (!truth_image(opt, ps, ci, 0, t_start, &truth[ci].a, error) ||
+            !truth_image(opt, ps, ci, opt.seed_step, t_start, &truth[ci].b, error))
+            return false;
+        truth[ci].seed =
+            grass_bench::image_error(truth[ci].a.rgba.data(), truth[ci].b.rgba.data(), opt.width, opt.height);
+    }
+    return true;
+}
+
+// The key of the reference's timed frames (the real scenes': one frame, no warm-up).
+std::string timed_reference_key(const Options& opt, const PreparedScene& ps, int ci, grass_backend backend) {
+    const int frames = ps.bench->real ? 1 : opt.frames;
+    return reference_key(ps, ci, "timed frames " + std::to_string(frames), backend, opt.width, opt.height, 1, 0);
+}
+
+// The reference's frame times from the cache, for a run without the reference preset.
+void cached_reference_times(const Options& opt, const PreparedScene& ps, grass_backend backend, Reference* ref) {
+    for (const int ci : ps.cameras) {
+        CachedReference cached;
+        if (load_reference(opt.references, timed_reference_key(opt, ps, ci, backend), &cached))
+            ref->ms[ci] = cached.frame_ms;
+    }
+}
+
+// Renders one variant of one scene on one backend: a host with the variant's sample count,
+// a context, a field made with grass_apply_quality, then every selected camera (one
+// warm-up and opt.frames timed frames each; the reference of a real scene: one frame, timed).
+// The reference preset's frame times go into *ref, and its frames into the cache (a cached
+// one is not rendered again); every frame is measured against the truth. Appends a row per
+// camera; a failed frame is reported and sets *status to 1; false (with *error) when the run
+// cannot go on.
+bool render_variant(const Options& opt, grass_backend backend, const PreparedScene& ps, const Variant& v,
+                    const Truth truth[4], Reference* ref, std::chrono::steady_clock::time_point t_start,
+                    std::vector<Row>* rows, int* status, std::string* error) {
+    const char* be = grass_sample::backend_name(backend);
+    const BenchScene& bs = *ps.bench;
+    const grass_quality_desc& q = v.q;
+    const bool is_reference = v.level == GRASS_QUALITY_REFERENCE && v.knob == "preset";
+    Session session;
+    if (!open_session(opt, backend, ps, q, 0, opt.width, opt.height, &session, error)) {
+        *error += std::string(" (") + v.name + ")";
+        return false;
+    }
+    grass_context* ctx = session.ctx;
+    const int first = is_reference && bs.real ? 1 : 0; // frame 0: the warm-up
+    const int frames = is_reference && bs.real ? 1 : opt.frames;
+    for (const int ci : ps.cameras) {
+        const grass_view_desc view = camera_view(session, ps, ci);
         Row row;
         row.scene = bs.name;
         row.camera = bs.cameras[ci].name;
@@ -345,82 +484,92 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
         row.value = v.value;
         row.level = v.level;
         row.msaa = q.msaa_samples;
-        row.blades = pd.blade_count;
-        row.subdivisions = pd.subdivisions;
-        row.field_ms = field_ms;
+        row.blades = session.pd.blade_count;
+        row.subdivisions = session.pd.subdivisions;
+        row.field_ms = session.field_ms;
         grass_host::Image image;
-        std::vector<double> wall, plan, gpu[GRASS_TIER_KIND_COUNT];
-        grass_frame_stats stats{};
-        for (int f = 0; f <= opt.frames && r == GRASS_SUCCESS; ++f) {
-            grass_host::Image* dst = f == 0 ? &image : nullptr;
-            grass_host::Image scratch;
-            const auto f0 = std::chrono::steady_clock::now();
-            r = host->render(ctx, view, nullptr, dst ? dst : &scratch, error);
-            const double ms = seconds_since(f0) * 1e3;
-            if (r == GRASS_SUCCESS)
-                grass_sample::check(grass_get_frame_stats(ctx, &stats), "grass_get_frame_stats", ctx);
-            if (f == 0) continue; // the warm-up: uploads, first use of the pipelines
-            wall.push_back(ms);
-            plan.push_back(stats.plan_ms);
-            double g[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
-            grass_bool available = 0;
-            grass_sample::check(grass_get_tier_gpu_ms(ctx, g, &available), "grass_get_tier_gpu_ms", ctx);
-            if (available) {
-                for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) gpu[t].push_back(g[t]);
+        const std::string key = is_reference ? timed_reference_key(opt, ps, ci, backend) : std::string();
+        CachedReference cached;
+        grass_result r = GRASS_SUCCESS;
+        if (is_reference && load_reference(opt.references, key, &cached)) {
+            image = std::move(cached.image);
+            row.frame_ms = row.frame_min_ms = cached.frame_ms;
+            row.cached = true;
+        } else {
+            std::vector<double> wall, plan, gpu[GRASS_TIER_KIND_COUNT];
+            grass_frame_stats stats{};
+            for (int f = first; f <= frames && r == GRASS_SUCCESS; ++f) {
+                grass_host::Image scratch;
+                const auto f0 = std::chrono::steady_clock::now();
+                r = session.host->render(ctx, view, nullptr, f == first ? &image : &scratch, error);
+                const double ms = seconds_since(f0) * 1e3;
+                if (r == GRASS_SUCCESS)
+                    grass_sample::check(grass_get_frame_stats(ctx, &stats), "grass_get_frame_stats", ctx);
+                if (f == 0) continue; // the warm-up: uploads, first use of the pipelines
+                wall.push_back(ms);
+                plan.push_back(stats.plan_ms);
+                double g[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
+                grass_bool available = 0;
+                grass_sample::check(grass_get_tier_gpu_ms(ctx, g, &available), "grass_get_tier_gpu_ms", ctx);
+                if (available) {
+                    for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) gpu[t].push_back(g[t]);
+                }
+            }
+            if (r != GRASS_SUCCESS) {
+                std::fprintf(stderr, "grass-measure bench: %s %s %s %s: rendering failed: %s (%s) %s\n", bs.name,
+                             row.camera.c_str(), be, row.preset.c_str(), grass_result_string(r),
+                             grass_get_last_error(ctx), error->c_str());
+                *status = 1;
+                continue;
+            }
+            row.frame_ms = median(wall);
+            row.frame_min_ms = *std::min_element(wall.begin(), wall.end());
+            row.plan_ms = median(plan);
+            row.gpu_available = !gpu[0].empty();
+            for (int t = 0; t < GRASS_TIER_KIND_COUNT && row.gpu_available; ++t) row.gpu_ms[t] = median(gpu[t]);
+            row.triangles = stats.triangles;
+            for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) row.instances[t] = stats.instances[t];
+            if (is_reference) {
+                cached.image = image;
+                cached.frame_ms = row.frame_ms;
+                cached.render_s = std::accumulate(wall.begin(), wall.end(), 0.0) / 1e3;
+                if (!store_reference(opt.references, key, cached, error)) return false;
             }
         }
-        if (r != GRASS_SUCCESS) {
-            std::fprintf(stderr, "grass-measure bench: %s %s %s %s: rendering failed: %s (%s) %s\n", bs.name,
-                         row.camera.c_str(), be, row.preset.c_str(), grass_result_string(r), grass_get_last_error(ctx),
-                         error->c_str());
-            *status = 1;
-            r = GRASS_SUCCESS;
-            continue;
-        }
-        row.frame_ms = median(wall);
-        row.frame_min_ms = *std::min_element(wall.begin(), wall.end());
-        row.plan_ms = median(plan);
-        row.gpu_available = !gpu[0].empty();
-        for (int t = 0; t < GRASS_TIER_KIND_COUNT && row.gpu_available; ++t) row.gpu_ms[t] = median(gpu[t]);
-        row.triangles = stats.triangles;
-        for (int t = 0; t < GRASS_TIER_KIND_COUNT; ++t) row.instances[t] = stats.instances[t];
         const std::string stem = opt.out + "/images/" + bs.name + "-" + row.camera + "-" + be + "-" + v.file;
-        if (!grass_host::write_png(stem + ".png", image, error)) {
-            grass_destroy_context(ctx);
-            return false;
-        }
-        if (v.level == GRASS_QUALITY_REFERENCE) {
-            ref->image[ci] = image;
-            ref->ms[ci] = row.frame_ms;
-        } else if (!ref->image[ci].rgba.empty()) {
-            const auto& reference = ref->image[ci];
-            row.ratio = row.frame_ms / ref->ms[ci];
-            row.ssim = grass_bench::ssim_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height);
-            row.psnr = grass_bench::psnr_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height);
-            grass_host::Image diff;
-            diff.width = image.width;
-            diff.height = image.height;
-            diff.rgba =
-                grass_bench::difference_rgba(reference.rgba.data(), image.rgba.data(), image.width, image.height, 4.0);
-            if (!grass_host::write_png(stem + "-error.png", diff, error)) {
-                grass_destroy_context(ctx);
-                return false;
-            }
-        }
+        if (!grass_host::write_png(stem + ".png", image, error)) return false;
+        if (is_reference) ref->ms[ci] = row.frame_ms;
+        // Without the reference's frame (--preset without reference) the cost is unknown.
+        row.ratio = ref->ms[ci] > 0 ? row.frame_ms / ref->ms[ci] : std::numeric_limits<double>::quiet_NaN();
+        // Against the truth of the scene's seeds, normalised by the other seeds' error.
+        const grass_host::Image& t = truth[ci].a;
+        const uint8_t* img = image.rgba.data();
+        row.ssim = grass_bench::ssim_rgba(t.rgba.data(), img, image.width, image.height);
+        row.psnr = grass_bench::psnr_rgba(t.rgba.data(), img, image.width, image.height);
+        row.ssim_other = grass_bench::ssim_rgba(truth[ci].b.rgba.data(), img, image.width, image.height);
+        row.error = grass_bench::image_error(t.rgba.data(), img, image.width, image.height);
+        row.seed = truth[ci].seed;
+        row.norm = grass_bench::normalised(row.error, row.seed);
+        row.native_reference = is_reference ? image : grass_host::Image{};
+        grass_host::Image diff;
+        diff.width = image.width;
+        diff.height = image.height;
+        diff.rgba = grass_bench::difference_rgba(t.rgba.data(), img, image.width, image.height, 4.0);
+        if (!grass_host::write_png(stem + "-error.png", diff, error)) return false;
         std::fprintf(stderr,
-                     "[%6.0f s] %-8s %-7s %s %-9s frame %8.1f ms (x%.3f) plan %6.2f ms  gpu %s  SSIM %.4f  PSNR %s  "
-                     "%llu triangles\n",
+                     "[%6.0f s] %-13s %-7s %s %-9s frame %8.1f ms (x%.3f)%s  1-SSIM/seed %.2f %.2f %.2f  RMS/seed "
+                     "%.2f %.2f %.2f  band colour %+.1f (seed %.1f)  %llu triangles\n",
                      seconds_since(t_start), bs.name, row.camera.c_str(), be, row.preset.c_str(), row.frame_ms,
-                     row.ratio, row.plan_ms, gpu_text(row, -1).c_str(), row.ssim, psnr_text(row.psnr).c_str(),
-                     static_cast<unsigned long long>(row.triangles));
+                     row.ratio, row.cached ? " cached" : "", row.norm.ssim_error[0], row.norm.ssim_error[1],
+                     row.norm.ssim_error[2], row.norm.rms[0], row.norm.rms[1], row.norm.rms[2], row.error.band_colour,
+                     std::fabs(row.seed.band_colour), static_cast<unsigned long long>(row.triangles));
         rows->push_back(row);
     }
-    if (host->validation_messages() != 0) {
-        std::fprintf(stderr, "grass-measure bench: %u validation messages:\n%s\n", host->validation_messages(),
-                     host->validation_log().c_str());
+    if (session.host->validation_messages() != 0) {
+        std::fprintf(stderr, "grass-measure bench: %u validation messages:\n%s\n", session.host->validation_messages(),
+                     session.host->validation_log().c_str());
         *status = 1;
     }
-    grass_destroy_context(ctx);
     return true;
 }
 
@@ -496,6 +645,11 @@ int scene_index(const std::string& name) {
         if (name == kScenes[s].name) return s;
     return -1;
 }
+int preset_index(const std::string& name) {
+    for (int l = 0; l < GRASS_QUALITY_LEVEL_COUNT; ++l)
+        if (name == kLevelNames[l]) return l;
+    return -1;
+}
 int camera_index(const std::string& name) {
     for (int c = 0; c < 4; ++c)
         if (name == kScenes[0].cameras[c].name) return c;
@@ -519,6 +673,40 @@ void add_names_option(CLI::App& app, const std::string& option, int (*index)(con
         ->trigger_on_parse();
 }
 
+// The reference cache's directory when --references is not given: $XDG_CACHE_HOME or
+// ~/.cache, then grass-measure/references; ./grass-measure-references without a home.
+std::string default_reference_dir() {
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    const char* home = std::getenv("HOME");
+    if (xdg && *xdg) return std::string(xdg) + "/grass-measure/references";
+    if (home && *home) return std::string(home) + "/.cache/grass-measure/references";
+    return "grass-measure-references";
+}
+
+// On each Vulkan reference row whose GL reference row is there too: the mean and largest
+// difference of their images over R, G, B, in sRGB levels (Row::backend_diff_*).
+void note_backend_agreement(std::vector<Row>* rows) {
+    for (Row& vk : *rows) {
+        if (vk.backend != "vk" || vk.native_reference.rgba.empty()) continue;
+        for (const Row& gl : *rows) {
+            if (gl.backend != "gl" || gl.scene != vk.scene || gl.camera != vk.camera ||
+                gl.native_reference.rgba.size() != vk.native_reference.rgba.size() || gl.native_reference.rgba.empty())
+                continue;
+            const auto& a = gl.native_reference.rgba;
+            const auto& b = vk.native_reference.rgba;
+            double sum = 0, most = 0;
+            for (size_t i = 0; i < a.size(); ++i) {
+                if (i % 4 == 3) continue;
+                const double d = std::fabs(double(a[i]) - double(b[i]));
+                sum += d;
+                most = std::max(most, d);
+            }
+            vk.backend_diff_mean = sum / (double(a.size()) * 0.75);
+            vk.backend_diff_max = most;
+        }
+    }
+}
+
 int run(Options opt, bool quick) {
     if (quick || opt.sweep) {
         if (opt.scenes.empty()) opt.scenes = {0};
@@ -526,37 +714,45 @@ int run(Options opt, bool quick) {
     }
     if (opt.scenes.empty())
         for (int s = 0; s < kSceneCount; ++s) opt.scenes.push_back(s);
-    if (opt.cameras.empty()) opt.cameras = {0, 1, 2, 3};
     if (opt.cache.empty()) opt.cache = opt.out + "/cache";
+    if (opt.references.empty()) opt.references = default_reference_dir();
     const std::string docs = opt.docs.empty() ? opt.out : opt.docs;
     if (!grass_sample::make_dirs(opt.out + "/images") || !grass_sample::make_dirs(opt.cache) ||
-        !grass_sample::make_dirs(docs)) {
-        throw grass_sample::Failure("cannot create " + opt.out + ", " + opt.cache + " or " + docs);
+        !grass_sample::make_dirs(docs) || !grass_sample::make_dirs(opt.references)) {
+        throw grass_sample::Failure("cannot create " + opt.out + ", " + opt.cache + ", " + opt.references + " or " +
+                                    docs);
     }
 
     std::vector<Variant> variants;
     if (opt.sweep) {
         variants = sweep_variants();
     } else {
-        for (int level = 0; level < GRASS_QUALITY_LEVEL_COUNT; ++level) variants.push_back(preset_variant(level));
+        for (int level = 0; level < GRASS_QUALITY_LEVEL_COUNT; ++level) {
+            if (opt.presets.empty() || std::count(opt.presets.begin(), opt.presets.end(), level) > 0)
+                variants.push_back(preset_variant(level));
+        }
     }
     const auto t_start = std::chrono::steady_clock::now();
     std::vector<Row> rows;
     int status = 0;
-    for (const grass_backend backend : opt.backends) {
-        for (const int si : opt.scenes) {
-            PreparedScene ps;
-            std::string error;
-            if (!prepare_scene(opt, kScenes[si], &ps, &error)) throw grass_sample::Failure(error);
-            // The reference comes first (variants[0]): every other frame is measured against it.
+    for (const int si : opt.scenes) {
+        PreparedScene ps;
+        std::string error;
+        if (!prepare_scene(opt, kScenes[si], &ps, &error)) throw grass_sample::Failure(error);
+        Truth truth[4];
+        if (!make_truths(opt, ps, t_start, truth, &error)) throw grass_sample::Failure(error);
+        for (const grass_backend backend : opt.backends) {
+            // The reference comes first (variants[0]): every other frame's cost is set against it.
             Reference reference;
+            if (variants.front().level != GRASS_QUALITY_REFERENCE) cached_reference_times(opt, ps, backend, &reference);
             for (const Variant& v : variants) {
-                if (!render_variant(opt, backend, ps, v, &reference, t_start, &rows, &status, &error)) {
+                if (!render_variant(opt, backend, ps, v, truth, &reference, t_start, &rows, &status, &error)) {
                     throw grass_sample::Failure(error);
                 }
             }
         }
     }
+    note_backend_agreement(&rows);
     auto scene_rank = [&](const Row& r) {
         int s = 0, c = 0;
         for (int k = 0; k < kSceneCount; ++k)
@@ -565,6 +761,7 @@ int run(Options opt, bool quick) {
             if (r.camera == kScenes[0].cameras[k].name) c = k;
         return s * 4 + c;
     };
+    for (Row& r : rows) r.native_reference = grass_host::Image{}; // no longer needed
     if (opt.sweep) {
         // Rows in the order backend, scene, camera, then the sweep's order.
         auto rank = [&](const Row& r) { return (r.backend == "vk") * kSceneCount * 4 + scene_rank(r); };
@@ -630,7 +827,11 @@ Subcommand add_bench(CLI::App& measure) {
                             "football, park or hills (repeatable; default all)", &o->scenes);
     bench::add_names_option(*app, "--camera", bench::camera_index, "camera", "high, player, ant, grazing",
                             "high, player, ant or grazing (repeatable; default all)", &o->cameras);
-    app->add_flag("--quick", *quick, "one scene and one camera (football, player): a smoke run");
+    bench::add_names_option(*app, "--preset", bench::preset_index, "preset", "reference, high, default, low, fastest",
+                            "reference, high, default, low or fastest (repeatable; default all). Without reference "
+                            "the cost against it is n/a, unless the reference's frame is in the cache",
+                            &o->presets);
+    app->add_flag("--quick", *quick, "one scene and one camera (the reduced football, player): a smoke run");
     app->add_flag("--sweep", o->sweep,
                   "instead of the presets: DEFAULT with one knob at a time changed (a few values each around "
                   "DEFAULT's), the REFERENCE and DEFAULT presets as yardsticks; writes sweep.csv and sweep.md (not "
@@ -643,6 +844,13 @@ Subcommand add_bench(CLI::App& measure) {
     app->add_option("--docs", o->docs, "bench.csv, bench.md and cost-vs-error.svg (default: --out)");
     app->add_option("--scenes", o->scene_dir, "the scene files")->capture_default_str();
     app->add_option("--cache", o->cache, "baked-slice cache (default OUT/cache)");
+    app->add_option("--references", o->references,
+                    "the reference images' cache (default $XDG_CACHE_HOME or ~/.cache, then grass-measure/references)");
+    app->add_option("--supersample", o->supersample,
+                    "the truth is rendered this many times larger per axis (with the reference's 4 samples) and "
+                    "box-downsampled; 1: the reference at the bench's size")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 8));
     return {app, [o, quick]() { return bench::run(*o, *quick); }};
 }
 

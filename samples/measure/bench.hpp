@@ -6,8 +6,14 @@
 // target with the preset's MSAA sample count. Per frame it measures the wall time of a
 // rendered and read-back frame (median of --frames frames after one warm-up), the plan time
 // (grass_frame_stats.plan_ms, median), the GPU time per tier where the driver has timer
-// queries (grass_get_tier_gpu_ms), and the image error against the reference of the same
-// scene, camera and backend: SSIM on luma (Wang et al. 2004) and PSNR on the sRGB channels.
+// queries (grass_get_tier_gpu_ms), and the image error against the truth of the same scene and
+// camera (accuracy.hpp): the reference supersampled (--supersample times larger per axis,
+// box-downsampled in linear light) with the scene's seeds, its error divided by that of the
+// truth rendered with other patch and mirror seeds, at full size, x2 and x4; per row band the
+// mean-colour and coverage differences; SSIM and PSNR too. The truths and the reference's timed
+// frames are cached on disk (reference_cache.hpp, --references). The real scenes
+// (football-real, park-real, hills-real) keep the scene files' patches; by default they are
+// measured from the player camera only.
 // It writes each frame and an amplified difference image into --out, and a CSV, a Markdown
 // table (also printed) and an SVG plot of cost ratio against 1 - SSIM into --docs (or --out).
 //
@@ -21,6 +27,9 @@
 #pragma once
 
 #include <grass/grass.h>
+
+#include "accuracy.hpp"
+#include "headless_host.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -38,11 +47,15 @@ struct Options {
     std::vector<grass_backend> backends = {GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN};
     std::vector<int> scenes;  // indices into kScenes; empty = all
     std::vector<int> cameras; // 0..3; empty = all
+    std::vector<int> presets; // quality levels; empty = all (ignored by --sweep)
     std::string scene_dir = GRASS_SCENE_DIR;
     std::string out = "grass-bench-out";
-    std::string docs;  // CSV, Markdown and SVG here; empty: into --out
-    std::string cache; // slice cache; empty: <out>/cache
+    std::string docs;       // CSV, Markdown and SVG here; empty: into --out
+    std::string cache;      // slice cache; empty: <out>/cache
+    std::string references; // reference image cache; empty: default_reference_dir()
     uint32_t width = 320, height = 180;
+    uint32_t supersample = 2; // the truth: rendered supersample times larger per axis, box-downsampled
+    uint64_t seed_step = 1;   // the other sample of the truth: patch and mirror seeds + seed_step
     int frames = 3;
     bool sweep = false; // --sweep: one knob at a time from DEFAULT instead of the presets
 };
@@ -55,7 +68,14 @@ struct Row {
     double field_ms = 0, frame_ms = 0, frame_min_ms = 0, ratio = 1, plan_ms = 0;
     bool gpu_available = false;
     double gpu_ms[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
-    double ssim = 1, psnr = std::numeric_limits<double>::infinity();
+    double ssim = 1, psnr = std::numeric_limits<double>::infinity(); // against the truth (seeds A)
+    double ssim_other = 1;                                           // against the truth of the other seeds (B)
+    grass_bench::ImageError error;                                   // against the truth (seeds A)
+    grass_bench::ImageError seed;                                    // the truth with seeds B against A
+    grass_bench::ImageError norm;                                    // error / seed
+    bool cached = false;                                  // the reference's frame came from the reference cache
+    double backend_diff_mean = -1, backend_diff_max = -1; // vk reference rows: against GL's, sRGB levels
+    grass_host::Image native_reference;                   // reference rows, until the run compares the backends
     uint64_t triangles = 0, instances[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
     double gpu_total() const { return gpu_ms[0] + gpu_ms[1] + gpu_ms[2]; }
 };

@@ -34,6 +34,19 @@ std::string error_change_text(const Row& r, const Row* base) {
     return base ? fmt("%+.4f", base->ssim - r.ssim) : "n/a";
 }
 
+// "a / b / c" of the three scales' values.
+std::string scales_text(const double* v, const char* f = "%.2f") {
+    return fmt(f, v[0]) + " / " + fmt(f, v[1]) + " / " + fmt(f, v[2]);
+}
+// The CSV's values of the three scales.
+std::string scales_csv(const double* v) {
+    return fmt("%.5f", v[0]) + ',' + fmt("%.5f", v[1]) + ',' + fmt("%.5f", v[2]);
+}
+// The largest of the three scales' values.
+double worst(const double* v) { return std::max({v[0], v[1], v[2]}); }
+// The worst normalised error of a row: 1 - SSIM and RMS, every scale.
+double worst_normalised(const Row& r) { return std::max(worst(r.norm.ssim_error), worst(r.norm.rms)); }
+
 } // namespace
 
 // ---- Output -----------------------------------------------------------------------------
@@ -42,14 +55,26 @@ std::string csv(const std::vector<Row>& rows, const Options& o) {
     std::ostringstream s;
     s << "scene,camera,backend,preset,width,height,msaa,blades_per_patch,subdivisions,frame_ms,frame_min_ms,cost_ratio,"
          "plan_ms,gpu_ms,gpu_geometry_ms,gpu_volume_ms,gpu_image_ms,ssim,psnr_db,triangles,geometry_instances,"
-         "volume_instances,image_instances,field_create_ms\n";
+         "volume_instances,image_instances,field_create_ms,reference_cached,"
+         "ssim_error_x1,ssim_error_x2,ssim_error_x4,rms_x1,rms_x2,rms_x4,"
+         "seed_ssim_error_x1,seed_ssim_error_x2,seed_ssim_error_x4,seed_rms_x1,seed_rms_x2,seed_rms_x4,"
+         "norm_ssim_error_x1,norm_ssim_error_x2,norm_ssim_error_x4,norm_rms_x1,norm_rms_x2,norm_rms_x4,"
+         "band_colour_levels,colour_band,seed_band_colour_levels,band_coverage,coverage_band,seed_band_coverage,"
+         "supersample,backend_diff_mean_levels,backend_diff_max_levels,ssim_vs_other_seeds\n";
     for (const Row& r : rows) {
         s << r.scene << ',' << r.camera << ',' << r.backend << ',' << r.preset << ',' << o.width << ',' << o.height
           << ',' << r.msaa << ',' << r.blades << ',' << r.subdivisions << ',' << fmt("%.2f", r.frame_ms) << ','
           << fmt("%.2f", r.frame_min_ms) << ',' << fmt("%.4f", r.ratio) << ',' << fmt("%.3f", r.plan_ms) << ','
           << gpu_text(r, -1) << ',' << gpu_text(r, 0) << ',' << gpu_text(r, 1) << ',' << gpu_text(r, 2) << ','
           << fmt("%.5f", r.ssim) << ',' << psnr_text(r.psnr) << ',' << r.triangles << ',' << r.instances[0] << ','
-          << r.instances[1] << ',' << r.instances[2] << ',' << fmt("%.1f", r.field_ms) << '\n';
+          << r.instances[1] << ',' << r.instances[2] << ',' << fmt("%.1f", r.field_ms) << ',' << r.cached << ','
+          << scales_csv(r.error.ssim_error) << ',' << scales_csv(r.error.rms) << ',' << scales_csv(r.seed.ssim_error)
+          << ',' << scales_csv(r.seed.rms) << ',' << scales_csv(r.norm.ssim_error) << ',' << scales_csv(r.norm.rms)
+          << ',' << fmt("%.3f", r.error.band_colour) << ',' << r.error.colour_band << ','
+          << fmt("%.3f", r.seed.band_colour) << ',' << fmt("%.4f", r.error.band_coverage) << ','
+          << r.error.coverage_band << ',' << fmt("%.4f", r.seed.band_coverage) << ',' << o.supersample << ','
+          << fmt("%.3f", r.backend_diff_mean) << ',' << fmt("%.0f", r.backend_diff_max) << ','
+          << fmt("%.5f", r.ssim_other) << '\n';
     }
     return s.str();
 }
@@ -63,10 +88,55 @@ std::string markdown(const std::vector<Row>& rows, const Options& o, double tota
          "read-back "
          "frame, median of "
       << o.frames
-      << " after one warm-up; cost = frame / the reference's frame (same scene, camera, backend); "
-         "SSIM (luma, Gaussian window 11, sigma 1.5) and PSNR (sRGB RGB) against the reference's image of the same "
-         "backend; GPU = grass_get_tier_gpu_ms summed over the tiers (n/a: no timer result). The run took "
+      << " after one warm-up (the real scenes' reference: one frame); cost = frame / the reference's frame (same "
+         "scene, camera, backend). The truth: the reference (blades everywhere, 4 samples) rendered "
+      << o.supersample << " x " << o.supersample
+      << " times larger and box-downsampled in linear light, on GL, with the scene's patch and mirror seeds (A) and "
+         "with both seeds + "
+      << o.seed_step
+      << " (B). Errors against truth A: 1 - SSIM (luma, Gaussian window 11, sigma 1.5) and RMS (sRGB levels) at "
+         "full size, x2 and x4 box-downsampled; / seed = divided by truth B's error against A (1.0: as close as "
+         "another sample of the truth). Band colour: the mean colour of the image minus the truth's, sRGB levels, in "
+         "the one of 12 row bands where it is largest (negative: darker); coverage: the share of grass pixels, "
+         "likewise. SSIM and PSNR in the tables below are against truth A too. GPU = grass_get_tier_gpu_ms summed "
+         "over the tiers (n/a: no timer result). The run took "
       << fmt("%.0f", total_s) << " s.\n\n";
+    s << "## Accuracy: error / seed-to-seed error\n\n"
+      << "| scene | camera | backend | preset | cost / reference | 1 - SSIM / seed x1 / x2 / x4 | RMS / seed x1 / x2 "
+         "/ x4 | worst / seed | band colour (seed) | band coverage (seed) |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows) {
+        s << "| " << r.scene << " | " << r.camera << " | " << r.backend << " | " << r.preset << " | "
+          << (std::isnan(r.ratio) ? std::string("n/a") : fmt("%.3f", r.ratio)) << (r.cached ? " (cached)" : "") << " | "
+          << scales_text(r.norm.ssim_error) << " | " << scales_text(r.norm.rms) << " | "
+          << fmt("%.2f", worst_normalised(r)) << " | " << fmt("%+.1f", r.error.band_colour) << " ("
+          << fmt("%.1f", std::fabs(r.seed.band_colour)) << ") | " << fmt("%+.3f", r.error.band_coverage) << " ("
+          << fmt("%.3f", std::fabs(r.seed.band_coverage)) << ") |\n";
+    }
+    s << "\n## The seed-to-seed error: truth B against truth A\n\n"
+      << "| scene | camera | SSIM x1 / x2 / x4 | RMS x1 / x2 / x4 (levels) | band colour | band coverage |\n"
+      << "|---|---|---|---|---|---|\n";
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const Row& r = rows[i];
+        // The first row of each scene and camera (every row of one carries its seed-to-seed error).
+        if (i > 0 && rows[i - 1].scene == r.scene && rows[i - 1].camera == r.camera) continue;
+        const double ssim[3] = {1 - r.seed.ssim_error[0], 1 - r.seed.ssim_error[1], 1 - r.seed.ssim_error[2]};
+        s << "| " << r.scene << " | " << r.camera << " | " << scales_text(ssim, "%.3f") << " | "
+          << scales_text(r.seed.rms) << " | " << fmt("%+.1f", r.seed.band_colour) << " | "
+          << fmt("%+.3f", r.seed.band_coverage) << " |\n";
+    }
+    bool agreement = false;
+    for (const Row& r : rows) agreement = agreement || r.backend_diff_mean >= 0;
+    if (agreement) {
+        s << "\n## The backends' references (the same seeds, the bench's size): Vulkan against GL\n\n"
+          << "| scene | camera | mean difference (levels) | largest (levels) |\n|---|---|---|---|\n";
+        for (const Row& r : rows) {
+            if (r.backend_diff_mean < 0) continue;
+            s << "| " << r.scene << " | " << r.camera << " | " << fmt("%.4f", r.backend_diff_mean) << " | "
+              << fmt("%.0f", r.backend_diff_max) << " |\n";
+        }
+    }
+    s << "\n";
     // Summary: per backend and preset, the median over scenes and cameras.
     s << "## Summary: median over scenes and cameras\n\n"
       << "| backend | preset | cost / reference | 1 - SSIM | PSNR (dB) | frame (ms) | plan (ms) |\n"
@@ -103,7 +173,8 @@ std::string markdown(const std::vector<Row>& rows, const Options& o, double tota
     return s.str();
 }
 
-// x: cost relative to the reference, log10; y: 1 - SSIM. A marker per frame: colour per
+// x: cost relative to the reference, log10; y: the worst normalised error (1 - SSIM and RMS at
+// the three scales, each divided by the seed-to-seed error). A marker per frame: colour per
 // preset, circle GL, square Vulkan; hovering shows the frame.
 std::string svg(const std::vector<Row>& rows) {
     const double W = 760, H = 480, L = 70, R = 150, T = 40, B = 60;
@@ -112,7 +183,7 @@ std::string svg(const std::vector<Row>& rows) {
         if (!(r.ratio > 0) || !std::isfinite(r.ratio)) continue;
         xmin = std::min(xmin, std::floor(std::log10(r.ratio)));
         xmax = std::max(xmax, std::ceil(std::log10(r.ratio)));
-        ymax = std::max(ymax, 1.0 - r.ssim);
+        ymax = std::max(ymax, worst_normalised(r));
     }
     if (xmax <= xmin) xmax = xmin + 1;
     // A tidy top for the y axis: 1, 2 or 5 times a power of ten.
@@ -157,13 +228,14 @@ std::string svg(const std::vector<Row>& rows) {
     s << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 18
       << "\" text-anchor=\"middle\">frame cost / reference's frame cost (log scale)</text>\n"
       << "<text transform=\"translate(18," << (T + H - B) / 2
-      << ") rotate(-90)\" text-anchor=\"middle\">1 - SSIM against the reference</text>\n";
+      << ") rotate(-90)\" text-anchor=\"middle\">worst error / seed-to-seed error</text>\n";
     // Markers.
     for (const Row& r : rows) {
         if (!(r.ratio > 0) || !std::isfinite(r.ratio)) continue;
-        const double x = px(r.ratio), y = py(1.0 - r.ssim);
+        const double x = px(r.ratio), y = py(worst_normalised(r));
         const std::string title = "<title>" + r.scene + ", " + r.camera + ", " + r.backend + ", " + r.preset +
-                                  ": cost " + fmt("%.3f", r.ratio) + ", SSIM " + fmt("%.4f", r.ssim) + "</title>";
+                                  ": cost " + fmt("%.3f", r.ratio) + ", error / seed " +
+                                  fmt("%.2f", worst_normalised(r)) + "</title>";
         const char* c = kLevelColors[r.level];
         if (r.backend == "gl") {
             s << "<circle cx=\"" << fmt("%.1f", x) << "\" cy=\"" << fmt("%.1f", y) << "\" r=\"4\" fill=\"" << c

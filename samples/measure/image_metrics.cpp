@@ -127,6 +127,82 @@ double psnr_rgba(const uint8_t* a, const uint8_t* b, uint32_t width, uint32_t he
     return 10.0 * std::log10(255.0 * 255.0 / mse);
 }
 
+double srgb_to_linear(double encoded) {
+    const double c = encoded / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+uint8_t linear_to_srgb8(double linear) {
+    const double l = std::clamp(linear, 0.0, 1.0);
+    const double c = l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
+    return uint8_t(std::lround(c * 255.0));
+}
+
+std::vector<uint8_t> downsample_rgba(const uint8_t* rgba, uint32_t width, uint32_t height, uint32_t factor,
+                                     uint32_t* out_width, uint32_t* out_height) {
+    const uint32_t f = std::max(1u, factor), ow = width / f, oh = height / f;
+    *out_width = ow;
+    *out_height = oh;
+    std::vector<uint8_t> out(size_t(ow) * oh * 4);
+    double decode[256];
+    for (int v = 0; v < 256; ++v) decode[v] = srgb_to_linear(v);
+    for (uint32_t y = 0; y < oh; ++y) {
+        for (uint32_t x = 0; x < ow; ++x) {
+            double sum[4] = {0, 0, 0, 0};
+            for (uint32_t j = 0; j < f; ++j) {
+                const uint8_t* p = rgba + 4 * (size_t(y * f + j) * width + size_t(x) * f);
+                for (uint32_t i = 0; i < f; ++i, p += 4) {
+                    for (int c = 0; c < 3; ++c) sum[c] += decode[p[c]];
+                    sum[3] += p[3];
+                }
+            }
+            const double n = double(f) * f;
+            uint8_t* o = &out[4 * (size_t(y) * ow + x)];
+            for (int c = 0; c < 3; ++c) o[c] = linear_to_srgb8(sum[c] / n);
+            o[3] = uint8_t(std::lround(sum[3] / n));
+        }
+    }
+    return out;
+}
+
+double rms_rgba(const uint8_t* a, const uint8_t* b, uint32_t width, uint32_t height) {
+    const size_t n = size_t(width) * height;
+    if (n == 0) return 0.0;
+    double se = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const double d = double(a[4 * i + c]) - double(b[4 * i + c]);
+            se += d * d;
+        }
+    }
+    return std::sqrt(se / double(3 * n));
+}
+
+std::vector<RowBand> row_bands(const uint8_t* rgba, uint32_t width, uint32_t height, uint32_t count) {
+    std::vector<RowBand> bands;
+    if (count == 0 || height < count || width == 0) return bands;
+    const uint32_t step = height / count;
+    for (uint32_t k = 0; k < count; ++k) {
+        RowBand b;
+        b.y0 = k * step;
+        b.y1 = k + 1 == count ? height : (k + 1) * step;
+        double sum[3] = {0, 0, 0};
+        size_t grass = 0;
+        for (uint32_t y = b.y0; y < b.y1; ++y) {
+            const uint8_t* p = rgba + 4 * size_t(y) * width;
+            for (uint32_t x = 0; x < width; ++x, p += 4) {
+                for (int c = 0; c < 3; ++c) sum[c] += p[c];
+                grass += is_grass(p);
+            }
+        }
+        const double n = double(b.y1 - b.y0) * width;
+        for (int c = 0; c < 3; ++c) b.mean[c] = sum[c] / n;
+        b.coverage = double(grass) / n;
+        bands.push_back(b);
+    }
+    return bands;
+}
+
 std::vector<uint8_t> difference_rgba(const uint8_t* a, const uint8_t* b, uint32_t width, uint32_t height, double gain) {
     const size_t n = size_t(width) * height;
     std::vector<uint8_t> out(4 * n);
