@@ -19,6 +19,7 @@
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -111,6 +112,9 @@ bool load_named_scene(const std::string& name, grass_sample::Scene* scene, std::
     }
     return grass_sample::load_scene(name, scene, error);
 }
+
+// The most movement one frame applies, in seconds of travel at the camera's speed.
+constexpr double kMaxMoveSeconds = 0.1;
 
 // A key's press since the last frame.
 class Keys {
@@ -249,7 +253,11 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
             const double forward = double(keys.down(GLFW_KEY_W)) - double(keys.down(GLFW_KEY_S));
             const double right = double(keys.down(GLFW_KEY_D)) - double(keys.down(GLFW_KEY_A));
             const double up = double(keys.down(GLFW_KEY_E)) - double(keys.down(GLFW_KEY_Q));
-            if (forward != 0.0 || right != 0.0 || up != 0.0) camera.move(forward, right, up, dt * run);
+            // At most a tenth of a second of movement a frame: on a software rasteriser a frame
+            // can take seconds, and a short press would otherwise carry the camera the whole
+            // frame's time (tens of metres, under the ground).
+            const double step = std::min(dt, kMaxMoveSeconds);
+            if (forward != 0.0 || right != 0.0 || up != 0.0) camera.move(forward, right, up, step * run);
         }
         double x = 0.0, y = 0.0;
         glfwGetCursorPos(window->glfw(), &x, &y);
