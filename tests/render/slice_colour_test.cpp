@@ -32,7 +32,7 @@ constexpr double kSunTermLimit = 3.0; // levels
 struct Light {
     const char* name;
     float sun_direction[3];
-    bool sun; // false: no sun, ambient 1 (the albedo and the ambient occlusion alone)
+    bool sun;                   // false: no sun, ambient 1 (the albedo and the ambient occlusion alone)
     double limit_beyond_spread; // levels (kSunTermLimit where the near band's sun term is off)
 };
 // The default sun (from behind the camera's left, 45 degrees up), a low sun from the side, a
@@ -88,61 +88,64 @@ double largest_channel_difference(const double a[3], const double b[3]) {
     return d;
 }
 
+constexpr int kLightCount = int(sizeof(kLights) / sizeof(kLights[0]));
+enum Variant { kBlades, kBladesOtherSeed, kVolume, kVariants };
+
 class SliceColourTest : public RenderTest {
 protected:
-    // The 8 x 8 cells of the default patch (or, with `other_seed`, of patch seed 2 and mirror
-    // seed 1), drawn by `kind` alone, in `light`, over black and over white.
-    Pair render_pair(bool other_seed, grass_tier_kind kind, uint32_t slices, const Light& light,
-                     const std::string& tag) {
-        Pair out;
+    // Every variant in every light, over black and over white, one context per background:
+    // the 8 x 8 cells of the default patch drawn by blades, the same with patch seed 2 and
+    // mirror seed 1, and the default patch drawn by the volume tier (8 slices) alone.
+    void render_all(Pair out[kVariants][kLightCount]) {
+        const char* names[kVariants] = {"blades", "blades_seed2", "volume"};
         for (int b = 0; b < 2; ++b) {
-            grass_host::TargetDesc t;
-            t.width = t.height = 128;
-            t.samples = 4;
-            for (int c = 0; c < 3; ++c) t.clear_color[c] = b == 0 ? 0.0f : 1.0f;
-            start(t);
-            grass_patch_id use = patch;
-            if (other_seed) {
-                // start() made a fresh context with the default patch; make the other seed's.
-                grass_patch_desc pd = grass_default_patch_desc();
-                pd.seed = 2;
-                EXPECT_EQ(grass_create_patch(ctx, &pd, &use), GRASS_SUCCESS) << log;
-            }
-            grass_field_desc d = kind == GRASS_TIER_GEOMETRY ? field_desc(8) : solo_tier_field(8, kind, slices, 1);
-            d.patch = use;
-            d.mirror_seed = other_seed ? 1u : 0u;
-            const grass_field_id f = make_field(d);
-            // TierLightingTest's view: the 2 m x 2 m field about 9 m away, 1.6 m up.
-            const double eye[3] = {1.0, 1.6, -8.0}, target[3] = {1.0, 0.0, 1.0};
-            grass_view_desc v = view(eye, target, 14.0f);
-            if (light.sun) {
-                if (light.sun_direction[0] != 0.0f || light.sun_direction[1] != 0.0f ||
-                    light.sun_direction[2] != 0.0f) {
-                    for (int c = 0; c < 3; ++c) v.sun_direction[c] = light.sun_direction[c];
+            start(black_or_white_target(b == 1));
+            grass_patch_desc pd = grass_default_patch_desc();
+            pd.seed = 2;
+            grass_patch_id other{};
+            ASSERT_EQ(grass_create_patch(ctx, &pd, &other), GRASS_SUCCESS) << log;
+            for (int variant = 0; variant < kVariants; ++variant) {
+                for (int l = 0; l < kLightCount; ++l) {
+                    const Light& light = kLights[l];
+                    grass_field_desc d =
+                        variant == kVolume ? solo_tier_field(8, GRASS_TIER_VOLUME, 8, 1) : field_desc(8);
+                    d.patch = variant == kBladesOtherSeed ? other : patch;
+                    d.mirror_seed = variant == kBladesOtherSeed ? 1u : 0u;
+                    const grass_field_id f = make_field(d);
+                    // TierLightingTest's view: the 2 m x 2 m field about 9 m away, 1.6 m up.
+                    const double eye[3] = {1.0, 1.6, -8.0}, target[3] = {1.0, 0.0, 1.0};
+                    grass_view_desc v = view(eye, target, 14.0f);
+                    if (!light.sun) {
+                        for (int c = 0; c < 3; ++c) {
+                            v.sun_color[c] = 0.0f;
+                            v.ambient_color[c] = 1.0f;
+                        }
+                    } else if (light.sun_direction[0] != 0.0f || light.sun_direction[1] != 0.0f ||
+                               light.sun_direction[2] != 0.0f) {
+                        for (int c = 0; c < 3; ++c) v.sun_direction[c] = light.sun_direction[c];
+                    }
+                    grass_host::Image& image = b == 0 ? out[variant][l].black : out[variant][l].white;
+                    image = render(v);
+                    save(image, std::string(light.name) + "_" + names[variant] + (b == 0 ? "_black" : "_white"));
+                    EXPECT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
                 }
-            } else {
-                for (int c = 0; c < 3; ++c) {
-                    v.sun_color[c] = 0.0f;
-                    v.ambient_color[c] = 1.0f;
-                }
             }
-            (b == 0 ? out.black : out.white) = render(v);
-            save(b == 0 ? out.black : out.white, tag + (b == 0 ? "_black" : "_white"));
-            EXPECT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
         }
-        return out;
     }
 };
 
 TEST_P(SliceColourTest, VolumeRowBandsMatchTheBladesWithinTheSeedSpread) {
     double spread = kSpreadFloor, worst = 0.0;
-    Bands volume[4], blades[4];
+    Bands volume[kLightCount], blades[kLightCount];
+    Pair images[kVariants][kLightCount];
+    render_all(images);
+    if (HasFatalFailure()) return;
     int count = 0;
     for (const Light& light : kLights) {
         const std::string name = light.name;
-        const Pair a = render_pair(false, GRASS_TIER_GEOMETRY, 0, light, name + "_blades");
-        const Pair b = render_pair(true, GRASS_TIER_GEOMETRY, 0, light, name + "_blades_seed2");
-        const Pair v = render_pair(false, GRASS_TIER_VOLUME, 8, light, name + "_volume");
+        const Pair& a = images[kBlades][count];
+        const Pair& b = images[kBladesOtherSeed][count];
+        const Pair& v = images[kVolume][count];
         // The rows the blades cover (more than 2 pixels' worth in a row), far to near.
         uint32_t first = a.black.height, last = 0;
         for (uint32_t y = 0; y < a.black.height; ++y) {
