@@ -59,7 +59,7 @@ void main() {
     }
     vec3 to_camera = world_to_patch_direction(normalize(-v_position));
     vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
-    float height = mix(0.5, normal_height.w, sin_elevation) * field.blade_params.w;
+    float height = normal_height.w * field.blade_params.w; // the grazing view's (slice_baker.cpp)
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
     // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
     vec3 color = grass_lighting_lobes(modulate_color(albedo.rgb, cell_point), n, vec3(1.0, 0.0, 1.0), to_camera, sun, ao,
