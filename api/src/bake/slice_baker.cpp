@@ -189,7 +189,11 @@ View layer_view(uint32_t slices_per_axis, uint32_t layer, double height_units) {
 // lands in), the nearest along the ray kept, and the four headings averaged, weighted by
 // their coverage; likewise the height of what it sees (for the blades' ambient occlusion).
 // Its alpha, normals and thresholds stay those seen from above.
+// The grazing view is rasterised at half the slice's resolution (a quarter of the cost: its
+// projected blades are 1 / tan(10 degrees) = 5.7 times longer than seen from above); the
+// far tier samples the slice's coarse mips anyway.
 constexpr double kImageTierElevation = 10.0 * 3.14159265358979323846 / 180.0;
+constexpr uint32_t kGrazingReduction = 2;
 
 void draw_grazing_view(const Vector<Triangle>& triangles, double heading_x, double heading_z, double height_scale,
                        SliceRasterizer* raster) {
@@ -232,15 +236,17 @@ void draw_grazing_view(const Vector<Triangle>& triangles, double heading_x, doub
 void apply_grazing_colour(const Vector<Triangle>& triangles, double height_scale, HostAllocator* host,
                           SliceImage* level0) {
     const double headings[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    const size_t n = level0->texels();
+    const uint32_t w = std::max(1u, level0->width / kGrazingReduction);
+    const uint32_t h = std::max(1u, level0->height / kGrazingReduction);
+    const size_t n = static_cast<size_t>(w) * h;
     Vector<double> sum{StlAllocator<double>(host)};
     sum.assign(n * 5, 0.0);
     float toward_viewer[3] = {0, 1, 0};
-    SliceRasterizer raster(level0->width, level0->height, toward_viewer, host);
+    SliceRasterizer raster(w, h, toward_viewer, host);
     SliceImage seen(host);
-    for (const auto& h : headings) {
+    for (const auto& heading : headings) {
         raster.clear();
-        draw_grazing_view(triangles, h[0], h[1], height_scale, &raster);
+        draw_grazing_view(triangles, heading[0], heading[1], height_scale, &raster);
         raster.resolve(&seen);
         for (size_t i = 0; i < n; ++i) {
             double* acc = &sum[i * 5];
@@ -249,8 +255,9 @@ void apply_grazing_colour(const Vector<Triangle>& triangles, double height_scale
             acc[4] += seen.alpha[i];
         }
     }
-    for (size_t i = 0; i < n; ++i) {
-        const double* acc = &sum[i * 5];
+    for (size_t i = 0; i < level0->texels(); ++i) {
+        const size_t x = (i % level0->width) * w / level0->width, y = (i / level0->width) * h / level0->height;
+        const double* acc = &sum[(y * w + x) * 5];
         if (!(level0->alpha[i] > 0.0f) || !(acc[4] > 0.0)) continue;
         for (int c = 0; c < 3; ++c) level0->color[i * 3 + c] = static_cast<float>(acc[c] / acc[4]);
         level0->normal[i * 4 + 3] = static_cast<float>(acc[3] / acc[4]);
