@@ -42,12 +42,11 @@ void main() {
     float alpha = coverage * opacity;
     if (!write_coverage(alpha)) discard;
 
-    // The slice was seen from above: its heights are the tips' and its normals those of the
-    // blades' parts that face up, which fill a view from above. From an elevation theta one
-    // sees more of the blades' sides, which stand lower in the blade layer and face sideways:
-    // the ambient occlusion takes a height between the tips' and half the blade's by
-    // sin(theta), and the normals' up component is scaled by sin(theta) (their spread, the
-    // mean's length, kept). The four sign lobes of the two horizontal components light the
+    // The slice's colour and heights are what a grazing ray sees (slice_baker.cpp,
+    // apply_grazing_colour): the blades' upper parts, whose ambient occlusion the height
+    // gives. Its normals were seen from above: those of the blades' parts that face up. From
+    // an elevation theta one sees more of the blades' sides, which face sideways: the normals'
+    // up component is scaled by sin(theta) (their spread, the mean's length, kept). The four sign lobes of the two horizontal components light the
     // blades that face the camera from every side (lighting.glsl). Far grass is then lit like
     // the volume tier it follows (TierLightingTest: within 0.5 levels).
     vec3 n = normal_height.xyz * 2.0 - 1.0;
@@ -59,7 +58,7 @@ void main() {
     }
     vec3 to_camera = world_to_patch_direction(normalize(-v_position));
     vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
-    float height = mix(0.5, normal_height.w, sin_elevation) * field.blade_params.w;
+    float height = normal_height.w * field.blade_params.w; // the grazing view's (slice_baker.cpp)
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
     // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
     vec3 color = grass_lighting_lobes(modulate_color(albedo.rgb, cell_point), n, vec3(1.0, 0.0, 1.0), to_camera, sun, ao,

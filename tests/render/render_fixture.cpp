@@ -209,6 +209,14 @@ double mean_difference(const grass_host::Image& a, const grass_host::Image& b) {
     return sum / double(a.rgba.size() / 4 * 3);
 }
 
+grass_host::TargetDesc black_or_white_target(bool white) {
+    grass_host::TargetDesc t;
+    t.width = t.height = 128;
+    t.samples = 4;
+    for (int c = 0; c < 3; ++c) t.clear_color[c] = white ? 1.0f : 0.0f;
+    return t;
+}
+
 void expected_sky(const grass_host::TargetDesc& t, uint8_t out[3]) {
     for (int c = 0; c < 3; ++c) {
         const double l = t.clear_color[c];

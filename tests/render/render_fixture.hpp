@@ -63,6 +63,9 @@ protected:
     grass_lod_test solo_tests[2] = {};
 };
 
+// A 128 x 128 target with 4 samples, cleared to black or to white and nothing else: the
+// grass rendered over both separates its coverage from its colour (TierLightingTest).
+grass_host::TargetDesc black_or_white_target(bool white);
 // The clear colour as the hosts write it (linear -> sRGB 8-bit).
 void expected_sky(const grass_host::TargetDesc& t, uint8_t out[3]);
 // A pixel differs from the sky by more than `tolerance` levels in some channel.

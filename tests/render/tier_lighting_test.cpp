@@ -14,23 +14,27 @@ namespace {
 // regressions. Coverage and the coverage-weighted mean sRGB of the grass alone (the test
 // separates it from the background):
 //   geometry coverage 0.196, (74.5, 99.6, 46.0)
-//   volume   coverage 0.196, (67.9, 92.6, 42.0): 7.0 levels darker
-//   image    coverage 0.132, (68.3, 93.2, 42.5): 6.4 levels darker, within 0.6 of the
-//            volume tier it follows in the lod setups; a flat slice has no blades standing
-//            above the field's far edge, hence less coverage
+//   volume   coverage 0.196, (76.5, 101.9, 47.0): 2.3 levels lighter (7.0 darker before
+//            partly covered texels kept their own colour, slice_mips.cpp bleed_colours;
+//            SliceColourTest compares it band by band)
+//   image    coverage 0.134, (78.4, 105.1, 49.5): 3.2 levels lighter than the volume tier
+//            it follows in the lod setups (8.9 darker while the horizontal slice's colour
+//            was the view from above, with its darker lower blades and bases; now baked as
+//            a grazing ray sees it, slice_baker.cpp apply_grazing_colour). The rest: a flat
+//            slice has no near field edge (the front blades' dark bases seen from the side)
+//            and no blades standing above the far edge, hence also less coverage
 // The slices' normals keep their spread and the magnitudes of their components across the
 // slice (lighting.glsl, grass_lighting_lobes); lit with one averaged normal, a sun from
-// the side left the volume 19 levels darker than the blades, now 2. Most of what is left
-// is albedo: unlit (ambient 1, no sun, no AO) the volume is 7.5 levels darker; its mips
-// average the blades' light tips with their darker middles, where blades seen at a grazing
-// angle show mostly tips.
+// the side left the volume 19 levels darker than the blades, then 2. The rest was albedo:
+// unlit (ambient 1, no sun, no AO) the volume was 7.5 levels darker, from the colour bled
+// into partly covered texels (fixed).
 struct Tolerance {
     double colour;   // largest channel difference of the mean colour to geometry's, levels
     double coverage; // relative difference of the coverage to geometry's
 };
 constexpr Tolerance kVolume{10.0, 0.05};
-constexpr Tolerance kImage{9.0, 0.35};
-constexpr double kVolumeToImage = 2.0; // levels
+constexpr Tolerance kImage{7.0, 0.35};
+constexpr double kVolumeToImage = 3.5; // levels (9.5 while the image tier was darker; see above)
 
 class TierLightingTest : public RenderTest {
 protected:
@@ -58,11 +62,7 @@ TEST_P(TierLightingTest, TheSameCellsLookAlikeInEveryTier) {
     const uint32_t slices[3] = {0, 8, 0};
     grass_host::Image images[2][3];
     for (int b = 0; b < 2; ++b) {
-        grass_host::TargetDesc t;
-        t.width = t.height = 128;
-        t.samples = 4;
-        for (int c = 0; c < 3; ++c) t.clear_color[c] = b == 0 ? 0.0f : 1.0f;
-        start(t);
+        start(black_or_white_target(b == 1));
         for (int k = 0; k < 3; ++k) images[b][k] = render_with(kinds[k], slices[k]);
     }
     auto linear = [](uint8_t byte) {

@@ -203,16 +203,15 @@ void bleed_colours(Vector<SliceImage>* levels) {
                 const uint32_t nx = static_cast<uint32_t>((2ull * x + 1) * next.width / (2ull * level.width));
                 const size_t i = static_cast<size_t>(y) * level.width + x;
                 const size_t j = static_cast<size_t>(ny) * next.width + nx;
-                const double a = level.alpha[i];
-                if (a >= 1.0) continue;
-                for (int c = 0; c < 3; ++c) {
-                    level.color[i * 3 + c] =
-                        static_cast<float>(a * level.color[i * 3 + c] + (1.0 - a) * next.color[j * 3 + c]); // eq. 4.16
-                }
-                for (int c = 0; c < 4; ++c) {
-                    level.normal[i * 4 + c] =
-                        static_cast<float>(a * level.normal[i * 4 + c] + (1.0 - a) * next.normal[j * 4 + c]);
-                }
+                // Only empty texels take the coarser level's values. A partly covered texel
+                // keeps its own: the tiers blend it with its alpha, so its colour is that of
+                // the blades it covers; eq. 4.16's A C + (1 - A) C' (made for an alpha test,
+                // which shows a passing texel opaque) mixed in the coarser footprint's mean,
+                // whose denser rows lower down are darker, once per level: the volume came out
+                // darker the more slices (thinner, sparser slabs) and the coarser the mip.
+                if (level.alpha[i] > 0.0f) continue;
+                for (int c = 0; c < 3; ++c) level.color[i * 3 + c] = next.color[j * 3 + c];
+                for (int c = 0; c < 4; ++c) level.normal[i * 4 + c] = next.normal[j * 4 + c];
             }
         }
     }

@@ -51,10 +51,12 @@ void build_coverage_mips(Vector<SliceImage>* levels, uint32_t level_count, HostA
 // eq. 4.7-4.8: every channel is the plain average of its footprint (alpha included).
 void build_box_mips(Vector<SliceImage>* levels, uint32_t level_count, HostAllocator* host);
 
-// eq. 4.16 from the coarsest level to the finest: C'_i = A_i C_i + (1 - A_i) C'_{i+1}, with
-// level i + 1 (already bled) sampled nearest at the texel centre. Applied to the colour and
-// to the normal (xyz renormalised, and w), so that bilinear filtering at blade edges mixes
-// in plausible values on both. Thresholds are left alone (0 stays "no blade").
+// eq. 4.16 from the coarsest level to the finest, for the empty texels only (A_i = 0):
+// C'_i = C'_{i+1}, level i + 1 (already bled) sampled nearest at the texel centre. Applied
+// to the colour and to the normal (xyz and w), so that bilinear filtering at blade edges
+// mixes in plausible values on both. A partly covered texel keeps its own values: the tiers
+// blend it by its alpha (eq. 4.16's A_i C_i + (1 - A_i) C'_{i+1} is for an alpha test, and
+// darkened the blended slices). Thresholds are left alone (0 stays "no blade").
 void bleed_colours(Vector<SliceImage>* levels);
 
 } // namespace grass
