@@ -1,11 +1,13 @@
-// grass-viewer: the sample scenes in a window, with the GL 4.5 or the Vulkan backend: a free
-// camera, quality presets, debug views, MSAA, an overlay with the frame's figures and
-// screenshots. With --frames N --screenshot FILE --exit it renders N frames of the camera
-// given as grass-render takes it and writes the presented image (the window test).
+// grass-viewer: the sample scenes (JSON or glTF, whose host meshes the window draws) in a
+// window, with the GL 4.5 or the Vulkan backend: a free camera, quality presets, debug
+// views, MSAA, an overlay with the frame's figures and screenshots. With --frames N
+// --screenshot FILE --exit it renders N frames of the camera given as grass-render takes it
+// and writes the presented image (the window test).
 #include <grass/grass.h>
 
 #include "cli.hpp"
 #include "free_camera.hpp"
+#include "gltf_scene.hpp"
 #include "image_io.hpp"
 #include "overlay.hpp"
 #include "scene.hpp"
@@ -50,7 +52,8 @@ const char* const kScenes[] = {"football", "park", "hills", "meadow"};
 void add_options(CLI::App& app, Options* o) {
     grass_sample::add_backend_option(app, &o->backend);
     app.add_option("--scene", o->scene,
-                   "demo (built in), football, park, hills, meadow (samples/grass_render/scenes) or a scene file")
+                   "demo (built in), football, park, hills, meadow (samples/grass_render/scenes) or a scene file "
+                   "(FILE.json, FILE.gltf or FILE.glb)")
         ->capture_default_str();
     grass_sample::add_size_option(app, &o->width, &o->height, 16, 8192,
                                   "window size in pixels (default from the scene, 640x360)")
@@ -110,7 +113,7 @@ bool load_named_scene(const std::string& name, grass_sample::Scene* scene, std::
         if (name == known)
             return grass_sample::load_scene(std::string(GRASS_SCENE_DIR) + "/" + name + ".json", scene, error);
     }
-    return grass_sample::load_scene(name, scene, error);
+    return grass_sample::load_scene_file(name, scene, nullptr, error); // JSON or glTF
 }
 
 // The most movement one frame applies, in seconds of travel at the camera's speed.
@@ -335,7 +338,10 @@ int main(int argc, char** argv) {
     if (parsed >= 0) return parsed;
     grass_sample::Scene scene;
     std::string error;
-    if (!load_named_scene(o.scene, &scene, &error)) return fail(error);
+    if (!load_named_scene(o.scene, &scene, &error)) {
+        fail(error);
+        return grass_sample::is_gltf_path(o.scene) ? 2 : 1; // a bad glTF file is refused as grass-render does
+    }
     if (o.have_camera) std::memcpy(scene.eye, o.camera, sizeof(o.camera));
     if (o.have_target) std::memcpy(scene.target, o.target, sizeof(o.target));
     if (o.fov > 0.0f) scene.fov_degrees = o.fov;

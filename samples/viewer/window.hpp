@@ -1,7 +1,7 @@
 // A viewer window: a GLFW window and the backend's device around it (a GL 4.5 context, or
 // a Vulkan instance, device and swapchain), the frame the host draws into it (sky, ground,
-// grass, the overlay) and the read-back of the presented image. One per backend:
-// window_gl.cpp and window_vk.cpp.
+// the scene's host meshes, grass, the overlay) and the read-back of the presented image. One
+// per backend: window_gl.cpp and window_vk.cpp.
 #pragma once
 
 #include <grass/grass.h>
@@ -36,7 +36,8 @@ struct WindowDesc {
     bool vsync = true;
     bool validation = true;                  // Vulkan: the validation layers when installed
     ValidationLog* validation_log = nullptr; // required
-    // The host's scene: sky colour and ground (the headless hosts' TargetDesc fields).
+    // The host's scene: sky colour, ground and host meshes (the headless hosts' TargetDesc
+    // fields; the meshes drawn with their mesh drawers).
     grass_host::TargetDesc scene;
 };
 
@@ -75,8 +76,8 @@ public:
     // Starts the overlay's frame (ImGui's backends) before ImGui::NewFrame.
     virtual void overlay_new_frame() = 0;
 
-    // Draws and presents one frame: sky, ground, grass (grass_begin_frame .. grass_end_frame
-    // with `view`), the overlay when `overlay` is not null. With `screenshot` the presented
+    // Draws and presents one frame: sky, ground, host meshes, grass (grass_begin_frame ..
+    // grass_end_frame with `view`), the overlay when `overlay` is not null. With `screenshot` the presented
     // image is read back (sRGB RGBA8, top row first) before it is presented. Returns the
     // first failing grass call's result, or GRASS_ERROR_BACKEND with *error for the host's.
     virtual grass_result draw_frame(grass_context* ctx, const grass_view_desc& view, ImDrawData* overlay,

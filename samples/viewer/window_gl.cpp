@@ -3,6 +3,7 @@
 // copies it to the window's framebuffer, draws the overlay there, reads it back for a
 // screenshot and swaps. grass loads its GL entry points through glfwGetProcAddress.
 #include "ground.hpp"
+#include "mesh_drawer_gl.hpp"
 #include "window.hpp"
 
 #include <grass/grass_gl.h>
@@ -18,6 +19,7 @@
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
+#include <memory>
 
 namespace grass_host_shaders {
 extern const char* const ground_vert;
@@ -60,10 +62,13 @@ private:
     GLuint resolve_fbo_ = 0, resolve_rb_ = 0;           // only when multisampled
     uint32_t target_width_ = 0, target_height_ = 0;     // the size they were made
     GLuint ground_program_ = 0, ground_buffer_ = 0, ground_vao_ = 0;
+    std::unique_ptr<grass_host::GlMeshDrawer> meshes_; // the scene's host meshes (glTF)
 };
 
 // Loaders return function pointers, as grass_gl_get_proc_address_fn does.
 grass_gl_proc load_gl(void*, const char* name) { return glfwGetProcAddress(name); }
+// The mesh drawer's loader returns them as void*.
+void* load_gl_for_meshes(void*, const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
 
 bool GlWindow::init(std::string* error) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
@@ -90,6 +95,10 @@ bool GlWindow::init(std::string* error) {
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     if (!create_target(error) || !create_ground(error)) return false;
+    if (!desc_.scene.meshes.empty()) {
+        meshes_ = std::make_unique<grass_host::GlMeshDrawer>();
+        if (!meshes_->init(&load_gl_for_meshes, nullptr, desc_.scene.meshes, error)) return false;
+    }
     imgui_ = ImGui_ImplGlfw_InitForOpenGL(window_, true) && ImGui_ImplOpenGL3_Init("#version 450");
     if (!imgui_) {
         *error = "the overlay (ImGui's GLFW and OpenGL3 backends) cannot start";
@@ -106,6 +115,7 @@ GlWindow::~GlWindow() {
         ImGui_ImplGlfw_Shutdown();
     }
     destroy_target();
+    meshes_.reset(); // while the context is current
     if (ground_program_) glDeleteProgram(ground_program_);
     if (ground_buffer_) glDeleteBuffers(1, &ground_buffer_);
     if (ground_vao_) glDeleteVertexArrays(1, &ground_vao_);
@@ -233,6 +243,7 @@ grass_result GlWindow::draw_frame(grass_context* ctx, const grass_view_desc& vie
     glClearBufferfv(GL_COLOR, 0, desc_.scene.clear_color);
     glClearBufferfv(GL_DEPTH, 0, &depth);
     if (desc_.scene.ground) draw_ground(view);
+    if (meshes_) meshes_->draw(view, false, false); // into the depth grass shares
     grass_result result = grass_begin_frame(ctx, &view);
     if (result == GRASS_SUCCESS) {
         result = grass_gl_render(ctx);

@@ -2,9 +2,10 @@
 // (validation layers on when installed and asked for), the device, the swapchain (sRGB,
 // recreated on resize), a render pass with a depth buffer (multisampled and resolved into
 // the swapchain image when MSAA is on) and two frames in flight. grass records with
-// grass_vk_prepare_frame / grass_vk_record in that pass, after the host's ground and before
-// the overlay; a screenshot copies the swapchain image before it is presented.
+// grass_vk_prepare_frame / grass_vk_record in that pass, after the host's ground and meshes
+// and before the overlay; a screenshot copies the swapchain image before it is presented.
 #include "ground.hpp"
+#include "mesh_drawer_vk.hpp"
 #include "window.hpp"
 
 #include <grass/grass_vk.h>
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 namespace grass_host_spirv {
@@ -96,6 +98,7 @@ private:
     bool create_targets(std::string* error); // depth, MSAA colour, framebuffers
     void destroy_targets();
     bool create_ground_pipeline(std::string* error);
+    bool create_meshes(std::string* error); // the mesh drawer, for the current render pass
     bool start_overlay(std::string* error);
     void stop_overlay();
     bool create_image(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
@@ -142,6 +145,7 @@ private:
     VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE; // the ground's sets and the overlay's font
     VkPipelineLayout ground_layout_ = VK_NULL_HANDLE;
     VkPipeline ground_pipeline_ = VK_NULL_HANDLE;
+    std::unique_ptr<grass_host::VkMeshDrawer> meshes_; // the scene's host meshes (glTF)
     bool overlay_glfw_ = false, overlay_vk_ = false;
 
     Buffer readback_;
@@ -171,7 +175,8 @@ bool VkWindow::init(std::string* error) {
         return false;
     }
     return pick_device(error) && create_device(error) && create_frames(error) && create_swapchain(error) &&
-           create_render_pass(error) && create_targets(error) && create_ground_pipeline(error) && start_overlay(error);
+           create_render_pass(error) && create_targets(error) && create_ground_pipeline(error) &&
+           create_meshes(error) && start_overlay(error);
 }
 
 bool VkWindow::create_instance(std::string* error) {
@@ -727,6 +732,7 @@ VkWindow::~VkWindow() {
         if (overlay_glfw_) ImGui_ImplGlfw_Shutdown();
         destroy_targets();
         destroy_swapchain();
+        meshes_.reset();
         destroy_buffer(&readback_);
         for (Frame& f : frames_) {
             destroy_buffer(&f.ground);
@@ -784,9 +790,24 @@ bool VkWindow::set_samples(uint32_t samples, bool* contexts_stale, std::string* 
     vkDestroyRenderPass(device_, render_pass_, nullptr);
     ground_pipeline_ = VK_NULL_HANDLE;
     render_pass_ = VK_NULL_HANDLE;
+    meshes_.reset();
     samples_ = samples;
     *contexts_stale = true;
-    return create_render_pass(error) && create_targets(error) && create_ground_pipeline(error) && start_overlay(error);
+    return create_render_pass(error) && create_targets(error) && create_ground_pipeline(error) &&
+           create_meshes(error) && start_overlay(error);
+}
+
+// The host meshes' pipeline is made for the render pass (its sample count): made again with it.
+// Push constants carry each draw's data, so frames in flight share the drawer.
+bool VkWindow::create_meshes(std::string* error) {
+    if (desc_.scene.meshes.empty()) return true;
+    grass_host::VkPassTarget target;
+    target.render_pass = render_pass_;
+    target.color_format = format_.format;
+    target.depth_format = kDepthFormat;
+    target.samples = VkSampleCountFlagBits(samples_);
+    meshes_ = std::make_unique<grass_host::VkMeshDrawer>();
+    return meshes_->init(physical_, device_, target, desc_.scene.meshes, error);
 }
 
 // ---- A frame -----------------------------------------------------------------------------
@@ -907,6 +928,7 @@ grass_result VkWindow::draw_frame(grass_context* ctx, const grass_view_desc& vie
                                 nullptr);
         vkCmdDraw(f.cmd, 6, 1, 0, 0);
     }
+    if (meshes_) meshes_->record(f.cmd, view, extent_.width, extent_.height); // into the depth grass shares
     if (result == GRASS_SUCCESS) {
         grass_vk_record_desc record = grass_default_vk_record_desc();
         record.command_buffer = f.cmd;

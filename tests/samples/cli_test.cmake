@@ -62,3 +62,10 @@ file(WRITE "${scratch}/bad-mesh.gltf"
      "{\"asset\": {\"version\": \"2.0\"}, \"scenes\": [{\"nodes\": [0]}], \"nodes\": [{\"name\": \"terrain\", \"mesh\": 3}]}")
 expect("grass-render --scene bad-mesh.gltf" 2 "bad-mesh.gltf: .*node 0 \"terrain\" names mesh 3; the file has 0"
        ${RENDER} --scene "${scratch}/bad-mesh.gltf")
+if(VIEWER)
+  # The viewer refuses them the same way, before it opens a window.
+  expect("grass-viewer --scene short.glb" 2 "grass-viewer: .*short.glb: is 4 bytes: too short for a GLB header"
+         ${VIEWER} --scene "${scratch}/short.glb")
+  expect("grass-viewer --scene bad-mesh.gltf" 2 "bad-mesh.gltf: .*node 0 \"terrain\" names mesh 3; the file has 0"
+         ${VIEWER} --scene "${scratch}/bad-mesh.gltf")
+endif()

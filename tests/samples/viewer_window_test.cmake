@@ -5,10 +5,11 @@
 # from a camera 0.5 m to the side must NOT match (the test catches a wrong camera; with
 # WRONG_CAMERA=ON, one variant per backend: each grass-render run costs seconds).
 #   cmake -DVIEWER= -DRENDER= -DCOMPARE= -DXVFB_RUN= -DBACKEND=gl|vk -DSAMPLES=1|4 -DGROUND=ON|OFF [-DWRONG_CAMERA=ON]
-#         [-DSCRIPT=<grass-viewer --script> -DFINAL_SIZE=WxH -DFINAL_SAMPLES=1|4]
+#         [-DSCRIPT=<grass-viewer --script> -DFINAL_SIZE=WxH -DFINAL_SAMPLES=1|4] [-DSCENE=<scene file>]
 #         -DOUT=<dir> -P viewer_window_test.cmake
 # With SCRIPT the viewer also goes through scripted keys and window sizes first (MSAA, presets,
 # a resize); the headless image is then made at the window's final size and sample count.
+# With SCENE (e.g. a glTF file) both tools load that file and use its camera.
 set(size 160x90)
 set(camera 0.4,1.2,-5.5)
 set(target 0,0.1,1)
@@ -26,6 +27,12 @@ if(SCRIPT)
   set(frames 6)
   list(APPEND viewer_args --script ${SCRIPT})
 endif()
+set(view_args --camera ${camera} --target ${target})
+if(SCENE)
+  list(APPEND viewer_args --scene ${SCENE})
+  list(APPEND render_args --scene ${SCENE})
+  set(view_args) # the file's camera
+endif()
 if(NOT GROUND)
   list(APPEND viewer_args --no-ground)
   list(APPEND render_args --no-ground)
@@ -41,9 +48,9 @@ function(run name)
 endfunction()
 
 # A 24-bit screen (xvfb-run's default is 8-bit, which has no GL or Vulkan visual).
-run("grass-viewer" ${XVFB_RUN} -a -s "-screen 0 640x480x24" ${VIEWER} ${viewer_args} --camera ${camera}
-    --target ${target} --frames ${frames} --screenshot ${OUT}/window.png --exit --no-overlay --no-vsync)
-run("grass-render" ${RENDER} ${render_args} --camera ${camera} --target ${target} --output ${OUT}/headless.png)
+run("grass-viewer" ${XVFB_RUN} -a -s "-screen 0 640x480x24" ${VIEWER} ${viewer_args} ${view_args}
+    --frames ${frames} --screenshot ${OUT}/window.png --exit --no-overlay --no-vsync)
+run("grass-render" ${RENDER} ${render_args} ${view_args} --output ${OUT}/headless.png)
 run("window vs headless" ${COMPARE} ${OUT}/window.png ${OUT}/headless.png same)
 if(WRONG_CAMERA)
   run("grass-render, another camera" ${RENDER} ${render_args} --camera ${other_camera} --target ${target}
