@@ -11,9 +11,10 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_TES
 cmake --build build -j "$jobs"
 ctest --test-dir build --output-on-failure -j "$jobs"
 
-# The Qt Quick 3D adapter is left out here: Qt, QML and fontconfig keep allocations until exit
-# that LeakSanitizer would report, and no suppression list for them has been checked yet (the
-# adapter and its tests were run with AddressSanitizer, leaks off, by hand: clean).
+# The Qt Quick 3D adapter is left out here: its tests pass in this build on both backends and
+# the Vulkan run is leak-free with tests/sanitizer/lsan.supp (about 2.5 minutes), but the
+# OpenGL run reports a leak inside libgrass (4 objects, ~4 MB) not yet traced
+# (docs/integration-qtquick3d.md, Known limits). Turn it on once that is fixed.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_TESTS=ON -DGRASS_SANITIZE=ON \
   -DGRASS_BUILD_SAMPLES=OFF -DGRASS_BUILD_QTQUICK3D=OFF >/dev/null
 cmake --build build-asan -j "$jobs"
