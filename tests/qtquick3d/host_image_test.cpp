@@ -34,15 +34,16 @@ Item {
         camera: cam
         PerspectiveCamera { id: cam; position: Qt.vector3d(0, 120, 380); eulerRotation.x: -18; clipNear: 5; clipFar: 5000 }
         DirectionalLight { eulerRotation: Qt.vector3d(-40, 30, 0) }
-        Model { source: "#Sphere"; position: Qt.vector3d(-80, 60, 0); materials: PrincipledMaterial { baseColor: "#d04030" } }
-        Model { source: "#Cube"; position: Qt.vector3d(90, 40, 60); eulerRotation.y: 30; materials: PrincipledMaterial { baseColor: "#3050d0" } }
-        Model { source: "#Rectangle"; scale: Qt.vector3d(5, 5, 1); eulerRotation.x: -90; materials: PrincipledMaterial { baseColor: "#705030" } }
+        Node {
+            objectName: "models"
+            Model { source: "#Sphere"; position: Qt.vector3d(-80, 60, 0); materials: PrincipledMaterial { baseColor: "#d04030" } }
+            Model { source: "#Cube"; position: Qt.vector3d(90, 40, 60); eulerRotation.y: 30; materials: PrincipledMaterial { baseColor: "#3050d0" } }
+            Model { source: "#Rectangle"; scale: Qt.vector3d(5, 5, 1); eulerRotation.x: -90; materials: PrincipledMaterial { baseColor: "#705030" } }
+        }
     }
     GrassField { objectName: "grass"; view: view; extent: Qt.size(300, 300); cellSize: 25 }
 }
 )";
-
-bool greenish(QRgb p) { return qGreen(p) >= qRed(p) && qGreen(p) >= qBlue(p); }
 
 class HostImageTest : public ::testing::TestWithParam<int> {};
 
@@ -57,28 +58,32 @@ TEST_P(HostImageTest, OutsideTheGrassTheEnginesImageIsUnchanged) {
     const QImage off = render_frames(window.get(), 3);
     grass->setProperty("visible", true);
     const QImage on_again = render(window.get(), grass, 3);
+    // Grass alone (the models hidden): every pixel grass covers, even partly, differs from
+    // the clear colour. Grass behind a model counts too, so this is a superset.
+    child(window.get(), "models")->setProperty("visible", false);
+    const QImage alone = render(window.get(), grass, 3);
     on.save(QStringLiteral("qtquick3d_host_image_on_%1.png").arg(samples));
     off.save(QStringLiteral("qtquick3d_host_image_off_%1.png").arg(samples));
+    alone.save(QStringLiteral("qtquick3d_host_image_alone_%1.png").arg(samples));
 
-    // A pixel grass changed is a grass pixel (green over red and blue) or, with MSAA, next to
-    // one (an edge mixing grass and the scene); every other pixel is the engine's, unchanged.
-    int changed = 0, foreign = 0;
+    // A pixel grass changed must be one grass covers alone. Not "a greenish pixel or next to
+    // one": at 4 samples a distant blade tip covering one sample of a ground pixel resolves to
+    // a brown a few levels greener than the ground, neither greenish nor next to a greenish
+    // pixel (64 such pixels on lavapipe), yet grass's own.
+    int changed = 0, covered = 0, foreign = 0;
     for (int y = 0; y < on.height(); ++y)
         for (int x = 0; x < on.width(); ++x) {
+            const bool grass_pixel = alone.pixel(x, y) != kClear.rgb();
+            covered += grass_pixel;
             if (on.pixel(x, y) == off.pixel(x, y)) continue;
             ++changed;
-            bool near_grass = false;
-            const int r = samples > 1 ? 1 : 0; // a resolved edge pixel mixes grass and the scene
-            for (int dy = -r; dy <= r; ++dy)
-                for (int dx = -r; dx <= r; ++dx) {
-                    const QPoint q(x + dx, y + dy);
-                    if (on.rect().contains(q) && greenish(on.pixel(q)) && on.pixel(q) != off.pixel(q))
-                        near_grass = true;
-                }
-            if (!near_grass) ++foreign;
+            if (!grass_pixel) ++foreign;
         }
-    EXPECT_GT(changed, on.width() * on.height() / 10) << "grass drew almost nothing: a vacuous comparison";
-    EXPECT_EQ(foreign, 0) << "pixels grass changed that are not grass, of " << changed;
+    // Grass alone covers about 14% of the window (10,553 .. 11,594 pixels on the two backends
+    // at 1 and 4 samples), the models hide some 28% of that.
+    EXPECT_GT(covered, on.width() * on.height() / 10) << "grass alone drew almost nothing";
+    EXPECT_GT(changed, covered / 2) << "grass changed almost nothing: a vacuous comparison";
+    EXPECT_EQ(foreign, 0) << "pixels grass changed that grass does not cover, of " << changed;
     // The top rows show only the sky and the models (the grass's far edge is below them).
     for (int y = 0; y < 20; ++y)
         for (int x = 0; x < on.width(); ++x) ASSERT_EQ(on.pixel(x, y), off.pixel(x, y)) << x << "," << y;
@@ -88,9 +93,7 @@ TEST_P(HostImageTest, OutsideTheGrassTheEnginesImageIsUnchanged) {
     EXPECT_TRUE(qt_test::take_validation_messages().empty());
 }
 
-// 1 sample only for now. At 4 samples, lavapipe: 64 changed pixels of 76,800 are neither grass
-// nor next to it; llvmpipe: grass changes fewer pixels than the 10% this test asks for. Open.
-INSTANTIATE_TEST_SUITE_P(Samples, HostImageTest, ::testing::Values(1));
+INSTANTIATE_TEST_SUITE_P(Samples, HostImageTest, ::testing::Values(1, 4));
 
 qulonglong stat(QObject* grass, const char* key) {
     QVariantMap m;

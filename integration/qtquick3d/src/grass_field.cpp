@@ -27,6 +27,10 @@ GrassField::GrassField(QQuickItem* parent) : QQuickItem(parent), report_(std::ma
 }
 
 GrassField::~GrassField() {
+    // ~QQuickItem emits windowChanged(nullptr) when it leaves its parent, after this part of
+    // the object is gone: the slot would run on a destroyed GrassField.
+    disconnect(this, &QQuickItem::windowChanged, this, &GrassField::attachWindow);
+    if (window_) disconnect(window_, nullptr, this, nullptr);
     {
         QMutexLocker lock(&report_->mutex);
         report_->notify = nullptr;
