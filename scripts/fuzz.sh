@@ -32,6 +32,9 @@ for t in "${targets[@]}"; do
   args=(-timeout=30 -rss_limit_mb=2048 -max_len=65536 -artifact_prefix="$findings/" -print_final_stats=1)
   [ -f "tests/fuzz/$t.dict" ] && args+=(-dict="tests/fuzz/$t.dict")
   if [ -n "${FUZZ_RUNS:-}" ]; then args+=(-runs="$FUZZ_RUNS"); else args+=(-max_total_time="$seconds"); fi
+  # A fixed seed (the test command's short runs): the same mutations in the same order on
+  # every run, so that a run fails for a change in the code, not for the draw.
+  if [ -n "${FUZZ_SEED:-}" ]; then args+=(-seed="$FUZZ_SEED"); fi
   echo "== fuzz_$t: ${FUZZ_RUNS:+$FUZZ_RUNS runs}${FUZZ_RUNS:-$seconds s}"
   if ! "$build/tests/fuzz/fuzz_$t" "${args[@]}" "$scratch" "tests/fuzz/corpus/$t" 2>"$build/findings/$t.log"; then
     echo "fuzz_$t found a failure: $build/findings/$t.log, input in $findings/"

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
+#include <vector>
 
 namespace grass_sample {
 
@@ -50,19 +52,63 @@ namespace {
 
 using nlohmann::json;
 
+// A JSON number as T, refused by name when T cannot hold it (nlohmann's get<T> converts with a
+// plain cast: 1e308 into an unsigned or a float is undefined behaviour, found by fuzz_scene).
+template <class T>
+T number_as(const json& v, const std::string& what) {
+    if (!v.is_number()) throw std::runtime_error(what + " must be a number, not " + v.dump());
+    auto refuse = [&]() -> T { throw std::runtime_error(what + " is " + v.dump() + ", out of range"); };
+    if constexpr (std::is_integral_v<T>) {
+        using L = std::numeric_limits<T>;
+        if (v.is_number_float()) {
+            const double d = v.get<double>();
+            // [min, 2^digits): exact bounds in double for every integer type used here.
+            const double top = std::ldexp(1.0, L::digits);
+            if (!(d == std::floor(d)) || d < static_cast<double>(L::lowest()) || !(d < top)) return refuse();
+            return static_cast<T>(d);
+        }
+        if (v.is_number_unsigned()) {
+            const uint64_t u = v.get<uint64_t>();
+            if (u > static_cast<uint64_t>(L::max())) return refuse();
+            return static_cast<T>(u);
+        }
+        const int64_t i = v.get<int64_t>();
+        if constexpr (std::is_unsigned_v<T>) {
+            if (i < 0 || static_cast<uint64_t>(i) > static_cast<uint64_t>(L::max())) return refuse();
+        } else {
+            if (i < static_cast<int64_t>(L::lowest()) || i > static_cast<int64_t>(L::max())) return refuse();
+        }
+        return static_cast<T>(i);
+    } else {
+        const double d = v.get<double>();
+        if (std::fabs(d) > static_cast<double>(std::numeric_limits<T>::max())) return refuse();
+        return static_cast<T>(d);
+    }
+}
+
 template <class T>
 void read(const json& j, const char* key, T* out) {
-    if (j.contains(key)) *out = j.at(key).get<T>();
-}
-void read3(const json& j, const char* key, float out[3]) {
     if (!j.contains(key)) return;
-    const auto v = j.at(key).get<std::vector<float>>();
-    if (v.size() != 3) throw std::runtime_error(std::string("\"") + key + "\" must have 3 numbers");
-    for (int k = 0; k < 3; ++k) out[k] = v[k];
+    if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+        *out = number_as<T>(j.at(key), std::string("\"") + key + "\"");
+    } else {
+        *out = j.at(key).get<T>();
+    }
 }
-void read3(const json& j, const char* key, double out[3]) {
+
+// A JSON array of numbers as T, each checked as number_as does.
+template <class T>
+std::vector<T> numbers_as(const json& v, const std::string& what) {
+    if (!v.is_array()) throw std::runtime_error(what + " must be an array of numbers, not " + v.dump());
+    std::vector<T> out;
+    for (const json& e : v) out.push_back(number_as<T>(e, what));
+    return out;
+}
+
+template <class T>
+void read3(const json& j, const char* key, T out[3]) {
     if (!j.contains(key)) return;
-    const auto v = j.at(key).get<std::vector<double>>();
+    const auto v = numbers_as<T>(j.at(key), std::string("\"") + key + "\"");
     if (v.size() != 3) throw std::runtime_error(std::string("\"") + key + "\" must have 3 numbers");
     for (int k = 0; k < 3; ++k) out[k] = v[k];
 }
@@ -178,7 +224,7 @@ void read_lod_tests(const json& list, Scene* s) {
         read(t, "tier", &test.tier);
         read(t, "begin", &test.begin);
         test.end = std::numeric_limits<float>::infinity();
-        if (t.contains("end") && !t["end"].is_null()) test.end = t["end"].get<float>();
+        if (t.contains("end") && !t["end"].is_null()) test.end = number_as<float>(t["end"], "\"end\"");
         read(t, "transition_in", &test.transition_in);
         read(t, "transition_out", &test.transition_out);
         read(t, "max_macro_cells", &test.max_macro_cells);
@@ -224,7 +270,7 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
             read(p, "subdivisions", &d.subdivisions);
             auto range = [&](const char* key, float* lo, float* hi) {
                 if (!p.contains(key)) return;
-                const auto v = p.at(key).get<std::vector<float>>();
+                const auto v = numbers_as<float>(p.at(key), std::string("\"patch.") + key + "\"");
                 if (v.size() != 2) throw std::runtime_error(std::string("\"patch.") + key + "\" must be [min, max]");
                 *lo = v[0];
                 *hi = v[1];
@@ -271,7 +317,7 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
             }
             auto& d = s->field;
             if (f.contains("cells")) {
-                const auto v = f["cells"].get<std::vector<uint32_t>>();
+                const auto v = numbers_as<uint32_t>(f["cells"], "\"field.cells\"");
                 if (v.size() != 2) throw std::runtime_error("\"field.cells\" must be [cells_x, cells_z]");
                 d.cells_x = v[0];
                 d.cells_z = v[1];

@@ -40,4 +40,38 @@ TEST(SceneLoader, APngLargerThanAMapMayBeIsRefusedBeforeItsPixelsAreAllocated) {
     }
 }
 
+// fuzz_scene: "blade_count": 1e308 went through nlohmann's get<uint32_t>, a plain cast of a
+// double no unsigned can hold (undefined behaviour, UBSan's float-cast-overflow). Every
+// number is now checked against what its field can hold and refused by name.
+TEST(SceneLoader, ANumberItsFieldCannotHoldIsRefusedByName) {
+    struct Case {
+        const char* text;
+        const char* named;
+    };
+    const Case cases[] = {
+        {R"({"patch": {"blade_count": 1e308}})", "\"blade_count\" is 1e+308, out of range"},
+        {R"({"patch": {"blade_count": -1}})", "\"blade_count\" is -1, out of range"},
+        {R"({"patch": {"blade_count": 2.5}})", "\"blade_count\" is 2.5, out of range"},
+        {R"({"patch": {"blade_count": 4294967296}})", "\"blade_count\" is 4294967296, out of range"},
+        {R"({"field": {"cells": [1e30, 4]}})", "\"field.cells\" is 1e+30, out of range"},
+        {R"({"patch": {"ao_height": 1e300}})", "\"ao_height\" is 1e+300, out of range"},
+        {R"({"camera": {"fov": 1e300}})", "\"fov\" is 1e+300, out of range"},
+        {R"({"patch": {"blade_count": "many"}})", "\"blade_count\" must be a number, not \"many\""},
+    };
+    for (const Case& c : cases) {
+        const std::string path = write_scene("number-range.json", c.text);
+        grass_sample::Scene scene;
+        const uint32_t blades_before = scene.patch.blade_count;
+        std::string error;
+        EXPECT_FALSE(grass_sample::load_scene(path, &scene, &error)) << c.text;
+        EXPECT_NE(error.find(c.named), std::string::npos) << c.text << ": " << error;
+        EXPECT_EQ(scene.patch.blade_count, blades_before) << c.text;
+    }
+    // The file fuzz_scene found, kept in its corpus.
+    grass_sample::Scene scene;
+    std::string error;
+    EXPECT_FALSE(grass_sample::load_scene(kCorpus + "/scene/blade-count-1e308.json", &scene, &error));
+    EXPECT_NE(error.find("\"blade_count\" is 1e+308, out of range"), std::string::npos) << error;
+}
+
 } // namespace
