@@ -532,65 +532,15 @@ void VkWindow::destroy_targets() {
 
 // The headless hosts' ground (samples/headless/shaders/ground.*) in this render pass.
 bool VkWindow::create_ground_pipeline(std::string* error) {
-    VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
-    const uint32_t* code[2] = {grass_host_spirv::ground_vert, grass_host_spirv::ground_frag};
-    const size_t code_size[2] = {grass_host_spirv::ground_vert_size, grass_host_spirv::ground_frag_size};
-    VkResult r = VK_SUCCESS;
-    for (int i = 0; i < 2 && r == VK_SUCCESS; ++i) {
-        VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-        info.codeSize = code_size[i];
-        info.pCode = code[i];
-        r = vkCreateShaderModule(device_, &info, nullptr, &modules[i]);
-    }
-    VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-                                                 {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
-    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-    stages[0].module = modules[0];
-    stages[0].pName = "main";
-    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[1].module = modules[1];
-    stages[1].pName = "main";
-    VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    raster.cullMode = VK_CULL_MODE_NONE;
-    raster.lineWidth = 1.0f;
-    VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    multisample.rasterizationSamples = static_cast<VkSampleCountFlagBits>(samples_);
-    VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depth.depthTestEnable = VK_TRUE;
-    depth.depthWriteEnable = VK_TRUE;
-    depth.depthCompareOp = VK_COMPARE_OP_LESS;
-    VkPipelineColorBlendAttachmentState attachment{};
-    attachment.colorWriteMask = 0xf;
-    VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = 1;
-    blend.pAttachments = &attachment;
-    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = 2;
-    dynamic.pDynamicStates = dynamic_states;
-    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    info.stageCount = 2;
-    info.pStages = stages;
-    info.pVertexInputState = &vertex_input;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &raster;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &depth;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamic;
-    info.layout = ground_layout_;
-    info.renderPass = render_pass_;
-    if (r == VK_SUCCESS) r = vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &ground_pipeline_);
-    for (VkShaderModule m : modules) {
-        if (m) vkDestroyShaderModule(device_, m, nullptr);
-    }
+    grass_host::VkHostPipelineDesc desc;
+    desc.vertex_code = grass_host_spirv::ground_vert;
+    desc.vertex_code_size = grass_host_spirv::ground_vert_size;
+    desc.fragment_code = grass_host_spirv::ground_frag;
+    desc.fragment_code_size = grass_host_spirv::ground_frag_size;
+    desc.layout = ground_layout_;
+    desc.target.render_pass = render_pass_;
+    desc.target.samples = static_cast<VkSampleCountFlagBits>(samples_);
+    const VkResult r = grass_host::create_host_pipeline(device_, desc, &ground_pipeline_);
     if (r != VK_SUCCESS) *error = vk_error("creating the ground's pipeline", r);
     return r == VK_SUCCESS;
 }
