@@ -25,6 +25,16 @@ enum MapRole : uint32_t {
     kMapRoleCount = 5
 };
 constexpr uint32_t kMapBinding[kMapRoleCount] = {2, 6, 7, 8, 9};
+
+// Feature bits of a draw past the map roles (TierDraw::features, GRASS_FEATURES in the
+// shaders): responsive grass. A draw without them runs the shader of still grass.
+constexpr uint32_t kFeatureWind = 1u << 5;        // wind or gravity: blades bend, slices sway (wind.glsl)
+constexpr uint32_t kFeatureInteraction = 1u << 6; // the interaction map is bound (interaction.glsl)
+// Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's
+// levels (sampler2D, RGBA32F, read with texelFetch) and the patch's blade control points
+// (readonly std430 buffer `BladeCurves`: PatchData::blade_curves).
+constexpr uint32_t kInteractionMapBinding[2] = {10, 11};
+constexpr uint32_t kBladeCurvesBinding = 12;
 constexpr uint32_t kNoMap = 0xffffffffu;
 
 // A design map converted by the core to 16-bit unorm, row-major, tightly packed: width x
