@@ -70,6 +70,15 @@ public:
     // kind IMAGE the set with N = 0. release_patch releases them with the patch.
     virtual grass_result upload_slices(uint32_t slot, const SliceSet& set) = 0;
     virtual void release_patch(uint32_t slot) = 0;
+    // Responsive grass: the blade control points of the patch in `slot` (patch.blade_curves),
+    // uploaded by the core before the first frame that draws the patch with kFeatureWind or
+    // kFeatureInteraction, once per patch (released with the patch). A context that never
+    // draws responsive grass never calls it, so it holds no such memory.
+    virtual grass_result upload_blade_curves(uint32_t slot, const PatchData& patch) {
+        (void)slot;
+        (void)patch;
+        return GRASS_SUCCESS;
+    }
     // A design map (slot in the context's map pool). Fields reference maps by slot; a map is
     // released only when no field uses it.
     virtual grass_result upload_map(uint32_t slot, const MapTexels& map) = 0;
@@ -86,6 +95,9 @@ public:
     virtual void end_frame() {}
 
     virtual uint64_t gpu_bytes() const = 0;
+    // The part of gpu_bytes() that responsive grass holds: the interaction map's levels and
+    // the uploaded blade curves (grass_memory_stats.dynamics_gpu_bytes).
+    virtual uint64_t dynamics_gpu_bytes() const { return 0; }
 
     // grass_get_tier_gpu_ms: the GPU milliseconds of each tier kind in the most recent frame
     // whose timer queries have finished, read without waiting (a backend may poll its
