@@ -708,7 +708,7 @@ typedef struct grass_view_desc {
      * frame of a context steps 0; a time earlier than the previous frame's steps 0 and warns
      * (GRASS_MSG_TIME_BACKWARDS). Within +-1e9 s; default 0. */
     double time;
-    uint32_t flags;         /* grass_view_flags; default 0 */
+    uint32_t flags; /* grass_view_flags; default 0 */
 } grass_view_desc;
 
 GRASS_API grass_view_desc grass_default_view_desc(void);
@@ -828,14 +828,14 @@ typedef enum grass_wind_source_kind {
  * 1 / (1 + (d / radius)^2). */
 typedef struct grass_wind_source {
     grass_wind_source_kind kind;
-    double position[3];  /* world metres, within +-1e12 */
-    float direction[3];  /* CONE: the axis, not zero; otherwise unused */
-    float cone_angle;    /* CONE: half angle, radians, (0, pi/2]; otherwise unused */
-    float speed;         /* m/s at the source, 0 .. 1e3 */
-    float radius;        /* metres where the speed has halved, 1e-3 .. 1e6 */
-    double start_time;   /* BLAST: grass_view_desc.time when it goes off; otherwise unused */
-    float duration;      /* BLAST: seconds it blows, > 0 .. 1e4; otherwise unused */
-    float front_speed;   /* BLAST: m/s its front travels, > 0 .. 1e4; otherwise unused */
+    double position[3]; /* world metres, within +-1e12 */
+    float direction[3]; /* CONE: the axis, not zero; otherwise unused */
+    float cone_angle;   /* CONE: half angle, radians, (0, pi/2]; otherwise unused */
+    float speed;        /* m/s at the source, 0 .. 1e3 */
+    float radius;       /* metres where the speed has halved, 1e-3 .. 1e6 */
+    double start_time;  /* BLAST: grass_view_desc.time when it goes off; otherwise unused */
+    float duration;     /* BLAST: seconds it blows, > 0 .. 1e4; otherwise unused */
+    float front_speed;  /* BLAST: m/s its front travels, > 0 .. 1e4; otherwise unused */
 } grass_wind_source;
 
 /* The wind of the whole context (every field) and the environmental gravity. */
@@ -878,9 +878,9 @@ typedef enum grass_collider_shape {
 /* A collider of one frame. */
 typedef struct grass_collider {
     grass_collider_shape shape;
-    float radius;      /* metres, 0 .. 1e6 (0 touches nothing) */
-    double centre[3];  /* SPHERE: the centre; CAPSULE: one end of its axis. World metres, within +-1e12 */
-    double end[3];     /* CAPSULE: the other end of its axis; unused for a sphere */
+    float radius;     /* metres, 0 .. 1e6 (0 touches nothing) */
+    double centre[3]; /* SPHERE: the centre; CAPSULE: one end of its axis. World metres, within +-1e12 */
+    double end[3];    /* CAPSULE: the other end of its axis; unused for a sphere */
     /* Optional, world m/s, each component within +-1e5: how the collider moved over the last
      * time step. The pass sweeps it from centre - velocity x step to centre, so a fast
      * collider leaves a continuous trail at any frame rate. Zero: only where it is now. */

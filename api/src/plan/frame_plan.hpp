@@ -24,15 +24,15 @@ struct FrameUniforms {
                                // render (the core sets 1 for Vulkan, 0 for GL); yzw = 0
     // Responsive grass (docs/responsive.md, api/shaders/wind.glsl, interaction.glsl). Read only by
     // shader variants with kFeatureWind / kFeatureInteraction; zero otherwise.
-    float wind[4];       // xyz: mean wind velocity, world m/s (zero: none); w: gust strength (fraction of speed)
-    float wind_shape[4]; // x: 1 / gust length (1/m), y: turbulence 0..1, z: wind source count, w: time step (s)
-    float wind_phase[4]; // xyz: phase (cycles, in [0, 1)) at the camera of the three gust waves (wind.glsl),
-                         // w: unused
-    float gravity[4];    // xyz: gravity minus standard gravity (0, -9.81, 0), world m/s^2; w: unused
-    float map_up[4];     // xyz: the interaction map's up (world, unit); w: its level count (0: no map)
-    float map_axis_u[4]; // xyz: world direction of the map's texel x (unit, across map_up); w: unused
-    float map_axis_v[4]; // xyz: world direction of the map's texel y; w: the camera's height along map_up
-                         // above the map's height anchor (m): heights in the map are above that anchor
+    float wind[4];          // xyz: mean wind velocity, world m/s (zero: none); w: gust strength (fraction of speed)
+    float wind_shape[4];    // x: 1 / gust length (1/m), y: turbulence 0..1, z: wind source count, w: time step (s)
+    float wind_phase[4];    // xyz: phase (cycles, in [0, 1)) at the camera of the three gust waves (wind.glsl),
+                            // w: unused
+    float gravity[4];       // xyz: gravity minus standard gravity (0, -9.81, 0), world m/s^2; w: unused
+    float map_up[4];        // xyz: the interaction map's up (world, unit); w: its level count (0: no map)
+    float map_axis_u[4];    // xyz: world direction of the map's texel x (unit, across map_up); w: unused
+    float map_axis_v[4];    // xyz: world direction of the map's texel y; w: the camera's height along map_up
+                            // above the map's height anchor (m): heights in the map are above that anchor
     float map_levels[2][4]; // per level: xy: the camera's map coordinate in texels, modulo the resolution
                             // (in [0, N)); z: texels per metre; w: the resolution N (texels per side)
     float wind_sources[16][4][4]; // GRASS_MAX_WIND_SOURCES, the first wind_shape.z used:
@@ -42,7 +42,7 @@ struct FrameUniforms {
                                   //     w: duration (s)
                                   // [3] x: front speed (m/s), yzw: unused
 };
-static_assert(sizeof(FrameUniforms) == 1424, "std140 Frame block");
+static_assert(sizeof(FrameUniforms) == 1312, "std140 Frame block");
 
 // std140 uniform block `Field` (binding 1).
 struct FieldUniforms {
@@ -125,8 +125,8 @@ static_assert(sizeof(InteractionLevelUniforms) == 48, "std140 Interaction block"
 // colliders whose swept footprint reaches each tile (indices into colliders).
 struct InteractionPlan {
     explicit InteractionPlan(HostAllocator* host)
-        : colliders(StlAllocator<GpuCollider>(host)),
-          tile_offsets{Vector<uint32_t>(StlAllocator<uint32_t>(host)), Vector<uint32_t>(StlAllocator<uint32_t>(host))},
+        : colliders(StlAllocator<GpuCollider>(host)), tile_offsets{Vector<uint32_t>(StlAllocator<uint32_t>(host)),
+                                                                   Vector<uint32_t>(StlAllocator<uint32_t>(host))},
           tile_colliders{Vector<uint32_t>(StlAllocator<uint32_t>(host)),
                          Vector<uint32_t>(StlAllocator<uint32_t>(host))} {}
     uint32_t levels = 0; // 0: no pass this frame and no map bound
