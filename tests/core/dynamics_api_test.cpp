@@ -64,7 +64,8 @@ protected:
             }
         };
         auto arrd = [&](const std::string& name, double* v, int n) {
-            for (int i = 0; i < n; ++i) in.push_back({name + "[" + std::to_string(i) + "]", [v, i](double x) { v[i] = x; }});
+            for (int i = 0; i < n; ++i)
+                in.push_back({name + "[" + std::to_string(i) + "]", [v, i](double x) { v[i] = x; }});
         };
         auto one = [&](const std::string& name, float* v) { in.push_back({name, [v](double x) { *v = float(x); }}); };
         arr("wind->direction", wind.direction, 3);
@@ -226,7 +227,8 @@ TEST_F(DynamicsApiTest, RangesEnumsNullsAndZeroVectorsAreRefused) {
          [](DynamicsApiTest* t) { t->colliders[0].shape = static_cast<grass_collider_shape>(7); }},
         {"colliders[0].radius", GRASS_MSG_OUT_OF_RANGE, [](DynamicsApiTest* t) { t->colliders[0].radius = -1.0f; }},
         {"colliders[0].radius", GRASS_MSG_OUT_OF_RANGE, [](DynamicsApiTest* t) { t->colliders[0].radius = 2e6f; }},
-        {"colliders[0].centre[0]", GRASS_MSG_OUT_OF_RANGE, [](DynamicsApiTest* t) { t->colliders[0].centre[0] = -2e12; }},
+        {"colliders[0].centre[0]", GRASS_MSG_OUT_OF_RANGE,
+         [](DynamicsApiTest* t) { t->colliders[0].centre[0] = -2e12; }},
         {"colliders[1].end[1]", GRASS_MSG_OUT_OF_RANGE, [](DynamicsApiTest* t) { t->colliders[1].end[1] = 2e12; }},
         {"colliders[1].velocity[2]", GRASS_MSG_OUT_OF_RANGE,
          [](DynamicsApiTest* t) { t->colliders[1].velocity[2] = 2e5f; }},

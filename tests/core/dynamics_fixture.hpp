@@ -99,8 +99,7 @@ protected:
 
     const grass::FramePlan& plan() const { return ctx->plan; }
 
-    static grass_collider sphere(double x, double y, double z, float radius, float vx = 0, float vy = 0,
-                                 float vz = 0) {
+    static grass_collider sphere(double x, double y, double z, float radius, float vx = 0, float vy = 0, float vz = 0) {
         grass_collider c{};
         c.shape = GRASS_COLLIDER_SPHERE;
         c.radius = radius;
