@@ -92,6 +92,34 @@ TEST_F(InvariantsTest, ADrawWhoseFeatureMaskIsNotItsFieldsIsAnInternalError) {
     expect_plan_refused("a feature mask beyond the map roles in the uniforms");
 }
 
+TEST_F(InvariantsTest, ResponsiveBitsOnlyAsTheInteractionPlanAllows) {
+    auto set_bits = [&](uint32_t bits) {
+        for (auto& d : ctx->plan.draws) {
+            d.features |= bits;
+            d.uniforms.tiling[3] = d.features;
+        }
+    };
+    set_bits(grass::kFeatureWind);
+    EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
+    set_bits(grass::kFeatureInteraction); // no map this frame
+    expect_plan_refused("the interaction variant without the map");
+    set_bits(1u << 7);
+    expect_plan_refused("an unknown feature bit");
+    // Tile lists: an entry past the colliders, offsets that do not cover the entries.
+    const grass_collider c{GRASS_COLLIDER_SPHERE, 0.5f, {4.0, 0.0, 4.0}, {}, {}};
+    ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);
+    ASSERT_EQ(grass_begin_frame(ctx, &view), GRASS_SUCCESS) << last_message();
+    ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+    ASSERT_EQ(ctx->plan.interaction.levels, 2u);
+    ASSERT_FALSE(ctx->plan.interaction.tile_colliders[0].empty());
+    ctx->plan.interaction.tile_colliders[0][0] = 1;
+    expect_plan_refused("a tile entry past the colliders");
+    ctx->plan.interaction.tile_offsets[1].back() += 1;
+    expect_plan_refused("tile offsets past the entries");
+    ctx->plan.interaction.tile_offsets[0].pop_back();
+    expect_plan_refused("too few tile offsets");
+}
+
 TEST_F(InvariantsTest, ADrawOfAnObjectTheContextDoesNotHoldIsAnInternalError) {
     ctx->plan.draws[0].field_slot = 7;
     expect_plan_refused("an unknown field");
