@@ -2,6 +2,7 @@
 // a broken one is refused with GRASS_ERROR_INVALID_STATE and GRASS_MSG_INTERNAL_ERROR.
 // The plan and the objects are corrupted by hand, as only a bug in grass could.
 #include "core_fixture.hpp"
+#include "test_backend.hpp"
 #include "view_helpers.hpp"
 
 #include "context/context.hpp"
@@ -14,21 +15,9 @@ namespace {
 
 // A backend that holds and draws nothing but says it draws, so that the core checks the
 // plan's slice sets as it does for GL and Vulkan.
-class DrawingTestBackend final : public grass::Backend {
+class DrawingTestBackend final : public HollowBackend {
 public:
     grass_backend kind() const override { return GRASS_BACKEND_VULKAN; }
-    grass_result upload_patch(uint32_t, const grass::PatchData&) override { return GRASS_SUCCESS; }
-    grass_result upload_slices(uint32_t, const grass::SliceSet&) override { return GRASS_SUCCESS; }
-    void release_patch(uint32_t) override {}
-    grass_result upload_map(uint32_t, const grass::MapTexels&) override { return GRASS_SUCCESS; }
-    grass_result update_map(uint32_t, const grass::MapTexels&, const grass::MapRegion&) override {
-        return GRASS_SUCCESS;
-    }
-    void release_map(uint32_t) override {}
-    grass_result upload_field(uint32_t, const grass::FieldMaps&) override { return GRASS_SUCCESS; }
-    void release_field(uint32_t) override {}
-    grass_result begin_frame(const grass::FramePlan&) override { return GRASS_SUCCESS; }
-    uint64_t gpu_bytes() const override { return 0; }
 };
 
 class InvariantsTest : public CoreTest {
@@ -36,14 +25,7 @@ protected:
     void SetUp() override {
         // The fixture's log, on a context whose backend is the test backend.
         CoreTest::SetUp();
-        grass_context_desc d = ctx->desc;
-        grass_destroy_context(ctx);
-        ctx = nullptr;
-        const auto factory = [](grass_context* c, void*, grass::Backend** out) {
-            *out = c->host.create<DrawingTestBackend>();
-            return GRASS_SUCCESS;
-        };
-        ASSERT_EQ(grass::create_context("test", GRASS_HEADER_VERSION, &d, factory, nullptr, &ctx), GRASS_SUCCESS);
+        remake_with<DrawingTestBackend>(&ctx);
         patch = make_patch();
         // One geometry tier: nothing to bake.
         tier = grass_tier_desc{GRASS_TIER_GEOMETRY, 0};
