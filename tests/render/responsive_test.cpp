@@ -140,7 +140,8 @@ TEST_P(ResponsiveTest, NoBladeInsideRestingColliders) {
     const grass_field_id f = make_field(field_desc(8)); // 2 m x 2 m
     (void)f;
     constexpr double kTolerance = 0.01; // metres
-    const grass_collider colliders[2] = {sphere(1.0, 0.25 + 0.03, 0.7, 0.25f), capsule(0.6, 1.4, 0.1 + 0.05, 1.4, 0.1f)};
+    const grass_collider colliders[2] = {sphere(1.0, 0.25 + 0.03, 0.7, 0.25f),
+                                         capsule(0.6, 1.4, 0.1 + 0.05, 1.4, 0.1f)};
     const double cx = 1.0, cz = 1.05, half = 0.65;
     const std::vector<float> before = heights(top_view(cx, cz, half, 0.0));
     ASSERT_EQ(grass_set_colliders(ctx, colliders, 2), GRASS_SUCCESS) << log;
@@ -234,7 +235,8 @@ TEST_P(ResponsiveTest, TrailRecoversWithTheTimeConstant) {
             const double r = (1.0 - std::exp(-times[0] / mid)) / (1.0 - std::exp(-times[k] / mid));
             (r > ratio ? lo : hi) = mid; // r falls from 1 (T -> 0) to t0 / t1
         }
-        std::printf("recovery: T = %.3f s from t = %g and %g s (set %g s)\n", lo, times[0], times[k], double(kRecovery));
+        std::printf("recovery: T = %.3f s from t = %g and %g s (set %g s)\n", lo, times[0], times[k],
+                    double(kRecovery));
         EXPECT_NEAR(lo / kRecovery, 1.0, 0.1) << "time constant from t = " << times[0] << " and " << times[k]
                                               << " s: heights " << top[0] << ", " << top[k] << " m";
     }
@@ -352,7 +354,8 @@ TEST_P(ResponsiveTest, BladeLengthIsPreserved) {
     double mx = 0, mz = 0;
     for (const P& p : pts) mx += p.x / pts.size(), mz += p.z / pts.size();
     double sxx = 0, sxz = 0, szz = 0;
-    for (const P& p : pts) sxx += (p.x - mx) * (p.x - mx), sxz += (p.x - mx) * (p.z - mz), szz += (p.z - mz) * (p.z - mz);
+    for (const P& p : pts)
+        sxx += (p.x - mx) * (p.x - mx), sxz += (p.x - mx) * (p.z - mz), szz += (p.z - mz) * (p.z - mz);
     const double angle = 0.5 * std::atan2(2.0 * sxz, sxx - szz);
     double ax = std::cos(angle), az = std::sin(angle);
     double lo = 1e9, hi = -1e9;
