@@ -11,6 +11,14 @@
 #define GRASS_MAP_AMBIENT 4u
 #define GRASS_MAP_DIFFUSE 8u
 #define GRASS_MAP_HEIGHT 16u
+#define GRASS_WIND 32u        // responsive grass: wind or gravity (wind.glsl)
+#define GRASS_INTERACTION 64u // responsive grass: the interaction map is bound (interaction.glsl)
+// Responsive grass's code (and its bindings 10-12) is compiled only where GRASS_RESPONSIVE
+// is defined: the shaders of still grass are exactly what they were, and declare no binding
+// they do not use (a Vulkan pipeline layout must hold every binding a module declares and
+// uses, whatever its specialization constants say). GL: defined with GRASS_FEATURES for the
+// masks with GRASS_WIND or GRASS_INTERACTION; Vulkan: a second SPIR-V module per shader,
+// compiled with -DGRASS_RESPONSIVE, for those pipelines.
 #ifdef VULKAN
 layout(constant_id = 0) const uint GRASS_FEATURES = 0u;
 #elif !defined(GRASS_FEATURES)
@@ -27,6 +35,17 @@ layout(std140, binding = 0) uniform Frame {
                            // w: the target's samples per pixel (set by the backend)
     vec4 target;           // x: 1 when the host's clip z runs 0..1 (Vulkan, GL_ZERO_TO_ONE clip control),
                            // 0 for GL's default -1..1 (set by the backend)
+    // Responsive grass (api/src/plan/frame_plan.hpp FrameUniforms): read only by variants with
+    // GRASS_WIND / GRASS_INTERACTION.
+    vec4 wind;             // xyz: mean wind velocity (world m/s), w: gust strength
+    vec4 wind_shape;       // x: 1 / gust length, y: turbulence, z: source count, w: time step (s)
+    vec4 wind_phase;       // xyz: phases (cycles) of the three gust waves at the camera
+    vec4 gravity;          // xyz: gravity minus standard gravity (world m/s^2)
+    vec4 map_up;           // xyz: the interaction map's up, w: level count (0: no map)
+    vec4 map_axis_u;       // xyz: world direction of map texel x
+    vec4 map_axis_v;       // xyz: world direction of map texel y, w: camera height above the map's anchor (m)
+    vec4 map_levels[2];    // xy: camera's map coordinate (texels, mod N), z: texels per metre, w: N
+    vec4 wind_sources[64]; // 16 sources x 4 vec4 (frame_plan.hpp)
 } frame;
 
 layout(std140, binding = 1) uniform Field {
@@ -43,6 +62,9 @@ layout(std140, binding = 1) uniform Field {
     uvec4 tiers;           // x: this draw's tier, y: the field's tier count, z: 1 = overlay tier (hilltops:
                            // draws every blade the density passes, takes no share of the transitions)
     vec4 transition;       // x: crossover window (threshold units; 0 = exact)
+    vec4 mechanics;        // x: stiffness (m/s^2), y: mass, z: wind response, w: per-blade variation
+    vec4 trample;          // x: trample depth, y: recovery time (s), z: 1 = the field reads the interaction map
+    vec4 field_up;         // xyz: the field's up (world), w: metres per patch unit
 } field;
 
 // Design maps (lemme 6.4), 16-bit unorm, bilinear, clamped; sample only those in GRASS_FEATURES.

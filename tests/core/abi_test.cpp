@@ -68,7 +68,7 @@ TEST(HeaderVersion, From03ToTheLibrarysOwnIsAccepted) {
     }
     EXPECT_EQ(grass_library_version(), GRASS_HEADER_VERSION);
     EXPECT_EQ(grass_library_version() >> 22, 0u);
-    EXPECT_EQ((grass_library_version() >> 12) & 0x3ffu, 4u);
+    EXPECT_EQ((grass_library_version() >> 12) & 0x3ffu, 5u);
 }
 
 TEST(OutStructSizes, TheCurrentHeaderGetsWholeStructsAnd03GetsItsOwn) {
@@ -79,6 +79,8 @@ TEST(OutStructSizes, TheCurrentHeaderGetsWholeStructsAnd03GetsItsOwn) {
     EXPECT_EQ(grass::out_struct_size(OutStruct::frame_stats, 3), offsetof(grass_frame_stats, draws));
     EXPECT_EQ(grass::out_struct_size(OutStruct::memory_stats, 3), offsetof(grass_memory_stats, host_bytes_peak));
     EXPECT_EQ(grass::out_struct_size(OutStruct::patch_info, 3), sizeof(grass_patch_info));
+    EXPECT_EQ(grass::out_struct_size(OutStruct::frame_stats, 4), offsetof(grass_frame_stats, colliders));
+    EXPECT_EQ(grass::out_struct_size(OutStruct::memory_stats, 4), offsetof(grass_memory_stats, dynamics_gpu_bytes));
 }
 
 // A context made with the 0.3 header version: the getters leave every byte past the 0.3

@@ -68,7 +68,7 @@ extern "C" {
 
 /* The one version number of grass: the build reads it from here (CMakeLists.txt). */
 #define GRASS_VERSION_MAJOR 0
-#define GRASS_VERSION_MINOR 4
+#define GRASS_VERSION_MINOR 5
 #define GRASS_VERSION_PATCH 0
 /* The version this header declares. Pass it to the create-context calls: the library
  * refuses a header whose major version differs from its own, whose minor is newer than its
@@ -124,7 +124,11 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_QUALITY_DESC = 0x67720007,
     GRASS_STRUCT_TYPE_GL_DESC = 0x67720101,
     GRASS_STRUCT_TYPE_VK_DESC = 0x67720201,
-    GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202
+    GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202,
+    /* 0.5: responsive grass */
+    GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
+    GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
+    GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -185,6 +189,9 @@ typedef enum grass_message_id {
      * GRASS_ERROR_BACKEND: the context cannot draw again; destroy it (that stays safe) and
      * make a new one on a new device. */
     GRASS_MSG_DEVICE_LOST = 406,
+    /* 0.5: warning: grass_view_desc.time went backwards (a host restarted its clock): the
+     * responsive grass state keeps going with a time step of 0 for that frame. */
+    GRASS_MSG_TIME_BACKWARDS = 407,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501
@@ -254,6 +261,12 @@ typedef struct grass_memory_stats {
     uint64_t gpu_bytes;        /* GPU memory the backend holds (buffers + textures) */
     /* 0.4: */
     uint64_t host_bytes_peak; /* the highest host_bytes since the context was created */
+    /* 0.5: */
+    /* GPU memory of the responsive grass (included in gpu_bytes): the interaction map and
+     * each patch's blade control points, made at the first frame that needs them. 0 for a
+     * context that never had wind or colliders. Bounded by grass_interaction_desc: it does
+     * not grow with the fields, the time or the number of colliders. */
+    uint64_t dynamics_gpu_bytes;
 } grass_memory_stats;
 
 GRASS_API grass_result grass_get_memory_stats(const grass_context* context, grass_memory_stats* out_stats);
@@ -690,8 +703,12 @@ typedef struct grass_view_desc {
                                     default (0.35, 0.8, 0.25) */
     float sun_color[3];     /* linear RGB irradiance; default (1.0, 0.95, 0.85) */
     float ambient_color[3]; /* linear RGB; default (0.30, 0.36, 0.45) */
-    double time;            /* seconds; reserved for wind, default 0 */
-    uint32_t flags;         /* grass_view_flags; default 0 */
+    /* Seconds, any origin: drives the wind, and the difference to the previous frame's time
+     * is the time step of the responsive grass (collider trails recover with it). The first
+     * frame of a context steps 0; a time earlier than the previous frame's steps 0 and warns
+     * (GRASS_MSG_TIME_BACKWARDS). Within +-1e9 s; default 0. */
+    double time;
+    uint32_t flags; /* grass_view_flags; default 0 */
 } grass_view_desc;
 
 GRASS_API grass_view_desc grass_default_view_desc(void);
@@ -723,6 +740,11 @@ typedef struct grass_frame_stats {
      * and tier that draws at least one instance. Each grass_gl_render() or grass_vk_record()
      * of the frame issues this many instanced draw calls. */
     uint64_t draws;
+    /* 0.5: */
+    uint64_t colliders;          /* colliders given for this frame (grass_set_colliders) */
+    uint64_t colliders_in_map;   /* of them, those that reach the interaction map's window */
+    uint64_t interaction_texels; /* texels the interaction pass updates this frame (0: no pass) */
+    double time_step;            /* seconds the responsive grass stepped this frame */
 } grass_frame_stats;
 
 /* Stats of the last begun frame. */
@@ -739,6 +761,163 @@ GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass
  * current; Vulkan: call grass_vk_prepare_frame every frame (it resets the queries). */
 GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, double out_ms[GRASS_TIER_KIND_COUNT],
                                              grass_bool* out_available);
+
+/* ---- Responsive grass (0.5): wind, gravity, colliders (docs/responsive.md) -------- */
+/*
+ * jahrmann2017 section 5, bakay2003 section 3.3. A field is tiled from one patch, so there
+ * is no state per blade: wind and gravity are functions of position and time, evaluated
+ * where blades and slices are drawn, and what colliders leave behind (pressed grass and its
+ * recovery) is kept in an *interaction map*: a few texels per metre around the camera,
+ * toroidally addressed, updated on the GPU once per frame (GL: by the frame's first
+ * grass_gl_render; Vulkan: by grass_vk_prepare_frame). Everything here is optional: with
+ * no wind, no colliders and no gravity change, the shaders and GPU memory are those of
+ * still grass. Each tier draws the same state: blades follow Jahrmann's three control
+ * points, volume and image tiers shear their slice lookups as bakay's length-preserving
+ * shells do, and pressed grass lies down and darkens in all three.
+ */
+
+/* How the blades of one grass type (a patch) respond (jahrmann2017 5.1). Per blade, each
+ * value is scaled by a factor in [1 - variation, 1 + variation] drawn from the blade. */
+typedef struct grass_blade_mechanics {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_BLADE_MECHANICS */
+    const void* next;       /* NULL */
+    /* Recovery (jahrmann eq. 3's s): the acceleration, m/s^2, that pushes a blade's tip
+     * away from its rest pose by its own length. A blade settles where recovery balances
+     * wind and gravity, so an acceleration a moves the tip a / stiffness of its length.
+     * 0.1 .. 1e5; default 40. */
+    float stiffness;
+    /* Gravity response (eq. 4's m): multiplies grass_wind_desc.gravity's difference to
+     * standard gravity (the patch's blades are their shape under standard gravity).
+     * 0 .. 100; default 1. */
+    float mass;
+    /* Wind response: the acceleration, m/s^2, per m/s of wind across the blade
+     * (jahrmann eq. 7-8 align it). 0 .. 100; default 2. */
+    float wind_response;
+    /* How far a collision presses the grass below the collider's own surface: 0 = down to
+     * where the collider reached, 1 = flat wherever touched (jahrmann's crippling eta).
+     * 0 .. 1; default 0.5. */
+    float trample_depth;
+    /* Time constant of standing up again after a collision, s: the pressed depth decays as
+     * exp(-t / recovery_time). 0.01 .. 1e5; default 4. */
+    float recovery_time;
+    /* Per-blade variation of all the above, 0 .. 0.9; default 0.25. */
+    float variation;
+} grass_blade_mechanics;
+
+GRASS_API grass_blade_mechanics grass_default_blade_mechanics(void);
+
+/* Sets the mechanics of every blade of `patch` (all fields and grass types using it), from
+ * the next grass_begin_frame on. A patch starts with grass_default_blade_mechanics(). */
+GRASS_API grass_result grass_set_blade_mechanics(grass_context* context, grass_patch_id patch,
+                                                 const grass_blade_mechanics* mechanics);
+
+typedef enum grass_wind_source_kind {
+    /* Blows outwards from `position` along the ground, strongest under it: a helicopter's
+     * downwash (jahrmann 7.2), a fan pointing down. */
+    GRASS_WIND_SOURCE_POINT = 0,
+    /* Blows from `position` along `direction` within `cone_angle`: a fan, a jet. */
+    GRASS_WIND_SOURCE_CONE = 1,
+    /* A short blast: a ring front leaving `position` at `front_speed` at `start_time`,
+     * blowing outwards where it passes, gone after `duration`. */
+    GRASS_WIND_SOURCE_BLAST = 2
+} grass_wind_source_kind;
+
+#define GRASS_MAX_WIND_SOURCES 16
+
+/* A local wind source. Its speed falls with the distance d from `position` as
+ * 1 / (1 + (d / radius)^2). */
+typedef struct grass_wind_source {
+    grass_wind_source_kind kind;
+    double position[3]; /* world metres, within +-1e12 */
+    float direction[3]; /* CONE: the axis, not zero; otherwise unused */
+    float cone_angle;   /* CONE: half angle, radians, (0, pi/2]; otherwise unused */
+    float speed;        /* m/s at the source, 0 .. 1e3 */
+    float radius;       /* metres where the speed has halved, 1e-3 .. 1e6 */
+    double start_time;  /* BLAST: grass_view_desc.time when it goes off; otherwise unused */
+    float duration;     /* BLAST: seconds it blows, > 0 .. 1e4; otherwise unused */
+    float front_speed;  /* BLAST: m/s its front travels, > 0 .. 1e4; otherwise unused */
+} grass_wind_source;
+
+/* The wind of the whole context (every field) and the environmental gravity. */
+typedef struct grass_wind_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_WIND_DESC */
+    const void* next;       /* NULL */
+    /* Mean wind, world space: a direction (need not be unit; its component along a field's
+     * up is ignored) and a speed in m/s, 0 .. 1e3. Default (1, 0, 0.3) and 0: no wind. */
+    float direction[3];
+    float speed;
+    /* Gusts (bakay 3.3: a strong attack and a slow fall, travelling with the wind): they add
+     * up to gust_strength x speed; 0 .. 4, default 0.6. gust_length: the distance between
+     * gusts along the wind, metres, 0.1 .. 1e5, default 14. The gust train is a sum of
+     * waves of incommensurate periods, offset by position, so its period never shows. */
+    float gust_strength;
+    float gust_length;
+    /* Small-scale changes of speed and direction, 0 .. 1; default 0.3. */
+    float turbulence;
+    /* Environmental gravity (jahrmann eq. 4, the direction form), m/s^2, each component
+     * within +-1e3. Default (0, -9.81, 0): standard gravity, under which the patch's blades
+     * have their generated shape, so it moves nothing; another value bends them by the
+     * difference (grass_blade_mechanics.mass). */
+    float gravity[3];
+    /* Local sources, copied: 0 .. GRASS_MAX_WIND_SOURCES. */
+    const grass_wind_source* sources;
+    uint32_t source_count;
+} grass_wind_desc;
+
+GRASS_API grass_wind_desc grass_default_wind_desc(void);
+
+/* Sets the wind and gravity from the next grass_begin_frame on; NULL restores the default
+ * (no wind, standard gravity: still grass, which costs nothing). */
+GRASS_API grass_result grass_set_wind(grass_context* context, const grass_wind_desc* wind);
+
+typedef enum grass_collider_shape {
+    GRASS_COLLIDER_SPHERE = 0, /* a ball, a wheel's contact, jahrmann's spheres */
+    GRASS_COLLIDER_CAPSULE = 1 /* a segment with a radius: legs, bodies, logs */
+} grass_collider_shape;
+
+/* A collider of one frame. */
+typedef struct grass_collider {
+    grass_collider_shape shape;
+    float radius;     /* metres, 0 .. 1e6 (0 touches nothing) */
+    double centre[3]; /* SPHERE: the centre; CAPSULE: one end of its axis. World metres, within +-1e12 */
+    double end[3];    /* CAPSULE: the other end of its axis; unused for a sphere */
+    /* Optional, world m/s, each component within +-1e5: how the collider moved over the last
+     * time step. The pass sweeps it from centre - velocity x step to centre, so a fast
+     * collider leaves a continuous trail at any frame rate. Zero: only where it is now. */
+    float velocity[3];
+} grass_collider;
+
+#define GRASS_MAX_COLLIDERS 65536
+
+/* Sets the colliders of the next frames (copied): they press the grass at each following
+ * grass_begin_frame until replaced; count 0 clears them (trails recover). The work is
+ * binned by the map's tiles: it grows with the area colliders touch, not with the field.
+ * 0 .. GRASS_MAX_COLLIDERS. */
+GRASS_API grass_result grass_set_colliders(grass_context* context, const grass_collider* colliders, uint32_t count);
+
+/* The interaction map: where collider trails live, around the camera. */
+typedef struct grass_interaction_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_INTERACTION_DESC */
+    const void* next;       /* NULL */
+    /* The world's up; the map lies across it, and colliders press along it. Not zero;
+     * default (0, 1, 0). A field whose up differs by more than 60 degrees ignores the map. */
+    float up[3];
+    /* Texels per side of each level, a power of two, 64 .. 2048; default 256. */
+    uint32_t resolution;
+    /* 1 or 2 levels; default 2: a fine level near the camera for the blades and a coarse
+     * one, as far as the volume and image tiers, so a trail stays visible from afar. */
+    uint32_t level_count;
+    /* Metres per texel of each level (level 1 >= level 0), 1e-3 .. 1e3; default 0.05, 0.5:
+     * 12.8 m and 128 m across at 256 texels. A trail outside the coarse level is gone. */
+    float texel_size[2];
+} grass_interaction_desc;
+
+GRASS_API grass_interaction_desc grass_default_interaction_desc(void);
+
+/* Configures the interaction map and clears it (every trail is gone); NULL restores the
+ * default. The map's GPU memory (resolution^2 x 16 bytes per level) is made at the first
+ * frame with colliders and kept until this call or the context's end. */
+GRASS_API grass_result grass_set_interaction(grass_context* context, const grass_interaction_desc* desc);
 
 #ifdef __cplusplus
 } /* extern "C" */

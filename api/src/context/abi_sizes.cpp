@@ -10,30 +10,40 @@ constexpr size_t kFrameStats03 = 152; // 9 x 8 bytes, 3 arrays of GRASS_TIER_KIN
 constexpr size_t kMemoryStats03 = 24; // host_bytes, host_allocations, gpu_bytes
 constexpr size_t kPatchInfo03 = 48;   // 3 x uint32, 6 floats, content_hash at offset 40
 
-// Sizes in grass.h 0.4 (the current header).
+// Sizes in grass.h 0.4. Literal increments: they must never change.
 constexpr size_t kFrameStats04 = kFrameStats03 + 8;   // + draws
 constexpr size_t kMemoryStats04 = kMemoryStats03 + 8; // + host_bytes_peak
 constexpr size_t kPatchInfo04 = kPatchInfo03;
 
-static_assert(GRASS_VERSION_MAJOR == 0 && GRASS_VERSION_MINOR == 4,
+// Sizes in grass.h 0.5 (the current header).
+constexpr size_t kFrameStats05 = kFrameStats04 + 32;  // + colliders, colliders_in_map, interaction_texels, time_step
+constexpr size_t kMemoryStats05 = kMemoryStats04 + 8; // + dynamics_gpu_bytes
+constexpr size_t kPatchInfo05 = kPatchInfo04;
+
+static_assert(GRASS_VERSION_MAJOR == 0 && GRASS_VERSION_MINOR == 5,
               "a new header version: add its sizes to out_struct_size and update these asserts");
-static_assert(sizeof(grass_frame_stats) == kFrameStats04, "grass_frame_stats changed: record its new size");
-static_assert(sizeof(grass_memory_stats) == kMemoryStats04, "grass_memory_stats changed: record its new size");
-static_assert(sizeof(grass_patch_info) == kPatchInfo04, "grass_patch_info changed: record its new size");
+static_assert(sizeof(grass_frame_stats) == kFrameStats05, "grass_frame_stats changed: record its new size");
+static_assert(sizeof(grass_memory_stats) == kMemoryStats05, "grass_memory_stats changed: record its new size");
+static_assert(sizeof(grass_patch_info) == kPatchInfo05, "grass_patch_info changed: record its new size");
 static_assert(offsetof(grass_frame_stats, draws) == kFrameStats03, "0.4 fields come after the 0.3 ones");
 static_assert(offsetof(grass_memory_stats, host_bytes_peak) == kMemoryStats03, "0.4 fields come after the 0.3 ones");
+static_assert(offsetof(grass_frame_stats, colliders) == kFrameStats04, "0.5 fields come after the 0.4 ones");
+static_assert(offsetof(grass_memory_stats, dynamics_gpu_bytes) == kMemoryStats04, "0.5 fields come after the 0.4 ones");
 
 } // namespace
 
 size_t out_struct_size(OutStruct which, uint32_t header_minor) {
-    const bool v03 = header_minor <= 3;
+    static constexpr size_t kFrameStats[] = {kFrameStats03, kFrameStats04, kFrameStats05};
+    static constexpr size_t kMemoryStats[] = {kMemoryStats03, kMemoryStats04, kMemoryStats05};
+    static constexpr size_t kPatchInfo[] = {kPatchInfo03, kPatchInfo04, kPatchInfo05};
+    const uint32_t v = header_minor <= 3 ? 0 : header_minor == 4 ? 1 : 2;
     switch (which) {
     case OutStruct::frame_stats:
-        return v03 ? kFrameStats03 : kFrameStats04;
+        return kFrameStats[v];
     case OutStruct::memory_stats:
-        return v03 ? kMemoryStats03 : kMemoryStats04;
+        return kMemoryStats[v];
     case OutStruct::patch_info:
-        return v03 ? kPatchInfo03 : kPatchInfo04;
+        return kPatchInfo[v];
     }
     return 0;
 }

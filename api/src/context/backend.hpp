@@ -25,6 +25,16 @@ enum MapRole : uint32_t {
     kMapRoleCount = 5
 };
 constexpr uint32_t kMapBinding[kMapRoleCount] = {2, 6, 7, 8, 9};
+
+// Feature bits of a draw past the map roles (TierDraw::features, GRASS_FEATURES in the
+// shaders): responsive grass. A draw without them runs the shader of still grass.
+constexpr uint32_t kFeatureWind = 1u << 5;        // wind or gravity: blades bend, slices sway (wind.glsl)
+constexpr uint32_t kFeatureInteraction = 1u << 6; // the interaction map is bound (interaction.glsl)
+// Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's
+// levels (sampler2D, RGBA32F, read with texelFetch) and the patch's blade control points
+// (readonly std430 buffer `BladeCurves`: PatchData::blade_curves).
+constexpr uint32_t kInteractionMapBinding[2] = {10, 11};
+constexpr uint32_t kBladeCurvesBinding = 12;
 constexpr uint32_t kNoMap = 0xffffffffu;
 
 // A design map converted by the core to 16-bit unorm, row-major, tightly packed: width x
@@ -60,6 +70,15 @@ public:
     // kind IMAGE the set with N = 0. release_patch releases them with the patch.
     virtual grass_result upload_slices(uint32_t slot, const SliceSet& set) = 0;
     virtual void release_patch(uint32_t slot) = 0;
+    // Responsive grass: the blade control points of the patch in `slot` (patch.blade_curves),
+    // uploaded by the core before the first frame that draws the patch with kFeatureWind or
+    // kFeatureInteraction, once per patch (released with the patch). A context that never
+    // draws responsive grass never calls it, so it holds no such memory.
+    virtual grass_result upload_blade_curves(uint32_t slot, const PatchData& patch) {
+        (void)slot;
+        (void)patch;
+        return GRASS_SUCCESS;
+    }
     // A design map (slot in the context's map pool). Fields reference maps by slot; a map is
     // released only when no field uses it.
     virtual grass_result upload_map(uint32_t slot, const MapTexels& map) = 0;
@@ -76,6 +95,9 @@ public:
     virtual void end_frame() {}
 
     virtual uint64_t gpu_bytes() const = 0;
+    // The part of gpu_bytes() that responsive grass holds: the interaction map's levels and
+    // the uploaded blade curves (grass_memory_stats.dynamics_gpu_bytes).
+    virtual uint64_t dynamics_gpu_bytes() const { return 0; }
 
     // grass_get_tier_gpu_ms: the GPU milliseconds of each tier kind in the most recent frame
     // whose timer queries have finished, read without waiting (a backend may poll its

@@ -21,10 +21,17 @@ static_assert(sizeof(BladeVertex) == 48, "BladeVertex must match the shader's ve
 struct PatchData {
     explicit PatchData(HostAllocator* host)
         : vertices(StlAllocator<BladeVertex>(host)), indices(StlAllocator<uint32_t>(host)),
-          thresholds(StlAllocator<float>(host)) {}
+          thresholds(StlAllocator<float>(host)), blade_curves(StlAllocator<float>(host)) {}
     Vector<BladeVertex> vertices; // blade after blade, (subdivisions + 1) * 2 each
     Vector<uint32_t> indices;     // triangle list, subdivisions * 6 per blade
     Vector<float> thresholds;     // one per blade
+    // Responsive grass (jahrmann2017 4): each blade's rest pose as a quadratic Bezier curve,
+    // 8 floats per blade (two vec4 of the std430 buffer BladeCurves, binding 12), patch units
+    // relative to the root: v1 - v0 (xyz) and the blade's arc length; v2 - v0 (xyz) and its
+    // facing angle (radians; its width runs along (-sin, 0, cos)). The generator's
+    // trajectory p(t) = b t + g t^2 is exactly the Bezier curve with v1 = b / 2, v2 = b + g.
+    // Uploaded to the GPU only when a draw needs it (kFeatureWind or kFeatureInteraction).
+    Vector<float> blade_curves;
     uint32_t blade_count = 0;
     uint32_t vertices_per_blade = 0;
     uint32_t indices_per_blade = 0;

@@ -22,8 +22,27 @@ struct FrameUniforms {
     float target[4];           // x = 1 when the host's clip z runs 0..1 (Vulkan; GL with glClipControl's
                                // GL_ZERO_TO_ONE), 0 for GL's default -1..1: the GL backend reads it at each
                                // render (the core sets 1 for Vulkan, 0 for GL); yzw = 0
+    // Responsive grass (docs/responsive.md, api/shaders/wind.glsl, interaction.glsl). Read only by
+    // shader variants with kFeatureWind / kFeatureInteraction; zero otherwise.
+    float wind[4];          // xyz: mean wind velocity, world m/s (zero: none); w: gust strength (fraction of speed)
+    float wind_shape[4];    // x: 1 / gust length (1/m), y: turbulence 0..1, z: wind source count, w: time step (s)
+    float wind_phase[4];    // xyz: phase (cycles, in [0, 1)) at the camera of the three gust waves (wind.glsl),
+                            // w: unused
+    float gravity[4];       // xyz: gravity minus standard gravity (0, -9.81, 0), world m/s^2; w: unused
+    float map_up[4];        // xyz: the interaction map's up (world, unit); w: its level count (0: no map)
+    float map_axis_u[4];    // xyz: world direction of the map's texel x (unit, across map_up); w: unused
+    float map_axis_v[4];    // xyz: world direction of the map's texel y; w: the camera's height along map_up
+                            // above the map's height anchor (m): heights in the map are above that anchor
+    float map_levels[2][4]; // per level: xy: the camera's map coordinate in texels, modulo the resolution
+                            // (in [0, N)); z: texels per metre; w: the resolution N (texels per side)
+    float wind_sources[16][4][4]; // GRASS_MAX_WIND_SOURCES, the first wind_shape.z used:
+                                  // [0] xyz: position relative to the camera (m), w: kind (grass_wind_source_kind)
+                                  // [1] xyz: unit direction (CONE), w: cos(cone angle)
+                                  // [2] x: speed (m/s), y: radius (m), z: seconds since start_time (BLAST),
+                                  //     w: duration (s)
+                                  // [3] x: front speed (m/s), yzw: unused
 };
-static_assert(sizeof(FrameUniforms) == 144, "std140 Frame block");
+static_assert(sizeof(FrameUniforms) == 1312, "std140 Frame block");
 
 // std140 uniform block `Field` (binding 1).
 struct FieldUniforms {
@@ -40,8 +59,13 @@ struct FieldUniforms {
     uint32_t tiers[4];        // x = this draw's tier, y = the field's tier count, z = 1 for an overlay tier
                               // (a hilltop tier: draws every blade the density passes, takes no share)
     float transition[4];      // x = crossover window (threshold units; 0 = exact partition)
+    // Responsive grass: the draw's patch's grass_blade_mechanics and the field's up.
+    float mechanics[4]; // x = stiffness (m/s^2), y = mass, z = wind response (m/s^2 per m/s), w = variation
+    float trample[4];   // x = trample depth (0..1), y = recovery time (s), z = 1 if this field reads the
+                        // interaction map (its up within 60 degrees of the map's up), w = unused
+    float field_up[4];  // xyz = the field's up, world, unit; w = metres per patch unit (the cell size)
 };
-static_assert(sizeof(FieldUniforms) == 304, "std140 Field block");
+static_assert(sizeof(FieldUniforms) == 352, "std140 Field block");
 
 // One patch instance of any tier: a cell, or a macro-cell of count[0] x count[1] cells.
 // Vertex input, per instance: location 5 (vec4), location 6 (uvec4) and location 7 (vec4). The exact integer
@@ -74,9 +98,60 @@ struct TierDraw {
 // tier, the horizontal slice (N = 0) for an image tier (SliceSet::slices_per_axis).
 inline uint32_t draw_slice_set(const TierDraw& draw) { return draw.kind == GRASS_TIER_VOLUME ? draw.slices : 0; }
 
+// One collider as the interaction pass reads it (std430, api/shaders/interaction.comp), in
+// the map's frame: u, v along map_axis_u/v in metres relative to the camera, h along
+// map_up in metres above the map's height anchor.
+struct GpuCollider {
+    float a[4];        // u, v, h of the centre (sphere) or one axis end (capsule); w = radius (m)
+    float b[4];        // u, v, h of the capsule's other end (= a for a sphere); w = shape (grass_collider_shape)
+    float velocity[4]; // u, v, h components, m/s; w = unused
+};
+static_assert(sizeof(GpuCollider) == 48, "GpuCollider must match interaction.comp");
+
+// What the interaction pass does to one level of the map this frame (std140 block
+// `Interaction` of interaction.comp).
+struct InteractionLevelUniforms {
+    int32_t window[4];  // xy: the window's first texel modulo N (where world texel W lands in the
+                        // toroidal texture); zw: W - W_prev per axis clamped to [-N, N] (texels that left the
+                        // window are cleared; N or -N: all)
+    float origin[4];    // xy: texel W's lower corner relative to the camera along u, v (m); z: texel size (m);
+                        // w: time step (s)
+    uint32_t counts[4]; // x: resolution N, y: tile size in texels, z: tiles per side, w: 1 = clear everything
+};
+static_assert(sizeof(InteractionLevelUniforms) == 48, "std140 Interaction block");
+
+// The interaction pass of one frame: run when map_levels > 0 (and the map exists or colliders
+// ask for it). tile_offsets[level] has tiles^2 + 1 entries into tile_colliders[level]: the
+// colliders whose swept footprint reaches each tile (indices into colliders).
+struct InteractionPlan {
+    explicit InteractionPlan(HostAllocator* host)
+        : colliders(StlAllocator<GpuCollider>(host)), tile_offsets{Vector<uint32_t>(StlAllocator<uint32_t>(host)),
+                                                                   Vector<uint32_t>(StlAllocator<uint32_t>(host))},
+          tile_colliders{Vector<uint32_t>(StlAllocator<uint32_t>(host)),
+                         Vector<uint32_t>(StlAllocator<uint32_t>(host))} {}
+    uint32_t levels = 0; // 0: no pass this frame and no map bound; the core holds no map then
+                         // (never made, or dropped by grass_set_interaction): a backend may
+                         // release its textures. While the map exists every frame runs the pass.
+    uint32_t resolution = 0;
+    bool map_is_new = false; // the backend makes (or remakes, at a new resolution) the map's textures
+    InteractionLevelUniforms level[2]{};
+    Vector<GpuCollider> colliders;
+    Vector<uint32_t> tile_offsets[2];
+    Vector<uint32_t> tile_colliders[2];
+    void clear() {
+        levels = 0;
+        map_is_new = false;
+        colliders.clear();
+        for (int l = 0; l < 2; ++l) {
+            tile_offsets[l].clear();
+            tile_colliders[l].clear();
+        }
+    }
+};
+
 struct FramePlan {
     explicit FramePlan(HostAllocator* host)
-        : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)) {}
+        : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host) {}
     FrameUniforms frame{};
     int32_t viewport[4] = {0, 0, 0, 0};
     uint32_t flags = 0;             // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
@@ -84,9 +159,11 @@ struct FramePlan {
     Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
     Vector<TierDraw> draws;         // per field, per tier that draws something
     grass_frame_stats stats{};
+    InteractionPlan interaction; // responsive grass: the interaction pass (levels = 0: none)
     void clear() {
         instances.clear();
         draws.clear();
+        interaction.clear();
         stats = grass_frame_stats{};
     }
 };
