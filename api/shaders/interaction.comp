@@ -42,14 +42,16 @@ struct Contact {
     float age;
     vec2 dir;
     bool hit;
+    bool continues; // the collider already touched the texel at the start of the sweep
 };
 
-void keep(inout Contact best, float u, float age, vec2 dir) {
+void keep(inout Contact best, float u, float age, vec2 dir, bool continues) {
     if (!best.hit || u < best.u || (u == best.u && age < best.age)) {
         best.hit = true;
         best.u = u;
         best.age = age;
         best.dir = dir;
+        best.continues = continues;
     }
 }
 
@@ -71,7 +73,9 @@ void sphere_contact(inout Contact best, Collider c, vec2 column, float dt, vec2 
     vec3 cs = mix(c0, c1, s);
     float d = length(column - cs.xy);
     if (d >= r) return;
-    keep(best, cs.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, cs.xy, d, r, c.velocity.xy, fallback));
+    bool continues = length(column - c0.xy) < r;
+    keep(best, cs.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, cs.xy, d, r, c.velocity.xy, fallback),
+         continues);
 }
 
 void capsule_contact(inout Contact best, Collider c, vec2 column, float dt, float texel, vec2 fallback) {
@@ -80,6 +84,7 @@ void capsule_contact(inout Contact best, Collider c, vec2 column, float dt, floa
     int steps = int(clamp(ceil(length(v) * dt / max(r, texel)), 1.0, 8.0));
     vec3 axis = c.b.xyz - c.a.xyz;
     float axis2 = dot(axis.xy, axis.xy);
+    bool continues = false;
     for (int k = 0; k <= steps; ++k) {
         float s = float(k) / float(steps);
         vec3 a = c.a.xyz - v * (dt * (1.0 - s));
@@ -89,7 +94,9 @@ void capsule_contact(inout Contact best, Collider c, vec2 column, float dt, floa
         vec3 q = a + axis * t;
         float d = length(column - q.xy);
         if (d >= r) continue;
-        keep(best, q.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, q.xy, d, r, v.xy, fallback));
+        continues = continues || k == 0;
+        keep(best, q.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, q.xy, d, r, v.xy, fallback),
+             continues);
     }
 }
 
@@ -116,6 +123,7 @@ void main() {
         best.u = 0.0;
         best.age = 0.0;
         best.dir = vec2(0.0);
+        best.continues = false;
         for (uint k = tile_offsets[index]; k < tile_offsets[index + 1u]; ++k) {
             Collider c = colliders[tile_colliders[k]];
             if (c.b.w < 0.5) {
@@ -124,7 +132,12 @@ void main() {
                 capsule_contact(best, c, column, dt, texel_size, texel.xy);
             }
         }
-        if (best.hit) texel = vec4(best.dir, best.u, best.age);
+        // A collider that was already on the texel when this frame's sweep began continues
+        // the same passage: the texel keeps the deepest contact of the passage (ties: the
+        // youngest), so a trail is the same at any frame rate (tests/core/interaction_pass_test).
+        // A new passage replaces what an earlier one left.
+        bool keep_stored = best.continues && texel.w < 1e29 && (texel.z < best.u || (texel.z == best.u && texel.w < best.age));
+        if (best.hit && !keep_stored) texel = vec4(best.dir, best.u, best.age);
     }
     imageStore(map, i, texel);
 }

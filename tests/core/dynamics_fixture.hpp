@@ -77,7 +77,7 @@ protected:
         const size_t texels = size_t(ip.resolution) * ip.resolution;
         for (uint32_t l = 0; l < ip.levels; ++l) {
             if (ip.map_is_new || map[l].size() != texels) map[l].assign(texels, grass::cleared_texel());
-            grass::run_interaction_pass(ip, l, map[l].data(), rule);
+            grass::run_interaction_pass(ip, l, map[l].data());
         }
     }
 
@@ -98,6 +98,5 @@ protected:
     grass_tier_desc tier{};
     grass_lod_test band{};
     std::vector<grass::InteractionTexel> map[2];
-    grass::ContactRule rule = grass::ContactRule::replace;
     bool auto_pass = true; // frame() runs the pass on `map`
 };

@@ -82,7 +82,9 @@ void test_capsule(const GpuCollider& c, V2 p, float dt, float texel, Contact* be
             a[i] = c.a[i] - c.velocity[i] * back;
             b[i] = c.b[i] - c.velocity[i] * back;
         }
-        const float t = nearest(p, V2{a[0], a[1]}, V2{b[0], b[1]});
+        // The closest point of the axis across up; a vertical capsule: its lower end.
+        const bool vertical = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) <= 0.0f;
+        const float t = vertical ? (b[2] < a[2] ? 1.0f : 0.0f) : nearest(p, V2{a[0], a[1]}, V2{b[0], b[1]});
         const float q[3] = {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
         const V2 away = p - V2{q[0], q[1]};
         const float d = length(away);
@@ -99,7 +101,7 @@ int32_t wrap(int32_t a, int32_t n) {
 
 } // namespace
 
-void run_interaction_pass(const InteractionPlan& plan, uint32_t level, InteractionTexel* texels, ContactRule rule) {
+void run_interaction_pass(const InteractionPlan& plan, uint32_t level, InteractionTexel* texels) {
     const InteractionLevelUniforms& u = plan.level[level];
     const int32_t n = static_cast<int32_t>(u.counts[0]);
     const int32_t tile_size = static_cast<int32_t>(u.counts[1]), tiles = static_cast<int32_t>(u.counts[2]);
@@ -127,7 +129,7 @@ void run_interaction_pass(const InteractionPlan& plan, uint32_t level, Interacti
             }
             if (!best.found) continue;
             const bool keep =
-                rule == ContactRule::keep_deepest_of_passage && best.continues && out.age < kAgeNone &&
+                best.continues && out.age < kAgeNone &&
                 (out.underside < best.underside || (out.underside == best.underside && out.age < best.age));
             if (keep) continue;
             if (best.dir_known) {
