@@ -6,6 +6,9 @@
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
 #include "sample_coverage.glsl"
+#include "wind.glsl"
+#include "interaction.glsl"
+#include "shell_bend.glsl"
 
 layout(location = 0) in vec3 v_position;
 layout(location = 1) in vec2 v_local;
@@ -14,9 +17,25 @@ layout(location = 2) flat in uvec2 v_first_cell;
 layout(location = 0) out vec4 out_color;
 
 void main() {
-    vec2 cell = floor(v_local);
-    vec2 s = mirror_signs(v_first_cell + uvec2(cell));
-    vec2 f = v_local - cell;
+    vec2 local = v_local;
+    float shade = 1.0;
+    if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
+        // Responsive grass (shell_bend.glsl): the quad stands for the grass at half its
+        // height, which a bend moves by x(1/2) along its direction: the slice is read that
+        // far back. Pressed grass darkens.
+        vec3 up = normalize(field.field_up.xyz);
+        float height_m = field.blade_params.w * field.field_up.w;
+        ShellBend bend = shell_bend(v_position - up * (0.5 * height_m), up, height_m);
+        float a = 0.5 * bend.angle;
+        float back = a < 1e-4 ? 0.0 : field.blade_params.w * (1.0 - cos(a)) / bend.angle;
+        vec3 d = transpose(mat3(field.patch_to_world)) * bend.dir / max(field.field_up.w, 1e-30);
+        local -= d.xz * back;
+        local = max(local, -vec2(v_first_cell)); // not before the field's first cell
+        shade = bend.shade;
+    }
+    vec2 cell = floor(local);
+    vec2 s = mirror_signs(uvec2(ivec2(v_first_cell) + ivec2(cell)));
+    vec2 f = local - cell;
     vec2 uv = vec2(s.x < 0.0 ? 1.0 - f.x : f.x, s.y < 0.0 ? 1.0 - f.y : f.y); // eq. 6.6
     // Gradients of the continuous coordinate: mirroring and cell seams must not pick mip 0.
     vec2 dx = dFdx(v_local), dy = dFdy(v_local);
@@ -27,7 +46,7 @@ void main() {
     float threshold = thresholds.r;
     if (threshold <= 0.0 || albedo.a <= 0.0) discard;
 
-    vec2 cell_point = vec2(v_first_cell) + v_local; // where the blade stands in the field
+    vec2 cell_point = vec2(v_first_cell) + local; // where the blade stands in the field
     float density = local_density(cell_point);
     // The threshold view partitions whole texels by their threshold; the picture draws the
     // share of each texel's blades the density and the tier select.
@@ -61,7 +80,7 @@ void main() {
     float height = normal_height.w * field.blade_params.w; // the grazing view's (slice_baker.cpp)
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
     // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
-    vec3 color = grass_lighting_lobes(modulate_color(albedo.rgb, cell_point), n, vec3(1.0, 0.0, 1.0), to_camera, sun, ao,
+    vec3 color = grass_lighting_lobes(modulate_color(albedo.rgb, cell_point) * shade, n, vec3(1.0, 0.0, 1.0), to_camera, sun, ao,
                                       light_maps(cell_point));
     out_color = debug_thresholds() ? threshold_code(threshold) : output_color(vec4(debug_tint(color), alpha));
 }

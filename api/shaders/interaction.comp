@@ -1,86 +1,130 @@
 #version 450
 // The interaction pass (docs/responsive.md): one dispatch per level of the interaction map,
-// one invocation per texel. Provisional (h13-vk) until the shared one lands (h13-gl); same
-// bindings. Texel: (dir_u, dir_v, U, age); cleared = (0, 0, 1e30, 1e30).
+// one invocation per texel. It clears the texels that left the window since the last frame,
+// ages the others by the time step, and records this frame's collider contacts (jahrmann2017
+// 5.3: spheres; capsules too), swept over the time step so that a fast collider leaves a
+// continuous trail. Texel: (dir_u, dir_v, U, age), see interaction.glsl.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(rgba32f, binding = 0) uniform image2D map_level;
-layout(std140, binding = 1) uniform Interaction {
+// api/src/plan/frame_plan.hpp InteractionLevelUniforms.
+layout(std140, binding = 0) uniform Interaction {
     ivec4 window; // xy: the window's first texel mod N, zw: W - W_prev (clamped to +-N)
-    vec4 origin;  // xy: texel W's lower corner relative to the camera (m), z: texel size (m), w: dt (s)
+    vec4 origin;  // xy: texel W's lower corner relative to the camera (m), z: texel size (m), w: time step (s)
     uvec4 counts; // x: N, y: tile size (texels), z: tiles per side, w: 1 = clear everything
 } level;
+
+// api/src/plan/frame_plan.hpp GpuCollider: u, v, h in the map's frame (m; h above the anchor).
 struct Collider {
-    vec4 a;        // u, v, h of the centre / one end; w: radius
-    vec4 b;        // u, v, h of the other end; w: shape (0 sphere, 1 capsule)
-    vec4 velocity; // u, v, h (m/s)
+    vec4 a;        // xyz: centre (sphere) or one axis end (capsule), w: radius
+    vec4 b;        // xyz: the capsule's other end, w: shape (0 sphere, 1 capsule)
+    vec4 velocity; // xyz: m/s
 };
-layout(std430, binding = 2) readonly buffer Colliders { Collider colliders[]; };
-layout(std430, binding = 3) readonly buffer TileOffsets { uint tile_offsets[]; };
-layout(std430, binding = 4) readonly buffer TileColliders { uint tile_colliders[]; };
+layout(std430, binding = 1) readonly buffer Colliders {
+    Collider colliders[];
+};
+layout(std430, binding = 2) readonly buffer TileOffsets {
+    uint tile_offsets[]; // tiles^2 + 1 entries into tile_colliders, tile = y * tiles + x
+};
+layout(std430, binding = 3) readonly buffer TileColliders {
+    uint tile_colliders[];
+};
+#ifdef VULKAN
+layout(binding = 4, rgba32f) uniform image2D map;
+#else
+layout(binding = 0, rgba32f) uniform image2D map; // GL: image unit 0 (grass_gl.h)
+#endif
 
 const vec4 kCleared = vec4(0.0, 0.0, 1e30, 1e30);
 
-void main() {
-    const int n = int(level.counts.x);
-    const ivec2 i = ivec2(gl_GlobalInvocationID.xy);
-    if (i.x >= n || i.y >= n) return;
-    const ivec2 j = (i - level.window.xy + 2 * n) % n;
-    const ivec2 shifted = j + level.window.zw;
-    vec4 texel = imageLoad(map_level, i);
-    if (level.counts.w == 1u || any(lessThan(shifted, ivec2(0))) || any(greaterThanEqual(shifted, ivec2(n)))) {
-        texel = kCleared;
+// A contact of this frame: the lowest underside wins, ties the youngest.
+struct Contact {
+    float u; // underside height (m above the anchor)
+    float age;
+    vec2 dir;
+    bool hit;
+};
+
+void keep(inout Contact best, float u, float age, vec2 dir) {
+    if (!best.hit || u < best.u || (u == best.u && age < best.age)) {
+        best.hit = true;
+        best.u = u;
+        best.age = age;
+        best.dir = dir;
     }
-    const float dt = level.origin.w;
+}
+
+// The direction away from point q (u, v) at horizontal distance d, or along the velocity
+// under its centre, or `fallback`.
+vec2 away_from(vec2 column, vec2 q, float d, float r, vec2 velocity, vec2 fallback) {
+    if (d >= 1e-6 * r && d > 0.0) return (column - q) / d;
+    float speed = length(velocity);
+    return speed > 0.0 ? velocity / speed : fallback;
+}
+
+void sphere_contact(inout Contact best, Collider c, vec2 column, float dt, vec2 fallback) {
+    float r = c.a.w;
+    vec3 c1 = c.a.xyz;
+    vec3 c0 = c1 - c.velocity.xyz * dt;
+    vec2 sweep = c1.xy - c0.xy;
+    float len2 = dot(sweep, sweep);
+    float s = len2 > 0.0 ? clamp(dot(column - c0.xy, sweep) / len2, 0.0, 1.0) : 1.0;
+    vec3 cs = mix(c0, c1, s);
+    float d = length(column - cs.xy);
+    if (d >= r) return;
+    keep(best, cs.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, cs.xy, d, r, c.velocity.xy, fallback));
+}
+
+void capsule_contact(inout Contact best, Collider c, vec2 column, float dt, float texel, vec2 fallback) {
+    float r = c.a.w;
+    vec3 v = c.velocity.xyz;
+    int steps = int(clamp(ceil(length(v) * dt / max(r, texel)), 1.0, 8.0));
+    vec3 axis = c.b.xyz - c.a.xyz;
+    float axis2 = dot(axis.xy, axis.xy);
+    for (int k = 0; k <= steps; ++k) {
+        float s = float(k) / float(steps);
+        vec3 a = c.a.xyz - v * (dt * (1.0 - s));
+        // The closest point of the axis to the column across up (a vertical capsule: its
+        // lower end, whose underside is the lowest).
+        float t = axis2 > 0.0 ? clamp(dot(column - a.xy, axis.xy) / axis2, 0.0, 1.0) : (axis.z < 0.0 ? 1.0 : 0.0);
+        vec3 q = a + axis * t;
+        float d = length(column - q.xy);
+        if (d >= r) continue;
+        keep(best, q.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, q.xy, d, r, v.xy, fallback));
+    }
+}
+
+void main() {
+    int n = int(level.counts.x);
+    ivec2 i = ivec2(gl_GlobalInvocationID.xy);
+    if (i.x >= n || i.y >= n) return;
+    ivec2 j = (i - level.window.xy + n) % n; // window-relative: world texel W + j (operands >= 0)
+    ivec2 moved = j + level.window.zw;
+    bool stale = level.counts.w == 1u || any(lessThan(moved, ivec2(0))) || any(greaterThanEqual(moved, ivec2(n)));
+    vec4 texel = stale ? kCleared : imageLoad(map, i);
+    float dt = level.origin.w;
     if (texel.w < 1e29) texel.w += dt;
 
-    const vec2 column = level.origin.xy + (vec2(j) + 0.5) * level.origin.z;
-    const uvec2 tile = uvec2(j) / level.counts.y;
-    const uint t = tile.y * level.counts.z + tile.x;
-    float best_u = 1e30, best_age = 1e30;
-    vec2 best_dir = vec2(0.0);
-    for (uint k = tile_offsets[t]; k < tile_offsets[t + 1u]; ++k) {
-        const Collider c = colliders[tile_colliders[k]];
-        const float r = c.a.w;
-        if (r <= 0.0) continue;
-        const vec3 v = c.velocity.xyz;
-        if (c.b.w < 0.5) {
-            const vec3 c1 = c.a.xyz, c0 = c1 - v * dt;
-            const vec2 d01 = c1.xy - c0.xy;
-            const float len2 = dot(d01, d01);
-            const float s = len2 > 0.0 ? clamp(dot(column - c0.xy, d01) / len2, 0.0, 1.0) : 1.0;
-            const vec3 cs = mix(c0, c1, s);
-            const float d = distance(column, cs.xy);
-            if (d >= r) continue;
-            const float u = cs.z - sqrt(r * r - d * d);
-            const float age = (1.0 - s) * dt;
-            if (u < best_u || (u == best_u && age < best_age)) {
-                best_u = u;
-                best_age = age;
-                best_dir = d >= 1e-6 * r ? (column - cs.xy) / d : (dot(v.xy, v.xy) > 0.0 ? normalize(v.xy) : texel.xy);
-            }
-        } else {
-            const int steps = int(clamp(ceil(length(v) * dt / max(r, level.origin.z)), 1.0, 8.0));
-            for (int q = 0; q <= steps; ++q) {
-                const float s = float(q) / float(steps);
-                const vec3 shift = v * dt * (s - 1.0);
-                const vec3 a = c.a.xyz + shift, b = c.b.xyz + shift;
-                const vec2 ab = b.xy - a.xy;
-                const float len2 = dot(ab, ab);
-                const float tt = len2 > 0.0 ? clamp(dot(column - a.xy, ab) / len2, 0.0, 1.0) : 0.0;
-                const vec3 p = mix(a, b, tt);
-                const float d = distance(column, p.xy);
-                if (d >= r) continue;
-                const float u = p.z - sqrt(r * r - d * d);
-                const float age = (1.0 - s) * dt;
-                if (u < best_u || (u == best_u && age < best_age)) {
-                    best_u = u;
-                    best_age = age;
-                    best_dir = d >= 1e-6 * r ? (column - p.xy) / d : (dot(v.xy, v.xy) > 0.0 ? normalize(v.xy) : texel.xy);
-                }
+    uint tile_size = max(level.counts.y, 1u);
+    uvec2 tile = uvec2(j) / tile_size;
+    uint tiles = level.counts.z;
+    if (tile.x < tiles && tile.y < tiles) {
+        uint index = tile.y * tiles + tile.x;
+        float texel_size = level.origin.z;
+        vec2 column = level.origin.xy + (vec2(j) + 0.5) * texel_size;
+        Contact best;
+        best.hit = false;
+        best.u = 0.0;
+        best.age = 0.0;
+        best.dir = vec2(0.0);
+        for (uint k = tile_offsets[index]; k < tile_offsets[index + 1u]; ++k) {
+            Collider c = colliders[tile_colliders[k]];
+            if (c.b.w < 0.5) {
+                sphere_contact(best, c, column, dt, texel.xy);
+            } else {
+                capsule_contact(best, c, column, dt, texel_size, texel.xy);
             }
         }
+        if (best.hit) texel = vec4(best.dir, best.u, best.age);
     }
-    if (best_u < 1e29) texel = vec4(best_dir, best_u, best_age);
-    imageStore(map_level, i, texel);
+    imageStore(map, i, texel);
 }

@@ -8,6 +8,9 @@
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
 #include "sample_coverage.glsl"
+#include "wind.glsl"
+#include "interaction.glsl"
+#include "shell_bend.glsl"
 
 layout(location = 0) in vec3 v_local;
 layout(location = 1) flat in vec3 v_camera_local;
@@ -47,6 +50,22 @@ float g_depth_threshold = 0.0; // the threshold of the blade where the ray turns
 // `slab`: the share of the slice's slab (the 1/n around it that its texels stand for) that
 // the ray crosses above the ground; 1 but at the last crossings.
 void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
+    // Responsive grass (shell_bend.glsl): the bent grass seen at h is the rest grass of the
+    // column whose root lies back along the bend, at its rest height; it darkens where
+    // pressed. Bent grass only gets lower, so the carrier still contains it; where it leans
+    // out of its cell it is drawn by the rays that cross the neighbouring cells (they reach
+    // 4 cells past their carrier), and it is cut off at the field's edge (accepted).
+    float shade = 1.0;
+    if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
+        vec3 up = normalize(field.field_up.xyz);
+        float ground_y = has_map(GRASS_MAP_HEIGHT) ? hit.y - h.y : 0.0;
+        ShellBend bend = shell_bend(g_to_world * vec3(h.x, ground_y, h.z) + g_origin, up, g_size.y * field.field_up.w);
+        float rest_y, back;
+        if (!shell_unbend(bend.angle, h.y, g_size.y, rest_y, back)) return;
+        vec3 d = transpose(g_to_world) * bend.dir / max(field.field_up.w, 1e-30); // unit, patch frame
+        h = vec3(h.x - d.x * back, rest_y, h.z - d.z * back);
+        shade = bend.shade;
+    }
     vec2 cell = floor(h.xz);
     vec2 global = vec2(v_cell.xy) + cell;
     if (any(lessThan(global, vec2(0.0))) || any(greaterThanEqual(global, g_field_cells - 0.5))) return;
@@ -95,7 +114,7 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     }
     if (a <= 0.0) return;
     // The design maps at the hit (lemme 6.4.2-6.4.3).
-    vec3 color = modulate_color(albedo.rgb, cell_point);
+    vec3 color = modulate_color(albedo.rgb, cell_point) * shade;
     vec2 light = light_maps(cell_point);
     vec4 normal_height = textureLod(slice_normal, coord, lod);
     vec3 nrm = normal_height.xyz * 2.0 - 1.0;

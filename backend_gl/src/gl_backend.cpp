@@ -141,6 +141,11 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
 
     instances_.create(gl_);
     uniforms_.create(gl_);
+    colliders_.create(gl_);
+    for (int l = 0; l < 2; ++l) {
+        tile_offsets_[l].create(gl_);
+        tile_colliders_[l].create(gl_);
+    }
     tier_vertex_array_ = create_instance_vertex_array(gl_, instances_.name());
     create_timers();
     result = check_errors(kCreateFunction, "creating the programs, white texture, samplers and timer queries");
@@ -160,6 +165,13 @@ GlBackend::~GlBackend() {
     if (tier_vertex_array_ != 0) gl_.DeleteVertexArrays(1, &tier_vertex_array_);
     instances_.destroy(gl_);
     uniforms_.destroy(gl_);
+    colliders_.destroy(gl_);
+    for (int l = 0; l < 2; ++l) {
+        tile_offsets_[l].destroy(gl_);
+        tile_colliders_[l].destroy(gl_);
+    }
+    release_interaction_map();
+    if (interaction_program_ != 0) gl_.DeleteProgram(interaction_program_);
     if (sampler_ != 0) gl_.DeleteSamplers(1, &sampler_);
     if (slice_sampler_ != 0) gl_.DeleteSamplers(1, &slice_sampler_);
     if (threshold_sampler_ != 0) gl_.DeleteSamplers(1, &threshold_sampler_);
@@ -257,6 +269,7 @@ grass_result GlBackend::upload_patch(uint32_t slot, const PatchData& patch) {
         return result;
     }
     gpu.index_count = static_cast<uint32_t>(patch.indices.size());
+    gpu.vertices_per_blade = patch.vertices_per_blade;
     gpu.bytes = vertex_bytes + index_bytes;
     return GRASS_SUCCESS;
 }
@@ -357,6 +370,7 @@ void GlBackend::release_patch(uint32_t slot) {
     if (gpu.vertex_array != 0) gl_.DeleteVertexArrays(1, &gpu.vertex_array);
     if (gpu.vertices != 0) gl_.DeleteBuffers(1, &gpu.vertices);
     if (gpu.indices != 0) gl_.DeleteBuffers(1, &gpu.indices);
+    if (gpu.curves != 0) gl_.DeleteBuffers(1, &gpu.curves);
     gpu = PatchGpu{};
 }
 
@@ -456,6 +470,7 @@ grass_result GlBackend::begin_frame(const FramePlan&) {
     // The plan is uploaded by the first grass_gl_render of the frame, where the host's
     // GL context is current by contract.
     frame_uploaded_ = false;
+    interaction_ran_ = false;
     timer_ring_.close_frame(); // a frame's timer set is closed when it ends; this is a safeguard
     frame_timer_opened_ = false;
     return GRASS_SUCCESS;
@@ -469,7 +484,9 @@ uint64_t GlBackend::gpu_bytes() const {
     for (const PatchGpu& p : patches_) bytes += p.bytes;
     for (const SliceGpu& s : slices_) bytes += s.bytes;
     for (const MapGpu& m : maps_) bytes += m.bytes;
-    return bytes;
+    bytes += colliders_.capacity();
+    for (int l = 0; l < 2; ++l) bytes += tile_offsets_[l].capacity() + tile_colliders_[l].capacity();
+    return bytes + dynamics_gpu_bytes();
 }
 
 } // namespace grass

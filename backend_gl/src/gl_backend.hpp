@@ -40,6 +40,9 @@ public:
     grass_result begin_frame(const FramePlan& plan) override;
     void end_frame() override;
     uint64_t gpu_bytes() const override;
+    // Responsive grass (gl_dynamics.cpp).
+    grass_result upload_blade_curves(uint32_t slot, const PatchData& patch) override;
+    uint64_t dynamics_gpu_bytes() const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
 
     // Draws the context's plan into the bound draw framebuffer (gl_draw.cpp). In a debug
@@ -54,7 +57,10 @@ private:
         GLuint vertices = 0;
         GLuint indices = 0;
         uint32_t index_count = 0;
+        uint32_t vertices_per_blade = 0;
         uint64_t bytes = 0;
+        GLuint curves = 0; // responsive grass: the blade curves (shader storage), 0 until needed
+        uint64_t curve_bytes = 0;
     };
     // One uploaded SliceSet of a patch: three 2D array textures with full mip chains.
     struct SliceGpu {
@@ -94,6 +100,15 @@ private:
     void draw_blades(const FramePlan& plan) const;
     void draw_sliced(const FramePlan& plan, grass_tier_kind kind) const; // volume or image draws
     void draw_debug(const FramePlan& plan) const;                        // GRASS_VIEW_FLAG_DEBUG_CELLS
+    // gl_dynamics.cpp: the interaction pass of the frame (plan.interaction), run by its first
+    // render before any draw: (re)makes the map's textures when the plan says so, uploads
+    // the colliders and tile lists, dispatches interaction.comp per level, then a barrier.
+    grass_result run_interaction_pass(const FramePlan& plan, const char* function);
+    // Binds what the draws of responsive grass read: the map's levels at units 10-11.
+    void bind_interaction_maps() const;
+    void release_interaction_map();
+    // Uniform staging: the interaction pass's level blocks after the draws' Field blocks.
+    size_t stage_interaction_uniforms(const FramePlan& plan, size_t size);
     // Timer queries (gl_timers.cpp): one GL_TIMESTAMP query per stamp of the core's ring
     // (timing/tier_timer_ring.hpp) of kTimerSets frames; each grass_gl_render of a frame is
     // one pass of it.
@@ -139,6 +154,16 @@ private:
     GLuint timer_queries_[kTimerQueries] = {};
     TierTimerRing timer_ring_{kTimerSets, TierTimerRing::WhenBusy::skip_frame};
     bool frame_timer_opened_ = false; // the first render of the frame has opened its set
+    // Responsive grass.
+    GLuint interaction_program_ = 0;        // compiled on the first frame with an interaction pass
+    GLuint interaction_maps_[2] = {};       // GL_RGBA32F, one per level
+    uint32_t interaction_resolution_ = 0;   // N of the textures made
+    uint32_t interaction_levels_ = 0;       // levels made
+    bool interaction_ran_ = false;          // this frame's pass has run
+    GLintptr interaction_uniform_offsets_[2] = {};
+    GlStreamBuffer colliders_;
+    GlStreamBuffer tile_offsets_[2];
+    GlStreamBuffer tile_colliders_[2];
 };
 
 } // namespace grass

@@ -35,14 +35,24 @@ void GlBackend::upload_frame(uint32_t samples, bool clip_zero_to_one) {
         field_uniform_offsets_[i] = static_cast<GLintptr>(align_up(size, alignment));
         size = static_cast<size_t>(field_uniform_offsets_[i]) + sizeof(FieldUniforms);
     }
+    size = stage_interaction_uniforms(plan, size);
     uniform_staging_.assign(size, 0);
     FrameUniforms frame = plan.frame;
     frame.params[3] = static_cast<float>(samples);
     frame.target[0] = clip_zero_to_one ? 1.0f : 0.0f;
     std::memcpy(uniform_staging_.data(), &frame, sizeof(FrameUniforms));
     for (size_t i = 0; i < plan.draws.size(); ++i) {
-        std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &plan.draws[i].uniforms,
-                    sizeof(FieldUniforms));
+        FieldUniforms field = plan.draws[i].uniforms;
+        // Responsive grass: blade.vert finds a vertex's blade from the patch's vertices per
+        // blade (trample.w; read only by variants with kFeatureWind / kFeatureInteraction).
+        if ((plan.draws[i].features & (kFeatureWind | kFeatureInteraction)) != 0) {
+            field.trample[3] = static_cast<float>(patches_[plan.draws[i].patch_slot].vertices_per_blade);
+        }
+        std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &field, sizeof(FieldUniforms));
+    }
+    for (uint32_t l = 0; l < plan.interaction.levels && l < 2; ++l) {
+        std::memcpy(uniform_staging_.data() + interaction_uniform_offsets_[l], &plan.interaction.level[l],
+                    sizeof(InteractionLevelUniforms));
     }
     uniforms_.upload(gl_, uniform_staging_.data(), uniform_staging_.size());
     instances_.upload(gl_, plan.instances.data(), plan.instances.size() * sizeof(TierInstance));
@@ -75,6 +85,9 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
             bound_program = program;
         }
         gl_.BindVertexArray(patch.vertex_array);
+        if ((draw.features & (kFeatureWind | kFeatureInteraction)) != 0) {
+            gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kBladeCurvesStorageBinding, patch.curves);
+        }
         bind_field_maps(fields_[draw.field_slot]);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
         gl_.DrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(patch.index_count), GL_UNSIGNED_INT,
@@ -145,8 +158,24 @@ void GlBackend::draw_debug(const FramePlan& plan) const {
 
 grass_result GlBackend::render(const char* function) {
     const FramePlan& plan = ctx_->plan;
-    if (plan.draws.empty()) return GRASS_SUCCESS;
+    // The interaction pass runs once per frame even when nothing is drawn: trails age.
+    const bool pass_pending = plan.interaction.levels > 0 && !interaction_ran_;
+    if (plan.draws.empty() && !pass_pending) return GRASS_SUCCESS;
     const bool debug = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
+    // Responsive grass: draws that read the blade curves or the interaction map.
+    bool dynamics = pass_pending;
+    bool reads_map = false;
+    for (const TierDraw& draw : plan.draws) {
+        dynamics = dynamics || (draw.features & (kFeatureWind | kFeatureInteraction)) != 0;
+        reads_map = reads_map || (draw.features & kFeatureInteraction) != 0;
+        if (!debug && draw.kind == GRASS_TIER_GEOMETRY && (draw.features & (kFeatureWind | kFeatureInteraction)) != 0 &&
+            patches_[draw.patch_slot].curves == 0) {
+            return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
+                              "%s: patch slot %u is drawn with responsive grass but its blade curves were never "
+                              "uploaded (internal error)",
+                              function, draw.patch_slot);
+        }
+    }
 
     // grass_begin_frame checked the plan against what the core uploaded (check_plan in
     // context/invariants.hpp): every draw's field, patch and slice set is here.
@@ -177,7 +206,16 @@ grass_result GlBackend::render(const char* function) {
         upload_frame(sample_count, clip_zero_to_one);
     }
 
-    GlDrawStateGuard guard(gl_); // also makes texture unit 0 active
+    GlDrawStateGuard guard(gl_, dynamics); // also makes texture unit 0 active
+    if (pass_pending) {
+        // Before any draw of the frame, and before the Frame block is bound at uniform
+        // binding 0 (the pass binds its level's block there).
+        interaction_ran_ = true;
+        const grass_result result = run_interaction_pass(plan, function);
+        if (result != GRASS_SUCCESS) return result;
+    }
+    if (plan.draws.empty()) return GRASS_SUCCESS;
+    if (reads_map && interaction_maps_[0] != 0) bind_interaction_maps();
     gl_.Viewport(plan.viewport[0], plan.viewport[1], plan.viewport[2], plan.viewport[3]);
     if (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) {
         gl_.Disable(GL_DEPTH_TEST);

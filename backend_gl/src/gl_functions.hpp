@@ -78,6 +78,12 @@
     /* drawing */                                                                    \
     X(PFNGLDRAWARRAYSINSTANCEDBASEINSTANCEPROC, DrawArraysInstancedBaseInstance)     \
     X(PFNGLDRAWELEMENTSINSTANCEDBASEINSTANCEPROC, DrawElementsInstancedBaseInstance) \
+    /* responsive grass: the interaction pass (gl_dynamics.cpp) */                   \
+    X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                                     \
+    X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                                         \
+    X(PFNGLBINDIMAGETEXTUREPROC, BindImageTexture)                                   \
+    X(PFNGLCLEARTEXIMAGEPROC, ClearTexImage)                                         \
+    X(PFNGLTEXTUREPARAMETERIPROC, TextureParameteri)                                 \
     /* timer queries (grass_get_tier_gpu_ms) */                                      \
     X(PFNGLGETQUERYIVPROC, GetQueryiv)                                               \
     X(PFNGLCREATEQUERIESPROC, CreateQueries)                                         \

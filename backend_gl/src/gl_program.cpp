@@ -12,6 +12,7 @@ extern const char* const image_vert;
 extern const char* const image_frag;
 extern const char* const volume_vert;
 extern const char* const volume_frag;
+extern const char* const interaction_comp;
 } // namespace grass_gl_shaders
 
 namespace grass {
@@ -31,6 +32,7 @@ constexpr SamplerUnit kSamplerUnits[] = {
     {"slice_normal", kSliceNormalUnit},     {"slice_threshold", kSliceThresholdUnit},
     {"color_map", kMapUnit[kMapColor]},     {"ambient_map", kMapUnit[kMapAmbient]},
     {"diffuse_map", kMapUnit[kMapDiffuse]}, {"height_map", kMapUnit[kMapHeight]},
+    {"interaction_level0", kInteractionMapUnit[0]}, {"interaction_level1", kInteractionMapUnit[1]},
 };
 
 // Reads a shader or program info log through the context's allocator.
@@ -103,35 +105,21 @@ ProgramSource program_source(GlProgramKind kind) {
     }
 }
 
-} // namespace
-
-grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
-                            uint32_t features, GLuint* out_program) {
-    const ProgramSource source = program_source(kind);
-    GLuint vert = 0;
-    GLuint frag = 0;
-    grass_result result = compile(ctx, gl, function, GL_VERTEX_SHADER, source.vert_name, source.vert, features, &vert);
-    if (result != GRASS_SUCCESS) return result;
-    result = compile(ctx, gl, function, GL_FRAGMENT_SHADER, source.frag_name, source.frag, features, &frag);
-    if (result != GRASS_SUCCESS) {
-        gl.DeleteShader(vert);
-        return result;
-    }
-
+// Links the compiled shaders (deleted here, whatever the outcome) into a program.
+grass_result link(grass_context* ctx, const GlFunctions& gl, const char* function, const char* name,
+                  uint32_t features, const GLuint* shaders, int shader_count, GLuint* out_program) {
     const GLuint program = gl.CreateProgram();
     if (program == 0) {
-        gl.DeleteShader(vert);
-        gl.DeleteShader(frag);
+        for (int i = 0; i < shader_count; ++i) gl.DeleteShader(shaders[i]);
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED, "%s: glCreateProgram returned 0",
                          function);
     }
-    gl.AttachShader(program, vert);
-    gl.AttachShader(program, frag);
+    for (int i = 0; i < shader_count; ++i) gl.AttachShader(program, shaders[i]);
     gl.LinkProgram(program);
-    gl.DetachShader(program, vert);
-    gl.DetachShader(program, frag);
-    gl.DeleteShader(vert);
-    gl.DeleteShader(frag);
+    for (int i = 0; i < shader_count; ++i) {
+        gl.DetachShader(program, shaders[i]);
+        gl.DeleteShader(shaders[i]);
+    }
 
     GLint ok = GL_FALSE;
     gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
@@ -139,9 +127,39 @@ grass_result create_program(grass_context* ctx, const GlFunctions& gl, const cha
         const Vector<char> log = info_log(ctx, program, gl.GetProgramiv, gl.GetProgramInfoLog);
         gl.DeleteProgram(program);
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
-                         "%s: the GL driver failed to link %s (features 0x%x): %s", function, source.name, features,
+                         "%s: the GL driver failed to link %s (features 0x%x): %s", function, name, features,
                          log.data());
     }
+    *out_program = program;
+    return GRASS_SUCCESS;
+}
+
+} // namespace
+
+grass_result create_interaction_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                        GLuint* out_program) {
+    GLuint comp = 0;
+    const grass_result result =
+        compile(ctx, gl, function, GL_COMPUTE_SHADER, "interaction.comp", grass_gl_shaders::interaction_comp, 0, &comp);
+    if (result != GRASS_SUCCESS) return result;
+    return link(ctx, gl, function, "the interaction pass program", 0, &comp, 1, out_program);
+}
+
+grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
+                            uint32_t features, GLuint* out_program) {
+    const ProgramSource source = program_source(kind);
+    GLuint shaders[2] = {0, 0};
+    grass_result result =
+        compile(ctx, gl, function, GL_VERTEX_SHADER, source.vert_name, source.vert, features, &shaders[0]);
+    if (result != GRASS_SUCCESS) return result;
+    result = compile(ctx, gl, function, GL_FRAGMENT_SHADER, source.frag_name, source.frag, features, &shaders[1]);
+    if (result != GRASS_SUCCESS) {
+        gl.DeleteShader(shaders[0]);
+        return result;
+    }
+    GLuint program = 0;
+    result = link(ctx, gl, function, source.name, features, shaders, 2, &program);
+    if (result != GRASS_SUCCESS) return result;
 
     for (const SamplerUnit& sampler : kSamplerUnits) {
         const GLint location = gl.GetUniformLocation(program, sampler.name);

@@ -31,13 +31,34 @@ enum GlProgramKind : uint32_t {
     kProgramDebugTiers = 3, // debug_tiers.vert + debug_tiers.frag (GRASS_VIEW_FLAG_DEBUG_CELLS)
     kProgramKindCount = 4
 };
-constexpr uint32_t kFeatureVariants = 1u << kMapRoleCount; // every feature mask
+// Every feature mask: the design maps' bits, then kFeatureWind and kFeatureInteraction.
+constexpr uint32_t kFeatureVariants = kFeatureInteraction << 1;
+static_assert(kFeatureWind == 1u << kMapRoleCount && kFeatureInteraction == kFeatureWind << 1,
+              "feature bits follow the design maps' bits");
 
-// Compiles and links the program of `kind` for the feature mask `features` (< 32): the
-// shaders get `#define GRASS_FEATURES <features>u` after their #version line. On failure
-// the driver's log is in the context's error message (named after `function`) and nothing
-// is left behind.
+// Responsive grass (api/shaders/interaction.glsl, blade_dynamics.glsl, interaction.comp):
+// the interaction map's levels are sampled from texture units 10 and 11; a geometry draw
+// reads its patch's blade curves from shader storage binding 0; the interaction pass binds
+// its level's uniform block at uniform binding 0, colliders and tile lists at shader
+// storage bindings 1-3 and the level's texture at image unit 0.
+constexpr GLint kInteractionMapUnit[2] = {static_cast<GLint>(kInteractionMapBinding[0]),
+                                          static_cast<GLint>(kInteractionMapBinding[1])};
+constexpr GLuint kBladeCurvesStorageBinding = 0;
+constexpr GLuint kInteractionUniformBinding = 0;
+constexpr GLuint kCollidersStorageBinding = 1;
+constexpr GLuint kTileOffsetsStorageBinding = 2;
+constexpr GLuint kTileCollidersStorageBinding = 3;
+constexpr GLuint kInteractionImageUnit = 0;
+
+// Compiles and links the program of `kind` for the feature mask `features` (<
+// kFeatureVariants): the shaders get `#define GRASS_FEATURES <features>u` after their
+// #version line. On failure the driver's log is in the context's error message (named
+// after `function`) and nothing is left behind.
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
                             uint32_t features, GLuint* out_program);
+
+// Compiles and links the interaction pass (interaction.comp), likewise.
+grass_result create_interaction_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                        GLuint* out_program);
 
 } // namespace grass

@@ -55,7 +55,53 @@ static_assert(kHostDisabledCount <= 32, "GlDrawStateGuard::host_enabled_ holds o
 
 } // namespace
 
-GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl) : gl_(gl) {
+void GlDrawStateGuard::save_dynamics() {
+    const GlFunctions& gl = gl_;
+    gl.GetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storage_buffer_);
+    for (GLuint i = 0; i < kStorageBindings; ++i) {
+        gl.GetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &storage_bindings_[i].buffer);
+        gl.GetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, i, &storage_bindings_[i].start);
+        gl.GetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, i, &storage_bindings_[i].size);
+    }
+    const GLuint unit = kInteractionImageUnit;
+    gl.GetIntegeri_v(GL_IMAGE_BINDING_NAME, unit, &image_unit0_.texture);
+    gl.GetIntegeri_v(GL_IMAGE_BINDING_LEVEL, unit, &image_unit0_.level);
+    gl.GetIntegeri_v(GL_IMAGE_BINDING_LAYER, unit, &image_unit0_.layer);
+    gl.GetIntegeri_v(GL_IMAGE_BINDING_ACCESS, unit, &image_unit0_.access);
+    gl.GetIntegeri_v(GL_IMAGE_BINDING_FORMAT, unit, &image_unit0_.format);
+    gl.GetBooleani_v(GL_IMAGE_BINDING_LAYERED, unit, &image_unit0_.layered);
+    for (int i = 0; i < 2; ++i) {
+        gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kInteractionMapUnit[i]));
+        gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &interaction_units_[i].texture_2d);
+        gl.GetIntegerv(GL_SAMPLER_BINDING, &interaction_units_[i].sampler);
+    }
+}
+
+void GlDrawStateGuard::restore_dynamics() const {
+    const GlFunctions& gl = gl_;
+    for (GLuint i = 0; i < kStorageBindings; ++i) {
+        const UniformBinding& b = storage_bindings_[i];
+        if (b.buffer != 0 && b.size > 0) {
+            gl.BindBufferRange(GL_SHADER_STORAGE_BUFFER, i, static_cast<GLuint>(b.buffer),
+                               static_cast<GLintptr>(b.start), static_cast<GLsizeiptr>(b.size));
+        } else {
+            gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, static_cast<GLuint>(b.buffer));
+        }
+    }
+    gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storage_buffer_));
+    // GL_IMAGE_BINDING_FORMAT reads GL_R8 for a unit never bound: a valid format to restore.
+    gl.BindImageTexture(kInteractionImageUnit, static_cast<GLuint>(image_unit0_.texture), image_unit0_.level,
+                        image_unit0_.layered, image_unit0_.layer, static_cast<GLenum>(image_unit0_.access),
+                        static_cast<GLenum>(image_unit0_.format));
+    for (int i = 0; i < 2; ++i) {
+        const GLuint unit = static_cast<GLuint>(kInteractionMapUnit[i]);
+        gl.ActiveTexture(GL_TEXTURE0 + unit);
+        gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(interaction_units_[i].texture_2d));
+        gl.BindSampler(unit, static_cast<GLuint>(interaction_units_[i].sampler));
+    }
+}
+
+GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl, bool dynamics) : gl_(gl), dynamics_(dynamics) {
     gl.GetIntegerv(GL_CURRENT_PROGRAM, &program_);
     gl.GetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array_);
     gl.GetIntegerv(GL_ARRAY_BUFFER_BINDING, &array_buffer_);
@@ -66,6 +112,7 @@ GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl) : gl_(gl) {
         gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, i, &uniform_bindings_[i].size);
     }
     gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active_texture_);
+    if (dynamics_) save_dynamics(); // changes the active texture unit
     static_assert(sizeof(kSliceUnitList) / sizeof(kSliceUnitList[0]) == kSliceUnits, "slice units");
     for (int i = 0; i < kSliceUnits; ++i) {
         const GLuint unit = static_cast<GLuint>(kSliceUnitList[i]);
@@ -103,6 +150,7 @@ GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl) : gl_(gl) {
 
 GlDrawStateGuard::~GlDrawStateGuard() {
     const GlFunctions& gl = gl_;
+    if (dynamics_) restore_dynamics(); // before the active texture is restored
     gl.UseProgram(static_cast<GLuint>(program_));
     gl.BindVertexArray(static_cast<GLuint>(vertex_array_)); // brings back its element buffer
     gl.BindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer_));

@@ -12,10 +12,12 @@ namespace grass {
 // 2D texture and sampler). On construction texture unit 0 is made active, and the host's
 // draw state that would change or hide grass is set aside: draw buffer 0's colour mask is
 // made all true and the capabilities of kHostDisabled are disabled (only those the host
-// left enabled are touched; the destructor enables them again).
+// left enabled are touched; the destructor enables them again). With `dynamics` (a frame
+// of responsive grass) also the state of gl_dynamics.cpp: image unit 0, shader storage
+// bindings 0-3 and the generic one, texture units 10-11 (2D texture and sampler).
 class GlDrawStateGuard {
 public:
-    explicit GlDrawStateGuard(const GlFunctions& gl);
+    GlDrawStateGuard(const GlFunctions& gl, bool dynamics);
     ~GlDrawStateGuard();
     GlDrawStateGuard(const GlDrawStateGuard&) = delete;
     GlDrawStateGuard& operator=(const GlDrawStateGuard&) = delete;
@@ -37,6 +39,19 @@ private:
         GLint texture_2d;
         GLint sampler;
     };
+    // Responsive grass.
+    static constexpr GLuint kStorageBindings = 4; // blade curves (0), colliders and tile lists (1-3)
+    struct ImageUnit {
+        GLint texture, level, layer, access, format;
+        GLboolean layered;
+    };
+    void save_dynamics();
+    void restore_dynamics() const;
+    bool dynamics_ = false;
+    UniformBinding storage_bindings_[kStorageBindings] = {};
+    GLint storage_buffer_ = 0; // the generic binding
+    ImageUnit image_unit0_ = {};
+    MapUnit interaction_units_[2] = {}; // units 10, 11
 
     const GlFunctions& gl_;
     GLint program_ = 0;

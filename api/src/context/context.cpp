@@ -11,7 +11,7 @@
 
 grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
     : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), maps(&host), plan(&host),
-      plan_scratch(&host), cache_directory(grass::StlAllocator<char>(&host)) {
+      plan_scratch(&host), dynamics(&host), cache_directory(grass::StlAllocator<char>(&host)) {
     if (d.cache_directory && d.cache_directory[0]) {
         cache_directory.assign(d.cache_directory, d.cache_directory + std::strlen(d.cache_directory) + 1);
         desc.cache_directory = cache_directory.data();
@@ -242,6 +242,7 @@ GRASS_API grass_result grass_get_memory_stats(const grass_context* context, gras
     stats.host_allocations = context->host.allocations();
     stats.gpu_bytes = context->backend ? context->backend->gpu_bytes() : 0;
     stats.host_bytes_peak = context->host.bytes_peak();
+    stats.dynamics_gpu_bytes = context->backend ? context->backend->dynamics_gpu_bytes() : 0;
     grass::write_out_struct(context->header_minor, stats, out_stats);
     return GRASS_SUCCESS;
 }

@@ -5,6 +5,8 @@
 #include "context/allocator.hpp"
 #include "context/backend.hpp"
 #include "context/handle_pool.hpp"
+#include "dynamics/blade_mechanics.hpp"
+#include "dynamics/dynamics_state.hpp"
 #include "maps/design_map.hpp"
 #include "patch/patch_data.hpp"
 #include "plan/frame_plan.hpp"
@@ -38,6 +40,10 @@ struct Patch {
     grass_patch_desc desc{};
     uint32_t field_users = 0;     // fields that use this patch
     Vector<SliceSet*> slice_sets; // baked on demand by the fields' tiers, uploaded once each
+    // Responsive grass: how its blades respond (grass_set_blade_mechanics), and whether the
+    // backend holds its blade curves (uploaded at the first responsive draw of the patch).
+    grass_blade_mechanics mechanics = default_blade_mechanics();
+    bool blade_curves_uploaded = false;
 };
 
 struct Field {
@@ -80,6 +86,7 @@ struct grass_context {
     grass::HandlePool<grass::DesignMap> maps;
     grass::FramePlan plan;
     grass::PlanScratch plan_scratch;
+    grass::DynamicsState dynamics; // wind, colliders, the interaction map's state, the clock
     bool in_frame = false;
     uint64_t frame_number = 0;
     char last_error[512] = {0};

@@ -65,11 +65,19 @@ grass_result check_plan(grass_context* ctx, const char* fn) {
                              fn, known_kind ? tier_kind_name(draw.kind) : "unknown", draw.patch_slot, draw.field_slot,
                              draw.first_instance, draw.instance_count, plan.instances.size());
         }
-        if (draw.features != field->maps.features || draw.features != draw.uniforms.tiling[3]) {
+        // The maps' bits are the field's; past them only the responsive bits, the interaction
+        // one only while the map is bound.
+        const uint32_t map_bits = (1u << kMapRoleCount) - 1u;
+        const uint32_t dynamics_bits = draw.features & ~map_bits;
+        const bool dynamics_ok = (dynamics_bits & ~(kFeatureWind | kFeatureInteraction)) == 0 &&
+                                 ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0);
+        if ((draw.features & map_bits) != field->maps.features || !dynamics_ok ||
+            draw.features != draw.uniforms.tiling[3]) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
                              "%s: a draw of field slot %u has the feature mask 0x%x (0x%x in its uniforms), the field "
-                             "0x%x (internal error)",
-                             fn, draw.field_slot, draw.features, draw.uniforms.tiling[3], field->maps.features);
+                             "0x%x, the interaction map %u level(s) (internal error)",
+                             fn, draw.field_slot, draw.features, draw.uniforms.tiling[3], field->maps.features,
+                             plan.interaction.levels);
         }
         if (drawing && draw.kind != GRASS_TIER_GEOMETRY && !patch->slices(draw_slice_set(draw))) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
@@ -78,6 +86,25 @@ grass_result check_plan(grass_context* ctx, const char* fn) {
                              "set a field's tiers need at field creation)",
                              fn, draw.tier, tier_kind_name(draw.kind), draw.field_slot, draw.patch_slot,
                              draw_slice_set(draw));
+        }
+    }
+    return check_interaction_plan(ctx, fn, plan.interaction);
+}
+
+grass_result check_interaction_plan(grass_context* ctx, const char* fn, const InteractionPlan& ip) {
+    for (uint32_t l = 0; l < ip.levels; ++l) {
+        const uint32_t tiles = ip.level[l].counts[2];
+        const Vector<uint32_t>& offsets = ip.tile_offsets[l];
+        bool ok = ip.levels <= 2 && tiles * ip.level[l].counts[1] == ip.resolution &&
+                  offsets.size() == size_t(tiles) * tiles + 1 && offsets.front() == 0 &&
+                  offsets.back() == ip.tile_colliders[l].size();
+        for (size_t t = 1; ok && t < offsets.size(); ++t) ok = offsets[t - 1] <= offsets[t];
+        for (uint32_t i : ip.tile_colliders[l]) ok = ok && i < ip.colliders.size();
+        if (!ok) {
+            return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
+                             "%s: level %u of the interaction plan has malformed tile lists (%u tiles per side, %zu "
+                             "offsets, %zu entries, %zu colliders; internal error)",
+                             fn, l, tiles, offsets.size(), ip.tile_colliders[l].size(), ip.colliders.size());
         }
     }
     return GRASS_SUCCESS;

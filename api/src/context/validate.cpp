@@ -37,6 +37,22 @@ grass_result check_range(grass_context* ctx, const char* function, const char* n
                      function, name, value, lo, hi);
 }
 
+grass_result check_range_above(grass_context* ctx, const char* function, const char* name, double value, double lo,
+                               double hi) {
+    GRASS_TRY(check_finite(ctx, function, name, value));
+    if (value > lo && value <= hi) return GRASS_SUCCESS;
+    return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE, "%s: %s is %g; it must be in (%g, %g]",
+                     function, name, value, lo, hi);
+}
+
+grass_result check_direction(grass_context* ctx, const char* function, const char* name, const float v[3]) {
+    GRASS_TRY(check_finite_array(ctx, function, name, v, 3));
+    const double x = v[0], y = v[1], z = v[2];
+    if (x * x + y * y + z * z > 1e-12) return GRASS_SUCCESS;
+    return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_ZERO_VECTOR,
+                     "%s: %s is (%g, %g, %g); it must not be zero (length > 1e-6)", function, name, x, y, z);
+}
+
 grass_result check_min_max(grass_context* ctx, const char* function, const char* name_min, const char* name_max,
                            double lo, double hi, double limit) {
     GRASS_TRY(check_range(ctx, function, name_min, lo, 0.0, limit));

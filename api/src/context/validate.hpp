@@ -29,6 +29,11 @@ grass_result check_range(grass_context* ctx, const char* function, const char* n
 // 0 <= lo <= hi <= limit for a min/max pair.
 grass_result check_min_max(grass_context* ctx, const char* function, const char* name_min, const char* name_max,
                            double lo, double hi, double limit);
+// lo < value <= hi, and finite: a range open at its lower end ("> 0 .. 1e4").
+grass_result check_range_above(grass_context* ctx, const char* function, const char* name, double value, double lo,
+                               double hi);
+// Finite, and longer than 1e-6 (a direction that must point somewhere).
+grass_result check_direction(grass_context* ctx, const char* function, const char* name, const float v[3]);
 grass_result check_finite_array(grass_context* ctx, const char* function, const char* name, const double* v, int n);
 grass_result check_finite_array(grass_context* ctx, const char* function, const char* name, const float* v, int n);
 

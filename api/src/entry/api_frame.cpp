@@ -3,6 +3,7 @@
 #include "context/context.hpp"
 #include "context/invariants.hpp"
 #include "context/validate.hpp"
+#include "dynamics/dynamics_plan.hpp"
 #include "plan/frame_planner.hpp"
 
 #include <cmath>
@@ -61,7 +62,7 @@ grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_
         GRASS_TRY(check_range(ctx, fn, sun_names[c], v.sun_color[c], 0.0, 1e6));
         GRASS_TRY(check_range(ctx, fn, amb_names[c], v.ambient_color[c], 0.0, 1e6));
     }
-    GRASS_TRY(check_finite(ctx, fn, "view->time", v.time));
+    GRASS_TRY(check_range(ctx, fn, "view->time", v.time, -1e9, 1e9));
     if (v.flags & ~static_cast<uint32_t>(GRASS_VIEW_FLAG_NO_DEPTH_TEST | GRASS_VIEW_FLAG_DEBUG_TIERS |
                                          GRASS_VIEW_FLAG_DEBUG_CELLS | GRASS_VIEW_FLAG_DEBUG_THRESHOLDS |
                                          GRASS_VIEW_FLAG_ENCODE_SRGB)) {
@@ -104,7 +105,9 @@ GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_vie
         GRASS_TRY(grass::validate_view(context, fn, view));
         GRASS_TRY(grass::build_frame_plan(context, *view));
         GRASS_TRY(grass::check_plan(context, fn));
+        GRASS_TRY(grass::upload_blade_curves(context));
         GRASS_TRY(context->backend->begin_frame(context->plan));
+        grass::commit_dynamics(context);
         context->in_frame = true;
         context->frame_number += 1;
         return GRASS_SUCCESS;

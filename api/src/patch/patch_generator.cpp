@@ -57,6 +57,7 @@ void generate_patch(const grass_patch_desc& desc, HostAllocator* host, PatchData
     out->vertices.resize(static_cast<size_t>(n_blades) * out->vertices_per_blade);
     out->indices.resize(static_cast<size_t>(n_blades) * out->indices_per_blade);
     out->thresholds.resize(n_blades);
+    out->blade_curves.resize(static_cast<size_t>(n_blades) * 8);
     out->ao_impact = desc.ao_impact;
     out->ao_height = desc.ao_height;
 
@@ -106,6 +107,18 @@ void generate_patch(const grass_patch_desc& desc, HostAllocator* host, PatchData
         const double scale = bl.length / arc_length(vb, vg); // arc length = blade length
         vb = vb * scale;
         vg = vg * scale;
+        // The same curve as jahrmann's quadratic Bezier (v0 = root): v1 = b / 2, v2 = b + g.
+        // Not part of the content hash, which pins the vertices and indices.
+        float* curve = &out->blade_curves[static_cast<size_t>(b) * 8];
+        const Vec3 v1 = vb * 0.5, v2 = vb + vg;
+        curve[0] = static_cast<float>(v1.x);
+        curve[1] = static_cast<float>(v1.y);
+        curve[2] = static_cast<float>(v1.z);
+        curve[3] = static_cast<float>(bl.length); // the arc length: the scale made it so
+        curve[4] = static_cast<float>(v2.x);
+        curve[5] = static_cast<float>(v2.y);
+        curve[6] = static_cast<float>(v2.z);
+        curve[7] = static_cast<float>(bl.rotation); // facing: the width runs along (-sin, 0, cos)
 
         BladeVertex* v = &out->vertices[static_cast<size_t>(b) * out->vertices_per_blade];
         for (uint32_t k = 0; k <= n_sub; ++k) {

@@ -1,6 +1,7 @@
 #include "plan/frame_planner.hpp"
 
 #include "context/validate.hpp"
+#include "dynamics/dynamics_plan.hpp"
 #include "maps/design_map.hpp"
 #include "plan/lod_setup.hpp"
 #include "plan/tier_transitions.hpp"
@@ -67,9 +68,14 @@ struct NodeBox {
 class FieldPlanner {
 public:
     FieldPlanner(grass_context* ctx, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
-                 const ViewCulling& culling)
+                 const ViewCulling& culling, const DynamicsFrame& dynamics)
         : ctx_(ctx), slot_(slot), field_(field), patch_(patch), culling_(culling), frame_(field_frame(field, camera)) {
         for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
+        // Responsive grass: the shader variant of every draw of the field (still grass: the
+        // maps' bits only).
+        for (int c = 0; c < 3; ++c) field_up_[c] = frame_.axis[1][c] / frame_.cell_size;
+        reads_map_ = dynamics.field_reads_map(field_up_);
+        features_ = field.maps.features | (dynamics.wind ? kFeatureWind : 0u) | (reads_map_ ? kFeatureInteraction : 0u);
         const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
         density_map_ = density_slot != kNoMap ? ctx->maps.get(density_slot) : nullptr;
         height_map_ = height_slot != kNoMap ? ctx->maps.get(height_slot) : nullptr;
@@ -289,7 +295,7 @@ private:
             draw.patch_slot = field_.patch_slot;
             draw.first_instance = static_cast<uint32_t>(plan.instances.size());
             draw.instance_count = static_cast<uint32_t>(candidates.size());
-            draw.features = field_.maps.features;
+            draw.features = features_;
             fill_uniforms(kind, t, &draw.uniforms);
             plan.draws.push_back(draw);
             drew = true;
@@ -356,7 +362,7 @@ private:
         u->tiling[0] = d.mirror_seed;
         u->tiling[1] = d.mirror_tiling ? 1u : 0u;
         u->tiling[2] = field_.lod.tiers[tier].slices;
-        u->tiling[3] = field_.maps.features;
+        u->tiling[3] = features_;
         for (uint32_t t = 0; t < GRASS_MAX_TIERS; ++t) {
             for (int k = 0; k < 4; ++k) u->bands[t][k] = t < field_.lod.tier_count ? field_.bands[t][k] : 0.0f;
         }
@@ -366,6 +372,17 @@ private:
         u->tiers[3] = 0u;
         u->transition[0] = d.transition_window;
         u->transition[1] = u->transition[2] = u->transition[3] = 0.0f;
+        const grass_blade_mechanics& mech = patch_.mechanics;
+        u->mechanics[0] = mech.stiffness;
+        u->mechanics[1] = mech.mass;
+        u->mechanics[2] = mech.wind_response;
+        u->mechanics[3] = mech.variation;
+        u->trample[0] = mech.trample_depth;
+        u->trample[1] = mech.recovery_time;
+        u->trample[2] = reads_map_ ? 1.0f : 0.0f;
+        u->trample[3] = 0.0f;
+        for (int c = 0; c < 3; ++c) u->field_up[c] = static_cast<float>(field_up_[c]);
+        u->field_up[3] = static_cast<float>(frame_.cell_size);
     }
 
     grass_context* ctx_;
@@ -377,6 +394,9 @@ private:
     double camera_[3];
     const DesignMap* density_map_ = nullptr;
     const DesignMap* height_map_ = nullptr;
+    double field_up_[3] = {0, 1, 0}; // the field's up, world, unit
+    bool reads_map_ = false;         // the field reads the interaction map
+    uint32_t features_ = 0;          // TierDraw::features of every draw of the field
 };
 
 } // namespace
@@ -415,12 +435,14 @@ grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
     plan.frame.target[1] = plan.frame.target[2] = plan.frame.target[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;
+    const DynamicsFrame dynamics = plan_dynamics(ctx, view);
 
     const ViewCulling culling(view_projection, ctx->desc.depth_mode);
     for (uint32_t slot = 0; slot < ctx->fields.capacity(); ++slot) {
         const Field* field = ctx->fields.get(slot);
         if (!field) continue;
-        FieldPlanner planner(ctx, slot, *field, *ctx->patches.get(field->patch_slot), view.camera_position, culling);
+        FieldPlanner planner(ctx, slot, *field, *ctx->patches.get(field->patch_slot), view.camera_position, culling,
+                             dynamics);
         const grass_result r = planner.run();
         if (r != GRASS_SUCCESS) {
             plan.clear();

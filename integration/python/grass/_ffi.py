@@ -10,7 +10,7 @@ from ctypes import (CFUNCTYPE, POINTER, Structure, c_char_p, c_double, c_float, 
 
 DEFINES = {
     "GRASS_VERSION_MAJOR": 0,
-    "GRASS_VERSION_MINOR": 4,
+    "GRASS_VERSION_MINOR": 5,
     "GRASS_VERSION_PATCH": 0,
     "GRASS_TIER_KIND_COUNT": 3,
     "GRASS_MAX_TIERS": 8,
@@ -19,6 +19,8 @@ DEFINES = {
     "GRASS_DEFAULT_LOD_TEST_COUNT": 9,
     "GRASS_QUALITY_LEVEL_COUNT": 5,
     "GRASS_MAX_GRASS_TYPES": 8,
+    "GRASS_MAX_WIND_SOURCES": 16,
+    "GRASS_MAX_COLLIDERS": 65536,
 }
 DEFINES["GRASS_HEADER_VERSION"] = ((DEFINES["GRASS_VERSION_MAJOR"] << 22) | (DEFINES["GRASS_VERSION_MINOR"] << 12)
                                    | DEFINES["GRASS_VERSION_PATCH"])
@@ -39,6 +41,8 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_VIEW_DESC": 0x67720005, "GRASS_STRUCT_TYPE_GRASS_TYPE_DESC": 0x67720006,
         "GRASS_STRUCT_TYPE_QUALITY_DESC": 0x67720007, "GRASS_STRUCT_TYPE_GL_DESC": 0x67720101,
         "GRASS_STRUCT_TYPE_VK_DESC": 0x67720201, "GRASS_STRUCT_TYPE_VK_RECORD_DESC": 0x67720202,
+        "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
+        "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -54,7 +58,7 @@ ENUMS = {
         "GRASS_MSG_UPLOAD_NOT_RECORDED": 303,
         "GRASS_MSG_VERSION_MISMATCH": 400, "GRASS_MSG_DEVICE_UNSUPPORTED": 401,
         "GRASS_MSG_BACKEND_CALL_FAILED": 402, "GRASS_MSG_OUT_OF_MEMORY": 403, "GRASS_MSG_INTERNAL_ERROR": 404,
-        "GRASS_MSG_BAKE_CACHE": 405, "GRASS_MSG_DEVICE_LOST": 406,
+        "GRASS_MSG_BAKE_CACHE": 405, "GRASS_MSG_DEVICE_LOST": 406, "GRASS_MSG_TIME_BACKWARDS": 407,
         "GRASS_MSG_CONTEXT_CREATED": 500, "GRASS_MSG_PATCH_GENERATED": 501,
     },
     "grass_depth_mode": {"GRASS_DEPTH_LESS": 0, "GRASS_DEPTH_GREATER": 1},
@@ -78,6 +82,10 @@ ENUMS = {
         "GRASS_VIEW_FLAG_NONE": 0, "GRASS_VIEW_FLAG_NO_DEPTH_TEST": 1, "GRASS_VIEW_FLAG_DEBUG_TIERS": 2,
         "GRASS_VIEW_FLAG_DEBUG_CELLS": 4, "GRASS_VIEW_FLAG_DEBUG_THRESHOLDS": 8, "GRASS_VIEW_FLAG_ENCODE_SRGB": 16,
     },
+    "grass_wind_source_kind": {
+        "GRASS_WIND_SOURCE_POINT": 0, "GRASS_WIND_SOURCE_CONE": 1, "GRASS_WIND_SOURCE_BLAST": 2,
+    },
+    "grass_collider_shape": {"GRASS_COLLIDER_SPHERE": 0, "GRASS_COLLIDER_CAPSULE": 1},
 }
 for _values in ENUMS.values():
     globals().update(_values)
@@ -109,7 +117,7 @@ class grass_context_desc(Structure):
 
 class grass_memory_stats(Structure):
     _fields_ = [("host_bytes", c_uint64), ("host_allocations", c_uint64), ("gpu_bytes", c_uint64),
-                ("host_bytes_peak", c_uint64)]
+                ("host_bytes_peak", c_uint64), ("dynamics_gpu_bytes", c_uint64)]
 
 
 class grass_patch_id(Structure):
@@ -207,7 +215,36 @@ class grass_frame_stats(Structure):
                 ("blades_submitted", c_uint64), ("blades_drawn", c_uint64), ("triangles", c_uint64),
                 ("plan_ms", c_double), ("lod_test_calls", c_uint64), ("nodes_culled", c_uint64),
                 ("instances", c_uint64 * _KINDS), ("macro_cells", c_uint64 * _KINDS), ("cells", c_uint64 * _KINDS),
-                ("nodes_empty", c_uint64), ("draws", c_uint64)]
+                ("nodes_empty", c_uint64), ("draws", c_uint64), ("colliders", c_uint64),
+                ("colliders_in_map", c_uint64), ("interaction_texels", c_uint64), ("time_step", c_double)]
+
+
+class grass_blade_mechanics(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("stiffness", c_float), ("mass", c_float),
+                ("wind_response", c_float), ("trample_depth", c_float), ("recovery_time", c_float),
+                ("variation", c_float)]
+
+
+class grass_wind_source(Structure):
+    _fields_ = [("kind", grass_enum), ("position", c_double * 3), ("direction", c_float * 3),
+                ("cone_angle", c_float), ("speed", c_float), ("radius", c_float), ("start_time", c_double),
+                ("duration", c_float), ("front_speed", c_float)]
+
+
+class grass_wind_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("direction", c_float * 3), ("speed", c_float),
+                ("gust_strength", c_float), ("gust_length", c_float), ("turbulence", c_float),
+                ("gravity", c_float * 3), ("sources", POINTER(grass_wind_source)), ("source_count", c_uint32)]
+
+
+class grass_collider(Structure):
+    _fields_ = [("shape", grass_enum), ("radius", c_float), ("centre", c_double * 3), ("end", c_double * 3),
+                ("velocity", c_float * 3)]
+
+
+class grass_interaction_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("up", c_float * 3), ("resolution", c_uint32),
+                ("level_count", c_uint32), ("texel_size", c_float * 2)]
 
 
 class grass_gl_desc(Structure):
@@ -272,6 +309,13 @@ FUNCTIONS = {
     "grass_end_frame": (grass_enum, [_ctx]),
     "grass_get_frame_stats": (grass_enum, [_ctx, _P(grass_frame_stats)]),
     "grass_get_tier_gpu_ms": (grass_enum, [_ctx, _P(c_double), _P(grass_bool)]),
+    "grass_default_blade_mechanics": (grass_blade_mechanics, []),
+    "grass_set_blade_mechanics": (grass_enum, [_ctx, grass_patch_id, _P(grass_blade_mechanics)]),
+    "grass_default_wind_desc": (grass_wind_desc, []),
+    "grass_set_wind": (grass_enum, [_ctx, _P(grass_wind_desc)]),
+    "grass_set_colliders": (grass_enum, [_ctx, _P(grass_collider), c_uint32]),
+    "grass_default_interaction_desc": (grass_interaction_desc, []),
+    "grass_set_interaction": (grass_enum, [_ctx, _P(grass_interaction_desc)]),
     # grass_gl.h
     "grass_default_gl_desc": (grass_gl_desc, []),
     "grass_gl_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_gl_desc), _P(_ctx)]),

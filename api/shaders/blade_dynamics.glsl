@@ -1,0 +1,146 @@
+// Blade response (jahrmann2017 5): each blade is a quadratic Bezier curve v0, v1, v2 (its
+// rest pose I_v1, I_v2 from the BladeCurves buffer). Without state per blade, the tip v2 is
+// the *equilibrium* of the recovery force (eq. 3) against wind (eq. 7-8) and gravity (eq.
+// 4-6), then the state is validated (eq. 9, 11, 13) and capped by the interaction map's
+// press. Included by blade.vert after wind.glsl and interaction.glsl; used only by variants
+// with GRASS_WIND or GRASS_INTERACTION.
+
+#ifdef VULKAN
+#define GRASS_BLADE_CURVES_BINDING 12
+#else
+#define GRASS_BLADE_CURVES_BINDING 0 // GL: shader storage buffer binding 0 (grass_gl.h)
+#endif
+// Per blade, two vec4 (api/src/patch/patch_data.hpp): v1 - v0 and the arc length; v2 - v0
+// and the facing angle. Patch units.
+layout(std430, binding = GRASS_BLADE_CURVES_BINDING) readonly buffer BladeCurves {
+    vec4 curves[];
+};
+
+// A point of the curve v0 = 0, v1, v2 at parameter t.
+vec3 bezier(vec3 v1, vec3 v2, float t) { return 2.0 * (1.0 - t) * t * v1 + t * t * v2; }
+vec3 bezier_tangent(vec3 v1, vec3 v2, float t) { return 2.0 * (1.0 - t) * v1 + 2.0 * t * (v2 - v1); }
+
+// The length of the curve as drawn: the polyline through its `segments` + 1 vertices.
+float drawn_length(vec3 v1, vec3 v2, int segments) {
+    float len = 0.0;
+    vec3 prev = vec3(0.0);
+    for (int k = 1; k <= segments; ++k) {
+        vec3 p = bezier(v1, v2, float(k) / float(segments));
+        len += length(p - prev);
+        prev = p;
+    }
+    return len;
+}
+
+// A factor in [1 - variation, 1 + variation] for parameter k of one blade of one cell.
+float blade_variation(uint blade, uvec2 cell, uint k) {
+    uint h = blade * 0x9E3779B9u ^ cell.x * 0x85EBCA6Bu ^ cell.y * 0xC2B2AE35u ^ k * 0x27D4EB2Fu;
+    h ^= h >> 16;
+    h *= 0x7FEB352Du;
+    h ^= h >> 15;
+    h *= 0x846CA68Bu;
+    h ^= h >> 16;
+    return 1.0 + field.mechanics.w * (float(h) * (2.0 / 4294967295.0) - 1.0);
+}
+
+// Jahrmann's eq. 11, relative: v1 descends as v2 leaves its idle position. His v1 stands on
+// the up axis; the generator's rest v1 leans with the blade, so its height is scaled by
+// q(v2) / q(I_v2) and its lean kept: the rest pose stays as it is.
+float v1_height_factor(vec3 v2, vec3 up, float h) {
+    float l_proj = length(v2 - up * dot(v2, up)); // eq. 10
+    return max(1.0 - l_proj / h, 0.05 * max(l_proj / h, 1.0));
+}
+
+struct BladePose {
+    vec3 v1, v2;  // deformed control points relative to the root (world metres)
+    float shade;  // press darkening (press_shade)
+};
+
+// Validation (eq. 9, 11, 13) of tip v2 for a blade of rest points i1, i2 and length `len`
+// (drawn length, m), then a cap of its height at `cap` (m along up).
+void validate_blade(inout BladePose pose, vec3 i1, vec3 i2, vec3 up, float len, float cap, int segments) {
+    vec3 v2 = pose.v2;
+    v2 -= up * min(dot(up, v2), 0.0); // eq. 9: the tip stays above the root's plane
+    float h1 = dot(i1, up) * v1_height_factor(v2, up, len) / v1_height_factor(i2, up, len);
+    vec3 v1 = i1 - up * dot(i1, up) + up * min(h1, cap); // eq. 11 (relative)
+    // eq. 13: scale both segments to the rest length (an exact scale about the root, so
+    // once with the drawn length is enough; 1.1 bounds it against degenerate curves).
+    for (int pass = 0; pass < 2; ++pass) {
+        float r = len / max(drawn_length(v1, v2, segments), 1e-9);
+        r = min(r, 1.1);
+        v1 *= r;
+        v2 *= r;
+        if (abs(r - 1.0) < 1e-3) break;
+    }
+    pose.v1 = v1;
+    pose.v2 = v2;
+}
+
+// The deformed pose of blade `blade` of cell `cell`: rest points in world metres relative to
+// the root (`to_world`: patch -> world with the cell's mirroring), root at camera-relative
+// `root`, drawn with `segments` segments.
+BladePose blade_pose(uint blade, uvec2 cell, mat3 to_world, vec3 root, int segments) {
+    vec4 c1 = curves[2u * blade];
+    vec4 c2 = curves[2u * blade + 1u];
+    vec3 up = normalize(field.field_up.xyz);
+    vec3 i1 = to_world * c1.xyz;
+    vec3 i2 = to_world * c2.xyz;
+    float len = drawn_length(i1, i2, segments); // the rest pose's, so eq. 13 keeps it exactly
+    BladePose pose;
+    pose.v1 = i1;
+    pose.v2 = i2;
+    pose.shade = 1.0;
+    if (len <= 0.0) return pose;
+    vec3 front = to_world * vec3(cos(c2.w), 0.0, sin(c2.w));
+    front = normalize(front - up * dot(front, up) + 1e-12 * up);
+
+    if (has_map(GRASS_WIND)) {
+        float stiffness = max(field.mechanics.x * blade_variation(blade, cell, 0u), 1e-3);
+        float mass = field.mechanics.y * blade_variation(blade, cell, 1u);
+        float response = field.mechanics.z * blade_variation(blade, cell, 2u);
+        // Wind (eq. 7-8): its alignment theta with the rest blade.
+        vec3 wind = wind_at(root, up);
+        float wind_speed = length(wind);
+        float f_d = wind_speed > 0.0 ? 1.0 - abs(dot(wind / wind_speed, normalize(i2))) : 0.0;
+        float f_r = clamp(dot(i2, up) / len, 0.0, 1.0);
+        vec3 w = response * wind * f_d * f_r;
+        // Gravity (eq. 4-6): the difference to the standard gravity the rest pose has, and
+        // a quarter of its magnitude along the blade's front.
+        vec3 g_e = mass * frame.gravity.xyz;
+        vec3 g = g_e + 0.25 * length(g_e) * front;
+        // Equilibrium of recovery (I_v2 - v2) s against w + g: an acceleration a moves the
+        // tip a / s of the blade's length.
+        pose.v2 = i2 + len * (w + g) / stiffness;
+    }
+    validate_blade(pose, i1, i2, up, len, len, segments);
+
+    if (has_map(GRASS_INTERACTION)) {
+        float depth = field.trample.x * blade_variation(blade, cell, 3u);
+        float recovery = field.trample.y * blade_variation(blade, cell, 4u);
+        // The press at the root, the blade's midpoint and its tip (eq. 14 tests the tip and
+        // the midpoint), each on the ground under it; the lowest cap wins.
+        float cap = len;
+        vec3 dir = vec3(0.0);
+        vec3 mid = 0.5 * pose.v1 + 0.25 * pose.v2;
+        vec3 at[3] = vec3[3](vec3(0.0), mid - up * dot(mid, up), pose.v2 - up * dot(pose.v2, up));
+        for (int k = 0; k < 3; ++k) {
+            float c;
+            vec3 d;
+            if (interaction_press(root + at[k], len, depth, recovery, c, d) && c < cap) {
+                cap = c;
+                dir = d;
+            }
+        }
+        if (max(dot(pose.v1, up), dot(pose.v2, up)) > cap) {
+            // Lay the blade along the press until its top is at the cap.
+            dir -= up * dot(dir, up);
+            if (dot(dir, dir) < 1e-12) dir = pose.v2 - up * dot(pose.v2, up);
+            if (dot(dir, dir) < 1e-12) dir = front;
+            dir = normalize(dir);
+            pose.v2 = dir * sqrt(max(len * len - cap * cap, 0.0)) + up * cap;
+            validate_blade(pose, i1, i2, up, len, cap, segments);
+        }
+        pose.shade = press_shade(cap / len);
+    }
+    return pose;
+}

@@ -1,0 +1,86 @@
+// Wind (jahrmann2017 5.1, bakay2003 3.3): the wind velocity as a function of position and
+// time, evaluated where blades and slices are drawn (no state). Included after
+// blade_interface.glsl by the draw shaders; read only by variants with GRASS_WIND.
+//
+// The mean wind W = frame.wind.xyz (speed S, direction dir) carries three gust waves of
+// wavelengths lambda_k = gust_length * (1, 0.618034, 0.381966), travelling along dir at
+// S * (1, 1.13, 0.87). Their phases at the camera are frame.wind_phase.xyz (cycles, computed
+// by the core in double: api/src/plan); at a camera-relative point p the phase of wave k is
+// wind_phase[k] + dot(p, dir) / lambda_k. The waves' periods are incommensurate, so the gust
+// train never repeats visibly (bakay: a period that hides itself). Each wave's profile has a
+// strong attack and a slow fall (bakay 3.3, after Neyret); the speed is S (1 + gust_strength
+// G) with G in [0, 1] the mean of the three profiles, plus turbulence: small waves of speed
+// and of direction across the wind, at most turbulence x S. Local sources add their own
+// wind (frame.wind_sources).
+
+const float kWindTwoPi = 6.283185307179586;
+const vec3 kGustWavelength = vec3(1.0, 0.618034, 0.381966); // x gust_length
+const float kGustAttack = 0.15; // share of a gust's cycle spent rising
+
+// One gust's profile at phase f (cycles): 0 at the cycle's ends, 1 at its peak. Phases fall
+// with time (they travel along +dir), so the cycle's progress in time is 1 - fract(f): a
+// quick rise over kGustAttack of the cycle, then a slow quadratic fall.
+float gust_profile(float f) {
+    float x = 1.0 - fract(f);
+    if (x < kGustAttack) return smoothstep(0.0, kGustAttack, x);
+    float fall = 1.0 - (x - kGustAttack) / (1.0 - kGustAttack);
+    return fall * fall;
+}
+
+// The velocity (world m/s) of the wind sources at camera-relative p.
+vec3 wind_of_sources(vec3 p) {
+    vec3 w = vec3(0.0);
+    int count = min(int(frame.wind_shape.z + 0.5), 16);
+    for (int i = 0; i < count; ++i) {
+        vec4 s0 = frame.wind_sources[4 * i + 0]; // xyz: position, w: kind
+        vec4 s1 = frame.wind_sources[4 * i + 1]; // xyz: direction (CONE), w: cos(cone angle)
+        vec4 s2 = frame.wind_sources[4 * i + 2]; // x: speed, y: radius, z: since start, w: duration
+        vec4 s3 = frame.wind_sources[4 * i + 3]; // x: front speed
+        vec3 r = p - s0.xyz;
+        float d = length(r);
+        float radius = max(s2.y, 1e-3);
+        float speed = s2.x / (1.0 + (d / radius) * (d / radius));
+        vec3 away = d > 1e-6 * radius ? r / d : vec3(0.0);
+        int kind = int(s0.w + 0.5);
+        if (kind == 0) { // POINT: outwards, strongest under it
+            w += speed * away;
+        } else if (kind == 1) { // CONE: along its axis inside the cone, a smooth edge
+            float edge = max(0.05 * (1.0 - s1.w), 0.005);
+            w += speed * smoothstep(s1.w - edge, s1.w + edge, dot(away, s1.xyz)) * s1.xyz;
+        } else if (s2.z >= 0.0 && s2.z <= s2.w) { // BLAST: outwards in a ring around its front
+            float front = s3.x * s2.z;
+            float ring = 1.0 - smoothstep(0.0, radius, abs(d - front));
+            w += speed * ring * (1.0 - s2.z / max(s2.w, 1e-6)) * away;
+        }
+    }
+    return w;
+}
+
+// The wind velocity (world m/s) at camera-relative p, across `up` (the field's up: the
+// component along it moves nothing).
+vec3 wind_at(vec3 p, vec3 up) {
+    vec3 w = vec3(0.0);
+    vec3 mean = frame.wind.xyz;
+    float speed = length(mean);
+    if (speed > 0.0) {
+        vec3 dir = mean / speed;
+        vec3 inv_lambda = frame.wind_shape.x / kGustWavelength;
+        vec3 phase = frame.wind_phase.xyz + dot(p, dir) * inv_lambda;
+        float gust = (gust_profile(phase.x) + gust_profile(phase.y) + gust_profile(phase.z)) / 3.0;
+        // Turbulence: integer multiples of the phases (continuous across their wrap at 1),
+        // along the wind and across it (wind_phase.w: the cross-wind coordinate at the
+        // camera, in cycles of half a gust length).
+        vec3 cross_dir = cross(up, dir);
+        float cross_len = length(cross_dir);
+        cross_dir = cross_len > 1e-6 ? cross_dir / cross_len : vec3(0.0);
+        float across = frame.wind_phase.w + dot(p, cross_dir) * 2.0 * frame.wind_shape.x;
+        float t_speed = 0.5 * sin(kWindTwoPi * (3.0 * phase.y + 2.0 * across)) +
+                        0.5 * sin(kWindTwoPi * (5.0 * phase.z - 3.0 * across));
+        float t_dir = sin(kWindTwoPi * (2.0 * phase.x - 5.0 * across));
+        float turbulence = frame.wind_shape.y * speed;
+        w = dir * (speed * (1.0 + frame.wind.w * gust) + turbulence * 0.5 * t_speed) +
+            cross_dir * (turbulence * 0.5 * t_dir);
+    }
+    w += wind_of_sources(p);
+    return w - up * dot(w, up);
+}

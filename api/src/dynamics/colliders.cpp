@@ -1,0 +1,153 @@
+#include "dynamics/colliders.hpp"
+
+#include "context/raw_enum.hpp"
+#include "context/validate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace grass {
+
+namespace {
+
+double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+grass_result check_position(grass_context* ctx, const char* fn, const char* name, const double p[3]) {
+    GRASS_TRY(check_finite_array(ctx, fn, name, p, 3));
+    for (int c = 0; c < 3; ++c) {
+        if (std::fabs(p[c]) > 1e12) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                             "%s: %s[%d] is %g; it must be within +-1e12 m", fn, name, c, p[c]);
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
+// The collider's point `p` (world) in the map's frame: u, v relative to the camera, h above
+// the anchor.
+void to_map(const MapFrame& f, const double p[3], float out[3]) {
+    const double rel[3] = {p[0] - f.camera[0], p[1] - f.camera[1], p[2] - f.camera[2]};
+    out[0] = static_cast<float>(dot3(rel, f.u));
+    out[1] = static_cast<float>(dot3(rel, f.v));
+    out[2] = static_cast<float>(dot3(rel, f.up) + f.camera_height);
+}
+
+// The tiles of `level` that the footprint [lo, hi] (u, v metres relative to the camera)
+// reaches, clamped to the window: bounded work for any footprint.
+TileRect tiles_of(const InteractionLevelUniforms& level, const double lo[2], const double hi[2]) {
+    const double tile = double(level.origin[2]) * level.counts[1];
+    const int32_t last = static_cast<int32_t>(level.counts[2]) - 1;
+    int32_t r[4];
+    for (int a = 0; a < 2; ++a) {
+        const double t0 = std::floor((lo[a] - level.origin[a]) / tile);
+        const double t1 = std::floor((hi[a] - level.origin[a]) / tile);
+        if (t1 < 0.0 || t0 > last) return TileRect{1, 1, 0, 0}; // outside the window
+        r[a] = static_cast<int32_t>(std::max(t0, 0.0));
+        r[a + 2] = static_cast<int32_t>(std::min(t1, double(last)));
+    }
+    return TileRect{r[0], r[1], r[2], r[3]};
+}
+
+bool empty(const TileRect& r) { return r.x0 > r.x1 || r.z0 > r.z1; }
+
+} // namespace
+
+grass_result validate_colliders(grass_context* ctx, const char* fn, const grass_collider* colliders, uint32_t count) {
+    GRASS_TRY(check_range(ctx, fn, "count", count, 0, GRASS_MAX_COLLIDERS));
+    if (count > 0) GRASS_TRY(check_not_null(ctx, fn, "colliders", colliders));
+    char name[64];
+    auto arg = [&](uint32_t i, const char* field) {
+        std::snprintf(name, sizeof name, "colliders[%u].%s", i, field);
+        return name;
+    };
+    for (uint32_t i = 0; i < count; ++i) {
+        const grass_collider& c = colliders[i];
+        const int64_t shape = raw_enum(c.shape);
+        if (shape != GRASS_COLLIDER_SPHERE && shape != GRASS_COLLIDER_CAPSULE) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                             "%s: %s is %lld; it must be GRASS_COLLIDER_SPHERE or GRASS_COLLIDER_CAPSULE", fn,
+                             arg(i, "shape"), static_cast<long long>(shape));
+        }
+        GRASS_TRY(check_range(ctx, fn, arg(i, "radius"), c.radius, 0.0, 1e6));
+        GRASS_TRY(check_position(ctx, fn, arg(i, "centre"), c.centre));
+        // A sphere's end is unused: finite all the same (a NaN anywhere is a host's bug).
+        if (shape == GRASS_COLLIDER_CAPSULE) {
+            GRASS_TRY(check_position(ctx, fn, arg(i, "end"), c.end));
+        } else {
+            GRASS_TRY(check_finite_array(ctx, fn, arg(i, "end"), c.end, 3));
+        }
+        for (int k = 0; k < 3; ++k) {
+            char component[64];
+            std::snprintf(component, sizeof component, "colliders[%u].velocity[%d]", i, k);
+            GRASS_TRY(check_range(ctx, fn, component, c.velocity[k], -1e5, 1e5));
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
+uint64_t bin_colliders(const Vector<grass_collider>& colliders, const MapFrame& frame, double dt,
+                       DynamicsState* scratch, InteractionPlan* plan) {
+    const uint32_t levels = plan->levels;
+    Vector<TileRect>& rects = scratch->tile_rects;
+    rects.clear();
+    plan->colliders.clear();
+    for (const grass_collider& c : colliders) {
+        if (!(c.radius > 0.0f)) continue; // radius 0 touches nothing
+        GpuCollider g{};
+        to_map(frame, c.centre, g.a);
+        to_map(frame, c.shape == GRASS_COLLIDER_CAPSULE ? c.end : c.centre, g.b);
+        const double vel[3] = {c.velocity[0], c.velocity[1], c.velocity[2]};
+        g.velocity[0] = static_cast<float>(dot3(vel, frame.u));
+        g.velocity[1] = static_cast<float>(dot3(vel, frame.v));
+        g.velocity[2] = static_cast<float>(dot3(vel, frame.up));
+        g.velocity[3] = 0.0f;
+        g.a[3] = c.radius;
+        g.b[3] = static_cast<float>(c.shape);
+        // The swept footprint across up: both ends now and a step ago, grown by the radius.
+        double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+        for (int a = 0; a < 2; ++a) {
+            const double ends[4] = {g.a[a], g.b[a], g.a[a] - g.velocity[a] * dt, g.b[a] - g.velocity[a] * dt};
+            for (double e : ends) {
+                lo[a] = std::min(lo[a], e - c.radius);
+                hi[a] = std::max(hi[a], e + c.radius);
+            }
+        }
+        TileRect r[2] = {{1, 1, 0, 0}, {1, 1, 0, 0}};
+        bool in_map = false;
+        for (uint32_t l = 0; l < levels; ++l) {
+            r[l] = tiles_of(plan->level[l], lo, hi);
+            in_map = in_map || !empty(r[l]);
+        }
+        if (!in_map) continue;
+        plan->colliders.push_back(g);
+        rects.push_back(r[0]);
+        rects.push_back(r[1]);
+    }
+    // Per level: count the colliders of each tile, prefix sums, then fill (a counting sort).
+    const uint32_t n = static_cast<uint32_t>(plan->colliders.size());
+    for (uint32_t l = 0; l < levels; ++l) {
+        const uint32_t tiles = plan->level[l].counts[2];
+        Vector<uint32_t>& offsets = plan->tile_offsets[l];
+        offsets.assign(size_t(tiles) * tiles + 1, 0u);
+        for (uint32_t i = 0; i < n; ++i) {
+            const TileRect& r = rects[2 * i + l];
+            for (int32_t z = r.z0; z <= r.z1; ++z) {
+                for (int32_t x = r.x0; x <= r.x1; ++x) offsets[size_t(z) * tiles + x + 1] += 1;
+            }
+        }
+        for (size_t t = 1; t < offsets.size(); ++t) offsets[t] += offsets[t - 1];
+        Vector<uint32_t>& fill = scratch->tile_fill;
+        fill.assign(offsets.begin(), offsets.end() - 1);
+        plan->tile_colliders[l].resize(offsets.back());
+        for (uint32_t i = 0; i < n; ++i) {
+            const TileRect& r = rects[2 * i + l];
+            for (int32_t z = r.z0; z <= r.z1; ++z) {
+                for (int32_t x = r.x0; x <= r.x1; ++x) plan->tile_colliders[l][fill[size_t(z) * tiles + x]++] = i;
+            }
+        }
+    }
+    return n;
+}
+
+} // namespace grass

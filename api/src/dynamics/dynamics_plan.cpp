@@ -1,0 +1,68 @@
+#include "dynamics/dynamics_plan.hpp"
+
+#include "dynamics/interaction_map.hpp"
+#include "dynamics/wind.hpp"
+
+#include <cstddef>
+#include <cstring>
+
+namespace grass {
+
+namespace {
+
+// The responsive part of the Frame block, from `wind` to the end: zero unless used.
+void clear_responsive_uniforms(FrameUniforms* f) {
+    const size_t begin = offsetof(FrameUniforms, wind);
+    std::memset(reinterpret_cast<char*>(f) + begin, 0, sizeof(FrameUniforms) - begin);
+}
+
+} // namespace
+
+DynamicsFrame plan_dynamics(grass_context* ctx, const grass_view_desc& view) {
+    DynamicsState& state = ctx->dynamics;
+    FramePlan& plan = ctx->plan;
+    // The step: the time since the previous frame; 0 at the first frame and when the host's
+    // clock went backwards (said once per occurrence).
+    double dt = state.has_time ? view.time - state.previous_time : 0.0;
+    if (dt < 0.0) {
+        ctx->warn(GRASS_MSG_TIME_BACKWARDS,
+                  "grass_begin_frame: view->time is %.9g s, earlier than the previous frame's %.9g s; the responsive "
+                  "grass steps 0 this frame",
+                  view.time, state.previous_time);
+        dt = 0.0;
+    }
+    plan.stats.time_step = dt;
+    state.pending_time = view.time;
+
+    clear_responsive_uniforms(&plan.frame);
+    DynamicsFrame out;
+    out.wind = wind_is_active(state.wind);
+    const MapFrame axes = map_frame(state.interaction, view.camera_position, 0.0);
+    for (int c = 0; c < 3; ++c) out.map_up[c] = axes.up[c];
+    if (out.wind) pack_wind(state.wind, view.camera_position, view.time, axes.up, &plan.frame);
+    plan_interaction(state, view.camera_position, dt, &state, &plan, &state.pending_map);
+    out.map = plan.interaction.levels > 0;
+    if (out.wind || out.map) plan.frame.wind_shape[3] = static_cast<float>(dt);
+    return out;
+}
+
+grass_result upload_blade_curves(grass_context* ctx) {
+    for (const TierDraw& draw : ctx->plan.draws) {
+        if ((draw.features & (kFeatureWind | kFeatureInteraction)) == 0) continue;
+        Patch* patch = ctx->patches.get(draw.patch_slot);
+        if (patch->blade_curves_uploaded) continue;
+        const grass_result r = ctx->backend->upload_blade_curves(draw.patch_slot, patch->data);
+        if (r != GRASS_SUCCESS) return r;
+        patch->blade_curves_uploaded = true;
+    }
+    return GRASS_SUCCESS;
+}
+
+void commit_dynamics(grass_context* ctx) {
+    DynamicsState& state = ctx->dynamics;
+    state.has_time = true;
+    state.previous_time = state.pending_time;
+    state.map = state.pending_map;
+}
+
+} // namespace grass

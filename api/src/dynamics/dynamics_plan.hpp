@@ -1,0 +1,34 @@
+// Responsive grass in the frame plan: the time step, the wind's and the interaction map's
+// frame uniforms, the interaction pass, and which draws need the responsive shader variants.
+// A context without wind, colliders or a gravity change plans exactly what still grass
+// plans: no feature bit, no pass, zero uniforms.
+#pragma once
+
+#include "context/context.hpp"
+
+#include <grass/grass.h>
+
+namespace grass {
+
+struct DynamicsFrame {
+    bool wind = false; // every draw gets kFeatureWind
+    bool map = false;  // the interaction map exists: draws of fields that read it get kFeatureInteraction
+    double map_up[3] = {0, 1, 0};
+    // A field reads the map when its up is within 60 degrees of the map's.
+    bool field_reads_map(const double field_up[3]) const {
+        return map && field_up[0] * map_up[0] + field_up[1] * map_up[1] + field_up[2] * map_up[2] >= 0.5;
+    }
+};
+
+// Fills ctx->plan's responsive parts (frame uniforms, interaction plan, stats.colliders*,
+// interaction_texels, time_step) for `view` and keeps what to commit in ctx->dynamics.
+DynamicsFrame plan_dynamics(grass_context* ctx, const grass_view_desc& view);
+
+// Before the backend's begin_frame: the blade curves of each patch a responsive draw uses,
+// once per patch.
+grass_result upload_blade_curves(grass_context* ctx);
+
+// After the frame has begun: the time and the map's state become the previous frame's.
+void commit_dynamics(grass_context* ctx);
+
+} // namespace grass
