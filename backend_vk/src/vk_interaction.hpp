@@ -22,11 +22,11 @@ namespace grass::vk {
 
 // Bindings of interaction.comp's descriptor set 0.
 enum InteractionBinding : uint32_t {
-    kInteractionBindingMap = 0,           // image2D, rgba32f: the level being updated
-    kInteractionBindingLevel = 1,         // uniform Interaction (InteractionLevelUniforms)
-    kInteractionBindingColliders = 2,     // readonly buffer of GpuCollider
-    kInteractionBindingTileOffsets = 3,   // readonly buffer of uint: tiles^2 + 1 offsets
-    kInteractionBindingTileColliders = 4, // readonly buffer of uint: collider indices
+    kInteractionBindingLevel = 0,         // uniform Interaction (InteractionLevelUniforms)
+    kInteractionBindingColliders = 1,     // readonly buffer of GpuCollider
+    kInteractionBindingTileOffsets = 2,   // readonly buffer of uint: tiles^2 + 1 offsets
+    kInteractionBindingTileColliders = 3, // readonly buffer of uint: collider indices
+    kInteractionBindingMap = 4,           // image2D, rgba32f: the level being updated
     kInteractionBindingCount = 5
 };
 
@@ -61,10 +61,10 @@ public:
 
 private:
     struct Slot {
-        Buffer data;                                                // uniforms, colliders, tiles (streaming)
-        VkDescriptorSet sets[2] = {};                               // per level
-        VkDeviceSize offsets[kInteractionBindingCount - 1][2] = {}; // per binding past the map, per level
-        VkDeviceSize ranges[kInteractionBindingCount - 1][2] = {};
+        Buffer data;                                          // uniforms, colliders, tiles (streaming)
+        VkDescriptorSet sets[2] = {};                         // per level
+        VkDeviceSize offsets[kInteractionBindingMap][2] = {}; // per buffer binding, per level
+        VkDeviceSize ranges[kInteractionBindingMap][2] = {};
     };
     bool create_pipeline(VkFailure* failure, const char** what);
     bool create_map(const InteractionPlan& plan, uint64_t frame, VkFailure* failure, const char** what);
