@@ -159,6 +159,13 @@ bool InteractionPass::create_map(const InteractionPlan& plan, uint64_t frame, Vk
     return true;
 }
 
+void InteractionPass::release(uint64_t frame) {
+    for (Image& m : maps_) deferred_.retire(&m, frame);
+    for (Slot& s : slots_) deferred_.retire(&s.data, frame);
+    levels_ = resolution_ = 0;
+    defined_ = clear_pending_ = false;
+}
+
 VkDeviceSize InteractionPass::layout(Slot& s, const InteractionPlan& plan) const {
     // [Interaction block of each level][colliders][tile offsets 0][tile colliders 0][1][1];
     // an empty array still gets a few bytes (a descriptor's range is never 0).

@@ -47,6 +47,10 @@ public:
     // retired), grows the slot's buffer, fills it and writes the slot's sets. On failure
     // *what names the object and nothing the GPU uses has changed.
     bool prepare(uint32_t slot, uint64_t frame, const InteractionPlan& plan, VkFailure* failure, const char** what);
+    // The core dropped the map (a plan without a pass): its images and the per-frame
+    // buffers are retired (frames up to `frame` may use them); the pipeline stays.
+    void release(uint64_t frame);
+    bool has_map() const { return levels_ > 0; }
     // Records the pass of the frame prepare() last saw in `slot` (grass_vk_prepare_frame,
     // outside a render pass): see grass_vk.h for the barriers.
     void record(VkCommandBuffer cmd, uint32_t slot, const InteractionPlan& plan);

@@ -51,6 +51,8 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
             return fail("grass_begin_frame", what, failure);
         }
         interaction_pending_ = true;
+    } else if (interaction_.has_map()) {
+        interaction_.release(frame_); // the core holds no map (frame_plan.hpp)
     }
     return GRASS_SUCCESS;
 }

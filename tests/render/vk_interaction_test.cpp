@@ -2,7 +2,8 @@
 // dispatch table (vk_intercept.hpp counts the dispatches grass records):
 // - grass_vk_prepare_frame records one dispatch per map level for a frame with colliders, and
 //   none for a frame of still grass, which holds no responsive GPU memory; the frame with a
-//   collider shows its trail where the collider is and nothing changes far from it;
+//   collider shows its trail where the collider is, far more than anywhere else; once the
+//   map is dropped (grass_set_interaction) no pass runs and its memory is given back;
 // - the barriers of grass_vk.h satisfy the synchronization validation of
 //   VK_LAYER_KHRONOS_validation over frames that write and read the map, remake it and
 //   scroll it;
@@ -153,6 +154,14 @@ TEST(VkInteraction, PrepareFrameRecordsThePassOnlyForFramesWithColliders) {
     // levels of the still shape (3.8 measured); the trail is an order of magnitude more.
     EXPECT_GT(near_ball, 6.0) << "no trail where the ball is";
     EXPECT_GT(near_ball, 5.0 * far_away) << "the grass changed as much far from the ball";
+
+    // Without colliders and with the map dropped, no pass and the map's memory is given back.
+    ASSERT_EQ(grass_set_colliders(s.ctx, nullptr, 0), GRASS_SUCCESS) << s.log;
+    ASSERT_EQ(grass_set_interaction(s.ctx, nullptr), GRASS_SUCCESS) << s.log;
+    before = vi::live().dispatches;
+    frame(s, 1.2);
+    EXPECT_EQ(vi::live().dispatches - before, 0) << "no map, no pass";
+    EXPECT_LT(dynamics_bytes(s.ctx), uint64_t(id.resolution) * id.resolution * 16u) << "the map was released";
     if (const char* dir = std::getenv("GRASS_TEST_IMAGE_DIR")) {
         grass_host::write_png(std::string(dir) + "/vk_interaction_still.png", still, nullptr);
         grass_host::write_png(std::string(dir) + "/vk_interaction_pressed.png", pressed, nullptr);
