@@ -343,7 +343,8 @@ TEST_P(ResponsiveTest, BladeLengthIsPreserved) {
     double mx = 0, mz = 0;
     for (const P& p : pts) mx += p.x / pts.size(), mz += p.z / pts.size();
     double sxx = 0, sxz = 0, szz = 0;
-    for (const P& p : pts) sxx += (p.x - mx) * (p.x - mx), sxz += (p.x - mx) * (p.z - mz), szz += (p.z - mz) * (p.z - mz);
+    for (const P& p : pts)
+        sxx += (p.x - mx) * (p.x - mx), sxz += (p.x - mx) * (p.z - mz), szz += (p.z - mz) * (p.z - mz);
     const double angle = 0.5 * std::atan2(2.0 * sxz, sxx - szz);
     double ax = std::cos(angle), az = std::sin(angle);
     double lo = 1e9, hi = -1e9;
