@@ -1,6 +1,7 @@
 #include "vk_interaction.hpp"
 
 #include "vk_pipeline.hpp"
+#include "vk_uploads.hpp"
 
 #include <cstring>
 
@@ -22,17 +23,9 @@ VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
     return (value + alignment - 1) / alignment * alignment;
 }
 
+// The map's images are always GENERAL; `from` is UNDEFINED only for new ones.
 VkImageMemoryBarrier map_barrier(VkImage image, VkImageLayout from, VkAccessFlags src, VkAccessFlags dst) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask = src;
-    b.dstAccessMask = dst;
-    b.oldLayout = from;
-    b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    return b;
+    return image_barrier(image, 1, 1, from, VK_IMAGE_LAYOUT_GENERAL, src, dst);
 }
 
 } // namespace
