@@ -26,10 +26,19 @@ enum BladeBinding : uint32_t {
     kBindingAmbientMap = 7,
     kBindingDiffuseMap = 8,
     kBindingHeightMap = 9,
-    kBindingCount = 10
+    // Responsive grass (kFeatureWind, kFeatureInteraction): the interaction map's levels
+    // (RGBA32F, GENERAL layout, read with texelFetch through a nearest sampler) and the
+    // patch's blade control points (a storage buffer). Draws without those features bind
+    // stand-ins the shaders never read (VkBackend::write_set).
+    kBindingInteractionMap0 = 10,
+    kBindingInteractionMap1 = 11,
+    kBindingBladeCurves = 12,
+    kBindingCount = 13
 };
 static_assert(kBindingDensityMap == 2 && kBindingColorMap == 6 && kBindingHeightMap == 9,
               "kMapBinding of api/src/backend.hpp");
+static_assert(kBindingInteractionMap0 == 10 && kBindingInteractionMap1 == 11 && kBindingBladeCurves == 12,
+              "kInteractionMapBinding and kBladeCurvesBinding of api/src/context/backend.hpp");
 
 // The kinds of graphics pipeline; each exists per map feature mask (GRASS_FEATURES).
 enum PipelineKind : uint32_t {
@@ -39,8 +48,8 @@ enum PipelineKind : uint32_t {
     kPipelineDebugView = 3,
     kPipelineKindCount = 4
 };
-// Feature masks are 5 bits (one per MapRole).
-constexpr uint32_t kFeatureMaskCount = 32;
+// Feature masks are 7 bits: one per MapRole, then kFeatureWind and kFeatureInteraction.
+constexpr uint32_t kFeatureMaskCount = 128;
 
 struct PipelineTarget {
     VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats
@@ -66,6 +75,15 @@ struct PipelineShape {
 // The vertex input of the shaders that read instances only (locations 5, 6 and 7 on
 // binding 0: debug_tiers, volume and image): its arrays live as long as the program.
 VkPipelineVertexInputStateCreateInfo instance_only_vertex_input();
+
+// A descriptor set layout of `bindings` and a pipeline layout of that one set (the blade
+// pipelines', the interaction pass's). *what names the object being made (`set_name`,
+// `layout_name`) when it fails; what was made stays in *set_layout / *layout for the caller
+// to destroy.
+bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const VkDescriptorSetLayoutBinding* bindings,
+                                    uint32_t binding_count, const char* set_name, const char* layout_name,
+                                    VkDescriptorSetLayout* set_layout, VkPipelineLayout* layout, VkFailure* failure,
+                                    const char** what);
 
 // Index 0 of out_pipelines depth-tests and writes depth (the target's compare op), index 1
 // does neither; both vertex and fragment stages are specialised with `features` (constant

@@ -167,19 +167,7 @@ double grass_centroid_x(const grass_host::Image& image, const uint8_t sky[3]) {
     return sum_w > 0.0 ? sum_x / sum_w : 0.0;
 }
 
-grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
-                                       const double eye[3], const double look[3]) {
-    grass_host::Image image;
-    std::string error;
-    auto host = grass_host::Host::create(backend, target, &error);
-    EXPECT_TRUE(host) << error;
-    if (!host) return image;
-    grass_context* ctx = nullptr;
-    const grass_context_desc cd = grass_default_context_desc();
-    EXPECT_EQ(host->create_context(cd, &ctx), GRASS_SUCCESS);
-    const grass_patch_desc pd = grass_default_patch_desc();
-    grass_patch_id patch{};
-    EXPECT_EQ(grass_create_patch(ctx, &pd, &patch), GRASS_SUCCESS);
+grass_result create_blade_field(grass_context* ctx, grass_patch_id patch, uint32_t cells, grass_field_id* out) {
     grass_field_desc fd = grass_default_field_desc();
     fd.patch = patch;
     fd.cells_x = fd.cells_z = cells;
@@ -191,10 +179,30 @@ grass_host::Image render_default_scene(grass_backend backend, const grass_host::
     fd.tier_count = 1;
     fd.lod_tests = &band;
     fd.lod_test_count = 1;
+    return grass_create_field(ctx, &fd, out);
+}
+
+grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
+                                       const double eye[3], const double look[3], int frames,
+                                       const SceneFrame& before_frame) {
+    grass_host::Image image;
+    std::string error;
+    auto host = grass_host::Host::create(backend, target, &error);
+    EXPECT_TRUE(host) << error;
+    if (!host) return image;
+    grass_context* ctx = nullptr;
+    const grass_context_desc cd = grass_default_context_desc();
+    EXPECT_EQ(host->create_context(cd, &ctx), GRASS_SUCCESS);
+    const grass_patch_desc pd = grass_default_patch_desc();
+    grass_patch_id patch{};
+    EXPECT_EQ(grass_create_patch(ctx, &pd, &patch), GRASS_SUCCESS);
     grass_field_id field{};
-    EXPECT_EQ(grass_create_field(ctx, &fd, &field), GRASS_SUCCESS);
-    const grass_view_desc v = grass_host::make_view(*host, eye, look, 50.0f, 0.05f, 100.0f);
-    EXPECT_EQ(host->render(ctx, v, nullptr, &image, &error), GRASS_SUCCESS) << error;
+    EXPECT_EQ(create_blade_field(ctx, patch, cells, &field), GRASS_SUCCESS);
+    for (int frame = 0; frame < frames; ++frame) {
+        grass_view_desc v = grass_host::make_view(*host, eye, look, 50.0f, 0.05f, 100.0f);
+        if (before_frame) before_frame(ctx, frame, &v);
+        EXPECT_EQ(host->render(ctx, v, nullptr, &image, &error), GRASS_SUCCESS) << error;
+    }
     grass_destroy_context(ctx);
     EXPECT_EQ(host->validation_messages(), 0u) << host->validation_log();
     return image;

@@ -10,14 +10,8 @@
 namespace grass_test {
 namespace {
 
-// The backends whose responsive grass is implemented so far (Vulkan: h13-vk).
-std::vector<grass_backend> responsive_backends() {
-    std::vector<grass_backend> b;
-    for (grass_backend k : enabled_backends()) {
-        if (k == GRASS_BACKEND_GL) b.push_back(k);
-    }
-    return b;
-}
+// Both backends draw responsive grass.
+std::vector<grass_backend> responsive_backends() { return enabled_backends(); }
 
 struct TierCase {
     grass_tier_kind kind;
