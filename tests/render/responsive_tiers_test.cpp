@@ -87,6 +87,7 @@ TEST_P(ResponsiveTiersTest, StillGrassIsUnchanged) {
         const grass_wind_desc w = strong_wind();
         ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << log;
         const grass_host::Image unmoved = frame(3.0);
+        save(before, std::string(tier.name) + ".before");
         save(unmoved, std::string(tier.name) + ".unmoved");
         if (tier.kind == GRASS_TIER_GEOMETRY) {
             EXPECT_LT(mean_difference(before, unmoved), 0.5) << tier.name;
