@@ -218,6 +218,9 @@ TEST_P(ResponsiveTest, TrailRecoversWithTheTimeConstant) {
         }
         ASSERT_GT(inner.size(), 200u);
         top[k] = *std::max_element(inner.begin(), inner.end());
+        if (k == 0) { // dt = 0 freezes the trail: the same time again draws the same heights
+            EXPECT_EQ(heights(top_view(cx, cz, half, 10.0 + times[k])), h) << "a time step of 0 must change nothing";
+        }
     }
     EXPECT_GT(top[0], 0.005) << "the trail must have started to recover";
     EXPECT_LT(top[0], top[1]);
@@ -299,6 +302,89 @@ TEST_P(ResponsiveTest, TipsStayAboveTheTerrain) {
     }
     ASSERT_GT(grass, 1500u) << "the slope must be covered";
     EXPECT_EQ(below_terrain, 0u) << "grass down to " << worst << " m below the terrain";
+}
+
+// Length: a single straight blade (0.3 m long, 10 cm wide: its pointed tip is narrower
+// than a pixel only over its last 0.6%) bent by a strong gravity, which with jahrmann's
+// front gravity (eq. 5) lays it along its facing: its width stays across the bend, so the
+// top-down heights along the bend, root first, trace its centreline. The traced length
+// stays within 1% of 0.3 m where the bend is far from the rest pose.
+TEST_P(ResponsiveTest, BladeLengthIsPreserved) {
+    start([] {
+        grass_host::TargetDesc t;
+        t.width = t.height = 480; // 1 mm pixels
+        return t;
+    }());
+    grass_patch_desc one = grass_default_patch_desc();
+    one.blade_count = 1;
+    one.length_min = one.length_max = 1.2f; // patch units: 0.3 m
+    one.width_min = one.width_max = 0.4f;
+    one.tilt_min = one.tilt_max = 0.0f;
+    one.bend_min = one.bend_max = 0.0f; // straight up at rest
+    ASSERT_EQ(grass_create_patch(ctx, &one, &patch), GRASS_SUCCESS) << log;
+    set_mechanics();
+    grass_field_desc d = field_desc(1);
+    d.mirror_tiling = 0;
+    make_field(d);
+    grass_wind_desc w = grass_default_wind_desc();
+    w.gravity[1] = -9.81f - 36.0f; // v2 = I_v2 + L (-36 up + 9 front) / 40
+    ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << log;
+    const double cx = 0.125, cz = 0.125, half = 0.24;
+    grass_host::Image image;
+    const std::vector<float> h = heights(top_view(cx, cz, half, 1.0), &image);
+    save(image, "bent");
+    // The grass pixels, their principal axis, and the root end: where the blade is widest.
+    struct P {
+        double x, z, h;
+    };
+    std::vector<P> pts;
+    const uint32_t size = host->target().width;
+    for (uint32_t py = 0; py < size; ++py) {
+        for (uint32_t px = 0; px < size; ++px) {
+            const float v = h[size_t(py) * size + px];
+            if (v == kNoGrass) continue;
+            double x, z;
+            pixel_ground(cx, cz, half, px, py, &x, &z);
+            pts.push_back({x, z, v});
+        }
+    }
+    ASSERT_GT(pts.size(), 2000u) << "the bent blade must be seen";
+    double mx = 0, mz = 0;
+    for (const P& p : pts) mx += p.x / pts.size(), mz += p.z / pts.size();
+    double sxx = 0, sxz = 0, szz = 0;
+    for (const P& p : pts) sxx += (p.x - mx) * (p.x - mx), sxz += (p.x - mx) * (p.z - mz), szz += (p.z - mz) * (p.z - mz);
+    const double angle = 0.5 * std::atan2(2.0 * sxz, sxx - szz);
+    double ax = std::cos(angle), az = std::sin(angle);
+    double lo = 1e9, hi = -1e9;
+    for (const P& p : pts) {
+        const double s = (p.x - mx) * ax + (p.z - mz) * az;
+        lo = std::min(lo, s), hi = std::max(hi, s);
+    }
+    const double bin = 2.0 * half / size;
+    const size_t bins = size_t((hi - lo) / bin) + 1;
+    std::vector<double> top(bins, -1.0), across_lo(bins, 1e9), across_hi(bins, -1e9);
+    for (const P& p : pts) {
+        const double s = (p.x - mx) * ax + (p.z - mz) * az, c = -(p.x - mx) * az + (p.z - mz) * ax;
+        const size_t b = std::min(bins - 1, size_t((s - lo) / bin));
+        top[b] = std::max(top[b], p.h);
+        across_lo[b] = std::min(across_lo[b], c), across_hi[b] = std::max(across_hi[b], c);
+    }
+    // The axis runs from the root edge (as wide as the blade) to the pointed tip.
+    const double width_first = across_hi[0] - across_lo[0], width_last = across_hi[bins - 1] - across_lo[bins - 1];
+    EXPECT_GT(std::max(width_first, width_last), 0.07) << "the axis must cross the root edge";
+    EXPECT_LT(std::min(width_first, width_last), 0.02) << "the axis must end at the tip";
+    if (width_first < width_last) std::reverse(top.begin(), top.end());
+    double len = std::hypot(0.5 * bin, top[0]), prev = top[0];
+    size_t seen = 1;
+    for (size_t b = 1; b < bins; ++b) {
+        if (top[b] < 0.0) continue;
+        len += std::hypot(bin, top[b] - prev); // a bin without grass: skipped along the axis
+        prev = top[b];
+        ++seen;
+    }
+    std::printf("bent blade: traced %.4f m over %zu of %zu bins, tip at %.4f m\n", len, seen, bins, prev);
+    EXPECT_GT(hi - lo, 0.12) << "the blade must be bent well away from upright";
+    EXPECT_NEAR(len, 0.3, 0.003);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, ResponsiveTest, ::testing::ValuesIn(depth_backends()),
