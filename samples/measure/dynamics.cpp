@@ -59,14 +59,10 @@ struct Row {
     int colliders; // kNoCollider, kMapKept or the crowd's size
 };
 
-const Row kRows[] = {{"still", false, kNoCollider},
-                     {"wind 5 m/s", true, kNoCollider},
-                     {"map, 0 colliders", false, kMapKept},
-                     {"1 collider", false, 1},
-                     {"100 colliders", false, 100},
-                     {"183 colliders", false, 183},
-                     {"10000 colliders", false, 10000},
-                     {"still again", false, kNoCollider}};
+const Row kRows[] = {{"still", false, kNoCollider},         {"wind 5 m/s", true, kNoCollider},
+                     {"map, 0 colliders", false, kMapKept}, {"1 collider", false, 1},
+                     {"100 colliders", false, 100},         {"183 colliders", false, 183},
+                     {"10000 colliders", false, 10000},     {"still again", false, kNoCollider}};
 const Row kQuickRows[] = {{"still", false, kNoCollider},
                           {"wind 5 m/s", true, kNoCollider},
                           {"1 collider", false, 1},
@@ -172,7 +168,8 @@ void check_rows(const char* tier, const std::vector<Row>& rows, const TierRows& 
         const grass_frame_stats& s = t.stats[r];
         const grass_memory_stats& m = t.memory[r];
         if (!rows[r].wind && rows[r].colliders == kNoCollider) {
-            if (s.interaction_texels) fail(r, "an interaction pass of " + std::to_string(s.interaction_texels) + " texels");
+            if (s.interaction_texels)
+                fail(r, "an interaction pass of " + std::to_string(s.interaction_texels) + " texels");
             if (m.dynamics_gpu_bytes) fail(r, "dynamics_gpu_bytes " + std::to_string(m.dynamics_gpu_bytes));
         }
         if (rows[r].colliders >= kMapKept) {
@@ -212,11 +209,12 @@ int run(const Options& o) {
     }
     std::printf("grass-measure dynamics: %s (%s), %ux%u, 1024 cells of 0.25 m, %d rounds of %d frames per row, rows "
                 "interleaved, %.4f s a frame; frame with no grass %.2f ms\n\n",
-                grass_sample::backend_name(o.rig.backend), rig.host().device_name().c_str(), o.rig.width,
-                o.rig.height, o.rig.rounds, o.rig.frames, kFrameStep, rig.empty_ms());
-    std::printf("| tier | row | colliders in the map | pass texels | frame - empty, median (ms) | vs still (ms) | ratio "
-                "to still | fastest - empty (ms) | plan, median (ms) | dynamics GPU memory (KiB) | GPU memory (MiB) "
-                "|\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+                grass_sample::backend_name(o.rig.backend), rig.host().device_name().c_str(), o.rig.width, o.rig.height,
+                o.rig.rounds, o.rig.frames, kFrameStep, rig.empty_ms());
+    std::printf(
+        "| tier | row | colliders in the map | pass texels | frame - empty, median (ms) | vs still (ms) | ratio "
+        "to still | fastest - empty (ms) | plan, median (ms) | dynamics GPU memory (KiB) | GPU memory (MiB) "
+        "|\n|---|---|---|---|---|---|---|---|---|---|---|\n");
     std::fflush(stdout);
     std::vector<TierRows> measured;
     std::vector<std::string> fails;

@@ -66,8 +66,8 @@ struct Options {
     uint64_t cell_budget = 150;         // reference geometry cells per zone window
     uint64_t max_reference_cells = 600; // a zone whose narrowest window needs more is not measured
     bool agreement = true;
-    float wind = 0.0f;       // m/s; 0: still grass
-    double wind_time = 2.0;  // s: grass_view_desc.time of every frame
+    float wind = 0.0f;      // m/s; 0: still grass
+    double wind_time = 2.0; // s: grass_view_desc.time of every frame
 };
 
 double luma(const uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
