@@ -28,11 +28,16 @@ struct SamplerUnit {
     GLint unit;
 };
 constexpr SamplerUnit kSamplerUnits[] = {
-    {"density_map", kMapUnit[kMapDensity]}, {"slice_color", kSliceColorUnit},
-    {"slice_normal", kSliceNormalUnit},     {"slice_threshold", kSliceThresholdUnit},
-    {"color_map", kMapUnit[kMapColor]},     {"ambient_map", kMapUnit[kMapAmbient]},
-    {"diffuse_map", kMapUnit[kMapDiffuse]}, {"height_map", kMapUnit[kMapHeight]},
-    {"interaction_level0", kInteractionMapUnit[0]}, {"interaction_level1", kInteractionMapUnit[1]},
+    {"density_map", kMapUnit[kMapDensity]},
+    {"slice_color", kSliceColorUnit},
+    {"slice_normal", kSliceNormalUnit},
+    {"slice_threshold", kSliceThresholdUnit},
+    {"color_map", kMapUnit[kMapColor]},
+    {"ambient_map", kMapUnit[kMapAmbient]},
+    {"diffuse_map", kMapUnit[kMapDiffuse]},
+    {"height_map", kMapUnit[kMapHeight]},
+    {"interaction_level0", kInteractionMapUnit[0]},
+    {"interaction_level1", kInteractionMapUnit[1]},
 };
 
 // Reads a shader or program info log through the context's allocator.
@@ -54,8 +59,10 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
                          "%s: %s does not start with a #version line (internal error)", function, stage_name);
     }
-    char define[64];
-    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n", features);
+    char define[96];
+    const bool responsive = (features & (kFeatureWind | kFeatureInteraction)) != 0;
+    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s", features,
+                  responsive ? "#define GRASS_RESPONSIVE 1\n" : "");
     const GLchar* strings[3] = {source, define, newline + 1};
     const GLint lengths[3] = {static_cast<GLint>(newline + 1 - source), -1, -1};
 
@@ -106,8 +113,8 @@ ProgramSource program_source(GlProgramKind kind) {
 }
 
 // Links the compiled shaders (deleted here, whatever the outcome) into a program.
-grass_result link(grass_context* ctx, const GlFunctions& gl, const char* function, const char* name,
-                  uint32_t features, const GLuint* shaders, int shader_count, GLuint* out_program) {
+grass_result link(grass_context* ctx, const GlFunctions& gl, const char* function, const char* name, uint32_t features,
+                  const GLuint* shaders, int shader_count, GLuint* out_program) {
     const GLuint program = gl.CreateProgram();
     if (program == 0) {
         for (int i = 0; i < shader_count; ++i) gl.DeleteShader(shaders[i]);

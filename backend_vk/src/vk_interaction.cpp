@@ -1,5 +1,7 @@
 #include "vk_interaction.hpp"
 
+#include "vk_pipeline.hpp"
+
 #include <cstring>
 
 namespace grass_vk_spirv {
@@ -68,20 +70,9 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
         {kInteractionBindingTileOffsets, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
         {kInteractionBindingTileColliders, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
     };
-    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = kInteractionBindingCount;
-    set_info.pBindings = bindings;
-    *what = "the interaction pass's descriptor set layout";
-    if (!vk_ok(fn_.vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_),
-               "vkCreateDescriptorSetLayout", failure)) {
-        return false;
-    }
-    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout_info.setLayoutCount = 1;
-    layout_info.pSetLayouts = &set_layout_;
-    *what = "the interaction pass's pipeline layout";
-    if (!vk_ok(fn_.vkCreatePipelineLayout(device_, &layout_info, nullptr, &layout_), "vkCreatePipelineLayout",
-               failure)) {
+    if (!create_set_and_pipeline_layout(
+            fn_, device_, bindings, kInteractionBindingCount, "the interaction pass's descriptor set layout",
+            "the interaction pass's pipeline layout", &set_layout_, &layout_, failure, what)) {
         return false;
     }
 

@@ -2,7 +2,7 @@
 // grass under them, trails that recover with the documented time constant, blade tips
 // above the terrain, trails visible in every tier, and wind that moves every tier and
 // freezes at dt = 0. Heights are read back from the depth buffer of an orthographic view
-// straight down (GL hosts: glReadPixels in the host's after_grass hook).
+// straight down (TargetDesc::read_depth).
 #include "render_fixture.hpp"
 
 #include <algorithm>
@@ -14,22 +14,9 @@
 namespace grass_test {
 namespace {
 
-constexpr unsigned kGlDepthComponent = 0x1902;
-constexpr unsigned kGlFloat = 0x1406;
-using ReadPixelsFn = void (*)(int, int, int, int, unsigned, unsigned, void*);
-
 constexpr double kEyeHeight = 2.0; // the orthographic camera, metres above the ground
 constexpr float kNear = 0.5f, kFar = 3.0f;
 constexpr float kNoGrass = -1e30f;
-
-// The backends whose hosts can read the depth back (the GL host's after_grass hook).
-std::vector<grass_backend> depth_backends() {
-    std::vector<grass_backend> b;
-    for (grass_backend k : enabled_backends()) {
-        if (k == GRASS_BACKEND_GL) b.push_back(k);
-    }
-    return b;
-}
 
 class ResponsiveTest : public RenderTest {
 protected:
@@ -38,6 +25,7 @@ protected:
         blade_band.end = 60.0f;
         grass_host::TargetDesc t;
         t.width = t.height = 96;
+        t.read_depth = true;
         start(t);
         mechanics = grass_default_blade_mechanics();
         mechanics.variation = 0.0f;
@@ -47,11 +35,14 @@ protected:
     grass_view_desc top_view(double cx, double cz, double half, double time) const {
         const double eye[3] = {cx, kEyeHeight, cz}, target[3] = {cx, 0.0, cz};
         grass_view_desc v = view(eye, target);
+        // The host's clip convention (GL: y up, z -1..1; Vulkan: y down, z 0..1); either way
+        // the stored depth runs linearly from 0 at kNear to 1 at kFar.
+        const bool vulkan = GetParam() == GRASS_BACKEND_VULKAN;
         std::memset(v.projection, 0, sizeof v.projection);
         v.projection[0] = float(1.0 / half);
-        v.projection[5] = float(1.0 / half);
-        v.projection[10] = -2.0f / (kFar - kNear);
-        v.projection[14] = -(kFar + kNear) / (kFar - kNear);
+        v.projection[5] = float((vulkan ? -1.0 : 1.0) / half);
+        v.projection[10] = vulkan ? -1.0f / (kFar - kNear) : -2.0f / (kFar - kNear);
+        v.projection[14] = vulkan ? -kNear / (kFar - kNear) : -(kFar + kNear) / (kFar - kNear);
         v.projection[15] = 1.0f;
         v.time = time;
         return v;
@@ -61,19 +52,15 @@ protected:
     // (kNoGrass where the ray met nothing).
     std::vector<float> heights(const grass_view_desc& v, grass_host::Image* image_out = nullptr) {
         const uint32_t w = host->target().width, h = host->target().height;
-        std::vector<float> depth(size_t(w) * h, 1.0f);
-        auto read = reinterpret_cast<ReadPixelsFn>(host->gl_proc_address("glReadPixels"));
-        EXPECT_NE(read, nullptr);
-        host->after_grass = [&] {
-            if (read) read(0, 0, int(w), int(h), kGlDepthComponent, kGlFloat, depth.data());
-        };
         grass_host::Image image = render(v);
-        host->after_grass = nullptr;
         if (image_out) *image_out = image;
+        std::vector<float> depth = image.depth;
+        EXPECT_EQ(depth.size(), size_t(w) * h) << "no depth read back";
+        depth.resize(size_t(w) * h, 1.0f);
         std::vector<float> out(depth.size(), kNoGrass);
         for (uint32_t y = 0; y < h; ++y) {
             for (uint32_t x = 0; x < w; ++x) {
-                const float d = depth[size_t(h - 1 - y) * w + x];
+                const float d = depth[size_t(y) * w + x];
                 if (d < 1.0f) out[size_t(y) * w + x] = float(kEyeHeight - (kNear + d * (kFar - kNear)));
             }
         }
@@ -140,7 +127,8 @@ TEST_P(ResponsiveTest, NoBladeInsideRestingColliders) {
     const grass_field_id f = make_field(field_desc(8)); // 2 m x 2 m
     (void)f;
     constexpr double kTolerance = 0.01; // metres
-    const grass_collider colliders[2] = {sphere(1.0, 0.25 + 0.03, 0.7, 0.25f), capsule(0.6, 1.4, 0.1 + 0.05, 1.4, 0.1f)};
+    const grass_collider colliders[2] = {sphere(1.0, 0.25 + 0.03, 0.7, 0.25f),
+                                         capsule(0.6, 1.4, 0.1 + 0.05, 1.4, 0.1f)};
     const double cx = 1.0, cz = 1.05, half = 0.65;
     const std::vector<float> before = heights(top_view(cx, cz, half, 0.0));
     ASSERT_EQ(grass_set_colliders(ctx, colliders, 2), GRASS_SUCCESS) << log;
@@ -184,6 +172,7 @@ TEST_P(ResponsiveTest, TrailRecoversWithTheTimeConstant) {
     start([] {
         grass_host::TargetDesc t; // finer: the blades' pointed tips within a few millimetres
         t.width = t.height = 192;
+        t.read_depth = true;
         return t;
     }());
     // Wide blades: a blade's pointed tip is narrower than a pixel over its last tenth at the
@@ -234,7 +223,8 @@ TEST_P(ResponsiveTest, TrailRecoversWithTheTimeConstant) {
             const double r = (1.0 - std::exp(-times[0] / mid)) / (1.0 - std::exp(-times[k] / mid));
             (r > ratio ? lo : hi) = mid; // r falls from 1 (T -> 0) to t0 / t1
         }
-        std::printf("recovery: T = %.3f s from t = %g and %g s (set %g s)\n", lo, times[0], times[k], double(kRecovery));
+        std::printf("recovery: T = %.3f s from t = %g and %g s (set %g s)\n", lo, times[0], times[k],
+                    double(kRecovery));
         EXPECT_NEAR(lo / kRecovery, 1.0, 0.1) << "time constant from t = " << times[0] << " and " << times[k]
                                               << " s: heights " << top[0] << ", " << top[k] << " m";
     }
@@ -313,6 +303,7 @@ TEST_P(ResponsiveTest, BladeLengthIsPreserved) {
     start([] {
         grass_host::TargetDesc t;
         t.width = t.height = 480; // 1 mm pixels
+        t.read_depth = true;
         return t;
     }());
     grass_patch_desc one = grass_default_patch_desc();
@@ -352,7 +343,8 @@ TEST_P(ResponsiveTest, BladeLengthIsPreserved) {
     double mx = 0, mz = 0;
     for (const P& p : pts) mx += p.x / pts.size(), mz += p.z / pts.size();
     double sxx = 0, sxz = 0, szz = 0;
-    for (const P& p : pts) sxx += (p.x - mx) * (p.x - mx), sxz += (p.x - mx) * (p.z - mz), szz += (p.z - mz) * (p.z - mz);
+    for (const P& p : pts)
+        sxx += (p.x - mx) * (p.x - mx), sxz += (p.x - mx) * (p.z - mz), szz += (p.z - mz) * (p.z - mz);
     const double angle = 0.5 * std::atan2(2.0 * sxz, sxx - szz);
     double ax = std::cos(angle), az = std::sin(angle);
     double lo = 1e9, hi = -1e9;
@@ -387,7 +379,7 @@ TEST_P(ResponsiveTest, BladeLengthIsPreserved) {
     EXPECT_NEAR(len, 0.3, 0.003);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, ResponsiveTest, ::testing::ValuesIn(depth_backends()),
+INSTANTIATE_TEST_SUITE_P(Backends, ResponsiveTest, ::testing::ValuesIn(enabled_backends()),
                          [](const ::testing::TestParamInfo<grass_backend>& p) { return backend_name(p.param); });
 
 } // namespace
