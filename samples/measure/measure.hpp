@@ -16,5 +16,6 @@ struct Subcommand {
 Subcommand add_bench(CLI::App& measure);     // bench.cpp
 Subcommand add_tier_cost(CLI::App& measure); // tier_cost.cpp
 Subcommand add_popping(CLI::App& measure);   // popping.cpp
+Subcommand add_dynamics(CLI::App& measure);  // dynamics.cpp
 
 } // namespace grass_measure

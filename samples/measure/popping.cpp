@@ -16,9 +16,16 @@
 // zones are measured on a centred range of columns whose reference plan stays within
 // --cell-budget geometry cells (planned first on a context without a GPU).
 //
+// --wind S: under a wind of S m/s (grass_default_wind_desc's direction, gusts and turbulence),
+// both the lod setup and the reference, every frame at the same time, --wind-time (default 2 s).
+// The measure compares each frame with the previous one while the camera moves: were the wind's
+// time to advance too, every pixel would change by the grass's sway as well, in the lod setup
+// and the reference alike, and the ratio would measure the sway. With one time for the whole
+// dolly the wind is a fixed function of world position: the grass stands bent, gusts and all,
+// and what changes from frame to frame is the motion and the transitions, as for still grass.
 // Usage: grass-measure popping [--backend gl|vk] [--scene FILE] [--frames N] [--size WxH]
 //                              [--samples N] [--canopy M] [--cell-budget N] [--max-reference-cells N]
-//                              [--cache DIR] [--no-agreement]
+//                              [--cache DIR] [--no-agreement] [--wind S] [--wind-time T]
 // A zone whose reference needs more than --max-reference-cells cells even in its narrowest
 // window (4 columns) is listed but not measured (the far zones: ~1500 cells for 8 pixels).
 #include <grass/grass.h>
@@ -59,6 +66,8 @@ struct Options {
     uint64_t cell_budget = 150;         // reference geometry cells per zone window
     uint64_t max_reference_cells = 600; // a zone whose narrowest window needs more is not measured
     bool agreement = true;
+    float wind = 0.0f;      // m/s; 0: still grass
+    double wind_time = 2.0; // s: grass_view_desc.time of every frame
 };
 
 double luma(const uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
@@ -156,6 +165,7 @@ grass_view_desc window_view(const grass_host::Host& host, const Options& o, cons
     v.viewport[2] = static_cast<int32_t>(x1 - x0);
     v.viewport[3] = static_cast<int32_t>(z.y1 - z.y0);
     grass_sample::apply_light(s, &v);
+    v.time = o.wind_time;
     return v;
 }
 
@@ -213,6 +223,11 @@ bool make_scene_context(grass_host::Host& host, const Options& o, const grass_sa
         f.lod_test_count = static_cast<uint32_t>(tests.size());
         r = grass_create_field(out->ctx, &f, &out->field);
     }
+    if (r == GRASS_SUCCESS && o.wind > 0.0f) {
+        grass_wind_desc wind = grass_default_wind_desc();
+        wind.speed = o.wind;
+        r = grass_set_wind(out->ctx, &wind);
+    }
     if (r != GRASS_SUCCESS) {
         *error = std::string("cannot make the scene: ") + grass_result_string(r) +
                  (out->ctx ? std::string(" (") + grass_get_last_error(out->ctx) + ")" : std::string());
@@ -256,6 +271,7 @@ bool tier_agreement(const Options& o, const grass_sample::Scene& s, const std::v
         const double eye[3] = {1.0, 1.6, -8.0}, target[3] = {1.0, 0.0, 1.0};
         grass_view_desc v = grass_host::make_view(*host, eye, target, 14.0f, kNear, 100.0f);
         grass_sample::apply_light(s, &v);
+        v.time = o.wind_time;
         grass_host::Image image;
         const grass_result r = host->render(sc.ctx, v, nullptr, &image, error);
         if (r != GRASS_SUCCESS) {
@@ -533,9 +549,9 @@ void print_report(const Options& o, const grass_sample::Scene& s, const LodSetup
     std::printf("## grass-popping: %s (%s)\n\n", grass_sample::backend_name(o.backend), device.c_str());
     std::printf("%s, %ux%u, %ux MSAA, camera %.1f m up dollying %.3f m per frame (%.1f m/s at %.0f fps), %d frames; "
                 "zone pixels where the view ray meets the lawn (%.2f m up) over roots in the zone; luma in 8-bit "
-                "sRGB levels (Rec. 709 weights); run %.0f s\n\n",
+                "sRGB levels (Rec. 709 weights); wind %.1f m/s at %.2f s in every frame; run %.0f s\n\n",
                 o.scene_path.c_str(), o.width, o.height, o.samples, s.eye[1], kWalkSpeed / kFps, kWalkSpeed, kFps,
-                o.frames, o.canopy, total);
+                o.frames, o.canopy, double(o.wind), o.wind_time, total);
     std::printf("| zone | distance (m) | rows | columns | pixels | ref. cells (blades to m) | mean dY lod | mean dY "
                 "ref | ratio | p95 dY lod | "
                 "p95 dY ref | ratio | mean Y lod | mean Y ref |\n");
@@ -633,6 +649,12 @@ Subcommand add_popping(CLI::App& measure) {
     app->add_option("--cache", o->cache_dir, "baked-slice cache directory");
     app->add_flag_callback(
         "--no-agreement", [o]() { o->agreement = false; }, "leave out the per-tier mean-colour agreement");
+    app->add_option("--wind", o->wind, "m/s of wind (default direction, gusts and turbulence); 0: still grass")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0f, 1000.0f));
+    app->add_option("--wind-time", o->wind_time, "seconds: grass_view_desc.time of every frame")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 1e6));
     return {app, [o]() { return run(*o); }};
 }
 

@@ -47,6 +47,7 @@ std::vector<double> Rig::frame_times(int count, std::vector<double>* plan_ms, st
     grass_host::Image image;
     std::string error;
     for (int r = 0; r < count + 1; ++r) {
+        view_.time += time_step_;
         const auto t0 = std::chrono::steady_clock::now();
         const std::clock_t c0 = std::clock(); // the process's CPU time, all threads
         const grass_result result = host_->render(ctx_, view_, nullptr, &image, &error);

@@ -102,6 +102,9 @@ public:
     // CPU time the process spent on each (every thread: the software rasteriser's too).
     std::vector<double> frame_times(int count, std::vector<double>* plan_ms = nullptr,
                                     std::vector<double>* cpu_ms = nullptr);
+    // Advances grass_view_desc.time by `seconds` before each frame from now on (0, the
+    // default: every frame at time 0, so the responsive grass steps 0).
+    void set_time_step(double seconds) { time_step_ = seconds; }
     grass_frame_stats frame_stats();
     grass_memory_stats memory_stats();
 
@@ -117,6 +120,7 @@ private:
     const double eye_[3] = {4.0, 4.5, -4.0}, look_[3] = {4.0, 0.0, 4.0};
     grass_view_desc view_{};
     double empty_ms_ = 0.0, empty_cpu_ms_ = 0.0;
+    double time_step_ = 0.0;
 };
 
 // A field of the 32 x 32 cells with one tier drawn alone at every distance.

@@ -16,7 +16,7 @@ function(expect name expected_rc regex)
   endif()
 endfunction()
 
-expect("grass-measure --help" 0 "Usage: grass-measure.*bench.*tier-cost.*popping" ${MEASURE} --help)
+expect("grass-measure --help" 0 "Usage: grass-measure.*bench.*tier-cost.*popping.*dynamics" ${MEASURE} --help)
 expect("grass-measure without a subcommand" 2 "subcommand is required" ${MEASURE})
 expect("grass-measure with an unknown subcommand" 2 "not expected: frobnicate" ${MEASURE} frobnicate)
 
@@ -25,7 +25,7 @@ expect("tier-cost --single --maps" 2 "--(single excludes --maps|maps excludes --
 expect("tier-cost --features --single" 2 "--(single excludes --features|features excludes --single)" ${MEASURE} tier-cost
        --features --single)
 
-set(tools "grass-render" "bench" "tier-cost" "popping")
+set(tools "grass-render" "bench" "tier-cost" "popping" "dynamics")
 if(VIEWER)
   list(APPEND tools "grass-viewer")
   # The viewer refuses what it cannot do before it opens a window (no display needed).
