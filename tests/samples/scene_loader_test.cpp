@@ -75,3 +75,66 @@ TEST(SceneLoader, ANumberItsFieldCannotHoldIsRefusedByName) {
 }
 
 } // namespace
+
+namespace {
+
+// The responsive-grass keys (docs/scene-format.md) are refused by name, as the others are:
+// an unknown key, a value of the wrong kind, a path that cannot be followed. A refused file
+// leaves the scene's responsive settings as they were.
+TEST(SceneLoader, ResponsiveKeysAreRefusedByName) {
+    struct Case {
+        const char* text;
+        const char* named;
+    };
+    const Case cases[] = {
+        {R"({"wind": {"speeed": 3}})", "unknown key \"speeed\" in \"wind\""},
+        {R"({"wind": 3})", "\"wind\" must be an object, not 3"},
+        {R"({"wind": {"speed": 1e300}})", "\"wind.speed\" is 1e+300, out of range"},
+        {R"({"wind": {"direction": [1, 0]}})", "\"wind.direction\" must have 3 numbers"},
+        {R"({"wind": {"sources": [{"kind": "fan", "position": [0, 0, 0]}]}})",
+         "\"wind.sources[0].kind\" must be point, cone or blast, not \"fan\""},
+        {R"({"wind": {"sources": [{"kind": "point"}]}})", "\"wind.sources[0]\" needs a \"position\""},
+        {R"({"wind": {"sources": [{"position": [0, 0, 0], "colour": 1}]}})",
+         "unknown key \"colour\" in \"wind.sources[0]\""},
+        {R"({"interaction": {"resolution": -256}})", "\"interaction.resolution\" is -256, out of range"},
+        {R"({"interaction": {"texel_size": [0.1, 1, 2]}})", "\"interaction.texel_size\" must be [level 0]"},
+        {R"({"interaction": {"level": 2}})", "unknown key \"level\" in \"interaction\""},
+        {R"({"patch": {"mechanics": {"stifness": 3}}})", "unknown key \"stifness\" in \"patch.mechanics\""},
+        {R"({"patch": {"mechanics": {"recovery_time": "slow"}}})",
+         "\"patch.mechanics.recovery_time\" must be a number, not \"slow\""},
+        {R"({"colliders": {"shape": "sphere"}})", "\"colliders\" must be a list"},
+        {R"({"colliders": [{"shape": "cube", "centre": [0, 0, 0]}]})",
+         "\"colliders[0].shape\" must be sphere or capsule, not \"cube\""},
+        {R"({"colliders": [{"radius": 1}]})", "\"colliders[0]\" needs a \"centre\""},
+        {R"({"colliders": [{"shape": "capsule", "centre": [0, 0, 0]}]})",
+         "\"colliders[0]\" is a capsule: it needs an \"end\""},
+        {R"({"colliders": [{"centre": [0, 0, 0], "end": [0, 1, 0]}]})",
+         "\"colliders[0]\" is a sphere: \"end\" is a capsule's key"},
+        {R"({"colliders": [{"centre": [0, 0, 0], "velocity": [1, 0, 0]}]})",
+         "unknown key \"velocity\" in \"colliders[0]\""},
+        {R"({"colliders": [{"centre": {"keyframes": [[0, 0, 0, 0], [0, 1, 0, 0]]}}]})",
+         "\"colliders[0].centre.keyframes\" times must ascend: [0,1,0,0] after time 0"},
+        {R"({"colliders": [{"centre": {"keyframes": [[0, 0, 0]]}}]})",
+         "\"colliders[0].centre.keyframes\" has [0,0,0]; each is [t, x, y, z]"},
+        {R"({"colliders": [{"centre": {"from": [0, 0, 0], "to": [1, 0, 0], "speed": 0}}]})",
+         "\"colliders[0].centre.speed\" is 0; it must be > 0"},
+        {R"({"colliders": [{"centre": {"from": [0, 0, 0], "speed": 1}}]})",
+         "\"colliders[0].centre\" needs \"keyframes\" or \"from\", \"to\" and \"speed\"; \"to\" is missing"},
+        {R"({"colliders": [{"centre": {"keyframes": [[0, 0, 0, 0]], "speed": 1}}]})",
+         "\"colliders[0].centre\" has \"keyframes\" and a line's keys"},
+        {R"({"wind": {"sources": [{"position": [0, 0, 0], "radius": 1e39}]}})",
+         "\"wind.sources[0].radius\" is 1e+39, out of range"},
+    };
+    for (const Case& c : cases) {
+        const std::string path = write_scene("responsive.json", c.text);
+        grass_sample::Scene scene;
+        scene.responsive.colliders.resize(1); // what the scene had before: kept
+        std::string error;
+        EXPECT_FALSE(grass_sample::load_scene(path, &scene, &error)) << c.text;
+        EXPECT_NE(error.find(c.named), std::string::npos) << c.text << ": " << error;
+        EXPECT_EQ(scene.responsive.colliders.size(), 1u) << c.text;
+        EXPECT_FALSE(scene.responsive.wind_given) << c.text;
+    }
+}
+
+} // namespace
