@@ -35,6 +35,7 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       fields_(StlAllocator<FieldGpu>(&context->host)), maps_(StlAllocator<MapGpu>(&context->host)),
       slices_(StlAllocator<SliceGpu>(&context->host)), draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),
       regions_(StlAllocator<VkBufferImageCopy>(&context->host)),
+      interaction_(fn_, device_.device, memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits),
       timer_ring_(vk_desc.frames_in_flight, TierTimerRing::WhenBusy::drop_results) {}
 
 VkBackend::~VkBackend() {
@@ -50,6 +51,7 @@ VkBackend::~VkBackend() {
     deferred_.destroy_now(&default_black_);
     deferred_.destroy_now(&default_slices_staging_);
     memory_.destroy_image(&default_slices_); // never retired
+    deferred_.destroy_now(&default_curves_);
     if (timer_pool_ != VK_NULL_HANDLE) fn_.vkDestroyQueryPool(device_.device, timer_pool_, nullptr);
     // The frame ring, pipelines and descriptor pools go with their members.
 }
@@ -99,6 +101,12 @@ grass_result VkBackend::init(const char* function) {
     }
     if (!ok) return fail(function, "the default slice image", failure); // the destructor frees what was made
     pending_uploads_ += 1;
+
+    // Binding 12 of draws that are not responsive: a valid buffer the shaders never read.
+    if (!deferred_.create_buffer(16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::device_local, &default_curves_,
+                                 &failure)) {
+        return fail(function, "the default blade curves buffer", failure);
+    }
     return GRASS_SUCCESS;
 }
 
@@ -130,20 +138,54 @@ VkImageView VkBackend::map_view(const FieldGpu& f, uint32_t role) const {
     return role == kMapColor || role == kMapHeight ? default_black_.view : default_white_.view;
 }
 
-void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& field, const VkImageView (&slices)[3]) {
+VkBackend::SetViews VkBackend::still_views() const {
+    return SetViews{{default_slices_.view, default_slices_.view, default_slices_.view},
+                    {default_black_.view, default_black_.view},
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                    default_curves_.buffer};
+}
+
+bool VkBackend::own_set(const TierDraw& d) {
+    return d.kind != GRASS_TIER_GEOMETRY || (d.features & (kFeatureWind | kFeatureInteraction)) != 0;
+}
+
+VkBackend::SetViews VkBackend::draw_views(const TierDraw& d) const {
+    SetViews v = still_views();
+    if (d.kind != GRASS_TIER_GEOMETRY) {
+        const SliceGpu* s = draw_slices(d);
+        v.slices[0] = s->color.view;
+        v.slices[1] = s->normal.view;
+        v.slices[2] = s->threshold.view;
+    }
+    if ((d.features & kFeatureInteraction) && interaction_.map_ready()) {
+        v.interaction[0] = interaction_.level_view(0);
+        v.interaction[1] = interaction_.level_view(1);
+        v.interaction_layout = VK_IMAGE_LAYOUT_GENERAL;
+    }
+    const PatchGpu& p = patches_[d.patch_slot];
+    if (p.curves.buffer && !p.curves_pending) v.curves = p.curves.buffer;
+    return v;
+}
+
+void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& field, const SetViews& views) {
     const VkBuffer uniforms = ring_.uniform_buffer(slot);
     const VkDescriptorBufferInfo frame_block{uniforms, 0, sizeof(FrameUniforms)};
     const VkDescriptorBufferInfo field_block{uniforms, 0, sizeof(FieldUniforms)};
-    // The samplers are immutable, in the layout. Bindings 2..9: images[binding - 2].
-    VkDescriptorImageInfo images[kBindingCount - kBindingDensityMap];
+    const VkDescriptorBufferInfo curves{views.curves, 0, VK_WHOLE_SIZE};
+    // The samplers are immutable, in the layout. Bindings 2..11: images[binding - 2].
+    VkDescriptorImageInfo images[kBindingBladeCurves - kBindingDensityMap];
     for (VkDescriptorImageInfo& i : images)
         i = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     for (uint32_t role = 0; role < kMapRoleCount; ++role) {
         images[kMapBinding[role] - kBindingDensityMap].imageView = map_view(field, role);
     }
-    images[kBindingSliceColor - kBindingDensityMap].imageView = slices[0];
-    images[kBindingSliceNormal - kBindingDensityMap].imageView = slices[1];
-    images[kBindingSliceThreshold - kBindingDensityMap].imageView = slices[2];
+    images[kBindingSliceColor - kBindingDensityMap].imageView = views.slices[0];
+    images[kBindingSliceNormal - kBindingDensityMap].imageView = views.slices[1];
+    images[kBindingSliceThreshold - kBindingDensityMap].imageView = views.slices[2];
+    for (uint32_t l = 0; l < 2; ++l) {
+        images[kBindingInteractionMap0 + l - kBindingDensityMap] = {VK_NULL_HANDLE, views.interaction[l],
+                                                                    views.interaction_layout};
+    }
     VkWriteDescriptorSet writes[kBindingCount];
     for (uint32_t i = 0; i < kBindingCount; ++i) {
         writes[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -152,6 +194,9 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
         writes[i].descriptorCount = 1;
         if (i < kBindingDensityMap) {
             writes[i].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+        } else if (i == kBindingBladeCurves) {
+            writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            writes[i].pBufferInfo = &curves;
         } else {
             writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
             writes[i].pImageInfo = &images[i - kBindingDensityMap];
@@ -160,6 +205,12 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
     writes[kBindingFrame].pBufferInfo = &frame_block;
     writes[kBindingField].pBufferInfo = &field_block;
     fn_.vkUpdateDescriptorSets(device_.device, kBindingCount, writes, 0, nullptr);
+}
+
+uint64_t VkBackend::dynamics_gpu_bytes() const {
+    uint64_t bytes = interaction_.map_bytes();
+    for (const PatchGpu& p : patches_) bytes += p.curves.allocated;
+    return bytes;
 }
 
 } // namespace grass::vk

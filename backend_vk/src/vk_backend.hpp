@@ -12,6 +12,7 @@
 #include "vk_descriptors.hpp"
 #include "vk_device.hpp"
 #include "vk_frame_ring.hpp"
+#include "vk_interaction.hpp"
 #include "vk_memory.hpp"
 #include "vk_pipeline.hpp"
 #include "vk_slice_pipelines.hpp"
@@ -37,6 +38,7 @@ public:
     grass_result upload_patch(uint32_t slot, const PatchData& patch) override;
     grass_result upload_slices(uint32_t slot, const SliceSet& set) override;
     void release_patch(uint32_t slot) override;
+    grass_result upload_blade_curves(uint32_t slot, const PatchData& patch) override;
     grass_result upload_map(uint32_t slot, const MapTexels& map) override;
     grass_result update_map(uint32_t slot, const MapTexels& map, const MapRegion& region) override;
     void release_map(uint32_t slot) override;
@@ -44,6 +46,7 @@ public:
     void release_field(uint32_t slot) override;
     grass_result begin_frame(const FramePlan& plan) override;
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
+    uint64_t dynamics_gpu_bytes() const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
 
     // grass_vk_prepare_frame and grass_vk_record (arguments already checked).
@@ -52,13 +55,18 @@ public:
 
 private:
     // A patch on the GPU: device-local vertex and index buffers, and until the upload is
-    // recorded, the staging buffer holding vertices then indices.
+    // recorded, the staging buffer holding vertices then indices. Responsive grass: the
+    // blade control points (a device-local storage buffer, binding 12), made by
+    // upload_blade_curves, with their own staging buffer until their copy is recorded.
     struct PatchGpu {
         bool live = false;
         bool pending = false;
+        bool curves_pending = false;
         Buffer vertices;
         Buffer indices;
         Buffer staging;
+        Buffer curves;
+        Buffer curves_staging;
         uint32_t index_count = 0;
     };
     // A baked slice set of a patch on the GPU (api/src/baked_slices.hpp): three device-local
@@ -109,10 +117,27 @@ private:
     void collect_timers();
 
     grass_result fail(const char* function, const char* what, const VkFailure& failure);
+    // What a set binds besides the uniforms and the field's maps: the slices of a volume or
+    // image draw (bindings 3-5) and responsive grass (bindings 10-12).
+    struct SetViews {
+        VkImageView slices[3];
+        VkImageView interaction[2];
+        VkImageLayout interaction_layout;
+        VkBuffer curves;
+    };
+    // The stand-ins of a draw that samples no slices and is not responsive: the default
+    // slice image, the default black map for the interaction levels, the 16-byte
+    // default curves buffer. The shaders of such a draw never read them.
+    SetViews still_views() const;
+    // What draw `d` binds: its slices, the interaction map's levels (kFeatureInteraction),
+    // its patch's blade curves (once uploaded); the stand-ins for the rest.
+    SetViews draw_views(const TierDraw& d) const;
+    // Whether `d` needs a set of its own this frame (record()): volume and image draws (the
+    // field's maps with the patch's slices) and responsive draws (its patch's curves).
+    static bool own_set(const TierDraw& d);
     // Points binding 0 and 1 of `set` at slot `slot`'s uniform buffer, the map bindings
-    // (kMapBinding) at the maps of `field` (or the defaults), and bindings 3-5 at `slices`
-    // (colour, normal, threshold).
-    void write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& field, const VkImageView (&slices)[3]);
+    // (kMapBinding) at the maps of `field` (or the defaults), and the rest at `views`.
+    void write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& field, const SetViews& views);
     // The image a field's sets bind for `role`: its map or the role's default.
     VkImageView map_view(const FieldGpu& field, uint32_t role) const;
     // Creates a map image (R16 or R16G16B16A16 unorm by texels.channels) and a staging
@@ -129,6 +154,8 @@ private:
     // False when the draw reads data whose upload prepare_frame has not recorded yet;
     // *problem names it. The debug view reads no patch.
     bool draw_ready(const TierDraw& draw, bool debug_view, const char** problem) const;
+    // prepare_frame: the copies of every pending upload, with their barriers.
+    void record_uploads(VkCommandBuffer cmd);
     void destroy_patch_now(PatchGpu* patch);
     void destroy_slices_now(SliceGpu* slices);
     // Retires the images of `slices` (frames in flight may sample them) and drops its staging.
@@ -160,9 +187,12 @@ private:
     bool rgba16_maps_ = false; // the device samples R16G16B16A16_UNORM with linear filtering
     Image default_slices_;     // 1x1, one layer, zero: bindings 3-5 of draws without slices
     Buffer default_slices_staging_;
-    uint32_t pending_uploads_ = 0; // patches, slice sets, maps, map updates and the default images not yet recorded
-    uint64_t frame_ = 0;           // frames begun; the current one while in a frame
-    uint32_t slot_ = 0;            // frame_ % frames_in_flight
+    Buffer default_curves_;            // 16 bytes, never written or read: binding 12 of draws that are not responsive
+    InteractionPass interaction_;      // responsive grass: the interaction map and its pass
+    bool interaction_pending_ = false; // this frame's pass is planned, not recorded yet (prepare_frame)
+    uint32_t pending_uploads_ = 0;     // patches, slice sets, maps, map updates and the default images not yet recorded
+    uint64_t frame_ = 0;               // frames begun; the current one while in a frame
+    uint32_t slot_ = 0;                // frame_ % frames_in_flight
     VkQueryPool timer_pool_ = VK_NULL_HANDLE; // frames_in_flight x TierTimerRing::kStampsPerSet timestamps
     TierTimerRing timer_ring_;
     uint32_t timer_set_ = TierTimerRing::kUntimed; // the current frame's set

@@ -11,11 +11,12 @@ VkResult create_pool(const Functions& fn, VkDevice device, uint32_t sets, VkDesc
     const VkDescriptorPoolSize sizes[] = {
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kUniformBuffersPerSet * sets},
         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kImageSamplersPerSet * sets},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStorageBuffersPerSet * sets},
     };
     VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     info.flags = flags;
     info.maxSets = sets;
-    info.poolSizeCount = 2;
+    info.poolSizeCount = 3;
     info.pPoolSizes = sizes;
     return fn.vkCreateDescriptorPool(device, &info, nullptr, out);
 }

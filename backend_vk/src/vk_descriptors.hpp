@@ -14,10 +14,11 @@
 namespace grass::vk {
 
 // What one set of the blade layout holds: the Frame and Field blocks (dynamic uniform
-// buffers) and eight combined image samplers (the five design maps; slice colour, normal,
-// threshold).
+// buffers), ten combined image samplers (the five design maps; slice colour, normal,
+// threshold; the interaction map's two levels) and one storage buffer (blade curves).
 constexpr uint32_t kUniformBuffersPerSet = 2;
-constexpr uint32_t kImageSamplersPerSet = 8;
+constexpr uint32_t kImageSamplersPerSet = 10;
+constexpr uint32_t kStorageBuffersPerSet = 1;
 
 // A set and the pool it came from (needed to free it).
 struct DescriptorSet {
@@ -34,7 +35,8 @@ public:
     DescriptorAllocator& operator=(const DescriptorAllocator&) = delete;
 
     // A set of `layout`, which must be the blade layout (kUniformBuffersPerSet dynamic
-    // uniform buffers, kImageSamplersPerSet combined image samplers): pools are sized for it.
+    // uniform buffers, kImageSamplersPerSet combined image samplers, kStorageBuffersPerSet
+    // storage buffers): pools are sized for it.
     bool allocate(VkDescriptorSetLayout layout, DescriptorSet* out, VkFailure* failure);
     // The set must not be in use by a pending command buffer. Empty sets are ignored.
     void free(DescriptorSet* set);

@@ -45,6 +45,7 @@ namespace grass::vk {
     X(vkCreatePipelineLayout)        \
     X(vkDestroyPipelineLayout)       \
     X(vkCreateGraphicsPipelines)     \
+    X(vkCreateComputePipelines)      \
     X(vkDestroyPipeline)             \
     X(vkCreateDescriptorPool)        \
     X(vkDestroyDescriptorPool)       \
@@ -63,6 +64,8 @@ namespace grass::vk {
     X(vkCmdSetScissor)               \
     X(vkCmdDraw)                     \
     X(vkCmdDrawIndexed)              \
+    X(vkCmdDispatch)                 \
+    X(vkCmdClearColorImage)          \
     X(vkCreateQueryPool)             \
     X(vkDestroyQueryPool)            \
     X(vkGetQueryPoolResults)         \

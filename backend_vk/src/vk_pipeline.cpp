@@ -208,6 +208,11 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
         {kBindingAmbientMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
         {kBindingDiffuseMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
         {kBindingHeightMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
+        // texelFetch ignores the sampler; a nearest one keeps RGBA32F (no linear filtering
+        // guaranteed) valid.
+        {kBindingInteractionMap0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
+        {kBindingInteractionMap1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
+        {kBindingBladeCurves, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
     };
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.bindingCount = kBindingCount;

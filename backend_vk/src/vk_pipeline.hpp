@@ -26,10 +26,19 @@ enum BladeBinding : uint32_t {
     kBindingAmbientMap = 7,
     kBindingDiffuseMap = 8,
     kBindingHeightMap = 9,
-    kBindingCount = 10
+    // Responsive grass (kFeatureWind, kFeatureInteraction): the interaction map's levels
+    // (RGBA32F, GENERAL layout, read with texelFetch through a nearest sampler) and the
+    // patch's blade control points (a storage buffer). Draws without those features bind
+    // stand-ins the shaders never read (VkBackend::write_set).
+    kBindingInteractionMap0 = 10,
+    kBindingInteractionMap1 = 11,
+    kBindingBladeCurves = 12,
+    kBindingCount = 13
 };
 static_assert(kBindingDensityMap == 2 && kBindingColorMap == 6 && kBindingHeightMap == 9,
               "kMapBinding of api/src/backend.hpp");
+static_assert(kBindingInteractionMap0 == 10 && kBindingInteractionMap1 == 11 && kBindingBladeCurves == 12,
+              "kInteractionMapBinding and kBladeCurvesBinding of api/src/context/backend.hpp");
 
 // The kinds of graphics pipeline; each exists per map feature mask (GRASS_FEATURES).
 enum PipelineKind : uint32_t {
@@ -39,8 +48,8 @@ enum PipelineKind : uint32_t {
     kPipelineDebugView = 3,
     kPipelineKindCount = 4
 };
-// Feature masks are 5 bits (one per MapRole).
-constexpr uint32_t kFeatureMaskCount = 32;
+// Feature masks are 7 bits: one per MapRole, then kFeatureWind and kFeatureInteraction.
+constexpr uint32_t kFeatureMaskCount = 128;
 
 struct PipelineTarget {
     VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats

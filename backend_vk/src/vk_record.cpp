@@ -33,10 +33,17 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
     }
     if (uniforms_replaced) {
         // This slot's sets were last used by frame frame_ - frames_in_flight, which is done.
-        const VkImageView none[3] = {default_slices_.view, default_slices_.view, default_slices_.view};
         for (const FieldGpu& f : fields_) {
-            if (f.live) write_set(f.sets[slot_].set, slot_, f, none);
+            if (f.live) write_set(f.sets[slot_].set, slot_, f, still_views());
         }
+    }
+    // Responsive grass: the interaction map and this frame's pass (recorded by prepare_frame).
+    interaction_pending_ = false;
+    if (plan.interaction.levels > 0) {
+        if (!interaction_.prepare(slot_, frame_, plan.interaction, &failure, &what)) {
+            return fail("grass_begin_frame", what, failure);
+        }
+        interaction_pending_ = true;
     }
     return GRASS_SUCCESS;
 }
@@ -48,8 +55,16 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
                                 TierTimerRing::kStampsPerSet);
         timer_reset_ = true;
     }
-    if (pending_uploads_ == 0) return GRASS_SUCCESS;
+    if (pending_uploads_ > 0) record_uploads(cmd);
+    // Responsive grass: the interaction pass, once per frame (grass_vk.h).
+    if (interaction_pending_) {
+        interaction_.record(cmd, slot_, ctx_->plan.interaction);
+        interaction_pending_ = false;
+    }
+    return GRASS_SUCCESS;
+}
 
+void VkBackend::record_uploads(VkCommandBuffer cmd) {
     // Build the batch first: it may throw std::bad_alloc, and nothing has changed yet.
     batch_.clear();
     if (default_white_staging_.buffer) batch_.copy_image(default_white_staging_.buffer, 0, default_white_.image, 1, 1);
@@ -63,6 +78,11 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
                            VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
         batch_.copy_buffer(p.staging.buffer, p.vertices.size, p.indices.buffer, p.indices.size,
                            VK_ACCESS_INDEX_READ_BIT);
+    }
+    for (const PatchGpu& p : patches_) {
+        if (p.curves_pending) {
+            batch_.copy_buffer(p.curves_staging.buffer, 0, p.curves.buffer, p.curves.size, VK_ACCESS_SHADER_READ_BIT);
+        }
     }
     for (const MapGpu& m : maps_) {
         // A map is either new (its whole image) or updated (a rectangle of it), never both.
@@ -107,9 +127,9 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
         s.pending = false;
     }
     for (PatchGpu& p : patches_) {
-        if (!p.pending) continue;
-        deferred_.retire(&p.staging, frame_);
-        p.pending = false;
+        if (p.pending) deferred_.retire(&p.staging, frame_);
+        if (p.curves_pending) deferred_.retire(&p.curves_staging, frame_);
+        p.pending = p.curves_pending = false;
     }
     for (MapGpu& m : maps_) {
         if (m.pending) deferred_.retire(&m.staging, frame_);
@@ -117,7 +137,6 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
         m.pending = m.updating = false;
     }
     pending_uploads_ = 0;
-    return GRASS_SUCCESS;
 }
 
 bool VkBackend::drawn(const TierDraw& d, bool debug_view) const {
@@ -165,6 +184,18 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
         *problem = "the default slice image";
         return false;
     }
+    if (debug_view) return true;
+    // Responsive grass: blades bend from their patch's control points; the map's pass of
+    // this frame runs before any draw reads it.
+    if (draw.kind == GRASS_TIER_GEOMETRY && (draw.features & (kFeatureWind | kFeatureInteraction)) &&
+        (!patches_[draw.patch_slot].curves.buffer || patches_[draw.patch_slot].curves_pending)) {
+        *problem = "its patch's blade control points";
+        return false;
+    }
+    if ((draw.features & kFeatureInteraction) && (interaction_pending_ || !interaction_.map_ready())) {
+        *problem = "this frame's interaction pass";
+        return false;
+    }
     return true;
 }
 
@@ -173,7 +204,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
     // Refuse before recording anything, so that the command buffer is left untouched. The
     // plan itself was checked by grass_begin_frame (check_plan in context/invariants.hpp).
-    uint32_t draw_count = 0, slice_draws = 0;
+    uint32_t draw_count = 0, slice_draws = 0, own_sets = 0;
     for (const TierDraw& d : plan.draws) {
         if (!drawn(d, debug_view)) continue;
         const char* problem = "";
@@ -191,23 +222,23 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         if (!pipeline_.create_variant(d.features, &failure, &what)) return fail("grass_vk_record", what, failure);
         draw_count += 1;
         if (!debug_view && d.kind != GRASS_TIER_GEOMETRY) slice_draws += 1;
+        if (!debug_view && own_set(d)) own_sets += 1;
     }
     if (draw_count == 0) return GRASS_SUCCESS;
 
-    // The volume and image draws pair the field's design maps with the patch's slices: a
-    // fresh set each, from this frame slot's pools (never one a frame in flight may use).
-    if (slice_draws > 0) {
+    // The volume and image draws pair the field's design maps with the patch's slices, and
+    // responsive draws with the patch's blade curves and the interaction map: a fresh set
+    // each, from this frame slot's pools (never one a frame in flight may use).
+    if (own_sets > 0) {
         draw_sets_.assign(plan.draws.size(), VK_NULL_HANDLE); // may throw: nothing recorded yet
         for (uint32_t i = 0; i < plan.draws.size(); ++i) {
             const TierDraw& d = plan.draws[i];
-            if (!drawn(d, false) || d.kind == GRASS_TIER_GEOMETRY) continue;
+            if (!drawn(d, false) || !own_set(d)) continue;
             VkFailure failure;
             if (!frame_sets_.allocate(slot_, pipeline_.set_layout(), &draw_sets_[i], &failure)) {
-                return fail("grass_vk_record", "a descriptor set of a volume or image tier", failure);
+                return fail("grass_vk_record", "a descriptor set of a volume, image or responsive draw", failure);
             }
-            const SliceGpu* s = draw_slices(d);
-            const VkImageView views[3] = {s->color.view, s->normal.view, s->threshold.view};
-            write_set(draw_sets_[i], slot_, fields_[d.field_slot], views);
+            write_set(draw_sets_[i], slot_, fields_[d.field_slot], draw_views(d));
         }
     }
 
@@ -266,7 +297,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
             fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
             bound_pipeline = pipeline;
         }
-        bind_set(i, fields_[d.field_slot].sets[slot_].set);
+        bind_set(i, own_set(d) ? draw_sets_[i] : fields_[d.field_slot].sets[slot_].set);
         const PatchGpu& p = patches_[d.patch_slot];
         if (bound_patch != d.patch_slot) {
             const VkBuffer buffers[2] = {p.vertices.buffer, instances};

@@ -69,6 +69,9 @@ void VkBackend::destroy_patch_now(PatchGpu* p) {
     deferred_.destroy_now(&p->vertices);
     deferred_.destroy_now(&p->indices);
     deferred_.destroy_now(&p->staging);
+    if (p->curves_pending) pending_uploads_ -= 1;
+    deferred_.destroy_now(&p->curves);
+    deferred_.destroy_now(&p->curves_staging);
     *p = PatchGpu{};
 }
 
@@ -80,9 +83,14 @@ void VkBackend::release_patch(uint32_t slot) {
         deferred_.destroy_now(&p.staging);
         pending_uploads_ -= 1;
     }
+    if (p.curves_pending) {
+        deferred_.destroy_now(&p.curves_staging);
+        pending_uploads_ -= 1;
+    }
     // Draws of frames still in flight may read the buffers.
     deferred_.retire(&p.vertices, frame_);
     deferred_.retire(&p.indices, frame_);
+    deferred_.retire(&p.curves, frame_);
     p = PatchGpu{};
     // Its slice sets go with it (swap-remove: no allocation).
     for (size_t i = 0; i < slices_.size();) {
@@ -94,6 +102,42 @@ void VkBackend::release_patch(uint32_t slot) {
         slices_[i] = slices_.back();
         slices_.pop_back();
     }
+}
+
+grass_result VkBackend::upload_blade_curves(uint32_t slot, const PatchData& patch) {
+    const char* function = "grass_begin_frame"; // the core uploads them for the first frame that needs them
+    if (slot >= patches_.size() || !patches_[slot].live) {
+        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
+                          "%s: blade curves for the patch in slot %u, which the Vulkan backend does not hold "
+                          "(internal error)",
+                          function, slot);
+    }
+    PatchGpu& p = patches_[slot];
+    if (p.curves.buffer || patch.blade_curves.empty()) return GRASS_SUCCESS; // once per patch; empty: nothing drawn
+    const VkDeviceSize bytes = VkDeviceSize(patch.blade_curves.size()) * sizeof(float);
+    Buffer curves, staging;
+    VkFailure failure;
+    const char* what = "the patch's blade curves buffer";
+    bool ok = deferred_.create_buffer(bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                      MemoryUse::device_local, &curves, &failure);
+    if (ok) {
+        what = "the patch's blade curves staging buffer";
+        ok = deferred_.create_buffer(bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::staging, &staging, &failure);
+    }
+    if (ok) {
+        std::memcpy(staging.mapped, patch.blade_curves.data(), static_cast<size_t>(bytes));
+        ok = memory_.flush(staging, 0, bytes, &failure);
+    }
+    if (!ok) {
+        deferred_.destroy_now(&curves); // never recorded: no GPU work can use them
+        deferred_.destroy_now(&staging);
+        return fail(function, what, failure);
+    }
+    p.curves = curves;
+    p.curves_staging = staging;
+    p.curves_pending = true;
+    pending_uploads_ += 1;
+    return GRASS_SUCCESS;
 }
 
 // ---- Baked slices -----------------------------------------------------------------------
@@ -377,8 +421,7 @@ grass_result VkBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
         for (DescriptorSet& s : fresh.sets) deferred_.destroy_now(&s);
         return fail(function, what, failure);
     }
-    const VkImageView none[3] = {default_slices_.view, default_slices_.view, default_slices_.view};
-    for (uint32_t i = 0; i < desc_.frames_in_flight; ++i) write_set(fresh.sets[i].set, i, fresh, none);
+    for (uint32_t i = 0; i < desc_.frames_in_flight; ++i) write_set(fresh.sets[i].set, i, fresh, still_views());
     fields_[slot] = fresh;
     return GRASS_SUCCESS;
 }

@@ -86,8 +86,9 @@ void UploadBatch::record(const Functions& fn, VkCommandBuffer cmd) {
                                   regions_.data() + c.first_region);
     }
 
-    // Transfer writes -> vertex input (patch buffers) and shader reads (design maps are
-    // sampled in both stages, slices in the fragment shader).
+    // Transfer writes -> vertex input (patch buffers), vertex shader reads (blade curves,
+    // a storage buffer) and shader reads (design maps are sampled in both stages, slices
+    // in the fragment shader).
     buffer_barriers_.clear();
     for (const BufferCopy& c : buffer_copies_) {
         VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
@@ -108,7 +109,12 @@ void UploadBatch::record(const Functions& fn, VkCommandBuffer cmd) {
     }
     if (!buffer_barriers_.empty() || !image_barriers_.empty()) {
         VkPipelineStageFlags dst_stages = 0;
-        if (!buffer_barriers_.empty()) dst_stages |= VK_PIPELINE_STAGE_VERTEX_INPUT_BIT;
+        for (const BufferCopy& c : buffer_copies_) {
+            if (c.dst_access & (VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT)) {
+                dst_stages |= VK_PIPELINE_STAGE_VERTEX_INPUT_BIT;
+            }
+            if (c.dst_access & VK_ACCESS_SHADER_READ_BIT) dst_stages |= VK_PIPELINE_STAGE_VERTEX_SHADER_BIT;
+        }
         if (!image_barriers_.empty()) {
             dst_stages |= VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
         }

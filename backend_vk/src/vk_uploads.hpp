@@ -20,7 +20,8 @@ public:
           image_barriers_(StlAllocator<VkImageMemoryBarrier>(host)) {}
 
     // The adds may throw std::bad_alloc; nothing is recorded until record().
-    // `dst_access`: how the draws read `dst` (VERTEX_ATTRIBUTE_READ or INDEX_READ).
+    // `dst_access`: how the draws read `dst` (VERTEX_ATTRIBUTE_READ, INDEX_READ, or
+    // SHADER_READ for a storage buffer the vertex shader reads).
     void copy_buffer(VkBuffer src, VkDeviceSize src_offset, VkBuffer dst, VkDeviceSize size, VkAccessFlags dst_access);
     // A whole single-mip colour image, tightly packed in `src` from `src_offset`.
     void copy_image(VkBuffer src, VkDeviceSize src_offset, VkImage dst, uint32_t width, uint32_t height);

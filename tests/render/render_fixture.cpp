@@ -168,7 +168,8 @@ double grass_centroid_x(const grass_host::Image& image, const uint8_t sky[3]) {
 }
 
 grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
-                                       const double eye[3], const double look[3]) {
+                                       const double eye[3], const double look[3], int frames,
+                                       const SceneFrame& before_frame) {
     grass_host::Image image;
     std::string error;
     auto host = grass_host::Host::create(backend, target, &error);
@@ -193,8 +194,11 @@ grass_host::Image render_default_scene(grass_backend backend, const grass_host::
     fd.lod_test_count = 1;
     grass_field_id field{};
     EXPECT_EQ(grass_create_field(ctx, &fd, &field), GRASS_SUCCESS);
-    const grass_view_desc v = grass_host::make_view(*host, eye, look, 50.0f, 0.05f, 100.0f);
-    EXPECT_EQ(host->render(ctx, v, nullptr, &image, &error), GRASS_SUCCESS) << error;
+    for (int frame = 0; frame < frames; ++frame) {
+        grass_view_desc v = grass_host::make_view(*host, eye, look, 50.0f, 0.05f, 100.0f);
+        if (before_frame) before_frame(ctx, frame, &v);
+        EXPECT_EQ(host->render(ctx, v, nullptr, &image, &error), GRASS_SUCCESS) << error;
+    }
     grass_destroy_context(ctx);
     EXPECT_EQ(host->validation_messages(), 0u) << host->validation_log();
     return image;

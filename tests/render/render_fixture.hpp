@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -70,11 +71,15 @@ grass_host::TargetDesc black_or_white_target(bool white);
 void expected_sky(const grass_host::TargetDesc& t, uint8_t out[3]);
 // A pixel differs from the sky by more than `tolerance` levels in some channel.
 bool is_grass(const uint8_t* pixel, const uint8_t sky[3], int tolerance = 6);
-// One frame of the default patch on a square field of `cells` cells, rendered by a fresh
-// host of `backend`, from `eye` towards `look` (50 degree fov). Fails the calling test on
-// any error or validation message; empty image then.
+// Called before each frame of render_default_scene: may set the wind, colliders and so on,
+// and change the view (its time).
+using SceneFrame = std::function<void(grass_context* ctx, int frame, grass_view_desc* view)>;
+// `frames` frames (the last one returned) of the default patch on a square field of
+// `cells` cells, rendered by a fresh host of `backend`, from `eye` towards `look` (50
+// degree fov). Fails the calling test on any error or validation message; empty image then.
 grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
-                                       const double eye[3], const double look[3]);
+                                       const double eye[3], const double look[3], int frames = 1,
+                                       const SceneFrame& before_frame = nullptr);
 // Centre of the grass along x, weighted by how far each pixel is from the sky colour, in pixels.
 double grass_centroid_x(const grass_host::Image& image, const uint8_t sky[3]);
 // Mean absolute difference of the RGB channels, in 8-bit levels.

@@ -45,6 +45,8 @@ GRASS_REAL(vkCreateDescriptorPool)
 GRASS_REAL(vkDestroyDescriptorPool)
 GRASS_REAL(vkAllocateDescriptorSets)
 GRASS_REAL(vkCreateGraphicsPipelines)
+GRASS_REAL(vkCreateComputePipelines)
+GRASS_REAL(vkCmdDispatch)
 GRASS_REAL(vkDestroyPipeline)
 GRASS_REAL(vkCreateQueryPool)
 GRASS_REAL(vkDestroyQueryPool)
@@ -112,6 +114,20 @@ VKAPI_ATTR VkResult VKAPI_CALL wrap_vkCreateGraphicsPipelines(VkDevice d, VkPipe
     return r;
 }
 
+VKAPI_ATTR VkResult VKAPI_CALL wrap_vkCreateComputePipelines(VkDevice d, VkPipelineCache cache, uint32_t n,
+                                                             const VkComputePipelineCreateInfo* infos,
+                                                             const VkAllocationCallbacks* a, VkPipeline* out) {
+    if (fails("vkCreateComputePipelines")) return failure.result;
+    const VkResult r = real_vkCreateComputePipelines(d, cache, n, infos, a, out);
+    if (r == VK_SUCCESS) counts.pipelines += n;
+    return r;
+}
+
+VKAPI_ATTR void VKAPI_CALL wrap_vkCmdDispatch(VkCommandBuffer cmd, uint32_t x, uint32_t y, uint32_t z) {
+    counts.dispatches += 1;
+    real_vkCmdDispatch(cmd, x, y, z);
+}
+
 VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL wrap_vkGetDeviceProcAddr(VkDevice device, const char* name) {
     const PFN_vkVoidFunction real = real_device_proc_addr(device, name);
     if (!real) return real;
@@ -135,6 +151,8 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL wrap_vkGetDeviceProcAddr(VkDevice devic
     GRASS_WRAP(vkDestroyDescriptorPool)
     GRASS_WRAP(vkAllocateDescriptorSets)
     GRASS_WRAP(vkCreateGraphicsPipelines)
+    GRASS_WRAP(vkCreateComputePipelines)
+    GRASS_WRAP(vkCmdDispatch)
     GRASS_WRAP(vkDestroyPipeline)
     GRASS_WRAP(vkCreateQueryPool)
     GRASS_WRAP(vkDestroyQueryPool)

@@ -22,10 +22,11 @@ void clear_failures();
 int failures_injected();
 
 // Objects grass created and has not destroyed: buffers, images, image views, memory
-// allocations, samplers, descriptor pools, pipelines, query pools.
+// allocations, samplers, descriptor pools, pipelines (graphics and compute), query pools.
 struct Live {
     int64_t buffers = 0, images = 0, views = 0, memory = 0, samplers = 0, pools = 0, pipelines = 0, queries = 0;
     int64_t memory_made = 0; // vkAllocateMemory calls that succeeded, ever
+    int64_t dispatches = 0;  // vkCmdDispatch calls grass recorded, ever (not an object)
     int64_t total() const { return buffers + images + views + memory + samplers + pools + pipelines + queries; }
     std::string describe() const;
 };

@@ -58,8 +58,35 @@ GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const gr
                                                const grass_vk_desc* vk_desc, grass_context** out_context);
 
 /* Records pending uploads (patches, maps) and the barriers that make them visible to the
- * vertex and fragment stages. Call between grass_begin_frame() and the render pass that
- * grass_vk_record() draws in; it records nothing when nothing is pending. */
+ * vertex and fragment stages, and the responsive grass's interaction pass. Call between
+ * grass_begin_frame() and the render pass that grass_vk_record() draws in, every frame; it
+ * records nothing when nothing is pending and the frame has no pass (still grass, or no
+ * colliders and no trail to age). grass_vk_record() refuses a frame whose pass was not
+ * recorded (GRASS_MSG_UPLOAD_NOT_RECORDED).
+ *
+ * The interaction pass (responsive grass, docs/responsive.md): the interaction map is one
+ * RGBA32F image per level, N x N texels, shared by every frame in flight (it persists from
+ * frame to frame), always in VK_IMAGE_LAYOUT_GENERAL. For a frame with colliders or a trail
+ * prepare_frame records, after the uploads:
+ *   1. Only the first time after the map is made (or remade by grass_set_interaction): a
+ *      barrier UNDEFINED -> GENERAL (TOP_OF_PIPE -> TRANSFER, access 0 -> TRANSFER_WRITE)
+ *      and vkCmdClearColorImage of each level to the cleared texel.
+ *   2. One image barrier per level, GENERAL -> GENERAL:
+ *      src stages VERTEX_SHADER | FRAGMENT_SHADER | COMPUTE_SHADER | TRANSFER,
+ *      src access SHADER_WRITE | TRANSFER_WRITE  ->  dst stage COMPUTE_SHADER,
+ *      dst access SHADER_READ | SHADER_WRITE.
+ *      It orders this frame's pass after every earlier submitted use of the map: the draws
+ *      of earlier frames that read it (write-after-read, which frames in flight make
+ *      possible), the previous pass and the clear (read/write-after-write).
+ *   3. vkCmdBindPipeline (compute) and, per level, vkCmdBindDescriptorSets (compute) and
+ *      vkCmdDispatch(ceil(N / 8), ceil(N / 8), 1).
+ *   4. One image barrier per level, GENERAL -> GENERAL: src COMPUTE_SHADER / SHADER_WRITE ->
+ *      dst VERTEX_SHADER | FRAGMENT_SHADER / SHADER_READ (this frame's draws texelFetch it).
+ * The host's compute pipeline binding is changed (it rebinds its own after). These barriers
+ * order work within one queue in submission order, so submit every frame's grass work to the
+ * queue of vk_desc.queue_family, in frame order. The device needs nothing beyond Vulkan 1.1
+ * core for it (storage images of a declared format, storage buffers in the vertex stage
+ * read only). */
 GRASS_API grass_result grass_vk_prepare_frame(grass_context* context, void* command_buffer);
 
 typedef struct grass_vk_record_desc {

@@ -26,9 +26,9 @@ grass_result validate_blade_mechanics(grass_context* ctx, const char* fn, const 
         float value;
         double lo, hi;
     };
-    const Rule rules[] = {{"stiffness", m.stiffness, 0.1, 1e5},        {"mass", m.mass, 0.0, 100.0},
+    const Rule rules[] = {{"stiffness", m.stiffness, 0.1, 1e5},           {"mass", m.mass, 0.0, 100.0},
                           {"wind_response", m.wind_response, 0.0, 100.0}, {"trample_depth", m.trample_depth, 0.0, 1.0},
-                          {"recovery_time", m.recovery_time, 0.01, 1e5}, {"variation", m.variation, 0.0, 0.9}};
+                          {"recovery_time", m.recovery_time, 0.01, 1e5},  {"variation", m.variation, 0.0, 0.9}};
     for (const Rule& r : rules) {
         char arg[96];
         std::snprintf(arg, sizeof arg, "%s->%s", name, r.field);

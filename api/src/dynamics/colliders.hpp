@@ -23,8 +23,8 @@ grass_result validate_colliders(grass_context* ctx, const char* fn, const grass_
 // The map's frame at this frame: unit axes (world), the camera's height above the anchor.
 struct MapFrame {
     double up[3], u[3], v[3];
-    double camera[3];      // world metres
-    double camera_height;  // along up, above the height anchor (m)
+    double camera[3];     // world metres
+    double camera_height; // along up, above the height anchor (m)
 };
 
 // Converts the colliders that reach a level's window into plan->colliders (GpuCollider) and

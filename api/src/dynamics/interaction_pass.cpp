@@ -20,12 +20,15 @@ struct Contact {
     float age = 0.0f;
     float dir[2] = {0.0f, 0.0f};
     bool dir_known = false;
+    bool continues = false; // the collider touched the texel at the start of the sweep
 };
 
 // Keeps the deeper contact (ties: the younger).
-void offer(Contact* best, float underside, float age, V2 away, float distance, float radius, V2 velocity) {
+void offer(Contact* best, float underside, float age, V2 away, float distance, float radius, V2 velocity,
+           bool continues) {
     if (best->found && (underside > best->underside || (underside == best->underside && age >= best->age))) return;
     best->found = true;
+    best->continues = continues;
     best->underside = underside;
     best->age = age;
     best->dir_known = true;
@@ -59,15 +62,18 @@ void test_sphere(const GpuCollider& c, V2 p, float dt, Contact* best) {
     const V2 away = p - V2{cu, cv};
     const float d = length(away);
     if (!(d < r)) return;
-    offer(best, ch - std::sqrt(r * r - d * d), (1.0f - s) * dt, away, d, r, V2{c.velocity[0], c.velocity[1]});
+    const bool continues = length(p - from) < r;
+    offer(best, ch - std::sqrt(r * r - d * d), (1.0f - s) * dt, away, d, r, V2{c.velocity[0], c.velocity[1]},
+          continues);
 }
 
 void test_capsule(const GpuCollider& c, V2 p, float dt, float texel, Contact* best) {
     const float r = c.a[3];
-    const float speed = std::sqrt(c.velocity[0] * c.velocity[0] + c.velocity[1] * c.velocity[1] +
-                                  c.velocity[2] * c.velocity[2]);
+    const float speed =
+        std::sqrt(c.velocity[0] * c.velocity[0] + c.velocity[1] * c.velocity[1] + c.velocity[2] * c.velocity[2]);
     const float steps = std::min(std::max(std::ceil(speed * dt / std::max(r, texel)), 1.0f), 8.0f);
     const int k_max = static_cast<int>(steps);
+    bool continues = false;
     for (int k = 0; k <= k_max; ++k) {
         const float s = float(k) / steps;
         const float back = (1.0f - s) * dt;
@@ -81,7 +87,8 @@ void test_capsule(const GpuCollider& c, V2 p, float dt, float texel, Contact* be
         const V2 away = p - V2{q[0], q[1]};
         const float d = length(away);
         if (!(d < r)) continue;
-        offer(best, q[2] - std::sqrt(r * r - d * d), back, away, d, r, V2{c.velocity[0], c.velocity[1]});
+        continues = continues || k == 0;
+        offer(best, q[2] - std::sqrt(r * r - d * d), back, away, d, r, V2{c.velocity[0], c.velocity[1]}, continues);
     }
 }
 
@@ -92,7 +99,7 @@ int32_t wrap(int32_t a, int32_t n) {
 
 } // namespace
 
-void run_interaction_pass(const InteractionPlan& plan, uint32_t level, InteractionTexel* texels) {
+void run_interaction_pass(const InteractionPlan& plan, uint32_t level, InteractionTexel* texels, ContactRule rule) {
     const InteractionLevelUniforms& u = plan.level[level];
     const int32_t n = static_cast<int32_t>(u.counts[0]);
     const int32_t tile_size = static_cast<int32_t>(u.counts[1]), tiles = static_cast<int32_t>(u.counts[2]);
@@ -119,6 +126,10 @@ void run_interaction_pass(const InteractionPlan& plan, uint32_t level, Interacti
                 }
             }
             if (!best.found) continue;
+            const bool keep =
+                rule == ContactRule::keep_deepest_of_passage && best.continues && out.age < kAgeNone &&
+                (out.underside < best.underside || (out.underside == best.underside && out.age < best.age));
+            if (keep) continue;
             if (best.dir_known) {
                 out.dir[0] = best.dir[0];
                 out.dir[1] = best.dir[1];

@@ -23,8 +23,20 @@ constexpr float kAgeNone = 1e29f;   // an age at or above this: no contact (ages
 
 inline InteractionTexel cleared_texel() { return InteractionTexel{{0.0f, 0.0f}, kNoContact, kNoContact}; }
 
+// How a contact of this frame combines with the texel's stored one.
+enum class ContactRule {
+    // The design's rule (interaction.comp): this frame's contact replaces the stored one.
+    replace,
+    // A proposal (not in the shaders): when the collider already touched the texel at the
+    // start of this frame's sweep (s = 0), the contact continues the stored one's passage and
+    // the deeper of the two is kept (ties: the younger); otherwise it replaces it. A passage
+    // then keeps its deepest contact whatever the frame rate.
+    keep_deepest_of_passage,
+};
+
 // Runs the pass of `level` of `plan` on `texels` (resolution^2, row y = texel v, x = texel u:
 // texels[y * N + x]).
-void run_interaction_pass(const InteractionPlan& plan, uint32_t level, InteractionTexel* texels);
+void run_interaction_pass(const InteractionPlan& plan, uint32_t level, InteractionTexel* texels,
+                          ContactRule rule = ContactRule::replace);
 
 } // namespace grass

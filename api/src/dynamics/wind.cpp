@@ -104,8 +104,7 @@ bool wind_is_active(const grass_wind_desc& w) {
            w.gravity[1] != kStandardGravity[1] || w.gravity[2] != kStandardGravity[2];
 }
 
-void pack_wind(const grass_wind_desc& w, const double camera[3], double time, const double up[3],
-               FrameUniforms* f) {
+void pack_wind(const grass_wind_desc& w, const double camera[3], double time, const double up[3], FrameUniforms* f) {
     double dir[3];
     normalize3(w.direction, dir);
     const double speed = w.speed;

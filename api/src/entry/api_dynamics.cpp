@@ -65,9 +65,7 @@ GRASS_API grass_result grass_set_colliders(grass_context* context, const grass_c
     });
 }
 
-GRASS_API grass_interaction_desc grass_default_interaction_desc(void) {
-    return grass::default_interaction_desc();
-}
+GRASS_API grass_interaction_desc grass_default_interaction_desc(void) { return grass::default_interaction_desc(); }
 
 GRASS_API grass_result grass_set_interaction(grass_context* context, const grass_interaction_desc* desc) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
