@@ -3,7 +3,10 @@
 #include "dynamics_fixture.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <cstring>
+#include <random>
 
 namespace {
 
@@ -78,12 +81,324 @@ TEST_F(InteractionPassTest, FrameRateIndependenceOfMovingSphere) {
         }
         for (int i = 0; i < 2; ++i) {
             const Difference d = compare(result[i], result[2], ground());
+            // The trail's footprint is the same at any frame rate (the sweep), whatever the rule.
+            EXPECT_GT(d.contacts, 200);
+            EXPECT_EQ(d.contact_mismatch, 0);
+            if (r == grass::ContactRule::replace) {
+                // The design's rule keeps each texel's last frame's contact, not the passage's
+                // deepest: within the radius in height and the time the collider takes to
+                // cross its radius (0.25 s at 1 m/s) in age.
+                EXPECT_LE(d.underside, 0.25 + 1e-4);
+                EXPECT_LE(d.age, 0.25 + 1e-4);
+            } else {
+                EXPECT_LE(d.underside, 1e-5);
+                EXPECT_LE(d.age, 1e-5);
+            }
             std::printf("[ fps      ] %s: %d fps vs one 1 s step: %d texels with contacts, %d mismatched, max |dU| "
-                        "%.4f m, max |dage| %.4f s, max |dpress| %.4f m\n",
+                        "%.2g m, max |dage| %.2g s, max |dpress| %.2g m\n",
                         r == grass::ContactRule::replace ? "replace" : "passage", fps[i], d.contacts,
                         d.contact_mismatch, d.underside, d.age, d.press);
         }
     }
+}
+
+// A world point's texel in level `level`, found as interaction.glsl finds it; nullptr outside
+// the window.
+const InteractionTexel* read(const grass::FramePlan& plan, const std::vector<InteractionTexel>& texels, uint32_t level,
+                             const double eye[3], const double p[3]) {
+    const grass::FrameUniforms& f = plan.frame;
+    const float rel[3] = {float(p[0] - eye[0]), float(p[1] - eye[1]), float(p[2] - eye[2])};
+    const float n = f.map_levels[level][3];
+    int32_t texel[2];
+    for (int a = 0; a < 2; ++a) {
+        const float* axis = a == 0 ? f.map_axis_u : f.map_axis_v;
+        const float along = rel[0] * axis[0] + rel[1] * axis[1] + rel[2] * axis[2];
+        const float c = f.map_levels[level][a] + along * f.map_levels[level][2];
+        if (!(std::fabs(c - f.map_levels[level][a]) < n / 2 - 1)) return nullptr;
+        texel[a] = static_cast<int32_t>(std::floor(c - n * std::floor(c / n)));
+    }
+    return &texels[size_t(texel[1]) * uint32_t(n) + texel[0]];
+}
+
+bool pressed(const InteractionTexel& t) { return t.age < grass::kAgeNone; }
+
+TEST_F(InteractionPassTest, ARestingSphereIsTheSameAtAnyFrameRateAndItsTrailAgesAlike) {
+    const double start[3] = {2.0, 0.1, 2.5};
+    const float still[3] = {0.0f, 0.0f, 0.0f};
+    std::vector<InteractionTexel> result[3];
+    const int fps[3] = {30, 60, 1};
+    for (int i = 0; i < 3; ++i) {
+        grass_set_interaction(ctx, nullptr);
+        result[i] = run(fps[i], start, still, 0.3f, 1.0); // 1 s on it, then 1 s without it
+    }
+    for (int i = 0; i < 2; ++i) {
+        const Difference d = compare(result[i], result[2], ground());
+        EXPECT_GT(d.contacts, 100);
+        EXPECT_EQ(d.contact_mismatch, 0);
+        EXPECT_EQ(d.underside, 0.0);
+        EXPECT_LE(d.age, 1e-5); // 1 s since the last contact, summed in steps of 1/30 or 1/60 s
+    }
+    // Under the centre: the sphere's lowest point, 1 s ago.
+    const double eye[3] = {2.0, 3.0, 2.0};
+    const InteractionTexel* t = read(plan(), result[2], 0, eye, start);
+    ASSERT_NE(t, nullptr);
+    EXPECT_NEAR(t->underside, 0.1 - 0.3 - 3.0, 3e-3); // the texel's centre is within 0.036 m of it
+    EXPECT_NEAR(t->age, 1.0, 1e-6);
+}
+
+TEST_F(InteractionPassTest, AZeroTimeStepFreezesTheMap) {
+    const grass_collider c = sphere(2.0, 0.1, 2.5, 0.3f, 1.0f, 0.0f, 0.0f);
+    ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);
+    ASSERT_EQ(frame(1.0), GRASS_SUCCESS);
+    ASSERT_EQ(frame(1.5), GRASS_SUCCESS);
+    ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS);
+    ASSERT_EQ(frame(2.0), GRASS_SUCCESS);
+    const std::vector<InteractionTexel> before[2] = {map[0], map[1]};
+    int contacts = 0;
+    for (const auto& t : before[0]) contacts += pressed(t) ? 1 : 0;
+    EXPECT_GT(contacts, 100);
+    for (int k = 0; k < 5; ++k) ASSERT_EQ(frame(2.0), GRASS_SUCCESS);
+    EXPECT_EQ(plan().stats.time_step, 0.0);
+    for (int l = 0; l < 2; ++l) {
+        EXPECT_EQ(std::memcmp(before[l].data(), map[l].data(), before[l].size() * sizeof(InteractionTexel)), 0) << l;
+    }
+    // A moving collider with dt = 0 touches only where it is now, at age 0.
+    ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);
+    ASSERT_EQ(frame(2.0), GRASS_SUCCESS);
+    int now = 0;
+    for (const auto& t : map[0]) now += t.age == 0.0f ? 1 : 0;
+    EXPECT_GT(now, 50);
+    EXPECT_LT(now, 3.1416 * 0.3 * 0.3 / (0.05 * 0.05) * 1.2); // its disc, not a sweep
+}
+
+TEST_F(InteractionPassTest, ScrollingKeepsTheWorldsTrailsAndClearsWhatLeftTheWindow) {
+    // A trail at a world point, then the camera moves 7 level-0 texels: the trail reads back
+    // at the same world point, and texels that entered the window are cleared.
+    // Radius 0.45 m: the coarse level's 0.5 m texels are tested at their centres, so a
+    // collider must reach the centre of one (radius > 0.36 m at worst) to mark it.
+    const double spot[3] = {2.0, 0.1, 2.5};
+    const grass_collider c = sphere(spot[0], spot[1], spot[2], 0.45f);
+    ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);
+    double eye[3] = {2.0, 3.0, 2.0};
+    ASSERT_EQ(frame(1.0, eye), GRASS_SUCCESS);
+    ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS);
+    ASSERT_EQ(frame(1.5, eye), GRASS_SUCCESS);
+    for (int l = 0; l < 2; ++l) {
+        const InteractionTexel* t = read(plan(), map[l], l, eye, spot);
+        ASSERT_NE(t, nullptr);
+        EXPECT_TRUE(pressed(*t)) << l;
+    }
+    const std::vector<InteractionTexel> old = map[0];
+    eye[0] += 7 * 0.05;
+    eye[2] -= 3 * 0.05;
+    ASSERT_EQ(frame(2.0, eye), GRASS_SUCCESS);
+    for (int l = 0; l < 2; ++l) {
+        const InteractionTexel* t = read(plan(), map[l], l, eye, spot);
+        ASSERT_NE(t, nullptr);
+        EXPECT_TRUE(pressed(*t)) << l;
+        EXPECT_NEAR(t->age, 1.0, 1e-6);
+    }
+    // Texels are either the same world texel as before (kept, aged) or new (cleared).
+    const auto& lu = plan().interaction.level[0];
+    int kept = 0, entered = 0;
+    for (int32_t y = 0; y < 256; ++y) {
+        for (int32_t x = 0; x < 256; ++x) {
+            const int32_t j[2] = {((x - lu.window[0]) % 256 + 256) % 256, ((y - lu.window[1]) % 256 + 256) % 256};
+            const bool stayed = j[0] + lu.window[2] >= 0 && j[0] + lu.window[2] < 256 && j[1] + lu.window[3] >= 0 &&
+                                j[1] + lu.window[3] < 256;
+            const InteractionTexel& now = map[0][size_t(y) * 256 + x];
+            if (stayed) {
+                kept += 1;
+                const InteractionTexel& was = old[size_t(y) * 256 + x];
+                EXPECT_EQ(now.underside, was.underside);
+            } else {
+                entered += 1;
+                EXPECT_FALSE(pressed(now));
+            }
+        }
+    }
+    EXPECT_EQ(entered, 256 * 256 - (256 - 7) * (256 - 3));
+    EXPECT_EQ(kept, (256 - 7) * (256 - 3));
+    // 10 km away, in steps of 100 m: nothing stale remains anywhere, and memory stays flat.
+    grass_memory_stats m0{}, m1{};
+    ASSERT_EQ(grass_get_memory_stats(ctx, &m0), GRASS_SUCCESS);
+    for (int k = 1; k <= 100; ++k) {
+        eye[0] += 100.0;
+        ASSERT_EQ(frame(2.0 + 0.1 * k, eye), GRASS_SUCCESS);
+    }
+    for (int l = 0; l < 2; ++l) {
+        for (const auto& t : map[l]) ASSERT_FALSE(pressed(t)) << l;
+    }
+    ASSERT_EQ(grass_get_memory_stats(ctx, &m1), GRASS_SUCCESS);
+    EXPECT_EQ(m1.dynamics_gpu_bytes, m0.dynamics_gpu_bytes);
+    EXPECT_EQ(m1.host_bytes, m0.host_bytes);
+    // And back: the old trail is gone too (it left the window; nothing reappears).
+    eye[0] -= 1e4;
+    ASSERT_EQ(frame(20.0, eye), GRASS_SUCCESS);
+    for (int l = 0; l < 2; ++l) {
+        const InteractionTexel* t = read(plan(), map[l], l, eye, spot);
+        ASSERT_NE(t, nullptr);
+        EXPECT_FALSE(pressed(*t)) << l;
+    }
+}
+
+// Colliders of every kind around the camera: spheres and capsules, at rest and moving.
+std::vector<grass_collider> random_colliders(size_t count, double half_width, float max_radius, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> pos(-half_width, half_width), unit(0.0, 1.0);
+    std::vector<grass_collider> out(count);
+    for (grass_collider& c : out) {
+        c = grass_collider{};
+        c.shape = unit(rng) < 0.5 ? GRASS_COLLIDER_SPHERE : GRASS_COLLIDER_CAPSULE;
+        c.radius = float(0.01 + unit(rng) * max_radius);
+        c.centre[0] = 2.0 + pos(rng), c.centre[1] = unit(rng) * 0.5, c.centre[2] = 2.0 + pos(rng);
+        c.end[0] = c.centre[0] + pos(rng) * 0.1, c.end[1] = unit(rng), c.end[2] = c.centre[2] + pos(rng) * 0.1;
+        if (unit(rng) < 0.7) {
+            for (float& v : c.velocity) v = float((unit(rng) - 0.5) * 10.0);
+        }
+    }
+    return out;
+}
+
+TEST_F(InteractionPassTest, TheTilesMissNoCollider) {
+    // The pass with the core's tile lists against the same pass testing every collider in
+    // every tile, from the same map: the same map, bit for bit.
+    std::vector<grass_collider> colliders = random_colliders(300, 14.0, 1.5f, 7);
+    const std::vector<grass_collider> far = random_colliders(100, 500.0, 1.5f, 8); // most beyond level 1
+    colliders.insert(colliders.end(), far.begin(), far.end());
+    ASSERT_EQ(grass_set_colliders(ctx, colliders.data(), uint32_t(colliders.size())), GRASS_SUCCESS);
+    ASSERT_EQ(frame(1.0), GRASS_SUCCESS);
+    ASSERT_EQ(frame(1.1), GRASS_SUCCESS) << last_message();
+    auto_pass = false;
+    ASSERT_EQ(frame(1.2), GRASS_SUCCESS);
+    const grass::InteractionPlan& ip = plan().interaction;
+    grass::InteractionPlan every = ip;
+    const uint32_t n = uint32_t(ip.colliders.size());
+    EXPECT_GT(n, 100u);
+    EXPECT_LT(n, colliders.size()); // some are outside both windows
+    for (uint32_t l = 0; l < 2; ++l) {
+        const uint32_t tiles = ip.level[l].counts[2] * ip.level[l].counts[2];
+        every.tile_offsets[l].resize(tiles + 1);
+        every.tile_colliders[l].clear();
+        for (uint32_t t = 0; t <= tiles; ++t) every.tile_offsets[l][t] = t * n;
+        for (uint32_t t = 0; t < tiles; ++t) {
+            for (uint32_t i = 0; i < n; ++i) every.tile_colliders[l].push_back(i);
+        }
+        // Far fewer tests than every collider everywhere.
+        EXPECT_LT(ip.tile_colliders[l].size() * 4, every.tile_colliders[l].size()) << l;
+        std::vector<InteractionTexel> tiled = map[l], brute = map[l];
+        grass::run_interaction_pass(ip, l, tiled.data());
+        grass::run_interaction_pass(every, l, brute.data());
+        int contacts = 0;
+        for (const auto& t : tiled) contacts += t.age == 0.0f ? 0 : (pressed(t) ? 1 : 0);
+        EXPECT_GT(contacts, 500) << l;
+        EXPECT_EQ(std::memcmp(tiled.data(), brute.data(), tiled.size() * sizeof(InteractionTexel)), 0) << l;
+    }
+}
+
+bool all_finite(const float* v, size_t n) {
+    for (size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(v[i])) return false;
+    }
+    return true;
+}
+
+TEST_F(InteractionPassTest, ExtremesGiveNoNaNAndBoundedWork) {
+    // The strongest wind and sources, steps of 10 s, radii 0 and 1e6 m, colliders 1e7 m away
+    // moving at 1e5 m/s, a capsule 2e7 m long; then the camera 1e11 m from the origin.
+    grass_wind_desc w = grass_default_wind_desc();
+    w.speed = 1e3f;
+    w.gust_strength = 4.0f;
+    w.gust_length = 0.1f;
+    w.turbulence = 1.0f;
+    for (float& g : w.gravity) g = -1e3f;
+    grass_wind_source src{};
+    src.kind = GRASS_WIND_SOURCE_BLAST;
+    src.position[0] = -1e12;
+    src.direction[0] = 1.0f;
+    src.speed = 1e3f, src.radius = 1e6f, src.start_time = -1e9, src.duration = 1e4f, src.front_speed = 1e4f;
+    w.sources = &src;
+    w.source_count = 1;
+    ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << last_message();
+    std::vector<grass_collider> c = {sphere(2, 0, 2, 0.0f), sphere(2, 0, 2, 1e6f, 1e5f, -1e5f, 1e5f),
+                                     sphere(1e7, 0, 2, 3.0f, 1e5f), sphere(-1e7, 1e7, -1e7, 1e6f),
+                                     sphere(3, 0.1, 3, 0.3f, 2.0f)};
+    grass_collider capsule = sphere(-1e7, 0.2, 2, 0.5f, 0.0f, 0.0f, 1e5f);
+    capsule.shape = GRASS_COLLIDER_CAPSULE;
+    capsule.end[0] = 1e7, capsule.end[1] = 0.2, capsule.end[2] = 2;
+    c.push_back(capsule);
+    ASSERT_EQ(grass_set_colliders(ctx, c.data(), uint32_t(c.size())), GRASS_SUCCESS) << last_message();
+    double eye[3] = {2.0, 3.0, 2.0};
+    for (int k = 0; k < 4; ++k) {
+        if (k == 3) eye[0] = eye[2] = 1e11;
+        ASSERT_EQ(frame(-1e9 + 10.0 * k, eye), GRASS_SUCCESS) << last_message();
+        const grass::FramePlan& p = plan();
+        EXPECT_EQ(p.stats.time_step, k == 0 ? 0.0 : 10.0);
+        EXPECT_TRUE(all_finite(reinterpret_cast<const float*>(&p.frame), sizeof(p.frame) / sizeof(float))) << k;
+        for (const auto& d : p.draws) {
+            EXPECT_TRUE(all_finite(reinterpret_cast<const float*>(&d.uniforms), 16 + 4 * 8)) << k;
+        }
+        for (const auto& g : p.interaction.colliders) EXPECT_TRUE(all_finite(g.a, 12)) << k;
+        for (uint32_t l = 0; l < 2; ++l) {
+            EXPECT_TRUE(all_finite(p.interaction.level[l].origin, 4));
+            EXPECT_GE(p.frame.map_levels[l][0], 0.0f);
+            EXPECT_LT(p.frame.map_levels[l][0], 256.0f);
+            // Bounded: at most every tile per collider in the map.
+            EXPECT_LE(p.interaction.tile_colliders[l].size(), p.stats.colliders_in_map * 16 * 16) << k;
+            for (const auto& t : map[l]) {
+                ASSERT_TRUE(all_finite(t.dir, 2) && !std::isnan(t.underside) && !std::isnan(t.age)) << k;
+            }
+        }
+        // The radius 0 sphere touches nothing; at k = 0 the huge spheres reach the window.
+        EXPECT_LE(p.stats.colliders_in_map, c.size() - 1);
+        EXPECT_EQ(p.stats.colliders, c.size());
+    }
+}
+
+TEST_F(InteractionPassTest, ACrowdOf10000CollidersIsBinnedCheaply) {
+    // Walkers' feet: 10,000 spheres of 0.25 m at 1.4 m/s over the level 0 window (12.8 m).
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> pos(-6.0, 6.0), angle(0.0, 6.2831853);
+    std::vector<grass_collider> crowd(10000);
+    for (grass_collider& c : crowd) {
+        const double a = angle(rng);
+        c = sphere(2.0 + pos(rng), 0.1, 2.0 + pos(rng), 0.25f, float(1.4 * std::cos(a)), 0.0f,
+                   float(1.4 * std::sin(a)));
+    }
+    auto_pass = false;
+    const int frames = 20;
+    double still_ms = 0.0, begin_ms = 0.0, plan_ms = 0.0;
+    for (int k = 0; k < frames; ++k) { // the same frames without colliders first
+        ASSERT_EQ(frame(k / 60.0), GRASS_SUCCESS);
+        still_ms += plan().stats.plan_ms;
+    }
+    ASSERT_EQ(grass_set_colliders(ctx, crowd.data(), uint32_t(crowd.size())), GRASS_SUCCESS);
+    ASSERT_EQ(frame(1.0), GRASS_SUCCESS);
+    for (int k = 1; k <= frames; ++k) {
+        const auto t0 = std::chrono::steady_clock::now();
+        ASSERT_EQ(frame(1.0 + k / 60.0), GRASS_SUCCESS);
+        begin_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        plan_ms += plan().stats.plan_ms;
+    }
+    const grass::InteractionPlan& ip = plan().interaction;
+    EXPECT_EQ(plan().stats.colliders_in_map, 10000u);
+    // Each foot's swept footprint (0.52 m) reaches at most 2 x 2 tiles of 0.8 m (level 0) or
+    // of 8 m (level 1).
+    for (uint32_t l = 0; l < 2; ++l) EXPECT_LE(ip.tile_colliders[l].size(), 4u * 10000) << l;
+    const auto t0 = std::chrono::steady_clock::now();
+    run_pass();
+    const double pass_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    size_t tests = 0;
+    for (uint32_t l = 0; l < 2; ++l) {
+        const uint32_t tiles = ip.level[l].counts[2];
+        for (uint32_t t = 0; t < tiles * tiles; ++t)
+            tests += size_t(ip.tile_offsets[l][t + 1] - ip.tile_offsets[l][t]) * 256;
+    }
+    std::printf("[ crowd    ] 10,000 colliders: grass_begin_frame %.2f ms, plan_ms %.2f ms (%.2f ms without "
+                "colliders; means of %d frames); tile entries %zu + %zu; the CPU reference pass %.0f ms for %zu "
+                "texel-collider tests\n",
+                begin_ms / frames, plan_ms / frames, still_ms / frames, frames, ip.tile_colliders[0].size(),
+                ip.tile_colliders[1].size(), pass_ms, tests);
 }
 
 } // namespace
