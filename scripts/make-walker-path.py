@@ -1,14 +1,14 @@
 #!/usr/bin/env python3
 """Prints the "colliders" of samples/grass_render/scenes/park-walker.json: a walker as two
 capsules (its legs), hip to foot, crossing the park along +x. Each foot is planted for half
-of its 1 s stride and swings forward over the other half, lifted 0.12 m at mid-swing; the
+of its 1 s stride and swings forward over the other half, lifted 0.15 m at mid-swing; the
 hips move at a constant walking speed. Rerun and paste to change the walk.
 """
 import json
 
 SPEED = 1.3        # m/s
 START = (3.2, 8.0)  # x, z of the hips at t = 0
-HIP, LIFT, RADIUS, HALF_WIDTH = 0.9, 0.12, 0.07, 0.11
+HIP, LIFT, RADIUS, HALF_WIDTH = 0.9, 0.15, 0.08, 0.12
 DURATION = 4.0
 
 

@@ -71,35 +71,88 @@ std::vector<grass_collider> colliders_at(const Responsive& r, double t, double s
     return out;
 }
 
-std::vector<grass_host::HostMesh> collider_meshes(const Responsive& r, double t) {
-    std::vector<grass_host::HostMesh> out;
+namespace {
+
+constexpr int kMaxBeads = 64;
+
+// Beads along a capsule of axis length `length`: closer than half the radius, so they read as
+// a tube.
+int bead_count(double length, float radius) {
+    const double spacing = 0.5 * std::max(double(radius), 1e-3);
+    return std::clamp(int(std::ceil(length / spacing)) + 1, 2, kMaxBeads);
+}
+
+double distance(const double a[3], const double b[3]) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+grass_host::HostMesh sphere_mesh(float radius, const float albedo[3]) {
     constexpr int kRings = 12, kSegments = 20;
     constexpr double kPi = 3.14159265358979323846;
-    for (const SceneCollider& c : r.colliders) {
-        if (c.shape != GRASS_COLLIDER_SPHERE) continue;
-        grass_host::HostMesh m;
-        m.name = "ball";
-        c.centre.at(t, m.origin);
-        const float albedo[3] = {0.55f, 0.06f, 0.04f};
-        std::copy(albedo, albedo + 3, m.color);
-        for (int i = 0; i <= kRings; ++i) {
-            const double polar = kPi * i / kRings;
-            for (int j = 0; j <= kSegments; ++j) {
-                const double azimuth = 2.0 * kPi * j / kSegments;
-                const float n[3] = {float(std::sin(polar) * std::cos(azimuth)), float(std::cos(polar)),
-                                    float(std::sin(polar) * std::sin(azimuth))};
-                for (int k = 0; k < 3; ++k) m.vertices.push_back(n[k] * c.radius);
-                for (int k = 0; k < 3; ++k) m.vertices.push_back(n[k]);
-            }
+    grass_host::HostMesh m;
+    m.name = "collider";
+    std::copy(albedo, albedo + 3, m.color);
+    for (int i = 0; i <= kRings; ++i) {
+        const double polar = kPi * i / kRings;
+        for (int j = 0; j <= kSegments; ++j) {
+            const double azimuth = 2.0 * kPi * j / kSegments;
+            const float n[3] = {float(std::sin(polar) * std::cos(azimuth)), float(std::cos(polar)),
+                                float(std::sin(polar) * std::sin(azimuth))};
+            for (int k = 0; k < 3; ++k) m.vertices.push_back(n[k] * radius);
+            for (int k = 0; k < 3; ++k) m.vertices.push_back(n[k]);
         }
-        for (uint32_t i = 0; i < kRings; ++i) {
-            for (uint32_t j = 0; j < kSegments; ++j) {
-                const uint32_t a = i * (kSegments + 1) + j, b = a + kSegments + 1;
-                m.indices.insert(m.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
-            }
-        }
-        out.push_back(std::move(m));
     }
+    for (uint32_t i = 0; i < kRings; ++i) {
+        for (uint32_t j = 0; j < kSegments; ++j) {
+            const uint32_t a = i * (kSegments + 1) + j, b = a + kSegments + 1;
+            m.indices.insert(m.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    }
+    return m;
+}
+
+// Each collider's meshes: its count of beads (1 for a sphere), fixed at `t0`.
+std::vector<int> beads_of(const Responsive& r, double t0) {
+    std::vector<int> beads;
+    for (const grass_collider& c : colliders_at(r, t0, 1.0))
+        beads.push_back(c.shape == GRASS_COLLIDER_SPHERE ? 1 : bead_count(distance(c.centre, c.end), c.radius));
+    return beads;
+}
+
+} // namespace
+
+constexpr float kBodyRadius = 0.8f; // a POINT source's body
+
+std::vector<grass_host::HostMesh> moving_meshes(const Responsive& r, double t) {
+    const float ball[3] = {0.55f, 0.06f, 0.04f}, leg[3] = {0.04f, 0.05f, 0.12f}, body[3] = {0.12f, 0.12f, 0.11f};
+    std::vector<grass_host::HostMesh> out;
+    const std::vector<int> beads = beads_of(r, 0.0);
+    for (size_t i = 0; i < r.colliders.size(); ++i) {
+        const bool sphere = r.colliders[i].shape == GRASS_COLLIDER_SPHERE;
+        for (int k = 0; k < beads[i]; ++k) out.push_back(sphere_mesh(r.colliders[i].radius, sphere ? ball : leg));
+    }
+    for (const SceneWindSource& s : r.sources)
+        if (s.source.kind == GRASS_WIND_SOURCE_POINT) out.push_back(sphere_mesh(kBodyRadius, body));
+    const std::vector<std::array<double, 3>> origins = moving_mesh_origins(r, t);
+    for (size_t i = 0; i < out.size(); ++i) std::copy(origins[i].begin(), origins[i].end(), out[i].origin);
+    return out;
+}
+
+std::vector<std::array<double, 3>> moving_mesh_origins(const Responsive& r, double t) {
+    // A capsule's bead count is fixed (its length at time 0), so the meshes stay the same.
+    const std::vector<int> beads = beads_of(r, 0.0);
+    std::vector<std::array<double, 3>> out;
+    const std::vector<grass_collider> colliders = colliders_at(r, t, 1.0);
+    for (size_t i = 0; i < colliders.size(); ++i) {
+        const grass_collider& c = colliders[i];
+        for (int k = 0; k < beads[i]; ++k) {
+            const double s = beads[i] > 1 ? double(k) / (beads[i] - 1) : 0.0; // a sphere: its centre
+            out.push_back({c.centre[0] + (c.end[0] - c.centre[0]) * s, c.centre[1] + (c.end[1] - c.centre[1]) * s,
+                           c.centre[2] + (c.end[2] - c.centre[2]) * s});
+        }
+    }
+    for (const grass_wind_source& s : wind_sources_at(r, t))
+        if (s.kind == GRASS_WIND_SOURCE_POINT) out.push_back({s.position[0], s.position[1], s.position[2]});
     return out;
 }
 

@@ -58,10 +58,13 @@ struct Responsive {
 // capsule takes the velocity of its lower end (along +y), the one that touches the grass.
 std::vector<grass_collider> colliders_at(const Responsive& r, double t, double step);
 
-// What the host draws of the colliders: a ball (a red sphere mesh) for each sphere collider,
-// in their order, at their place at time t; grass-render moves them every frame
-// (grass_host::Host::move_mesh). Capsules are not drawn.
-std::vector<grass_host::HostMesh> collider_meshes(const Responsive& r, double t);
+// What the host draws of the colliders and wind sources at time t: a red ball for a sphere,
+// a row of dark beads along a capsule's axis (a leg: a capsule's orientation changes, a
+// bead's does not), a grey body of 0.8 m radius at a POINT source (a helicopter); grass-render
+// moves them every frame (grass_host::Host::move_mesh) to moving_mesh_origins.
+std::vector<grass_host::HostMesh> moving_meshes(const Responsive& r, double t);
+// The origins of moving_meshes' meshes at time t, in their order.
+std::vector<std::array<double, 3>> moving_mesh_origins(const Responsive& r, double t);
 
 // The wind sources at time t.
 std::vector<grass_wind_source> wind_sources_at(const Responsive& r, double t);

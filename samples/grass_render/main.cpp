@@ -151,10 +151,10 @@ int main(int argc, char** argv) {
     if (o.width) scene.width = o.width, scene.height = o.height;
     if (o.samples) scene.samples = o.samples;
     apply_responsive_options(o, &scene.responsive);
-    // The host draws the balls (sphere colliders) and moves them every frame.
-    const size_t first_ball = scene.meshes.size();
-    for (grass_host::HostMesh& ball : grass_sample::collider_meshes(scene.responsive, o.time))
-        scene.meshes.push_back(std::move(ball));
+    // The host draws the colliders (balls, legs) and point wind sources and moves them every frame.
+    const size_t first_mesh = scene.meshes.size();
+    for (grass_host::HostMesh& m : grass_sample::moving_meshes(scene.responsive, o.time))
+        scene.meshes.push_back(std::move(m));
 
     auto host = grass_host::Host::create(backend, grass_sample::target_desc(scene), &error);
     if (!host) return fail("cannot create the headless host: " + error);
@@ -214,9 +214,8 @@ int main(int argc, char** argv) {
             view.time = o.time + k * step;
             r = grass_sample::apply_responsive(ctx, patch, scene.responsive, view.time, step, k == 0);
             if (r != GRASS_SUCCESS) break;
-            size_t ball = first_ball;
-            for (const grass_collider& c : grass_sample::colliders_at(scene.responsive, view.time, step))
-                if (c.shape == GRASS_COLLIDER_SPHERE) host->move_mesh(ball++, c.centre);
+            const auto origins = grass_sample::moving_mesh_origins(scene.responsive, view.time);
+            for (size_t i = 0; i < origins.size(); ++i) host->move_mesh(first_mesh + i, origins[i].data());
             const auto f0 = std::chrono::steady_clock::now();
             r = host->render(ctx, view, nullptr, &image, &error);
             frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - f0).count();
