@@ -64,7 +64,7 @@ void main() {
         uint per_blade = max(uint(field.trample.w + 0.5), 4u); // vertices per blade (set by the backend)
         int segments = int(per_blade / 2u) - 1;
         mat3 to_world = mat3(field.patch_to_world) * mat3(vec3(s.x, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, s.y));
-        BladePose pose = blade_pose(vertex / per_blade, i_cell.xy, to_world, root_position, segments);
+        BladePose pose = blade_pose(vertex / per_blade, i_cell.xy, to_world, root_position, segments, cell_point, ground);
         uint blade = vertex / per_blade;
         vec3 i1 = to_world * curves[2u * blade].xyz;
         vec3 i2 = to_world * curves[2u * blade + 1u].xyz;

@@ -44,8 +44,9 @@ float blade_variation(uint blade, uvec2 cell, uint k) {
 }
 
 // Jahrmann's eq. 11, relative: v1 descends as v2 leaves its idle position. His v1 stands on
-// the up axis; the generator's rest v1 leans with the blade, so its height is scaled by
-// q(v2) / q(I_v2) and its lean kept: the rest pose stays as it is.
+// the up axis; the generator's rest v1 leans with the blade, so it is scaled towards the
+// root by q(v2) / q(I_v2) (at most 1): the rest pose stays as it is, and a blade laid flat
+// has v1 near its root (a curve as long as its chord, whichever way it was laid).
 float v1_height_factor(vec3 v2, vec3 up, float h) {
     float l_proj = length(v2 - up * dot(v2, up)); // eq. 10
     return max(1.0 - l_proj / h, 0.05 * max(l_proj / h, 1.0));
@@ -61,8 +62,8 @@ struct BladePose {
 void validate_blade(inout BladePose pose, vec3 i1, vec3 i2, vec3 up, float len, float cap, int segments) {
     vec3 v2 = pose.v2;
     v2 -= up * min(dot(up, v2), 0.0); // eq. 9: the tip stays above the root's plane
-    float h1 = dot(i1, up) * v1_height_factor(v2, up, len) / v1_height_factor(i2, up, len);
-    vec3 v1 = i1 - up * dot(i1, up) + up * min(h1, cap); // eq. 11 (relative)
+    vec3 v1 = i1 * min(v1_height_factor(v2, up, len) / v1_height_factor(i2, up, len), 1.0); // eq. 11 (relative)
+    v1 -= up * max(dot(v1, up) - cap, 0.0);
     // eq. 13: scale both segments to the rest length (an exact scale about the root, so
     // once with the drawn length is enough; 1.1 bounds it against degenerate curves).
     for (int pass = 0; pass < 2; ++pass) {
@@ -78,8 +79,9 @@ void validate_blade(inout BladePose pose, vec3 i1, vec3 i2, vec3 up, float len, 
 
 // The deformed pose of blade `blade` of cell `cell`: rest points in world metres relative to
 // the root (`to_world`: patch -> world with the cell's mirroring), root at camera-relative
-// `root`, drawn with `segments` segments.
-BladePose blade_pose(uint blade, uvec2 cell, mat3 to_world, vec3 root, int segments) {
+// `root`, drawn with `segments` segments; on a height map the root stands at `ground`
+// (patch units) at field point `cell_point` (cells).
+BladePose blade_pose(uint blade, uvec2 cell, mat3 to_world, vec3 root, int segments, vec2 cell_point, float ground) {
     vec4 c1 = curves[2u * blade];
     vec4 c2 = curves[2u * blade + 1u];
     vec3 up = normalize(field.field_up.xyz);
@@ -132,15 +134,38 @@ BladePose blade_pose(uint blade, uvec2 cell, mat3 to_world, vec3 root, int segme
             }
         }
         if (max(dot(pose.v1, up), dot(pose.v2, up)) > cap) {
-            // Lay the blade along the press until its top is at the cap.
+            // Lay the blade along the press until its top is at the cap: the tip at height
+            // `aim` and reach sqrt(len^2 - aim^2), validated; eq. 13 then shortens the
+            // chord a little (the curve is longer than it), so the aim is raised until the
+            // validated tip is at the cap (the trail's depth is then exactly len - cap).
             dir -= up * dot(dir, up);
             if (dot(dir, dir) < 1e-12) dir = pose.v2 - up * dot(pose.v2, up);
             if (dot(dir, dir) < 1e-12) dir = front;
             dir = normalize(dir);
-            pose.v2 = dir * sqrt(max(len * len - cap * cap, 0.0)) + up * cap;
-            validate_blade(pose, i1, i2, up, len, cap, segments);
+            float aim = cap;
+            for (int pass = 0; pass < 3; ++pass) {
+                pose.v2 = dir * sqrt(max(len * len - aim * aim, 0.0)) + up * aim;
+                validate_blade(pose, i1, i2, up, len, cap, segments);
+                float tip = dot(pose.v2, up);
+                if (tip <= 0.0 || abs(tip - cap) < 1e-3 * len) break;
+                aim = min(aim * cap / tip, len);
+            }
         }
         pose.shade = press_shade(cap / len);
+    }
+
+    if (has_map(GRASS_MAP_HEIGHT)) {
+        // Eq. 9 keeps the tip above the root's plane; on a height map the terrain under the
+        // tip may be higher (uphill): the tip is lifted onto it, then validated again.
+        mat3 to_patch = transpose(mat3(field.patch_to_world)) / (field.field_up.w * field.field_up.w);
+        for (int pass = 0; pass < 2; ++pass) {
+            vec3 tip = to_patch * pose.v2;
+            float floor_height = (terrain_height(cell_point + tip.xz) - ground) * field.field_up.w;
+            float height = dot(pose.v2, up);
+            if (height >= floor_height) break;
+            pose.v2 += up * (floor_height - height);
+            validate_blade(pose, i1, i2, up, len, len, segments);
+        }
     }
     return pose;
 }

@@ -101,7 +101,8 @@ void GlDrawStateGuard::restore_dynamics() const {
     }
 }
 
-GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl, bool dynamics) : dynamics_(dynamics), gl_(gl) {
+GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl, bool dynamics) : gl_(gl) {
+    dynamics_ = dynamics;
     gl.GetIntegerv(GL_CURRENT_PROGRAM, &program_);
     gl.GetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array_);
     gl.GetIntegerv(GL_ARRAY_BUFFER_BINDING, &array_buffer_);

@@ -177,6 +177,8 @@ TEST_F(DynamicsApiTest, EveryFloatInputRefusesNaNAndInfinity) {
             EXPECT_EQ(set_all(), GRASS_ERROR_INVALID_ARGUMENT) << inputs[k].name << " = " << bad;
             EXPECT_EQ(last_id(), GRASS_MSG_NOT_FINITE) << inputs[k].name << ": " << last_message();
             EXPECT_NE(last_message().find(inputs[k].name), std::string::npos) << last_message();
+            // The refused call changed nothing (the calls before it set the same values).
+            EXPECT_EQ(planned_state(), before) << inputs[k].name;
         }
     }
     // The view's time too.
@@ -266,6 +268,7 @@ TEST_F(DynamicsApiTest, RangesEnumsNullsAndZeroVectorsAreRefused) {
         EXPECT_NE(set_all(), GRASS_SUCCESS) << c.name;
         EXPECT_EQ(last_id(), c.id) << c.name << ": " << last_message();
         EXPECT_NE(last_message().find(c.name), std::string::npos) << last_message();
+        EXPECT_EQ(planned_state(), before) << c.name;
     }
     // NULL with a count, too many colliders, a stale patch.
     EXPECT_EQ(grass_set_colliders(ctx, nullptr, 1), GRASS_ERROR_INVALID_ARGUMENT);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core_fixture.hpp"
+#include "test_backend.hpp"
 #include "view_helpers.hpp"
 
 #include "context/context.hpp"
@@ -14,19 +15,9 @@
 
 // A backend that draws nothing and records what responsive grass asks of it: the blade
 // curves it was given, and the map it would hold (levels x N^2 x 16 bytes while planned).
-class RecordingBackend final : public grass::Backend {
+class RecordingBackend final : public HollowBackend {
 public:
     grass_backend kind() const override { return GRASS_BACKEND_NONE; }
-    grass_result upload_patch(uint32_t, const grass::PatchData&) override { return GRASS_SUCCESS; }
-    grass_result upload_slices(uint32_t, const grass::SliceSet&) override { return GRASS_SUCCESS; }
-    void release_patch(uint32_t) override {}
-    grass_result upload_map(uint32_t, const grass::MapTexels&) override { return GRASS_SUCCESS; }
-    grass_result update_map(uint32_t, const grass::MapTexels&, const grass::MapRegion&) override {
-        return GRASS_SUCCESS;
-    }
-    void release_map(uint32_t) override {}
-    grass_result upload_field(uint32_t, const grass::FieldMaps&) override { return GRASS_SUCCESS; }
-    void release_field(uint32_t) override {}
     grass_result upload_blade_curves(uint32_t, const grass::PatchData& patch) override {
         curve_uploads += 1;
         curve_bytes += patch.blade_curves.size() * sizeof(float);
@@ -48,14 +39,7 @@ protected:
     void SetUp() override {
         // The fixture's log, on a context whose backend is the recording backend.
         CoreTest::SetUp();
-        grass_context_desc cd = ctx->desc;
-        grass_destroy_context(ctx);
-        ctx = nullptr;
-        const auto factory = [](grass_context* c, void*, grass::Backend** out) {
-            *out = c->host.create<RecordingBackend>();
-            return GRASS_SUCCESS;
-        };
-        ASSERT_EQ(grass::create_context("test", GRASS_HEADER_VERSION, &cd, factory, nullptr, &ctx), GRASS_SUCCESS);
+        remake_with<RecordingBackend>(&ctx);
         backend = static_cast<RecordingBackend*>(ctx->backend);
         patch = make_patch();
         tier = grass_tier_desc{GRASS_TIER_GEOMETRY, 0};

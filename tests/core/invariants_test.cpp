@@ -2,6 +2,7 @@
 // a broken one is refused with GRASS_ERROR_INVALID_STATE and GRASS_MSG_INTERNAL_ERROR.
 // The plan and the objects are corrupted by hand, as only a bug in grass could.
 #include "core_fixture.hpp"
+#include "test_backend.hpp"
 #include "view_helpers.hpp"
 
 #include "context/context.hpp"
@@ -14,21 +15,9 @@ namespace {
 
 // A backend that holds and draws nothing but says it draws, so that the core checks the
 // plan's slice sets as it does for GL and Vulkan.
-class DrawingTestBackend final : public grass::Backend {
+class DrawingTestBackend final : public HollowBackend {
 public:
     grass_backend kind() const override { return GRASS_BACKEND_VULKAN; }
-    grass_result upload_patch(uint32_t, const grass::PatchData&) override { return GRASS_SUCCESS; }
-    grass_result upload_slices(uint32_t, const grass::SliceSet&) override { return GRASS_SUCCESS; }
-    void release_patch(uint32_t) override {}
-    grass_result upload_map(uint32_t, const grass::MapTexels&) override { return GRASS_SUCCESS; }
-    grass_result update_map(uint32_t, const grass::MapTexels&, const grass::MapRegion&) override {
-        return GRASS_SUCCESS;
-    }
-    void release_map(uint32_t) override {}
-    grass_result upload_field(uint32_t, const grass::FieldMaps&) override { return GRASS_SUCCESS; }
-    void release_field(uint32_t) override {}
-    grass_result begin_frame(const grass::FramePlan&) override { return GRASS_SUCCESS; }
-    uint64_t gpu_bytes() const override { return 0; }
 };
 
 class InvariantsTest : public CoreTest {
@@ -36,14 +25,7 @@ protected:
     void SetUp() override {
         // The fixture's log, on a context whose backend is the test backend.
         CoreTest::SetUp();
-        grass_context_desc d = ctx->desc;
-        grass_destroy_context(ctx);
-        ctx = nullptr;
-        const auto factory = [](grass_context* c, void*, grass::Backend** out) {
-            *out = c->host.create<DrawingTestBackend>();
-            return GRASS_SUCCESS;
-        };
-        ASSERT_EQ(grass::create_context("test", GRASS_HEADER_VERSION, &d, factory, nullptr, &ctx), GRASS_SUCCESS);
+        remake_with<DrawingTestBackend>(&ctx);
         patch = make_patch();
         // One geometry tier: nothing to bake.
         tier = grass_tier_desc{GRASS_TIER_GEOMETRY, 0};
@@ -90,6 +72,34 @@ TEST_F(InvariantsTest, ADrawWhoseFeatureMaskIsNotItsFieldsIsAnInternalError) {
     expect_plan_refused("a feature mask of another field");
     ctx->plan.draws[0].uniforms.tiling[3] = 1u << 7;
     expect_plan_refused("a feature mask beyond the map roles in the uniforms");
+}
+
+TEST_F(InvariantsTest, ResponsiveBitsOnlyAsTheInteractionPlanAllows) {
+    auto set_bits = [&](uint32_t bits) {
+        for (auto& d : ctx->plan.draws) {
+            d.features |= bits;
+            d.uniforms.tiling[3] = d.features;
+        }
+    };
+    set_bits(grass::kFeatureWind);
+    EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
+    set_bits(grass::kFeatureInteraction); // no map this frame
+    expect_plan_refused("the interaction variant without the map");
+    set_bits(1u << 7);
+    expect_plan_refused("an unknown feature bit");
+    // Tile lists: an entry past the colliders, offsets that do not cover the entries.
+    const grass_collider c{GRASS_COLLIDER_SPHERE, 0.5f, {4.0, 0.0, 4.0}, {}, {}};
+    ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);
+    ASSERT_EQ(grass_begin_frame(ctx, &view), GRASS_SUCCESS) << last_message();
+    ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+    ASSERT_EQ(ctx->plan.interaction.levels, 2u);
+    ASSERT_FALSE(ctx->plan.interaction.tile_colliders[0].empty());
+    ctx->plan.interaction.tile_colliders[0][0] = 1;
+    expect_plan_refused("a tile entry past the colliders");
+    ctx->plan.interaction.tile_offsets[1].back() += 1;
+    expect_plan_refused("tile offsets past the entries");
+    ctx->plan.interaction.tile_offsets[0].pop_back();
+    expect_plan_refused("too few tile offsets");
 }
 
 TEST_F(InvariantsTest, ADrawOfAnObjectTheContextDoesNotHoldIsAnInternalError) {

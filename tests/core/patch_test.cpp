@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace {
@@ -122,6 +123,54 @@ TEST_F(CoreTest, ColourVariesPerBladeAndPerVertex) {
         differing_vertices += std::memcmp(p.vertices[k].color, p.vertices[k + 1].color, 3) != 0;
     }
     EXPECT_GT(differing_vertices, int(p.vertices.size() / 2) / 4);
+}
+
+// Responsive grass: each blade's rest pose as jahrmann's quadratic Bezier curve (v0 = the
+// root): it passes through the blade's centre line at every vertex row, its length is the
+// blade's arc length, and its facing angle gives the direction the blade's width runs along.
+TEST_F(CoreTest, BladeCurvesAreTheBladesAsBezierCurves) {
+    grass_patch_desc d = grass_default_patch_desc();
+    d.subdivisions = 16;
+    d.bend_max = 1.5f;
+    const auto& p = patch_data(ctx, make_patch(d));
+    ASSERT_EQ(p.blade_curves.size(), size_t(p.blade_count) * 8);
+    const uint32_t per = p.vertices_per_blade, rows = per / 2;
+    double worst_point = 0.0, worst_length = 0.0, worst_side = 0.0;
+    for (uint32_t b = 0; b < p.blade_count; ++b) {
+        const float* c = &p.blade_curves[size_t(b) * 8];
+        const grass::BladeVertex* v = &p.vertices[size_t(b) * per];
+        const double root[3] = {v[0].root_shape[0], 0.0, v[0].root_shape[1]};
+        double length = 0.0, previous[3] = {root[0], root[1], root[2]};
+        for (uint32_t k = 0; k < rows; ++k) {
+            const double t = v[2 * k].root_shape[3];
+            double bezier[3];
+            for (int a = 0; a < 3; ++a) {
+                // B(t) = 2 t (1 - t) v1 + t^2 v2, relative to the root.
+                bezier[a] = root[a] + 2.0 * t * (1.0 - t) * c[a] + t * t * c[4 + a];
+                const double centre = 0.5 * (double(v[2 * k].position[a]) + v[2 * k + 1].position[a]);
+                worst_point = std::max(worst_point, std::fabs(bezier[a] - centre));
+            }
+            length += std::sqrt((bezier[0] - previous[0]) * (bezier[0] - previous[0]) +
+                                (bezier[1] - previous[1]) * (bezier[1] - previous[1]) +
+                                (bezier[2] - previous[2]) * (bezier[2] - previous[2]));
+            std::copy(bezier, bezier + 3, previous);
+        }
+        // The polyline through 17 rows is a little shorter than the curve (0.2 %).
+        worst_length = std::max(worst_length, std::fabs(length - c[3]) / c[3]);
+        // The width runs from vertex 0 to vertex 1 of the root row, along (-sin, 0, cos).
+        const double side[3] = {double(v[1].position[0]) - v[0].position[0], 0.0,
+                                double(v[1].position[2]) - v[0].position[2]};
+        const double side_len = std::sqrt(side[0] * side[0] + side[2] * side[2]);
+        worst_side = std::max(worst_side, std::fabs(side[0] / side_len + std::sin(double(c[7]))) +
+                                              std::fabs(side[2] / side_len - std::cos(double(c[7]))));
+        ASSERT_GE(c[3], d.length_min * 0.999f);
+        ASSERT_LE(c[3], d.length_max * 1.001f);
+    }
+    EXPECT_LT(worst_point, 1e-6);
+    EXPECT_LT(worst_length, 0.004);
+    EXPECT_LT(worst_side, 1e-5);
+    std::printf("[ curves   ] worst distance to a vertex row %.2g, length %.2g%% off, facing %.2g\n", worst_point,
+                100.0 * worst_length, worst_side);
 }
 
 } // namespace

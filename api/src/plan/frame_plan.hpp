@@ -129,7 +129,9 @@ struct InteractionPlan {
                                                                    Vector<uint32_t>(StlAllocator<uint32_t>(host))},
           tile_colliders{Vector<uint32_t>(StlAllocator<uint32_t>(host)),
                          Vector<uint32_t>(StlAllocator<uint32_t>(host))} {}
-    uint32_t levels = 0; // 0: no pass this frame and no map bound
+    uint32_t levels = 0; // 0: no pass this frame and no map bound; the core holds no map then
+                         // (never made, or dropped by grass_set_interaction): a backend may
+                         // release its textures. While the map exists every frame runs the pass.
     uint32_t resolution = 0;
     bool map_is_new = false; // the backend makes (or remakes, at a new resolution) the map's textures
     InteractionLevelUniforms level[2]{};

@@ -1,0 +1,308 @@
+// Responsive grass (issue 13) as drawn: still grass unchanged, colliders that press the
+// grass under them, trails that recover with the documented time constant, blade tips
+// above the terrain, trails visible in every tier, and wind that moves every tier and
+// freezes at dt = 0. Heights are read back from the depth buffer of an orthographic view
+// straight down (GL hosts: glReadPixels in the host's after_grass hook).
+#include "render_fixture.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+namespace grass_test {
+namespace {
+
+constexpr unsigned kGlDepthComponent = 0x1902;
+constexpr unsigned kGlFloat = 0x1406;
+using ReadPixelsFn = void (*)(int, int, int, int, unsigned, unsigned, void*);
+
+constexpr double kEyeHeight = 2.0; // the orthographic camera, metres above the ground
+constexpr float kNear = 0.5f, kFar = 3.0f;
+constexpr float kNoGrass = -1e30f;
+
+// The backends whose hosts can read the depth back (the GL host's after_grass hook).
+std::vector<grass_backend> depth_backends() {
+    std::vector<grass_backend> b;
+    for (grass_backend k : enabled_backends()) {
+        if (k == GRASS_BACKEND_GL) b.push_back(k);
+    }
+    return b;
+}
+
+class ResponsiveTest : public RenderTest {
+protected:
+    void SetUp() override {
+        blade_band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+        blade_band.end = 60.0f;
+        grass_host::TargetDesc t;
+        t.width = t.height = 96;
+        start(t);
+        mechanics = grass_default_blade_mechanics();
+        mechanics.variation = 0.0f;
+    }
+
+    // Straight down over (cx, cz), `half` metres to each side, orthographic, at `time`.
+    grass_view_desc top_view(double cx, double cz, double half, double time) const {
+        const double eye[3] = {cx, kEyeHeight, cz}, target[3] = {cx, 0.0, cz};
+        grass_view_desc v = view(eye, target);
+        std::memset(v.projection, 0, sizeof v.projection);
+        v.projection[0] = float(1.0 / half);
+        v.projection[5] = float(1.0 / half);
+        v.projection[10] = -2.0f / (kFar - kNear);
+        v.projection[14] = -(kFar + kNear) / (kFar - kNear);
+        v.projection[15] = 1.0f;
+        v.time = time;
+        return v;
+    }
+
+    // Renders `v` (a top_view) and reads the grass height (m) of each pixel, top row first
+    // (kNoGrass where the ray met nothing).
+    std::vector<float> heights(const grass_view_desc& v, grass_host::Image* image_out = nullptr) {
+        const uint32_t w = host->target().width, h = host->target().height;
+        std::vector<float> depth(size_t(w) * h, 1.0f);
+        auto read = reinterpret_cast<ReadPixelsFn>(host->gl_proc_address("glReadPixels"));
+        EXPECT_NE(read, nullptr);
+        host->after_grass = [&] {
+            if (read) read(0, 0, int(w), int(h), kGlDepthComponent, kGlFloat, depth.data());
+        };
+        grass_host::Image image = render(v);
+        host->after_grass = nullptr;
+        if (image_out) *image_out = image;
+        std::vector<float> out(depth.size(), kNoGrass);
+        for (uint32_t y = 0; y < h; ++y) {
+            for (uint32_t x = 0; x < w; ++x) {
+                const float d = depth[size_t(h - 1 - y) * w + x];
+                if (d < 1.0f) out[size_t(y) * w + x] = float(kEyeHeight - (kNear + d * (kFar - kNear)));
+            }
+        }
+        return out;
+    }
+
+    // The ground point (x, z) of pixel (px, py) of a top_view over (cx, cz).
+    void pixel_ground(double cx, double cz, double half, uint32_t px, uint32_t py, double* x, double* z) const {
+        *x = cx - half + (px + 0.5) * 2.0 * half / host->target().width;
+        *z = cz - half + (py + 0.5) * 2.0 * half / host->target().height;
+    }
+
+    void set_mechanics() { ASSERT_EQ(grass_set_blade_mechanics(ctx, patch, &mechanics), GRASS_SUCCESS) << log; }
+    void set_fine_map() {
+        grass_interaction_desc d = grass_default_interaction_desc();
+        d.texel_size[0] = 0.01f; // 2.56 m across: the colliders' footprints to a centimetre
+        d.texel_size[1] = 0.1f;
+        ASSERT_EQ(grass_set_interaction(ctx, &d), GRASS_SUCCESS) << log;
+    }
+
+    grass_blade_mechanics mechanics{};
+};
+
+// A sphere resting on the grass, or a capsule lying on it (its axis level).
+grass_collider sphere(double x, double y, double z, float r) {
+    grass_collider c{};
+    c.shape = GRASS_COLLIDER_SPHERE;
+    c.radius = r;
+    c.centre[0] = x;
+    c.centre[1] = y;
+    c.centre[2] = z;
+    return c;
+}
+grass_collider capsule(double x0, double x1, double y, double z, float r) {
+    grass_collider c = sphere(x0, y, z, r);
+    c.shape = GRASS_COLLIDER_CAPSULE;
+    c.end[0] = x1;
+    c.end[1] = y;
+    c.end[2] = z;
+    return c;
+}
+
+// The collider's underside at ground point (x, z): its lowest point over it, or +inf
+// outside its footprint (the footprint shrunk by `inset` metres).
+double underside(const grass_collider& c, double x, double z, double inset) {
+    double ax = c.centre[0], az = c.centre[2], bx = c.end[0], bz = c.end[2];
+    if (c.shape == GRASS_COLLIDER_SPHERE) {
+        bx = ax;
+        bz = az;
+    }
+    const double ex = bx - ax, ez = bz - az, l2 = ex * ex + ez * ez;
+    const double t = l2 > 0.0 ? std::clamp(((x - ax) * ex + (z - az) * ez) / l2, 0.0, 1.0) : 0.0;
+    const double dx = x - (ax + t * ex), dz = z - (az + t * ez), d = std::sqrt(dx * dx + dz * dz);
+    const double r = c.radius - inset;
+    if (d >= r) return INFINITY;
+    return c.centre[1] - std::sqrt(double(c.radius) * c.radius - d * d);
+}
+
+// A resting sphere and a level capsule: over each one's footprint the grass's top stays
+// below its underside (within the tolerance: a blade's width and the map's texels), where
+// before the collider came most of it stood above.
+TEST_P(ResponsiveTest, NoBladeInsideRestingColliders) {
+    set_fine_map();
+    const grass_field_id f = make_field(field_desc(8)); // 2 m x 2 m
+    (void)f;
+    constexpr double kTolerance = 0.01; // metres
+    const grass_collider colliders[2] = {sphere(1.0, 0.25 + 0.03, 0.7, 0.25f), capsule(0.6, 1.4, 0.1 + 0.05, 1.4, 0.1f)};
+    const double cx = 1.0, cz = 1.05, half = 0.65;
+    const std::vector<float> before = heights(top_view(cx, cz, half, 0.0));
+    ASSERT_EQ(grass_set_colliders(ctx, colliders, 2), GRASS_SUCCESS) << log;
+    grass_host::Image image;
+    const std::vector<float> after = heights(top_view(cx, cz, half, 0.0), &image);
+    save(image, "pressed");
+    for (const grass_collider& c : colliders) {
+        size_t footprint = 0, above_before = 0, grass_after = 0, inside = 0;
+        double worst = -1e9;
+        for (uint32_t py = 0; py < host->target().height; ++py) {
+            for (uint32_t px = 0; px < host->target().width; ++px) {
+                double x, z;
+                pixel_ground(cx, cz, half, px, py, &x, &z);
+                const double u = underside(c, x, z, 0.01);
+                if (!std::isfinite(u)) continue;
+                ++footprint;
+                const size_t i = size_t(py) * host->target().width + px;
+                above_before += before[i] != kNoGrass && before[i] > u + kTolerance;
+                if (after[i] == kNoGrass) continue;
+                ++grass_after;
+                worst = std::max(worst, after[i] - u);
+                inside += after[i] > u + kTolerance;
+            }
+        }
+        const char* name = c.shape == GRASS_COLLIDER_SPHERE ? "sphere" : "capsule";
+        ASSERT_GT(footprint, 100u) << name;
+        // Not vacuous: the grass stood above the underside before, and is still drawn.
+        EXPECT_GT(double(above_before) / footprint, 0.2) << name;
+        EXPECT_GT(double(grass_after) / footprint, 0.3) << name << ": the pressed grass must still be drawn";
+        EXPECT_EQ(inside, 0u) << name << ": grass up to " << worst << " m above the underside";
+    }
+}
+
+// Recovery: once the collider has gone, the trail's depth decays as exp(-t / recovery_time).
+// Pressed flat (trample depth 1), the grass's height under the trail is L (1 - exp(-t/T))
+// for blades of length L, so the ratio of two heights gives T whatever L is.
+TEST_P(ResponsiveTest, TrailRecoversWithTheTimeConstant) {
+    constexpr float kRecovery = 3.0f;
+    mechanics.trample_depth = 1.0f;
+    mechanics.recovery_time = kRecovery;
+    start([] {
+        grass_host::TargetDesc t; // finer: the blades' pointed tips within a few millimetres
+        t.width = t.height = 192;
+        return t;
+    }());
+    // Wide blades: a blade's pointed tip is narrower than a pixel over its last tenth at the
+    // default widths, and the highest drawn pixel would fall short of the tip.
+    grass_patch_desc wide = grass_default_patch_desc();
+    wide.width_min = wide.width_max = 0.2f;
+    ASSERT_EQ(grass_create_patch(ctx, &wide, &patch), GRASS_SUCCESS) << log;
+    set_fine_map();
+    set_mechanics();
+    make_field(field_desc(8));
+    const grass_collider c = sphere(1.0, 1.0 + 0.02, 1.0, 1.0f); // presses the whole field flat
+    const double cx = 1.0, cz = 1.0, half = 0.3;
+    ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS) << log;
+    heights(top_view(cx, cz, half, 10.0));
+    ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS) << log;
+    const double times[3] = {1.0, 2.0, 3.0}; // the tips below 0.64 L: under the rest tops
+    double top[3] = {};
+    for (int k = 0; k < 3; ++k) {
+        grass_host::Image image;
+        std::vector<float> h = heights(top_view(cx, cz, half, 10.0 + times[k]), &image);
+        save(image, "recovery" + std::to_string(k));
+        // The highest grass in view: the tip of the longest of ~2000 blades (all pressed),
+        // whichever of them lie in view as their reach changes.
+        std::vector<float> inner;
+        for (uint32_t py = 0; py < host->target().height; ++py) {
+            for (uint32_t px = 0; px < host->target().width; ++px) {
+                double x, z;
+                pixel_ground(cx, cz, half, px, py, &x, &z);
+                const float v = h[size_t(py) * host->target().width + px];
+                if (v != kNoGrass) inner.push_back(v);
+            }
+        }
+        ASSERT_GT(inner.size(), 200u);
+        top[k] = *std::max_element(inner.begin(), inner.end());
+    }
+    EXPECT_GT(top[0], 0.005) << "the trail must have started to recover";
+    EXPECT_LT(top[0], top[1]);
+    EXPECT_LT(top[1], top[2]);
+    // T from the ratio of two heights: (1 - e^(-t0/T)) / (1 - e^(-t1/T)), increasing in T.
+    for (int k = 1; k < 3; ++k) {
+        const double ratio = top[0] / top[k];
+        double lo = 0.01, hi = 100.0;
+        for (int i = 0; i < 100; ++i) {
+            const double mid = std::sqrt(lo * hi);
+            const double r = (1.0 - std::exp(-times[0] / mid)) / (1.0 - std::exp(-times[k] / mid));
+            (r > ratio ? lo : hi) = mid; // r falls from 1 (T -> 0) to t0 / t1
+        }
+        std::printf("recovery: T = %.3f s from t = %g and %g s (set %g s)\n", lo, times[0], times[k], double(kRecovery));
+        EXPECT_NEAR(lo / kRecovery, 1.0, 0.1) << "time constant from t = " << times[0] << " and " << times[k]
+                                              << " s: heights " << top[0] << ", " << top[k] << " m";
+    }
+}
+
+// Tips above the terrain on a height map: a strong wind lays the blades uphill onto a 27
+// degree ramp. Seen from below (no host terrain), the lowest grass of each pixel stays
+// above the terrain there, within the tolerance of a blade's half width on the slope.
+TEST_P(ResponsiveTest, TipsStayAboveTheTerrain) {
+    constexpr uint32_t kTexels = 64;
+    constexpr double kScale = 0.5; // metres: the ramp rises 0.5 m over the field's middle metre
+    const auto ramp = [](double x) { return std::clamp((x - 0.5) / 1.0, 0.0, 1.0); };
+    std::vector<uint16_t> texels(kTexels * 2);
+    for (uint32_t y = 0; y < 2; ++y) {
+        for (uint32_t x = 0; x < kTexels; ++x) {
+            texels[y * kTexels + x] = uint16_t(std::lround(ramp((x + 0.5) / kTexels * 2.0) * 65535.0));
+        }
+    }
+    grass_map_desc m = grass_default_map_desc();
+    m.pixels = texels.data();
+    m.width = kTexels;
+    m.height = 2;
+    m.format = GRASS_MAP_FORMAT_R16_UNORM;
+    grass_map_id map{};
+    ASSERT_EQ(grass_create_map(ctx, &m, &map), GRASS_SUCCESS) << log;
+    grass_field_desc d = field_desc(8);
+    d.maps.height = map;
+    d.maps.height_scale = float(kScale);
+    make_field(d);
+    grass_wind_desc w = grass_default_wind_desc();
+    w.direction[0] = 1.0f; // uphill
+    w.direction[1] = 0.0f;
+    w.direction[2] = 0.0f;
+    w.speed = 40.0f;
+    w.gust_strength = 0.0f;
+    w.turbulence = 0.0f;
+    ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << log;
+
+    // From below, looking up: the depth is the lowest grass. Image x runs along -x.
+    const double cx = 1.0, cz = 1.0, half = 0.7, below = -1.5;
+    const double eye[3] = {cx, below, cz}, target[3] = {cx, 0.0, cz};
+    grass_view_desc v = top_view(cx, cz, half, 1.0);
+    const grass_view_desc up_view = view(eye, target);
+    std::memcpy(v.view, up_view.view, sizeof v.view);
+    for (int c = 0; c < 3; ++c) v.camera_position[c] = eye[c];
+    grass_host::Image image;
+    const std::vector<float> h = heights(v, &image);
+    save(image, "from_below");
+    size_t grass = 0, below_terrain = 0;
+    double worst = 0.0;
+    for (uint32_t py = 0; py < host->target().height; ++py) {
+        for (uint32_t px = 0; px < host->target().width; ++px) {
+            const float depth_height = h[size_t(py) * host->target().width + px];
+            if (depth_height == kNoGrass) continue;
+            // heights() assumed a camera kEyeHeight above: convert to this one's distance.
+            const double distance = kEyeHeight - depth_height;
+            const double lowest = below + distance;
+            const double x = cx + half - (px + 0.5) * 2.0 * half / host->target().width;
+            if (x < 0.55 || x > 1.45) continue; // on the slope
+            ++grass;
+            const double terrain = kScale * ramp(x);
+            worst = std::min(worst, lowest - terrain);
+            below_terrain += lowest < terrain - 0.015;
+        }
+    }
+    ASSERT_GT(grass, 1500u) << "the slope must be covered";
+    EXPECT_EQ(below_terrain, 0u) << "grass down to " << worst << " m below the terrain";
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, ResponsiveTest, ::testing::ValuesIn(depth_backends()),
+                         [](const ::testing::TestParamInfo<grass_backend>& p) { return backend_name(p.param); });
+
+} // namespace
+} // namespace grass_test
