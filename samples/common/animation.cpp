@@ -3,6 +3,7 @@
 #include "tool.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -29,13 +30,24 @@ bool Animation::open(const std::string& dir, double fps, std::string* error) {
         *error = "cannot create the directory " + dir;
         return false;
     }
+    // The frames of an earlier, longer run would end up in this run's GIF and MP4.
+    std::error_code ignored;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ignored)) {
+        const std::string name = entry.path().filename().string();
+        if (name.size() == 14 && name.compare(0, 6, "frame-") == 0 && name.compare(10, 4, ".png") == 0)
+            std::filesystem::remove(entry.path(), ignored);
+    }
     return true;
 }
 
-bool Animation::add(const grass_host::Image& image, std::string* error) {
+std::string Animation::frame_path(size_t index) const {
     char name[32];
-    std::snprintf(name, sizeof(name), "/frame-%04zu.png", frames_.size());
-    const std::string path = dir_ + name;
+    std::snprintf(name, sizeof(name), "/frame-%04zu.png", index);
+    return dir_ + name;
+}
+
+bool Animation::add(const grass_host::Image& image, std::string* error) {
+    const std::string path = frame_path(frames_.size());
     if (!grass_host::write_png(path, image, error)) return false;
     frames_.push_back(path);
     return true;

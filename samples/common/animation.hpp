@@ -25,6 +25,8 @@ public:
     std::string mp4() const { return dir_ + "/animation.mp4"; }
 
 private:
+    std::string frame_path(size_t index) const;
+
     std::string dir_;
     double fps_ = 24.0;
     std::vector<std::string> frames_;

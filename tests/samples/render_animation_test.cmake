@@ -1,10 +1,11 @@
 # grass-render --animation (ctest render_animation_<backend>): three tiny frames of the demo
 # lawn with wind and a rolling ball, 0.25 s apart. The frames, the GIF and the MP4 exist and
-# are not empty, the frames differ from one another (the grass moves), and the last frame is
-# the --output image.
+# are not empty, the frames differ from one another (the grass moves), the last frame is the
+# --output image, and a stale frame of an earlier run in the directory is gone.
 #   cmake -DRENDER=<grass-render> -DBACKEND=gl|vk -DOUT=<dir> -P render_animation_test.cmake
 file(REMOVE_RECURSE "${OUT}")
-file(MAKE_DIRECTORY "${OUT}")
+# A frame left by an earlier, longer run into the same directory: removed, not animated.
+file(WRITE "${OUT}/animation/frame-0003.png" "a stale frame")
 execute_process(
   COMMAND ${RENDER} --backend ${BACKEND} --size 96x54 --samples 1 --frames 3 --fps 4 --time 10
           --wind 1,0.3,6,0.8 --collider sphere:-1,0.3,0,0.35,3,0,0
@@ -25,7 +26,7 @@ foreach(name frame-0000.png frame-0001.png frame-0002.png animation.gif animatio
   endif()
 endforeach()
 if(EXISTS "${OUT}/animation/frame-0003.png")
-  message(FATAL_ERROR "a fourth frame was written for --frames 3")
+  message(FATAL_ERROR "a fourth frame (stale or written) is there after --frames 3")
 endif()
 # Each frame differs from the one before (the wind and the ball move), the last is --output.
 foreach(pair "0000;0001" "0001;0002")
