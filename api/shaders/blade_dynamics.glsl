@@ -52,6 +52,13 @@ float v1_height_factor(vec3 v2, vec3 up, float h) {
     return max(1.0 - l_proj / h, 0.05 * max(l_proj / h, 1.0));
 }
 
+// The highest point of the curve 0, v1, v2 along up (v1 is a control point: it may stand
+// above the curve): h1^2 / (2 h1 - h2) where the curve turns down before its tip, else h2.
+float curve_top(vec3 v1, vec3 v2, vec3 up) {
+    float h1 = dot(v1, up), h2 = dot(v2, up);
+    return h1 > h2 ? h1 * h1 / (2.0 * h1 - h2) : h2;
+}
+
 struct BladePose {
     vec3 v1, v2;  // deformed control points relative to the root (world metres)
     float shade;  // press darkening (press_shade)
@@ -63,7 +70,10 @@ void validate_blade(inout BladePose pose, vec3 i1, vec3 i2, vec3 up, float len, 
     vec3 v2 = pose.v2;
     v2 -= up * min(dot(up, v2), 0.0); // eq. 9: the tip stays above the root's plane
     vec3 v1 = i1 * min(v1_height_factor(v2, up, len) / v1_height_factor(i2, up, len), 1.0); // eq. 11 (relative)
-    v1 -= up * max(dot(v1, up) - cap, 0.0);
+    // The curve's top at most the cap (with the tip at most there): v1's height at most
+    // cap + sqrt(cap (cap - h2)), where h1^2 / (2 h1 - h2) = cap.
+    float h1_max = cap + sqrt(max(cap * (cap - dot(v2, up)), 0.0));
+    v1 -= up * max(dot(v1, up) - h1_max, 0.0);
     // eq. 13: scale both segments to the rest length (an exact scale about the root, so
     // once with the drawn length is enough; 1.1 bounds it against degenerate curves).
     for (int pass = 0; pass < 2; ++pass) {
@@ -133,7 +143,7 @@ BladePose blade_pose(uint blade, uvec2 cell, mat3 to_world, vec3 root, int segme
                 dir = d;
             }
         }
-        if (max(dot(pose.v1, up), dot(pose.v2, up)) > cap) {
+        if (curve_top(pose.v1, pose.v2, up) > cap) {
             // Lay the blade along the press until its top is at the cap: the tip at height
             // `aim` and reach sqrt(len^2 - aim^2), validated; eq. 13 then shortens the
             // chord a little (the curve is longer than it), so the aim is raised until the

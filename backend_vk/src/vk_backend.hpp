@@ -68,6 +68,7 @@ private:
         Buffer curves;
         Buffer curves_staging;
         uint32_t index_count = 0;
+        uint32_t vertices_per_blade = 0;
     };
     // A baked slice set of a patch on the GPU (api/src/baked_slices.hpp): three device-local
     // 2D array images with full mip chains, and until the upload is recorded, the staging

@@ -74,8 +74,8 @@ bool FrameRing::grow_uniforms(Slot& s, uint32_t needed, uint64_t frame, VkFailur
     return true;
 }
 
-bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool* uniforms_replaced, VkFailure* failure,
-                      const char** what) {
+bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, const FieldBlock& field_block,
+                      bool* uniforms_replaced, VkFailure* failure, const char** what) {
     Slot& s = slots_[slot];
     *uniforms_replaced = false;
     const uint32_t instances = static_cast<uint32_t>(plan.instances.size());
@@ -96,7 +96,9 @@ bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool
     frame_block.params[3] = static_cast<float>(samples_); // sample_count() of blade_interface.glsl
     std::memcpy(uniforms + frame_offset(), &frame_block, sizeof(FrameUniforms));
     for (uint32_t i = 0; i < draws; ++i) {
-        std::memcpy(uniforms + field_offset(i), &plan.draws[i].uniforms, sizeof(FieldUniforms));
+        FieldUniforms block = plan.draws[i].uniforms;
+        field_block(plan.draws[i], &block);
+        std::memcpy(uniforms + field_offset(i), &block, sizeof(FieldUniforms));
     }
 
     *what = "the per-frame buffers";

@@ -11,6 +11,7 @@
 #include "vk_memory.hpp"
 
 #include <cstdint>
+#include <functional>
 
 namespace grass::vk {
 
@@ -28,11 +29,14 @@ public:
     // need a uniform buffer to point at).
     bool create(VkFailure* failure, const char** what);
 
+    // What the backend adds to a draw's Field block (FieldUniforms fields the core leaves to
+    // it); called for each draw with a copy of the plan's block.
+    using FieldBlock = std::function<void(const TierDraw& draw, FieldUniforms* block)>;
     // Writes `plan` into slot `slot`, growing its buffers first if needed.
     // *uniforms_replaced: the slot's uniform buffer is new, so descriptor sets that point
     // at it must be rewritten. May throw std::bad_alloc.
-    bool write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool* uniforms_replaced, VkFailure* failure,
-               const char** what);
+    bool write(uint32_t slot, const FramePlan& plan, uint64_t frame, const FieldBlock& field_block,
+               bool* uniforms_replaced, VkFailure* failure, const char** what);
 
     VkBuffer instance_buffer(uint32_t slot) const { return slots_[slot].instances.buffer; }
     VkBuffer uniform_buffer(uint32_t slot) const { return slots_[slot].uniforms.buffer; }

@@ -159,22 +159,29 @@ bool InteractionPass::create_map(const InteractionPlan& plan, uint64_t frame, Vk
     return true;
 }
 
+void InteractionPass::release(uint64_t frame) {
+    for (Image& m : maps_) deferred_.retire(&m, frame);
+    for (Slot& s : slots_) deferred_.retire(&s.data, frame);
+    levels_ = resolution_ = 0;
+    defined_ = clear_pending_ = false;
+}
+
 VkDeviceSize InteractionPass::layout(Slot& s, const InteractionPlan& plan) const {
     // [Interaction block of each level][colliders][tile offsets 0][tile colliders 0][1][1];
     // an empty array still gets a few bytes (a descriptor's range is never 0).
     VkDeviceSize at = 0;
     const auto place = [&](uint32_t binding, uint32_t level, VkDeviceSize bytes, VkDeviceSize alignment) {
         at = align_up(at, alignment);
-        s.offsets[binding - 1][level] = at;
-        s.ranges[binding - 1][level] = bytes > 0 ? bytes : 16;
-        at += s.ranges[binding - 1][level];
+        s.offsets[binding][level] = at;
+        s.ranges[binding][level] = bytes > 0 ? bytes : 16;
+        at += s.ranges[binding][level];
     };
     for (uint32_t l = 0; l < 2; ++l) {
         place(kInteractionBindingLevel, l, sizeof(InteractionLevelUniforms), uniform_alignment_);
     }
     place(kInteractionBindingColliders, 0, plan.colliders.size() * sizeof(GpuCollider), storage_alignment_);
-    s.offsets[kInteractionBindingColliders - 1][1] = s.offsets[kInteractionBindingColliders - 1][0];
-    s.ranges[kInteractionBindingColliders - 1][1] = s.ranges[kInteractionBindingColliders - 1][0];
+    s.offsets[kInteractionBindingColliders][1] = s.offsets[kInteractionBindingColliders][0];
+    s.ranges[kInteractionBindingColliders][1] = s.ranges[kInteractionBindingColliders][0];
     for (uint32_t l = 0; l < 2; ++l) {
         place(kInteractionBindingTileOffsets, l, plan.tile_offsets[l].size() * sizeof(uint32_t), storage_alignment_);
         place(kInteractionBindingTileColliders, l, plan.tile_colliders[l].size() * sizeof(uint32_t),
@@ -208,7 +215,7 @@ bool InteractionPass::prepare(uint32_t slot, uint64_t frame, const InteractionPl
 
     auto* out = static_cast<unsigned char*>(s.data.mapped);
     const auto copy = [&](uint32_t binding, uint32_t level, const void* from, size_t size) {
-        if (size > 0) std::memcpy(out + s.offsets[binding - 1][level], from, size);
+        if (size > 0) std::memcpy(out + s.offsets[binding][level], from, size);
     };
     for (uint32_t l = 0; l < 2; ++l)
         copy(kInteractionBindingLevel, l, &plan.level[l], sizeof(InteractionLevelUniforms));
@@ -225,7 +232,7 @@ bool InteractionPass::prepare(uint32_t slot, uint64_t frame, const InteractionPl
     // The slot's sets were last used by its frame of frames_in_flight ago, which is done.
     for (uint32_t l = 0; l < levels_; ++l) {
         const VkDescriptorImageInfo image{VK_NULL_HANDLE, maps_[l].view, VK_IMAGE_LAYOUT_GENERAL};
-        VkDescriptorBufferInfo buffers[kInteractionBindingCount - 1];
+        VkDescriptorBufferInfo buffers[kInteractionBindingMap];
         VkWriteDescriptorSet writes[kInteractionBindingCount];
         for (uint32_t b = 0; b < kInteractionBindingCount; ++b) {
             writes[b] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -237,10 +244,10 @@ bool InteractionPass::prepare(uint32_t slot, uint64_t frame, const InteractionPl
                 writes[b].pImageInfo = &image;
                 continue;
             }
-            buffers[b - 1] = {s.data.buffer, s.offsets[b - 1][l], s.ranges[b - 1][l]};
+            buffers[b] = {s.data.buffer, s.offsets[b][l], s.ranges[b][l]};
             writes[b].descriptorType =
                 b == kInteractionBindingLevel ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-            writes[b].pBufferInfo = &buffers[b - 1];
+            writes[b].pBufferInfo = &buffers[b];
         }
         fn_.vkUpdateDescriptorSets(device_, kInteractionBindingCount, writes, 0, nullptr);
     }

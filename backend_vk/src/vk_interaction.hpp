@@ -22,11 +22,11 @@ namespace grass::vk {
 
 // Bindings of interaction.comp's descriptor set 0.
 enum InteractionBinding : uint32_t {
-    kInteractionBindingMap = 0,           // image2D, rgba32f: the level being updated
-    kInteractionBindingLevel = 1,         // uniform Interaction (InteractionLevelUniforms)
-    kInteractionBindingColliders = 2,     // readonly buffer of GpuCollider
-    kInteractionBindingTileOffsets = 3,   // readonly buffer of uint: tiles^2 + 1 offsets
-    kInteractionBindingTileColliders = 4, // readonly buffer of uint: collider indices
+    kInteractionBindingLevel = 0,         // uniform Interaction (InteractionLevelUniforms)
+    kInteractionBindingColliders = 1,     // readonly buffer of GpuCollider
+    kInteractionBindingTileOffsets = 2,   // readonly buffer of uint: tiles^2 + 1 offsets
+    kInteractionBindingTileColliders = 3, // readonly buffer of uint: collider indices
+    kInteractionBindingMap = 4,           // image2D, rgba32f: the level being updated
     kInteractionBindingCount = 5
 };
 
@@ -47,6 +47,10 @@ public:
     // retired), grows the slot's buffer, fills it and writes the slot's sets. On failure
     // *what names the object and nothing the GPU uses has changed.
     bool prepare(uint32_t slot, uint64_t frame, const InteractionPlan& plan, VkFailure* failure, const char** what);
+    // The core dropped the map (a plan without a pass): its images and the per-frame
+    // buffers are retired (frames up to `frame` may use them); the pipeline stays.
+    void release(uint64_t frame);
+    bool has_map() const { return levels_ > 0; }
     // Records the pass of the frame prepare() last saw in `slot` (grass_vk_prepare_frame,
     // outside a render pass): see grass_vk.h for the barriers.
     void record(VkCommandBuffer cmd, uint32_t slot, const InteractionPlan& plan);
@@ -61,10 +65,10 @@ public:
 
 private:
     struct Slot {
-        Buffer data;                                                // uniforms, colliders, tiles (streaming)
-        VkDescriptorSet sets[2] = {};                               // per level
-        VkDeviceSize offsets[kInteractionBindingCount - 1][2] = {}; // per binding past the map, per level
-        VkDeviceSize ranges[kInteractionBindingCount - 1][2] = {};
+        Buffer data;                                          // uniforms, colliders, tiles (streaming)
+        VkDescriptorSet sets[2] = {};                         // per level
+        VkDeviceSize offsets[kInteractionBindingMap][2] = {}; // per buffer binding, per level
+        VkDeviceSize ranges[kInteractionBindingMap][2] = {};
     };
     bool create_pipeline(VkFailure* failure, const char** what);
     bool create_map(const InteractionPlan& plan, uint64_t frame, VkFailure* failure, const char** what);

@@ -28,7 +28,14 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
     bool uniforms_replaced = false;
     VkFailure failure;
     const char* what = "";
-    if (!ring_.write(slot_, plan, frame_, &uniforms_replaced, &failure, &what)) {
+    // Responsive blades find their control points by vertex index: the vertices per blade
+    // of the draw's patch (FieldUniforms::trample[3], set by the backend).
+    const auto field_block = [this](const TierDraw& d, FieldUniforms* block) {
+        if ((d.features & (kFeatureWind | kFeatureInteraction)) != 0 && d.patch_slot < patches_.size()) {
+            block->trample[3] = float(patches_[d.patch_slot].vertices_per_blade);
+        }
+    };
+    if (!ring_.write(slot_, plan, frame_, field_block, &uniforms_replaced, &failure, &what)) {
         return fail("grass_begin_frame", what, failure);
     }
     if (uniforms_replaced) {
@@ -44,6 +51,8 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
             return fail("grass_begin_frame", what, failure);
         }
         interaction_pending_ = true;
+    } else if (interaction_.has_map()) {
+        interaction_.release(frame_); // the core holds no map (frame_plan.hpp)
     }
     return GRASS_SUCCESS;
 }
@@ -158,12 +167,12 @@ bool VkBackend::drawn(const TierDraw& d, bool debug_view) const {
 bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** problem) const {
     const FieldGpu& f = fields_[draw.field_slot];
     if (!debug_view && patches_[draw.patch_slot].pending) {
-        *problem = "its patch";
+        *problem = "the upload of its patch";
         return false;
     }
     if (!debug_view && draw.kind != GRASS_TIER_GEOMETRY && draw_slices(draw)->pending) {
-        *problem =
-            draw.kind == GRASS_TIER_VOLUME ? "its patch's baked vertical slices" : "its patch's baked horizontal slice";
+        *problem = draw.kind == GRASS_TIER_VOLUME ? "the upload of its patch's baked vertical slices"
+                                                  : "the upload of its patch's baked horizontal slice";
         return false;
     }
     // The field's descriptor sets point at its maps (or the default ones): each must have
@@ -172,16 +181,17 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
     for (uint32_t role = 0; role < kMapRoleCount; ++role) {
         const uint32_t m = f.map_slot[role];
         if (m != kNoMap && m < maps_.size() && (maps_[m].pending || maps_[m].updating)) {
-            *problem = maps_[m].pending ? "one of its design maps" : "an update of one of its design maps";
+            *problem = maps_[m].pending ? "the upload of one of its design maps"
+                                        : "the upload of an update of one of its design maps";
             return false;
         }
     }
     if (default_white_staging_.buffer || default_black_staging_.buffer) {
-        *problem = "the default design maps";
+        *problem = "the upload of the default design maps";
         return false;
     }
     if (default_slices_staging_.buffer) {
-        *problem = "the default slice image";
+        *problem = "the upload of the default slice image";
         return false;
     }
     if (debug_view) return true;
@@ -189,11 +199,11 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
     // this frame runs before any draw reads it.
     if (draw.kind == GRASS_TIER_GEOMETRY && (draw.features & (kFeatureWind | kFeatureInteraction)) &&
         (!patches_[draw.patch_slot].curves.buffer || patches_[draw.patch_slot].curves_pending)) {
-        *problem = "its patch's blade control points";
+        *problem = "the upload of its patch's blade control points";
         return false;
     }
     if ((draw.features & kFeatureInteraction) && (interaction_pending_ || !interaction_.map_ready())) {
-        *problem = "this frame's interaction pass";
+        *problem = "this frame's interaction pass (responsive grass)";
         return false;
     }
     return true;
@@ -210,7 +220,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         const char* problem = "";
         if (!draw_ready(d, debug_view, &problem)) {
             return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_UPLOAD_NOT_RECORDED,
-                              "grass_vk_record: a field drawn this frame (slot %u) waits for the upload of %s; call "
+                              "grass_vk_record: a field drawn this frame (slot %u) waits for %s; call "
                               "grass_vk_prepare_frame() with a command buffer that runs before this one, after "
                               "grass_begin_frame() and outside the render pass",
                               d.field_slot, problem);

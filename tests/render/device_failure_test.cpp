@@ -96,8 +96,11 @@ TEST(DeviceFailure, ADeviceLostMidFrameIsReportedAndTheContextStaysDestroyable) 
 }
 
 // One run of the scenario with the `fail_at`th vkAllocateMemory failing (0: none). Returns
-// the allocations it made, or -1 after a failed expectation.
-int allocation_scenario(grass_host::Host& host, int fail_at) {
+// the allocations it made, or -1 after a failed expectation. `responsive`: with wind and a
+// collider (blade curves, the interaction map, its pipeline and per-frame buffer).
+// *setup_allocations: the allocations made before the first frame.
+int allocation_scenario(grass_host::Host& host, int fail_at, bool responsive = false,
+                        int* setup_allocations = nullptr) {
     vi::clear_failures();
     if (fail_at > 0) vi::fail_calls("vkAllocateMemory", VK_ERROR_OUT_OF_DEVICE_MEMORY, 1, fail_at - 1);
     const int injected_before = vi::failures_injected();
@@ -129,6 +132,18 @@ int allocation_scenario(grass_host::Host& host, int fail_at) {
     fd.cells_x = fd.cells_z = 64;
     grass_field_id field{};
     if (!call("grass_create_field", [&] { return grass_create_field(ctx, &fd, &field); })) return -1;
+    if (responsive) {
+        grass_wind_desc wind = grass_default_wind_desc();
+        wind.speed = 4.0f;
+        EXPECT_EQ(grass_set_wind(ctx, &wind), GRASS_SUCCESS) << log.text;
+        grass_collider ball{};
+        ball.radius = 0.4f;
+        ball.centre[0] = 8.0;
+        ball.centre[1] = 0.2;
+        ball.centre[2] = 3.0;
+        EXPECT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS) << log.text;
+    }
+    if (setup_allocations) *setup_allocations = static_cast<int>(vi::live().memory_made - made_before);
     const grass_view_desc v = scene_view(host);
     grass_host::Image image;
     for (int frame = 0; frame < 2; ++frame) {
@@ -153,6 +168,21 @@ TEST(DeviceFailure, EveryDeviceMemoryAllocationFailingInTurnGivesOutOfMemory) {
     ASSERT_GT(total, 3);
     for (int n = 1; n <= total && !::testing::Test::HasFailure(); ++n) allocation_scenario(*host, n);
     std::printf("[ device   ] %d device-memory allocations, each failed once\n", total);
+}
+
+TEST(DeviceFailure, EveryAllocationOfResponsiveGrassFailingInTurnGivesOutOfMemory) {
+    std::string error;
+    auto host = grass_host::Host::create(GRASS_BACKEND_VULKAN, intercepted_target(), &error);
+    ASSERT_TRUE(host) << error;
+    const int still = allocation_scenario(*host, 0);
+    int setup = 0;
+    const int total = allocation_scenario(*host, 0, true, &setup);
+    ASSERT_GT(total, still) << "wind and a collider allocate more";
+    // Responsive grass allocates in its frames; the setup is that of still grass, tested above.
+    for (int n = setup + 1; n <= total && !::testing::Test::HasFailure(); ++n) allocation_scenario(*host, n, true);
+    std::printf("[ device   ] %d device-memory allocations with wind and a collider (%d more); the %d of its frames "
+                "each failed once\n",
+                total, total - still, total - setup);
 }
 
 } // namespace

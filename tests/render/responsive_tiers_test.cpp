@@ -10,14 +10,8 @@
 namespace grass_test {
 namespace {
 
-// The backends whose responsive grass is implemented so far (Vulkan: h13-vk).
-std::vector<grass_backend> responsive_backends() {
-    std::vector<grass_backend> b;
-    for (grass_backend k : enabled_backends()) {
-        if (k == GRASS_BACKEND_GL) b.push_back(k);
-    }
-    return b;
-}
+// Both backends draw responsive grass.
+std::vector<grass_backend> responsive_backends() { return enabled_backends(); }
 
 struct TierCase {
     grass_tier_kind kind;
@@ -93,6 +87,7 @@ TEST_P(ResponsiveTiersTest, StillGrassIsUnchanged) {
         const grass_wind_desc w = strong_wind();
         ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << log;
         const grass_host::Image unmoved = frame(3.0);
+        save(before, std::string(tier.name) + ".before");
         save(unmoved, std::string(tier.name) + ".unmoved");
         if (tier.kind == GRASS_TIER_GEOMETRY) {
             EXPECT_LT(mean_difference(before, unmoved), 0.5) << tier.name;

@@ -1,4 +1,6 @@
 """The Pythonic layer on a CPU context: objects, errors with message ids, frames, stats, maps."""
+import ctypes
+
 import pytest
 
 import grass
@@ -94,3 +96,41 @@ def test_a_lod_callback_from_python():
         with ctx.frame(overhead_view()):
             pass
         assert calls and ctx.frame_stats().cells_drawn > 0
+
+
+def test_responsive_grass_through_the_raw_binding():
+    # Wind, colliders and the interaction map set from Python: the frame stats see them, and
+    # a NaN is refused naming the argument.
+    with grass.Context() as ctx:
+        patch = ctx.create_patch(blade_count=64)
+        ctx.create_field(patch, cells_x=16, cells_z=16)
+        lib = grass.lib
+        wind = lib.grass_default_wind_desc()
+        wind.speed = 5.0
+        ctx._check(lib.grass_set_wind(ctx._ctx, ctypes.byref(wind)))
+        colliders = (grass.grass_collider * 2)()
+        for i, c in enumerate(colliders):
+            c.shape = grass.GRASS_COLLIDER_SPHERE if i == 0 else grass.GRASS_COLLIDER_CAPSULE
+            c.radius = 0.4
+            c.centre[:] = (8.0 + i, 0.2, 4.0)
+            c.end[:] = (9.5, 0.2, 4.0)
+            c.velocity[:] = (1.0, 0.0, 0.0)
+        ctx._check(lib.grass_set_colliders(ctx._ctx, colliders, 2))
+        mechanics = lib.grass_default_blade_mechanics()
+        mechanics.recovery_time = 2.0
+        ctx._check(lib.grass_set_blade_mechanics(ctx._ctx, patch.id, ctypes.byref(mechanics)))
+        for t in (10.0, 10.5):
+            view = overhead_view()
+            view.time = t
+            with ctx.frame(view):
+                pass
+        stats = ctx.frame_stats()
+        assert stats.colliders == 2 and stats.colliders_in_map == 2
+        assert stats.interaction_texels == 2 * 256 * 256
+        assert stats.time_step == 0.5
+        assert ctx.memory_stats().dynamics_gpu_bytes == 0  # no GPU
+        colliders[1].velocity[1] = float("nan")
+        with pytest.raises(grass.GrassError) as e:
+            ctx._check(lib.grass_set_colliders(ctx._ctx, colliders, 2))
+        assert e.value.message_id == grass.MessageId.GRASS_MSG_NOT_FINITE
+        assert "colliders[1].velocity[1]" in e.value.message
