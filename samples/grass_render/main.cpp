@@ -264,6 +264,16 @@ int main(int argc, char** argv) {
                     static_cast<unsigned long long>(stats.blades_submitted));
         std::printf("  triangles       %llu\n", static_cast<unsigned long long>(stats.triangles));
         std::printf("  plan            %.3f ms\n", stats.plan_ms);
+        if (scene.responsive.any()) {
+            grass_memory_stats memory{};
+            grass_get_memory_stats(ctx, &memory);
+            std::printf("  responsive      %llu colliders (%llu in the map), %llu map texels updated, step %.4f s, "
+                        "%.2f MiB of GPU memory\n",
+                        static_cast<unsigned long long>(stats.colliders),
+                        static_cast<unsigned long long>(stats.colliders_in_map),
+                        static_cast<unsigned long long>(stats.interaction_texels), stats.time_step,
+                        static_cast<double>(memory.dynamics_gpu_bytes) / (1024.0 * 1024.0));
+        }
         std::printf("  frame           %.1f ms (wall, incl. read-back)%s\n", frame_ms,
                     o.frames > 1 ? ", the last of the frames" : "");
         if (is_gltf) print_gltf(gltf, scene);
