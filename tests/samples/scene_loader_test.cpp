@@ -19,6 +19,19 @@ std::string write_scene(const std::string& name, const std::string& text) {
     return path;
 }
 
+// A scene file's text and the words its refusal must hold.
+struct Case {
+    const char* text;
+    const char* named;
+};
+
+// Loads the case's file over *scene: refused, with an error that names what is wrong.
+void expect_refused(const Case& c, grass_sample::Scene* scene) {
+    std::string error;
+    EXPECT_FALSE(grass_sample::load_scene(write_scene("refused.json", c.text), scene, &error)) << c.text;
+    EXPECT_NE(error.find(c.named), std::string::npos) << c.text << ": " << error;
+}
+
 // A 100-byte PNG whose header claims 100000 x 100000 texels made the loader allocate and
 // clear gigabytes (39 s, 1.4 GB) before libpng found the data missing. Now refused at once,
 // naming the file and its size, for every map key.
@@ -44,10 +57,6 @@ TEST(SceneLoader, APngLargerThanAMapMayBeIsRefusedBeforeItsPixelsAreAllocated) {
 // double no unsigned can hold (undefined behaviour, UBSan's float-cast-overflow). Every
 // number is now checked against what its field can hold and refused by name.
 TEST(SceneLoader, ANumberItsFieldCannotHoldIsRefusedByName) {
-    struct Case {
-        const char* text;
-        const char* named;
-    };
     const Case cases[] = {
         {R"({"patch": {"blade_count": 1e308}})", "\"blade_count\" is 1e+308, out of range"},
         {R"({"patch": {"blade_count": -1}})", "\"blade_count\" is -1, out of range"},
@@ -59,12 +68,9 @@ TEST(SceneLoader, ANumberItsFieldCannotHoldIsRefusedByName) {
         {R"({"patch": {"blade_count": "many"}})", "\"blade_count\" must be a number, not \"many\""},
     };
     for (const Case& c : cases) {
-        const std::string path = write_scene("number-range.json", c.text);
         grass_sample::Scene scene;
         const uint32_t blades_before = scene.patch.blade_count;
-        std::string error;
-        EXPECT_FALSE(grass_sample::load_scene(path, &scene, &error)) << c.text;
-        EXPECT_NE(error.find(c.named), std::string::npos) << c.text << ": " << error;
+        expect_refused(c, &scene);
         EXPECT_EQ(scene.patch.blade_count, blades_before) << c.text;
     }
     // The file fuzz_scene found, kept in its corpus.
@@ -82,10 +88,6 @@ namespace {
 // an unknown key, a value of the wrong kind, a path that cannot be followed. A refused file
 // leaves the scene's responsive settings as they were.
 TEST(SceneLoader, ResponsiveKeysAreRefusedByName) {
-    struct Case {
-        const char* text;
-        const char* named;
-    };
     const Case cases[] = {
         {R"({"wind": {"speeed": 3}})", "unknown key \"speeed\" in \"wind\""},
         {R"({"wind": 3})", "\"wind\" must be an object, not 3"},
@@ -126,12 +128,9 @@ TEST(SceneLoader, ResponsiveKeysAreRefusedByName) {
          "\"wind.sources[0].radius\" is 1e+39, out of range"},
     };
     for (const Case& c : cases) {
-        const std::string path = write_scene("responsive.json", c.text);
         grass_sample::Scene scene;
         scene.responsive.colliders.resize(1); // what the scene had before: kept
-        std::string error;
-        EXPECT_FALSE(grass_sample::load_scene(path, &scene, &error)) << c.text;
-        EXPECT_NE(error.find(c.named), std::string::npos) << c.text << ": " << error;
+        expect_refused(c, &scene);
         EXPECT_EQ(scene.responsive.colliders.size(), 1u) << c.text;
         EXPECT_FALSE(scene.responsive.wind_given) << c.text;
     }
