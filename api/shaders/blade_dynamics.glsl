@@ -70,18 +70,18 @@ void validate_blade(inout BladePose pose, vec3 i1, vec3 i2, vec3 up, float len, 
     vec3 v2 = pose.v2;
     v2 -= up * min(dot(up, v2), 0.0); // eq. 9: the tip stays above the root's plane
     vec3 v1 = i1 * min(v1_height_factor(v2, up, len) / v1_height_factor(i2, up, len), 1.0); // eq. 11 (relative)
-    // The curve's top at most the cap (with the tip at most there): v1's height at most
-    // cap + sqrt(cap (cap - h2)), where h1^2 / (2 h1 - h2) = cap.
-    float h1_max = cap + sqrt(max(cap * (cap - dot(v2, up)), 0.0));
-    v1 -= up * max(dot(v1, up) - h1_max, 0.0);
-    // eq. 13: scale both segments to the rest length (an exact scale about the root, so
-    // once with the drawn length is enough; 1.1 bounds it against degenerate curves).
-    for (int pass = 0; pass < 2; ++pass) {
-        float r = len / max(drawn_length(v1, v2, segments), 1e-9);
-        r = min(r, 1.1);
+    // eq. 13: scale both segments to the rest length: an exact scale about the root (up or
+    // down: gravity may pull the tip towards the root), so one pass with the drawn length
+    // is enough; the curve's top is kept at the cap first (v1's height at most cap +
+    // sqrt(cap (cap - h2)), where h1^2 / (2 h1 - h2) = cap), which changes the length a
+    // little: hence a second pass.
+    for (int pass = 0; pass < 3; ++pass) {
+        float h1_max = cap + sqrt(max(cap * (cap - dot(v2, up)), 0.0));
+        v1 -= up * max(dot(v1, up) - h1_max, 0.0);
+        float r = len / max(drawn_length(v1, v2, segments), 1e-6 * len);
         v1 *= r;
         v2 *= r;
-        if (abs(r - 1.0) < 1e-3) break;
+        if (abs(r - 1.0) < 1e-4) break;
     }
     pose.v1 = v1;
     pose.v2 = v2;

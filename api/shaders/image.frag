@@ -19,6 +19,8 @@ layout(location = 0) out vec4 out_color;
 void main() {
     vec2 local = v_local;
     float shade = 1.0;
+    float turn = 0.0; // the bent tangent's angle at half height (shell_bend_normal)
+    vec3 bend_dir = vec3(0.0);
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
         // Responsive grass (shell_bend.glsl): the quad stands for the grass at half its
         // height, which a bend moves by x(1/2) along its direction: the slice is read that
@@ -30,6 +32,8 @@ void main() {
         float back = a < 1e-4 ? 0.0 : field.blade_params.w * (1.0 - cos(a)) / bend.angle;
         vec3 d = transpose(mat3(field.patch_to_world)) * bend.dir / max(field.field_up.w, 1e-30);
         local -= d.xz * back;
+        turn = a;
+        bend_dir = vec3(d.x, 0.0, d.z);
         local = max(local, -vec2(v_first_cell)); // not before the field's first cell
         shade = bend.shade;
     }
@@ -75,6 +79,7 @@ void main() {
         u.y *= sin_elevation;
         n = dot(u, u) > 1e-8 ? normalize(u) * r : vec3(0.0, r, 0.0);
     }
+    if (has_map(GRASS_WIND | GRASS_INTERACTION)) n = shell_bend_normal(n, bend_dir, turn);
     vec3 to_camera = world_to_patch_direction(normalize(-v_position));
     vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
     float height = normal_height.w * field.blade_params.w; // the grazing view's (slice_baker.cpp)

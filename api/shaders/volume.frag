@@ -56,6 +56,8 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     // out of its cell it is drawn by the rays that cross the neighbouring cells (they reach
     // 4 cells past their carrier), and it is cut off at the field's edge (accepted).
     float shade = 1.0;
+    float turn = 0.0;   // the bent tangent's angle at this height (shell_bend_normal)
+    vec3 bend_dir = vec3(0.0);
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
         vec3 up = normalize(field.field_up.xyz);
         float ground_y = has_map(GRASS_MAP_HEIGHT) ? hit.y - h.y : 0.0;
@@ -65,6 +67,8 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
         vec3 d = transpose(g_to_world) * bend.dir / max(field.field_up.w, 1e-30); // unit, patch frame
         h = vec3(h.x - d.x * back, rest_y, h.z - d.z * back);
         shade = bend.shade;
+        turn = bend.angle * rest_y / g_size.y;
+        bend_dir = vec3(d.x, 0.0, d.z);
     }
     vec2 cell = floor(h.xz);
     vec2 global = vec2(v_cell.xy) + cell;
@@ -119,6 +123,7 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     vec4 normal_height = textureLod(slice_normal, coord, lod);
     vec3 nrm = normal_height.xyz * 2.0 - 1.0;
     nrm.xz *= s;
+    if (has_map(GRASS_WIND | GRASS_INTERACTION)) nrm = shell_bend_normal(nrm, bend_dir, turn);
     // The horizontal slice's heights are its blades' tips; a vertical slice's hit is at h.y.
     float ao = blade_ambient_occlusion(density, kind == 2 ? normal_height.w * g_size.y : h.y, field.blade_params.x,
                                        field.blade_params.y);

@@ -155,11 +155,11 @@ private:
     TierTimerRing timer_ring_{kTimerSets, TierTimerRing::WhenBusy::skip_frame};
     bool frame_timer_opened_ = false; // the first render of the frame has opened its set
     // Responsive grass.
-    GLuint interaction_program_ = 0;        // compiled on the first frame with an interaction pass
-    GLuint interaction_maps_[2] = {};       // GL_RGBA32F, one per level
-    uint32_t interaction_resolution_ = 0;   // N of the textures made
-    uint32_t interaction_levels_ = 0;       // levels made
-    bool interaction_ran_ = false;          // this frame's pass has run
+    GLuint interaction_program_ = 0;      // compiled on the first frame with an interaction pass
+    GLuint interaction_maps_[2] = {};     // GL_RGBA32F, one per level
+    uint32_t interaction_resolution_ = 0; // N of the textures made
+    uint32_t interaction_levels_ = 0;     // levels made
+    bool interaction_ran_ = false;        // this frame's pass has run
     GLintptr interaction_uniform_offsets_[2] = {};
     GlStreamBuffer colliders_;
     GlStreamBuffer tile_offsets_[2];

@@ -158,6 +158,8 @@ void GlBackend::draw_debug(const FramePlan& plan) const {
 
 grass_result GlBackend::render(const char* function) {
     const FramePlan& plan = ctx_->plan;
+    // No map in the core (never made, or dropped by grass_set_interaction): nor here.
+    if (plan.interaction.levels == 0 && interaction_resolution_ != 0) release_interaction_map();
     // The interaction pass runs once per frame even when nothing is drawn: trails age.
     const bool pass_pending = plan.interaction.levels > 0 && !interaction_ran_;
     if (plan.draws.empty() && !pass_pending) return GRASS_SUCCESS;

@@ -57,8 +57,8 @@ grass_result GlBackend::upload_blade_curves(uint32_t slot, const PatchData& patc
 }
 
 uint64_t GlBackend::dynamics_gpu_bytes() const {
-    uint64_t bytes = uint64_t(interaction_levels_) * interaction_resolution_ * interaction_resolution_ *
-                     kInteractionTexelBytes;
+    uint64_t bytes =
+        uint64_t(interaction_levels_) * interaction_resolution_ * interaction_resolution_ * kInteractionTexelBytes;
     for (const PatchGpu& p : patches_) bytes += p.curve_bytes;
     return bytes;
 }

@@ -28,11 +28,16 @@ struct SamplerUnit {
     GLint unit;
 };
 constexpr SamplerUnit kSamplerUnits[] = {
-    {"density_map", kMapUnit[kMapDensity]}, {"slice_color", kSliceColorUnit},
-    {"slice_normal", kSliceNormalUnit},     {"slice_threshold", kSliceThresholdUnit},
-    {"color_map", kMapUnit[kMapColor]},     {"ambient_map", kMapUnit[kMapAmbient]},
-    {"diffuse_map", kMapUnit[kMapDiffuse]}, {"height_map", kMapUnit[kMapHeight]},
-    {"interaction_level0", kInteractionMapUnit[0]}, {"interaction_level1", kInteractionMapUnit[1]},
+    {"density_map", kMapUnit[kMapDensity]},
+    {"slice_color", kSliceColorUnit},
+    {"slice_normal", kSliceNormalUnit},
+    {"slice_threshold", kSliceThresholdUnit},
+    {"color_map", kMapUnit[kMapColor]},
+    {"ambient_map", kMapUnit[kMapAmbient]},
+    {"diffuse_map", kMapUnit[kMapDiffuse]},
+    {"height_map", kMapUnit[kMapHeight]},
+    {"interaction_level0", kInteractionMapUnit[0]},
+    {"interaction_level1", kInteractionMapUnit[1]},
 };
 
 // Reads a shader or program info log through the context's allocator.
@@ -106,8 +111,8 @@ ProgramSource program_source(GlProgramKind kind) {
 }
 
 // Links the compiled shaders (deleted here, whatever the outcome) into a program.
-grass_result link(grass_context* ctx, const GlFunctions& gl, const char* function, const char* name,
-                  uint32_t features, const GLuint* shaders, int shader_count, GLuint* out_program) {
+grass_result link(grass_context* ctx, const GlFunctions& gl, const char* function, const char* name, uint32_t features,
+                  const GLuint* shaders, int shader_count, GLuint* out_program) {
     const GLuint program = gl.CreateProgram();
     if (program == 0) {
         for (int i = 0; i < shader_count; ++i) gl.DeleteShader(shaders[i]);

@@ -99,6 +99,7 @@ void GlDrawStateGuard::restore_dynamics() const {
         gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(interaction_units_[i].texture_2d));
         gl.BindSampler(unit, static_cast<GLuint>(interaction_units_[i].sampler));
     }
+    gl.ActiveTexture(GL_TEXTURE0); // the destructor restores unit 0 next
 }
 
 GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl, bool dynamics) : gl_(gl) {

@@ -44,6 +44,9 @@ struct TargetDesc {
     // The host's own scene: meshes drawn before grass, Lambert + ambient under the view's
     // sun, into the colour and depth grass draws over (see host_mesh.hpp).
     std::vector<HostMesh> meshes;
+    // Reads the depth buffer back too (Image::depth); single-sampled targets only (Vulkan:
+    // with a render pass, not dynamic rendering). For tests that measure heights.
+    bool read_depth = false;
     // Vulkan: the vkGetInstanceProcAddr the host hands grass (grass_vk_desc's
     // get_instance_proc_addr); nullptr: the loader's own. Tests pass a wrapper that counts
     // handles or makes a call fail, for grass's dispatch table only.
@@ -72,6 +75,9 @@ struct Image {
     // first; `rgba` then holds them clamped to 0..1 and sRGB-encoded (NaN as 0), so the
     // 8-bit helpers and PNG output work on either target.
     std::vector<float> rgba_f32;
+    // TargetDesc::read_depth: the window depth (0..1 as the host's convention stores it) of
+    // each pixel, top row first; empty otherwise.
+    std::vector<float> depth;
     const uint8_t* pixel(uint32_t x, uint32_t y) const { return &rgba[(size_t(y) * width + x) * 4]; }
     const float* pixel_f32(uint32_t x, uint32_t y) const { return &rgba_f32[(size_t(y) * width + x) * 4]; }
 };

@@ -595,6 +595,15 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     const size_t row = size_t(w) * texel;
     readback_.resize(row * size_t(h));
     gl_.ReadPixels(0, 0, w, h, GL_RGBA, target_.float_color ? GL_FLOAT : GL_UNSIGNED_BYTE, readback_.data());
+    if (target_.read_depth) {
+        std::vector<float> depth(size_t(w) * size_t(h));
+        gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);
+        gl_.ReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+        out->depth.resize(depth.size());
+        for (int32_t y = 0; y < h; ++y) { // bottom-up rows
+            std::memcpy(&out->depth[size_t(y) * w], &depth[size_t(h - 1 - y) * w], size_t(w) * sizeof(float));
+        }
+    }
     gl_.BindFramebuffer(GL_FRAMEBUFFER, draw_fbo_); // stays bound, as a host's scene target would
 
     out->width = target_.width;

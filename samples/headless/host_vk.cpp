@@ -456,7 +456,9 @@ bool VkHost::create_target(std::string* error) {
     const VkImageUsageFlags color_usage =
         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (msaa ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     if (!create_attachment(color_format_, samples_, color_usage, VK_IMAGE_ASPECT_COLOR_BIT, &color_, error) ||
-        !create_attachment(kDepthFormat, samples_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+        !create_attachment(kDepthFormat, samples_,
+                           VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                               (target_.read_depth ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0),
                            VK_IMAGE_ASPECT_DEPTH_BIT, &depth_, error)) {
         return false;
     }
@@ -466,9 +468,13 @@ bool VkHost::create_target(std::string* error) {
         return false;
     }
 
-    // Read-back buffer: host-visible, cached when possible.
+    if (target_.read_depth && (msaa || target_.vk_dynamic_rendering)) {
+        *error = "read_depth needs a single-sampled target drawn with a render pass";
+        return false;
+    }
+    // Read-back buffer: host-visible, cached when possible. Colour, then (read_depth) depth.
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    info.size = VkDeviceSize(target_.width) * target_.height * texel_bytes_;
+    info.size = VkDeviceSize(target_.width) * target_.height * (texel_bytes_ + (target_.read_depth ? 4 : 0));
     info.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkResult r = vkCreateBuffer(device_, &info, nullptr, &readback_);
@@ -512,8 +518,9 @@ bool VkHost::create_render_pass(std::string* error) {
     // 1: depth.
     attachments[1] = attachments[0];
     attachments[1].format = kDepthFormat;
-    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    attachments[1].storeOp = target_.read_depth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachments[1].finalLayout =
+        target_.read_depth ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     // 2: single-sample resolve target, read back.
     attachments[2] = attachments[0];
     attachments[2].samples = VK_SAMPLE_COUNT_1_BIT;
@@ -547,9 +554,10 @@ bool VkHost::create_render_pass(std::string* error) {
     // The pass's colour writes (and resolve) come before the read-back copy.
     dependencies[1].srcSubpass = 0;
     dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-    dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    dependencies[1].srcStageMask =
+        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
     dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-    dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
     dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
@@ -890,6 +898,11 @@ void VkHost::copy_to_readback(VkCommandBuffer cmd) {
     region.imageExtent = {target_.width, target_.height, 1};
     const VkImage image = samples_ != VK_SAMPLE_COUNT_1_BIT ? resolve_.image : color_.image;
     vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_, 1, &region);
+    if (target_.read_depth) {
+        region.bufferOffset = VkDeviceSize(target_.width) * target_.height * texel_bytes_;
+        region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
+        vkCmdCopyImageToBuffer(cmd, depth_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_, 1, &region);
+    }
     VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
     b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -968,6 +981,13 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     } else {
         out->rgba.resize(size_t(target_.width) * target_.height * 4);
         std::memcpy(out->rgba.data(), readback_mapped_, out->rgba.size()); // Vulkan rows run top-down
+    }
+    if (target_.read_depth) {
+        out->depth.resize(size_t(target_.width) * target_.height); // D32_SFLOAT, top-down
+        std::memcpy(out->depth.data(),
+                    static_cast<const uint8_t*>(readback_mapped_) +
+                        size_t(target_.width) * target_.height * texel_bytes_,
+                    out->depth.size() * sizeof(float));
     }
     if (messages_ != 0 && error) *error = log_;
     return GRASS_SUCCESS;

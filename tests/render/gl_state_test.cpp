@@ -411,6 +411,102 @@ TEST_P(GlStateTest, AHostsUnusualDrawStateChangesNeitherTheGrassNorItself) {
     }
 }
 
+// Responsive grass touches more (grass_gl.h): shader storage bindings 0-3 and the generic
+// one, image unit 0, texture units 10-11 and their samplers. With wind and a collider (the
+// interaction pass runs and the draws read the map and the blade curves), every one of
+// them is back as the host left it.
+TEST_P(GlStateTest, ResponsiveRenderRestoresItsExtraState) {
+    PFNGLGETINTEGERI_VPROC get_i = nullptr;
+    PFNGLGETINTEGERVPROC get = nullptr;
+    PFNGLCREATEBUFFERSPROC create_buffers = nullptr;
+    PFNGLBINDBUFFERBASEPROC bind_base = nullptr;
+    PFNGLBINDBUFFERPROC bind = nullptr;
+    PFNGLCREATETEXTURESPROC create_textures = nullptr;
+    PFNGLTEXTURESTORAGE2DPROC storage = nullptr;
+    PFNGLBINDIMAGETEXTUREPROC bind_image = nullptr;
+    PFNGLACTIVETEXTUREPROC active = nullptr;
+    PFNGLBINDTEXTUREPROC bind_texture = nullptr;
+    PFNGLCREATESAMPLERSPROC create_samplers = nullptr;
+    PFNGLBINDSAMPLERPROC bind_sampler = nullptr;
+    load(*host, &get_i, "glGetIntegeri_v");
+    load(*host, &get, "glGetIntegerv");
+    load(*host, &create_buffers, "glCreateBuffers");
+    load(*host, &bind_base, "glBindBufferBase");
+    load(*host, &bind, "glBindBuffer");
+    load(*host, &create_textures, "glCreateTextures");
+    load(*host, &storage, "glTextureStorage2D");
+    load(*host, &bind_image, "glBindImageTexture");
+    load(*host, &active, "glActiveTexture");
+    load(*host, &bind_texture, "glBindTexture");
+    load(*host, &create_samplers, "glCreateSamplers");
+    load(*host, &bind_sampler, "glBindSampler");
+
+    make_field(field_desc(4));
+    grass_wind_desc w = grass_default_wind_desc();
+    w.speed = 5.0f;
+    ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << log;
+    grass_collider c{};
+    c.shape = GRASS_COLLIDER_SPHERE;
+    c.radius = 0.3f;
+    c.centre[0] = c.centre[2] = 0.5;
+    c.centre[1] = 0.3;
+    ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS) << log;
+    const double eye[3] = {0.5, 2.0, 0.5}, target[3] = {0.5, 0.0, 0.5001};
+    grass_view_desc v = view(eye, target);
+    render(v);
+
+    GLuint buffers[5] = {}, textures[3] = {}, samplers[2] = {};
+    create_buffers(5, buffers);
+    for (GLuint i = 0; i < 4; ++i) bind_base(GL_SHADER_STORAGE_BUFFER, i, buffers[i]);
+    bind(GL_SHADER_STORAGE_BUFFER, buffers[4]);
+    create_textures(GL_TEXTURE_2D, 3, textures);
+    for (GLuint t : textures) storage(t, 1, GL_RGBA8, 2, 2);
+    bind_image(0, textures[0], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
+    create_samplers(2, samplers);
+    for (int i = 0; i < 2; ++i) {
+        active(GL_TEXTURE10 + i);
+        bind_texture(GL_TEXTURE_2D, textures[1 + i]);
+        bind_sampler(10 + i, samplers[i]);
+    }
+    active(GL_TEXTURE2);
+    struct Extra {
+        GLint storage[4], generic, image, image_access, image_format, unit_texture[2], unit_sampler[2], active;
+    };
+    const auto extra = [&] {
+        Extra e{};
+        for (GLuint i = 0; i < 4; ++i) get_i(GL_SHADER_STORAGE_BUFFER_BINDING, i, &e.storage[i]);
+        get(GL_SHADER_STORAGE_BUFFER_BINDING, &e.generic);
+        get_i(GL_IMAGE_BINDING_NAME, 0, &e.image);
+        get_i(GL_IMAGE_BINDING_ACCESS, 0, &e.image_access);
+        get_i(GL_IMAGE_BINDING_FORMAT, 0, &e.image_format);
+        get(GL_ACTIVE_TEXTURE, &e.active);
+        for (int i = 0; i < 2; ++i) {
+            active(GL_TEXTURE10 + i);
+            get(GL_TEXTURE_BINDING_2D, &e.unit_texture[i]);
+            get(GL_SAMPLER_BINDING, &e.unit_sampler[i]);
+        }
+        active(static_cast<GLenum>(e.active));
+        return e;
+    };
+    const Extra before = extra();
+    v.time = 0.5;
+    ASSERT_EQ(grass_begin_frame(ctx, &v), GRASS_SUCCESS) << log;
+    ASSERT_EQ(grass_gl_render(ctx), GRASS_SUCCESS) << log;
+    ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+    grass_frame_stats stats{};
+    ASSERT_EQ(grass_get_frame_stats(ctx, &stats), GRASS_SUCCESS);
+    EXPECT_GT(stats.interaction_texels, 0u) << "the interaction pass must have run";
+    const Extra after = extra();
+    EXPECT_EQ(std::memcmp(&before, &after, sizeof before), 0);
+    for (GLuint i = 0; i < 4; ++i) EXPECT_EQ(after.storage[i], GLint(buffers[i])) << "storage binding " << i;
+    EXPECT_EQ(after.generic, GLint(buffers[4]));
+    EXPECT_EQ(after.image, GLint(textures[0]));
+    EXPECT_EQ(after.image_access, GL_READ_ONLY);
+    EXPECT_EQ(after.unit_texture[1], GLint(textures[2]));
+    EXPECT_EQ(after.unit_sampler[0], GLint(samplers[0]));
+    EXPECT_EQ(after.active, GL_TEXTURE2);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, GlStateTest, ::testing::Values(GRASS_BACKEND_GL),
                          [](const auto& p) { return backend_name(p.param); });
 

@@ -2,7 +2,7 @@
 // grass under them, trails that recover with the documented time constant, blade tips
 // above the terrain, trails visible in every tier, and wind that moves every tier and
 // freezes at dt = 0. Heights are read back from the depth buffer of an orthographic view
-// straight down (GL hosts: glReadPixels in the host's after_grass hook).
+// straight down (TargetDesc::read_depth).
 #include "render_fixture.hpp"
 
 #include <algorithm>
@@ -14,22 +14,9 @@
 namespace grass_test {
 namespace {
 
-constexpr unsigned kGlDepthComponent = 0x1902;
-constexpr unsigned kGlFloat = 0x1406;
-using ReadPixelsFn = void (*)(int, int, int, int, unsigned, unsigned, void*);
-
 constexpr double kEyeHeight = 2.0; // the orthographic camera, metres above the ground
 constexpr float kNear = 0.5f, kFar = 3.0f;
 constexpr float kNoGrass = -1e30f;
-
-// The backends whose hosts can read the depth back (the GL host's after_grass hook).
-std::vector<grass_backend> depth_backends() {
-    std::vector<grass_backend> b;
-    for (grass_backend k : enabled_backends()) {
-        if (k == GRASS_BACKEND_GL) b.push_back(k);
-    }
-    return b;
-}
 
 class ResponsiveTest : public RenderTest {
 protected:
@@ -38,6 +25,7 @@ protected:
         blade_band.end = 60.0f;
         grass_host::TargetDesc t;
         t.width = t.height = 96;
+        t.read_depth = true;
         start(t);
         mechanics = grass_default_blade_mechanics();
         mechanics.variation = 0.0f;
@@ -47,11 +35,14 @@ protected:
     grass_view_desc top_view(double cx, double cz, double half, double time) const {
         const double eye[3] = {cx, kEyeHeight, cz}, target[3] = {cx, 0.0, cz};
         grass_view_desc v = view(eye, target);
+        // The host's clip convention (GL: y up, z -1..1; Vulkan: y down, z 0..1); either way
+        // the stored depth runs linearly from 0 at kNear to 1 at kFar.
+        const bool vulkan = GetParam() == GRASS_BACKEND_VULKAN;
         std::memset(v.projection, 0, sizeof v.projection);
         v.projection[0] = float(1.0 / half);
-        v.projection[5] = float(1.0 / half);
-        v.projection[10] = -2.0f / (kFar - kNear);
-        v.projection[14] = -(kFar + kNear) / (kFar - kNear);
+        v.projection[5] = float((vulkan ? -1.0 : 1.0) / half);
+        v.projection[10] = vulkan ? -1.0f / (kFar - kNear) : -2.0f / (kFar - kNear);
+        v.projection[14] = vulkan ? -kNear / (kFar - kNear) : -(kFar + kNear) / (kFar - kNear);
         v.projection[15] = 1.0f;
         v.time = time;
         return v;
@@ -61,19 +52,15 @@ protected:
     // (kNoGrass where the ray met nothing).
     std::vector<float> heights(const grass_view_desc& v, grass_host::Image* image_out = nullptr) {
         const uint32_t w = host->target().width, h = host->target().height;
-        std::vector<float> depth(size_t(w) * h, 1.0f);
-        auto read = reinterpret_cast<ReadPixelsFn>(host->gl_proc_address("glReadPixels"));
-        EXPECT_NE(read, nullptr);
-        host->after_grass = [&] {
-            if (read) read(0, 0, int(w), int(h), kGlDepthComponent, kGlFloat, depth.data());
-        };
         grass_host::Image image = render(v);
-        host->after_grass = nullptr;
         if (image_out) *image_out = image;
+        std::vector<float> depth = image.depth;
+        EXPECT_EQ(depth.size(), size_t(w) * h) << "no depth read back";
+        depth.resize(size_t(w) * h, 1.0f);
         std::vector<float> out(depth.size(), kNoGrass);
         for (uint32_t y = 0; y < h; ++y) {
             for (uint32_t x = 0; x < w; ++x) {
-                const float d = depth[size_t(h - 1 - y) * w + x];
+                const float d = depth[size_t(y) * w + x];
                 if (d < 1.0f) out[size_t(y) * w + x] = float(kEyeHeight - (kNear + d * (kFar - kNear)));
             }
         }
@@ -140,7 +127,8 @@ TEST_P(ResponsiveTest, NoBladeInsideRestingColliders) {
     const grass_field_id f = make_field(field_desc(8)); // 2 m x 2 m
     (void)f;
     constexpr double kTolerance = 0.01; // metres
-    const grass_collider colliders[2] = {sphere(1.0, 0.25 + 0.03, 0.7, 0.25f), capsule(0.6, 1.4, 0.1 + 0.05, 1.4, 0.1f)};
+    const grass_collider colliders[2] = {sphere(1.0, 0.25 + 0.03, 0.7, 0.25f),
+                                         capsule(0.6, 1.4, 0.1 + 0.05, 1.4, 0.1f)};
     const double cx = 1.0, cz = 1.05, half = 0.65;
     const std::vector<float> before = heights(top_view(cx, cz, half, 0.0));
     ASSERT_EQ(grass_set_colliders(ctx, colliders, 2), GRASS_SUCCESS) << log;
@@ -184,6 +172,7 @@ TEST_P(ResponsiveTest, TrailRecoversWithTheTimeConstant) {
     start([] {
         grass_host::TargetDesc t; // finer: the blades' pointed tips within a few millimetres
         t.width = t.height = 192;
+        t.read_depth = true;
         return t;
     }());
     // Wide blades: a blade's pointed tip is narrower than a pixel over its last tenth at the
@@ -218,6 +207,9 @@ TEST_P(ResponsiveTest, TrailRecoversWithTheTimeConstant) {
         }
         ASSERT_GT(inner.size(), 200u);
         top[k] = *std::max_element(inner.begin(), inner.end());
+        if (k == 0) { // dt = 0 freezes the trail: the same time again draws the same heights
+            EXPECT_EQ(heights(top_view(cx, cz, half, 10.0 + times[k])), h) << "a time step of 0 must change nothing";
+        }
     }
     EXPECT_GT(top[0], 0.005) << "the trail must have started to recover";
     EXPECT_LT(top[0], top[1]);
@@ -231,7 +223,8 @@ TEST_P(ResponsiveTest, TrailRecoversWithTheTimeConstant) {
             const double r = (1.0 - std::exp(-times[0] / mid)) / (1.0 - std::exp(-times[k] / mid));
             (r > ratio ? lo : hi) = mid; // r falls from 1 (T -> 0) to t0 / t1
         }
-        std::printf("recovery: T = %.3f s from t = %g and %g s (set %g s)\n", lo, times[0], times[k], double(kRecovery));
+        std::printf("recovery: T = %.3f s from t = %g and %g s (set %g s)\n", lo, times[0], times[k],
+                    double(kRecovery));
         EXPECT_NEAR(lo / kRecovery, 1.0, 0.1) << "time constant from t = " << times[0] << " and " << times[k]
                                               << " s: heights " << top[0] << ", " << top[k] << " m";
     }
@@ -301,7 +294,92 @@ TEST_P(ResponsiveTest, TipsStayAboveTheTerrain) {
     EXPECT_EQ(below_terrain, 0u) << "grass down to " << worst << " m below the terrain";
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, ResponsiveTest, ::testing::ValuesIn(depth_backends()),
+// Length: a single straight blade (0.3 m long, 10 cm wide: its pointed tip is narrower
+// than a pixel only over its last 0.6%) bent by a strong gravity, which with jahrmann's
+// front gravity (eq. 5) lays it along its facing: its width stays across the bend, so the
+// top-down heights along the bend, root first, trace its centreline. The traced length
+// stays within 1% of 0.3 m where the bend is far from the rest pose.
+TEST_P(ResponsiveTest, BladeLengthIsPreserved) {
+    start([] {
+        grass_host::TargetDesc t;
+        t.width = t.height = 480; // 1 mm pixels
+        t.read_depth = true;
+        return t;
+    }());
+    grass_patch_desc one = grass_default_patch_desc();
+    one.blade_count = 1;
+    one.length_min = one.length_max = 1.2f; // patch units: 0.3 m
+    one.width_min = one.width_max = 0.4f;
+    one.tilt_min = one.tilt_max = 0.0f;
+    one.bend_min = one.bend_max = 0.0f; // straight up at rest
+    ASSERT_EQ(grass_create_patch(ctx, &one, &patch), GRASS_SUCCESS) << log;
+    set_mechanics();
+    grass_field_desc d = field_desc(1);
+    d.mirror_tiling = 0;
+    make_field(d);
+    grass_wind_desc w = grass_default_wind_desc();
+    w.gravity[1] = -9.81f - 36.0f; // v2 = I_v2 + L (-36 up + 9 front) / 40
+    ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << log;
+    const double cx = 0.125, cz = 0.125, half = 0.24;
+    grass_host::Image image;
+    const std::vector<float> h = heights(top_view(cx, cz, half, 1.0), &image);
+    save(image, "bent");
+    // The grass pixels, their principal axis, and the root end: where the blade is widest.
+    struct P {
+        double x, z, h;
+    };
+    std::vector<P> pts;
+    const uint32_t size = host->target().width;
+    for (uint32_t py = 0; py < size; ++py) {
+        for (uint32_t px = 0; px < size; ++px) {
+            const float v = h[size_t(py) * size + px];
+            if (v == kNoGrass) continue;
+            double x, z;
+            pixel_ground(cx, cz, half, px, py, &x, &z);
+            pts.push_back({x, z, v});
+        }
+    }
+    ASSERT_GT(pts.size(), 2000u) << "the bent blade must be seen";
+    double mx = 0, mz = 0;
+    for (const P& p : pts) mx += p.x / pts.size(), mz += p.z / pts.size();
+    double sxx = 0, sxz = 0, szz = 0;
+    for (const P& p : pts)
+        sxx += (p.x - mx) * (p.x - mx), sxz += (p.x - mx) * (p.z - mz), szz += (p.z - mz) * (p.z - mz);
+    const double angle = 0.5 * std::atan2(2.0 * sxz, sxx - szz);
+    double ax = std::cos(angle), az = std::sin(angle);
+    double lo = 1e9, hi = -1e9;
+    for (const P& p : pts) {
+        const double s = (p.x - mx) * ax + (p.z - mz) * az;
+        lo = std::min(lo, s), hi = std::max(hi, s);
+    }
+    const double bin = 2.0 * half / size;
+    const size_t bins = size_t((hi - lo) / bin) + 1;
+    std::vector<double> top(bins, -1.0), across_lo(bins, 1e9), across_hi(bins, -1e9);
+    for (const P& p : pts) {
+        const double s = (p.x - mx) * ax + (p.z - mz) * az, c = -(p.x - mx) * az + (p.z - mz) * ax;
+        const size_t b = std::min(bins - 1, size_t((s - lo) / bin));
+        top[b] = std::max(top[b], p.h);
+        across_lo[b] = std::min(across_lo[b], c), across_hi[b] = std::max(across_hi[b], c);
+    }
+    // The axis runs from the root edge (as wide as the blade) to the pointed tip.
+    const double width_first = across_hi[0] - across_lo[0], width_last = across_hi[bins - 1] - across_lo[bins - 1];
+    EXPECT_GT(std::max(width_first, width_last), 0.07) << "the axis must cross the root edge";
+    EXPECT_LT(std::min(width_first, width_last), 0.02) << "the axis must end at the tip";
+    if (width_first < width_last) std::reverse(top.begin(), top.end());
+    double len = std::hypot(0.5 * bin, top[0]), prev = top[0];
+    size_t seen = 1;
+    for (size_t b = 1; b < bins; ++b) {
+        if (top[b] < 0.0) continue;
+        len += std::hypot(bin, top[b] - prev); // a bin without grass: skipped along the axis
+        prev = top[b];
+        ++seen;
+    }
+    std::printf("bent blade: traced %.4f m over %zu of %zu bins, tip at %.4f m\n", len, seen, bins, prev);
+    EXPECT_GT(hi - lo, 0.12) << "the blade must be bent well away from upright";
+    EXPECT_NEAR(len, 0.3, 0.003);
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, ResponsiveTest, ::testing::ValuesIn(enabled_backends()),
                          [](const ::testing::TestParamInfo<grass_backend>& p) { return backend_name(p.param); });
 
 } // namespace

@@ -18,8 +18,8 @@ struct TierCase {
     uint32_t slices;
     const char* name;
 };
-const TierCase kTiers[3] = {{GRASS_TIER_GEOMETRY, 0, "geometry"}, {GRASS_TIER_VOLUME, 8, "volume"},
-                            {GRASS_TIER_IMAGE, 0, "image"}};
+const TierCase kTiers[3] = {
+    {GRASS_TIER_GEOMETRY, 0, "geometry"}, {GRASS_TIER_VOLUME, 8, "volume"}, {GRASS_TIER_IMAGE, 0, "image"}};
 
 // An 8 x 8 cell field (2 m) seen from above at an angle, one tier at every distance.
 const double kEye[3] = {1.0, 1.6, -0.2};
@@ -157,7 +157,8 @@ TEST_P(ResponsiveTiersTest, TrailVisibleInEveryTier) {
         save(still, std::string(tier.name) + ".still");
         save(trail, std::string(tier.name) + ".trail");
         expect_grass(still, host->target(), 0.3, tier.name);
-        const double noise = std::fabs(region_mean(still, cx, cy, radius_px) - region_mean(other_seed, cx, cy, radius_px));
+        const double noise =
+            std::fabs(region_mean(still, cx, cy, radius_px) - region_mean(other_seed, cx, cy, radius_px));
         const double change = std::fabs(region_mean(trail, cx, cy, radius_px) - region_mean(still, cx, cy, radius_px));
         EXPECT_GT(change, std::max(3.0 * noise, 3.0))
             << tier.name << ": trail changes its region by " << change << " levels, seeds by " << noise;

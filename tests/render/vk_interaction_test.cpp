@@ -2,7 +2,7 @@
 // dispatch table (vk_intercept.hpp counts the dispatches grass records):
 // - grass_vk_prepare_frame records one dispatch per map level for a frame with colliders, and
 //   none for a frame of still grass, which holds no responsive GPU memory; the frame with a
-//   collider shows its trail where the collider is, far more than anywhere else; once the
+//   collider shows its trail where the collider is and nothing changes far from it; once the
 //   map is dropped (grass_set_interaction) no pass runs and its memory is given back;
 // - the barriers of grass_vk.h satisfy the synchronization validation of
 //   VK_LAYER_KHRONOS_validation over frames that write and read the map, remake it and
@@ -150,10 +150,9 @@ TEST(VkInteraction, PrepareFrameRecordsThePassOnlyForFramesWithColliders) {
     const double far_away = mean_difference_near(still, pressed, cx, cy, 30.0, false);
     std::printf("[ measured ] the ball changes the image by %.2f levels within 8 px of it, %.3f beyond 30 px\n",
                 near_ball, far_away);
-    // Far from it the blades' equilibrium (blade_dynamics.glsl) leaves them within a few
-    // levels of the still shape (3.8 measured); the trail is an order of magnitude more.
+    // Far from it a blade without force keeps its rest pose (0.000 levels measured).
     EXPECT_GT(near_ball, 6.0) << "no trail where the ball is";
-    EXPECT_GT(near_ball, 5.0 * far_away) << "the grass changed as much far from the ball";
+    EXPECT_LT(far_away, 0.5) << "the grass changed far from the ball";
 
     // Without colliders and with the map dropped, no pass and the map's memory is given back.
     ASSERT_EQ(grass_set_colliders(s.ctx, nullptr, 0), GRASS_SUCCESS) << s.log;

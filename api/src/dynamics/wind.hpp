@@ -1,4 +1,4 @@
-// The wind of a context (bakay2003 3.3, jahrmann2017 5.2): a mean wind with gusts and
+// The wind of a context (bakay2003 3.3, jahrmann2017 5.1): a mean wind with gusts and
 // turbulence, local sources (a downwash, a cone, a blast) and the environmental gravity.
 // The shaders evaluate it where blades and slices are drawn (api/shaders/wind.glsl); the
 // core validates it and packs its parameters, with the gust phases at the camera computed
