@@ -27,20 +27,29 @@ function(grass_embed_glsl out_cpp namespace)
 endfunction()
 
 # grass_compile_spirv(<out_cpp_list_var> <namespace> <shader>...): SPIR-V word arrays.
+# With SPIRV_DEFINE set by the caller (a macro name), the shaders are compiled with it
+# defined and their arrays are named <shader>_<lower-case macro> (blade_vert_grass_responsive).
 function(grass_compile_spirv out_var namespace)
   if(NOT SHADER_DIR)
     set(SHADER_DIR "${GRASS_SHADER_DIR}")
   endif()
   find_program(GRASS_GLSLC glslc REQUIRED)
+  set(define_args "")
+  set(suffix "")
+  if(SPIRV_DEFINE)
+    set(define_args "-D${SPIRV_DEFINE}")
+    string(TOLOWER "_${SPIRV_DEFINE}" suffix)
+  endif()
   set(outputs "")
   foreach(s IN LISTS ARGN)
     string(REPLACE "." "_" name "${s}")
-    set(inc "${CMAKE_CURRENT_BINARY_DIR}/spirv/${s}.inc")
+    set(name "${name}${suffix}")
+    set(inc "${CMAKE_CURRENT_BINARY_DIR}/spirv/${name}.inc")
     set(cpp "${CMAKE_CURRENT_BINARY_DIR}/spirv/${name}.cpp")
     add_custom_command(
       OUTPUT "${cpp}"
       COMMAND ${CMAKE_COMMAND} -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/spirv"
-      COMMAND ${GRASS_GLSLC} --target-env=vulkan1.1 -Werror -O -mfmt=c -I "${SHADER_DIR}"
+      COMMAND ${GRASS_GLSLC} --target-env=vulkan1.1 -Werror -O -mfmt=c -I "${SHADER_DIR}" ${define_args}
               -o "${inc}" "${SHADER_DIR}/${s}"
       COMMAND ${CMAKE_COMMAND} "-DINPUT=${inc}" "-DNAME=${name}" "-DOUTPUT=${cpp}" "-DNAMESPACE=${namespace}"
               -P "${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake"

@@ -3,9 +3,11 @@
 #include "blade_interface.glsl"
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
+#ifdef GRASS_RESPONSIVE // responsive grass variants only (blade_interface.glsl)
 #include "wind.glsl"
 #include "interaction.glsl"
 #include "blade_dynamics.glsl"
+#endif
 
 layout(location = 0) in vec3 a_position;     // patch units
 layout(location = 1) in vec3 a_normal;
@@ -53,6 +55,7 @@ void main() {
     vec3 position = mat3(field.patch_to_world) * vec3(p.x, p.y + ground, p.z) + i_origin.xyz;
     v_normal = mat3(field.patch_to_world) * n;
     v_albedo = modulate_color(a_color.rgb, cell_point);
+#ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
         // Responsive grass (blade_dynamics.glsl): the blade's curve moves from its rest pose
         // I to the deformed one; each vertex keeps its offset across the blade (its width).
@@ -81,6 +84,7 @@ void main() {
         v_normal += scale * (dot(rest_n, v_normal) < 0.0 ? -turn : turn);
         v_albedo *= pose.shade;
     }
+#endif
     v_position = position;
     v_shape = vec2(a_root_shape.z, p.y);
     v_density = density;

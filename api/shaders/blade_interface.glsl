@@ -13,6 +13,12 @@
 #define GRASS_MAP_HEIGHT 16u
 #define GRASS_WIND 32u        // responsive grass: wind or gravity (wind.glsl)
 #define GRASS_INTERACTION 64u // responsive grass: the interaction map is bound (interaction.glsl)
+// Responsive grass's code (and its bindings 10-12) is compiled only where GRASS_RESPONSIVE
+// is defined: the shaders of still grass are exactly what they were, and declare no binding
+// they do not use (a Vulkan pipeline layout must hold every binding a module declares and
+// uses, whatever its specialization constants say). GL: defined with GRASS_FEATURES for the
+// masks with GRASS_WIND or GRASS_INTERACTION; Vulkan: a second SPIR-V module per shader,
+// compiled with -DGRASS_RESPONSIVE, for those pipelines.
 #ifdef VULKAN
 layout(constant_id = 0) const uint GRASS_FEATURES = 0u;
 #elif !defined(GRASS_FEATURES)

@@ -6,9 +6,11 @@
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
 #include "sample_coverage.glsl"
+#ifdef GRASS_RESPONSIVE // responsive grass variants only (blade_interface.glsl)
 #include "wind.glsl"
 #include "interaction.glsl"
 #include "shell_bend.glsl"
+#endif
 
 layout(location = 0) in vec3 v_position;
 layout(location = 1) in vec2 v_local;
@@ -21,6 +23,7 @@ void main() {
     float shade = 1.0;
     float turn = 0.0; // the bent tangent's angle at half height (shell_bend_normal)
     vec3 bend_dir = vec3(0.0);
+#ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
         // Responsive grass (shell_bend.glsl): the quad stands for the grass at half its
         // height, which a bend moves by x(1/2) along its direction: the slice is read that
@@ -37,6 +40,7 @@ void main() {
         local = max(local, -vec2(v_first_cell)); // not before the field's first cell
         shade = bend.shade;
     }
+#endif
     vec2 cell = floor(local);
     vec2 s = mirror_signs(uvec2(ivec2(v_first_cell) + ivec2(cell)));
     vec2 f = local - cell;
@@ -79,7 +83,9 @@ void main() {
         u.y *= sin_elevation;
         n = dot(u, u) > 1e-8 ? normalize(u) * r : vec3(0.0, r, 0.0);
     }
+#ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) n = shell_bend_normal(n, bend_dir, turn);
+#endif
     vec3 to_camera = world_to_patch_direction(normalize(-v_position));
     vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
     float height = normal_height.w * field.blade_params.w; // the grazing view's (slice_baker.cpp)

@@ -8,9 +8,11 @@
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
 #include "sample_coverage.glsl"
+#ifdef GRASS_RESPONSIVE // responsive grass variants only (blade_interface.glsl)
 #include "wind.glsl"
 #include "interaction.glsl"
 #include "shell_bend.glsl"
+#endif
 
 layout(location = 0) in vec3 v_local;
 layout(location = 1) flat in vec3 v_camera_local;
@@ -58,6 +60,7 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     float shade = 1.0;
     float turn = 0.0;   // the bent tangent's angle at this height (shell_bend_normal)
     vec3 bend_dir = vec3(0.0);
+#ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
         vec3 up = normalize(field.field_up.xyz);
         float ground_y = has_map(GRASS_MAP_HEIGHT) ? hit.y - h.y : 0.0;
@@ -70,6 +73,7 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
         turn = bend.angle * rest_y / g_size.y;
         bend_dir = vec3(d.x, 0.0, d.z);
     }
+#endif
     vec2 cell = floor(h.xz);
     vec2 global = vec2(v_cell.xy) + cell;
     if (any(lessThan(global, vec2(0.0))) || any(greaterThanEqual(global, g_field_cells - 0.5))) return;
@@ -123,7 +127,9 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     vec4 normal_height = textureLod(slice_normal, coord, lod);
     vec3 nrm = normal_height.xyz * 2.0 - 1.0;
     nrm.xz *= s;
+#ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) nrm = shell_bend_normal(nrm, bend_dir, turn);
+#endif
     // The horizontal slice's heights are its blades' tips; a vertical slice's hit is at h.y.
     float ao = blade_ambient_occlusion(density, kind == 2 ? normal_height.w * g_size.y : h.y, field.blade_params.x,
                                        field.blade_params.y);

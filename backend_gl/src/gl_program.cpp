@@ -59,8 +59,10 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
                          "%s: %s does not start with a #version line (internal error)", function, stage_name);
     }
-    char define[64];
-    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n", features);
+    char define[96];
+    const bool responsive = (features & (kFeatureWind | kFeatureInteraction)) != 0;
+    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s", features,
+                  responsive ? "#define GRASS_RESPONSIVE 1\n" : "");
     const GLchar* strings[3] = {source, define, newline + 1};
     const GLint lengths[3] = {static_cast<GLint>(newline + 1 - source), -1, -1};
 

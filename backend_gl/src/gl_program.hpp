@@ -52,8 +52,9 @@ constexpr GLuint kInteractionImageUnit = 0;
 
 // Compiles and links the program of `kind` for the feature mask `features` (<
 // kFeatureVariants): the shaders get `#define GRASS_FEATURES <features>u` after their
-// #version line. On failure the driver's log is in the context's error message (named
-// after `function`) and nothing is left behind.
+// #version line (and `#define GRASS_RESPONSIVE 1` when the mask has kFeatureWind or
+// kFeatureInteraction). On failure the driver's log is in the context's error message
+// (named after `function`) and nothing is left behind.
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
                             uint32_t features, GLuint* out_program);
 

@@ -1,5 +1,8 @@
 #include "vk_interaction.hpp"
 
+#include "vk_pipeline.hpp"
+#include "vk_uploads.hpp"
+
 #include <cstring>
 
 namespace grass_vk_spirv {
@@ -20,17 +23,9 @@ VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
     return (value + alignment - 1) / alignment * alignment;
 }
 
+// The map's images are always GENERAL; `from` is UNDEFINED only for new ones.
 VkImageMemoryBarrier map_barrier(VkImage image, VkImageLayout from, VkAccessFlags src, VkAccessFlags dst) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask = src;
-    b.dstAccessMask = dst;
-    b.oldLayout = from;
-    b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    return b;
+    return image_barrier(image, 1, 1, from, VK_IMAGE_LAYOUT_GENERAL, src, dst);
 }
 
 } // namespace
@@ -68,20 +63,9 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
         {kInteractionBindingTileOffsets, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
         {kInteractionBindingTileColliders, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
     };
-    VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = kInteractionBindingCount;
-    set_info.pBindings = bindings;
-    *what = "the interaction pass's descriptor set layout";
-    if (!vk_ok(fn_.vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_),
-               "vkCreateDescriptorSetLayout", failure)) {
-        return false;
-    }
-    VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout_info.setLayoutCount = 1;
-    layout_info.pSetLayouts = &set_layout_;
-    *what = "the interaction pass's pipeline layout";
-    if (!vk_ok(fn_.vkCreatePipelineLayout(device_, &layout_info, nullptr, &layout_), "vkCreatePipelineLayout",
-               failure)) {
+    if (!create_set_and_pipeline_layout(
+            fn_, device_, bindings, kInteractionBindingCount, "the interaction pass's descriptor set layout",
+            "the interaction pass's pipeline layout", &set_layout_, &layout_, failure, what)) {
         return false;
     }
 

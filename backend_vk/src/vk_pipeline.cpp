@@ -3,6 +3,7 @@
 #include "vk_debug_view.hpp"
 #include "vk_slice_pipelines.hpp"
 
+#include "context/backend.hpp"
 #include "patch/patch_data.hpp"
 #include "plan/frame_plan.hpp"
 
@@ -13,6 +14,8 @@ extern const uint32_t blade_vert[];
 extern const uint32_t blade_vert_size; // bytes
 extern const uint32_t blade_frag[];
 extern const uint32_t blade_frag_size;
+extern const uint32_t blade_vert_grass_responsive[];
+extern const uint32_t blade_vert_grass_responsive_size;
 } // namespace grass_vk_spirv
 
 namespace grass::vk {
@@ -41,15 +44,16 @@ static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_
 static_assert(offsetof(TierInstance, cell) == 16 && offsetof(TierInstance, terrain) == 32 && sizeof(TierInstance) == 48,
               "instance layout of blade.vert");
 
-PipelineShape blade_shape() {
+PipelineShape blade_shape(bool responsive) {
     VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertex_input.vertexBindingDescriptionCount = 2;
     vertex_input.pVertexBindingDescriptions = kBindings;
     vertex_input.vertexAttributeDescriptionCount = sizeof(kAttributes) / sizeof(kAttributes[0]);
     vertex_input.pVertexAttributeDescriptions = kAttributes;
     // With multisampling, the blade edge alpha becomes coverage (blade.frag).
-    return PipelineShape{grass_vk_spirv::blade_vert,
-                         grass_vk_spirv::blade_vert_size,
+    return PipelineShape{responsive ? grass_vk_spirv::blade_vert_grass_responsive : grass_vk_spirv::blade_vert,
+                         responsive ? grass_vk_spirv::blade_vert_grass_responsive_size
+                                    : grass_vk_spirv::blade_vert_size,
                          grass_vk_spirv::blade_frag,
                          grass_vk_spirv::blade_frag_size,
                          vertex_input,
@@ -132,8 +136,11 @@ bool BladePipeline::create(const PipelineTarget& target, VkFailure* failure, con
 
 bool BladePipeline::create_variant(uint32_t features, VkFailure* failure, const char** what) {
     if (has_variant(features)) return true;
-    const PipelineShape shapes[kPipelineKindCount] = {blade_shape(), SlicePipelines::volume_shape(),
-                                                      SlicePipelines::image_shape(), DebugViewPipeline::shape()};
+    // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
+    const bool responsive = (features & (kFeatureWind | kFeatureInteraction)) != 0;
+    const PipelineShape shapes[kPipelineKindCount] = {blade_shape(responsive), SlicePipelines::volume_shape(responsive),
+                                                      SlicePipelines::image_shape(responsive),
+                                                      DebugViewPipeline::shape()};
     for (uint32_t kind = 0; kind < kPipelineKindCount; ++kind) {
         if (!create_pipeline_pair(fn_, device_, target_, layout_, shapes[kind], features, pipelines_[features][kind],
                                   failure, what)) {
@@ -214,21 +221,27 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
         {kBindingInteractionMap1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
         {kBindingBladeCurves, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
     };
+    return create_set_and_pipeline_layout(fn_, device_, bindings, kBindingCount, "the blade descriptor set layout",
+                                          "the blade pipeline layout", &set_layout_, &layout_, failure, what);
+}
+
+bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const VkDescriptorSetLayoutBinding* bindings,
+                                    uint32_t binding_count, const char* set_name, const char* layout_name,
+                                    VkDescriptorSetLayout* set_layout, VkPipelineLayout* layout, VkFailure* failure,
+                                    const char** what) {
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_info.bindingCount = kBindingCount;
+    set_info.bindingCount = binding_count;
     set_info.pBindings = bindings;
-    *what = "the blade descriptor set layout";
-    if (!vk_ok(fn_.vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_),
-               "vkCreateDescriptorSetLayout", failure)) {
+    *what = set_name;
+    if (!vk_ok(fn.vkCreateDescriptorSetLayout(device, &set_info, nullptr, set_layout), "vkCreateDescriptorSetLayout",
+               failure)) {
         return false;
     }
-
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout_info.setLayoutCount = 1;
-    layout_info.pSetLayouts = &set_layout_;
-    *what = "the blade pipeline layout";
-    return vk_ok(fn_.vkCreatePipelineLayout(device_, &layout_info, nullptr, &layout_), "vkCreatePipelineLayout",
-                 failure);
+    layout_info.pSetLayouts = set_layout;
+    *what = layout_name;
+    return vk_ok(fn.vkCreatePipelineLayout(device, &layout_info, nullptr, layout), "vkCreatePipelineLayout", failure);
 }
 
 bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,

@@ -76,6 +76,15 @@ struct PipelineShape {
 // binding 0: debug_tiers, volume and image): its arrays live as long as the program.
 VkPipelineVertexInputStateCreateInfo instance_only_vertex_input();
 
+// A descriptor set layout of `bindings` and a pipeline layout of that one set (the blade
+// pipelines', the interaction pass's). *what names the object being made (`set_name`,
+// `layout_name`) when it fails; what was made stays in *set_layout / *layout for the caller
+// to destroy.
+bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const VkDescriptorSetLayoutBinding* bindings,
+                                    uint32_t binding_count, const char* set_name, const char* layout_name,
+                                    VkDescriptorSetLayout* set_layout, VkPipelineLayout* layout, VkFailure* failure,
+                                    const char** what);
+
 // Index 0 of out_pipelines depth-tests and writes depth (the target's compare op), index 1
 // does neither; both vertex and fragment stages are specialised with `features` (constant
 // id 0, blade_interface.glsl). On failure both are VK_NULL_HANDLE.

@@ -13,6 +13,7 @@ namespace grass::vk {
 grass_result VkBackend::begin_frame(const FramePlan& plan) {
     frame_ += 1;
     slot_ = static_cast<uint32_t>(frame_ % desc_.frames_in_flight);
+    interaction_pending_ = false; // set below when this frame has a pass
     // The previous frame writes no more stamps (the host has submitted it). The set this
     // frame takes was written by frame frame_ - frames_in_flight, which has finished: read
     // it (and any older) now; open_frame drops it if it never ran.
@@ -45,7 +46,6 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
         }
     }
     // Responsive grass: the interaction map and this frame's pass (recorded by prepare_frame).
-    interaction_pending_ = false;
     if (plan.interaction.levels > 0) {
         if (!interaction_.prepare(slot_, frame_, plan.interaction, &failure, &what)) {
             return fail("grass_begin_frame", what, failure);

@@ -20,8 +20,9 @@ struct SlicePipelines {
     static constexpr uint32_t kVerticesPerImage = 6;            // 2 triangles
     static constexpr uint32_t kVerticesPerImageWithSkirts = 30; // on a height map: the quad and 4 skirts (image.vert)
 
-    static PipelineShape volume_shape();
-    static PipelineShape image_shape();
+    // `responsive`: the fragment shaders compiled with GRASS_RESPONSIVE (wind, trails).
+    static PipelineShape volume_shape(bool responsive);
+    static PipelineShape image_shape(bool responsive);
 };
 
 } // namespace grass::vk

@@ -2,8 +2,6 @@
 
 namespace grass::vk {
 
-namespace {
-
 VkImageMemoryBarrier image_barrier(VkImage image, uint32_t levels, uint32_t layers, VkImageLayout from,
                                    VkImageLayout to, VkAccessFlags src_access, VkAccessFlags dst_access) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
@@ -17,8 +15,6 @@ VkImageMemoryBarrier image_barrier(VkImage image, uint32_t levels, uint32_t laye
     b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
     return b;
 }
-
-} // namespace
 
 void UploadBatch::copy_buffer(VkBuffer src, VkDeviceSize src_offset, VkBuffer dst, VkDeviceSize size,
                               VkAccessFlags dst_access) {

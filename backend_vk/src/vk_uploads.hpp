@@ -12,6 +12,10 @@
 
 namespace grass::vk {
 
+// A barrier on every level and layer of a colour image (no queue family transfer).
+VkImageMemoryBarrier image_barrier(VkImage image, uint32_t levels, uint32_t layers, VkImageLayout from,
+                                   VkImageLayout to, VkAccessFlags src_access, VkAccessFlags dst_access);
+
 class UploadBatch {
 public:
     explicit UploadBatch(HostAllocator* host)

@@ -141,6 +141,39 @@ private:
         }
         if (!call("grass_update_map", [&] { return grass_update_map(ctx_, height, 0, 0, &region); })) return false;
 
+        // Responsive grass: wind with a source, colliders binned at each frame, mechanics,
+        // the interaction map remade.
+        grass_wind_source source{};
+        source.kind = GRASS_WIND_SOURCE_POINT;
+        source.speed = 10.0f;
+        source.radius = 2.0f;
+        grass_wind_desc wind = grass_default_wind_desc();
+        wind.speed = 4.0f;
+        wind.sources = &source;
+        wind.source_count = 1;
+        if (!call("grass_set_wind", [&] { return grass_set_wind(ctx_, &wind); })) return false;
+        grass_collider colliders[40] = {};
+        for (int k = 0; k < 40; ++k) {
+            colliders[k].shape = k % 2 ? GRASS_COLLIDER_CAPSULE : GRASS_COLLIDER_SPHERE;
+            colliders[k].radius = 0.3f;
+            colliders[k].centre[0] = 8.0 + 0.3 * k, colliders[k].centre[2] = 8.0 - 0.2 * k;
+            colliders[k].end[0] = colliders[k].centre[0] + 0.5, colliders[k].end[2] = colliders[k].centre[2];
+            colliders[k].velocity[0] = 1.0f;
+        }
+        if (!call("grass_set_colliders", [&] { return grass_set_colliders(ctx_, colliders, 40); })) return false;
+        const grass_blade_mechanics mechanics = grass_default_blade_mechanics();
+        if (!call("grass_set_blade_mechanics", [&] { return grass_set_blade_mechanics(ctx_, patch, &mechanics); }))
+            return false;
+        for (int frame = 0; frame < 2; ++frame) {
+            const double eye[3] = {8.0, 2.0, 4.0 + frame}, target[3] = {8.0, 0.0, 8.0};
+            grass_view_desc v = test_view(eye, target);
+            v.time = 1.0 + frame;
+            if (!call("grass_begin_frame", [&] { return grass_begin_frame(ctx_, &v); })) return false;
+            if (!call("grass_end_frame", [&] { return grass_end_frame(ctx_); })) return false;
+        }
+        const grass_interaction_desc interaction = grass_default_interaction_desc();
+        if (!call("grass_set_interaction", [&] { return grass_set_interaction(ctx_, &interaction); })) return false;
+
         const grass_quality_desc q = grass_quality_preset(GRASS_QUALITY_LOW);
         grass_patch_desc qd = grass_default_patch_desc();
         grass_tier_desc tiers[GRASS_MAX_TIERS];

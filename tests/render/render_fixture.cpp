@@ -167,6 +167,21 @@ double grass_centroid_x(const grass_host::Image& image, const uint8_t sky[3]) {
     return sum_w > 0.0 ? sum_x / sum_w : 0.0;
 }
 
+grass_result create_blade_field(grass_context* ctx, grass_patch_id patch, uint32_t cells, grass_field_id* out) {
+    grass_field_desc fd = grass_default_field_desc();
+    fd.patch = patch;
+    fd.cells_x = fd.cells_z = cells;
+    const grass_tier_desc tier{GRASS_TIER_GEOMETRY, 0};
+    grass_lod_test band{};
+    band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+    band.end = 60.0f;
+    fd.tiers = &tier;
+    fd.tier_count = 1;
+    fd.lod_tests = &band;
+    fd.lod_test_count = 1;
+    return grass_create_field(ctx, &fd, out);
+}
+
 grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
                                        const double eye[3], const double look[3], int frames,
                                        const SceneFrame& before_frame) {
@@ -181,19 +196,8 @@ grass_host::Image render_default_scene(grass_backend backend, const grass_host::
     const grass_patch_desc pd = grass_default_patch_desc();
     grass_patch_id patch{};
     EXPECT_EQ(grass_create_patch(ctx, &pd, &patch), GRASS_SUCCESS);
-    grass_field_desc fd = grass_default_field_desc();
-    fd.patch = patch;
-    fd.cells_x = fd.cells_z = cells;
-    const grass_tier_desc tier{GRASS_TIER_GEOMETRY, 0};
-    grass_lod_test band{};
-    band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
-    band.end = 60.0f;
-    fd.tiers = &tier;
-    fd.tier_count = 1;
-    fd.lod_tests = &band;
-    fd.lod_test_count = 1;
     grass_field_id field{};
-    EXPECT_EQ(grass_create_field(ctx, &fd, &field), GRASS_SUCCESS);
+    EXPECT_EQ(create_blade_field(ctx, patch, cells, &field), GRASS_SUCCESS);
     for (int frame = 0; frame < frames; ++frame) {
         grass_view_desc v = grass_host::make_view(*host, eye, look, 50.0f, 0.05f, 100.0f);
         if (before_frame) before_frame(ctx, frame, &v);

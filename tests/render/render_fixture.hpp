@@ -71,6 +71,9 @@ grass_host::TargetDesc black_or_white_target(bool white);
 void expected_sky(const grass_host::TargetDesc& t, uint8_t out[3]);
 // A pixel differs from the sky by more than `tolerance` levels in some channel.
 bool is_grass(const uint8_t* pixel, const uint8_t sky[3], int tolerance = 6);
+// A square field of `cells` x `cells` cells of `patch`, drawn by one geometry tier (blades)
+// out to 60 m.
+grass_result create_blade_field(grass_context* ctx, grass_patch_id patch, uint32_t cells, grass_field_id* out);
 // Called before each frame of render_default_scene: may set the wind, colliders and so on,
 // and change the view (its time).
 using SceneFrame = std::function<void(grass_context* ctx, int frame, grass_view_desc* view)>;

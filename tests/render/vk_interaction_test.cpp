@@ -60,19 +60,8 @@ void make_scene(Scene* s) {
     grass_patch_desc pd = grass_default_patch_desc();
     grass_patch_id patch{};
     ASSERT_EQ(grass_create_patch(s->ctx, &pd, &patch), GRASS_SUCCESS) << s->log;
-    grass_field_desc fd = grass_default_field_desc();
-    fd.patch = patch;
-    fd.cells_x = fd.cells_z = 16;
-    const grass_tier_desc tier{GRASS_TIER_GEOMETRY, 0};
-    grass_lod_test band{};
-    band.kind = GRASS_LOD_TEST_DISTANCE_BAND;
-    band.end = 60.0f;
-    fd.tiers = &tier;
-    fd.tier_count = 1;
-    fd.lod_tests = &band;
-    fd.lod_test_count = 1;
     grass_field_id field{};
-    ASSERT_EQ(grass_create_field(s->ctx, &fd, &field), GRASS_SUCCESS) << s->log;
+    ASSERT_EQ(create_blade_field(s->ctx, patch, 16, &field), GRASS_SUCCESS) << s->log;
 }
 
 grass_view_desc scene_view(const Scene& s, double time) {
