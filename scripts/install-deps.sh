@@ -16,6 +16,7 @@ packages=(
   clang-format-15 python3                                            # the style check, the docs' link check
   libglfw3-dev libimgui-dev libglm-dev libstb-dev                    # the windowed viewers: window, overlay, camera maths
   xvfb xauth                                                         # the viewers' window test (xvfb-run)
+  ffmpeg gifsicle                                                    # grass-render --animation: GIF and MP4 (gifsicle shrinks the GIF)
   # The Qt Quick 3D adapter (integration/qtquick3d) and its tests under a virtual X server
   qt6-base-dev qt6-base-dev-tools qt6-declarative-dev qt6-qpa-plugins
   qml6-module-qtquick qml6-module-qtquick-window qml6-module-qtqml-workerscript

@@ -1,8 +1,10 @@
 #include "scene.hpp"
 
 #include "gltf_scene.hpp"
+#include "responsive_scene.hpp"
 
-#include <nlohmann/json.hpp>
+#include "scene_json.hpp"
+
 #include <png.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include <fstream>
 #include <limits>
 #include <stdexcept>
-#include <type_traits>
 #include <vector>
 
 namespace grass_sample {
@@ -50,75 +51,7 @@ Scene demo_scene() {
 
 namespace {
 
-using nlohmann::json;
-
-// A JSON number as T, refused by name when T cannot hold it (nlohmann's get<T> converts with a
-// plain cast: 1e308 into an unsigned or a float is undefined behaviour, found by fuzz_scene).
-template <class T>
-T number_as(const json& v, const std::string& what) {
-    if (!v.is_number()) throw std::runtime_error(what + " must be a number, not " + v.dump());
-    auto refuse = [&]() -> T { throw std::runtime_error(what + " is " + v.dump() + ", out of range"); };
-    if constexpr (std::is_integral_v<T>) {
-        using L = std::numeric_limits<T>;
-        if (v.is_number_float()) {
-            const double d = v.get<double>();
-            // [min, 2^digits): exact bounds in double for every integer type used here.
-            const double top = std::ldexp(1.0, L::digits);
-            if (!(d == std::floor(d)) || d < static_cast<double>(L::lowest()) || !(d < top)) return refuse();
-            return static_cast<T>(d);
-        }
-        if (v.is_number_unsigned()) {
-            const uint64_t u = v.get<uint64_t>();
-            if (u > static_cast<uint64_t>(L::max())) return refuse();
-            return static_cast<T>(u);
-        }
-        const int64_t i = v.get<int64_t>();
-        if constexpr (std::is_unsigned_v<T>) {
-            if (i < 0 || static_cast<uint64_t>(i) > static_cast<uint64_t>(L::max())) return refuse();
-        } else {
-            if (i < static_cast<int64_t>(L::lowest()) || i > static_cast<int64_t>(L::max())) return refuse();
-        }
-        return static_cast<T>(i);
-    } else {
-        const double d = v.get<double>();
-        if (std::fabs(d) > static_cast<double>(std::numeric_limits<T>::max())) return refuse();
-        return static_cast<T>(d);
-    }
-}
-
-template <class T>
-void read(const json& j, const char* key, T* out) {
-    if (!j.contains(key)) return;
-    if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
-        *out = number_as<T>(j.at(key), std::string("\"") + key + "\"");
-    } else {
-        *out = j.at(key).get<T>();
-    }
-}
-
-// A JSON array of numbers as T, each checked as number_as does.
-template <class T>
-std::vector<T> numbers_as(const json& v, const std::string& what) {
-    if (!v.is_array()) throw std::runtime_error(what + " must be an array of numbers, not " + v.dump());
-    std::vector<T> out;
-    for (const json& e : v) out.push_back(number_as<T>(e, what));
-    return out;
-}
-
-template <class T>
-void read3(const json& j, const char* key, T out[3]) {
-    if (!j.contains(key)) return;
-    const auto v = numbers_as<T>(j.at(key), std::string("\"") + key + "\"");
-    if (v.size() != 3) throw std::runtime_error(std::string("\"") + key + "\" must have 3 numbers");
-    for (int k = 0; k < 3; ++k) out[k] = v[k];
-}
-void check_keys(const json& j, const char* where, std::initializer_list<const char*> allowed) {
-    for (auto it = j.begin(); it != j.end(); ++it) {
-        bool known = false;
-        for (const char* a : allowed) known = known || it.key() == a;
-        if (!known) throw std::runtime_error(std::string("unknown key \"") + it.key() + "\" in " + where);
-    }
-}
+using namespace scene_json;
 
 // A PNG whose header claims more texels than a design map may have (grass_map_desc: at most
 // 16384 a side) is refused before its pixels are allocated: a 60-byte file could otherwise
@@ -248,7 +181,8 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
         s->lod_tests.clear();
         s->density_texels.clear();
         s->density_width = s->density_height = 0;
-        check_keys(j, "the scene", {"patch", "field", "camera", "light", "image", "ground"});
+        check_keys(j, "the scene",
+                   {"patch", "field", "camera", "light", "image", "ground", "wind", "interaction", "colliders"});
         if (j.contains("ground")) {
             const json& g = j["ground"];
             if (g.is_boolean()) {
@@ -264,7 +198,7 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
             check_keys(p, "\"patch\"",
                        {"blade_count", "subdivisions", "length", "width", "tilt", "bend", "root_color", "tip_color",
                         "blade_color_variation", "vertex_color_variation", "threshold_mode", "cluster_sigma",
-                        "cluster_frequency", "ao_impact", "ao_height", "seed"});
+                        "cluster_frequency", "ao_impact", "ao_height", "seed", "mechanics"});
             auto& d = s->patch;
             read(p, "blade_count", &d.blade_count);
             read(p, "subdivisions", &d.subdivisions);
@@ -374,6 +308,7 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
             read(im, "height", &s->height);
             read(im, "samples", &s->samples);
         }
+        read_responsive(j, &s->responsive);
     } catch (const std::exception& e) {
         if (error) *error = path + ": " + e.what();
         return false;

@@ -6,6 +6,7 @@
 
 #include "headless_host.hpp"
 #include "host_mesh.hpp"
+#include "responsive.hpp"
 
 #include <cstdint>
 #include <string>
@@ -55,6 +56,9 @@ struct Scene {
     // The host's own meshes (a glTF scene's terrain, rocks and buildings), drawn before grass
     // into the depth it shares.
     std::vector<grass_host::HostMesh> meshes;
+    // Wind, colliders on their paths, the interaction map and the blade mechanics
+    // (docs/responsive.md); none given: still grass.
+    Responsive responsive;
 };
 
 // The demo: a 12 m x 12 m lawn of 0.25 m cells centred on the origin, clustered blades,

@@ -1,7 +1,9 @@
 // grass-render: renders the demo scene (or a JSON scene) headless with the GL or Vulkan
-// backend, writes a PNG and prints the frame's stats.
+// backend, writes a PNG and prints the frame's stats; with --frames, an animation (wind,
+// moving colliders and their trails: docs/responsive.md).
 #include <grass/grass.h>
 
+#include "animation.hpp"
 #include "cli.hpp"
 #include "gltf_scene.hpp"
 #include "headless_host.hpp"
@@ -13,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -25,6 +28,11 @@ struct Options {
     bool debug_cells = false;
     float far_m = 0.0f, fov = 0.0f, density = -1.0f;
     uint32_t width = 0, height = 0, samples = 0;
+    // Responsive grass: the frames' times and what moves.
+    double time = 0.0, fps = 24.0;
+    uint32_t frames = 1;
+    std::string wind, animation_dir;
+    std::vector<std::string> colliders;
 };
 
 void add_options(CLI::App& app, Options* o) {
@@ -47,9 +55,53 @@ void add_options(CLI::App& app, Options* o) {
     app.add_option("--far", o->far_m, "far plane of the host's projection in metres (default from the scene, 500)")
         ->check(grass_sample::open_range(1, 1e8));
     app.add_option("--cache", o->cache_dir, "cache baked slices in DIR (an existing directory)");
+    app.add_option("--time", o->time, "time of the first frame in seconds (grass_view_desc.time: wind, paths)")
+        ->check(CLI::Range(-1e9, 1e9))
+        ->capture_default_str();
+    app.add_option("--frames", o->frames, "frames to render, 1/fps apart (the last one is --output)")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    app.add_option("--fps", o->fps, "frames per second: the time step between frames is 1/fps")
+        ->check(grass_sample::open_range(0, 1e4))
+        ->capture_default_str();
+    app.add_option("--wind", o->wind, "mean wind DX,DZ,SPEED[,GUST]: direction across y, m/s, gust strength")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                grass_wind_desc w = grass_default_wind_desc();
+                std::string error;
+                return grass_sample::parse_wind(text, &w, &error) ? std::string() : error;
+            },
+            "DX,DZ,SPEED[,GUST]"));
+    app.add_option("--collider", o->colliders,
+                   "a collider (repeatable): sphere:X,Y,Z,R[,VX,VY,VZ] or capsule:AX,AY,AZ,BX,BY,BZ,R[,VX,VY,VZ], "
+                   "metres, moving at the velocity in m/s from --time on")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                grass_sample::SceneCollider c;
+                std::string error;
+                return grass_sample::parse_collider(text, 0.0, 1.0, &c, &error) ? std::string() : error;
+            },
+            "SHAPE:NUMBERS"));
+    app.add_option("--animation", o->animation_dir,
+                   "write every frame to DIR/frame-NNNN.png, then DIR/animation.gif and DIR/animation.mp4 (ffmpeg)");
 }
 
-// What a glTF scene brought besides grass; colliders are listed until grass has them.
+// The command line's wind and colliders over the scene file's.
+void apply_responsive_options(const Options& o, grass_sample::Responsive* r) {
+    std::string error;
+    if (!o.wind.empty()) {
+        grass_sample::parse_wind(o.wind, &r->wind, &error);
+        r->wind_given = true;
+    }
+    const double end = o.time + (o.frames - 1) / o.fps;
+    for (const std::string& text : o.colliders) {
+        grass_sample::SceneCollider c;
+        grass_sample::parse_collider(text, o.time, end, &c, &error);
+        r->colliders.push_back(c);
+    }
+}
+
+// What a glTF scene brought besides grass.
 void print_gltf(const grass_sample::GltfInfo& g, const grass_sample::Scene& scene) {
     std::printf("  glTF terrain    %s: %llu triangles, maps of %u x %u texels\n", g.terrain.c_str(),
                 static_cast<unsigned long long>(g.terrain_triangles), g.map_width, g.map_height);
@@ -61,7 +113,7 @@ void print_gltf(const grass_sample::GltfInfo& g, const grass_sample::Scene& scen
         std::printf("  glTF collider   %s: %s radius %.3f m at (%.3f, %.3f, %.3f)", c.node.c_str(),
                     sphere ? "sphere" : "capsule", c.radius, c.a[0], c.a[1], c.a[2]);
         if (!sphere) std::printf(" to (%.3f, %.3f, %.3f)", c.b[0], c.b[1], c.b[2]);
-        std::printf(" (not passed to grass: it has no colliders yet)\n");
+        std::printf(" (not passed to grass by the sample tools)\n");
     }
     for (const std::string& note : g.notes) std::printf("  glTF note       %s\n", note.c_str());
 }
@@ -98,6 +150,11 @@ int main(int argc, char** argv) {
     if (o.far_m > 0.0f) scene.far_m = o.far_m;
     if (o.width) scene.width = o.width, scene.height = o.height;
     if (o.samples) scene.samples = o.samples;
+    apply_responsive_options(o, &scene.responsive);
+    // The host draws the colliders (balls, legs) and point wind sources and moves them every frame.
+    const size_t first_mesh = scene.meshes.size();
+    for (grass_host::HostMesh& m : grass_sample::moving_meshes(scene.responsive, o.time))
+        scene.meshes.push_back(std::move(m));
 
     auto host = grass_host::Host::create(backend, grass_sample::target_desc(scene), &error);
     if (!host) return fail("cannot create the headless host: " + error);
@@ -139,6 +196,7 @@ int main(int argc, char** argv) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_field).count();
     grass_host::Image image;
     double frame_ms = 0.0;
+    std::string animation_error; // the animation's directory, frames, GIF or MP4 failed
     const bool scene_ready = r == GRASS_SUCCESS;
     if (scene_ready) {
         grass_view_desc view =
@@ -146,14 +204,34 @@ int main(int argc, char** argv) {
         if (o.debug_tiers) view.flags |= GRASS_VIEW_FLAG_DEBUG_TIERS;
         if (o.debug_cells) view.flags |= GRASS_VIEW_FLAG_DEBUG_CELLS;
         grass_sample::apply_light(scene, &view);
-        const auto f0 = std::chrono::steady_clock::now();
-        r = host->render(ctx, view, nullptr, &image, &error);
-        frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - f0).count();
+        grass_sample::Animation animation;
+        const bool animate = !o.animation_dir.empty();
+        if (animate) animation.open(o.animation_dir, o.fps, &animation_error);
+        // Each frame 1/fps after the previous: the wind's time and the paths' positions; the
+        // colliders' velocities sweep what they did over that step.
+        const double step = 1.0 / o.fps;
+        for (uint32_t k = 0; k < o.frames && r == GRASS_SUCCESS && animation_error.empty(); ++k) {
+            view.time = o.time + k * step;
+            r = grass_sample::apply_responsive(ctx, patch, scene.responsive, view.time, step, k == 0);
+            if (r != GRASS_SUCCESS) break;
+            const auto origins = grass_sample::moving_mesh_origins(scene.responsive, view.time);
+            for (size_t i = 0; i < origins.size(); ++i) host->move_mesh(first_mesh + i, origins[i].data());
+            const auto f0 = std::chrono::steady_clock::now();
+            r = host->render(ctx, view, nullptr, &image, &error);
+            frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - f0).count();
+            if (r == GRASS_SUCCESS && animate) animation.add(image, &animation_error);
+        }
+        if (r == GRASS_SUCCESS && animate && animation_error.empty() && animation.finish(&animation_error)) {
+            std::printf("grass-render: wrote %zu frames to %s/, %s and %s\n", animation.frames().size(),
+                        o.animation_dir.c_str(), animation.gif().c_str(), animation.mp4().c_str());
+        }
     }
     if (r != GRASS_SUCCESS) {
         status = fail(std::string(scene_ready ? "rendering failed: " : "the scene was refused: ") +
                       grass_result_string(r) + " (" + grass_get_last_error(ctx) + ")" +
                       (error.empty() || error == grass_get_last_error(ctx) ? "" : " " + error));
+    } else if (!animation_error.empty()) {
+        status = fail("cannot write the animation: " + animation_error);
     } else if (!grass_host::write_png(output, image, &error)) {
         status = fail(error);
     } else {
@@ -186,7 +264,18 @@ int main(int argc, char** argv) {
                     static_cast<unsigned long long>(stats.blades_submitted));
         std::printf("  triangles       %llu\n", static_cast<unsigned long long>(stats.triangles));
         std::printf("  plan            %.3f ms\n", stats.plan_ms);
-        std::printf("  frame           %.1f ms (wall, incl. read-back)\n", frame_ms);
+        if (scene.responsive.any()) {
+            grass_memory_stats memory{};
+            grass_get_memory_stats(ctx, &memory);
+            std::printf("  responsive      %llu colliders (%llu in the map), %llu map texels updated, step %.4f s, "
+                        "%.2f MiB of GPU memory\n",
+                        static_cast<unsigned long long>(stats.colliders),
+                        static_cast<unsigned long long>(stats.colliders_in_map),
+                        static_cast<unsigned long long>(stats.interaction_texels), stats.time_step,
+                        static_cast<double>(memory.dynamics_gpu_bytes) / (1024.0 * 1024.0));
+        }
+        std::printf("  frame           %.1f ms (wall, incl. read-back)%s\n", frame_ms,
+                    o.frames > 1 ? ", the last of the frames" : "");
         if (is_gltf) print_gltf(gltf, scene);
         if (host->validation_messages() != 0) {
             std::printf("  validation      %u messages:\n%s\n", host->validation_messages(),

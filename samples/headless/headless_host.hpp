@@ -112,6 +112,13 @@ public:
     // Vulkan: messages the validation layers printed (warnings and errors) since creation.
     // GL: GL debug-output errors. 0 when silent.
     virtual uint32_t validation_messages() const = 0;
+    // Moves the target's mesh `index` (TargetDesc::meshes) to a new world origin from the
+    // next render on: a host object that moves (a ball that rolls).
+    // Hosts without meshes ignore it.
+    virtual void move_mesh(size_t index, const double origin[3]) {
+        (void)index;
+        (void)origin;
+    }
     virtual std::string validation_log() const = 0;
 
     // GL hosts: the address of a GL entry point in the host's context, which stays current

@@ -71,6 +71,9 @@ public:
                         std::string* error) override;
     uint32_t validation_messages() const override { return messages_; }
     std::string validation_log() const override { return log_; }
+    void move_mesh(size_t index, const double origin[3]) override {
+        if (meshes_) meshes_->set_origin(index, origin);
+    }
 
 private:
     bool create_instance(std::string* error);

@@ -4,6 +4,8 @@
 
 #include <GL/glcorearb.h>
 
+#include <algorithm>
+
 namespace grass_host_shaders {
 extern const char* const mesh_vert;
 extern const char* const mesh_frag;
@@ -150,6 +152,10 @@ bool GlMeshDrawer::init(ProcLoader loader, void* user_data, const std::vector<Ho
         g.VertexArrayAttribBinding(g.vao, a, 0);
     }
     return true;
+}
+
+void GlMeshDrawer::set_origin(size_t index, const double origin[3]) {
+    if (index < impl_->meshes.size()) std::copy(origin, origin + 3, impl_->meshes[index].origin);
 }
 
 void GlMeshDrawer::draw(const grass_view_desc& view, bool reversed_z, bool encode_srgb) {

@@ -39,6 +39,9 @@ public:
     // GL_FRAMEBUFFER_SRGB conversion): the shader encodes.
     void draw(const grass_view_desc& view, bool reversed_z, bool encode_srgb);
 
+    // Moves mesh `index` (of init's list) to a new world origin: a host object that moves.
+    void set_origin(size_t index, const double origin[3]);
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;

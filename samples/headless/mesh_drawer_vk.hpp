@@ -16,6 +16,7 @@
 #include <grass/grass.h>
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,11 @@ public:
     // Records every mesh's draw into `cmd`, inside the pass (sets viewport and scissor to
     // width x height).
     void record(VkCommandBuffer cmd, const grass_view_desc& view, uint32_t width, uint32_t height) const;
+
+    // Moves mesh `index` (of init's list) to a new world origin: a host object that moves.
+    void set_origin(size_t index, const double origin[3]) {
+        if (index < meshes_.size()) std::copy(origin, origin + 3, meshes_[index].origin);
+    }
 
 private:
     VkDevice device_ = VK_NULL_HANDLE;

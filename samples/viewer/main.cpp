@@ -12,6 +12,7 @@
 #include "overlay.hpp"
 #include "scene.hpp"
 #include "tool.hpp"
+#include "viewer_responsive.hpp"
 #include "viewer_scene.hpp"
 #include "viewer_script.hpp"
 #include "window.hpp"
@@ -47,12 +48,14 @@ struct Options {
     bool no_vsync = false, no_validation = false;
 };
 
-const char* const kScenes[] = {"football", "park", "hills", "meadow"};
+const char* const kScenes[] = {"football",      "park",        "hills",           "meadow",
+                               "football-ball", "park-walker", "hills-helicopter"};
 
 void add_options(CLI::App& app, Options* o) {
     grass_sample::add_backend_option(app, &o->backend);
     app.add_option("--scene", o->scene,
-                   "demo (built in), football, park, hills, meadow (samples/grass_render/scenes) or a scene file "
+                   "demo (built in), football, park, hills, meadow, football-ball, park-walker, hills-helicopter "
+                   "(samples/grass_render/scenes) or a scene file "
                    "(FILE.json, FILE.gltf or FILE.glb)")
         ->capture_default_str();
     grass_sample::add_size_option(app, &o->width, &o->height, 16, 8192,
@@ -211,6 +214,11 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
     double last_x = 0.0, last_y = 0.0;
     bool looking = false;
     auto last = std::chrono::steady_clock::now();
+    // Responsive grass runs on the wall clock: grass_view_desc.time in seconds since the start.
+    const auto start = last;
+    double last_time = 0.0;
+    grass_viewer::ViewerResponsive responsive(scene.responsive);
+    info.wind = responsive.wind_on();
     int status = 0;
     while (!glfwWindowShouldClose(window->glfw())) {
         glfwPollEvents();
@@ -221,6 +229,7 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
         }
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
+        const double time = std::chrono::duration<double>(now - start).count();
         last = now;
         info.frame_ms = info.frame_ms == 0.0 ? dt * 1000.0 : 0.9 * info.frame_ms + 0.1 * dt * 1000.0;
 
@@ -242,6 +251,11 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
             if (keys.pressed(GLFW_KEY_C)) info.debug_cells = !info.debug_cells;
             if (keys.pressed(GLFW_KEY_H)) info.help = !info.help;
             if (keys.pressed(GLFW_KEY_F1)) overlay = !overlay;
+            if (keys.pressed(GLFW_KEY_F2)) responsive.toggle_wind();
+            if (keys.pressed(GLFW_KEY_B))
+                responsive.toggle_ball(camera.position(), camera.forward(), scene.field.base_transform[13], time);
+            info.wind = responsive.wind_on();
+            info.ball = responsive.ball_on();
             shoot = keys.pressed(GLFW_KEY_P) || keys.pressed(GLFW_KEY_F12);
             if (keys.pressed(GLFW_KEY_M)) {
                 bool stale = false;
@@ -285,6 +299,10 @@ int run(const Options& o, grass_sample::Scene& scene, grass_viewer::ValidationLo
         view.viewport[2] = int32_t(w);
         view.viewport[3] = int32_t(h);
         grass_sample::apply_light(scene, &view);
+        view.time = time;
+        if (responsive.apply(grass.ctx, grass.scene.patch(), time, time - last_time, &error) != GRASS_SUCCESS)
+            info.status = error;
+        last_time = time;
         if (info.debug_tiers) view.flags |= GRASS_VIEW_FLAG_DEBUG_TIERS;
         if (info.debug_cells) view.flags |= GRASS_VIEW_FLAG_DEBUG_CELLS;
 

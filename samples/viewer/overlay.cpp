@@ -15,8 +15,8 @@ const char* const kKeysHelp = "  W A S D, Q E   move (Shift: 4x faster)\n"
                               "  P, F12         screenshot (grass-viewer-N.png in the working directory)\n"
                               "  F1             overlay on/off;  H: these keys\n"
                               "  Esc            quit\n"
-                              "  (to come once grass has them: F2 wind on/off, B a ball collider that\n"
-                              "   follows the mouse ray)\n";
+                              "  F2             wind on/off (the scene's, or a gusty breeze)\n"
+                              "  B              roll a ball from in front of the camera / take it away\n";
 
 void build_overlay(const OverlayInfo& info) {
     ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_Always);
@@ -60,6 +60,7 @@ void build_overlay(const OverlayInfo& info) {
     ImGui::Text("blades %llu  triangles %llu", static_cast<unsigned long long>(info.stats.blades_drawn),
                 static_cast<unsigned long long>(info.stats.triangles));
     ImGui::Text("camera %.1f, %.1f, %.1f  speed %.1f m/s", info.camera[0], info.camera[1], info.camera[2], info.speed);
+    ImGui::Text("wind %s (F2)  ball %s (B)", info.wind ? "on" : "off", info.ball ? "rolling" : "none");
     if (info.debug_tiers || info.debug_cells) {
         ImGui::Text("debug view: %s%s", info.debug_tiers ? "tiers " : "", info.debug_cells ? "cells" : "");
     }

@@ -19,7 +19,8 @@ struct OverlayInfo {
     bool gpu_available = false;
     double camera[3] = {}, speed = 0.0;
     bool debug_tiers = false, debug_cells = false, help = false;
-    std::string status; // the last screenshot or error
+    bool wind = false, ball = false; // F2, B
+    std::string status;              // the last screenshot or error
 };
 
 // The keys, one per line, as the overlay's help and --help show them.

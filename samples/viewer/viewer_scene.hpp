@@ -35,6 +35,7 @@ public:
 
     int quality() const { return quality_; }
     const grass_patch_info& patch_info() const { return patch_info_; }
+    grass_patch_id patch() const { return patch_; }
 
 private:
     grass_result make_field(int quality, grass_patch_id* patch, grass_field_id* field, std::string* error);

@@ -21,14 +21,16 @@ bool parse_script(const std::string& text, std::vector<ScriptStep>* out, std::st
         const std::string a = action;
         if (ok && a.size() == 1 && a[0] >= '0' && a[0] <= '5') {
             s.key = GLFW_KEY_0 + (a[0] - '0');
-        } else if (ok && a.size() == 1 && std::string("tcmph").find(a[0]) != std::string::npos) {
+        } else if (ok && a.size() == 1 && std::string("tcmphb").find(a[0]) != std::string::npos) {
             s.key = GLFW_KEY_A + (a[0] - 'a');
+        } else if (ok && a == "f2") {
+            s.key = GLFW_KEY_F2;
         } else if (ok && std::sscanf(a.c_str(), "size=%ux%u%c", &w, &h, &tail) == 2 && w >= 16 && h >= 16 &&
                    w <= 8192 && h <= 8192) {
             s.width = w;
             s.height = h;
         } else {
-            *error = "\"" + step + "\" is not FRAME:KEY (0-5, t, c, m, p, h) or FRAME:size=WxH (16..8192 each)";
+            *error = "\"" + step + "\" is not FRAME:KEY (0-5, t, c, m, p, h, b, f2) or FRAME:size=WxH (16..8192 each)";
             return false;
         }
         s.frame = frame;

@@ -14,7 +14,7 @@ struct ScriptStep {
     uint32_t width = 0, height = 0;
 };
 
-// "FRAME:ACTION,..." with ACTION a key of the viewer (0-5, t, c, m, p, h) or size=WxH, e.g.
+// "FRAME:ACTION,..." with ACTION a key of the viewer (0-5, t, c, m, p, h, b, f2) or size=WxH, e.g.
 // "2:m,3:5,4:size=200x120". False and *error naming the step on a bad one.
 bool parse_script(const std::string& text, std::vector<ScriptStep>* out, std::string* error);
 

@@ -51,6 +51,16 @@ foreach(tool IN LISTS tools)
   expect("${tool} --size 10" 2 "--size: \"10\" is not WxH" ${command} --size 10)
 endforeach()
 
+# grass-render's responsive-grass options: bad values are refused by name before anything renders.
+expect("grass-render --frames 0" 2 "--frames: Value 0 not in range" ${RENDER} --frames 0)
+expect("grass-render --fps 0" 2 "--fps: \"0\" is not between 0 and 10000" ${RENDER} --fps 0)
+expect("grass-render --wind 1,0" 2 "--wind: \"1,0\" is not DX,DZ,SPEED\\[,GUST\\]" ${RENDER} --wind 1,0)
+expect("grass-render --wind 0,0,3" 2 "--wind: \"0,0,3\": the direction DX,DZ is zero" ${RENDER} --wind 0,0,3)
+expect("grass-render --collider cube:0,0,0,1" 2 "--collider: \"cube:0,0,0,1\" is not sphere:X,Y,Z,R"
+       ${RENDER} --collider cube:0,0,0,1)
+expect("grass-render --collider sphere:0,0,0" 2 "--collider: \"sphere:0,0,0\" is not sphere" ${RENDER} --collider
+       sphere:0,0,0)
+
 # glTF scenes: a bad file is refused before any rendering, with exit 2 and an error that
 # names the file and what is wrong with it (tests/gltf holds the full list of hostile files).
 set(scratch "${CMAKE_CURRENT_BINARY_DIR}/cli-test-gltf")
