@@ -21,7 +21,7 @@ layout(location = 0) out vec4 out_color;
 void main() {
     vec2 local = v_local;
     float shade = 1.0;
-    float turn = 0.0; // the bent tangent's angle at half height (shell_bend_normal)
+    float turn = 0.0; // the bent tangent's angle at half height (grass_lighting_lobes_bent)
     vec3 bend_dir = vec3(0.0);
 #ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
@@ -83,15 +83,12 @@ void main() {
         u.y *= sin_elevation;
         n = dot(u, u) > 1e-8 ? normalize(u) * r : vec3(0.0, r, 0.0);
     }
-#ifdef GRASS_RESPONSIVE
-    if (has_map(GRASS_WIND | GRASS_INTERACTION)) n = shell_bend_normal(n, bend_dir, turn);
-#endif
     vec3 to_camera = world_to_patch_direction(normalize(-v_position));
     vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
     float height = normal_height.w * field.blade_params.w; // the grazing view's (slice_baker.cpp)
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
     // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
-    vec3 color = grass_lighting_lobes(modulate_color(albedo.rgb, cell_point) * shade, n, vec3(1.0, 0.0, 1.0), to_camera, sun, ao,
-                                      light_maps(cell_point));
+    vec3 color = grass_lighting_lobes_bent(modulate_color(albedo.rgb, cell_point) * shade, n, vec3(1.0, 0.0, 1.0), to_camera,
+                                           sun, ao, light_maps(cell_point), bend_dir, turn);
     out_color = debug_thresholds() ? threshold_code(threshold) : output_color(vec4(debug_tint(color), alpha));
 }

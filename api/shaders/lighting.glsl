@@ -76,8 +76,22 @@ float soft_clamp(float mu, float sigma) {
     return 0.5 * (mu + sqrt(mu * mu + 0.63662 * sigma * sigma));
 }
 
-vec3 grass_lighting_lobes(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera, vec3 sun, float ambient_occlusion,
-                          vec2 light) {
+// A normal turned as a bent column's tangent turns (responsive grass, shell_bend.glsl): by
+// angle `turn` from up towards `d` (unit, across up; patch space). No turn: n as it is.
+vec3 turned_towards(vec3 n, vec3 d, float turn) {
+    if (turn < 1e-4) return n;
+    vec3 k = vec3(d.z, 0.0, -d.x); // up x d: the axis that turns up towards d
+    float c = cos(turn), s = sin(turn);
+    return n * c + cross(k, n) * s + k * dot(k, n) * (1.0 - c);
+}
+
+// grass_lighting_lobes of slices whose grass is bent (bakay's shells lit by their bent
+// tangents): each lobe, a blade's normal, turns with the column by `turn` towards `bend_dir`.
+// The lobes turn, not the mean normal before them: the lobes fold signs that a cell's
+// mirroring flips, and turning the folded mean made mirrored cells light differently (a
+// cell-sized checkerboard under wind).
+vec3 grass_lighting_lobes_bent(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera, vec3 sun, float ambient_occlusion,
+                               vec2 light, vec3 bend_dir, float turn) {
     // The texel's mean normal: its length r < 1 says how much the blades' normals spread,
     // 1 - r^2 their variance (Toksvig), about half of it along any one direction.
     float r = length(n);
@@ -88,7 +102,7 @@ vec3 grass_lighting_lobes(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera, vec3
     vec3 b = folded.z > 0.5 ? vec3(1.0, 1.0, -1.0) : vec3(1.0, -1.0, 1.0);
     float lit = 0.0, weight = 0.0;
     for (int k = 0; k < 4; ++k) {
-        vec3 lobe = n * ((k & 1) != 0 ? a : vec3(1.0)) * ((k & 2) != 0 ? b : vec3(1.0));
+        vec3 lobe = turned_towards(n * ((k & 1) != 0 ? a : vec3(1.0)) * ((k & 2) != 0 ? b : vec3(1.0)), bend_dir, turn);
         float v = dot(lobe, to_camera);
         float w = abs(v) + 1e-3;
         lit += w * soft_clamp((v < 0.0 ? -1.0 : 1.0) * dot(lobe, sun), sigma);
@@ -96,6 +110,11 @@ vec3 grass_lighting_lobes(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera, vec3
     }
     float n_dot_l = lit / weight * sun_above_ground();
     return albedo * (frame.ambient_color.rgb * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
+}
+
+vec3 grass_lighting_lobes(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera, vec3 sun, float ambient_occlusion,
+                          vec2 light) {
+    return grass_lighting_lobes_bent(albedo, n, folded, to_camera, sun, ambient_occlusion, light, vec3(0.0), 0.0);
 }
 
 // A world direction in patch space (the inverse of patch_to_world's rotation).

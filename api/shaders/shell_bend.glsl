@@ -68,17 +68,6 @@ ShellBend shell_bend(vec3 p, vec3 up, float height_m) {
     return b;
 }
 
-// A normal of the rest grass (patch space, up = +y) turned as the bent column's tangent
-// turns at rest fraction u: by angle a u from up towards `d` (unit, across up; patch
-// space). Bakay lights the bent shells by their bent tangents; so the tiers agree with
-// the blades, whose normals turn with their curves.
-vec3 shell_bend_normal(vec3 n, vec3 d, float turn) {
-    if (turn < 1e-4) return n;
-    vec3 k = vec3(d.z, 0.0, -d.x); // up x d: the axis that turns up towards d
-    float c = cos(turn), s = sin(turn);
-    return n * c + cross(k, n) * s + k * dot(k, n) * (1.0 - c);
-}
-
 // The rest point of a bent column seen at height y (patch units above the ground, column
 // height h): its rest height u h and the offset back to its root along the bend's direction
 // (patch units). False above the bent column.

@@ -58,7 +58,7 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     // out of its cell it is drawn by the rays that cross the neighbouring cells (they reach
     // 4 cells past their carrier), and it is cut off at the field's edge (accepted).
     float shade = 1.0;
-    float turn = 0.0;   // the bent tangent's angle at this height (shell_bend_normal)
+    float turn = 0.0;   // the bent tangent's angle at this height (grass_lighting_lobes_bent)
     vec3 bend_dir = vec3(0.0);
 #ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
@@ -127,14 +127,11 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     vec4 normal_height = textureLod(slice_normal, coord, lod);
     vec3 nrm = normal_height.xyz * 2.0 - 1.0;
     nrm.xz *= s;
-#ifdef GRASS_RESPONSIVE
-    if (has_map(GRASS_WIND | GRASS_INTERACTION)) nrm = shell_bend_normal(nrm, bend_dir, turn);
-#endif
     // The horizontal slice's heights are its blades' tips; a vertical slice's hit is at h.y.
     float ao = blade_ambient_occlusion(density, kind == 2 ? normal_height.w * g_size.y : h.y, field.blade_params.x,
                                        field.blade_params.y);
     vec3 folded = kind == 0 ? vec3(0.0, 1.0, 1.0) : kind == 1 ? vec3(1.0, 1.0, 0.0) : vec3(1.0, 0.0, 1.0);
-    vec3 lit = grass_lighting_lobes(color, nrm, folded, -g_dir, g_sun, ao, light);
+    vec3 lit = grass_lighting_lobes_bent(color, nrm, folded, -g_dir, g_sun, ao, light, bend_dir, turn);
     g_color += (1.0 - g_alpha) * a * lit;
     g_alpha += (1.0 - g_alpha) * a;
     while (g_depth_reached < 5 && g_alpha >= (g_depth_reached == 0 ? 0.0 : 0.03125 * float(1 << g_depth_reached))) {
