@@ -225,6 +225,94 @@ TEST_P(ResponsiveTiersTest, UniformWindLightsMirroredCellsAlike) {
     }
 }
 
+// A ball rolling 1.6 m in 1 s leaves the same trail whether the frames come at 30 fps, 10 fps
+// or as one step of 1 s (the pass sweeps each collider over the step, and a texel keeps the
+// deepest contact of a passage), drawn by the blades. A rule that let each frame's contact
+// replace the stored one left a trail of shallower dents at 30 fps.
+TEST_P(ResponsiveTiersTest, ARollingBallsTrailIsTheSameAtAnyFrameRate) {
+    grass_blade_mechanics m = grass_default_blade_mechanics();
+    m.recovery_time = 1000.0f;
+    ASSERT_EQ(grass_set_blade_mechanics(ctx, patch, &m), GRASS_SUCCESS) << log;
+    const grass_field_id f = tier_field(kTiers[0], patch);
+    const float speed = 1.6f;
+    auto ball_at = [&](double t) {
+        grass_collider c{};
+        c.shape = GRASS_COLLIDER_SPHERE;
+        c.radius = 0.3f;
+        c.centre[0] = 0.2 + speed * t;
+        c.centre[1] = 0.22;
+        c.centre[2] = 1.0;
+        c.velocity[0] = speed;
+        return c;
+    };
+    const int steps[3] = {30, 10, 1};
+    grass_host::Image last[3];
+    grass_host::Image still;
+    for (int r = 0; r < 3; ++r) {
+        const double t0 = 10.0 + 10.0 * r;
+        const grass_interaction_desc fresh = grass_default_interaction_desc();
+        ASSERT_EQ(grass_set_interaction(ctx, &fresh), GRASS_SUCCESS) << log;
+        ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS) << log;
+        still = frame(t0);
+        for (int k = 1; k <= steps[r]; ++k) {
+            const double t = double(k) / steps[r];
+            const grass_collider c = ball_at(t);
+            ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS) << log;
+            frame(t0 + t);
+        }
+        ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS) << log;
+        last[r] = frame(t0 + 1.0); // the ball gone, no time passed: the trail as it was left
+        save(last[r], "trail-" + std::to_string(steps[r]) + "steps");
+    }
+    expect_grass(still, host->target(), 0.3, "still");
+    const double trail = mean_difference(still, last[2]);
+    EXPECT_GT(trail, 2.0) << "the ball must leave a trail";
+    for (int r = 0; r < 2; ++r) {
+        const double d = mean_difference(last[r], last[2]);
+        std::printf("[ fps      ] %d steps against one: %.3f levels per pixel (the trail itself: %.2f)\n", steps[r], d,
+                    trail);
+        EXPECT_LT(d, 0.05 * trail) << steps[r] << " steps";
+    }
+    ASSERT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
+}
+
+// The interaction map moves with the camera: a trail left here is cleared when the camera goes
+// 10 km away, and nothing of it reappears when the camera comes back; the map's memory stays
+// what it was.
+TEST_P(ResponsiveTiersTest, AfterA10KmMoveNoStaleTrailReappears) {
+    grass_blade_mechanics m = grass_default_blade_mechanics();
+    m.recovery_time = 1000.0f;
+    ASSERT_EQ(grass_set_blade_mechanics(ctx, patch, &m), GRASS_SUCCESS) << log;
+    const grass_field_id f = tier_field(kTiers[0], patch);
+    grass_collider c{};
+    c.shape = GRASS_COLLIDER_SPHERE;
+    c.radius = 0.4f;
+    c.centre[0] = 1.0;
+    c.centre[1] = 0.3;
+    c.centre[2] = 1.0;
+    const grass_host::Image still = frame(1.0);
+    ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS) << log;
+    frame(1.1);
+    ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS) << log;
+    const grass_host::Image trail = frame(1.2);
+    grass_memory_stats before{};
+    ASSERT_EQ(grass_get_memory_stats(ctx, &before), GRASS_SUCCESS);
+    EXPECT_GT(mean_difference(still, trail), 2.0) << "the ball must leave a trail";
+    const double away[3] = {kEye[0] + 10000.0, kEye[1], kEye[2]};
+    const double away_look[3] = {kLook[0] + 10000.0, kLook[1], kLook[2]};
+    grass_view_desc v = view(away, away_look);
+    v.time = 1.3;
+    render(v);
+    const grass_host::Image back = frame(1.4);
+    save(back, "after-10km");
+    grass_memory_stats after{};
+    ASSERT_EQ(grass_get_memory_stats(ctx, &after), GRASS_SUCCESS);
+    EXPECT_LT(mean_difference(still, back), 0.05) << "a stale trail reappeared";
+    EXPECT_EQ(after.dynamics_gpu_bytes, before.dynamics_gpu_bytes);
+    EXPECT_GT(after.dynamics_gpu_bytes, 0u);
+    ASSERT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, ResponsiveTiersTest, ::testing::ValuesIn(responsive_backends()),
                          [](const ::testing::TestParamInfo<grass_backend>& p) { return backend_name(p.param); });
 
