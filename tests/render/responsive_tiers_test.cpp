@@ -313,6 +313,76 @@ TEST_P(ResponsiveTiersTest, AfterA10KmMoveNoStaleTrailReappears) {
     ASSERT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
 }
 
+// The share of pixels that are green grass: green the largest channel and not dark. A NaN
+// position drops a blade (sky shows), a NaN colour writes black or garbage: both lower it.
+double green_share(const grass_host::Image& image) {
+    size_t green = 0;
+    for (uint32_t y = 0; y < image.height; ++y) {
+        for (uint32_t x = 0; x < image.width; ++x) {
+            const uint8_t* p = image.pixel(x, y);
+            green += p[1] > 20 && p[1] > p[0] && p[1] > p[2];
+        }
+    }
+    return double(green) / double(size_t(image.width) * image.height);
+}
+
+// The extremes of the issue, drawn in every tier: a 10 s time step, a 1e3 m/s wind, a collider
+// of radius 0 and one of 1e6 m over the field, colliders 1e7 m away. Each frame draws, every
+// tier keeps its green grass (green_share), and the far colliders change nothing.
+TEST_P(ResponsiveTiersTest, TheExtremesDrawFiniteGrassInEveryTier) {
+    for (const TierCase& tier : kTiers) {
+        const grass_field_id f = tier_field(tier, patch);
+        double time = 1.0;
+        ASSERT_EQ(grass_set_wind(ctx, nullptr), GRASS_SUCCESS) << log;
+        ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS) << log;
+        const grass_host::Image still = frame(time);
+        grass_collider far[2] = {};
+        for (int k = 0; k < 2; ++k) {
+            far[k].shape = k == 0 ? GRASS_COLLIDER_SPHERE : GRASS_COLLIDER_CAPSULE;
+            far[k].radius = 5.0f;
+            far[k].centre[0] = 1e7;
+            far[k].centre[2] = -1e7 * k;
+            far[k].end[0] = 1e7 + 3.0;
+            far[k].end[2] = -1e7 * k;
+            far[k].velocity[0] = 1e5f;
+        }
+        ASSERT_EQ(grass_set_colliders(ctx, far, 2), GRASS_SUCCESS) << log;
+        EXPECT_EQ(mean_difference(still, frame(time += 10.0)), 0.0) << tier.name << ": colliders 1e7 m away";
+        grass_collider zero{};
+        zero.shape = GRASS_COLLIDER_SPHERE;
+        zero.centre[0] = 1.0;
+        zero.centre[2] = 1.0;
+        ASSERT_EQ(grass_set_colliders(ctx, &zero, 1), GRASS_SUCCESS) << log;
+        EXPECT_EQ(mean_difference(still, frame(time += 10.0)), 0.0) << tier.name << ": a collider of radius 0";
+        grass_wind_desc w = grass_default_wind_desc();
+        w.speed = 1e3f;
+        w.gust_strength = 4.0f;
+        w.turbulence = 1.0f;
+        ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << log;
+        const grass_host::Image gale = frame(time += 10.0);
+        save(gale, std::string(tier.name) + ".gale");
+        const double still_green = green_share(still);
+        EXPECT_GT(still_green, 0.5) << tier.name;
+        EXPECT_GT(green_share(gale), 0.8 * still_green) << tier.name << " in a 1e3 m/s wind";
+        grass_collider huge{};
+        huge.shape = GRASS_COLLIDER_SPHERE;
+        huge.radius = 1e6f;
+        huge.centre[0] = 1.0;
+        huge.centre[1] = 1e6 - 0.02; // its underside 2 cm above the ground: everything pressed
+        huge.centre[2] = 1.0;
+        ASSERT_EQ(grass_set_colliders(ctx, &huge, 1), GRASS_SUCCESS) << log;
+        const grass_host::Image pressed = frame(time += 10.0);
+        save(pressed, std::string(tier.name) + ".huge-collider");
+        EXPECT_GT(green_share(pressed), 0.8 * still_green) << tier.name << " under a collider of 1e6 m";
+        EXPECT_GT(mean_difference(gale, pressed), 1.0) << tier.name << ": the huge collider must press the grass";
+        ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS) << log;
+        ASSERT_EQ(grass_set_wind(ctx, nullptr), GRASS_SUCCESS) << log;
+        const grass_interaction_desc fresh = grass_default_interaction_desc();
+        ASSERT_EQ(grass_set_interaction(ctx, &fresh), GRASS_SUCCESS) << log;
+        ASSERT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, ResponsiveTiersTest, ::testing::ValuesIn(responsive_backends()),
                          [](const ::testing::TestParamInfo<grass_backend>& p) { return backend_name(p.param); });
 
