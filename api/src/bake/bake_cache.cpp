@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <random>
 #include <type_traits>
 
 namespace grass {
@@ -280,12 +281,22 @@ bool store_baked(const char* directory, uint64_t key, const SliceSet& set) {
         return false;
     }
     char path[kMaxPath], temp[kMaxPath], suffix[64];
-    // A name no other writer uses at the same time (a process-wide counter, a stack address
-    // and the clock); two writers of one key write the same bytes anyway.
+    // A name no other writer uses at the same time (a process-wide counter, a stack address,
+    // the clock and the system's entropy: processes forked from one parent share the first
+    // three, and two such writers once picked the same name and one failed to store); two
+    // writers of one key write the same bytes anyway.
     static std::atomic<uint64_t> counter{0};
-    const uint64_t unique =
-        (counter.fetch_add(1) + 1) * 0x9e3779b97f4a7c15ull ^ static_cast<uint64_t>(reinterpret_cast<uintptr_t>(&path)) ^
-        static_cast<uint64_t>(std::time(nullptr)) * 0xc2b2ae3d27d4eb4full ^ static_cast<uint64_t>(std::clock());
+    uint64_t entropy = 0;
+    try {
+        std::random_device device;
+        entropy = (static_cast<uint64_t>(device()) << 32) ^ device();
+    } catch (...) {
+        entropy = 0; // no entropy source: the other parts still separate threads and runs
+    }
+    const uint64_t unique = (counter.fetch_add(1) + 1) * 0x9e3779b97f4a7c15ull ^
+                            static_cast<uint64_t>(reinterpret_cast<uintptr_t>(&path)) ^
+                            static_cast<uint64_t>(std::time(nullptr)) * 0xc2b2ae3d27d4eb4full ^
+                            static_cast<uint64_t>(std::clock()) ^ entropy * 0x94d049bb133111ebull;
     std::snprintf(suffix, sizeof(suffix), ".tmp-%016llx", static_cast<unsigned long long>(unique));
     if (!file_path(directory, key, "", path, sizeof(path)) || !file_path(directory, key, suffix, temp, sizeof(temp))) {
         return false;
