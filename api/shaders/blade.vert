@@ -7,6 +7,7 @@
 #include "wind.glsl"
 #include "interaction.glsl"
 #include "blade_dynamics.glsl"
+#include "blade_culling.glsl"
 #endif
 
 layout(location = 0) in vec3 a_position;     // patch units
@@ -56,33 +57,43 @@ void main() {
     v_normal = mat3(field.patch_to_world) * n;
     v_albedo = modulate_color(a_color.rgb, cell_point);
 #ifdef GRASS_RESPONSIVE
-    if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
-        // Responsive grass (blade_dynamics.glsl): the blade's curve moves from its rest pose
-        // I to the deformed one; each vertex keeps its offset across the blade (its width).
+    if (has_map(GRASS_WIND | GRASS_INTERACTION | GRASS_BLADE_CULLING)) {
 #ifdef VULKAN
         uint vertex = uint(gl_VertexIndex);
 #else
         uint vertex = uint(gl_VertexID);
 #endif
         uint per_blade = max(uint(field.trample.w + 0.5), 4u); // vertices per blade (set by the backend)
-        int segments = int(per_blade / 2u) - 1;
-        mat3 to_world = mat3(field.patch_to_world) * mat3(vec3(s.x, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, s.y));
-        BladePose pose = blade_pose(vertex / per_blade, i_cell.xy, to_world, root_position, segments, cell_point, ground);
         uint blade = vertex / per_blade;
-        vec3 i1 = to_world * curves[2u * blade].xyz;
+        mat3 to_world = mat3(field.patch_to_world) * mat3(vec3(s.x, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, s.y));
+        vec3 i1 = to_world * curves[2u * blade].xyz; // the rest pose, world metres from the root
         vec3 i2 = to_world * curves[2u * blade + 1u].xyz;
-        float t = a_root_shape.w;
-        vec3 rest = root_position + bezier(i1, i2, t);
-        position = bezier(pose.v1, pose.v2, t) + root_position + (position - rest);
-        // The normal turns with the tangent: cross(side, tangent) of the deformed curve,
-        // applied as the change from the rest curve's, so a still blade keeps its normal.
         vec3 side = to_world * vec3(-sin(curves[2u * blade + 1u].w), 0.0, cos(curves[2u * blade + 1u].w));
-        vec3 rest_n = cross(side, bezier_tangent(i1, i2, t));
-        vec3 new_n = cross(side, bezier_tangent(pose.v1, pose.v2, t));
-        float scale = length(v_normal);
-        vec3 turn = new_n / max(length(new_n), 1e-12) - rest_n / max(length(rest_n), 1e-12);
-        v_normal += scale * (dot(rest_n, v_normal) < 0.0 ? -turn : turn);
-        v_albedo *= pose.shade;
+        vec3 v1 = i1, v2 = i2;
+        if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
+            // Responsive grass (blade_dynamics.glsl): the blade's curve moves from its rest pose
+            // I to the deformed one; each vertex keeps its offset across the blade (its width).
+            int segments = int(per_blade / 2u) - 1;
+            BladePose pose = blade_pose(blade, i_cell.xy, to_world, root_position, segments, cell_point, ground);
+            v1 = pose.v1;
+            v2 = pose.v2;
+            float t = a_root_shape.w;
+            vec3 rest = root_position + bezier(i1, i2, t);
+            position = bezier(pose.v1, pose.v2, t) + root_position + (position - rest);
+            // The normal turns with the tangent: cross(side, tangent) of the deformed curve,
+            // applied as the change from the rest curve's, so a still blade keeps its normal.
+            vec3 rest_n = cross(side, bezier_tangent(i1, i2, t));
+            vec3 new_n = cross(side, bezier_tangent(pose.v1, pose.v2, t));
+            float scale = length(v_normal);
+            vec3 turn = new_n / max(length(new_n), 1e-12) - rest_n / max(length(rest_n), 1e-12);
+            v_normal += scale * (dot(rest_n, v_normal) < 0.0 ? -turn : turn);
+            v_albedo *= pose.shade;
+        }
+        // Per-blade culling (blade_culling.glsl), on the blade as drawn.
+        if (has_map(GRASS_BLADE_CULLING) &&
+            blade_culled(blade, root_position, v1, v2, side, field.field_up.xyz, a_threshold / max(density, 1e-30))) {
+            opacity = 0.0;
+        }
     }
 #endif
     v_position = position;

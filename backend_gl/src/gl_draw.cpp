@@ -44,8 +44,8 @@ void GlBackend::upload_frame(uint32_t samples, bool clip_zero_to_one) {
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         FieldUniforms field = plan.draws[i].uniforms;
         // Responsive grass: blade.vert finds a vertex's blade from the patch's vertices per
-        // blade (trample.w; read only by variants with kFeatureWind / kFeatureInteraction).
-        if ((plan.draws[i].features & (kFeatureWind | kFeatureInteraction)) != 0) {
+        // blade (trample.w; read only by the variants of kBladeCurveFeatures).
+        if ((plan.draws[i].features & kBladeCurveFeatures) != 0) {
             field.trample[3] = static_cast<float>(patches_[plan.draws[i].patch_slot].vertices_per_blade);
         }
         std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &field, sizeof(FieldUniforms));
@@ -85,7 +85,7 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
             bound_program = program;
         }
         gl_.BindVertexArray(patch.vertex_array);
-        if ((draw.features & (kFeatureWind | kFeatureInteraction)) != 0) {
+        if ((draw.features & kBladeCurveFeatures) != 0) {
             gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kBladeCurvesStorageBinding, patch.curves);
         }
         bind_field_maps(fields_[draw.field_slot]);
@@ -170,7 +170,7 @@ grass_result GlBackend::render(const char* function) {
     for (const TierDraw& draw : plan.draws) {
         dynamics = dynamics || (draw.features & (kFeatureWind | kFeatureInteraction)) != 0;
         reads_map = reads_map || (draw.features & kFeatureInteraction) != 0;
-        if (!debug && draw.kind == GRASS_TIER_GEOMETRY && (draw.features & (kFeatureWind | kFeatureInteraction)) != 0 &&
+        if (!debug && draw.kind == GRASS_TIER_GEOMETRY && (draw.features & kBladeCurveFeatures) != 0 &&
             patches_[draw.patch_slot].curves == 0) {
             return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
                               "%s: patch slot %u is drawn with responsive grass but its blade curves were never "

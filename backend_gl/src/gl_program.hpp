@@ -31,9 +31,11 @@ enum GlProgramKind : uint32_t {
     kProgramDebugTiers = 3, // debug_tiers.vert + debug_tiers.frag (GRASS_VIEW_FLAG_DEBUG_CELLS)
     kProgramKindCount = 4
 };
-// Every feature mask: the design maps' bits, then kFeatureWind and kFeatureInteraction.
-constexpr uint32_t kFeatureVariants = kFeatureInteraction << 1;
-static_assert(kFeatureWind == 1u << kMapRoleCount && kFeatureInteraction == kFeatureWind << 1,
+// Every feature mask: the design maps' bits, then kFeatureWind, kFeatureInteraction and
+// kFeatureBladeCulling (backend.hpp).
+constexpr uint32_t kFeatureVariants = kFeatureMaskCount;
+static_assert(kFeatureWind == 1u << kMapRoleCount && kFeatureInteraction == kFeatureWind << 1 &&
+                  kFeatureBladeCulling == kFeatureInteraction << 1,
               "feature bits follow the design maps' bits");
 
 // Responsive grass (api/shaders/interaction.glsl, blade_dynamics.glsl, interaction.comp):
@@ -52,8 +54,8 @@ constexpr GLuint kInteractionImageUnit = 0;
 
 // Compiles and links the program of `kind` for the feature mask `features` (<
 // kFeatureVariants): the shaders get `#define GRASS_FEATURES <features>u` after their
-// #version line (and `#define GRASS_RESPONSIVE 1` when the mask has kFeatureWind or
-// kFeatureInteraction). On failure the driver's log is in the context's error message
+// #version line (and `#define GRASS_RESPONSIVE 1` when the mask has one of
+// kBladeCurveFeatures). On failure the driver's log is in the context's error message
 // (named after `function`) and nothing is left behind.
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
                             uint32_t features, GLuint* out_program);

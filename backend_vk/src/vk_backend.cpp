@@ -146,7 +146,7 @@ VkBackend::SetViews VkBackend::still_views() const {
 }
 
 bool VkBackend::own_set(const TierDraw& d) {
-    return d.kind != GRASS_TIER_GEOMETRY || (d.features & (kFeatureWind | kFeatureInteraction)) != 0;
+    return d.kind != GRASS_TIER_GEOMETRY || (d.features & kBladeCurveFeatures) != 0;
 }
 
 VkBackend::SetViews VkBackend::draw_views(const TierDraw& d) const {

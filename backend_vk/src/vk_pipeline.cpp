@@ -137,7 +137,7 @@ bool BladePipeline::create(const PipelineTarget& target, VkFailure* failure, con
 bool BladePipeline::create_variant(uint32_t features, VkFailure* failure, const char** what) {
     if (has_variant(features)) return true;
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
-    const bool responsive = (features & (kFeatureWind | kFeatureInteraction)) != 0;
+    const bool responsive = (features & kBladeCurveFeatures) != 0;
     const PipelineShape shapes[kPipelineKindCount] = {blade_shape(responsive), SlicePipelines::volume_shape(responsive),
                                                       SlicePipelines::image_shape(responsive),
                                                       DebugViewPipeline::shape()};

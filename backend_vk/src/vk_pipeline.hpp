@@ -6,6 +6,7 @@
 // and the state every pipeline shares (create_pipeline_pair).
 #pragma once
 
+#include "context/backend.hpp"
 #include "vk_functions.hpp"
 #include "vk_result.hpp"
 
@@ -48,8 +49,8 @@ enum PipelineKind : uint32_t {
     kPipelineDebugView = 3,
     kPipelineKindCount = 4
 };
-// Feature masks are 7 bits: one per MapRole, then kFeatureWind and kFeatureInteraction.
-constexpr uint32_t kFeatureMaskCount = 128;
+// Feature masks are 8 bits (kFeatureMaskCount, backend.hpp): one per MapRole, then
+// kFeatureWind, kFeatureInteraction and kFeatureBladeCulling.
 
 struct PipelineTarget {
     VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats

@@ -32,7 +32,7 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
     // Responsive blades find their control points by vertex index: the vertices per blade
     // of the draw's patch (FieldUniforms::trample[3], set by the backend).
     const auto field_block = [this](const TierDraw& d, FieldUniforms* block) {
-        if ((d.features & (kFeatureWind | kFeatureInteraction)) != 0 && d.patch_slot < patches_.size()) {
+        if ((d.features & kBladeCurveFeatures) != 0 && d.patch_slot < patches_.size()) {
             block->trample[3] = float(patches_[d.patch_slot].vertices_per_blade);
         }
     };
@@ -197,7 +197,7 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
     if (debug_view) return true;
     // Responsive grass: blades bend from their patch's control points; the map's pass of
     // this frame runs before any draw reads it.
-    if (draw.kind == GRASS_TIER_GEOMETRY && (draw.features & (kFeatureWind | kFeatureInteraction)) &&
+    if (draw.kind == GRASS_TIER_GEOMETRY && (draw.features & kBladeCurveFeatures) &&
         (!patches_[draw.patch_slot].curves.buffer || patches_[draw.patch_slot].curves_pending)) {
         *problem = "the upload of its patch's blade control points";
         return false;

@@ -262,6 +262,9 @@ struct Variant {
     std::string name;                  // Row::preset and the progress line
     std::string file;                  // images: <scene>-<camera>-<backend>-<file>.png
     std::string knob, value;           // the sweep's columns ("preset" and the level's name for a preset)
+    // The sweep's blade_culling rows: per-blade culling (grass_set_blade_culling) on the field.
+    bool culled = false;
+    grass_blade_culling_desc culling = grass_default_blade_culling_desc();
 };
 
 Variant preset_variant(int level) {
@@ -303,7 +306,8 @@ struct Session {
 };
 
 bool open_session(const Options& opt, grass_backend backend, const PreparedScene& ps, const grass_quality_desc& q,
-                  uint64_t seed_offset, uint32_t width, uint32_t height, Session* session, std::string* error) {
+                  uint64_t seed_offset, uint32_t width, uint32_t height, Session* session, std::string* error,
+                  const grass_blade_culling_desc* culling = nullptr) {
     const char* be = grass_sample::backend_name(backend);
     const grass_sample::Scene& scene = ps.scene;
     grass_host::TargetDesc td = grass_sample::target_desc(scene);
@@ -348,6 +352,10 @@ bool open_session(const Options& opt, grass_backend backend, const PreparedScene
     if (r == GRASS_SUCCESS) {
         call = "grass_create_field";
         r = grass_create_field(ctx, &fd, &field);
+    }
+    if (r == GRASS_SUCCESS && culling) {
+        call = "grass_set_blade_culling";
+        r = grass_set_blade_culling(ctx, field, culling);
     }
     session->field_ms = seconds_since(t_field) * 1e3;
     if (r != GRASS_SUCCESS) {
@@ -466,7 +474,8 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
     const grass_quality_desc& q = v.q;
     const bool is_reference = v.level == GRASS_QUALITY_REFERENCE && v.knob == "preset";
     Session session;
-    if (!open_session(opt, backend, ps, q, 0, opt.width, opt.height, &session, error)) {
+    if (!open_session(opt, backend, ps, q, 0, opt.width, opt.height, &session, error,
+                      v.culled ? &v.culling : nullptr)) {
         *error += std::string(" (") + v.name + ")";
         return false;
     }
@@ -578,8 +587,14 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
 // The sweep's setups: the reference (what every frame is measured against), DEFAULT (the
 // baseline), then for each knob of grass_quality_desc but blades_everywhere a few values
 // around DEFAULT's within the knob's range (grass.h), the other knobs at DEFAULT's. A value
-// equal to DEFAULT's is left out (the baseline row has it).
-std::vector<Variant> sweep_variants() {
+// equal to DEFAULT's is left out (the baseline row has it). Then the knob blade_culling:
+// DEFAULT with Jahrmann's per-blade culling tests (grass_set_blade_culling) one at a time and
+// all together, at his values, the distance tests over the geometry tier (distance_max 0).
+// `only`: the knobs to sweep (empty: all).
+std::vector<Variant> sweep_variants(const std::vector<std::string>& only) {
+    const auto wanted = [&](const std::string& knob) {
+        return only.empty() || std::find(only.begin(), only.end(), knob) != only.end();
+    };
     const grass_quality_desc base = grass_quality_preset(GRASS_QUALITY_DEFAULT);
     std::vector<Variant> v = {preset_variant(GRASS_QUALITY_REFERENCE), preset_variant(GRASS_QUALITY_DEFAULT)};
     struct Knob {
@@ -621,6 +636,7 @@ std::vector<Variant> sweep_variants() {
          [](grass_quality_desc* q, double x) { q->msaa_samples = uint32_t(x); }},
     };
     for (const Knob& k : knobs) {
+        if (!wanted(k.name)) continue;
         for (const double x : k.values) {
             if (float(x) == float(k.current)) continue;
             Variant s;
@@ -633,6 +649,32 @@ std::vector<Variant> sweep_variants() {
             s.file = "sweep-" + s.knob + "-" + s.value;
             v.push_back(s);
         }
+    }
+    if (!wanted("blade_culling")) return v;
+    struct Culling {
+        const char* value;
+        void (*set)(grass_blade_culling_desc*);
+    };
+    const Culling cullings[] = {
+        {"orientation", [](grass_blade_culling_desc* c) { c->orientation = 1; }},
+        {"frustum", [](grass_blade_culling_desc* c) { c->view_frustum = 1; }},
+        {"distance_index", [](grass_blade_culling_desc* c) { c->distance = GRASS_DISTANCE_CULLING_BLADE_INDEX; }},
+        {"distance_threshold", [](grass_blade_culling_desc* c) { c->distance = GRASS_DISTANCE_CULLING_THRESHOLD; }},
+        {"jahrmann",
+         [](grass_blade_culling_desc* c) {
+             c->orientation = c->view_frustum = 1;
+             c->distance = GRASS_DISTANCE_CULLING_BLADE_INDEX;
+         }},
+    };
+    for (const Culling& c : cullings) {
+        Variant s = preset_variant(GRASS_QUALITY_DEFAULT);
+        s.culled = true;
+        c.set(&s.culling);
+        s.knob = "blade_culling";
+        s.value = c.value;
+        s.name = s.knob + "=" + s.value;
+        s.file = "sweep-" + s.knob + "-" + s.value;
+        v.push_back(s);
     }
     return v;
 }
@@ -725,7 +767,7 @@ int run(Options opt, bool quick) {
 
     std::vector<Variant> variants;
     if (opt.sweep) {
-        variants = sweep_variants();
+        variants = sweep_variants(opt.knobs);
     } else {
         for (int level = 0; level < GRASS_QUALITY_LEVEL_COUNT; ++level) {
             if (opt.presets.empty() || std::count(opt.presets.begin(), opt.presets.end(), level) > 0)
@@ -836,6 +878,9 @@ Subcommand add_bench(CLI::App& measure) {
                   "instead of the presets: DEFAULT with one knob at a time changed (a few values each around "
                   "DEFAULT's), the REFERENCE and DEFAULT presets as yardsticks; writes sweep.csv and sweep.md (not "
                   "bench.*). Without --scene/--camera: football, player");
+    app->add_option("--knob", o->knobs,
+                    "--sweep: only this knob (repeatable): distance_scale, transition_scale, slice_scale, "
+                    "macro_cell_scale, blade_subdivisions, blade_fraction, msaa_samples, blade_culling");
     app->add_option("--frames", o->frames, "timed frames per preset after one warm-up (median)")
         ->capture_default_str()
         ->check(CLI::Range(1, 100));

@@ -9,7 +9,9 @@
 #include "context/invariants.hpp"
 
 #include <cstring>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 namespace {
 
@@ -75,9 +77,12 @@ TEST_F(InvariantsTest, ADrawWhoseFeatureMaskIsNotItsFieldsIsAnInternalError) {
 }
 
 TEST_F(InvariantsTest, ResponsiveBitsOnlyAsTheInteractionPlanAllows) {
+    std::vector<uint32_t> base;
+    for (const auto& d : ctx->plan.draws) base.push_back(d.features);
     auto set_bits = [&](uint32_t bits) {
-        for (auto& d : ctx->plan.draws) {
-            d.features |= bits;
+        for (size_t i = 0; i < ctx->plan.draws.size(); ++i) {
+            auto& d = ctx->plan.draws[i];
+            d.features = base[i] | bits;
             d.uniforms.tiling[3] = d.features;
         }
     };
@@ -85,8 +90,17 @@ TEST_F(InvariantsTest, ResponsiveBitsOnlyAsTheInteractionPlanAllows) {
     EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
     set_bits(grass::kFeatureInteraction); // no map this frame
     expect_plan_refused("the interaction variant without the map");
-    set_bits(1u << 7);
+    set_bits(1u << 8);
     expect_plan_refused("an unknown feature bit");
+    // Per-blade culling: on geometry draws only.
+    ASSERT_EQ(ctx->plan.draws[0].kind, GRASS_TIER_GEOMETRY);
+    set_bits(grass::kFeatureBladeCulling);
+    EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
+    ctx->plan.draws[0].kind = GRASS_TIER_VOLUME;
+    expect_plan_refused("the culling variant on a volume draw");
+    EXPECT_NE(last_message().find("feature mask"), std::string::npos) << last_message();
+    ctx->plan.draws[0].kind = GRASS_TIER_GEOMETRY;
+    set_bits(0);
     // Tile lists: an entry past the colliders, offsets that do not cover the entries.
     const grass_collider c{GRASS_COLLIDER_SPHERE, 0.5f, {4.0, 0.0, 4.0}, {}, {}};
     ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);

@@ -128,7 +128,8 @@ typedef enum grass_struct_type {
     /* 0.5: responsive grass */
     GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
-    GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A
+    GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
+    GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -918,6 +919,58 @@ GRASS_API grass_interaction_desc grass_default_interaction_desc(void);
  * default. The map's GPU memory (resolution^2 x 16 bytes per level) is made at the first
  * frame with colliders and kept until this call or the context's end. */
 GRASS_API grass_result grass_set_interaction(grass_context* context, const grass_interaction_desc* desc);
+
+/* ---- Per-blade culling in the geometry tier (jahrmann2017 6.2) ---------------------- */
+
+/* Jahrmann's tests drop single blades that matter little to the picture, on the GPU, as a
+ * blade's vertices are placed (a culled blade is moved outside the clip volume: it costs its
+ * vertex work but nothing in the rasteriser). They thin the blades the geometry tier draws,
+ * on top of the quadtree's view-frustum test of whole cells and the density thresholds. All
+ * off by default; a field without them runs the shaders it ran before (no cost).
+ * grass_frame_stats.blades_drawn counts the blades before these tests (the GPU decides).
+ * docs/quality.md measures their saving and the error they add. */
+typedef enum grass_distance_culling {
+    GRASS_DISTANCE_CULLING_OFF = 0,
+    /* Jahrmann's distance test (eq. 20): n = distance_levels levels, evenly over
+     * [0, distance_max] of the distance from the camera measured across the field's up; at
+     * distance d a blade is drawn while (its index in the patch mod n) <
+     * ceil(n (1 - d / distance_max)): the nearest level keeps every blade, each farther one
+     * drops one more of n, none is drawn beyond distance_max. */
+    GRASS_DISTANCE_CULLING_BLADE_INDEX = 1,
+    /* The same thinning by the blades' density thresholds (lemme 3.3): a blade is drawn while
+     * its threshold <= local density x (1 - d / distance_max), so the density falls
+     * continuously to zero at distance_max, evenly in space (distance_levels unused). */
+    GRASS_DISTANCE_CULLING_THRESHOLD = 2
+} grass_distance_culling;
+
+typedef struct grass_blade_culling_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_BLADE_CULLING_DESC */
+    const void* next;       /* NULL */
+    /* Orientation test (eq. 17): a blade seen nearly edge-on, whose width direction makes
+     * |cos| > orientation_limit with the direction from the camera to its root, is culled.
+     * orientation_limit 0.5 .. 1 (1 culls nothing); default 0.9, Jahrmann's. */
+    grass_bool orientation;
+    float orientation_limit;
+    /* View-frustum test (eq. 18): a blade whose root, curve midpoint and tip all lie
+     * outside the view frustum widened by frustum_tolerance (a fraction of the view, in clip
+     * units relative to w) is culled. 0 .. 1; default 0.1. */
+    grass_bool view_frustum;
+    float frustum_tolerance;
+    /* Distance test (eq. 19-20): thinning with the distance, by blade index or by threshold. */
+    grass_distance_culling distance; /* default GRASS_DISTANCE_CULLING_OFF */
+    uint32_t distance_levels;        /* BLADE_INDEX: n, 1 .. 64; default 4 */
+    /* Metres, > 0 and finite, or 0 (the default): the far end of the field's geometry tiers
+     * (the largest finite end of their distance bands; refused when there is none). */
+    float distance_max;
+} grass_blade_culling_desc;
+
+/* Every test off, their parameters at Jahrmann's values. */
+GRASS_API grass_blade_culling_desc grass_default_blade_culling_desc(void);
+
+/* Sets the per-blade culling of `field` and all its grass types, from the next
+ * grass_begin_frame on; NULL turns it off. */
+GRASS_API grass_result grass_set_blade_culling(grass_context* context, grass_field_id field,
+                                               const grass_blade_culling_desc* culling);
 
 #ifdef __cplusplus
 } /* extern "C" */

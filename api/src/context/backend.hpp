@@ -30,6 +30,13 @@ constexpr uint32_t kMapBinding[kMapRoleCount] = {2, 6, 7, 8, 9};
 // shaders): responsive grass. A draw without them runs the shader of still grass.
 constexpr uint32_t kFeatureWind = 1u << 5;        // wind or gravity: blades bend, slices sway (wind.glsl)
 constexpr uint32_t kFeatureInteraction = 1u << 6; // the interaction map is bound (interaction.glsl)
+// Per-blade culling (jahrmann2017 6.2, blade_culling.glsl): geometry draws only.
+constexpr uint32_t kFeatureBladeCulling = 1u << 7;
+// The features whose shaders are the responsive variants (GRASS_RESPONSIVE): they read the
+// patch's blade control points (kBladeCurvesBinding) and the vertices per blade (trample.w).
+constexpr uint32_t kBladeCurveFeatures = kFeatureWind | kFeatureInteraction | kFeatureBladeCulling;
+// Every feature mask is below this (the variants a backend may compile).
+constexpr uint32_t kFeatureMaskCount = kFeatureBladeCulling << 1;
 // Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's
 // levels (sampler2D, RGBA32F, read with texelFetch) and the patch's blade control points
 // (readonly std430 buffer `BladeCurves`: PatchData::blade_curves).

@@ -66,11 +66,12 @@ grass_result check_plan(grass_context* ctx, const char* fn) {
                              draw.first_instance, draw.instance_count, plan.instances.size());
         }
         // The maps' bits are the field's; past them only the responsive bits, the interaction
-        // one only while the map is bound.
+        // one only while the map is bound, the culling one on geometry draws only.
         const uint32_t map_bits = (1u << kMapRoleCount) - 1u;
         const uint32_t dynamics_bits = draw.features & ~map_bits;
-        const bool dynamics_ok = (dynamics_bits & ~(kFeatureWind | kFeatureInteraction)) == 0 &&
-                                 ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0);
+        const bool dynamics_ok = (dynamics_bits & ~kBladeCurveFeatures) == 0 &&
+                                 ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0) &&
+                                 ((dynamics_bits & kFeatureBladeCulling) == 0 || draw.kind == GRASS_TIER_GEOMETRY);
         if ((draw.features & map_bits) != field->maps.features || !dynamics_ok ||
             draw.features != draw.uniforms.tiling[3]) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,

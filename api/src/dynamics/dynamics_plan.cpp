@@ -48,7 +48,7 @@ DynamicsFrame plan_dynamics(grass_context* ctx, const grass_view_desc& view) {
 
 grass_result upload_blade_curves(grass_context* ctx) {
     for (const TierDraw& draw : ctx->plan.draws) {
-        if ((draw.features & (kFeatureWind | kFeatureInteraction)) == 0) continue;
+        if ((draw.features & kBladeCurveFeatures) == 0) continue;
         Patch* patch = ctx->patches.get(draw.patch_slot);
         if (patch->blade_curves_uploaded) continue;
         const grass_result r = ctx->backend->upload_blade_curves(draw.patch_slot, patch->data);

@@ -296,7 +296,9 @@ private:
             draw.first_instance = static_cast<uint32_t>(plan.instances.size());
             draw.instance_count = static_cast<uint32_t>(candidates.size());
             draw.features = features_;
+            if (kind == GRASS_TIER_GEOMETRY && field_.culling.enabled) draw.features |= kFeatureBladeCulling;
             fill_uniforms(kind, t, &draw.uniforms);
+            draw.uniforms.tiling[3] = draw.features;
             plan.draws.push_back(draw);
             drew = true;
             const uint64_t triangles_per_blade = pd.indices_per_blade / 3;
@@ -383,6 +385,11 @@ private:
         u->trample[3] = 0.0f;
         for (int c = 0; c < 3; ++c) u->field_up[c] = static_cast<float>(field_up_[c]);
         u->field_up[3] = static_cast<float>(frame_.cell_size);
+        const BladeCulling& c = field_.culling;
+        u->culling[0] = c.orientation_limit;
+        u->culling[1] = c.frustum_tolerance;
+        u->culling[2] = c.distance_max;
+        u->culling[3] = c.distance_levels;
     }
 
     grass_context* ctx_;

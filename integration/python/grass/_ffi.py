@@ -42,7 +42,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_QUALITY_DESC": 0x67720007, "GRASS_STRUCT_TYPE_GL_DESC": 0x67720101,
         "GRASS_STRUCT_TYPE_VK_DESC": 0x67720201, "GRASS_STRUCT_TYPE_VK_RECORD_DESC": 0x67720202,
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
-        "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A,
+        "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -86,6 +86,10 @@ ENUMS = {
         "GRASS_WIND_SOURCE_POINT": 0, "GRASS_WIND_SOURCE_CONE": 1, "GRASS_WIND_SOURCE_BLAST": 2,
     },
     "grass_collider_shape": {"GRASS_COLLIDER_SPHERE": 0, "GRASS_COLLIDER_CAPSULE": 1},
+    "grass_distance_culling": {
+        "GRASS_DISTANCE_CULLING_OFF": 0, "GRASS_DISTANCE_CULLING_BLADE_INDEX": 1,
+        "GRASS_DISTANCE_CULLING_THRESHOLD": 2,
+    },
 }
 for _values in ENUMS.values():
     globals().update(_values)
@@ -247,6 +251,12 @@ class grass_interaction_desc(Structure):
                 ("level_count", c_uint32), ("texel_size", c_float * 2)]
 
 
+class grass_blade_culling_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("orientation", grass_bool),
+                ("orientation_limit", c_float), ("view_frustum", grass_bool), ("frustum_tolerance", c_float),
+                ("distance", grass_enum), ("distance_levels", c_uint32), ("distance_max", c_float)]
+
+
 class grass_gl_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("get_proc_address", grass_gl_get_proc_address_fn),
                 ("get_proc_address_user_data", c_void_p)]
@@ -316,6 +326,8 @@ FUNCTIONS = {
     "grass_set_colliders": (grass_enum, [_ctx, _P(grass_collider), c_uint32]),
     "grass_default_interaction_desc": (grass_interaction_desc, []),
     "grass_set_interaction": (grass_enum, [_ctx, _P(grass_interaction_desc)]),
+    "grass_default_blade_culling_desc": (grass_blade_culling_desc, []),
+    "grass_set_blade_culling": (grass_enum, [_ctx, grass_field_id, _P(grass_blade_culling_desc)]),
     # grass_gl.h
     "grass_default_gl_desc": (grass_gl_desc, []),
     "grass_gl_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_gl_desc), _P(_ctx)]),
