@@ -30,11 +30,14 @@ constexpr uint32_t kMapBinding[kMapRoleCount] = {2, 6, 7, 8, 9};
 // shaders): responsive grass. A draw without them runs the shader of still grass.
 constexpr uint32_t kFeatureWind = 1u << 5;        // wind or gravity: blades bend, slices sway (wind.glsl)
 constexpr uint32_t kFeatureInteraction = 1u << 6; // the interaction map is bound (interaction.glsl)
+constexpr uint32_t kFeatureWindMap = 1u << 7;     // the field's wind map is bound (wind.glsl); with kFeatureWind
 // Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's
 // levels (sampler2D, RGBA32F, read with texelFetch) and the patch's blade control points
 // (readonly std430 buffer `BladeCurves`: PatchData::blade_curves).
 constexpr uint32_t kInteractionMapBinding[2] = {10, 11};
 constexpr uint32_t kBladeCurvesBinding = 12;
+// The field's wind map (grass_set_field_wind_map): an RGBA design map, read with texelFetch.
+constexpr uint32_t kWindMapBinding = 13;
 constexpr uint32_t kNoMap = 0xffffffffu;
 
 // A design map converted by the core to 16-bit unorm, row-major, tightly packed: width x
@@ -89,6 +92,12 @@ public:
     // A field and the maps it samples (already uploaded).
     virtual grass_result upload_field(uint32_t slot, const FieldMaps& maps) = 0;
     virtual void release_field(uint32_t slot) = 0;
+    // Responsive grass: the wind map of the field in `slot` (a map slot, already uploaded, or
+    // kNoMap: none). Draws of the field with kFeatureWindMap bind it; no other draw does.
+    virtual void set_field_wind_map(uint32_t slot, uint32_t map_slot) {
+        (void)slot;
+        (void)map_slot;
+    }
 
     // Called by grass_begin_frame after the plan is built.
     virtual grass_result begin_frame(const FramePlan& plan) = 0;

@@ -7,6 +7,7 @@
 #include "context/handle_pool.hpp"
 #include "dynamics/blade_mechanics.hpp"
 #include "dynamics/dynamics_state.hpp"
+#include "dynamics/wind_map.hpp"
 #include "maps/design_map.hpp"
 #include "patch/patch_data.hpp"
 #include "plan/frame_plan.hpp"
@@ -65,6 +66,7 @@ struct Field {
     LevelExtent extents[32];              // vertical extent of each level's nodes, in cells
     float bands[GRASS_MAX_TIERS][4] = {}; // per tier: its distance band (begin, end, in, out) for the transitions
     double overhang = 0.0;                // how far blade tips may leave their cell, in cells
+    FieldWindMap wind_map;                // responsive grass: the host's wind map (grass_set_field_wind_map)
 };
 
 // Creates the backend of a new context; the context's allocator and log are ready.
