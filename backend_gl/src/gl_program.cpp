@@ -38,6 +38,7 @@ constexpr SamplerUnit kSamplerUnits[] = {
     {"height_map", kMapUnit[kMapHeight]},
     {"interaction_level0", kInteractionMapUnit[0]},
     {"interaction_level1", kInteractionMapUnit[1]},
+    {"wind_map", kWindMapUnit},
 };
 
 // Reads a shader or program info log through the context's allocator.
@@ -60,7 +61,7 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
                          "%s: %s does not start with a #version line (internal error)", function, stage_name);
     }
     char define[96];
-    const bool responsive = (features & (kFeatureWind | kFeatureInteraction)) != 0;
+    const bool responsive = (features & (kFeatureWind | kFeatureInteraction | kFeatureWindMap)) != 0;
     std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s", features,
                   responsive ? "#define GRASS_RESPONSIVE 1\n" : "");
     const GLchar* strings[3] = {source, define, newline + 1};

@@ -137,7 +137,7 @@ bool BladePipeline::create(const PipelineTarget& target, VkFailure* failure, con
 bool BladePipeline::create_variant(uint32_t features, VkFailure* failure, const char** what) {
     if (has_variant(features)) return true;
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
-    const bool responsive = (features & (kFeatureWind | kFeatureInteraction)) != 0;
+    const bool responsive = (features & (kFeatureWind | kFeatureInteraction | kFeatureWindMap)) != 0;
     const PipelineShape shapes[kPipelineKindCount] = {blade_shape(responsive), SlicePipelines::volume_shape(responsive),
                                                       SlicePipelines::image_shape(responsive),
                                                       DebugViewPipeline::shape()};
@@ -220,6 +220,7 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
         {kBindingInteractionMap0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
         {kBindingInteractionMap1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
         {kBindingBladeCurves, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {kBindingWindMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
     };
     return create_set_and_pipeline_layout(fn_, device_, bindings, kBindingCount, "the blade descriptor set layout",
                                           "the blade pipeline layout", &set_layout_, &layout_, failure, what);
