@@ -373,7 +373,9 @@ grass_result create_scene_maps(grass_context* ctx, const Scene& scene, grass_map
     return GRASS_SUCCESS;
 }
 
-grass_result create_scene_wind_map(grass_context* ctx, const Scene& scene, grass_field_id field) {
+grass_result create_scene_wind_map(grass_context* ctx, const Scene& scene, grass_wind_map_desc* out) {
+    *out = scene.wind_map_desc;
+    out->map = grass_map_id{};
     const Scene::MapImage& m = scene.wind_map;
     if (m.pixels.empty()) return GRASS_SUCCESS;
     grass_map_desc md = grass_default_map_desc();
@@ -381,10 +383,12 @@ grass_result create_scene_wind_map(grass_context* ctx, const Scene& scene, grass
     md.width = m.width;
     md.height = m.height;
     md.format = m.format;
-    grass_wind_map_desc wd = scene.wind_map_desc;
-    const grass_result result = grass_create_map(ctx, &md, &wd.map);
-    if (result != GRASS_SUCCESS) return result;
-    return grass_set_field_wind_map(ctx, field, &wd);
+    return grass_create_map(ctx, &md, &out->map);
+}
+
+grass_result set_scene_wind_map(grass_context* ctx, const grass_wind_map_desc& wind, grass_field_id field) {
+    if (grass_map_id_is_null(wind.map)) return GRASS_SUCCESS;
+    return grass_set_field_wind_map(ctx, field, &wind);
 }
 
 grass_host::TargetDesc target_desc(const Scene& scene) {

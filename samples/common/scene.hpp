@@ -85,8 +85,12 @@ bool load_scene_file(const std::string& path, Scene* scene, GltfInfo* gltf, std:
 // scene's). Stops at the first grass_create_map that fails and returns its result.
 grass_result create_scene_maps(grass_context* ctx, const Scene& scene, grass_map_stack* stack);
 
-// Creates the scene's wind map on `ctx` and sets it on `field` (nothing without one).
-grass_result create_scene_wind_map(grass_context* ctx, const Scene& scene, grass_field_id field);
+// Creates the scene's wind map on `ctx` into *out (the scene's speed and transform; a null
+// map without one). The host sets it on its fields (grass_set_field_wind_map, where
+// set_scene_wind_map does it) and destroys the map after them.
+grass_result create_scene_wind_map(grass_context* ctx, const Scene& scene, grass_wind_map_desc* out);
+// Sets `wind` on `field` when it has a map (nothing otherwise).
+grass_result set_scene_wind_map(grass_context* ctx, const grass_wind_map_desc& wind, grass_field_id field);
 
 // The host target of the scene's image: size, samples and ground.
 grass_host::TargetDesc target_desc(const Scene& scene);

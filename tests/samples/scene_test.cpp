@@ -228,7 +228,14 @@ TEST(SceneFile, TheWindMapSampleLoadsItsMap) {
     scene.field.patch = patch;
     grass_field_id field{};
     ASSERT_EQ(grass_create_field(ctx, &scene.field, &field), GRASS_SUCCESS) << grass_get_last_error(ctx);
-    ASSERT_EQ(grass_sample::create_scene_wind_map(ctx, scene, field), GRASS_SUCCESS) << grass_get_last_error(ctx);
+    grass_wind_map_desc wind{};
+    ASSERT_EQ(grass_sample::create_scene_wind_map(ctx, scene, &wind), GRASS_SUCCESS) << grass_get_last_error(ctx);
+    EXPECT_EQ(wind.speed, 8.0f);
+    ASSERT_FALSE(grass_map_id_is_null(wind.map));
+    ASSERT_EQ(grass_sample::set_scene_wind_map(ctx, wind, field), GRASS_SUCCESS) << grass_get_last_error(ctx);
+    EXPECT_EQ(grass_destroy_map(ctx, wind.map), GRASS_ERROR_IN_USE) << "the field uses it";
+    ASSERT_EQ(grass_destroy_field(ctx, field), GRASS_SUCCESS);
+    EXPECT_EQ(grass_destroy_map(ctx, wind.map), GRASS_SUCCESS);
     grass_destroy_context(ctx);
 
     const std::string cell_to_map =
