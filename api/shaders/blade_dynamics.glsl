@@ -111,7 +111,7 @@ BladePose blade_pose(uint blade, uvec2 cell, mat3 to_world, vec3 root, int segme
         float mass = field.mechanics.y * blade_variation(blade, cell, 1u);
         float response = field.mechanics.z * blade_variation(blade, cell, 2u);
         // Wind (eq. 7-8): its alignment theta with the rest blade.
-        vec3 wind = wind_at(root, up);
+        vec3 wind = wind_at(root, up, cell_point);
         float wind_speed = length(wind);
         float f_d = wind_speed > 0.0 ? 1.0 - abs(dot(wind / wind_speed, normalize(i2))) : 0.0;
         float f_r = clamp(dot(i2, up) / len, 0.0, 1.0);

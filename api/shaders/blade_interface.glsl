@@ -13,9 +13,11 @@
 #define GRASS_MAP_HEIGHT 16u
 #define GRASS_WIND 32u        // responsive grass: wind or gravity (wind.glsl)
 #define GRASS_INTERACTION 64u // responsive grass: the interaction map is bound (interaction.glsl)
-#define GRASS_BLADE_CULLING 128u // per-blade culling, geometry draws (blade_culling.glsl)
-// Responsive grass's code (and its bindings 10-12) is compiled only where GRASS_RESPONSIVE
-// is defined (so is per-blade culling's, which reads the blades' control points too): the shaders of still grass are exactly what they were, and declare no binding
+#define GRASS_WIND_MAP 128u   // responsive grass: the field's wind map is bound (wind.glsl; with GRASS_WIND)
+#define GRASS_BLADE_CULLING 256u // per-blade culling, geometry draws (blade_culling.glsl)
+// Responsive grass's code (and its bindings 10-13) is compiled only where GRASS_RESPONSIVE
+// is defined (so is per-blade culling's, which reads the blades' control points too): the
+// shaders of still grass are exactly what they were, and declare no binding
 // they do not use (a Vulkan pipeline layout must hold every binding a module declares and
 // uses, whatever its specialization constants say). GL: defined with GRASS_FEATURES for the
 // masks with GRASS_WIND or GRASS_INTERACTION; Vulkan: a second SPIR-V module per shader,
@@ -66,6 +68,8 @@ layout(std140, binding = 1) uniform Field {
     vec4 mechanics;        // x: stiffness (m/s^2), y: mass, z: wind response, w: per-blade variation
     vec4 trample;          // x: trample depth, y: recovery time (s), z: 1 = the field reads the interaction map
     vec4 field_up;         // xyz: the field's up (world), w: metres per patch unit
+    vec4 wind_map_u;       // xyz: cell space -> wind map u (as map_u), w: m/s for an encoded 1
+    vec4 wind_map_v;       // xyz: ... and wind map v
     vec4 culling;          // per-blade culling (blade_culling.glsl): x: orientation limit (2: off),
                            // y: frustum tolerance (< 0: off), z: distance max (m; 0: off), w: levels (0: by threshold)
 } field;

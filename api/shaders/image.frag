@@ -30,7 +30,7 @@ void main() {
         // far back. Pressed grass darkens.
         vec3 up = normalize(field.field_up.xyz);
         float height_m = field.blade_params.w * field.field_up.w;
-        ShellBend bend = shell_bend(v_position - up * (0.5 * height_m), up, height_m);
+        ShellBend bend = shell_bend(v_position - up * (0.5 * height_m), up, height_m, vec2(v_first_cell) + v_local);
         float a = 0.5 * bend.angle;
         float back = a < 1e-4 ? 0.0 : field.blade_params.w * (1.0 - cos(a)) / bend.angle;
         vec3 d = transpose(mat3(field.patch_to_world)) * bend.dir / max(field.field_up.w, 1e-30);

@@ -32,17 +32,17 @@ float bend_for_height(float r) {
 }
 
 // The bend of the slices' grass (height `height_m`, metres) over camera-relative ground
-// point p. Wind: the tip deflection a blade as tall would have in blade_dynamics.glsl (the
-// equilibrium of the mean mechanics, an upright blade across the wind): its tip at angle
-// phi from the vertical is a column bent by a = 2 phi. Press: the a whose tip height y(1)
-// is the cap. The larger bend wins, with its direction.
-ShellBend shell_bend(vec3 p, vec3 up, float height_m) {
+// point p (the field's point `cell_point`, in cells). Wind: the tip deflection a blade as
+// tall would have in blade_dynamics.glsl (the equilibrium of the mean mechanics, an
+// upright blade across the wind): its tip at angle phi from the vertical is a column bent
+// by a = 2 phi. Press: the a whose tip height y(1) is the cap. The larger bend wins, with its direction.
+ShellBend shell_bend(vec3 p, vec3 up, float height_m, vec2 cell_point) {
     ShellBend b;
     b.angle = 0.0;
     b.dir = vec3(0.0);
     b.shade = 1.0;
     if (has_map(GRASS_WIND)) {
-        vec3 a = field.mechanics.z * wind_at(p, up) + field.mechanics.y * frame.gravity.xyz;
+        vec3 a = field.mechanics.z * wind_at(p, up, cell_point) + field.mechanics.y * frame.gravity.xyz;
         vec3 across = a - up * dot(a, up);
         float s = max(field.mechanics.x, 1e-3);
         float lateral = length(across) / s;

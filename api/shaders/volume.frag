@@ -64,7 +64,8 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
         vec3 up = normalize(field.field_up.xyz);
         float ground_y = has_map(GRASS_MAP_HEIGHT) ? hit.y - h.y : 0.0;
-        ShellBend bend = shell_bend(g_to_world * vec3(h.x, ground_y, h.z) + g_origin, up, g_size.y * field.field_up.w);
+        ShellBend bend = shell_bend(g_to_world * vec3(h.x, ground_y, h.z) + g_origin, up, g_size.y * field.field_up.w,
+                                    vec2(v_cell.xy) + h.xz);
         float rest_y, back;
         if (!shell_unbend(bend.angle, h.y, g_size.y, rest_y, back)) return;
         vec3 d = transpose(g_to_world) * bend.dir / max(field.field_up.w, 1e-30); // unit, patch frame

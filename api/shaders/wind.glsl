@@ -11,7 +11,7 @@
 // strong attack and a slow fall (bakay 3.3, after Neyret); the speed is S (1 + gust_strength
 // G) with G in [0, 1] the mean of the three profiles, plus turbulence: small waves of speed
 // and of direction across the wind, at most turbulence x S. Local sources add their own
-// wind (frame.wind_sources).
+// wind (frame.wind_sources), and so does the field's wind map (wind_of_map).
 
 const float kWindTwoPi = 6.283185307179586;
 const vec3 kGustWavelength = vec3(1.0, 0.618034, 0.381966); // x gust_length
@@ -56,9 +56,38 @@ vec3 wind_of_sources(vec3 p) {
     return w;
 }
 
-// The wind velocity (world m/s) at camera-relative p, across `up` (the field's up: the
-// component along it moves nothing).
-vec3 wind_at(vec3 p, vec3 up) {
+// The field's wind map (grass_set_field_wind_map; bound only for variants with
+// GRASS_WIND_MAP): an RGBA design map whose r and g are the wind along the field's x and z,
+// v = (2 t - 1) x speed. The core stores colour maps with linear rgb, so each texel's r and
+// g are encoded back to the host's values before the bilinear weights apply: the wind is
+// interpolated as the host painted it, edges clamped.
+#ifdef GRASS_RESPONSIVE
+layout(binding = 13) uniform sampler2D wind_map;
+#endif
+
+vec2 wind_map_value(ivec2 texel, ivec2 size) {
+    vec2 c = texelFetch(wind_map, clamp(texel, ivec2(0), size - 1), 0).rg;
+    return mix(12.92 * c, 1.055 * pow(c, vec2(1.0 / 2.4)) - 0.055, step(vec2(0.0031308), c));
+}
+
+// The wind of the field's map (world m/s) at a point of the field given in cells.
+vec3 wind_of_map(vec2 cell_point) {
+    if (!has_map(GRASS_WIND_MAP)) return vec3(0.0);
+    vec3 q = vec3(cell_point, 1.0);
+    vec2 uv = vec2(dot(field.wind_map_u.xyz, q), dot(field.wind_map_v.xyz, q));
+    ivec2 size = textureSize(wind_map, 0);
+    vec2 t = uv * vec2(size) - 0.5;
+    vec2 f = fract(t);
+    ivec2 i = ivec2(floor(t));
+    vec2 e = mix(mix(wind_map_value(i, size), wind_map_value(i + ivec2(1, 0), size), f.x),
+                 mix(wind_map_value(i + ivec2(0, 1), size), wind_map_value(i + ivec2(1, 1), size), f.x), f.y);
+    vec2 v = (2.0 * e - 1.0) * field.wind_map_u.w; // m/s along the field's x and z
+    return mat3(field.patch_to_world) * vec3(v.x, 0.0, v.y) / max(field.field_up.w, 1e-30);
+}
+
+// The wind velocity (world m/s) at camera-relative p, which lies over `cell_point` of the
+// field (cells), across `up` (the field's up: the component along it moves nothing).
+vec3 wind_at(vec3 p, vec3 up, vec2 cell_point) {
     vec3 w = vec3(0.0);
     vec3 mean = frame.wind.xyz;
     float speed = length(mean);
@@ -82,5 +111,6 @@ vec3 wind_at(vec3 p, vec3 up) {
             cross_dir * (turbulence * 0.5 * t_dir);
     }
     w += wind_of_sources(p);
+    w += wind_of_map(cell_point);
     return w - up * dot(w, up);
 }

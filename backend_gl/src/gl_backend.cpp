@@ -466,6 +466,10 @@ void GlBackend::release_field(uint32_t slot) {
     fields_[slot] = FieldGpu{};
 }
 
+void GlBackend::set_field_wind_map(uint32_t slot, uint32_t map_slot) {
+    if (slot < fields_.size()) fields_[slot].wind_map = map_slot;
+}
+
 grass_result GlBackend::begin_frame(const FramePlan&) {
     // The plan is uploaded by the first grass_gl_render of the frame, where the host's
     // GL context is current by contract.

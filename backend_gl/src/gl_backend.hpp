@@ -37,6 +37,7 @@ public:
     void release_map(uint32_t slot) override;
     grass_result upload_field(uint32_t slot, const FieldMaps& maps) override;
     void release_field(uint32_t slot) override;
+    void set_field_wind_map(uint32_t slot, uint32_t map_slot) override;
     grass_result begin_frame(const FramePlan& plan) override;
     void end_frame() override;
     uint64_t gpu_bytes() const override;
@@ -82,6 +83,7 @@ private:
     // The maps a field samples (slots into maps_) and its program variant.
     struct FieldGpu {
         FieldMaps maps;
+        uint32_t wind_map = kNoMap; // responsive grass: the field's wind map (map slot)
     };
 
     grass_result init(const grass_gl_desc& desc);
@@ -90,7 +92,8 @@ private:
     grass_result program(GlProgramKind kind, uint32_t features, const char* function, GLuint* out_program);
     // Binds the field's maps at their units (kMapUnit): the density map, or the white
     // texture, at unit 0; the others where the field has them. Leaves unit 0 active.
-    void bind_field_maps(const FieldGpu& field) const;
+    // The field's design maps, and its wind map for a draw with kFeatureWindMap.
+    void bind_field_maps(const FieldGpu& field, uint32_t features) const;
     grass_result check_errors(const char* function, const char* what);
     grass_result render(const char* function);
     void delete_slices(SliceGpu& slices);

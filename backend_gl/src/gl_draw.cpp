@@ -61,7 +61,12 @@ void GlBackend::upload_frame(uint32_t samples, bool clip_zero_to_one) {
     frame_clip_zero_to_one_ = clip_zero_to_one;
 }
 
-void GlBackend::bind_field_maps(const FieldGpu& field) const {
+void GlBackend::bind_field_maps(const FieldGpu& field, uint32_t features) const {
+    if ((features & kFeatureWindMap) != 0 && field.wind_map != kNoMap) { // read with texelFetch: no sampler
+        gl_.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kWindMapUnit));
+        gl_.BindTexture(GL_TEXTURE_2D, maps_[field.wind_map].texture);
+        gl_.BindSampler(static_cast<GLuint>(kWindMapUnit), 0);
+    }
     for (uint32_t role = kMapRoleCount; role-- > 0;) { // ends with unit 0 active
         const uint32_t map = field.maps.map_slot[role];
         if (map == kNoMap && role != kMapDensity) continue; // not sampled by the field's variant
@@ -88,7 +93,7 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
         if ((draw.features & kBladeCurveFeatures) != 0) {
             gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kBladeCurvesStorageBinding, patch.curves);
         }
-        bind_field_maps(fields_[draw.field_slot]);
+        bind_field_maps(fields_[draw.field_slot], draw.features);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
         gl_.DrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(patch.index_count), GL_UNSIGNED_INT,
                                               nullptr, static_cast<GLsizei>(draw.instance_count), draw.first_instance);
@@ -125,7 +130,7 @@ void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
             gl_.ActiveTexture(GL_TEXTURE0 + t[0]);
             gl_.BindTexture(GL_TEXTURE_2D_ARRAY, t[1]);
         }
-        bind_field_maps(fields_[draw.field_slot]);
+        bind_field_maps(fields_[draw.field_slot], draw.features);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
         const bool skirts = kind == GRASS_TIER_IMAGE && (draw.features & (1u << kMapHeight)) != 0;
         gl_.DrawArraysInstancedBaseInstance(
@@ -149,7 +154,7 @@ void GlBackend::draw_debug(const FramePlan& plan) const {
             gl_.UseProgram(program);
             bound_program = program;
         }
-        bind_field_maps(fields_[draw.field_slot]);
+        bind_field_maps(fields_[draw.field_slot], draw.features);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
         gl_.DrawArraysInstancedBaseInstance(GL_TRIANGLES, 0, kImageVertices, static_cast<GLsizei>(draw.instance_count),
                                             draw.first_instance);

@@ -38,6 +38,7 @@ constexpr SamplerUnit kSamplerUnits[] = {
     {"height_map", kMapUnit[kMapHeight]},
     {"interaction_level0", kInteractionMapUnit[0]},
     {"interaction_level1", kInteractionMapUnit[1]},
+    {"wind_map", kWindMapUnit},
 };
 
 // Reads a shader or program info log through the context's allocator.

@@ -31,11 +31,11 @@ enum GlProgramKind : uint32_t {
     kProgramDebugTiers = 3, // debug_tiers.vert + debug_tiers.frag (GRASS_VIEW_FLAG_DEBUG_CELLS)
     kProgramKindCount = 4
 };
-// Every feature mask: the design maps' bits, then kFeatureWind, kFeatureInteraction and
-// kFeatureBladeCulling (backend.hpp).
+// Every feature mask: the design maps' bits, then kFeatureWind, kFeatureInteraction,
+// kFeatureWindMap and kFeatureBladeCulling (backend.hpp).
 constexpr uint32_t kFeatureVariants = kFeatureMaskCount;
 static_assert(kFeatureWind == 1u << kMapRoleCount && kFeatureInteraction == kFeatureWind << 1 &&
-                  kFeatureBladeCulling == kFeatureInteraction << 1,
+                  kFeatureWindMap == kFeatureInteraction << 1 && kFeatureBladeCulling == kFeatureWindMap << 1,
               "feature bits follow the design maps' bits");
 
 // Responsive grass (api/shaders/interaction.glsl, blade_dynamics.glsl, interaction.comp):
@@ -45,6 +45,8 @@ static_assert(kFeatureWind == 1u << kMapRoleCount && kFeatureInteraction == kFea
 // storage bindings 1-3 and the level's texture at image unit 0.
 constexpr GLint kInteractionMapUnit[2] = {static_cast<GLint>(kInteractionMapBinding[0]),
                                           static_cast<GLint>(kInteractionMapBinding[1])};
+// A field's wind map (kFeatureWindMap) is fetched from texture unit 13.
+constexpr GLint kWindMapUnit = static_cast<GLint>(kWindMapBinding);
 constexpr GLuint kBladeCurvesStorageBinding = 0;
 constexpr GLuint kInteractionUniformBinding = 0;
 constexpr GLuint kCollidersStorageBinding = 1;

@@ -19,6 +19,7 @@ constexpr GLenum kUnpackParameters[] = {
     GL_UNPACK_SWAP_BYTES, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES,
 };
 
+constexpr GLint kDynamicsUnits[] = {kInteractionMapUnit[0], kInteractionMapUnit[1], kWindMapUnit};
 constexpr GLint kSliceUnitList[] = {kSliceColorUnit, kSliceNormalUnit, kSliceThresholdUnit};
 constexpr GLint kMapUnitList[] = {kMapUnit[kMapColor], kMapUnit[kMapAmbient], kMapUnit[kMapDiffuse],
                                   kMapUnit[kMapHeight]};
@@ -70,8 +71,8 @@ void GlDrawStateGuard::save_dynamics() {
     gl.GetIntegeri_v(GL_IMAGE_BINDING_ACCESS, unit, &image_unit0_.access);
     gl.GetIntegeri_v(GL_IMAGE_BINDING_FORMAT, unit, &image_unit0_.format);
     gl.GetBooleani_v(GL_IMAGE_BINDING_LAYERED, unit, &image_unit0_.layered);
-    for (int i = 0; i < 2; ++i) {
-        gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kInteractionMapUnit[i]));
+    for (int i = 0; i < 3; ++i) {
+        gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kDynamicsUnits[i]));
         gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &interaction_units_[i].texture_2d);
         gl.GetIntegerv(GL_SAMPLER_BINDING, &interaction_units_[i].sampler);
     }
@@ -93,8 +94,8 @@ void GlDrawStateGuard::restore_dynamics() const {
     gl.BindImageTexture(kInteractionImageUnit, static_cast<GLuint>(image_unit0_.texture), image_unit0_.level,
                         image_unit0_.layered, image_unit0_.layer, static_cast<GLenum>(image_unit0_.access),
                         static_cast<GLenum>(image_unit0_.format));
-    for (int i = 0; i < 2; ++i) {
-        const GLuint unit = static_cast<GLuint>(kInteractionMapUnit[i]);
+    for (int i = 0; i < 3; ++i) {
+        const GLuint unit = static_cast<GLuint>(kDynamicsUnits[i]);
         gl.ActiveTexture(GL_TEXTURE0 + unit);
         gl.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(interaction_units_[i].texture_2d));
         gl.BindSampler(unit, static_cast<GLuint>(interaction_units_[i].sampler));

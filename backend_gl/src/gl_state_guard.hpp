@@ -14,7 +14,7 @@ namespace grass {
 // made all true and the capabilities of kHostDisabled are disabled (only those the host
 // left enabled are touched; the destructor enables them again). With `dynamics` (a frame
 // of responsive grass) also the state of gl_dynamics.cpp: image unit 0, shader storage
-// bindings 0-3 and the generic one, texture units 10-11 (2D texture and sampler).
+// bindings 0-3 and the generic one, texture units 10-11 and 13 (2D texture and sampler).
 class GlDrawStateGuard {
 public:
     GlDrawStateGuard(const GlFunctions& gl, bool dynamics);
@@ -51,7 +51,7 @@ private:
     UniformBinding storage_bindings_[kStorageBindings] = {};
     GLint storage_buffer_ = 0; // the generic binding
     ImageUnit image_unit0_ = {};
-    MapUnit interaction_units_[2] = {}; // units 10, 11
+    MapUnit interaction_units_[3] = {}; // units 10, 11 (interaction map), 13 (wind map)
 
     const GlFunctions& gl_;
     GLint program_ = 0;

@@ -142,7 +142,8 @@ VkBackend::SetViews VkBackend::still_views() const {
     return SetViews{{default_slices_.view, default_slices_.view, default_slices_.view},
                     {default_black_.view, default_black_.view},
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                    default_curves_.buffer};
+                    default_curves_.buffer,
+                    default_black_.view};
 }
 
 bool VkBackend::own_set(const TierDraw& d) {
@@ -164,6 +165,10 @@ VkBackend::SetViews VkBackend::draw_views(const TierDraw& d) const {
     }
     const PatchGpu& p = patches_[d.patch_slot];
     if (p.curves.buffer && !p.curves_pending) v.curves = p.curves.buffer;
+    const uint32_t wind = fields_[d.field_slot].wind_map;
+    if ((d.features & kFeatureWindMap) && wind != kNoMap && wind < maps_.size() && maps_[wind].live) {
+        v.wind_map = maps_[wind].image.view;
+    }
     return v;
 }
 
@@ -172,8 +177,8 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
     const VkDescriptorBufferInfo frame_block{uniforms, 0, sizeof(FrameUniforms)};
     const VkDescriptorBufferInfo field_block{uniforms, 0, sizeof(FieldUniforms)};
     const VkDescriptorBufferInfo curves{views.curves, 0, VK_WHOLE_SIZE};
-    // The samplers are immutable, in the layout. Bindings 2..11: images[binding - 2].
-    VkDescriptorImageInfo images[kBindingBladeCurves - kBindingDensityMap];
+    // The samplers are immutable, in the layout. Bindings 2..11 and 13: images[binding - 2].
+    VkDescriptorImageInfo images[kBindingCount - kBindingDensityMap];
     for (VkDescriptorImageInfo& i : images)
         i = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     for (uint32_t role = 0; role < kMapRoleCount; ++role) {
@@ -186,6 +191,7 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
         images[kBindingInteractionMap0 + l - kBindingDensityMap] = {VK_NULL_HANDLE, views.interaction[l],
                                                                     views.interaction_layout};
     }
+    images[kBindingWindMap - kBindingDensityMap].imageView = views.wind_map;
     VkWriteDescriptorSet writes[kBindingCount];
     for (uint32_t i = 0; i < kBindingCount; ++i) {
         writes[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};

@@ -44,6 +44,7 @@ public:
     void release_map(uint32_t slot) override;
     grass_result upload_field(uint32_t slot, const FieldMaps& maps) override;
     void release_field(uint32_t slot) override;
+    void set_field_wind_map(uint32_t slot, uint32_t map_slot) override;
     grass_result begin_frame(const FramePlan& plan) override;
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
     uint64_t dynamics_gpu_bytes() const override;
@@ -104,6 +105,7 @@ private:
         bool live = false;
         uint32_t features = 0;
         uint32_t map_slot[kMapRoleCount] = {kNoMap, kNoMap, kNoMap, kNoMap, kNoMap};
+        uint32_t wind_map = kNoMap; // responsive grass: bound by its draws with kFeatureWindMap
         DescriptorSet sets[kMaxFramesInFlight];
     };
 
@@ -125,6 +127,7 @@ private:
         VkImageView interaction[2];
         VkImageLayout interaction_layout;
         VkBuffer curves;
+        VkImageView wind_map;
     };
     // The stand-ins of a draw that samples no slices and is not responsive: the default
     // slice image, the default black map for the interaction levels, the 16-byte

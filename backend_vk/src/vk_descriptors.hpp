@@ -14,10 +14,11 @@
 namespace grass::vk {
 
 // What one set of the blade layout holds: the Frame and Field blocks (dynamic uniform
-// buffers), ten combined image samplers (the five design maps; slice colour, normal,
-// threshold; the interaction map's two levels) and one storage buffer (blade curves).
+// buffers), eleven combined image samplers (the five design maps; slice colour, normal,
+// threshold; the interaction map's two levels; the wind map) and one storage buffer (blade
+// curves).
 constexpr uint32_t kUniformBuffersPerSet = 2;
-constexpr uint32_t kImageSamplersPerSet = 10;
+constexpr uint32_t kImageSamplersPerSet = 11;
 constexpr uint32_t kStorageBuffersPerSet = 1;
 
 // A set and the pool it came from (needed to free it).

@@ -220,6 +220,7 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
         {kBindingInteractionMap0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
         {kBindingInteractionMap1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
         {kBindingBladeCurves, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
+        {kBindingWindMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
     };
     return create_set_and_pipeline_layout(fn_, device_, bindings, kBindingCount, "the blade descriptor set layout",
                                           "the blade pipeline layout", &set_layout_, &layout_, failure, what);

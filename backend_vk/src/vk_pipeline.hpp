@@ -10,6 +10,8 @@
 #include "vk_functions.hpp"
 #include "vk_result.hpp"
 
+#include "context/backend.hpp"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -34,12 +36,16 @@ enum BladeBinding : uint32_t {
     kBindingInteractionMap0 = 10,
     kBindingInteractionMap1 = 11,
     kBindingBladeCurves = 12,
-    kBindingCount = 13
+    // A field's wind map (kFeatureWindMap: an RGBA design map read with texelFetch); draws
+    // without it bind the default black map, which they never read.
+    kBindingWindMap = 13,
+    kBindingCount = 14
 };
 static_assert(kBindingDensityMap == 2 && kBindingColorMap == 6 && kBindingHeightMap == 9,
               "kMapBinding of api/src/backend.hpp");
-static_assert(kBindingInteractionMap0 == 10 && kBindingInteractionMap1 == 11 && kBindingBladeCurves == 12,
-              "kInteractionMapBinding and kBladeCurvesBinding of api/src/context/backend.hpp");
+static_assert(kBindingInteractionMap0 == 10 && kBindingInteractionMap1 == 11 && kBindingBladeCurves == 12 &&
+                  kBindingWindMap == kWindMapBinding,
+              "kInteractionMapBinding, kBladeCurvesBinding and kWindMapBinding of api/src/context/backend.hpp");
 
 // The kinds of graphics pipeline; each exists per map feature mask (GRASS_FEATURES).
 enum PipelineKind : uint32_t {
@@ -49,8 +55,8 @@ enum PipelineKind : uint32_t {
     kPipelineDebugView = 3,
     kPipelineKindCount = 4
 };
-// Feature masks are 8 bits (kFeatureMaskCount, backend.hpp): one per MapRole, then
-// kFeatureWind, kFeatureInteraction and kFeatureBladeCulling.
+// Feature masks are 9 bits (kFeatureMaskCount, backend.hpp): one per MapRole, then
+// kFeatureWind, kFeatureInteraction, kFeatureWindMap and kFeatureBladeCulling.
 
 struct PipelineTarget {
     VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats

@@ -186,6 +186,12 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
             return false;
         }
     }
+    const uint32_t wind = f.wind_map;
+    if ((draw.features & kFeatureWindMap) && wind != kNoMap && wind < maps_.size() &&
+        (maps_[wind].pending || maps_[wind].updating)) {
+        *problem = maps_[wind].pending ? "the upload of its wind map" : "the upload of an update of its wind map";
+        return false;
+    }
     if (default_white_staging_.buffer || default_black_staging_.buffer) {
         *problem = "the upload of the default design maps";
         return false;

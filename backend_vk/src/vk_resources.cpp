@@ -442,4 +442,10 @@ void VkBackend::release_field(uint32_t slot) {
     f = FieldGpu{};
 }
 
+void VkBackend::set_field_wind_map(uint32_t slot, uint32_t map_slot) {
+    // Only the sets written for its draws with kFeatureWindMap (record) point at it; the
+    // field's own sets keep the stand-in.
+    if (slot < fields_.size() && fields_[slot].live) fields_[slot].wind_map = map_slot;
+}
+
 } // namespace grass::vk

@@ -237,7 +237,21 @@ bool load_scene(const std::string& path, Scene* s, std::string* error) {
             const json& f = j["field"];
             check_keys(f, "\"field\"",
                        {"cells", "cell_size", "origin", "density", "density_map", "mirror_tiling", "mirror_seed",
-                        "tiers", "lod_tests", "maps"});
+                        "tiers", "lod_tests", "maps", "wind_map"});
+            if (f.contains("wind_map")) {
+                const json& w = f["wind_map"];
+                check_keys(w, "\"field.wind_map\"", {"map", "speed", "cell_to_map"});
+                if (!w.contains("map")) throw std::runtime_error("\"field.wind_map\" needs a \"map\" (an RGBA PNG)");
+                s->wind_map = load_map_png(beside(path, w["map"].get<std::string>()), true);
+                read(w, "speed", &s->wind_map_desc.speed);
+                if (w.contains("cell_to_map")) {
+                    const auto v = numbers_as<double>(w["cell_to_map"], "\"field.wind_map.cell_to_map\"");
+                    if (v.size() != 6)
+                        throw std::runtime_error("\"field.wind_map.cell_to_map\" must have 6 numbers, not " +
+                                                 w["cell_to_map"].dump());
+                    for (int k = 0; k < 6; ++k) s->wind_map_desc.cell_to_map[k] = v[k];
+                }
+            }
             if (f.contains("maps")) {
                 const json& m = f["maps"];
                 check_keys(m, "\"field.maps\"", {"density", "color", "ambient", "diffuse", "height", "height_scale"});
@@ -357,6 +371,24 @@ grass_result create_scene_maps(grass_context* ctx, const Scene& scene, grass_map
     }
     stack->height_scale = scene.height_scale;
     return GRASS_SUCCESS;
+}
+
+grass_result create_scene_wind_map(grass_context* ctx, const Scene& scene, grass_wind_map_desc* out) {
+    *out = scene.wind_map_desc;
+    out->map = grass_map_id{};
+    const Scene::MapImage& m = scene.wind_map;
+    if (m.pixels.empty()) return GRASS_SUCCESS;
+    grass_map_desc md = grass_default_map_desc();
+    md.pixels = m.pixels.data();
+    md.width = m.width;
+    md.height = m.height;
+    md.format = m.format;
+    return grass_create_map(ctx, &md, &out->map);
+}
+
+grass_result set_scene_wind_map(grass_context* ctx, const grass_wind_map_desc& wind, grass_field_id field) {
+    if (grass_map_id_is_null(wind.map)) return GRASS_SUCCESS;
+    return grass_set_field_wind_map(ctx, field, &wind);
 }
 
 grass_host::TargetDesc target_desc(const Scene& scene) {

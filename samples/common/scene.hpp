@@ -38,6 +38,10 @@ struct Scene {
     MapImage maps[kMapRoleCount];
     const MapImage& map(MapRole role) const { return maps[int(role)]; }
     float height_scale = 1.0f;
+    // The field's wind map ("field.wind_map": an RGBA PNG, r and g the wind along the field's
+    // x and z; empty pixels: none), its speed for an encoded 1 and its cell-to-map transform.
+    MapImage wind_map;
+    grass_wind_map_desc wind_map_desc = grass_default_wind_map_desc(); // map: set by create_scene_wind_map
     double eye[3] = {0.0, 1.7, -6.4};
     double target[3] = {0.0, 0.0, 1.0};
     float fov_degrees = 55.0f;
@@ -80,6 +84,13 @@ bool load_scene_file(const std::string& path, Scene* scene, GltfInfo* gltf, std:
 // Creates the scene's design maps on `ctx` into `stack` (their ids; its height scale the
 // scene's). Stops at the first grass_create_map that fails and returns its result.
 grass_result create_scene_maps(grass_context* ctx, const Scene& scene, grass_map_stack* stack);
+
+// Creates the scene's wind map on `ctx` into *out (the scene's speed and transform; a null
+// map without one). The host sets it on its fields (grass_set_field_wind_map, where
+// set_scene_wind_map does it) and destroys the map after them.
+grass_result create_scene_wind_map(grass_context* ctx, const Scene& scene, grass_wind_map_desc* out);
+// Sets `wind` on `field` when it has a map (nothing otherwise).
+grass_result set_scene_wind_map(grass_context* ctx, const grass_wind_map_desc& wind, grass_field_id field);
 
 // The host target of the scene's image: size, samples and ground.
 grass_host::TargetDesc target_desc(const Scene& scene);

@@ -191,6 +191,9 @@ int main(int argc, char** argv) {
         }
         r = grass_sample::create_scene_maps(ctx, scene, &scene.field.maps);
         if (r == GRASS_SUCCESS) r = grass_create_field(ctx, &scene.field, &field);
+        grass_wind_map_desc wind_map{};
+        if (r == GRASS_SUCCESS) r = grass_sample::create_scene_wind_map(ctx, scene, &wind_map);
+        if (r == GRASS_SUCCESS) r = grass_sample::set_scene_wind_map(ctx, wind_map, field);
     }
     const double field_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_field).count();

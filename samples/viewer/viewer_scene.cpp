@@ -24,6 +24,7 @@ grass_result ViewerScene::create(grass_context* ctx, const grass_sample::Scene& 
     scene_ = scene;
     maps_ = grass_map_stack{};
     grass_result r = grass_sample::create_scene_maps(ctx, scene_, &maps_);
+    if (r == GRASS_SUCCESS) r = grass_sample::create_scene_wind_map(ctx, scene_, &wind_map_);
     if (r != GRASS_SUCCESS) {
         *error = failed(ctx, "grass_create_map", r);
     } else {
@@ -94,6 +95,13 @@ grass_result ViewerScene::make_field(int quality, grass_patch_id* patch, grass_f
         grass_destroy_patch(ctx_, *patch);
         return r;
     }
+    r = grass_sample::set_scene_wind_map(ctx_, wind_map_, *field);
+    if (r != GRASS_SUCCESS) {
+        *error = failed(ctx_, "grass_set_field_wind_map", r);
+        grass_destroy_field(ctx_, *field);
+        grass_destroy_patch(ctx_, *patch);
+        return r;
+    }
     grass_get_patch_info(ctx_, *patch, &patch_info_);
     return r;
 }
@@ -106,6 +114,8 @@ void ViewerScene::destroy() {
         grass_map_id* id = grass_sample::map_slot(&maps_, grass_sample::MapRole(r));
         if (!grass_map_id_is_null(*id)) grass_destroy_map(ctx_, *id);
     }
+    if (!grass_map_id_is_null(wind_map_.map)) grass_destroy_map(ctx_, wind_map_.map);
+    wind_map_ = grass_wind_map_desc{};
     field_ = {};
     patch_ = {};
     maps_ = {};

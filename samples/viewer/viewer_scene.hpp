@@ -43,6 +43,7 @@ private:
     grass_context* ctx_ = nullptr;
     grass_sample::Scene scene_;
     grass_map_stack maps_{};
+    grass_wind_map_desc wind_map_{}; // the scene's wind map (a null map: none), set on each field made
     grass_patch_id patch_{};
     grass_field_id field_{};
     grass_patch_info patch_info_{};

@@ -90,8 +90,10 @@ TEST_F(InvariantsTest, ResponsiveBitsOnlyAsTheInteractionPlanAllows) {
     EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
     set_bits(grass::kFeatureInteraction); // no map this frame
     expect_plan_refused("the interaction variant without the map");
-    set_bits(1u << 8);
+    set_bits(grass::kFeatureMaskCount);
     expect_plan_refused("an unknown feature bit");
+    set_bits(grass::kFeatureWindMap); // the field has no wind map
+    expect_plan_refused("the wind map variant without a wind map");
     // Per-blade culling: on geometry draws only.
     ASSERT_EQ(ctx->plan.draws[0].kind, GRASS_TIER_GEOMETRY);
     set_bits(grass::kFeatureBladeCulling);

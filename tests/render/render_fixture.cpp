@@ -184,7 +184,7 @@ grass_result create_blade_field(grass_context* ctx, grass_patch_id patch, uint32
 
 grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
                                        const double eye[3], const double look[3], int frames,
-                                       const SceneFrame& before_frame) {
+                                       const SceneFrame& before_frame, const FieldSetup& field_setup) {
     grass_host::Image image;
     std::string error;
     auto host = grass_host::Host::create(backend, target, &error);
@@ -198,6 +198,7 @@ grass_host::Image render_default_scene(grass_backend backend, const grass_host::
     EXPECT_EQ(grass_create_patch(ctx, &pd, &patch), GRASS_SUCCESS);
     grass_field_id field{};
     EXPECT_EQ(create_blade_field(ctx, patch, cells, &field), GRASS_SUCCESS);
+    if (field_setup) field_setup(ctx, field);
     for (int frame = 0; frame < frames; ++frame) {
         grass_view_desc v = grass_host::make_view(*host, eye, look, 50.0f, 0.05f, 100.0f);
         if (before_frame) before_frame(ctx, frame, &v);

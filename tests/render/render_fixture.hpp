@@ -80,9 +80,12 @@ using SceneFrame = std::function<void(grass_context* ctx, int frame, grass_view_
 // `frames` frames (the last one returned) of the default patch on a square field of
 // `cells` cells, rendered by a fresh host of `backend`, from `eye` towards `look` (50
 // degree fov). Fails the calling test on any error or validation message; empty image then.
+// `field_setup`, when given, is called once with the field after it is made (a wind map).
+using FieldSetup = std::function<void(grass_context* ctx, grass_field_id field)>;
 grass_host::Image render_default_scene(grass_backend backend, const grass_host::TargetDesc& target, uint32_t cells,
                                        const double eye[3], const double look[3], int frames = 1,
-                                       const SceneFrame& before_frame = nullptr);
+                                       const SceneFrame& before_frame = nullptr,
+                                       const FieldSetup& field_setup = nullptr);
 // Centre of the grass along x, weighted by how far each pixel is from the sky colour, in pixels.
 double grass_centroid_x(const grass_host::Image& image, const uint8_t sky[3]);
 // Mean absolute difference of the RGB channels, in 8-bit levels.

@@ -200,3 +200,58 @@ TEST(SceneFile, TheResponsiveSamplesLoad) {
 }
 
 } // namespace
+
+namespace {
+
+// The wind-map sample: "field.wind_map" reaches the scene's map (an 8-bit RGBA PNG), its
+// speed and transform; a field created from it takes the map (grass_set_field_wind_map
+// through create_scene_wind_map); a transform of the wrong length is refused by name.
+TEST(SceneFile, TheWindMapSampleLoadsItsMap) {
+    const std::string dir = GRASS_SCENE_DIR;
+    grass_sample::Scene scene;
+    std::string error;
+    ASSERT_TRUE(grass_sample::load_scene(dir + "/meadow-windmap.json", &scene, &error)) << error;
+    const grass_sample::Scene::MapImage& m = scene.wind_map;
+    ASSERT_EQ(m.width, 32u);
+    ASSERT_EQ(m.height, 32u);
+    EXPECT_EQ(m.format, GRASS_MAP_FORMAT_RGBA8_UNORM);
+    EXPECT_EQ(m.pixels[(0 * 32 + 5) * 4 + 0], 128) << "calm outside the corridor";
+    EXPECT_EQ(m.pixels[(16 * 32 + 5) * 4 + 0], 255) << "+x in the corridor";
+    EXPECT_EQ(scene.wind_map_desc.speed, 8.0f);
+    for (double v : scene.wind_map_desc.cell_to_map) EXPECT_EQ(v, 0.0);
+
+    grass_context* ctx = nullptr;
+    const grass_context_desc cd = grass_default_context_desc();
+    ASSERT_EQ(grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx), GRASS_SUCCESS);
+    grass_patch_id patch{};
+    ASSERT_EQ(grass_create_patch(ctx, &scene.patch, &patch), GRASS_SUCCESS) << grass_get_last_error(ctx);
+    scene.field.patch = patch;
+    grass_field_id field{};
+    ASSERT_EQ(grass_create_field(ctx, &scene.field, &field), GRASS_SUCCESS) << grass_get_last_error(ctx);
+    grass_wind_map_desc wind{};
+    ASSERT_EQ(grass_sample::create_scene_wind_map(ctx, scene, &wind), GRASS_SUCCESS) << grass_get_last_error(ctx);
+    EXPECT_EQ(wind.speed, 8.0f);
+    ASSERT_FALSE(grass_map_id_is_null(wind.map));
+    ASSERT_EQ(grass_sample::set_scene_wind_map(ctx, wind, field), GRASS_SUCCESS) << grass_get_last_error(ctx);
+    EXPECT_EQ(grass_destroy_map(ctx, wind.map), GRASS_ERROR_IN_USE) << "the field uses it";
+    ASSERT_EQ(grass_destroy_field(ctx, field), GRASS_SUCCESS);
+    EXPECT_EQ(grass_destroy_map(ctx, wind.map), GRASS_SUCCESS);
+    grass_destroy_context(ctx);
+
+    const std::string cell_to_map =
+        R"({"field": {"wind_map": {"map": ")" + dir +
+        R"(/windmap/corridor.png", "speed": 2, "cell_to_map": [0.5, 0, 0, 0.5, 0.25, 0]}}})";
+    const grass_sample::Scene t = load("wind_map_transform", cell_to_map);
+    EXPECT_EQ(t.wind_map_desc.speed, 2.0f);
+    EXPECT_EQ(t.wind_map_desc.cell_to_map[4], 0.25);
+
+    const std::string path = testing::TempDir() + "grass_scene_test_wind_map_bad.json";
+    std::ofstream(path) << R"({"field": {"wind_map": {"map": ")" + dir +
+                               R"(/windmap/corridor.png", "cell_to_map": [1, 0, 0, 1, 0]}}})";
+    grass_sample::Scene bad = grass_sample::demo_scene();
+    EXPECT_FALSE(grass_sample::load_scene(path, &bad, &error));
+    EXPECT_NE(error.find("field.wind_map.cell_to_map"), std::string::npos) << error;
+    std::remove(path.c_str());
+}
+
+} // namespace

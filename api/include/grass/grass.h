@@ -129,6 +129,7 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
     GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
+    GRASS_STRUCT_TYPE_WIND_MAP_DESC = 0x6772000B,
     GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C
 } grass_struct_type;
 
@@ -870,6 +871,36 @@ GRASS_API grass_wind_desc grass_default_wind_desc(void);
 /* Sets the wind and gravity from the next grass_begin_frame on; NULL restores the default
  * (no wind, standard gravity: still grass, which costs nothing). */
 GRASS_API grass_result grass_set_wind(grass_context* context, const grass_wind_desc* wind);
+
+/* A host wind-vector map of one field: wind painted over the field (a valley's draught, the
+ * lee of a building, a fan's corridor) that adds to the context's wind and sources wherever
+ * the field's grass is drawn, in every tier. Sampled bilinearly in map space, like the
+ * design maps. */
+typedef struct grass_wind_map_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_WIND_MAP_DESC */
+    const void* next;       /* NULL */
+    /* An RGBA map (grass_create_map, any RGBA format). r and g are the wind along the
+     * field's +x and +z axes, encoded as v = (2 t - 1) x speed for a stored value t in 0..1:
+     * 0.5 is calm (an 8-bit 128 is speed / 255). b and a are unused. The values are read as
+     * stored (not as sRGB colour). A null id (the default) removes the field's wind map. */
+    grass_map_id map;
+    /* m/s for an encoded 1 (t = 1), finite, 0 .. 1e3; default 5. */
+    float speed;
+    /* Cell space to map space, as grass_map_stack.cell_to_map: map (u, v) = (m[0] x + m[2] z
+     * + m[4], m[1] x + m[3] z + m[5]) for a point (x, z) of the field in cells. All zero (the
+     * default): the map spans the whole field. */
+    double cell_to_map[6];
+} grass_wind_map_desc;
+
+GRASS_API grass_wind_map_desc grass_default_wind_map_desc(void);
+
+/* Sets the wind map of `field` (and its grass types) from the next grass_begin_frame on;
+ * NULL or a null desc->map removes it. The map stays in use (grass_destroy_map refuses it)
+ * until removed or the field is destroyed. A field without a wind map draws exactly what it
+ * drew before: no texture bound, no shader work. Not between grass_begin_frame and
+ * grass_end_frame. */
+GRASS_API grass_result grass_set_field_wind_map(grass_context* context, grass_field_id field,
+                                                const grass_wind_map_desc* desc);
 
 typedef enum grass_collider_shape {
     GRASS_COLLIDER_SPHERE = 0, /* a ball, a wheel's contact, jahrmann's spheres */

@@ -30,10 +30,12 @@ constexpr uint32_t kMapBinding[kMapRoleCount] = {2, 6, 7, 8, 9};
 // shaders): responsive grass. A draw without them runs the shader of still grass.
 constexpr uint32_t kFeatureWind = 1u << 5;        // wind or gravity: blades bend, slices sway (wind.glsl)
 constexpr uint32_t kFeatureInteraction = 1u << 6; // the interaction map is bound (interaction.glsl)
+constexpr uint32_t kFeatureWindMap = 1u << 7;     // the field's wind map is bound (wind.glsl); with kFeatureWind
 // Per-blade culling (jahrmann2017 6.2, blade_culling.glsl): geometry draws only.
-constexpr uint32_t kFeatureBladeCulling = 1u << 7;
+constexpr uint32_t kFeatureBladeCulling = 1u << 8;
 // The features whose shaders are the responsive variants (GRASS_RESPONSIVE): they read the
 // patch's blade control points (kBladeCurvesBinding) and the vertices per blade (trample.w).
+// (kFeatureWindMap comes with kFeatureWind.)
 constexpr uint32_t kBladeCurveFeatures = kFeatureWind | kFeatureInteraction | kFeatureBladeCulling;
 // Every feature mask is below this (the variants a backend may compile).
 constexpr uint32_t kFeatureMaskCount = kFeatureBladeCulling << 1;
@@ -42,6 +44,8 @@ constexpr uint32_t kFeatureMaskCount = kFeatureBladeCulling << 1;
 // (readonly std430 buffer `BladeCurves`: PatchData::blade_curves).
 constexpr uint32_t kInteractionMapBinding[2] = {10, 11};
 constexpr uint32_t kBladeCurvesBinding = 12;
+// The field's wind map (grass_set_field_wind_map): an RGBA design map, read with texelFetch.
+constexpr uint32_t kWindMapBinding = 13;
 constexpr uint32_t kNoMap = 0xffffffffu;
 
 // A design map converted by the core to 16-bit unorm, row-major, tightly packed: width x
@@ -96,6 +100,12 @@ public:
     // A field and the maps it samples (already uploaded).
     virtual grass_result upload_field(uint32_t slot, const FieldMaps& maps) = 0;
     virtual void release_field(uint32_t slot) = 0;
+    // Responsive grass: the wind map of the field in `slot` (a map slot, already uploaded, or
+    // kNoMap: none). Draws of the field with kFeatureWindMap bind it; no other draw does.
+    virtual void set_field_wind_map(uint32_t slot, uint32_t map_slot) {
+        (void)slot;
+        (void)map_slot;
+    }
 
     // Called by grass_begin_frame after the plan is built.
     virtual grass_result begin_frame(const FramePlan& plan) = 0;

@@ -8,6 +8,7 @@
 #include "dynamics/blade_mechanics.hpp"
 #include "plan/blade_culling.hpp"
 #include "dynamics/dynamics_state.hpp"
+#include "dynamics/wind_map.hpp"
 #include "maps/design_map.hpp"
 #include "patch/patch_data.hpp"
 #include "plan/frame_plan.hpp"
@@ -66,6 +67,7 @@ struct Field {
     LevelExtent extents[32];              // vertical extent of each level's nodes, in cells
     float bands[GRASS_MAX_TIERS][4] = {}; // per tier: its distance band (begin, end, in, out) for the transitions
     double overhang = 0.0;                // how far blade tips may leave their cell, in cells
+    FieldWindMap wind_map;                // responsive grass: the host's wind map (grass_set_field_wind_map)
     BladeCulling culling;                 // per-blade culling of its geometry tiers (grass_set_blade_culling)
 };
 

@@ -69,8 +69,10 @@ grass_result check_plan(grass_context* ctx, const char* fn) {
         // one only while the map is bound, the culling one on geometry draws only.
         const uint32_t map_bits = (1u << kMapRoleCount) - 1u;
         const uint32_t dynamics_bits = draw.features & ~map_bits;
-        const bool dynamics_ok = (dynamics_bits & ~kBladeCurveFeatures) == 0 &&
+        const bool dynamics_ok = (dynamics_bits & ~(kBladeCurveFeatures | kFeatureWindMap)) == 0 &&
                                  ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0) &&
+                                 ((dynamics_bits & kFeatureWindMap) != 0) == field->wind_map.active() &&
+                                 ((dynamics_bits & kFeatureWindMap) == 0 || (dynamics_bits & kFeatureWind) != 0) &&
                                  ((dynamics_bits & kFeatureBladeCulling) == 0 || draw.kind == GRASS_TIER_GEOMETRY);
         if ((draw.features & map_bits) != field->maps.features || !dynamics_ok ||
             draw.features != draw.uniforms.tiling[3]) {

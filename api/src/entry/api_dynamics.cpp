@@ -7,6 +7,7 @@
 #include "dynamics/colliders.hpp"
 #include "dynamics/interaction_map.hpp"
 #include "dynamics/wind.hpp"
+#include "dynamics/wind_map.hpp"
 
 #include <cstring>
 
@@ -82,6 +83,43 @@ GRASS_API grass_result grass_set_interaction(grass_context* context, const grass
         // Every trail is gone: the map is made anew (and cleared) at the next frame with
         // colliders; until then no frame binds it, and the backend may release it.
         state.map = grass::InteractionMapState{};
+        return GRASS_SUCCESS;
+    });
+}
+
+GRASS_API grass_wind_map_desc grass_default_wind_map_desc(void) { return grass::default_wind_map_desc(); }
+
+GRASS_API grass_result grass_set_field_wind_map(grass_context* context, grass_field_id field,
+                                                const grass_wind_map_desc* desc) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    return guarded(context, "grass_set_field_wind_map", [&] {
+        const char* fn = "grass_set_field_wind_map";
+        GRASS_TRY(grass::check_field_id(context, fn, "field", field));
+        if (context->in_frame) {
+            return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_ALREADY_BEGUN,
+                                 "%s: cannot set a wind map between grass_begin_frame and grass_end_frame", fn);
+        }
+        grass::Field* host_field = context->fields.get(field.index - 1);
+        grass::FieldWindMap wind; // none
+        if (desc) {
+            GRASS_TRY(GRASS_CHECK_DESC(context, fn, desc, GRASS_STRUCT_TYPE_WIND_MAP_DESC));
+            if (!grass_map_id_is_null(desc->map)) {
+                GRASS_TRY(grass::validate_wind_map(context, fn, *desc, host_field->desc.cells_x,
+                                                   host_field->desc.cells_z, &wind));
+            }
+        }
+        // The field and its grass types (hidden fields of the same cells) share the wind.
+        uint32_t slots[GRASS_MAX_GRASS_TYPES];
+        uint32_t count = 0;
+        slots[count++] = field.index - 1;
+        for (uint32_t k = 0; k < host_field->child_count; ++k) slots[count++] = host_field->children[k];
+        for (uint32_t k = 0; k < count; ++k) {
+            grass::Field* f = context->fields.get(slots[k]);
+            if (f->wind_map.active()) context->maps.get(f->wind_map.map_slot)->field_users -= 1;
+            f->wind_map = wind;
+            if (wind.active()) context->maps.get(wind.map_slot)->field_users += 1;
+            context->backend->set_field_wind_map(slots[k], wind.map_slot);
+        }
         return GRASS_SUCCESS;
     });
 }

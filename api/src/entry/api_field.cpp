@@ -249,6 +249,7 @@ void destroy_one_field(grass_context* ctx, uint32_t slot) {
     ctx->patches.get(f->patch_slot)->field_users -= 1;
     const FieldMaps maps = f->maps;
     const bool owned = f->owns_density_map;
+    if (f->wind_map.active()) ctx->maps.get(f->wind_map.map_slot)->field_users -= 1;
     ctx->backend->release_field(slot);
     ctx->fields.erase(slot);
     for (uint32_t m : maps.map_slot) {

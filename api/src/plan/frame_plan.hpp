@@ -64,12 +64,16 @@ struct FieldUniforms {
     float trample[4];   // x = trample depth (0..1), y = recovery time (s), z = 1 if this field reads the
                         // interaction map (its up within 60 degrees of the map's up), w = unused
     float field_up[4];  // xyz = the field's up, world, unit; w = metres per patch unit (the cell size)
+    // The field's wind map (dynamics/wind_map.hpp; read only by variants with kFeatureWindMap):
+    // cell space -> its map u (xyz, as map_u), w = m/s for an encoded 1; and its map v (xyz).
+    float wind_map_u[4];
+    float wind_map_v[4];
     // Per-blade culling (geometry draws with kFeatureBladeCulling; plan/blade_culling.hpp):
     // x = orientation limit (|cos|; 2 = off), y = frustum tolerance (relative to w; < 0 = off),
     // z = distance max (m; 0 = off), w = distance levels (0 = thinning by threshold)
     float culling[4];
 };
-static_assert(sizeof(FieldUniforms) == 368, "std140 Field block");
+static_assert(sizeof(FieldUniforms) == 400, "std140 Field block");
 
 // One patch instance of any tier: a cell, or a macro-cell of count[0] x count[1] cells.
 // Vertex input, per instance: location 5 (vec4), location 6 (uvec4) and location 7 (vec4). The exact integer

@@ -76,6 +76,7 @@ public:
         for (int c = 0; c < 3; ++c) field_up_[c] = frame_.axis[1][c] / frame_.cell_size;
         reads_map_ = dynamics.field_reads_map(field_up_);
         features_ = field.maps.features | (dynamics.wind ? kFeatureWind : 0u) | (reads_map_ ? kFeatureInteraction : 0u);
+        if (field.wind_map.active()) features_ |= kFeatureWind | kFeatureWindMap;
         const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
         density_map_ = density_slot != kNoMap ? ctx->maps.get(density_slot) : nullptr;
         height_map_ = height_slot != kNoMap ? ctx->maps.get(height_slot) : nullptr;
@@ -385,6 +386,7 @@ private:
         u->trample[3] = 0.0f;
         for (int c = 0; c < 3; ++c) u->field_up[c] = static_cast<float>(field_up_[c]);
         u->field_up[3] = static_cast<float>(frame_.cell_size);
+        pack_wind_map(field_.wind_map, u);
         const BladeCulling& c = field_.culling;
         u->culling[0] = c.orientation_limit;
         u->culling[1] = c.frustum_tolerance;

@@ -42,7 +42,8 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_QUALITY_DESC": 0x67720007, "GRASS_STRUCT_TYPE_GL_DESC": 0x67720101,
         "GRASS_STRUCT_TYPE_VK_DESC": 0x67720201, "GRASS_STRUCT_TYPE_VK_RECORD_DESC": 0x67720202,
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
-        "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C,
+        "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_WIND_MAP_DESC": 0x6772000B,
+        "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -241,6 +242,11 @@ class grass_wind_desc(Structure):
                 ("gravity", c_float * 3), ("sources", POINTER(grass_wind_source)), ("source_count", c_uint32)]
 
 
+class grass_wind_map_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("map", grass_map_id), ("speed", c_float),
+                ("cell_to_map", c_double * 6)]
+
+
 class grass_collider(Structure):
     _fields_ = [("shape", grass_enum), ("radius", c_float), ("centre", c_double * 3), ("end", c_double * 3),
                 ("velocity", c_float * 3)]
@@ -323,6 +329,8 @@ FUNCTIONS = {
     "grass_set_blade_mechanics": (grass_enum, [_ctx, grass_patch_id, _P(grass_blade_mechanics)]),
     "grass_default_wind_desc": (grass_wind_desc, []),
     "grass_set_wind": (grass_enum, [_ctx, _P(grass_wind_desc)]),
+    "grass_default_wind_map_desc": (grass_wind_map_desc, []),
+    "grass_set_field_wind_map": (grass_enum, [_ctx, grass_field_id, _P(grass_wind_map_desc)]),
     "grass_set_colliders": (grass_enum, [_ctx, _P(grass_collider), c_uint32]),
     "grass_default_interaction_desc": (grass_interaction_desc, []),
     "grass_set_interaction": (grass_enum, [_ctx, _P(grass_interaction_desc)]),
