@@ -57,7 +57,7 @@ struct Options {
     uint32_t supersample = 2; // the truth: rendered supersample times larger per axis, box-downsampled
     uint64_t seed_step = 1;   // the other sample of the truth: patch and mirror seeds + seed_step
     int frames = 3;
-    bool sweep = false; // --sweep: one knob at a time from DEFAULT instead of the presets
+    bool sweep = false;             // --sweep: one knob at a time from DEFAULT instead of the presets
     std::vector<std::string> knobs; // --sweep --knob: the knobs to sweep; empty = all
 };
 

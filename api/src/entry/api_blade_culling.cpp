@@ -25,9 +25,11 @@ GRASS_API grass_result grass_set_blade_culling(grass_context* context, grass_fie
         // The host's field, then its hidden grass types (each with its own tiers).
         grass::Field* targets[GRASS_MAX_GRASS_TYPES] = {host_field};
         uint32_t count = 1;
-        for (uint32_t c = 0; c < host_field->child_count; ++c) targets[count++] = context->fields.get(host_field->children[c]);
+        for (uint32_t c = 0; c < host_field->child_count; ++c)
+            targets[count++] = context->fields.get(host_field->children[c]);
         grass::BladeCulling resolved[GRASS_MAX_GRASS_TYPES];
-        for (uint32_t i = 0; i < count; ++i) GRASS_TRY(grass::resolve_blade_culling(context, fn, *targets[i], desc, &resolved[i]));
+        for (uint32_t i = 0; i < count; ++i)
+            GRASS_TRY(grass::resolve_blade_culling(context, fn, *targets[i], desc, &resolved[i]));
         for (uint32_t i = 0; i < count; ++i) targets[i]->culling = resolved[i];
         return GRASS_SUCCESS;
     });

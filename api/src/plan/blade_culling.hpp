@@ -12,7 +12,7 @@ struct Field;
 // A field's culling as the shaders read it (FieldUniforms::culling). Off: enabled false.
 struct BladeCulling {
     bool enabled = false;
-    float orientation_limit = 2.0f; // |cos| above which a blade is culled; 2: the test is off
+    float orientation_limit = 2.0f;  // |cos| above which a blade is culled; 2: the test is off
     float frustum_tolerance = -1.0f; // widening of the frustum, relative to w; < 0: off
     float distance_max = 0.0f;       // metres; 0: the distance test is off
     float distance_levels = 0.0f;    // n of the blade-index test; 0: thinning by threshold
