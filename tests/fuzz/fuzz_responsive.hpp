@@ -267,8 +267,8 @@ inline void require_finite(const float* v, size_t n, const char* what) {
 
 // After a begun frame: what the plan hands a backend for responsive grass is finite, the
 // time step is a step grass documents (0 .. 2e9 s), and the interaction pass runs on the CPU
-// map (`map`, kept across frames as a backend keeps its textures) when the map is small
-// (nullptr: a device keeps the map).
+// map (`map`, kept across frames as a backend keeps its textures) when the map is small and
+// the colliders few enough for a fuzzer's execution (nullptr: a device keeps the map).
 inline void check_and_run_pass(const grass_context* ctx, std::vector<grass::InteractionTexel> map[2]) {
     const grass::FramePlan& plan = ctx->plan;
     const double dt = plan.stats.time_step;
@@ -293,6 +293,12 @@ inline void check_and_run_pass(const grass_context* ctx, std::vector<grass::Inte
         return;
     }
     if (ip.resolution > 256) return; // too slow a pass for a fuzzer's execution
+    // The pass tests each texel against its tile's colliders: 65536 colliders over the whole
+    // map are 4e9 tests a level (the GPU's documented worst case, seconds on the CPU).
+    for (uint32_t l = 0; l < ip.levels; ++l) {
+        const uint64_t tile_texels = uint64_t(ip.level[l].counts[1]) * ip.level[l].counts[1];
+        if (ip.tile_colliders[l].size() * tile_texels > 20000000u) return;
+    }
     const size_t texels = size_t(ip.resolution) * ip.resolution;
     for (uint32_t l = 0; l < ip.levels; ++l) {
         if (ip.map_is_new || map[l].size() != texels) map[l].assign(texels, grass::cleared_texel());
