@@ -221,7 +221,8 @@ struct Session {
     std::vector<uint8_t> pixels;
     bool in_frame = false;
     grass_host::Host* host = nullptr; // fuzz_gpu_sequence: the device the context draws on
-    double time = 0.0;                          // the last frame's grass_view_desc.time
+    double time = 0.0;                          // the last begun frame's grass_view_desc.time
+    bool had_frame = false;                     // a frame has begun on ctx (this input or, GPU: before)
     std::vector<grass::InteractionTexel> map[2]; // the interaction map, kept on the CPU
     grass_context* target = nullptr; // the context the last call went to
 };
@@ -344,6 +345,19 @@ grass_view_desc make_view(FuzzedDataProvider& in, double previous_time) {
     return v;
 }
 
+// After a begun frame at `time`: the step grass took is the one grass.h documents (the time
+// since the previous frame; 0 at the first frame and when the time went backwards).
+void check_time_step(Session& s, double time) {
+    const double expected = !s.had_frame || time < s.time ? 0.0 : time - s.time;
+    if (s.ctx->plan.stats.time_step != expected) {
+        std::fprintf(stderr, "a frame at %.17g s after one at %.17g s stepped %.17g s, not %.17g s\n", time, s.time,
+                     s.ctx->plan.stats.time_step, expected);
+        std::abort();
+    }
+    s.time = time;
+    s.had_frame = true;
+}
+
 void one_call(FuzzedDataProvider& in, Session& s) {
     grass_result r = GRASS_SUCCESS;
     s.target = s.ctx;
@@ -401,7 +415,7 @@ void one_call(FuzzedDataProvider& in, Session& s) {
                 std::abort();
             }
             if (r == GRASS_SUCCESS) {
-                s.time = v.time;
+                check_time_step(s, v.time);
                 grass_fuzz::check_and_run_pass(s.ctx, nullptr);
             }
             break;
@@ -410,7 +424,7 @@ void one_call(FuzzedDataProvider& in, Session& s) {
         r = grass_begin_frame(s.ctx, &v);
         s.in_frame = s.in_frame || r == GRASS_SUCCESS;
         if (r == GRASS_SUCCESS) {
-            s.time = v.time;
+            check_time_step(s, v.time);
             grass_fuzz::check_and_run_pass(s.ctx, s.host ? nullptr : s.map);
         }
         grass_frame_stats stats{};
@@ -515,6 +529,8 @@ struct GpuContext {
     grass_context* ctx = nullptr;
     Allocs allocs;
     long baseline = 0; // live allocations of the fresh context
+    double time = 0.0; // its last begun frame's time
+    bool had_frame = false;
 };
 
 GpuContext& gpu_context(grass_backend backend, uint32_t samples, grass_depth_mode depth) {
@@ -544,11 +560,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     Session s;
     s.host = g.host;
     s.ctx = g.ctx;
+    s.time = g.time;
+    s.had_frame = g.had_frame;
     const grass_context_desc od = grass_default_context_desc();
     if (grass_create_context(GRASS_HEADER_VERSION, &od, &s.other) != GRASS_SUCCESS) std::abort();
     for (size_t call = 0; call < kMaxCalls && in.remaining_bytes() > 0; ++call) one_call(in, s);
     // Whatever happened, the context takes a frame's end and gives back what the input made.
     grass_end_frame(s.ctx);
+    g.time = s.time;
+    g.had_frame = s.had_frame;
     for (const grass_field_id f : s.fields) grass_destroy_field(s.ctx, f);
     for (const grass_map_id m : s.maps) grass_destroy_map(s.ctx, m);
     for (const grass_patch_id p : s.patches) grass_destroy_patch(s.ctx, p);
