@@ -220,11 +220,11 @@ struct Session {
     Answers answers{nullptr, 0, 0};
     std::vector<uint8_t> pixels;
     bool in_frame = false;
-    grass_host::Host* host = nullptr; // fuzz_gpu_sequence: the device the context draws on
-    double time = 0.0;                          // the last begun frame's grass_view_desc.time
-    bool had_frame = false;                     // a frame has begun on ctx (this input or, GPU: before)
+    grass_host::Host* host = nullptr;            // fuzz_gpu_sequence: the device the context draws on
+    double time = 0.0;                           // the last begun frame's grass_view_desc.time
+    bool had_frame = false;                      // a frame has begun on ctx (this input or, GPU: before)
     std::vector<grass::InteractionTexel> map[2]; // the interaction map, kept on the CPU
-    grass_context* target = nullptr; // the context the last call went to
+    grass_context* target = nullptr;             // the context the last call went to
 };
 
 grass_result create_field(FuzzedDataProvider& in, Session& s) {
@@ -512,7 +512,6 @@ void counted_free(void* user, void* p) {
     std::free(p);
 }
 
-
 #ifdef GRASS_FUZZ_GPU_SEQUENCE
 
 // A grass context on a device, made once per process for each backend, sample count and
@@ -535,7 +534,8 @@ struct GpuContext {
 
 GpuContext& gpu_context(grass_backend backend, uint32_t samples, grass_depth_mode depth) {
     static GpuContext* made[2][2][2] = {};
-    GpuContext*& g = made[backend == GRASS_BACKEND_GL ? 0 : 1][samples == 4 ? 1 : 0][depth == GRASS_DEPTH_GREATER ? 1 : 0];
+    GpuContext*& g =
+        made[backend == GRASS_BACKEND_GL ? 0 : 1][samples == 4 ? 1 : 0][depth == GRASS_DEPTH_GREATER ? 1 : 0];
     grass_host::Host* host = grass_fuzz::gpu_host(backend, samples); // its device current from here on
     if (!host) std::abort();
     if (!g) {

@@ -69,7 +69,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         for (const grass_sample::GltfCollider& c : info.colliders) colliders.push_back(to_collider(c));
         grass_fuzz::use_scene(scene, colliders);
     } else if (error.empty() || error.compare(0, path.size(), path) != 0) {
-        std::fprintf(stderr, "a refused file gave the error \"%s\", which does not start with its path\n", error.c_str());
+        std::fprintf(stderr, "a refused file gave the error \"%s\", which does not start with its path\n",
+                     error.c_str());
         std::abort();
     } else if (scene.field.cells_x != marker || !scene.meshes.empty()) {
         std::fprintf(stderr, "a refused file changed the scene\n");

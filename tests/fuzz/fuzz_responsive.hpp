@@ -14,8 +14,8 @@
 #include <grass/grass.h>
 
 #include <cmath>
-#include <cstdio>
 #include <cstddef>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -203,8 +203,9 @@ inline grass_result set_interaction(FuzzedDataProvider& in, grass_context* ctx) 
     const bool sane = pick_sane(in);
     if (in.ConsumeBool()) d.level_count = sane ? in.ConsumeIntegralInRange<uint32_t>(1, 2) : hostile_u32(in, 1, 3);
     if (in.ConsumeBool()) d.texel_size[0] = value_f(in, sane, 1e-3, 1.0);
-    if (in.ConsumeBool()) d.texel_size[1] = sane ? d.texel_size[0] * in.ConsumeFloatingPointInRange<float>(1.0f, 1e3f)
-                                                 : hostile_float(in, 1e-3, 1e3);
+    if (in.ConsumeBool())
+        d.texel_size[1] =
+            sane ? d.texel_size[0] * in.ConsumeFloatingPointInRange<float>(1.0f, 1e3f) : hostile_float(in, 1e-3, 1e3);
     if (in.ConsumeBool()) {
         for (float& u : d.up) u = value_f(in, sane, -1.0, 1.0);
         if (sane) d.up[1] = 1.0f; // not zero
