@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (tests/fuzz; clang-15, ASan + UBSan) in build-fuzz and runs
 # each one for a while over its corpus (tests/fuzz/corpus/<target>) with its dictionary.
+# gpu_sequence draws on llvmpipe and lavapipe: the build needs the GL and Vulkan backends.
 # New inputs go to a scratch directory, never into the repository's corpus; a crash, leak or
 # timeout stops the run, leaves its input in build-fuzz/findings/<target>/ and fails.
 #
@@ -12,7 +13,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-20}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(api_sequence bake_cache scene png_map)
+[ ${#targets[@]} -eq 0 ] && targets=(api_sequence bake_cache scene png_map gltf gpu_sequence)
 jobs=${FUZZ_BUILD_JOBS:-$(nproc)}
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 

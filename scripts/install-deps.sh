@@ -14,6 +14,7 @@ packages=(
   libgtest-dev libbenchmark-dev                                      # tests, benchmarks
   python3-pytest python3-numpy python3-pip python3-setuptools        # the Python binding: tests, maps from arrays, pip install
   clang-format-15 python3                                            # the style check, the docs' link check
+  clang-15                                                           # the fuzz build: libFuzzer, ASan, UBSan (scripts/fuzz.sh)
   libglfw3-dev libimgui-dev libglm-dev libstb-dev                    # the windowed viewers: window, overlay, camera maths
   xvfb xauth                                                         # the viewers' window test (xvfb-run)
   ffmpeg gifsicle                                                    # grass-render --animation: GIF and MP4 (gifsicle shrinks the GIF)

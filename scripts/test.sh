@@ -34,5 +34,6 @@ TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sa
   ctest --test-dir build-tsan -L threads --output-on-failure
 
 # Fuzzing: every libFuzzer target of tests/fuzz for 20 s over its corpus, from a fixed seed
-# (clang, ASan + UBSan; CPU-only contexts, so no backend is built). The long runs: docs/testing.md.
-FUZZ_SEED=1 FUZZ_BUILD_DIR=build-fuzz-short FUZZ_CMAKE_ARGS="-DGRASS_BUILD_GL=OFF -DGRASS_BUILD_VULKAN=OFF" bash scripts/fuzz.sh 20
+# (clang, ASan + UBSan; with the GL and Vulkan backends, which fuzz_gpu_sequence draws with).
+# The long runs: docs/testing.md.
+FUZZ_SEED=1 FUZZ_BUILD_DIR=build-fuzz-short bash scripts/fuzz.sh 20

@@ -1,11 +1,27 @@
 // libFuzzer target: the C API as a host might drive it, on a CPU-only context (the core with
 // no GPU backend). The input decodes into a sequence of calls: patches, maps, map updates
 // and fields made from hostile descs (NaN, infinities, negative, huge, stale, foreign and
-// garbage ids), lod callbacks that answer garbage, frames with random views. Whatever the
+// garbage ids), lod callbacks that answer garbage, frames with random views, and responsive
+// grass (wind, colliders, the interaction map, blade mechanics: fuzz_responsive.hpp) with a
+// clock that steps forwards and backwards by any amount. Whatever the
 // input, every call returns a grass_result, an error leaves a message naming the call, and
 // the context stays destroyable; AddressSanitizer and UBSan watch everything in between,
 // and the context's own allocation counters must come back to zero.
+//
+// Built with GRASS_FUZZ_GPU_SEQUENCE it is fuzz_gpu_sequence: the same calls, fewer of them,
+// on a grass context of a GL (llvmpipe) or Vulkan (lavapipe) device made once per process
+// (fuzz_gpu_host.hpp), whose frames are also rendered into a small offscreen target; fields
+// and patches are kept small enough for a software rasteriser, and the device's validation
+// (Vulkan layers, GL debug output) must stay silent.
 #include "fuzz_lod_callback.h"
+#include "fuzz_responsive.hpp"
+#ifdef GRASS_FUZZ_GPU_SEQUENCE
+#    include "fuzz_gpu_host.hpp"
+#else
+namespace grass_host {
+class Host;
+}
+#endif
 #include "fuzz_values.hpp"
 
 #include <grass/grass.h>
@@ -21,7 +37,21 @@ using grass_fuzz::hostile_double;
 using grass_fuzz::hostile_float;
 using grass_fuzz::hostile_u32;
 
+#ifdef GRASS_FUZZ_GPU_SEQUENCE
+constexpr size_t kMaxCalls = 12;
+constexpr bool kGpu = true;
+#else
 constexpr size_t kMaxCalls = 64;
+constexpr bool kGpu = false;
+#endif
+
+// On a software rasteriser a field of accepted size may take seconds a frame: fields of
+// more than 16 cells a side and patches of more than 64 blades shrink (sizes grass must
+// refuse stay as they are).
+template <class T>
+void shrink_for_gpu(T* value, T most, T accepted_up_to) {
+    if (kGpu && *value > most && *value <= accepted_up_to) *value = most;
+}
 
 // An enum field holding any 32-bit value, as a C host can store it (C++ may not even load
 // such a value: it is written and read as bytes here; grass reads enums the same way).
@@ -134,6 +164,7 @@ grass_map_desc make_map_desc(FuzzedDataProvider& in, std::vector<uint8_t>* stora
 grass_patch_desc make_patch_desc(FuzzedDataProvider& in) {
     grass_patch_desc d = grass_default_patch_desc();
     d.blade_count = in.ConsumeBool() ? in.ConsumeIntegralInRange<uint32_t>(1, 64) : hostile_u32(in, 1, 400);
+    shrink_for_gpu<uint32_t>(&d.blade_count, 64, 1u << 20);
     d.seed = in.ConsumeIntegral<uint64_t>();
     const int edits = in.ConsumeIntegralInRange<int>(0, 4);
     for (int e = 0; e < edits; ++e) {
@@ -189,7 +220,11 @@ struct Session {
     Answers answers{nullptr, 0, 0};
     std::vector<uint8_t> pixels;
     bool in_frame = false;
-    grass_context* target = nullptr; // the context the last call went to
+    grass_host::Host* host = nullptr;            // fuzz_gpu_sequence: the device the context draws on
+    double time = 0.0;                           // the last begun frame's grass_view_desc.time
+    bool had_frame = false;                      // a frame has begun on ctx (this input or, GPU: before)
+    std::vector<grass::InteractionTexel> map[2]; // the interaction map, kept on the CPU
+    grass_context* target = nullptr;             // the context the last call went to
 };
 
 grass_result create_field(FuzzedDataProvider& in, Session& s) {
@@ -197,6 +232,8 @@ grass_result create_field(FuzzedDataProvider& in, Session& s) {
     d.patch = pick_id(in, s.patches, s.foreign_patches);
     d.cells_x = in.ConsumeBool() ? in.ConsumeIntegralInRange<uint32_t>(1, 32) : hostile_u32(in, 1, 256);
     d.cells_z = in.ConsumeBool() ? in.ConsumeIntegralInRange<uint32_t>(1, 32) : hostile_u32(in, 1, 256);
+    shrink_for_gpu<uint32_t>(&d.cells_x, 16, 1u << 24);
+    shrink_for_gpu<uint32_t>(&d.cells_z, 16, 1u << 24);
     if (in.ConsumeBool()) d.cell_size = hostile_double(in, 1e-4, 10.0);
     if (in.ConsumeBool()) d.base_transform[in.ConsumeIntegralInRange<int>(0, 15)] = hostile_double(in, -100.0, 100.0);
     if (in.ConsumeBool()) d.density = hostile_float(in, 0.0, 1.0);
@@ -266,7 +303,7 @@ grass_result create_field(FuzzedDataProvider& in, Session& s) {
     return r;
 }
 
-grass_view_desc make_view(FuzzedDataProvider& in) {
+grass_view_desc make_view(FuzzedDataProvider& in, double previous_time) {
     grass_view_desc v = grass_default_view_desc();
     // A plausible camera over the fields, then hostile edits.
     v.camera_position[0] = in.ConsumeFloatingPointInRange<double>(-10.0, 20.0);
@@ -278,6 +315,7 @@ grass_view_desc make_view(FuzzedDataProvider& in) {
     const float proj[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -(f + n) / (f - n), -1, 0, 0, -2 * f * n / (f - n), 0};
     std::memcpy(v.projection, proj, sizeof(proj));
     v.viewport[2] = v.viewport[3] = 64;
+    v.time = grass_fuzz::next_time(in, previous_time);
     const int edits = in.ConsumeIntegralInRange<int>(0, 3);
     for (int e = 0; e < edits; ++e) {
         switch (in.ConsumeIntegralInRange<int>(0, 6)) {
@@ -300,17 +338,31 @@ grass_view_desc make_view(FuzzedDataProvider& in) {
             v.flags = in.ConsumeIntegral<uint32_t>();
             break;
         default:
-            v.time = hostile_double(in, 0.0, 100.0);
+            v.time = hostile_double(in, -1e9, 1e9);
             break;
         }
     }
     return v;
 }
 
+// After a begun frame at `time`: the step grass took is the one grass.h documents (the time
+// since the previous frame; 0 at the first frame and when the time went backwards).
+void check_time_step(Session& s, double time) {
+    const double expected = !s.had_frame || time < s.time ? 0.0 : time - s.time;
+    if (s.ctx->plan.stats.time_step != expected) {
+        std::fprintf(stderr, "a frame at %.17g s after one at %.17g s stepped %.17g s, not %.17g s\n", time, s.time,
+                     s.ctx->plan.stats.time_step, expected);
+        std::abort();
+    }
+    s.time = time;
+    s.had_frame = true;
+}
+
 void one_call(FuzzedDataProvider& in, Session& s) {
     grass_result r = GRASS_SUCCESS;
     s.target = s.ctx;
-    switch (in.ConsumeIntegralInRange<int>(0, 13)) {
+    const int which = in.ConsumeIntegralInRange<int>(0, 18);
+    switch (which) {
     case 0: {
         const grass_patch_desc d = make_patch_desc(in);
         grass_patch_id p{};
@@ -350,11 +402,31 @@ void one_call(FuzzedDataProvider& in, Session& s) {
         break;
     case 7:
     case 8: {
-        const grass_view_desc v = make_view(in);
+        const grass_view_desc v = make_view(in, s.time);
         s.answer_bytes = in.ConsumeBytes<uint8_t>(in.ConsumeIntegralInRange<size_t>(0, 16));
         s.answers = Answers{s.answer_bytes.data(), s.answer_bytes.size(), 0};
+#ifdef GRASS_FUZZ_GPU_SEQUENCE
+        if (s.host && !s.in_frame && in.ConsumeBool()) { // begin, draw, end and read back
+            grass_host::Image image;
+            std::string error;
+            r = s.host->render(s.ctx, v, nullptr, &image, &error);
+            if (r != GRASS_SUCCESS && grass_get_last_error(s.ctx)[0] == '\0') {
+                std::fprintf(stderr, "the host's render failed: %s\n", error.c_str());
+                std::abort();
+            }
+            if (r == GRASS_SUCCESS) {
+                check_time_step(s, v.time);
+                grass_fuzz::check_and_run_pass(s.ctx, nullptr);
+            }
+            break;
+        }
+#endif
         r = grass_begin_frame(s.ctx, &v);
         s.in_frame = s.in_frame || r == GRASS_SUCCESS;
+        if (r == GRASS_SUCCESS) {
+            check_time_step(s, v.time);
+            grass_fuzz::check_and_run_pass(s.ctx, s.host ? nullptr : s.map);
+        }
         grass_frame_stats stats{};
         check_result(grass_get_frame_stats(s.ctx, &stats));
         if (in.ConsumeBool() || r != GRASS_SUCCESS) {
@@ -397,9 +469,21 @@ void one_call(FuzzedDataProvider& in, Session& s) {
         double ms[GRASS_TIER_KIND_COUNT];
         grass_bool available = 1;
         check_result(grass_get_tier_gpu_ms(s.ctx, ms, &available));
-        if (available) std::abort(); // a CPU-only context has no GPU timings
+        if (available && !s.host) std::abort(); // a CPU-only context has no GPU timings
         break;
     }
+    case 14:
+        r = grass_fuzz::set_wind(in, s.ctx);
+        break;
+    case 15:
+        r = grass_fuzz::set_colliders(in, s.ctx);
+        break;
+    case 16:
+        r = grass_fuzz::set_interaction(in, s.ctx);
+        break;
+    case 17:
+        r = grass_fuzz::set_blade_mechanics(in, s.ctx, pick_id(in, s.patches, s.foreign_patches));
+        break;
     default: {
         grass_tier_desc tiers[GRASS_DEFAULT_TIER_COUNT];
         grass_lod_test tests[GRASS_DEFAULT_LOD_TEST_COUNT];
@@ -408,6 +492,9 @@ void one_call(FuzzedDataProvider& in, Session& s) {
     }
     }
     check_result(r);
+    // GRASS_FUZZ_TRACE=1: each call's number (one_call's cases) and result, to read a finding.
+    static const bool trace = std::getenv("GRASS_FUZZ_TRACE") != nullptr;
+    if (trace) std::fprintf(stderr, "call %d: %s %s\n", which, grass_result_string(r), grass_get_last_error(s.target));
     if (!grass_fuzz::fuzz_result_string(in.ConsumeIntegral<int32_t>())) std::abort();
     // An error always leaves a message.
     if (r != GRASS_SUCCESS && grass_get_last_error(s.target)[0] == '\0') {
@@ -424,6 +511,84 @@ void counted_free(void* user, void* p) {
     static_cast<Allocs*>(user)->live -= 1;
     std::free(p);
 }
+
+#ifdef GRASS_FUZZ_GPU_SEQUENCE
+
+// A grass context on a device, made once per process for each backend, sample count and
+// depth convention (a Vulkan context takes seconds to make on lavapipe), shared by the
+// inputs: each input's calls run on it, then what the input made is destroyed and what it
+// set restored (wind, colliders, interaction map), so that the next input starts from the
+// same context, and its host allocations stay within kKeptAllocations of what they were
+// after it was made (the core's and the backend's tables keep the capacity they grew to: a
+// few arrays; an allocation lost per input exceeds it within kKeptAllocations inputs).
+constexpr long kKeptAllocations = 64;
+
+struct GpuContext {
+    grass_host::Host* host = nullptr;
+    grass_context* ctx = nullptr;
+    Allocs allocs;
+    long baseline = 0; // live allocations of the fresh context
+    double time = 0.0; // its last begun frame's time
+    bool had_frame = false;
+};
+
+GpuContext& gpu_context(grass_backend backend, uint32_t samples, grass_depth_mode depth) {
+    static GpuContext* made[2][2][2] = {};
+    GpuContext*& g =
+        made[backend == GRASS_BACKEND_GL ? 0 : 1][samples == 4 ? 1 : 0][depth == GRASS_DEPTH_GREATER ? 1 : 0];
+    grass_host::Host* host = grass_fuzz::gpu_host(backend, samples); // its device current from here on
+    if (!host) std::abort();
+    if (!g) {
+        g = new GpuContext; // never destroyed: see fuzz_gpu_host.hpp
+        g->host = host;
+        grass_context_desc cd = grass_default_context_desc();
+        cd.allocator = {counted_alloc, counted_free, &g->allocs};
+        cd.depth_mode = depth;
+        if (g->host->create_context(cd, &g->ctx) != GRASS_SUCCESS) std::abort();
+        g->baseline = g->allocs.live;
+    }
+    return *g;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    FuzzedDataProvider in(data, size);
+    const grass_depth_mode depth = in.ConsumeBool() ? GRASS_DEPTH_GREATER : GRASS_DEPTH_LESS;
+    const grass_backend backend = in.ConsumeBool() ? GRASS_BACKEND_VULKAN : GRASS_BACKEND_GL;
+    GpuContext& g = gpu_context(backend, in.ConsumeBool() ? 4 : 1, depth);
+    Session s;
+    s.host = g.host;
+    s.ctx = g.ctx;
+    s.time = g.time;
+    s.had_frame = g.had_frame;
+    const grass_context_desc od = grass_default_context_desc();
+    if (grass_create_context(GRASS_HEADER_VERSION, &od, &s.other) != GRASS_SUCCESS) std::abort();
+    for (size_t call = 0; call < kMaxCalls && in.remaining_bytes() > 0; ++call) one_call(in, s);
+    // Whatever happened, the context takes a frame's end and gives back what the input made.
+    grass_end_frame(s.ctx);
+    g.time = s.time;
+    g.had_frame = s.had_frame;
+    for (const grass_field_id f : s.fields) grass_destroy_field(s.ctx, f);
+    for (const grass_map_id m : s.maps) grass_destroy_map(s.ctx, m);
+    for (const grass_patch_id p : s.patches) grass_destroy_patch(s.ctx, p);
+    check_result(grass_set_wind(s.ctx, nullptr));
+    check_result(grass_set_colliders(s.ctx, nullptr, 0));
+    check_result(grass_set_interaction(s.ctx, nullptr));
+    grass_destroy_context(s.other);
+    if (s.host->validation_messages() != 0) {
+        std::fprintf(stderr, "the device's validation spoke:\n%s\n", s.host->validation_log().c_str());
+        std::abort();
+    }
+    if (g.allocs.live > g.baseline + kKeptAllocations) {
+        std::fprintf(stderr, "%ld host allocations of a fresh context, %ld after an input's objects were destroyed\n",
+                     g.baseline, g.allocs.live);
+        std::abort();
+    }
+    return 0;
+}
+
+#else
 
 } // namespace
 
@@ -448,3 +613,5 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     return 0;
 }
+
+#endif

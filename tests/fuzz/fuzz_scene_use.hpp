@@ -1,8 +1,11 @@
 // What the sample tools do with a loaded scene, on a CPU-only context: its patch, its design
-// maps, its field with its tiers and lod tests, and one frame from its camera. Every value
-// the loader let through reaches the library, which must refuse or accept it cleanly.
+// maps, its field with its tiers and lod tests, its responsive grass (wind, interaction map,
+// mechanics, colliders at a time; grass_sample::apply_responsive) and two frames from its
+// camera. Every value the loader let through reaches the library, which must refuse or
+// accept it cleanly.
 #pragma once
 
+#include "responsive.hpp"
 #include "scene.hpp"
 
 #include <grass/grass.h>
@@ -12,6 +15,7 @@
 #include <cstring>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 namespace grass_fuzz {
 
@@ -32,7 +36,8 @@ inline bool write_bytes(const std::string& path, const void* data, size_t size) 
     return std::fclose(f) == 0 && ok;
 }
 
-inline void use_scene(const grass_sample::Scene& scene) {
+// `colliders`: more colliders for the frames (a glTF scene's), given to grass_set_colliders.
+inline void use_scene(const grass_sample::Scene& scene, const std::vector<grass_collider>& colliders = {}) {
     grass_context* ctx = nullptr;
     const grass_context_desc cd = grass_default_context_desc();
     if (grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx) != GRASS_SUCCESS) std::abort();
@@ -70,7 +75,14 @@ inline void use_scene(const grass_sample::Scene& scene) {
                 std::memcpy(v.projection, proj, sizeof(proj));
                 v.viewport[2] = v.viewport[3] = 64;
                 grass_sample::apply_light(scene, &v);
-                if (grass_begin_frame(ctx, &v) == GRASS_SUCCESS) grass_end_frame(ctx);
+                for (int frame = 0; frame < 2; ++frame) {
+                    v.time = 1.0 + 0.1 * frame;
+                    grass_sample::apply_responsive(ctx, patch, scene.responsive, v.time, 0.1, frame == 0);
+                    if (!colliders.empty()) {
+                        grass_set_colliders(ctx, colliders.data(), static_cast<uint32_t>(colliders.size()));
+                    }
+                    if (grass_begin_frame(ctx, &v) == GRASS_SUCCESS) grass_end_frame(ctx);
+                }
             }
         }
     }
