@@ -361,7 +361,7 @@ void check_time_step(Session& s, double time) {
 void one_call(FuzzedDataProvider& in, Session& s) {
     grass_result r = GRASS_SUCCESS;
     s.target = s.ctx;
-    const int which = in.ConsumeIntegralInRange<int>(0, 18);
+    const int which = in.ConsumeIntegralInRange<int>(0, 20);
     switch (which) {
     case 0: {
         const grass_patch_desc d = make_patch_desc(in);
@@ -484,6 +484,14 @@ void one_call(FuzzedDataProvider& in, Session& s) {
     case 17:
         r = grass_fuzz::set_blade_mechanics(in, s.ctx, pick_id(in, s.patches, s.foreign_patches));
         break;
+    case 18:
+        r = grass_fuzz::set_blade_culling(in, s.ctx, pick_id(in, s.fields, s.foreign_fields));
+        break;
+    case 19: {
+        const grass_field_id f = pick_id(in, s.fields, s.foreign_fields);
+        r = grass_fuzz::set_field_wind_map(in, s.ctx, f, pick_id(in, s.maps, s.foreign_maps));
+        break;
+    }
     default: {
         grass_tier_desc tiers[GRASS_DEFAULT_TIER_COUNT];
         grass_lod_test tests[GRASS_DEFAULT_LOD_TEST_COUNT];

@@ -246,6 +246,58 @@ inline grass_result set_blade_mechanics(FuzzedDataProvider& in, grass_context* c
     return grass_set_blade_mechanics(ctx, patch, &m);
 }
 
+// grass_set_blade_culling on `field` (any id): NULL, or hostile values.
+inline grass_result set_blade_culling(FuzzedDataProvider& in, grass_context* ctx, grass_field_id field) {
+    if (in.ConsumeIntegralInRange<int>(0, 15) == 0) return grass_set_blade_culling(ctx, field, nullptr);
+    grass_blade_culling_desc c = grass_default_blade_culling_desc();
+    pick_struct_type(in, &c.type, GRASS_STRUCT_TYPE_BLADE_CULLING_DESC);
+    if (in.ConsumeIntegralInRange<int>(0, 15) == 0) c.next = &c;
+    const bool sane = pick_sane(in);
+    const int edits = in.ConsumeIntegralInRange<int>(0, 5);
+    for (int e = 0; e < edits; ++e) {
+        switch (in.ConsumeIntegralInRange<int>(0, 6)) {
+        case 0:
+            pick_raw_enum(in, &c.orientation, sane ? 0 : -1, sane ? 1 : 3);
+            break;
+        case 1:
+            c.orientation_limit = value_f(in, sane, 0.5, 1.0);
+            break;
+        case 2:
+            pick_raw_enum(in, &c.view_frustum, sane ? 0 : -1, sane ? 1 : 3);
+            break;
+        case 3:
+            c.frustum_tolerance = value_f(in, sane, 0.0, 1.0);
+            break;
+        case 4:
+            pick_raw_enum(in, &c.distance, sane ? 0 : -1, sane ? 2 : 4);
+            break;
+        case 5:
+            pick_raw_enum(in, &c.distance_levels, sane ? 1 : 0, sane ? 64 : 100);
+            break;
+        default:
+            c.distance_max = value_f(in, sane, 0.0, 1e4);
+            break;
+        }
+    }
+    return grass_set_blade_culling(ctx, field, &c);
+}
+
+// grass_set_field_wind_map on `field` with `map` (any ids): NULL, a null map, or hostile values.
+inline grass_result set_field_wind_map(FuzzedDataProvider& in, grass_context* ctx, grass_field_id field,
+                                       grass_map_id map) {
+    if (in.ConsumeIntegralInRange<int>(0, 15) == 0) return grass_set_field_wind_map(ctx, field, nullptr);
+    grass_wind_map_desc d = grass_default_wind_map_desc();
+    pick_struct_type(in, &d.type, GRASS_STRUCT_TYPE_WIND_MAP_DESC);
+    if (in.ConsumeIntegralInRange<int>(0, 15) == 0) d.next = &d;
+    if (in.ConsumeIntegralInRange<int>(0, 7) != 0) d.map = map;
+    const bool sane = pick_sane(in);
+    d.speed = value_f(in, sane, 0.0, 1e3);
+    if (in.ConsumeBool()) {
+        for (double& m : d.cell_to_map) m = value(in, sane, -2.0, 2.0);
+    }
+    return grass_set_field_wind_map(ctx, field, &d);
+}
+
 // The next frame's time from the previous one: small steps either way, huge steps either
 // way, the documented bounds, and values past them (NaN, infinities, beyond +-1e9).
 inline double next_time(FuzzedDataProvider& in, double previous) {
@@ -290,7 +342,10 @@ inline void check_and_run_pass(const grass_context* ctx, std::vector<grass::Inte
     const size_t responsive = (sizeof(f) - offsetof(grass::FrameUniforms, wind)) / sizeof(float);
     require_finite(f.wind, responsive, "frame.wind..wind_sources");
     for (const grass::TierDraw& d : plan.draws) {
-        require_finite(d.uniforms.mechanics, 12, "draw.uniforms.mechanics..field_up");
+        static_assert(offsetof(grass::FieldUniforms, culling) + sizeof(float[4]) -
+                              offsetof(grass::FieldUniforms, mechanics) == 24 * sizeof(float),
+                      "mechanics, trample, field_up, wind map and culling are contiguous");
+        require_finite(d.uniforms.mechanics, 24, "draw.uniforms.mechanics..culling");
     }
     const grass::InteractionPlan& ip = plan.interaction;
     for (const grass::GpuCollider& c : ip.colliders) require_finite(c.a, 12, "interaction.colliders");
