@@ -26,6 +26,7 @@
 // Usage: grass-measure popping [--backend gl|vk] [--scene FILE] [--frames N] [--size WxH]
 //                              [--samples N] [--canopy M] [--cell-budget N] [--max-reference-cells N]
 //                              [--cache DIR] [--no-agreement] [--wind S] [--wind-time T]
+//                              [--blade-culling TESTS]
 // A zone whose reference needs more than --max-reference-cells cells even in its narrowest
 // window (4 columns) is listed but not measured (the far zones: ~1500 cells for 8 pixels).
 #include <grass/grass.h>
@@ -68,6 +69,8 @@ struct Options {
     bool agreement = true;
     float wind = 0.0f;      // m/s; 0: still grass
     double wind_time = 2.0; // s: grass_view_desc.time of every frame
+    // --blade-culling: per-blade culling of the lod setup's geometry tier (not the reference's)
+    std::vector<std::string> blade_culling;
 };
 
 double luma(const uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
@@ -234,6 +237,23 @@ bool make_scene_context(grass_host::Host& host, const Options& o, const grass_sa
         return false;
     }
     return true;
+}
+
+// --blade-culling on the lod setup's field: each name switches one of jahrmann2017 6.2's
+// tests on at his values (the distance tests over the geometry tier).
+bool set_blade_culling(const Options& o, const SceneContext& lod, std::string* error) {
+    if (o.blade_culling.empty()) return true;
+    grass_blade_culling_desc c = grass_default_blade_culling_desc();
+    for (const std::string& t : o.blade_culling) {
+        if (t == "orientation") c.orientation = 1;
+        if (t == "frustum") c.view_frustum = 1;
+        if (t == "distance-index") c.distance = GRASS_DISTANCE_CULLING_BLADE_INDEX;
+        if (t == "distance-threshold") c.distance = GRASS_DISTANCE_CULLING_THRESHOLD;
+    }
+    const grass_result r = grass_set_blade_culling(lod.ctx, lod.field, &c);
+    if (r == GRASS_SUCCESS) return true;
+    *error = std::string("grass_set_blade_culling: ") + grass_get_last_error(lod.ctx);
+    return false;
 }
 
 // ---- Per-tier mean-colour agreement ------------------------------------------------------
@@ -495,7 +515,8 @@ void measure_zone(const Options& o, const grass_sample::Scene& s, const LodSetup
     SceneContext lod, ref;
     const LodSetup reference = reference_setup(z->reference_end);
     if (!make_scene_context(*host, o, s, setup.tiers, setup.tests, &lod, &error) ||
-        !make_scene_context(*host, o, s, reference.tiers, reference.tests, &ref, &error)) {
+        !make_scene_context(*host, o, s, reference.tiers, reference.tests, &ref, &error) ||
+        !set_blade_culling(o, lod, &error)) {
         throw grass_sample::Failure(error);
     }
     std::vector<double> prev_lod, prev_ref;
@@ -652,6 +673,11 @@ Subcommand add_popping(CLI::App& measure) {
     app->add_option("--wind", o->wind, "m/s of wind (default direction, gusts and turbulence); 0: still grass")
         ->capture_default_str()
         ->check(CLI::Range(0.0f, 1000.0f));
+    app->add_option("--blade-culling", o->blade_culling,
+                    "per-blade culling of the lod setup's geometry tier (jahrmann2017 6.2), at his values: "
+                    "orientation, frustum, distance-index or distance-threshold (repeatable or comma-separated)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"orientation", "frustum", "distance-index", "distance-threshold"}));
     app->add_option("--wind-time", o->wind_time, "seconds: grass_view_desc.time of every frame")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1e6));

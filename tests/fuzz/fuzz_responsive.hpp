@@ -343,7 +343,8 @@ inline void check_and_run_pass(const grass_context* ctx, std::vector<grass::Inte
     require_finite(f.wind, responsive, "frame.wind..wind_sources");
     for (const grass::TierDraw& d : plan.draws) {
         static_assert(offsetof(grass::FieldUniforms, culling) + sizeof(float[4]) -
-                              offsetof(grass::FieldUniforms, mechanics) == 24 * sizeof(float),
+                              offsetof(grass::FieldUniforms, mechanics) ==
+                          24 * sizeof(float),
                       "mechanics, trample, field_up, wind map and culling are contiguous");
         require_finite(d.uniforms.mechanics, 24, "draw.uniforms.mechanics..culling");
     }
