@@ -20,7 +20,7 @@ class WindMapApiTest : public DynamicsTest {
 protected:
     grass_map_id make_map(grass_map_format format) {
         const std::vector<float> texels(4 * 4 * 4, 0.5f);
-        const std::vector<uint8_t> bytes(4 * 4, 128);
+        const std::vector<uint8_t> bytes(4 * 4 * 4, 128); // RGBA8 at most
         grass_map_desc md = grass_default_map_desc();
         md.width = md.height = 4;
         md.format = format;
