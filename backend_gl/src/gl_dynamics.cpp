@@ -128,6 +128,11 @@ grass_result GlBackend::run_interaction_pass(const FramePlan& plan, const char* 
     }
     // The draws fetch the texels; the next frame's pass loads them as images.
     gl_.MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    // Unbind the compute program before a draw program is bound: Mesa's context keeps the
+    // program bound next, in place of the compute stage, referenced until the compute stage
+    // changes again, so that a host that never runs compute kept a grass program that
+    // grass_destroy_context had deleted (GlAllocationFailure's count of GL names).
+    gl_.UseProgram(0);
     return GRASS_SUCCESS;
 }
 

@@ -7,7 +7,7 @@
 // - every device-memory allocation of a scenario (context, patch, field, frames) failing in
 //   turn with VK_ERROR_OUT_OF_DEVICE_MEMORY gives GRASS_ERROR_OUT_OF_MEMORY from that call
 //   alone; the call repeated succeeds, the frame still draws grass, nothing leaks.
-#include "render_fixture.hpp"
+#include "allocation_scenario.hpp"
 #include "vk_intercept.hpp"
 
 #include <grass/grass_vk.h>
@@ -20,22 +20,6 @@ namespace grass_test {
 namespace {
 
 namespace vi = vk_intercept;
-
-struct Log {
-    grass_message_id last_error = GRASS_MSG_NONE;
-    std::string text;
-};
-
-grass_context_desc logged_desc(Log* log) {
-    grass_context_desc cd = grass_default_context_desc();
-    cd.log_user_data = log;
-    cd.log_fn = [](void* user, grass_log_level level, grass_message_id id, const char* message) {
-        auto* l = static_cast<Log*>(user);
-        if (level == GRASS_LOG_ERROR) l->last_error = id;
-        if (level != GRASS_LOG_INFO) l->text += std::string(message) + "\n";
-    };
-    return cd;
-}
 
 grass_host::TargetDesc intercepted_target() {
     grass_host::TargetDesc t;
@@ -69,7 +53,7 @@ TEST(DeviceFailure, ADeviceLostMidFrameIsReportedAndTheContextStaysDestroyable) 
     const grass_host::TargetDesc t = intercepted_target();
     auto host = grass_host::Host::create(GRASS_BACKEND_VULKAN, t, &error);
     ASSERT_TRUE(host) << error;
-    Log log;
+    FailureLog log;
     grass_context* ctx = nullptr;
     ASSERT_EQ(host->create_context(logged_desc(&log), &ctx), GRASS_SUCCESS) << log.text;
     grass_field_id field{};
@@ -95,76 +79,27 @@ TEST(DeviceFailure, ADeviceLostMidFrameIsReportedAndTheContextStaysDestroyable) 
     EXPECT_EQ(vi::live().total(), 0) << "left behind: " << vi::live().describe();
 }
 
-// One run of the scenario with the `fail_at`th vkAllocateMemory failing (0: none). Returns
-// the allocations it made, or -1 after a failed expectation. `responsive`: with wind and a
-// collider (blade curves, the interaction map, its pipeline and per-frame buffer).
-// *setup_allocations: the allocations made before the first frame.
-int allocation_scenario(grass_host::Host& host, int fail_at, bool responsive = false,
-                        int* setup_allocations = nullptr) {
+// One run of the scenario (allocation_scenario.hpp) with the `fail_at`th vkAllocateMemory
+// failing (0: none); then every Vulkan object grass made is destroyed with the context.
+ScenarioResult allocation_scenario(grass_host::Host& host, int fail_at, bool responsive = false) {
     vi::clear_failures();
     if (fail_at > 0) vi::fail_calls("vkAllocateMemory", VK_ERROR_OUT_OF_DEVICE_MEMORY, 1, fail_at - 1);
-    const int injected_before = vi::failures_injected();
-    const int64_t made_before = vi::live().memory_made;
-    Log log;
-    std::string error;
-    // A call either succeeds, or fails with out of memory because of the injected failure
-    // and then succeeds when repeated.
-    auto call = [&](const char* what, const std::function<grass_result()>& f) {
-        const bool failed_before = vi::failures_injected() > injected_before;
-        grass_result r = f();
-        if (r == GRASS_SUCCESS) return true;
-        EXPECT_EQ(r, GRASS_ERROR_OUT_OF_MEMORY) << what << " (allocation " << fail_at << "): " << log.text << error;
-        EXPECT_FALSE(failed_before) << what << " failed after the injected failure: " << log.text << error;
-        EXPECT_EQ(log.last_error, GRASS_MSG_OUT_OF_MEMORY) << log.text;
-        r = f();
-        EXPECT_EQ(r, GRASS_SUCCESS) << what << " repeated: " << log.text << error;
-        return r == GRASS_SUCCESS;
-    };
-    grass_context* ctx = nullptr;
-    const grass_context_desc cd = logged_desc(&log);
-    if (!call("grass_vk_create_context", [&] { return host.create_context(cd, &ctx); })) return -1;
-    grass_patch_desc pd = grass_default_patch_desc();
-    pd.blade_count = 128;
-    grass_patch_id patch{};
-    if (!call("grass_create_patch", [&] { return grass_create_patch(ctx, &pd, &patch); })) return -1;
-    grass_field_desc fd = grass_default_field_desc();
-    fd.patch = patch;
-    fd.cells_x = fd.cells_z = 64;
-    grass_field_id field{};
-    if (!call("grass_create_field", [&] { return grass_create_field(ctx, &fd, &field); })) return -1;
-    if (responsive) {
-        grass_wind_desc wind = grass_default_wind_desc();
-        wind.speed = 4.0f;
-        EXPECT_EQ(grass_set_wind(ctx, &wind), GRASS_SUCCESS) << log.text;
-        grass_collider ball{};
-        ball.radius = 0.4f;
-        ball.centre[0] = 8.0;
-        ball.centre[1] = 0.2;
-        ball.centre[2] = 3.0;
-        EXPECT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS) << log.text;
-    }
-    if (setup_allocations) *setup_allocations = static_cast<int>(vi::live().memory_made - made_before);
-    const grass_view_desc v = scene_view(host);
-    grass_host::Image image;
-    for (int frame = 0; frame < 2; ++frame) {
-        if (!call("a frame", [&] { return host.render(ctx, v, nullptr, &image, &error); })) return -1;
-    }
-    expect_grass(image, host.target(), 0.2, "the last frame");
-    const int64_t allocations = vi::live().memory_made - made_before;
-    grass_destroy_context(ctx);
+    AllocationProbe probe;
+    probe.failures_injected = [] { return vi::failures_injected(); };
+    probe.allocations_made = [] { return vi::live().memory_made; };
+    probe.create_function = "grass_vk_create_context";
+    ScenarioResult result = run_allocation_scenario(host, probe, fail_at, responsive);
+    if (result.context) grass_destroy_context(result.context);
     EXPECT_EQ(vi::live().total(), 0) << "allocation " << fail_at << ": left behind: " << vi::live().describe();
     EXPECT_EQ(host.validation_messages(), 0u) << host.validation_log();
-    if (fail_at > 0) {
-        EXPECT_EQ(vi::failures_injected(), injected_before + 1) << "allocation " << fail_at;
-    }
-    return static_cast<int>(allocations);
+    return result;
 }
 
 TEST(DeviceFailure, EveryDeviceMemoryAllocationFailingInTurnGivesOutOfMemory) {
     std::string error;
     auto host = grass_host::Host::create(GRASS_BACKEND_VULKAN, intercepted_target(), &error);
     ASSERT_TRUE(host) << error;
-    const int total = allocation_scenario(*host, 0);
+    const int total = allocation_scenario(*host, 0).allocations;
     ASSERT_GT(total, 3);
     for (int n = 1; n <= total && !::testing::Test::HasFailure(); ++n) allocation_scenario(*host, n);
     std::printf("[ device   ] %d device-memory allocations, each failed once\n", total);
@@ -174,9 +109,9 @@ TEST(DeviceFailure, EveryAllocationOfResponsiveGrassFailingInTurnGivesOutOfMemor
     std::string error;
     auto host = grass_host::Host::create(GRASS_BACKEND_VULKAN, intercepted_target(), &error);
     ASSERT_TRUE(host) << error;
-    const int still = allocation_scenario(*host, 0);
-    int setup = 0;
-    const int total = allocation_scenario(*host, 0, true, &setup);
+    const int still = allocation_scenario(*host, 0).allocations;
+    const ScenarioResult responsive = allocation_scenario(*host, 0, true);
+    const int total = responsive.allocations, setup = responsive.setup_allocations;
     ASSERT_GT(total, still) << "wind and a collider allocate more";
     // Responsive grass allocates in its frames; the setup is that of still grass, tested above.
     for (int n = setup + 1; n <= total && !::testing::Test::HasFailure(); ++n) allocation_scenario(*host, n, true);
