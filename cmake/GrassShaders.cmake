@@ -27,8 +27,9 @@ function(grass_embed_glsl out_cpp namespace)
 endfunction()
 
 # grass_compile_spirv(<out_cpp_list_var> <namespace> <shader>...): SPIR-V word arrays.
-# With SPIRV_DEFINE set by the caller (a macro name), the shaders are compiled with it
-# defined and their arrays are named <shader>_<lower-case macro> (blade_vert_grass_responsive).
+# With SPIRV_DEFINE set by the caller (macro names, a list), the shaders are compiled with
+# them defined and their arrays are named <shader>_<lower-case macro>... in the list's order
+# (blade_vert_grass_responsive, blade_vert_grass_responsive_grass_storage_blocks).
 function(grass_compile_spirv out_var namespace)
   if(NOT SHADER_DIR)
     set(SHADER_DIR "${GRASS_SHADER_DIR}")
@@ -36,10 +37,11 @@ function(grass_compile_spirv out_var namespace)
   find_program(GRASS_GLSLC glslc REQUIRED)
   set(define_args "")
   set(suffix "")
-  if(SPIRV_DEFINE)
-    set(define_args "-D${SPIRV_DEFINE}")
-    string(TOLOWER "_${SPIRV_DEFINE}" suffix)
-  endif()
+  foreach(d IN LISTS SPIRV_DEFINE)
+    list(APPEND define_args "-D${d}")
+    string(TOLOWER "_${d}" lower)
+    string(APPEND suffix "${lower}")
+  endforeach()
   set(outputs "")
   foreach(s IN LISTS ARGN)
     string(REPLACE "." "_" name "${s}")

@@ -27,9 +27,17 @@ layout(constant_id = 0) const uint GRASS_FEATURES = 0u;
 #elif !defined(GRASS_FEATURES)
 #error "the GL backend must define GRASS_FEATURES (the draw's map feature mask)"
 #endif
+// The Frame and Field blocks: uniform buffers, or (Vulkan, GRASS_STORAGE_BLOCKS) read-only
+// storage buffers of the same std140 layout, for lavapipe, which recompiles a shader on every
+// draw whose branches read uniform-buffer values (backend_vk/src/vk_spirv.hpp).
+#ifdef GRASS_STORAGE_BLOCKS
+#define GRASS_BLOCK(b) layout(std140, binding = b) readonly buffer
+#else
+#define GRASS_BLOCK(b) layout(std140, binding = b) uniform
+#endif
 bool has_map(uint role_bit) { return (GRASS_FEATURES & role_bit) != 0u; }
 
-layout(std140, binding = 0) uniform Frame {
+GRASS_BLOCK(0) Frame {
     mat4 view_projection;  // camera-relative world -> clip (the host's projection)
     vec4 sun_direction;    // xyz: unit vector towards the sun
     vec4 sun_color;        // rgb
@@ -51,7 +59,7 @@ layout(std140, binding = 0) uniform Frame {
     vec4 wind_sources[64]; // 16 sources x 4 vec4 (frame_plan.hpp)
 } frame;
 
-layout(std140, binding = 1) uniform Field {
+GRASS_BLOCK(1) Field {
     mat4 patch_to_world;   // patch units -> world metres; rotation x cell size, no translation
     vec4 map_u;            // cell space -> map u: dot(map_u.xyz, vec3(x, z, 1)) (lemme's configTf)
     vec4 map_v;            // ... and map v

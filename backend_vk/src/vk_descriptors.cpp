@@ -9,14 +9,16 @@ constexpr uint32_t kFrameSetsPerPool = 32;
 VkResult create_pool(const Functions& fn, VkDevice device, uint32_t sets, VkDescriptorPoolCreateFlags flags,
                      VkDescriptorPool* out) {
     const VkDescriptorPoolSize sizes[] = {
+        // The Frame and Field blocks are one type or the other, by device (vk_spirv.hpp).
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kUniformBuffersPerSet * sets},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC, kUniformBuffersPerSet * sets},
         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kImageSamplersPerSet * sets},
         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStorageBuffersPerSet * sets},
     };
     VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     info.flags = flags;
     info.maxSets = sets;
-    info.poolSizeCount = 3;
+    info.poolSizeCount = sizeof(sizes) / sizeof(sizes[0]);
     info.pPoolSizes = sizes;
     return fn.vkCreateDescriptorPool(device, &info, nullptr, out);
 }

@@ -6,17 +6,9 @@
 #include "context/backend.hpp"
 #include "patch/patch_data.hpp"
 #include "plan/frame_plan.hpp"
+#include "vk_spirv.hpp"
 
 #include <cstddef>
-
-namespace grass_vk_spirv {
-extern const uint32_t blade_vert[];
-extern const uint32_t blade_vert_size; // bytes
-extern const uint32_t blade_frag[];
-extern const uint32_t blade_frag_size;
-extern const uint32_t blade_vert_grass_responsive[];
-extern const uint32_t blade_vert_grass_responsive_size;
-} // namespace grass_vk_spirv
 
 namespace grass::vk {
 
@@ -44,21 +36,16 @@ static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_
 static_assert(offsetof(TierInstance, cell) == 16 && offsetof(TierInstance, terrain) == 32 && sizeof(TierInstance) == 48,
               "instance layout of blade.vert");
 
-PipelineShape blade_shape(bool responsive) {
+PipelineShape blade_shape(bool responsive, bool storage_blocks) {
     VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertex_input.vertexBindingDescriptionCount = 2;
     vertex_input.pVertexBindingDescriptions = kBindings;
     vertex_input.vertexAttributeDescriptionCount = sizeof(kAttributes) / sizeof(kAttributes[0]);
     vertex_input.pVertexAttributeDescriptions = kAttributes;
     // With multisampling, the blade edge alpha becomes coverage (blade.frag).
-    return PipelineShape{responsive ? grass_vk_spirv::blade_vert_grass_responsive : grass_vk_spirv::blade_vert,
-                         responsive ? grass_vk_spirv::blade_vert_grass_responsive_size
-                                    : grass_vk_spirv::blade_vert_size,
-                         grass_vk_spirv::blade_frag,
-                         grass_vk_spirv::blade_frag_size,
-                         vertex_input,
-                         true,
-                         "the blade pipelines"};
+    const Spirv vert = spirv(Shader::blade_vert, responsive, storage_blocks);
+    const Spirv frag = spirv(Shader::blade_frag, responsive, storage_blocks);
+    return PipelineShape{vert.code, vert.size, frag.code, frag.size, vertex_input, true, "the blade pipelines"};
 }
 
 // The locations of the vertex shader's inputs (bit l: location l), read from its SPIR-V:
@@ -138,9 +125,10 @@ bool BladePipeline::create_variant(uint32_t features, VkFailure* failure, const 
     if (has_variant(features)) return true;
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
     const bool responsive = (features & kBladeCurveFeatures) != 0;
-    const PipelineShape shapes[kPipelineKindCount] = {blade_shape(responsive), SlicePipelines::volume_shape(responsive),
-                                                      SlicePipelines::image_shape(responsive),
-                                                      DebugViewPipeline::shape()};
+    const bool storage = target_.storage_blocks;
+    const PipelineShape shapes[kPipelineKindCount] = {
+        blade_shape(responsive, storage), SlicePipelines::volume_shape(responsive, storage),
+        SlicePipelines::image_shape(responsive, storage), DebugViewPipeline::shape(storage)};
     for (uint32_t kind = 0; kind < kPipelineKindCount; ++kind) {
         if (!create_pipeline_pair(fn_, device_, target_, layout_, shapes[kind], features, pipelines_[features][kind],
                                   failure, what)) {
@@ -205,8 +193,8 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
 
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[kBindingCount] = {
-        {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, stages, nullptr},
-        {kBindingField, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1, stages, nullptr},
+        {kBindingFrame, block_descriptor_type(target_.storage_blocks), 1, stages, nullptr},
+        {kBindingField, block_descriptor_type(target_.storage_blocks), 1, stages, nullptr},
         {kBindingDensityMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
         {kBindingSliceColor, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_linear_},
         {kBindingSliceNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_linear_},

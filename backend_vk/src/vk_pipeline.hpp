@@ -64,8 +64,14 @@ struct PipelineTarget {
     VkFormat color_format = VK_FORMAT_UNDEFINED;
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    bool depth_greater = false; // reversed-Z host: GREATER_OR_EQUAL
+    bool depth_greater = false;  // reversed-Z host: GREATER_OR_EQUAL
+    bool storage_blocks = false; // Frame and Field as storage buffers (vk_spirv.hpp; Device)
 };
+
+// The descriptor type of the Frame and Field blocks (dynamic offsets: one per draw).
+inline VkDescriptorType block_descriptor_type(bool storage_blocks) {
+    return storage_blocks ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+}
 
 // What differs between the graphics pipelines of the backend; the rest (viewport and
 // scissor dynamic, no culling, opaque colour, the target's samples and formats) is shared.

@@ -1,19 +1,6 @@
 #include "vk_slice_pipelines.hpp"
 
-namespace grass_vk_spirv {
-extern const uint32_t volume_vert[];
-extern const uint32_t volume_vert_size; // bytes
-extern const uint32_t volume_frag[];
-extern const uint32_t volume_frag_size;
-extern const uint32_t image_vert[];
-extern const uint32_t image_vert_size;
-extern const uint32_t image_frag[];
-extern const uint32_t image_frag_size;
-extern const uint32_t volume_frag_grass_responsive[];
-extern const uint32_t volume_frag_grass_responsive_size;
-extern const uint32_t image_frag_grass_responsive[];
-extern const uint32_t image_frag_grass_responsive_size;
-} // namespace grass_vk_spirv
+#include "vk_spirv.hpp"
 
 namespace grass::vk {
 
@@ -21,26 +8,19 @@ namespace grass::vk {
 // blade_interface.glsl), not through alpha to coverage. No culling (shared state):
 // volume.frag keeps the back faces itself.
 namespace {
-PipelineShape slice_shape(const uint32_t* vert, uint32_t vert_size, const uint32_t* frag, uint32_t frag_size,
-                          const char* name) {
-    return PipelineShape{vert, vert_size, frag, frag_size, instance_only_vertex_input(), false, name};
+PipelineShape slice_shape(Shader vert, Shader frag, bool responsive, bool storage_blocks, const char* name) {
+    const Spirv v = spirv(vert, responsive, storage_blocks), f = spirv(frag, responsive, storage_blocks);
+    return PipelineShape{v.code, v.size, f.code, f.size, instance_only_vertex_input(), false, name};
 }
 } // namespace
 
-PipelineShape SlicePipelines::volume_shape(bool responsive) {
-    namespace spv = grass_vk_spirv;
-    return responsive ? slice_shape(spv::volume_vert, spv::volume_vert_size, spv::volume_frag_grass_responsive,
-                                    spv::volume_frag_grass_responsive_size, "the volume tier pipelines")
-                      : slice_shape(spv::volume_vert, spv::volume_vert_size, spv::volume_frag, spv::volume_frag_size,
-                                    "the volume tier pipelines");
+PipelineShape SlicePipelines::volume_shape(bool responsive, bool storage_blocks) {
+    return slice_shape(Shader::volume_vert, Shader::volume_frag, responsive, storage_blocks,
+                       "the volume tier pipelines");
 }
 
-PipelineShape SlicePipelines::image_shape(bool responsive) {
-    namespace spv = grass_vk_spirv;
-    return responsive ? slice_shape(spv::image_vert, spv::image_vert_size, spv::image_frag_grass_responsive,
-                                    spv::image_frag_grass_responsive_size, "the image tier pipelines")
-                      : slice_shape(spv::image_vert, spv::image_vert_size, spv::image_frag, spv::image_frag_size,
-                                    "the image tier pipelines");
+PipelineShape SlicePipelines::image_shape(bool responsive, bool storage_blocks) {
+    return slice_shape(Shader::image_vert, Shader::image_frag, responsive, storage_blocks, "the image tier pipelines");
 }
 
 } // namespace grass::vk

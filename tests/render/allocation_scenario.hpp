@@ -29,8 +29,8 @@ struct AllocationProbe {
 };
 
 struct ScenarioResult {
-    int allocations = -1; // allocations the scenario made; -1 after a failed expectation
-    int setup_allocations = 0; // of them, those made before the first frame
+    int allocations = -1;             // allocations the scenario made; -1 after a failed expectation
+    int setup_allocations = 0;        // of them, those made before the first frame
     grass_context* context = nullptr; // still alive: the caller checks what it left, then destroys it
     std::unique_ptr<FailureLog> log;  // the context's log (it writes here until destroyed)
 };

@@ -55,12 +55,12 @@ void APIENTRY buffer_data(GLuint buffer, GLsizeiptr size, const void* data, GLen
 void APIENTRY storage_2d(GLuint texture, GLsizei levels, GLenum format, GLsizei width, GLsizei height) {
     if (!fails()) g.storage_2d(texture, levels, format, width, height);
 }
-void APIENTRY storage_3d(GLuint texture, GLsizei levels, GLenum format, GLsizei width, GLsizei height,
-                         GLsizei depth) {
+void APIENTRY storage_3d(GLuint texture, GLsizei levels, GLenum format, GLsizei width, GLsizei height, GLsizei depth) {
     if (!fails()) g.storage_3d(texture, levels, format, width, height, depth);
 }
 
-template <typename Fn> void (*wrap(void (*real)(void), Fn* keep, Fn wrapper))(void) {
+template <typename Fn>
+void (*wrap(void (*real)(void), Fn* keep, Fn wrapper))(void) {
     *keep = reinterpret_cast<Fn>(real);
     return reinterpret_cast<void (*)(void)>(wrapper);
 }

@@ -4,8 +4,7 @@
 // everything grass holds must be what it held at the end of the first lap: host memory and
 // allocations (grass_get_memory_stats), GPU memory, the process's resident memory (within
 // --rss-slack-kb), GL object names / Vulkan objects; and the GL debug output (KHR_debug) or
-// the Vulkan validation layers (with synchronization validation) stay silent. (Not the
-// resident memory on lavapipe: see rss_checked below.)
+// the Vulkan validation layers (with synchronization validation) stay silent.
 //
 //   grass_soak --backend none|gl|vk --frames 10000 --period 1000
 // Prints one line per lap; exits 1 on the first broken promise. ctest runs a short form.
@@ -104,17 +103,6 @@ int main(int argc, char** argv) {
         if (host->create_context(cd, &ctx) != GRASS_SUCCESS) return 1;
     } else if (grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx) != GRASS_SUCCESS) {
         return 1;
-    }
-    // Lavapipe (Mesa 22.3, Debian 12) keeps what it makes for every draw whose shader it
-    // specialises on uniform values (its "uniform inlining": a copy of the shader and a new
-    // compiled variant on every descriptor set bind, freed only with the pipeline, or never):
-    // the process grows by megabytes a frame while everything grass holds stays the same
-    // (docs/records/testing.md, "Soak"). There the resident memory is reported, not checked.
-    const bool rss_checked =
-        !(o.backend == GRASS_BACKEND_VULKAN && host && host->device_name().find("llvmpipe") != std::string::npos);
-    if (!rss_checked) {
-        std::printf("soak: resident memory not checked on %s (lavapipe keeps a shader variant per draw)\n",
-                    host->device_name().c_str());
     }
     auto fail = [&](const char* what) {
         std::fprintf(stderr, "soak: %s: %s\n", what, grass_get_last_error(ctx));
@@ -224,8 +212,7 @@ int main(int argc, char** argv) {
                                   now.memory.host_allocations == first.memory.host_allocations &&
                                   now.memory.host_bytes_peak == first.memory.host_bytes_peak &&
                                   now.memory.gpu_bytes == first.memory.gpu_bytes && now.gl_names == first.gl_names &&
-                                  now.vk_objects == first.vk_objects &&
-                                  (!rss_checked || now.rss_kb - first.rss_kb <= o.rss_slack_kb);
+                                  now.vk_objects == first.vk_objects && now.rss_kb - first.rss_kb <= o.rss_slack_kb;
                 if (!flat) {
                     std::fprintf(stderr, "soak: not flat since frame %d (rss slack %ld kB)\n", o.period,
                                  o.rss_slack_kb);
