@@ -1,6 +1,7 @@
 #include "gltf_scene.hpp"
 
 #include "gltf_accessor.hpp"
+#include "png_chunks.hpp"
 #include "terrain_raster.hpp"
 
 #include <png.h>
@@ -617,6 +618,8 @@ DensityTexture decode_density_texture(const Model& model, int texture) {
     if (image.bufferView >= 0) {
         bytes = buffer_view_bytes(model, image.bufferView, &size, "image " + std::to_string(source));
     }
+    const std::string problem = size > 0 ? png_chunk_problem(bytes, size) : std::string();
+    if (!problem.empty()) refuse("image " + std::to_string(source) + " (the density texture) is refused: " + problem);
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
     if (size == 0 || !png_image_begin_read_from_memory(&png, bytes, size)) {

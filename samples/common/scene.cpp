@@ -1,6 +1,7 @@
 #include "scene.hpp"
 
 #include "gltf_scene.hpp"
+#include "png_chunks.hpp"
 #include "responsive_scene.hpp"
 
 #include "scene_json.hpp"
@@ -65,12 +66,23 @@ void check_png_size(png_image* png, const std::string& path) {
     }
 }
 
+// Begins reading the PNG at `path` from `bytes` (the whole file): its chunks checked first
+// (png_chunks.hpp), then its header, then its size.
+void begin_png(const std::string& path, std::vector<unsigned char>* bytes, png_image* png) {
+    std::string error;
+    if (!read_file_bytes(path, bytes, &error)) throw std::runtime_error(error);
+    const std::string problem = png_chunk_problem(bytes->data(), bytes->size());
+    if (!problem.empty()) throw std::runtime_error(path + " is refused: " + problem);
+    png->version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_memory(png, bytes->data(), bytes->size()))
+        throw std::runtime_error("cannot read " + path + ": " + png->message);
+    check_png_size(png, path);
+}
+
 void load_density_png(const std::string& path, Scene* s) {
+    std::vector<unsigned char> bytes;
     png_image png{};
-    png.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&png, path.c_str()))
-        throw std::runtime_error("cannot read " + path + ": " + png.message);
-    check_png_size(&png, path);
+    begin_png(path, &bytes, &png);
     png.format = PNG_FORMAT_GRAY;
     s->density_texels.resize(PNG_IMAGE_SIZE(png));
     if (!png_image_finish_read(&png, nullptr, s->density_texels.data(), 0, nullptr)) {
@@ -84,11 +96,9 @@ void load_density_png(const std::string& path, Scene* s) {
 // data maps (density, light, height) as grey, 16-bit files kept at 16 bits (libpng treats
 // 16-bit files as linear and 8-bit ones as sRGB: neither is converted here).
 Scene::MapImage load_map_png(const std::string& path, bool color) {
+    std::vector<unsigned char> bytes;
     png_image png{};
-    png.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&png, path.c_str()))
-        throw std::runtime_error("cannot read " + path + ": " + png.message);
-    check_png_size(&png, path);
+    begin_png(path, &bytes, &png);
     Scene::MapImage m;
     const bool sixteen = (png.format & PNG_FORMAT_FLAG_LINEAR) != 0 && !color;
     png.format = color ? PNG_FORMAT_RGBA : (sixteen ? PNG_FORMAT_LINEAR_Y : PNG_FORMAT_GRAY);

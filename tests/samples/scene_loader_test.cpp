@@ -1,5 +1,6 @@
 // The sample tools' scene loader (samples/common/scene.cpp) with hostile files: the inputs
 // fuzz_scene and fuzz_png_map found, kept as regressions.
+#include "png_chunks.hpp"
 #include "scene.hpp"
 
 #include <gtest/gtest.h>
@@ -51,6 +52,29 @@ TEST(SceneLoader, APngLargerThanAMapMayBeIsRefusedBeforeItsPixelsAreAllocated) {
             EXPECT_LT(seconds, 1.0) << "refused before decoding";
         }
     }
+}
+
+// fuzz_png_map: a 136-byte PNG whose tEXt chunk claims 1,950,701,684 bytes made libpng
+// allocate them before reading the chunk (an out-of-memory stop at 2 GB). A chunk that claims
+// more than the file has left is refused before libpng sees the file.
+TEST(SceneLoader, APngChunkLongerThanItsFileIsRefusedBeforeLibpngAllocatesIt) {
+    const std::string file = kCorpus + "/png_map/text-chunk-claims-2gb.png";
+    for (const char* key : {R"("maps": {"density": "%s"})", R"("maps": {"color": "%s"})", R"("density_map": "%s")"}) {
+        char field[512];
+        std::snprintf(field, sizeof(field), key, file.c_str());
+        const std::string path = write_scene("long-chunk.json", std::string(R"({"field": {)") + field + "}}");
+        grass_sample::Scene scene;
+        std::string error;
+        EXPECT_FALSE(grass_sample::load_scene(path, &scene, &error)) << key;
+        EXPECT_NE(error.find("text-chunk-claims-2gb.png is refused: its chunk \"tEXt\" at byte 33 claims 1950701684 "
+                             "bytes; the file has 95 left"),
+                  std::string::npos)
+            << error;
+    }
+    const unsigned char bytes[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0,
+                                   0,    0,   'I', 'E', 'N',  'D',  1,    2,    3, 4};
+    EXPECT_EQ(grass_sample::png_chunk_problem(bytes, sizeof(bytes)), "") << "a chunk that fits";
+    EXPECT_NE(grass_sample::png_chunk_problem(bytes, sizeof(bytes) - 1), "") << "its CRC cut off";
 }
 
 // fuzz_scene: "blade_count": 1e308 went through nlohmann's get<uint32_t>, a plain cast of a
