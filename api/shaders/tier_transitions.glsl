@@ -9,13 +9,12 @@ float band_weight(vec4 band, float d) {
     return w_in * w_out;
 }
 
-// Opacity of a blade (threshold in (0, 1]) drawn by this draw's tier at distance d (metres)
-// where the local density is `density`.
-// An overlay tier (field.tiers.z = 1: hilltops, lemme 6.4.6) takes no share of the
-// transitions: it draws every blade the density passes, fully opaque.
-float tier_blade_opacity(float d, float threshold, float density) {
-    if (!(density > 0.0) || threshold > density) return 0.0;
-    if (field.tiers.z != 0u) return 1.0;
+// The interval (a, b] of r = threshold / density that this draw's tier draws at distance d
+// (metres): its share of the tiers' weights there, after the shares of the tiers beyond it.
+// a > b: it draws nothing. A field-edge instance (`field_edge`: a volume tier standing in for
+// the image tiers after it along the field's border, api/src/plan/frame_planner.cpp) draws
+// the share of every tier after this one instead, (0, their share].
+vec2 tier_interval(float d, bool field_edge) {
     uint tier = field.tiers.x, count = field.tiers.y;
     float total = 0.0, lo = 0.0, self_w = 0.0;
     for (uint t = 0u; t < count; ++t) {
@@ -24,9 +23,23 @@ float tier_blade_opacity(float d, float threshold, float density) {
         if (t > tier) lo += w;
         if (t == tier) self_w = w;
     }
-    if (!(total > 0.0) || !(self_w > 0.0)) return 0.0;
+    if (!(total > 0.0)) return vec2(1.0, 0.0);
+    if (field_edge) return lo > 0.0 ? vec2(0.0, lo / total) : vec2(1.0, 0.0);
+    if (!(self_w > 0.0)) return vec2(1.0, 0.0);
+    return vec2(lo / total, (lo + self_w) / total);
+}
+
+// Opacity of a blade (threshold in (0, 1]) drawn by this draw's tier at distance d (metres)
+// where the local density is `density`.
+// An overlay tier (field.tiers.z = 1: hilltops, lemme 6.4.6) takes no share of the
+// transitions: it draws every blade the density passes, fully opaque.
+float tier_blade_opacity(float d, float threshold, float density, bool field_edge) {
+    if (!(density > 0.0) || threshold > density) return 0.0;
+    if (field.tiers.z != 0u) return 1.0;
+    vec2 interval = tier_interval(d, field_edge);
+    if (interval.x > interval.y) return 0.0;
     float r = threshold / density;
-    float a = lo / total, b = (lo + self_w) / total;
+    float a = interval.x, b = interval.y;
     float window = field.transition.x;
     float enter = a <= 0.0 ? 1.0 : (window > 0.0 ? smoothstep(a - window, a + window, r) : (r > a ? 1.0 : 0.0));
     float leave = b >= 1.0 ? 1.0 : (window > 0.0 ? 1.0 - smoothstep(b - window, b + window, r) : (r <= b ? 1.0 : 0.0));
@@ -34,6 +47,9 @@ float tier_blade_opacity(float d, float threshold, float density) {
     // least one half draws it, so the crossover is exact (grass_field_desc.transition_window).
     float opacity = enter * leave;
     return sample_count() <= 1 ? step(0.5, opacity) : opacity;
+}
+float tier_blade_opacity(float d, float threshold, float density) {
+    return tier_blade_opacity(d, threshold, density, false);
 }
 
 // A slice texel holds several blades. Its coverage curve (api/src/baked_slices.hpp: the
@@ -61,20 +77,16 @@ float coverage_curve(vec4 t, float x) {
 // blades whose thresholds lie in the tier's interval of (0, density] (the texel-level twin
 // of tier_blade_opacity: a texel thins with the density, and two tiers sharing a transition
 // zone draw complementary shares, instead of all or nothing per texel).
-float tier_texel_share(float d, vec4 t, float density) {
+float tier_texel_share(float d, vec4 t, float density, bool field_edge) {
     if (!(density > 0.0) || t.r <= 0.0) return 0.0;
     if (field.tiers.z != 0u) return coverage_curve(t, density);
-    uint tier = field.tiers.x, count = field.tiers.y;
-    float total = 0.0, lo = 0.0, self_w = 0.0;
-    for (uint k = 0u; k < count; ++k) {
-        float w = band_weight(field.bands[k], d);
-        total += w;
-        if (k > tier) lo += w;
-        if (k == tier) self_w = w;
-    }
-    if (!(total > 0.0) || !(self_w > 0.0)) return 0.0;
-    float a = lo / total, b = (lo + self_w) / total;
+    vec2 interval = tier_interval(d, field_edge);
+    if (interval.x > interval.y) return 0.0;
+    float a = interval.x, b = interval.y;
     // Outside transition zones a tier's interval starts at 0, where the curve is 0.
     float below = a > 0.0 ? coverage_curve(t, a * density) : 0.0;
     return max(coverage_curve(t, b * density) - below, 0.0);
+}
+float tier_texel_share(float d, vec4 t, float density) {
+    return tier_texel_share(d, t, density, false);
 }

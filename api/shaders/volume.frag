@@ -19,6 +19,7 @@ layout(location = 1) flat in vec3 v_camera_local;
 layout(location = 2) flat in vec3 v_face_normal;
 layout(location = 3) flat in uvec4 v_cell;
 layout(location = 4) flat in vec2 v_terrain; // lowest, highest terrain under the instance (patch units)
+layout(location = 5) flat in float v_field_edge; // 1: a field-edge instance (tier_interval)
 
 layout(location = 0) out vec4 out_color;
 
@@ -100,8 +101,9 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     float density = local_density(cell_point);
     // The threshold view partitions whole texels by their threshold (each is one tier's);
     // the picture draws the share of each texel's blades the density and the tier select.
-    float share = debug_thresholds() ? tier_blade_opacity(length(world), threshold, density)
-                                     : tier_texel_share(length(world), thresholds, density);
+    bool field_edge = v_field_edge > 0.5;
+    float share = debug_thresholds() ? tier_blade_opacity(length(world), threshold, density, field_edge)
+                                     : tier_texel_share(length(world), thresholds, density, field_edge);
     float a = albedo.a * share;
     if (a <= 0.0) return;
     // Every blade is baked into one slice of each family (across x and across z), so a ray

@@ -7,13 +7,15 @@
 
 layout(location = 5) in vec4 i_origin; // xyz: corner relative to the camera (m)
 layout(location = 6) in uvec4 i_cell;  // xy: first cell, zw: size in cells
-layout(location = 7) in vec4 i_terrain; // x: lowest, y: highest terrain height under it (patch units)
+layout(location = 7) in vec4 i_terrain; // x: lowest, y: highest terrain height under it (patch units);
+                                        // z: 1 for a field-edge instance (tier_interval)
 
 layout(location = 0) out vec3 v_local;              // position in the cuboid, cells
 layout(location = 1) flat out vec3 v_camera_local;  // the camera in the same frame
 layout(location = 2) flat out vec3 v_face_normal;   // outward normal of this face
 layout(location = 3) flat out uvec4 v_cell;
 layout(location = 4) flat out vec2 v_terrain;       // i_terrain.xy (0, 0 without a height map)
+layout(location = 5) flat out float v_field_edge;   // i_terrain.z
 
 void main() {
 #ifdef VULKAN
@@ -41,5 +43,6 @@ void main() {
     v_face_normal = normals[v / 6];
     v_cell = i_cell;
     v_terrain = terrain;
+    v_field_edge = i_terrain.z;
     gl_Position = frame.view_projection * vec4(position, 1.0);
 }

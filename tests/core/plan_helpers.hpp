@@ -10,6 +10,7 @@ struct PlannedInstance {
     grass_tier_kind kind;
     uint32_t tier;
     uint64_t x0, z0, count_x, count_z; // cells, recovered from map uv and size
+    bool field_edge;                   // a volume tier standing in for the image tiers at the border
 };
 
 // Every planned instance's cell range.
@@ -21,6 +22,7 @@ inline std::vector<PlannedInstance> planned_instances(const grass_context* ctx, 
             PlannedInstance p;
             p.kind = d.kind;
             p.tier = d.tier;
+            p.field_edge = inst.terrain[2] != 0.0f;
             p.x0 = inst.cell[0];
             p.z0 = inst.cell[1];
             p.count_x = inst.count[0];

@@ -118,7 +118,33 @@ TEST_F(LodTest, EveryTierDrawsWhereItsTestsSayAndNowhereElse) {
     const auto instances = planned_instances(ctx, d.cells_x, d.cells_z);
     std::set<std::pair<uint32_t, uint64_t>> seen; // (tier, cell index)
     int per_kind[3] = {0, 0, 0};
+    const uint32_t image_tier = GRASS_DEFAULT_TIER_COUNT - 1;
+    ASSERT_EQ(tiers[image_tier].kind, GRASS_TIER_IMAGE);
+    size_t edge_instances = 0;
     for (const auto& p : instances) {
+        const bool border = p.x0 == 0 || p.z0 == 0 || p.x0 + p.count_x == d.cells_x || p.z0 + p.count_z == d.cells_z;
+        if (p.field_edge) {
+            // Field edges (frame_planner.cpp): the last volume tier draws the image tier's border
+            // cells, in strips at most 16 cells deep and long, where the image tier's band is.
+            ++edge_instances;
+            EXPECT_EQ(p.tier, image_tier - 1u);
+            EXPECT_TRUE(border) << "a field-edge instance at cell " << p.x0 << ", " << p.z0;
+            EXPECT_LE(std::max(p.count_x, p.count_z), 16u);
+            const double nx = std::max({0.0, p.x0 - eye[0], eye[0] - double(p.x0 + p.count_x)});
+            const double nz = std::max({0.0, p.z0 - eye[2], eye[2] - double(p.z0 + p.count_z)});
+            EXPECT_GE(std::sqrt(nx * nx + nz * nz) + 24.0, tests[2 * image_tier - 1].begin);
+            for (uint64_t j = p.z0; j < p.z0 + p.count_z; ++j) {
+                for (uint64_t i = p.x0; i < p.x0 + p.count_x; ++i) {
+                    ASSERT_TRUE(seen.insert({image_tier + 1, j * d.cells_x + i}).second)
+                        << "two field-edge instances draw a cell";
+                }
+            }
+            continue;
+        }
+        // The image tier leaves the field's border to the field-edge instances.
+        if (p.kind == GRASS_TIER_IMAGE) {
+            EXPECT_FALSE(border) << "the image tier at cell " << p.x0 << ", " << p.z0;
+        }
         per_kind[p.kind] += 1;
         // Distances of the instance's ground rectangle (blades add < 1 cell of height/overhang).
         const double nx = std::max({0.0, p.x0 - eye[0], eye[0] - double(p.x0 + p.count_x)});
@@ -152,6 +178,12 @@ TEST_F(LodTest, EveryTierDrawsWhereItsTestsSayAndNowhereElse) {
     EXPECT_GT(per_kind[GRASS_TIER_GEOMETRY], 0);
     EXPECT_GT(per_kind[GRASS_TIER_VOLUME], 0);
     EXPECT_GT(per_kind[GRASS_TIER_IMAGE], 0);
+    EXPECT_GT(edge_instances, 0u);
+    // Every border cell the image tier would draw is drawn by a field-edge instance: the far
+    // edge (z = 899) in view across the image tier's band.
+    for (uint64_t i = 200; i < 500; ++i) {
+        EXPECT_TRUE(seen.count({image_tier + 1, 899 * uint64_t(d.cells_x) + i})) << "far edge, cell " << i;
+    }
     grass_frame_stats s{};
     grass_get_frame_stats(ctx, &s);
     EXPECT_GT(s.macro_cells[GRASS_TIER_IMAGE], 0u);

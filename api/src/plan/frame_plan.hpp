@@ -85,7 +85,9 @@ struct TierInstance {
     uint32_t cell[2];  // location 6 xy: the first cell (field x, z)
     uint32_t count[2]; // location 6 zw: size in cells along field x and z (1, 1 for a cell)
     float terrain[4];  // location 7: x = lowest, y = highest terrain height under the instance, in patch
-                       // units (cell edges) along the field's up axis (0, 0 without a height map); zw = 0
+                       // units (cell edges) along the field's up axis (0, 0 without a height map); z = 1 for a
+                       // field-edge instance (a volume tier standing in for the image tiers after it at the
+                       // field's border: frame_planner.cpp), else 0; w = 0
 };
 static_assert(sizeof(TierInstance) == 48, "TierInstance must match the shader's instance layout");
 

@@ -80,6 +80,16 @@ public:
         const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
         density_map_ = density_slot != kNoMap ? ctx->maps.get(density_slot) : nullptr;
         height_map_ = height_slot != kNoMap ? ctx->maps.get(height_slot) : nullptr;
+        // Field edges: each image tier's stand-in at the border, the nearest volume tier before
+        // it (neither an overlay tier).
+        const LodSetup& lod = field_.lod;
+        uint32_t volume = kNoEdgeTier;
+        for (uint32_t t = 0; t < lod.tier_count; ++t) {
+            edge_tier_[t] = kNoEdgeTier;
+            if ((lod.overlay_tiers >> t) & 1u) continue;
+            if (lod.tiers[t].kind == GRASS_TIER_VOLUME) volume = t;
+            if (lod.tiers[t].kind == GRASS_TIER_IMAGE) edge_tier_[t] = volume;
+        }
     }
 
     grass_result run() {
@@ -227,7 +237,11 @@ private:
             if (lod.tiers[t].kind == GRASS_TIER_GEOMETRY && !leaf) draw = false; // cells only
             if (!draw) continue;
             children_tests &= ~lod.tests_of_tier[t];
-            add_instance(t, cells, box);
+            if (edge_tier_[t] != kNoEdgeTier) {
+                add_with_field_edges(t, cells, box, node.level);
+            } else {
+                add_instance(t, cells, box);
+            }
         }
         if (!leaf && children_tests != 0) push_children(node, children_tests);
         return GRASS_SUCCESS;
@@ -244,8 +258,76 @@ private:
         }
     }
 
+    // Field edges (issue 12): the image tier is a flat slice at half the grass's height, so a
+    // field drawn by it ended in a flat line at its border, where the grass's height shows
+    // against what lies behind (blades everywhere show it). The cells along the field's border
+    // are drawn by the image tier's stand-in, the nearest volume tier before it, whose carriers
+    // have the grass's height: as field-edge instances, which draw the share of the tiers
+    // after the stand-in (tier_transitions.glsl), so that in the transition zone the stand-in's
+    // own instances and the edge instances together draw each border cell whole. The rest of
+    // the node stays the image tier's.
+    void add_with_field_edges(uint32_t tier, const NodeCells& cells, const NodeBox& box, uint32_t level) {
+        const uint64_t nx = field_.desc.cells_x, nz = field_.desc.cells_z;
+        uint64_t x0 = cells.x0, x1 = cells.x0 + cells.count_x, z0 = cells.z0, z1 = cells.z0 + cells.count_z;
+        if (x0 > 0 && z0 > 0 && x1 < nx && z1 < nz) {
+            add_instance(tier, cells, box);
+            return;
+        }
+        const uint32_t stand_in = edge_tier_[tier];
+        const uint64_t depth = edge_depth(box, level);
+        if (z0 == 0) { // the rows along x first, whole; then the columns between them
+            const uint64_t d = std::min(depth, z1 - z0);
+            add_edge_strip(stand_in, NodeCells{x0, 0, x1 - x0, d}, level);
+            z0 = d;
+        }
+        if (z1 == nz && z1 > z0) {
+            const uint64_t d = std::min(depth, z1 - z0);
+            add_edge_strip(stand_in, NodeCells{x0, z1 - d, x1 - x0, d}, level);
+            z1 -= d;
+        }
+        if (x0 == 0 && z1 > z0) {
+            const uint64_t d = std::min(depth, x1 - x0);
+            add_edge_strip(stand_in, NodeCells{0, z0, d, z1 - z0}, level);
+            x0 = d;
+        }
+        if (x1 == nx && x1 > x0 && z1 > z0) {
+            const uint64_t d = std::min(depth, x1 - x0);
+            add_edge_strip(stand_in, NodeCells{x1 - d, z0, d, z1 - z0}, level);
+            x1 -= d;
+        }
+        if (x1 > x0 && z1 > z0) {
+            const NodeCells inner{x0, z0, x1 - x0, z1 - z0};
+            add_instance(tier, inner, box_of(inner, level));
+        }
+    }
+
+    // How deep into the field a view ray that passes the grass's top at the border goes before
+    // it reaches the ground, in cells: the grass's height times the node's distance over the
+    // camera's height above the grass. Seen low, the border's silhouette is the tips of many
+    // rows; seen from above, of one. At least 1, at most kEdgeDepth.
+    uint64_t edge_depth(const NodeBox& box, uint32_t level) const {
+        const double* c = frame_.cam_local;
+        const double dx = std::max({box.lo[0] - c[0], 0.0, c[0] - box.hi[0]});
+        const double dz = std::max({box.lo[2] - c[2], 0.0, c[2] - box.hi[2]});
+        const double above = c[1] - box.hi[1], grass = double(field_.extents[level].max_y);
+        const double depth = above > 0.0 ? grass * std::sqrt(dx * dx + dz * dz) / above : double(kEdgeDepth);
+        return static_cast<uint64_t>(std::min(std::max(std::ceil(depth), 1.0), double(kEdgeDepth)));
+    }
+
+    // A strip along the border as field-edge instances of `tier`, at most kEdgeStrip cells long.
+    void add_edge_strip(uint32_t tier, const NodeCells& strip, uint32_t level) {
+        const bool along_x = strip.count_x >= strip.count_z;
+        const uint64_t length = along_x ? strip.count_x : strip.count_z;
+        for (uint64_t k = 0; k < length; k += kEdgeStrip) {
+            const uint64_t n = std::min<uint64_t>(kEdgeStrip, length - k);
+            const NodeCells part = along_x ? NodeCells{strip.x0 + k, strip.z0, n, strip.count_z}
+                                           : NodeCells{strip.x0, strip.z0 + k, strip.count_x, n};
+            add_instance(tier, part, box_of(part, level), true);
+        }
+    }
+
     // The exact test before drawing: the node's box against the clip planes.
-    void add_instance(uint32_t tier, const NodeCells& cells, const NodeBox& box) {
+    void add_instance(uint32_t tier, const NodeCells& cells, const NodeBox& box, bool field_edge = false) {
         double corners[8][3];
         for (int k = 0; k < 8; ++k) {
             to_camera(frame_, (k & 1) ? box.hi[0] : box.lo[0], (k & 2) ? box.hi[1] : box.lo[1],
@@ -269,7 +351,8 @@ private:
         c.instance.count[1] = static_cast<uint32_t>(cells.count_z);
         c.instance.terrain[0] = static_cast<float>(box.terrain_lo);
         c.instance.terrain[1] = static_cast<float>(box.terrain_hi);
-        c.instance.terrain[2] = c.instance.terrain[3] = 0.0f;
+        c.instance.terrain[2] = field_edge ? 1.0f : 0.0f;
+        c.instance.terrain[3] = 0.0f;
         c.density =
             density_at(double(cells.x0) + 0.5 * double(cells.count_x), double(cells.z0) + 0.5 * double(cells.count_z));
         ctx_->plan_scratch.per_tier[tier].push_back(c);
@@ -406,6 +489,10 @@ private:
     double field_up_[3] = {0, 1, 0}; // the field's up, world, unit
     bool reads_map_ = false;         // the field reads the interaction map
     uint32_t features_ = 0;          // TierDraw::features of every draw of the field
+    static constexpr uint32_t kNoEdgeTier = ~0u;
+    static constexpr uint64_t kEdgeStrip = 16; // cells along the border in a field-edge instance, at most
+    static constexpr uint64_t kEdgeDepth = 16; // cells into the field of the field-edge instances, at most
+    uint32_t edge_tier_[GRASS_MAX_TIERS];      // per tier: its stand-in at the field's border, or kNoEdgeTier
 };
 
 } // namespace
