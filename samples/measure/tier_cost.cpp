@@ -4,6 +4,7 @@
 
 #include "cli.hpp"
 #include "measure.hpp"
+#include "scene.hpp"
 #include "stats.hpp"
 #include "tool.hpp"
 
@@ -22,6 +23,16 @@ const Setup kSingleTiers[3] = {{"geometry", GRASS_TIER_GEOMETRY, 0, 1},
                                {"image", GRASS_TIER_IMAGE, 0, 1}};
 
 Rig::Rig(const Options& options) : options_(options) {
+    // The scene file first: a bad one is refused before a host starts.
+    grass_patch_desc pd = grass_default_patch_desc();
+    if (!options.patch_scene.empty()) {
+        grass_sample::Scene scene;
+        std::string scene_error;
+        if (!grass_sample::load_scene(options.patch_scene, &scene, &scene_error)) {
+            throw grass_sample::Failure("--patch-of: " + scene_error);
+        }
+        pd = scene.patch;
+    }
     grass_host::TargetDesc target;
     target.width = options.width;
     target.height = options.height;
@@ -30,7 +41,6 @@ Rig::Rig(const Options& options) : options_(options) {
     if (!host_) throw grass_sample::Failure("cannot create the headless host: " + error);
     const grass_context_desc cd = grass_default_context_desc();
     grass_sample::check(host_->create_context(cd, &ctx_), "grass_create_context");
-    const grass_patch_desc pd = grass_default_patch_desc();
     grass_sample::check(grass_create_patch(ctx_, &pd, &patch_), "grass_create_patch", ctx_);
     view_ = grass_host::make_view(*host_, eye_, look_, 55.0f, 0.05f, 200.0f);
     std::vector<double> cpu;
@@ -194,6 +204,9 @@ Subcommand add_tier_cost(CLI::App& measure) {
     app->add_option("--frames", o->frames, "frames measured per row (after one that uploads; median)")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));
+    app->add_option("--patch-of", o->patch_scene,
+                    "draw the patch of this scene file (FILE.json: its \"patch\"), not the default patch")
+        ->check(CLI::ExistingFile);
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));

@@ -47,6 +47,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace grass_measure {
@@ -58,7 +59,8 @@ struct Options {
     bool maps = false, features = false;
     bool single = false; // only the tiers alone in single cells (kSingleTiers)
     int frames = 5;
-    int rounds = 3; // --maps and --features only
+    int rounds = 3;          // --maps and --features only
+    std::string patch_scene; // --patch-of: the patch of this scene file instead of the default patch
 };
 
 // One tier drawn alone: its kind, slices and largest macro-cell side (1 = single cells).

@@ -25,6 +25,14 @@ expect("tier-cost --single --maps" 2 "--(single excludes --maps|maps excludes --
 expect("tier-cost --features --single" 2 "--(single excludes --features|features excludes --single)" ${MEASURE} tier-cost
        --features --single)
 
+# tier-cost --patch-of takes a scene file's patch: a missing file and a bad patch are refused
+# by name (the latter before a host starts).
+expect("tier-cost --patch-of nosuch.json" 2 "--patch-of: File does not exist: nosuch.json" ${MEASURE} tier-cost
+       --patch-of nosuch.json)
+file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/cli-bad-patch.json" "{\"patch\": {\"blade_count\": -3}}")
+expect("tier-cost --patch-of with a bad patch" 1 "--patch-of: .*cli-bad-patch.json: \"blade_count\" is -3, out of range"
+       ${MEASURE} tier-cost --patch-of "${CMAKE_CURRENT_BINARY_DIR}/cli-bad-patch.json")
+
 set(tools "grass-render" "bench" "tier-cost" "popping" "dynamics")
 if(VIEWER)
   list(APPEND tools "grass-viewer")
