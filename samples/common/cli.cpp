@@ -110,4 +110,25 @@ CLI::Validator at_least(double lo) {
         ">=" + CLI::detail::to_string(lo));
 }
 
+CLI::Option* add_blade_culling_option(CLI::App& app, std::vector<std::string>* tests, const std::string& what) {
+    return app
+        .add_option("--blade-culling", *tests,
+                    "per-blade culling " + what +
+                        " (jahrmann2017 6.2), at his values: orientation, frustum, distance-index or "
+                        "distance-threshold (repeatable or comma-separated)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"orientation", "frustum", "distance-index", "distance-threshold"}));
+}
+
+grass_blade_culling_desc blade_culling_desc(const std::vector<std::string>& tests) {
+    grass_blade_culling_desc c = grass_default_blade_culling_desc();
+    for (const std::string& t : tests) {
+        if (t == "orientation") c.orientation = 1;
+        if (t == "frustum") c.view_frustum = 1;
+        if (t == "distance-index") c.distance = GRASS_DISTANCE_CULLING_BLADE_INDEX;
+        if (t == "distance-threshold") c.distance = GRASS_DISTANCE_CULLING_THRESHOLD;
+    }
+    return c;
+}
+
 } // namespace grass_sample

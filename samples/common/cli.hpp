@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace grass_sample {
 
@@ -30,6 +31,14 @@ CLI::Option* add_size_option(CLI::App& app, uint32_t* width, uint32_t* height, u
 // `name` X,Y,Z into out; *given set when the option is on the command line.
 CLI::Option* add_point_option(CLI::App& app, const std::string& name, double out[3], bool* given,
                               const std::string& help);
+
+// --blade-culling TESTS into *tests: the names of jahrmann2017 6.2's per-blade tests
+// (orientation, frustum, distance-index, distance-threshold), repeatable or comma-separated.
+// `what`: the tool's words for the field it applies to.
+CLI::Option* add_blade_culling_option(CLI::App& app, std::vector<std::string>* tests, const std::string& what);
+// Those tests switched on at Jahrmann's values (the distance tests thin over the field's
+// geometry tiers); the rest at grass_default_blade_culling_desc().
+grass_blade_culling_desc blade_culling_desc(const std::vector<std::string>& tests);
 
 // A value strictly between lo and hi (CLI::Range includes its ends).
 CLI::Validator open_range(double lo, double hi);

@@ -36,19 +36,6 @@ struct Options {
     std::vector<std::string> blade_culling; // per-blade culling tests (grass_set_blade_culling)
 };
 
-// The per-blade culling of --blade-culling: each name switches one of Jahrmann's tests on, at
-// his values; the distance tests thin over the field's geometry tiers.
-grass_blade_culling_desc blade_culling_desc(const std::vector<std::string>& tests) {
-    grass_blade_culling_desc c = grass_default_blade_culling_desc();
-    for (const std::string& t : tests) {
-        if (t == "orientation") c.orientation = 1;
-        if (t == "frustum") c.view_frustum = 1;
-        if (t == "distance-index") c.distance = GRASS_DISTANCE_CULLING_BLADE_INDEX;
-        if (t == "distance-threshold") c.distance = GRASS_DISTANCE_CULLING_THRESHOLD;
-    }
-    return c;
-}
-
 void add_options(CLI::App& app, Options* o) {
     grass_sample::add_backend_option(app, &o->backend);
     app.add_option("--scene", o->scene_path,
@@ -86,11 +73,7 @@ void add_options(CLI::App& app, Options* o) {
                 return grass_sample::parse_wind(text, &w, &error) ? std::string() : error;
             },
             "DX,DZ,SPEED[,GUST]"));
-    app.add_option("--blade-culling", o->blade_culling,
-                   "per-blade culling in the geometry tier (jahrmann2017 6.2), at his values: orientation, frustum, "
-                   "distance-index or distance-threshold (repeatable or comma-separated)")
-        ->delimiter(',')
-        ->check(CLI::IsMember({"orientation", "frustum", "distance-index", "distance-threshold"}));
+    grass_sample::add_blade_culling_option(app, &o->blade_culling, "in the geometry tier");
     app.add_option("--collider", o->colliders,
                    "a collider (repeatable): sphere:X,Y,Z,R[,VX,VY,VZ] or capsule:AX,AY,AZ,BX,BY,BZ,R[,VX,VY,VZ], "
                    "metres, moving at the velocity in m/s from --time on")
@@ -214,7 +197,7 @@ int main(int argc, char** argv) {
         if (r == GRASS_SUCCESS) r = grass_sample::create_scene_wind_map(ctx, scene, &wind_map);
         if (r == GRASS_SUCCESS) r = grass_sample::set_scene_wind_map(ctx, wind_map, field);
         if (r == GRASS_SUCCESS && !o.blade_culling.empty()) {
-            const grass_blade_culling_desc culling = blade_culling_desc(o.blade_culling);
+            const grass_blade_culling_desc culling = grass_sample::blade_culling_desc(o.blade_culling);
             r = grass_set_blade_culling(ctx, field, &culling);
         }
     }

@@ -243,13 +243,7 @@ bool make_scene_context(grass_host::Host& host, const Options& o, const grass_sa
 // tests on at his values (the distance tests over the geometry tier).
 bool set_blade_culling(const Options& o, const SceneContext& lod, std::string* error) {
     if (o.blade_culling.empty()) return true;
-    grass_blade_culling_desc c = grass_default_blade_culling_desc();
-    for (const std::string& t : o.blade_culling) {
-        if (t == "orientation") c.orientation = 1;
-        if (t == "frustum") c.view_frustum = 1;
-        if (t == "distance-index") c.distance = GRASS_DISTANCE_CULLING_BLADE_INDEX;
-        if (t == "distance-threshold") c.distance = GRASS_DISTANCE_CULLING_THRESHOLD;
-    }
+    const grass_blade_culling_desc c = grass_sample::blade_culling_desc(o.blade_culling);
     const grass_result r = grass_set_blade_culling(lod.ctx, lod.field, &c);
     if (r == GRASS_SUCCESS) return true;
     *error = std::string("grass_set_blade_culling: ") + grass_get_last_error(lod.ctx);
@@ -673,11 +667,7 @@ Subcommand add_popping(CLI::App& measure) {
     app->add_option("--wind", o->wind, "m/s of wind (default direction, gusts and turbulence); 0: still grass")
         ->capture_default_str()
         ->check(CLI::Range(0.0f, 1000.0f));
-    app->add_option("--blade-culling", o->blade_culling,
-                    "per-blade culling of the lod setup's geometry tier (jahrmann2017 6.2), at his values: "
-                    "orientation, frustum, distance-index or distance-threshold (repeatable or comma-separated)")
-        ->delimiter(',')
-        ->check(CLI::IsMember({"orientation", "frustum", "distance-index", "distance-threshold"}));
+    grass_sample::add_blade_culling_option(*app, &o->blade_culling, "of the lod setup's geometry tier");
     app->add_option("--wind-time", o->wind_time, "seconds: grass_view_desc.time of every frame")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1e6));
