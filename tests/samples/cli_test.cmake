@@ -64,6 +64,8 @@ expect("grass-render --frames 0" 2 "--frames: Value 0 not in range" ${RENDER} --
 expect("grass-render --fps 0" 2 "--fps: \"0\" is not between 0 and 10000" ${RENDER} --fps 0)
 expect("grass-render --wind 1,0" 2 "--wind: \"1,0\" is not DX,DZ,SPEED\\[,GUST\\]" ${RENDER} --wind 1,0)
 expect("grass-render --wind 0,0,3" 2 "--wind: \"0,0,3\": the direction DX,DZ is zero" ${RENDER} --wind 0,0,3)
+expect("grass-render --blade-culling orientation,bogus" 2 "--blade-culling: bogus not in \\{orientation,frustum,distance-index,distance-threshold\\}" ${RENDER} --blade-culling orientation,bogus)
+expect("popping --blade-culling bogus" 2 "--blade-culling: bogus not in" ${MEASURE} popping --blade-culling bogus)
 expect("grass-render --collider cube:0,0,0,1" 2 "--collider: \"cube:0,0,0,1\" is not sphere:X,Y,Z,R"
        ${RENDER} --collider cube:0,0,0,1)
 expect("grass-render --collider sphere:0,0,0" 2 "--collider: \"sphere:0,0,0\" is not sphere" ${RENDER} --collider
