@@ -166,74 +166,87 @@ TEST_P(TerrainDisplacementTest, TheDebugViewsBoxesLieOnTheTerrain) {
     check_follows_the_ramp(GRASS_TIER_IMAGE, 0.02, true);
 }
 
-// A ridge seen from afar and from below its crest: the image tier flattens the grass on
-// the crest into its quads; the hilltop overlay tier (a volume tier with a HILLTOP test)
-// adds the blades' silhouette above them.
-TEST_P(TerrainDisplacementTest, TheHilltopOverlayRaisesTheSilhouette) {
-    // 32 x 8 cells of 1 m; the terrain rises along z to a 4 m crest at z = 4 m and falls.
-    constexpr uint32_t kRows = 64;
-    std::vector<uint16_t> texels(2 * kRows);
-    for (uint32_t y = 0; y < kRows; ++y) {
-        const double v = (y + 0.5) / kRows;
-        texels[2 * y] = texels[2 * y + 1] = uint16_t(std::lround(std::sin(3.141592653589793 * v) * 65535.0));
+// A ridge seen from afar and from below its crest: 32 x 8 cells of 1 m; the terrain rises
+// along z to a 4 m crest at z = 4 m and falls. The image tier flattens the grass on the
+// crest into its quads; the hilltop overlay tier (a volume tier with a HILLTOP test) adds the
+// blades' silhouette above them.
+class RidgeTest : public TerrainDisplacementTest {
+protected:
+    grass_tier_desc tiers_[2] = {{GRASS_TIER_IMAGE, 0}, {GRASS_TIER_VOLUME, 2}};
+    grass_lod_test tests_[4] = {};
+    grass_view_desc view_{};
+
+    // The ridge's field: `overlay` adds the hilltop overlay tier; `blades` draws blades
+    // everywhere instead, of `blade_patch`, mirrored by `mirror_seed`.
+    grass_field_desc ridge_field(grass_map_id hill, bool overlay) {
+        tests_[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
+        tests_[0].tier = 0;
+        tests_[0].end = INFINITY;
+        tests_[1].kind = GRASS_LOD_TEST_MACRO_CELL;
+        tests_[1].tier = 0;
+        tests_[1].max_macro_cells = 1;
+        tests_[2].kind = GRASS_LOD_TEST_DISTANCE_BAND;
+        tests_[2].tier = 1;
+        tests_[2].end = INFINITY;
+        tests_[3].kind = GRASS_LOD_TEST_HILLTOP;
+        tests_[3].tier = 1;
+        grass_field_desc d = grass_default_field_desc();
+        d.patch = patch;
+        d.cell_size = 1.0;
+        d.cells_x = 32;
+        d.cells_z = 8;
+        d.tiers = tiers_;
+        d.lod_tests = tests_;
+        d.tier_count = overlay ? 2 : 1;
+        d.lod_test_count = overlay ? 4 : 2;
+        d.maps.height = hill;
+        d.maps.height_scale = 4.0f;
+        return d;
     }
-    grass_map_desc m = grass_default_map_desc();
-    m.pixels = texels.data();
-    m.width = 2;
-    m.height = kRows;
-    m.format = GRASS_MAP_FORMAT_R16_UNORM;
-    grass_map_id hill{};
-    ASSERT_EQ(grass_create_map(ctx, &m, &hill), GRASS_SUCCESS) << log;
 
-    grass_tier_desc tiers[2] = {{GRASS_TIER_IMAGE, 0}, {GRASS_TIER_VOLUME, 2}};
-    grass_lod_test tests[4] = {};
-    tests[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
-    tests[0].tier = 0;
-    tests[0].end = INFINITY;
-    tests[1].kind = GRASS_LOD_TEST_MACRO_CELL;
-    tests[1].tier = 0;
-    tests[1].max_macro_cells = 1;
-    tests[2].kind = GRASS_LOD_TEST_DISTANCE_BAND;
-    tests[2].tier = 1;
-    tests[2].end = INFINITY;
-    tests[3].kind = GRASS_LOD_TEST_HILLTOP;
-    tests[3].tier = 1;
-    grass_field_desc d = grass_default_field_desc();
-    d.patch = patch;
-    d.cell_size = 1.0;
-    d.cells_x = 32;
-    d.cells_z = 8;
-    d.tiers = tiers;
-    d.lod_tests = tests;
-    d.maps.height = hill;
-    d.maps.height_scale = 4.0f;
+    grass_map_id ridge_map() {
+        constexpr uint32_t kRows = 64;
+        std::vector<uint16_t> texels(2 * kRows);
+        for (uint32_t y = 0; y < kRows; ++y) {
+            const double v = (y + 0.5) / kRows;
+            texels[2 * y] = texels[2 * y + 1] = uint16_t(std::lround(std::sin(3.141592653589793 * v) * 65535.0));
+        }
+        grass_map_desc m = grass_default_map_desc();
+        m.pixels = texels.data();
+        m.width = 2;
+        m.height = kRows;
+        m.format = GRASS_MAP_FORMAT_R16_UNORM;
+        grass_map_id hill{};
+        EXPECT_EQ(grass_create_map(ctx, &m, &hill), GRASS_SUCCESS) << log;
+        const double eye[3] = {16.0, 2.0, -40.0}, target[3] = {16.0, 3.5, 4.0};
+        view_ = view(eye, target, 10.0f);
+        return hill;
+    }
 
-    const double eye[3] = {16.0, 2.0, -40.0}, target[3] = {16.0, 3.5, 4.0};
-    const grass_view_desc v = view(eye, target, 10.0f);
-    d.tier_count = 1;
-    d.lod_test_count = 2;
-    const grass_field_id image_only = make_field(d);
-    const auto without = render(v);
+    // The silhouette: the highest grass pixel row of a column (the image's height: none).
+    int top_row(const grass_host::Image& image, uint32_t x) const {
+        uint8_t sky[3];
+        expected_sky(host->target(), sky);
+        for (uint32_t y = 0; y < image.height; ++y) {
+            if (is_grass(image.pixel(x, y), sky)) return int(y);
+        }
+        return int(image.height);
+    }
+};
+
+TEST_P(RidgeTest, TheHilltopOverlayRaisesTheSilhouette) {
+    const grass_map_id hill = ridge_map();
+    const grass_field_id image_only = make_field(ridge_field(hill, false));
+    const auto without = render(view_);
     ASSERT_EQ(grass_destroy_field(ctx, image_only), GRASS_SUCCESS);
-    d.tier_count = 2;
-    d.lod_test_count = 4;
-    make_field(d);
-    const auto with = render(v);
+    make_field(ridge_field(hill, true));
+    const auto with = render(view_);
     grass_frame_stats stats{};
     ASSERT_EQ(grass_get_frame_stats(ctx, &stats), GRASS_SUCCESS);
     save(without, backend_name(GetParam()) + ".image_only");
     save(with, backend_name(GetParam()) + ".overlay");
     EXPECT_GT(stats.instances[GRASS_TIER_VOLUME], 0u) << "the overlay draws the cells on the crest";
 
-    // The silhouette: the highest grass pixel of every column.
-    uint8_t sky[3];
-    expected_sky(host->target(), sky);
-    const auto top_row = [&](const grass_host::Image& image, uint32_t x) {
-        for (uint32_t y = 0; y < image.height; ++y) {
-            if (is_grass(image.pixel(x, y), sky)) return int(y);
-        }
-        return int(image.height);
-    };
     int columns = 0, higher = 0, lower = 0;
     double rise = 0.0;
     for (uint32_t x = 0; x < with.width; ++x) {
@@ -253,7 +266,60 @@ TEST_P(TerrainDisplacementTest, TheHilltopOverlayRaisesTheSilhouette) {
     EXPECT_EQ(lower, 0) << "the overlay only adds grass";
 }
 
+// Hill silhouettes keep the grass's height (issue 12): the crest with the overlay stands as
+// high as blades everywhere, column by column, within a row of what another patch and
+// mirror seed of the blades differ by; the image tier alone (the control) stands lower.
+TEST_P(RidgeTest, TheHilltopOverlaysSilhouetteStandsAsHighAsTheBlades) {
+    const grass_map_id hill = ridge_map();
+    grass_patch_desc pd = grass_default_patch_desc();
+    pd.seed = 2;
+    grass_patch_id other{};
+    ASSERT_EQ(grass_create_patch(ctx, &pd, &other), GRASS_SUCCESS) << log;
+    const auto draw = [&](grass_field_desc d) {
+        const grass_field_id f = make_field(d);
+        grass_host::Image image = render(view_);
+        EXPECT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
+        return image;
+    };
+    grass_field_desc blades = ridge_field(hill, false);
+    blades.tiers = &blade_tier; // one geometry tier over every distance (RenderTest's band)
+    blades.tier_count = 1;
+    blades.lod_tests = &blade_band;
+    blades.lod_test_count = 1;
+    blade_band.end = INFINITY;
+    const grass_host::Image truth = draw(blades);
+    blades.patch = other;
+    blades.mirror_seed = 1;
+    const grass_host::Image seed2 = draw(blades);
+    const grass_host::Image overlay = draw(ridge_field(hill, true));
+    const grass_host::Image image_only = draw(ridge_field(hill, false));
+    save(truth, backend_name(GetParam()) + ".blades");
+    save(seed2, backend_name(GetParam()) + ".blades_seed2");
+    save(overlay, backend_name(GetParam()) + ".overlay");
+    double seed_offset = 0.0, overlay_offset = 0.0, image_offset = 0.0;
+    int columns = 0;
+    for (uint32_t x = 0; x < truth.width; ++x) {
+        const int a = top_row(truth, x);
+        if (a >= int(truth.height)) continue;
+        ++columns;
+        seed_offset += top_row(seed2, x) - a; // rows: positive = lower than the truth's
+        overlay_offset += top_row(overlay, x) - a;
+        image_offset += top_row(image_only, x) - a;
+    }
+    ASSERT_GT(columns, int(truth.width) * 9 / 10) << "the crest spans the view";
+    seed_offset /= columns;
+    overlay_offset /= columns;
+    image_offset /= columns;
+    std::printf("[ measured ] %s: the crest's top row, mean over %d columns: another seed %+.2f rows, the overlay "
+                "%+.2f, the image tier alone %+.2f from the blades' (positive: lower)\n",
+                backend_name(GetParam()).c_str(), columns, seed_offset, overlay_offset, image_offset);
+    EXPECT_LE(std::fabs(overlay_offset), std::fabs(seed_offset) + 1.0);
+    EXPECT_GT(image_offset, std::fabs(seed_offset) + 1.0) << "the control: a flat crest stands lower";
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, TerrainDisplacementTest, ::testing::ValuesIn(enabled_backends()),
+                         [](const auto& p) { return backend_name(p.param); });
+INSTANTIATE_TEST_SUITE_P(Backends, RidgeTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });
 
 } // namespace
