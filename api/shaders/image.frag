@@ -70,25 +70,40 @@ void main() {
     if (!write_coverage(alpha)) discard;
 
     // The slice's colour and heights are what a grazing ray sees (slice_baker.cpp,
-    // apply_grazing_colour): the blades' upper parts, whose ambient occlusion the height
-    // gives. Its normals were seen from above: those of the blades' parts that face up. From
-    // an elevation theta one sees more of the blades' sides, which face sideways: the normals'
-    // up component is scaled by sin(theta) (their spread, the mean's length, kept). The four sign lobes of the two horizontal components light the
-    // blades that face the camera from every side (lighting.glsl). Far grass is then lit like
-    // the volume tier it follows (TierLightingTest: within 0.5 levels).
-    vec3 n = normal_height.xyz * 2.0 - 1.0;
-    {
-        float r = length(n);
-        vec3 u = r > 1e-4 ? n / r : vec3(0.0, 1.0, 0.0);
-        u.y *= sin_elevation;
-        n = dot(u, u) > 1e-8 ? normalize(u) * r : vec3(0.0, r, 0.0);
-    }
+    // apply_grazing): the blades' upper parts, whose ambient occlusion the height gives. Its
+    // normals are the view's: layers 1 and 2 hold those a ray 10 degrees up sees heading
+    // along x and along z (the blades it meets broadside), lit each and weighed by the view's
+    // heading, as the volume weighs its two slice families. Steeper views turn to layer 0's,
+    // seen from above (the blades' parts that face up), whose up component is scaled by
+    // sin(elevation) (from an elevation one sees more of the blades' sides; their spread, the
+    // mean's length, kept). The four sign lobes of the two horizontal components light the
+    // blades that face the camera from every side (lighting.glsl).
     vec3 to_camera = world_to_patch_direction(normalize(-v_position));
     vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
     float height = normal_height.w * field.blade_params.w; // the grazing view's (slice_baker.cpp)
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
     // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
-    vec3 color = grass_lighting_lobes_bent(modulate_color(albedo.rgb, cell_point) * shade, n, vec3(1.0, 0.0, 1.0), to_camera,
-                                           sun, ao, light_maps(cell_point), bend_dir, turn);
+    vec3 base = modulate_color(albedo.rgb, cell_point) * shade;
+    vec2 light = light_maps(cell_point);
+    const vec3 folded = vec3(1.0, 0.0, 1.0);
+    vec3 n_above = normal_height.xyz * 2.0 - 1.0;
+    {
+        float r = length(n_above);
+        vec3 u = r > 1e-4 ? n_above / r : vec3(0.0, 1.0, 0.0);
+        u.y *= sin_elevation;
+        n_above = dot(u, u) > 1e-8 ? normalize(u) * r : vec3(0.0, r, 0.0);
+    }
+    vec3 n_x = textureGrad(slice_normal, vec3(uv, 1.0), dx, dy).xyz * 2.0 - 1.0;
+    vec3 n_z = textureGrad(slice_normal, vec3(uv, 2.0), dx, dy).xyz * 2.0 - 1.0;
+    float along_x = abs(to_camera.x) / max(abs(to_camera.x) + abs(to_camera.z), 1e-6);
+    vec3 grazing = mix(grass_lighting_lobes_bent(base, n_z, folded, to_camera, sun, ao, light, bend_dir, turn),
+                       grass_lighting_lobes_bent(base, n_x, folded, to_camera, sun, ao, light, bend_dir, turn), along_x);
+    const float sin_baked = 0.173648; // sin(10 degrees), the grazing bake's elevation
+    float steep = clamp((sin_elevation - sin_baked) / (1.0 - sin_baked), 0.0, 1.0);
+    vec3 color = grazing;
+    if (steep > 0.0) {
+        color = mix(grazing, grass_lighting_lobes_bent(base, n_above, folded, to_camera, sun, ao, light, bend_dir, turn),
+                    steep);
+    }
     out_color = debug_thresholds() ? threshold_code(threshold) : output_color(vec4(debug_tint(color), alpha));
 }

@@ -106,7 +106,7 @@ TEST_F(SliceBakingTest, BakingIsDeterministicAndPinned) {
     std::printf("[ hashes   ] N = 8: 0x%016llx, horizontal: 0x%016llx\n", (unsigned long long)a.content_hash,
                 (unsigned long long)h1.content_hash);
     EXPECT_EQ(a.content_hash, 0xc994db47c779121aull) << std::hex << "actual 0x" << a.content_hash;
-    EXPECT_EQ(h1.content_hash, 0xee9be59b9dea74faull) << std::hex << "actual 0x" << h1.content_hash;
+    EXPECT_EQ(h1.content_hash, 0x0ff8dfd7291bd44bull) << std::hex << "actual 0x" << h1.content_hash;
 }
 
 TEST_F(SliceBakingTest, LayoutFollowsTheContract) {
@@ -132,12 +132,20 @@ TEST_F(SliceBakingTest, LayoutFollowsTheContract) {
     EXPECT_EQ(v.level_height(7), 1u);
 
     bake(0, &h);
-    EXPECT_EQ(h.layers, 1u);
+    EXPECT_EQ(h.layers, 3u); // from above; the grazing view's normals along x and along z
     EXPECT_EQ(h.width, 128u);
     EXPECT_EQ(h.height, 128u);
     EXPECT_EQ(h.mip_levels, 8u);
-    EXPECT_EQ(h.threshold.size(), h.offset(1, 0) * 4);
+    EXPECT_EQ(h.threshold.size(), h.offset(3, 0) * 4);
     EXPECT_EQ(h.offset(1, 0), 21845u);
+    // The three layers differ in their normals only.
+    const size_t layer = size_t(h.offset(1, 0)) * 4;
+    for (uint32_t k = 1; k < 3; ++k) {
+        EXPECT_TRUE(std::equal(h.color.begin(), h.color.begin() + layer, h.color.begin() + k * layer)) << k;
+        EXPECT_TRUE(std::equal(h.threshold.begin(), h.threshold.begin() + layer, h.threshold.begin() + k * layer)) << k;
+        EXPECT_FALSE(std::equal(h.normal.begin(), h.normal.begin() + layer, h.normal.begin() + k * layer)) << k;
+    }
+    EXPECT_FALSE(std::equal(h.normal.begin() + layer, h.normal.begin() + 2 * layer, h.normal.begin() + 2 * layer));
 
     bake(1, &small, 32, 16);
     EXPECT_EQ(small.layers, 3u);

@@ -222,7 +222,7 @@ CacheMiss load_baked(const char* directory, uint64_t key, HostAllocator* host, S
             h.height > kMaxSize) {
             break;
         }
-        if (h.layers != (h.slices_per_axis ? 2 * h.slices_per_axis + 1 : 1)) break;
+        if (h.layers != slice_layer_count(h.slices_per_axis)) break;
         if (h.mip_levels != full_mip_count(h.width, h.height)) break;
         if (!(h.height_patch_units > 0.0f) || !std::isfinite(h.height_patch_units)) break;
         // Bounded above: at most 1024 * 2 + 1 layers of 16384^2 * 4 / 3 texels, no overflow.

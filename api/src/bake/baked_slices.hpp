@@ -15,19 +15,24 @@ namespace grass {
 // (layers 0..N-1 are orthogonal to x at x = (i + 0.5) / N, layers N..2N-1 orthogonal to z at
 // z = (i + 0.5) / N, each holding the blades inside its slab [i/N, (i+1)/N], and layer 2N the
 // horizontal slice at the set's size, which the volume shows near the ground for views from
-// above, after boulanger2006 3.3), or the image tier's horizontal slice alone (N = 0, one
-// layer, the whole patch seen from above).
+// above, after boulanger2006 3.3), or the image tier's horizontal slice (N = 0, the whole
+// patch seen from above) in three layers that differ only in their normals: layer 0 those
+// seen from above, layers 1 and 2 those a grazing ray sees heading along x and along z
+// (slice_baker.cpp; image.frag lights with the pair the view's heading picks).
 //
 // Texel (s, t) of a vertical slice orthogonal to x: s = z in [0, 1) across the patch, t = y
 // from 0 (ground, row 0) to `height_patch_units` (top row); orthogonal to z: s = x. Texel
 // (s, t) of the horizontal slice: s = x, t = z. Mip level k has max(1, w >> k) x max(1, h >> k)
 // texels; levels are stored one after another for each layer, layer after layer.
+// The layers of a set of N slices per axis: 2N + 1, or 3 for the image tier's (N = 0).
+inline uint32_t slice_layer_count(uint32_t slices_per_axis) { return slices_per_axis ? 2 * slices_per_axis + 1 : 3; }
+
 struct SliceSet {
     explicit SliceSet(HostAllocator* host)
         : color(StlAllocator<uint8_t>(host)), normal(StlAllocator<uint8_t>(host)),
           threshold(StlAllocator<uint16_t>(host)) {}
     uint32_t slices_per_axis = 0; // N; 0 = the horizontal slice
-    uint32_t layers = 0;          // 2N + 1, or 1
+    uint32_t layers = 0;          // slice_layer_count(N)
     uint32_t width = 0;           // texels of mip 0 along s
     uint32_t height = 0;          // texels of mip 0 along t
     uint32_t mip_levels = 0;

@@ -188,10 +188,16 @@ View layer_view(uint32_t slices_per_axis, uint32_t layer, double height_units) {
 // headings: each blade point is projected along the ray onto the ground (the texel the ray
 // lands in), the nearest along the ray kept, and the four headings averaged, weighted by
 // their coverage; likewise the height of what it sees (for the blades' ambient occlusion).
-// Its alpha, normals and thresholds stay those seen from above.
-// The grazing view is rasterised at half the slice's resolution (a quarter of the cost: its
-// projected blades are 1 / tan(10 degrees) = 5.7 times longer than seen from above); the
-// far tier samples the slice's coarse mips anyway.
+// Its alpha and thresholds stay those seen from above.
+// Its normals depend on the heading (issue 12, the light from the side): a ray heading along
+// z sees the blades that face it broadside, whose normals lean along z, and few of those
+// that face x, which a sun from the side lights best; along x the other way round. Averaged
+// over the headings, or seen from above, a sun from the side lit the image tier 11-13 levels
+// brighter than the blades. So the set keeps three layers (slice_layer_count): the normals
+// seen from above (layer 0, for steep views), and those seen grazing along x (layer 1) and
+// along z (layer 2), each the mean over the two opposite headings, folded as the slice's
+// normals are (up signed, x and z as magnitudes); image.frag lights with both and weighs them
+// by the view's heading.
 constexpr double kImageTierElevation = 10.0 * 3.14159265358979323846 / 180.0;
 constexpr uint32_t kGrazingReduction = 2;
 
@@ -231,36 +237,55 @@ void draw_grazing_view(const Vector<Triangle>& triangles, double heading_x, doub
     }
 }
 
-// Replaces the colour of the covered texels of `level0` (the horizontal slice from above)
-// with the grazing view's.
-void apply_grazing_colour(const Vector<Triangle>& triangles, double height_scale, HostAllocator* host,
-                          SliceImage* level0) {
+// What the grazing rays see, per texel of the reduced grid: colour (rgb), height and
+// coverage over the four headings, then the normal (xyz) and coverage along x and along z.
+struct GrazingView {
+    explicit GrazingView(HostAllocator* host) : sum(StlAllocator<double>(host)) {}
+    static constexpr int kValues = 13;
+    uint32_t w = 0, h = 0;
+    Vector<double> sum;
+};
+
+void see_grazing(const Vector<Triangle>& triangles, double height_scale, uint32_t width, uint32_t height,
+                 HostAllocator* host, GrazingView* out) {
     const double headings[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    const uint32_t w = std::max(1u, level0->width / kGrazingReduction);
-    const uint32_t h = std::max(1u, level0->height / kGrazingReduction);
-    const size_t n = static_cast<size_t>(w) * h;
-    Vector<double> sum{StlAllocator<double>(host)};
-    sum.assign(n * 5, 0.0);
+    out->w = std::max(1u, width / kGrazingReduction);
+    out->h = std::max(1u, height / kGrazingReduction);
+    const size_t n = static_cast<size_t>(out->w) * out->h;
+    out->sum.assign(n * GrazingView::kValues, 0.0);
     float toward_viewer[3] = {0, 1, 0};
-    SliceRasterizer raster(w, h, toward_viewer, host);
+    SliceRasterizer raster(out->w, out->h, toward_viewer, host);
     SliceImage seen(host);
     for (const auto& heading : headings) {
         raster.clear();
         draw_grazing_view(triangles, heading[0], heading[1], height_scale, &raster);
         raster.resolve(&seen);
+        const int family = heading[0] != 0.0 ? 5 : 9; // along x, along z
         for (size_t i = 0; i < n; ++i) {
-            double* acc = &sum[i * 5];
-            for (int c = 0; c < 3; ++c) acc[c] += seen.alpha[i] * static_cast<double>(seen.color[i * 3 + c]);
-            acc[3] += seen.alpha[i] * static_cast<double>(seen.normal[i * 4 + 3]);
-            acc[4] += seen.alpha[i];
+            double* acc = &out->sum[i * GrazingView::kValues];
+            const double a = seen.alpha[i];
+            for (int c = 0; c < 3; ++c) acc[c] += a * static_cast<double>(seen.color[i * 3 + c]);
+            acc[3] += a * static_cast<double>(seen.normal[i * 4 + 3]);
+            acc[4] += a;
+            for (int c = 0; c < 3; ++c) acc[family + c] += a * static_cast<double>(seen.normal[i * 4 + c]);
+            acc[family + 3] += a;
         }
     }
+}
+
+// Gives the covered texels of `level0` (the horizontal slice from above) the grazing view's
+// colour and heights, and for `normals` 1 (along x) or 2 (along z) that heading's normals
+// (0: those seen from above stay).
+void apply_grazing(const GrazingView& g, uint32_t normals, SliceImage* level0) {
     for (size_t i = 0; i < level0->texels(); ++i) {
-        const size_t x = (i % level0->width) * w / level0->width, y = (i / level0->width) * h / level0->height;
-        const double* acc = &sum[(y * w + x) * 5];
+        const size_t x = (i % level0->width) * g.w / level0->width, y = (i / level0->width) * g.h / level0->height;
+        const double* acc = &g.sum[(y * g.w + x) * GrazingView::kValues];
         if (!(level0->alpha[i] > 0.0f) || !(acc[4] > 0.0)) continue;
         for (int c = 0; c < 3; ++c) level0->color[i * 3 + c] = static_cast<float>(acc[c] / acc[4]);
         level0->normal[i * 4 + 3] = static_cast<float>(acc[3] / acc[4]);
+        const double* family = acc + (normals == 1 ? 5 : 9);
+        if (normals == 0 || !(family[3] > 0.0)) continue; // no ray of that heading lands here
+        for (int c = 0; c < 3; ++c) level0->normal[i * 4 + c] = static_cast<float>(family[c] / family[3]);
     }
 }
 
@@ -307,7 +332,11 @@ void rasterize_slice_layer(const PatchData& patch, uint32_t slices_per_axis, uin
     SliceRasterizer raster(width, height, view.toward_viewer, host);
     draw_view(triangles, view, 1.0 / h, &raster);
     raster.resolve(out);
-    if (slices_per_axis == 0) apply_grazing_colour(triangles, 1.0 / h, host, out);
+    if (slices_per_axis == 0) {
+        GrazingView grazing(host);
+        see_grazing(triangles, 1.0 / h, width, height, host, &grazing);
+        apply_grazing(grazing, layer, out);
+    }
 }
 
 void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t width, uint32_t height, HostAllocator* host,
@@ -315,7 +344,7 @@ void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t widt
     default_sizes(slices_per_axis, &width, &height);
     const double h = patch_height(patch);
     out->slices_per_axis = slices_per_axis;
-    out->layers = slices_per_axis ? 2 * slices_per_axis + 1 : 1;
+    out->layers = slice_layer_count(slices_per_axis);
     out->width = width;
     out->height = height;
     out->mip_levels = full_mip_count(width, height);
@@ -331,15 +360,20 @@ void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t widt
     SliceRasterizer raster(width, height, up, host);
     Vector<SliceImage> levels{StlAllocator<SliceImage>(host)};
     levels.reserve(out->mip_levels);
+    GrazingView grazing(host); // the image tier's: once for its three layers
+    if (slices_per_axis == 0) see_grazing(triangles, 1.0 / h, width, height, host, &grazing);
     for (uint32_t layer = 0; layer < out->layers; ++layer) {
         const View view = layer_view(slices_per_axis, layer, h);
-        raster.set_toward_viewer(view.toward_viewer);
-        raster.clear();
-        draw_view(triangles, view, 1.0 / h, &raster);
+        // The image tier's layers share the view from above: drawn once.
+        if (slices_per_axis != 0 || layer == 0) {
+            raster.set_toward_viewer(view.toward_viewer);
+            raster.clear();
+            draw_view(triangles, view, 1.0 / h, &raster);
+        }
         levels.clear();
         levels.emplace_back(host);
         raster.resolve(&levels[0]);
-        if (slices_per_axis == 0) apply_grazing_colour(triangles, 1.0 / h, host, &levels[0]);
+        if (slices_per_axis == 0) apply_grazing(grazing, layer, &levels[0]);
         build_coverage_mips(&levels, out->mip_levels, host);
         bleed_colours(&levels);
         encode_layer(levels, layer, out);

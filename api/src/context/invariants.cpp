@@ -15,7 +15,7 @@ grass_result check_slice_set(grass_context* ctx, const char* fn, uint32_t patch_
     }
     uint32_t full_chain = 1;
     for (uint32_t larger = set.width > set.height ? set.width : set.height; larger > 1; larger >>= 1) ++full_chain;
-    const bool shape_ok = set.width > 0 && set.height > 0 && set.layers == (n == 0 ? 1u : 2 * n + 1) &&
+    const bool shape_ok = set.width > 0 && set.height > 0 && set.layers == slice_layer_count(n) &&
                           set.mip_levels >= 1 && set.mip_levels <= full_chain;
     const uint64_t values = shape_ok ? set.offset(set.layers, 0) * 4 : 0; // RGBA: every level of every layer
     if (!shape_ok || set.color.size() != values || set.normal.size() != values || set.threshold.size() != values) {
