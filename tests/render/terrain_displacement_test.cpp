@@ -176,8 +176,7 @@ protected:
     grass_lod_test tests_[4] = {};
     grass_view_desc view_{};
 
-    // The ridge's field: `overlay` adds the hilltop overlay tier; `blades` draws blades
-    // everywhere instead, of `blade_patch`, mirrored by `mirror_seed`.
+    // The ridge's field: the image tier alone, and with `overlay` the hilltop overlay tier.
     grass_field_desc ridge_field(grass_map_id hill, bool overlay) {
         tests_[0].kind = GRASS_LOD_TEST_DISTANCE_BAND;
         tests_[0].tier = 0;
