@@ -91,7 +91,12 @@ protected:
         return d;
     }
 
-    // One frame of the scene on a fresh host: the lod field, or blades everywhere.
+    // Instead of Lemme's five tiers: one volume tier of 8 slices everywhere, in macro-cells of
+    // up to 8 cells (the cell grid's test).
+    bool volume_only_ = false;
+
+    // One frame of the scene on a fresh host: the lod field (or the volume field), or blades
+    // everywhere.
     grass_host::Image render_scene(const grass_host::TargetDesc& t, bool blades_everywhere, const std::string& tag,
                                    uint32_t flags = 0) {
         return render_scene(t, blades_everywhere, tag, flags, kEye, kTarget, kFov);
@@ -102,7 +107,9 @@ protected:
                                    uint32_t flags, const double eye[3], const double at[3], float fov,
                                    uint32_t patch_seed = 0) {
         start(t);
-        grass_field_desc d = blades_everywhere ? field_desc(kCells) : lod_field();
+        grass_field_desc d = blades_everywhere ? field_desc(kCells)
+                             : volume_only_    ? solo_tier_field(kCells, GRASS_TIER_VOLUME, 8, 8)
+                                               : lod_field();
         if (blades_everywhere) blade_band.end = INFINITY;
         grass_patch_id other{};
         if (patch_seed != 0) {
@@ -284,6 +291,98 @@ TEST_P(FarTiersTest, TheFarEdgeStandsAsHighAsTheBlades) {
     // stand-in's strip, as deep as the rays over the border reach into the grass, -0.1 to +0.1.
     // One row beyond the seeds' own offset is allowed.
     EXPECT_LE(std::fabs(lod_offset), std::fabs(seed_offset) + 1.0);
+}
+
+// The cell grid (issue 12): single-sampled, a low view of the volume tier showed the cells
+// as stripes converging to the vanishing point. Measured by cell phase: each pixel's ray
+// meets the plane kPhasePlane up at some x, its sRGB green level is binned by the phase of x
+// in its cell (16 bins), and the profile's first harmonic is the grid's amplitude in levels.
+// Blades everywhere have one too (the patch is tiled, mirrored at random), and it varies
+// with the patch and mirror seeds; the volume's must stay within the larger of two seeds'.
+// Bands of distance along the plane, so that each holds rows of a similar cell size on
+// screen (16 to 5 pixels a cell). Today the volume's stripes are the patch's own tiling, at
+// the blades' amplitude: the blades' grain hides theirs, the smooth slices show it.
+struct CellPhase {
+    double sum[16] = {}, count[16] = {};
+};
+
+double first_harmonic(const CellPhase& p) {
+    constexpr int n = 16;
+    double mean = 0.0, used = 0.0;
+    for (int i = 0; i < n; ++i) {
+        if (p.count[i] == 0) continue;
+        mean += p.sum[i] / p.count[i];
+        used += 1;
+    }
+    if (used < n) return -1.0; // too few pixels to tell
+    mean /= n;
+    double re = 0.0, im = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const double v = p.sum[i] / p.count[i] - mean, a = 2.0 * M_PI * i / n;
+        re += v * std::cos(a);
+        im += v * std::sin(a);
+    }
+    return 2.0 * std::hypot(re, im) / n;
+}
+
+// The grid's amplitude in each distance band (metres from the eye along the plane), of an
+// image seen from eye towards at with a vertical field of view of fov degrees.
+std::vector<double> cell_grid(const grass_host::Image& image, const double eye[3], const double at[3], float fov,
+                              const std::vector<double>& bands) {
+    constexpr double kPhasePlane = 0.1, kCell = 0.25, kField = kCells * kCell;
+    double f[3], r[3], u[3];
+    look_at_basis(eye, at, f, r, u);
+    const double t = std::tan(fov * M_PI / 360.0), aspect = double(image.width) / image.height;
+    std::vector<CellPhase> phase(bands.size() - 1);
+    for (uint32_t y = 0; y < image.height; ++y) {
+        for (uint32_t x = 0; x < image.width; ++x) {
+            const double sx = ((x + 0.5) / image.width * 2.0 - 1.0) * t * aspect,
+                         sy = (1.0 - (y + 0.5) / image.height * 2.0) * t;
+            const double d[3] = {f[0] + sx * r[0] + sy * u[0], f[1] + sx * r[1] + sy * u[1],
+                                 f[2] + sx * r[2] + sy * u[2]};
+            if (d[1] >= -1e-6) continue;
+            const double k = (kPhasePlane - eye[1]) / d[1], px = eye[0] + k * d[0], pz = eye[2] + k * d[2];
+            if (px < 0.0 || pz < 0.0 || px > kField || pz > kField) continue;
+            const double distance = std::hypot(px - eye[0], pz - eye[2]);
+            for (size_t b = 0; b + 1 < bands.size(); ++b) {
+                if (distance < bands[b] || distance >= bands[b + 1]) continue;
+                const double cell = px / kCell;
+                const int bin = std::min(15, int((cell - std::floor(cell)) * 16.0));
+                phase[b].sum[bin] += image.pixel(x, y)[1];
+                phase[b].count[bin] += 1;
+            }
+        }
+    }
+    std::vector<double> out;
+    for (const CellPhase& p : phase) out.push_back(first_harmonic(p));
+    return out;
+}
+
+TEST_P(FarTiersTest, NoCellGridInTheVolume) {
+    const double eye[3] = {6.0, 1.7, -0.5}, at[3] = {6.0, 0.2, 12.0};
+    const float fov = 50.0f;
+    grass_host::TargetDesc t = target(1, false);
+    t.width = 320;
+    t.height = 180;
+    const grass_host::Image truth = render_scene(t, true, "grid_blades", 0, eye, at, fov);
+    const grass_host::Image other = render_scene(t, true, "grid_blades_seed2", 0, eye, at, fov, 2);
+    volume_only_ = true;
+    const grass_host::Image lod = render_scene(t, false, "grid_volume", 0, eye, at, fov);
+    volume_only_ = false;
+    ASSERT_FALSE(truth.rgba.empty() || other.rgba.empty() || lod.rgba.empty());
+    const std::vector<double> bands = {2.0, 4.0, 7.0, 12.0};
+    const std::vector<double> a = cell_grid(truth, eye, at, fov, bands), b = cell_grid(other, eye, at, fov, bands),
+                              v = cell_grid(lod, eye, at, fov, bands);
+    for (size_t i = 0; i < v.size(); ++i) {
+        std::printf("[ measured ] %s: cell grid at %.0f-%.0f m, first harmonic in green levels: blades %.2f, "
+                    "another seed %.2f, the volume %.2f\n",
+                    backend_name(GetParam()).c_str(), bands[i], bands[i + 1], a[i], b[i], v[i]);
+        ASSERT_GE(std::min({a[i], b[i], v[i]}), 0.0) << "a phase bin without pixels: the view misses the field";
+        // Measured: blades 1.9, 1.1, 0.8 (another seed 1.1, 0.6, 1.0); the volume 1.9, 1.1, 0.1,
+        // and 2.6, 1.5, 0.2 with a stripe 6% darker along each cell's border (seen failing).
+        // A quarter of a level beyond the larger seed's.
+        EXPECT_LE(v[i], std::max(a[i], b[i]) + 0.25) << "band " << bands[i] << "-" << bands[i + 1] << " m";
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, FarTiersTest, ::testing::ValuesIn(enabled_backends()),
