@@ -35,6 +35,8 @@ vec3 g_origin;     // the instance corner relative to the camera
 vec2 g_field_cells;
 float g_n;         // slices per axis
 float g_pixel_angle;
+float g_taps = 1.0;     // taps down a slab's share (main(): steep rays through sparse slices)
+float g_tap_span = 0.0; // the share's height span, in slice heights
 vec2 g_texels;
 vec3 g_color = vec3(0.0);
 float g_alpha = 0.0;
@@ -92,8 +94,22 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     float lod = log2(max(t * g_pixel_angle * g_texels.y / g_size.y, 1.0)); // t: distance in cells
     vec4 thresholds = textureLod(slice_threshold, coord, lod); // r: threshold, gba: coverage curve
     float threshold = thresholds.r;
-    if (threshold <= 0.0) return;
     vec4 albedo = textureLod(slice_color, coord, lod);
+    if (kind != 2 && g_taps > 1.0) {
+        // The share's colour and coverage: taps from its top down, each for 1/taps of it.
+        vec3 c = vec3(0.0);
+        float tr = 1.0;
+        for (float q = 0.5; q < g_taps; q += 1.0) {
+            vec3 at = vec3(coord.x, coord.y + (0.5 - q / g_taps) * g_tap_span, coord.z);
+            vec4 tap = textureLod(slice_color, at, lod);
+            float a_q = 1.0 - pow(max(1.0 - tap.a, 0.0), 1.0 / g_taps);
+            c += tr * a_q * tap.rgb;
+            tr *= 1.0 - a_q;
+        }
+        albedo = vec4(tr < 1.0 ? c / (1.0 - tr) : albedo.rgb, 1.0 - tr);
+        if (threshold <= 0.0) threshold = thresholds.r = 1.0 / 65535.0;
+    }
+    if (threshold <= 0.0) return;
     if (albedo.a <= 0.0) return;
 
     vec3 world = g_to_world * hit + g_origin;
@@ -144,6 +160,13 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     }
 }
 
+// The horizontal slice near the ground of a flat field, met at t (kind 2 above).
+void composite_flat_ground(float t) {
+    vec3 g = v_camera_local + g_dir * t;
+    composite(g, g, t, 2, 1.0);
+}
+
+
 void main() {
     vec3 ray = v_local - v_camera_local;
     // The back face ends the ray; a front face leaves the work to the back face behind it.
@@ -183,9 +206,16 @@ void main() {
     // its n slices), likewise across z. Walk both families in order (a 2D DDA).
     float step_x = dir.x != 0.0 ? 1.0 / (n * abs(dir.x)) : kHuge;
     float step_z = dir.z != 0.0 ? 1.0 / (n * abs(dir.z)) : kHuge;
+    // A downward ray over a flat field that enters through the carrier's top: each family
+    // starts half its slab before the entry, so that a crossing just above the blades, whose
+    // slab reaches into them, counts in part (below).
+    float t_top = !displaced && dir.y < 0.0 ? (box_max.y - v_camera_local.y) / dir.y : -kHuge;
+    bool from_top = t_in > 0.0 && t_in <= t_top * (1.0 + 1e-5);
+    vec3 start_x = v_camera_local + dir * (from_top ? max(t_in - 0.5 * step_x, 0.0) : t_in);
+    vec3 start_z = v_camera_local + dir * (from_top ? max(t_in - 0.5 * step_z, 0.0) : t_in);
     vec3 start = v_camera_local + dir * t_in;
-    float jx = dir.x > 0.0 ? floor(start.x * n - 0.5) + 1.0 : ceil(start.x * n - 0.5) - 1.0;
-    float jz = dir.z > 0.0 ? floor(start.z * n - 0.5) + 1.0 : ceil(start.z * n - 0.5) - 1.0;
+    float jx = dir.x > 0.0 ? floor(start_x.x * n - 0.5) + 1.0 : ceil(start_x.x * n - 0.5) - 1.0;
+    float jz = dir.z > 0.0 ? floor(start_z.z * n - 0.5) + 1.0 : ceil(start_z.z * n - 0.5) - 1.0;
     float tx = dir.x != 0.0 ? ((jx + 0.5) / n - v_camera_local.x) / dir.x : kHuge;
     float tz = dir.z != 0.0 ? ((jz + 0.5) / n - v_camera_local.z) / dir.z : kHuge;
 
@@ -233,6 +263,28 @@ void main() {
         if (across_x) tx += step_x; else tz += step_z;
         vec3 h = v_camera_local + dir * t;
         float ground = terrain_height(vec2(v_cell.xy) + h.xz); // eq. 6.16 (0 on a flat field)
+        // On a flat field each crossing stands for its slab (the 1/n around it), of which a
+        // downward ray crosses the share [lo, hi] in the blades: below their tips (when it came
+        // in through the carrier's top) and above the ground. Counted whole or not at all,
+        // the crossings at the tips and at the dense roots came and went with the slices'
+        // phase along the ray: moire over the field from above, rows a cell apart with one or
+        // two slices a cell.
+        float lo = t - half_slab, hi = t + half_slab;
+        if (!displaced && dir.y < 0.0) {
+            lo = max(lo, from_top ? t_top : lo);
+            hi = min(hi, t_floor);
+        }
+        float slab = clamp((hi - lo) / (2.0 * half_slab), 0.0, 1.0);
+        // A steep ray through sparse slices (one or two a cell) descends across that share by
+        // much of the blades' height: one lookup would show the blades at one height of it,
+        // the tips or the roots by the slices' phase. Where it descends more than an eighth of
+        // the height, the share is met at its middle and its colour and coverage gathered in
+        // up to 4 taps down the span (composite()). Taps around the texture lookups only: a
+        // loop around composite() made every march twice as dear on llvmpipe.
+        float steps = displaced || slab <= 0.0 || n > 2.0
+                          ? 1.0
+                          : clamp(ceil(-dir.y * (hi - lo) / (0.125 * size.y)), 1.0, 4.0);
+        float t_first = steps > 1.0 ? 0.5 * (lo + hi) : t;
         if (displaced) {
             float above = h.y - ground - layer_y;
             if (ground_pending && prev_above >= 0.0 && above < 0.0) {
@@ -244,28 +296,25 @@ void main() {
             }
             prev_t = t;
             prev_above = above;
-        } else if (ground_pending && t_ground <= t) {
-            vec3 g = v_camera_local + dir * t_ground;
-            composite(g, g, t_ground, 2, 1.0);
+        } else if (ground_pending && t_ground <= t_first) {
+            composite_flat_ground(t_ground);
             ground_pending = false;
             if (g_alpha >= kOpaqueAlpha) break;
         }
         // The slice is looked up at the hit's height above the terrain (eq. 6.17-6.18); a
-        // hit below the terrain or above the blades there meets nothing.
+        // hit below the terrain or above the blades there meets nothing. On a flat field a
+        // crossing below the ground or above the tips that counts in part is looked up there.
         float y = h.y - ground;
         if (displaced && y < 0.0 && t > t_out) break; // under a neighbour's ground: hidden by it
-        // On a flat field each crossing stands for its slab, of which the ray crosses the share
-        // above the ground: the last crossing before the ground and the first one after it
-        // count in part (the latter looked up at the ground). Counted whole or not at all,
-        // the densest crossings, at the blades' roots, came and went with the slices' phase
-        // along the ray: moire over the field from above.
-        float slab = 1.0;
-        if (!displaced) {
-            slab = dir.y < 0.0 ? clamp((t_floor - (t - half_slab)) / (2.0 * half_slab), 0.0, 1.0) : 1.0;
-            y = max(y, 0.0);
-        }
-        if (t < t_in || y < 0.0 || y > size.y || slab <= 0.0) continue;
-        composite(vec3(h.x, y, h.z), h, t, across_x ? 0 : 1, slab);
+        if (!displaced) y = clamp(y, 0.0, from_top ? size.y : y);
+        if ((t < t_in && !from_top) || y < 0.0 || y > size.y || slab <= 0.0) continue;
+        float tq = steps > 1.0 ? 0.5 * (lo + hi) : t;
+        vec3 hq = v_camera_local + dir * tq;
+        g_taps = steps;
+        g_tap_span = -dir.y * (hi - lo) / size.y;
+        composite(steps > 1.0 ? (across_x ? vec3(h.x, hq.y, hq.z) : vec3(hq.x, hq.y, h.z)) : vec3(h.x, y, h.z),
+                  hq, tq, across_x ? 0 : 1, slab);
+        g_taps = 1.0;
         if (g_alpha >= kOpaqueAlpha) break;
     }
     if (ground_pending && g_alpha < kOpaqueAlpha) {
@@ -278,8 +327,7 @@ void main() {
                 composite(vec3(g.x, layer_y, g.z), g, tg, 2, 1.0);
             }
         } else {
-            vec3 g = v_camera_local + dir * t_ground;
-            composite(g, g, t_ground, 2, 1.0);
+            composite_flat_ground(t_ground);
         }
     }
     if (!write_coverage(g_alpha)) discard;
