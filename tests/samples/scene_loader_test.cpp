@@ -14,8 +14,11 @@ namespace {
 
 const std::string kCorpus = GRASS_FUZZ_CORPUS_DIR;
 
+// In the temporary directory, under the running test's name: ctest runs each test in its
+// own process, two at a time, and two tests writing one file raced (one read it empty).
 std::string write_scene(const std::string& name, const std::string& text) {
-    const std::string path = ::testing::TempDir() + name;
+    const std::string path =
+        ::testing::TempDir() + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "-" + name;
     std::ofstream(path) << text;
     return path;
 }
