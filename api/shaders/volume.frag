@@ -166,7 +166,6 @@ void composite_flat_ground(float t) {
     composite(g, g, t, 2, 1.0);
 }
 
-
 void main() {
     vec3 ray = v_local - v_camera_local;
     // The back face ends the ray; a front face leaves the work to the back face behind it.
@@ -284,7 +283,7 @@ void main() {
         float steps = displaced || slab <= 0.0 || n > 2.0
                           ? 1.0
                           : clamp(ceil(-dir.y * (hi - lo) / (0.125 * size.y)), 1.0, 4.0);
-        float t_first = steps > 1.0 ? 0.5 * (lo + hi) : t;
+        float tq = steps > 1.0 ? 0.5 * (lo + hi) : t; // where the crossing is looked up
         if (displaced) {
             float above = h.y - ground - layer_y;
             if (ground_pending && prev_above >= 0.0 && above < 0.0) {
@@ -296,7 +295,7 @@ void main() {
             }
             prev_t = t;
             prev_above = above;
-        } else if (ground_pending && t_ground <= t_first) {
+        } else if (ground_pending && t_ground <= tq) {
             composite_flat_ground(t_ground);
             ground_pending = false;
             if (g_alpha >= kOpaqueAlpha) break;
@@ -308,7 +307,6 @@ void main() {
         if (displaced && y < 0.0 && t > t_out) break; // under a neighbour's ground: hidden by it
         if (!displaced) y = clamp(y, 0.0, from_top ? size.y : y);
         if ((t < t_in && !from_top) || y < 0.0 || y > size.y || slab <= 0.0) continue;
-        float tq = steps > 1.0 ? 0.5 * (lo + hi) : t;
         vec3 hq = v_camera_local + dir * tq;
         g_taps = steps;
         g_tap_span = -dir.y * (hi - lo) / size.y;
