@@ -92,9 +92,23 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     // Texels are 3-4x denser across a slice than up it (256 x 64 over 1 x ~0.85 cells);
     // the level follows the coarser, vertical density so blades keep their height.
     float lod = log2(max(t * g_pixel_angle * g_texels.y / g_size.y, 1.0)); // t: distance in cells
+    // What the ray sees (colour, coverage, normal), though, need be no coarser up a vertical
+    // slice than the height the ray descends from one crossing to the next (`descent`, in
+    // texels): the crossings composited in turn gather the heights the ray passes. At the
+    // footprint's level a texel averages its column down to the dense roots, which a grazing
+    // ray never reaches under the tips in front of them: the far field came out 7-10 sRGB
+    // levels darker than the blades (docs/records/three-tiers.md). At most 2 levels finer
+    // than the footprint, so that the slices do not alias across (their texels are denser
+    // across than up). The thresholds and coverage curves stay at the footprint's level: the
+    // curves (tier_transitions.glsl) model a texel of many blades, and a fine one holds few.
+    float color_lod = lod;
+    if (kind != 2) {
+        float descent = abs(g_dir.y) / (g_n * (g_abs_dir.x + g_abs_dir.y)) * g_texels.y / g_size.y;
+        color_lod = max(min(lod, log2(max(descent, 1.0))), lod - 2.0);
+    }
     vec4 thresholds = textureLod(slice_threshold, coord, lod); // r: threshold, gba: coverage curve
     float threshold = thresholds.r;
-    vec4 albedo = textureLod(slice_color, coord, lod);
+    vec4 albedo = textureLod(slice_color, coord, color_lod);
     if (kind != 2 && g_taps > 1.0) {
         // The share's colour and coverage: taps from its top down, each for 1/taps of it.
         vec3 c = vec3(0.0);
@@ -143,7 +157,7 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     // The design maps at the hit (lemme 6.4.2-6.4.3).
     vec3 color = modulate_color(albedo.rgb, cell_point) * shade;
     vec2 light = light_maps(cell_point);
-    vec4 normal_height = textureLod(slice_normal, coord, lod);
+    vec4 normal_height = textureLod(slice_normal, coord, color_lod);
     vec3 nrm = normal_height.xyz * 2.0 - 1.0;
     nrm.xz *= s;
     // The horizontal slice's heights are its blades' tips; a vertical slice's hit is at h.y.
