@@ -35,6 +35,7 @@ vec3 g_origin;     // the instance corner relative to the camera
 vec2 g_field_cells;
 float g_n;         // slices per axis
 float g_pixel_angle;
+float g_descent_lod = 0.0; // the level of the height the ray descends between two crossings (composite())
 float g_taps = 1.0;     // taps down a slab's share (main(): steep rays through sparse slices)
 float g_tap_span = 0.0; // the share's height span, in slice heights
 vec2 g_texels;
@@ -93,23 +94,21 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     // the level follows the coarser, vertical density so blades keep their height.
     float lod = log2(max(t * g_pixel_angle * g_texels.y / g_size.y, 1.0)); // t: distance in cells
     // What the ray sees (colour, coverage, normal), though, need be no coarser up a vertical
-    // slice than the height the ray descends from one crossing to the next (`descent`, in
-    // texels): the crossings composited in turn gather the heights the ray passes. At the
+    // slice than the height the ray descends from one crossing to the next (g_descent_lod,
+    // main()): the crossings composited in turn gather the heights the ray passes. At the
     // footprint's level a texel averages its column down to the dense roots, which a grazing
     // ray never reaches under the tips in front of them: the far field came out 7-10 sRGB
     // levels darker than the blades (docs/records/three-tiers.md). At most 2 levels finer
     // than the footprint, so that the slices do not alias across (their texels are denser
     // across than up). The thresholds and coverage curves stay at the footprint's level: the
     // curves (tier_transitions.glsl) model a texel of many blades, and a fine one holds few.
-    float color_lod = lod;
-    if (kind != 2) {
-        float descent = abs(g_dir.y) / (g_n * (g_abs_dir.x + g_abs_dir.y)) * g_texels.y / g_size.y;
-        color_lod = max(min(lod, log2(max(descent, 1.0))), lod - 2.0);
-    }
+    float color_lod = kind == 2 ? lod : max(min(lod, g_descent_lod), lod - 2.0);
     vec4 thresholds = textureLod(slice_threshold, coord, lod); // r: threshold, gba: coverage curve
     float threshold = thresholds.r;
-    vec4 albedo = textureLod(slice_color, coord, color_lod);
-    if (kind != 2 && g_taps > 1.0) {
+    vec4 albedo;
+    if (kind == 2 || g_taps <= 1.0) {
+        albedo = textureLod(slice_color, coord, color_lod);
+    } else {
         // The share's colour and coverage: taps from its top down, each for 1/taps of it.
         vec3 c = vec3(0.0);
         float tr = 1.0;
@@ -120,7 +119,7 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
             c += tr * a_q * tap.rgb;
             tr *= 1.0 - a_q;
         }
-        albedo = vec4(tr < 1.0 ? c / (1.0 - tr) : albedo.rgb, 1.0 - tr);
+        albedo = vec4(tr < 1.0 ? c / (1.0 - tr) : vec3(0.0), 1.0 - tr); // no taps covered: alpha 0, returns below
         if (threshold <= 0.0) threshold = thresholds.r = 1.0 / 65535.0;
     }
     if (threshold <= 0.0) return;
@@ -241,6 +240,7 @@ void main() {
     g_n = n;
     g_texels = texels;
     g_pixel_angle = pixel_angle;
+    g_descent_lod = log2(max(abs(dir.y) / (n * (g_abs_dir.x + g_abs_dir.y)) * texels.y / size.y, 1.0));
     g_depth_at[0] = v_local;
     // The ray goes on past this carrier into the neighbouring cells (the same patch, mirrored
     // by their own cells' bits) until it leaves the blade layer: a ray that crosses several

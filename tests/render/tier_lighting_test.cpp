@@ -21,9 +21,9 @@ namespace {
 //            SliceColourTest compares it band by band)
 //   image    coverage 0.134, (82.8, 109.9, 51.5) in every row: 1.6 levels from the blades'
 //            far rows and 1.7 from the volume's (0.2 while the volume's far rows were 1.3
-//            lighter than the blades: the volume moved to the blades). Before: 8.9 darker than the volume while the
-//            horizontal slice's colour was the view from above, with its darker lower blades
-//            and bases; 3.2 lighter (over all rows) once baked as a grazing ray sees it; 4.6
+//            lighter than the blades: the volume moved to the blades). Before: 8.9 darker
+//            than the volume while the horizontal slice's colour was the view from above,
+//            with its darker lower blades and bases; 3.2 lighter (over all rows) once baked as a grazing ray sees it; 4.6
 //            darker than the volume's far rows while its normals were those seen from above
 //            (slice_baker.cpp apply_grazing: now those seen grazing, per heading). The image
 //            tier is compared over the far rows only: the nearest third holds the field's near
