@@ -30,8 +30,25 @@ ctest --test-dir build-asan --output-on-failure -j "$jobs"
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_TESTS=ON -DGRASS_TSAN=ON \
   -DGRASS_BUILD_SAMPLES=OFF -DGRASS_BUILD_VULKAN=OFF >/dev/null
 cmake --build build-tsan -j "$jobs" --target grass_thread_tests
-TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sanitizer/tsan.supp" \
-  ctest --test-dir build-tsan -L threads --output-on-failure
+# Under TSan's allocator Mesa's llvmpipe now and then reads past an allocation while four GL
+# contexts draw (a SEGV whose top frame is in swrast_dri.so; 1 run in 4 to 8 on this machine,
+# the same with the previous volume shader: docs/records/testing.md). Such a run, and only
+# such a run (no ThreadSanitizer report in it), is tried again, at most twice.
+tsan_log=build-tsan/threads.log
+for attempt in 1 2 3; do
+  if TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sanitizer/tsan.supp" \
+    ctest --test-dir build-tsan -L threads --output-on-failure >"$tsan_log" 2>&1; then
+    cat "$tsan_log"
+    break
+  fi
+  cat "$tsan_log"
+  grep -A3 "ThreadSanitizer: SEGV" "$tsan_log" >"$tsan_log.segv" || true
+  if [ "$attempt" = 3 ] || grep -q "WARNING: ThreadSanitizer" "$tsan_log" ||
+    ! grep -q "#0 .*swrast_dri.so" "$tsan_log.segv"; then
+    exit 1
+  fi
+  echo "test.sh: the GL thread test crashed inside Mesa's swrast_dri.so under TSan; trying again ($attempt of 2)"
+done
 
 # Fuzzing: every libFuzzer target of tests/fuzz for 20 s over its corpus, from a fixed seed
 # (clang, ASan + UBSan; with the GL and Vulkan backends, which fuzz_gpu_sequence draws with).
