@@ -109,12 +109,18 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     if (kind == 2 || g_taps <= 1.0) {
         albedo = textureLod(slice_color, coord, color_lod);
     } else {
-        // The share's colour and coverage: taps from its top down, each for 1/taps of it.
+        // The share's colour and coverage: taps from its top down, each for 1/taps of it,
+        // looked up no coarser than the height it stands for. The slices a grazing ray runs
+        // nearly along are crossed once in a long slab and take taps; at the footprint's level
+        // each tap averaged the column down to the dark roots the ray never reaches (the real
+        // football's far rows, docs/records/three-tiers.md). At most 1 level finer than the
+        // footprint: 2 thinned thin grass seen from above (TierDensityTest).
         vec3 c = vec3(0.0);
         float tr = 1.0;
+        float tap_lod = max(min(lod, log2(max(g_tap_span / g_taps * g_texels.y, 1.0))), lod - 1.0);
         for (float q = 0.5; q < g_taps; q += 1.0) {
             vec3 at = vec3(coord.x, coord.y + (0.5 - q / g_taps) * g_tap_span, coord.z);
-            vec4 tap = textureLod(slice_color, at, lod);
+            vec4 tap = textureLod(slice_color, at, tap_lod);
             float a_q = 1.0 - pow(max(1.0 - tap.a, 0.0), 1.0 / g_taps);
             c += tr * a_q * tap.rgb;
             tr *= 1.0 - a_q;
