@@ -140,6 +140,15 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     float share = debug_thresholds() ? tier_blade_opacity(length(world), threshold, density, field_edge)
                                      : tier_texel_share(length(world), thresholds, density, field_edge);
     float a = albedo.a * share;
+    // In a transition zone the tier draws the share f = share / full of what the density
+    // keeps of the texel (full), as transmittance: (1 - albedo.a full)^f. The tiers' rays
+    // together let through what the whole grass would, and a texel the whole grass makes
+    // opaque stays opaque in each: drawn as alpha x share, a thinned ray saw past the tips
+    // to darker grass (a darker line where the volume hands over to the image tier).
+    if (!debug_thresholds() && field.tiers.z == 0u) {
+        float full = coverage_curve(thresholds, density);
+        if (full > 0.0 && share < full) a = 1.0 - pow(max(1.0 - albedo.a * full, 0.0), share / full);
+    }
     if (a <= 0.0) return;
     // Every blade is baked into one slice of each family (across x and across z), so a ray
     // that crosses both would meet it twice and cover about 1 - (1 - c)^2 where the blades
