@@ -49,6 +49,27 @@ vec3 g_depth_at[5];            // the first hit, then where g_alpha first reache
 int g_depth_reached = 0;       // how many of them are set
 float g_depth_threshold = 0.0; // the threshold of the blade where the ray turns opaque
 
+// The opacity of a slice texel of coverage `alpha` drawn by this draw's tier: alpha
+// times what the density keeps of it (full = curve(density)), and in a transition zone the
+// tier's share f = tier_texel_share / full of that as transmittance, 1 - (1 - alpha full)^f.
+// The tiers' rays together let through what the whole grass would, and a texel the whole
+// grass makes opaque stays opaque in each: drawn as alpha x share, a thinned ray saw past
+// the tips to darker grass (a darker line where the volume hands over to the image tier).
+float tier_texel_alpha(float d, vec4 t, float density, bool field_edge, float alpha) {
+    if (!(density > 0.0) || t.r <= 0.0) return 0.0;
+    float full = coverage_curve(t, density);
+    if (field.tiers.z != 0u) return alpha * full;
+    vec2 interval = tier_interval(d, field_edge);
+    if (interval.x > interval.y) return 0.0;
+    if (interval.x <= 0.0 && interval.y >= 1.0) return alpha * full; // the whole tier: no share
+    float below = interval.x > 0.0 ? coverage_curve(t, interval.x * density) : 0.0;
+    float share = max(coverage_curve(t, interval.y * density) - below, 0.0);
+    // (pow(0, 0) is undefined: a tier that draws none of an opaque texel must not reach it.)
+    if (!(share > 0.0)) return 0.0;
+    if (!(full > 0.0) || share >= full) return alpha * share;
+    return 1.0 - pow(max(1.0 - alpha * full, 0.0), share / full);
+}
+
 // Composites the hit of the ray at `hit` (cuboid cells, distance t) with a slice: across x
 // (kind 0), across z (kind 1), or the horizontal slice near the ground (kind 2, the set's
 // last layer). Front to back (eq. 5.19-5.20). `h` is the hit in the slices' frame: its y is
@@ -137,18 +158,8 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     // The threshold view partitions whole texels by their threshold (each is one tier's);
     // the picture draws the share of each texel's blades the density and the tier select.
     bool field_edge = v_field_edge > 0.5;
-    float share = debug_thresholds() ? tier_blade_opacity(length(world), threshold, density, field_edge)
-                                     : tier_texel_share(length(world), thresholds, density, field_edge);
-    float a = albedo.a * share;
-    // In a transition zone the tier draws the share f = share / full of what the density
-    // keeps of the texel (full), as transmittance: (1 - albedo.a full)^f. The tiers' rays
-    // together let through what the whole grass would, and a texel the whole grass makes
-    // opaque stays opaque in each: drawn as alpha x share, a thinned ray saw past the tips
-    // to darker grass (a darker line where the volume hands over to the image tier).
-    if (!debug_thresholds() && field.tiers.z == 0u) {
-        float full = coverage_curve(thresholds, density);
-        if (full > 0.0 && share < full) a = 1.0 - pow(max(1.0 - albedo.a * full, 0.0), share / full);
-    }
+    float a = debug_thresholds() ? albedo.a * tier_blade_opacity(length(world), threshold, density, field_edge)
+                                 : tier_texel_alpha(length(world), thresholds, density, field_edge, albedo.a);
     if (a <= 0.0) return;
     // Every blade is baked into one slice of each family (across x and across z), so a ray
     // that crosses both would meet it twice and cover about 1 - (1 - c)^2 where the blades
