@@ -29,7 +29,7 @@ endfunction()
 # grass_compile_spirv(<out_cpp_list_var> <namespace> <shader>...): SPIR-V word arrays.
 # With SPIRV_DEFINE set by the caller (macro names, a list), the shaders are compiled with
 # them defined and their arrays are named <shader>_<lower-case macro>... in the list's order
-# (blade_vert_grass_responsive, blade_vert_grass_responsive_grass_storage_blocks).
+# (blade_vert_grass_responsive, blade_vert_grass_responsive_grass_indexed_blocks).
 function(grass_compile_spirv out_var namespace)
   if(NOT SHADER_DIR)
     set(SHADER_DIR "${GRASS_SHADER_DIR}")

@@ -27,17 +27,9 @@ layout(constant_id = 0) const uint GRASS_FEATURES = 0u;
 #elif !defined(GRASS_FEATURES)
 #error "the GL backend must define GRASS_FEATURES (the draw's map feature mask)"
 #endif
-// The Frame and Field blocks: uniform buffers, or (Vulkan, GRASS_STORAGE_BLOCKS) read-only
-// storage buffers of the same std140 layout, for lavapipe, which recompiles a shader on every
-// draw whose branches read uniform-buffer values (backend_vk/src/vk_spirv.hpp).
-#ifdef GRASS_STORAGE_BLOCKS
-#define GRASS_BLOCK(b) layout(std140, binding = b) readonly buffer
-#else
-#define GRASS_BLOCK(b) layout(std140, binding = b) uniform
-#endif
 bool has_map(uint role_bit) { return (GRASS_FEATURES & role_bit) != 0u; }
 
-GRASS_BLOCK(0) Frame {
+struct FrameData {
     mat4 view_projection;  // camera-relative world -> clip (the host's projection)
     vec4 sun_direction;    // xyz: unit vector towards the sun
     vec4 sun_color;        // rgb
@@ -57,9 +49,9 @@ GRASS_BLOCK(0) Frame {
     vec4 map_axis_v;       // xyz: world direction of map texel y, w: camera height above the map's anchor (m)
     vec4 map_levels[2];    // xy: camera's map coordinate (texels, mod N), z: texels per metre, w: N
     vec4 wind_sources[64]; // 16 sources x 4 vec4 (frame_plan.hpp)
-} frame;
+};
 
-GRASS_BLOCK(1) Field {
+struct FieldData {
     mat4 patch_to_world;   // patch units -> world metres; rotation x cell size, no translation
     vec4 map_u;            // cell space -> map u: dot(map_u.xyz, vec3(x, z, 1)) (lemme's configTf)
     vec4 map_v;            // ... and map v
@@ -80,7 +72,24 @@ GRASS_BLOCK(1) Field {
     vec4 wind_map_v;       // xyz: ... and wind map v
     vec4 culling;          // per-blade culling (blade_culling.glsl): x: orientation limit (2: off),
                            // y: frustum tolerance (< 0: off), z: distance max (m; 0: off), w: levels (0: by threshold)
-} field;
+};
+
+// The Frame and Field blocks (uniform buffers, std140), read as `frame` and `field`. Each
+// holds its struct as the one element of an array, indexed by GRASS_BLOCK_INDEX: the literal
+// 0, or (Vulkan, GRASS_INDEXED_BLOCKS) a push constant that the backend sets to 0. The index
+// is for lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3): it recompiles a shader on every
+// draw whose branches read uniform-buffer values at constant offsets, and it loads a storage
+// buffer lane by lane; an offset from a push constant is neither (backend_vk/src/vk_spirv.hpp).
+layout(std140, binding = 0) uniform Frame { FrameData frame_at[1]; };
+layout(std140, binding = 1) uniform Field { FieldData field_at[1]; };
+#ifdef GRASS_INDEXED_BLOCKS
+layout(push_constant) uniform BlockIndex { uint block_index; } grass_push;
+#define GRASS_BLOCK_INDEX grass_push.block_index
+#else
+#define GRASS_BLOCK_INDEX 0
+#endif
+#define frame frame_at[GRASS_BLOCK_INDEX]
+#define field field_at[GRASS_BLOCK_INDEX]
 
 // Design maps (lemme 6.4), 16-bit unorm, bilinear, clamped; sample only those in GRASS_FEATURES.
 layout(binding = 2) uniform sampler2D density_map;  // r: density multiplier

@@ -12,7 +12,7 @@ namespace grass::vk {
 
 namespace {
 
-PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d, bool storage_blocks) {
+PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d, bool indexed_blocks) {
     PipelineTarget t;
     t.render_pass = reinterpret_cast<VkRenderPass>(d.render_pass); // non-dispatchable handles are 64-bit
     t.subpass = d.subpass;
@@ -20,7 +20,7 @@ PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d,
     t.depth_format = static_cast<VkFormat>(d.depth_format);
     t.samples = static_cast<VkSampleCountFlagBits>(d.sample_count);
     t.depth_greater = ctx->desc.depth_mode == GRASS_DEPTH_GREATER;
-    t.storage_blocks = storage_blocks;
+    t.indexed_blocks = indexed_blocks;
     return t;
 }
 
@@ -31,13 +31,7 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       memory_(fn_, device_.device, device_.memory, device_.properties.limits.nonCoherentAtomSize),
       descriptors_(fn_, device_.device, &context->host), frame_sets_(fn_, device_.device, &context->host),
       deferred_(memory_, descriptors_, &context->host, vk_desc.frames_in_flight), pipeline_(fn_, device_.device),
-      ring_(memory_, deferred_, vk_desc.frames_in_flight,
-            device_.storage_blocks ? std::max(device_.properties.limits.minStorageBufferOffsetAlignment,
-                                              device_.properties.limits.minUniformBufferOffsetAlignment)
-                                   : device_.properties.limits.minUniformBufferOffsetAlignment,
-            device_.storage_blocks
-                ? VkBufferUsageFlags(VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT)
-                : VkBufferUsageFlags(VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT),
+      ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment,
             vk_desc.sample_count),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
       fields_(StlAllocator<FieldGpu>(&context->host)), maps_(StlAllocator<MapGpu>(&context->host)),
@@ -71,7 +65,7 @@ grass_result VkBackend::fail(const char* function, const char* what, const VkFai
 grass_result VkBackend::init(const char* function) {
     VkFailure failure;
     const char* what = "";
-    const PipelineTarget target = pipeline_target(ctx_, desc_, device_.storage_blocks);
+    const PipelineTarget target = pipeline_target(ctx_, desc_, device_.indexed_blocks);
     if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);
     create_timers();
@@ -207,7 +201,7 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
         writes[i].dstBinding = i;
         writes[i].descriptorCount = 1;
         if (i < kBindingDensityMap) {
-            writes[i].descriptorType = block_descriptor_type(device_.storage_blocks);
+            writes[i].descriptorType = kBlockDescriptorType;
         } else if (i == kBindingBladeCurves) {
             writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
             writes[i].pBufferInfo = &curves;

@@ -5,9 +5,9 @@
 namespace grass::vk {
 
 // Opaque boxes: no alpha to coverage.
-PipelineShape DebugViewPipeline::shape(bool storage_blocks) {
-    const Spirv vert = spirv(Shader::debug_vert, false, storage_blocks);
-    const Spirv frag = spirv(Shader::debug_frag, false, storage_blocks);
+PipelineShape DebugViewPipeline::shape(bool indexed_blocks) {
+    const Spirv vert = spirv(Shader::debug_vert, false, indexed_blocks);
+    const Spirv frag = spirv(Shader::debug_frag, false, indexed_blocks);
     return PipelineShape{vert.code,
                          vert.size,
                          frag.code,

@@ -17,7 +17,7 @@ struct DebugViewPipeline {
     static constexpr uint32_t kInstanceBinding = 0;
     static constexpr uint32_t kVerticesPerBox = 6;
 
-    static PipelineShape shape(bool storage_blocks);
+    static PipelineShape shape(bool indexed_blocks);
 };
 
 } // namespace grass::vk

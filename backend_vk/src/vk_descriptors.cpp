@@ -9,9 +9,7 @@ constexpr uint32_t kFrameSetsPerPool = 32;
 VkResult create_pool(const Functions& fn, VkDevice device, uint32_t sets, VkDescriptorPoolCreateFlags flags,
                      VkDescriptorPool* out) {
     const VkDescriptorPoolSize sizes[] = {
-        // The Frame and Field blocks are one type or the other, by device (vk_spirv.hpp).
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kUniformBuffersPerSet * sets},
-        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC, kUniformBuffersPerSet * sets},
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kUniformBuffersPerSet * sets}, // the Frame and Field blocks
         {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kImageSamplersPerSet * sets},
         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kStorageBuffersPerSet * sets},
     };

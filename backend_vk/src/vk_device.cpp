@@ -46,7 +46,7 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
     d.fn.vkGetPhysicalDeviceProperties(d.physical_device, &d.properties);
     d.fn.vkGetPhysicalDeviceMemoryProperties(d.physical_device, &d.memory);
     constexpr uint32_t kVendorMesa = 0x10005; // VK_VENDOR_ID_MESA
-    d.storage_blocks =
+    d.indexed_blocks =
         d.properties.vendorID == kVendorMesa && std::strncmp(d.properties.deviceName, "llvmpipe", 8) == 0;
 
     if (d.properties.apiVersion < VK_API_VERSION_1_1) {

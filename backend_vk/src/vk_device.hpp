@@ -17,9 +17,9 @@ struct Device {
     VkDevice device = VK_NULL_HANDLE;
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceMemoryProperties memory{};
-    // The Frame and Field blocks as storage buffers, not uniform buffers: on lavapipe only
+    // The Frame and Field blocks read at an index from a push constant: on lavapipe only
     // (vk_spirv.hpp says why).
-    bool storage_blocks = false;
+    bool indexed_blocks = false;
 };
 
 // The format of single-channel design maps (density, ambient, diffuse, height): 16-bit

@@ -21,9 +21,8 @@ uint32_t grown_capacity(uint32_t current, uint32_t needed) {
 } // namespace
 
 FrameRing::FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight,
-                     VkDeviceSize uniform_alignment, VkBufferUsageFlags uniform_usage, uint32_t samples)
+                     VkDeviceSize uniform_alignment, uint32_t samples)
     : memory_(memory), deferred_(deferred), frames_in_flight_(frames_in_flight), samples_(samples),
-      uniform_usage_(uniform_usage),
       frame_stride_(align_up(sizeof(FrameUniforms), uniform_alignment ? uniform_alignment : 1)),
       field_stride_(align_up(sizeof(FieldUniforms), uniform_alignment ? uniform_alignment : 1)) {}
 
@@ -67,7 +66,8 @@ bool FrameRing::grow_instances(Slot& s, uint32_t needed, uint64_t frame, VkFailu
 
 bool FrameRing::grow_uniforms(Slot& s, uint32_t needed, uint64_t frame, VkFailure* failure) {
     const uint32_t capacity = grown_capacity(s.draw_capacity, needed);
-    if (!replace_buffer(&s.uniforms, frame_stride_ + field_stride_ * capacity, uniform_usage_, frame, failure)) {
+    if (!replace_buffer(&s.uniforms, frame_stride_ + field_stride_ * capacity, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                        frame, failure)) {
         return false;
     }
     s.draw_capacity = capacity;

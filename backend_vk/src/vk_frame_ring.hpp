@@ -19,10 +19,10 @@ class FrameRing {
 public:
     // `samples`: the target's samples per pixel; the Frame block says so
     // (FrameUniforms::params[3], which the core leaves 0).
-    // uniform_alignment: the offset alignment of the Frame and Field blocks' buffer type;
-    // uniform_usage: that type's buffer usage (vk_spirv.hpp: uniform or storage buffers).
+    // uniform_alignment: the device's offset alignment of uniform buffers (the Frame and
+    // Field blocks).
     FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight, VkDeviceSize uniform_alignment,
-              VkBufferUsageFlags uniform_usage, uint32_t samples);
+              uint32_t samples);
     ~FrameRing();
     FrameRing(const FrameRing&) = delete;
     FrameRing& operator=(const FrameRing&) = delete;
@@ -62,7 +62,6 @@ private:
     DeferredDeletion& deferred_;
     uint32_t frames_in_flight_;
     uint32_t samples_;
-    VkBufferUsageFlags uniform_usage_; // the uniforms' buffer: uniform or storage (vk_spirv.hpp)
     VkDeviceSize frame_stride_;
     VkDeviceSize field_stride_;
     Slot slots_[kMaxFramesInFlight];

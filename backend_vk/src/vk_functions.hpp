@@ -58,6 +58,7 @@ namespace grass::vk {
     X(vkCmdCopyBufferToImage)        \
     X(vkCmdBindPipeline)             \
     X(vkCmdBindDescriptorSets)       \
+    X(vkCmdPushConstants)            \
     X(vkCmdBindVertexBuffers)        \
     X(vkCmdBindIndexBuffer)          \
     X(vkCmdSetViewport)              \

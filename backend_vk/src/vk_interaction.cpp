@@ -64,7 +64,7 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
         {kInteractionBindingTileColliders, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, compute, nullptr},
     };
     if (!create_set_and_pipeline_layout(
-            fn_, device_, bindings, kInteractionBindingCount, "the interaction pass's descriptor set layout",
+            fn_, device_, bindings, kInteractionBindingCount, nullptr, "the interaction pass's descriptor set layout",
             "the interaction pass's pipeline layout", &set_layout_, &layout_, failure, what)) {
         return false;
     }

@@ -36,15 +36,15 @@ static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_
 static_assert(offsetof(TierInstance, cell) == 16 && offsetof(TierInstance, terrain) == 32 && sizeof(TierInstance) == 48,
               "instance layout of blade.vert");
 
-PipelineShape blade_shape(bool responsive, bool storage_blocks) {
+PipelineShape blade_shape(bool responsive, bool indexed_blocks) {
     VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertex_input.vertexBindingDescriptionCount = 2;
     vertex_input.pVertexBindingDescriptions = kBindings;
     vertex_input.vertexAttributeDescriptionCount = sizeof(kAttributes) / sizeof(kAttributes[0]);
     vertex_input.pVertexAttributeDescriptions = kAttributes;
     // With multisampling, the blade edge alpha becomes coverage (blade.frag).
-    const Spirv vert = spirv(Shader::blade_vert, responsive, storage_blocks);
-    const Spirv frag = spirv(Shader::blade_frag, responsive, storage_blocks);
+    const Spirv vert = spirv(Shader::blade_vert, responsive, indexed_blocks);
+    const Spirv frag = spirv(Shader::blade_frag, responsive, indexed_blocks);
     return PipelineShape{vert.code, vert.size, frag.code, frag.size, vertex_input, true, "the blade pipelines"};
 }
 
@@ -125,10 +125,10 @@ bool BladePipeline::create_variant(uint32_t features, VkFailure* failure, const 
     if (has_variant(features)) return true;
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
     const bool responsive = (features & kBladeCurveFeatures) != 0;
-    const bool storage = target_.storage_blocks;
+    const bool indexed = target_.indexed_blocks;
     const PipelineShape shapes[kPipelineKindCount] = {
-        blade_shape(responsive, storage), SlicePipelines::volume_shape(responsive, storage),
-        SlicePipelines::image_shape(responsive, storage), DebugViewPipeline::shape(storage)};
+        blade_shape(responsive, indexed), SlicePipelines::volume_shape(responsive, indexed),
+        SlicePipelines::image_shape(responsive, indexed), DebugViewPipeline::shape(indexed)};
     for (uint32_t kind = 0; kind < kPipelineKindCount; ++kind) {
         if (!create_pipeline_pair(fn_, device_, target_, layout_, shapes[kind], features, pipelines_[features][kind],
                                   failure, what)) {
@@ -193,8 +193,8 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
 
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[kBindingCount] = {
-        {kBindingFrame, block_descriptor_type(target_.storage_blocks), 1, stages, nullptr},
-        {kBindingField, block_descriptor_type(target_.storage_blocks), 1, stages, nullptr},
+        {kBindingFrame, kBlockDescriptorType, 1, stages, nullptr},
+        {kBindingField, kBlockDescriptorType, 1, stages, nullptr},
         {kBindingDensityMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &sampler_},
         {kBindingSliceColor, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_linear_},
         {kBindingSliceNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_linear_},
@@ -210,14 +210,16 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
         {kBindingBladeCurves, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
         {kBindingWindMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
     };
-    return create_set_and_pipeline_layout(fn_, device_, bindings, kBindingCount, "the blade descriptor set layout",
-                                          "the blade pipeline layout", &set_layout_, &layout_, failure, what);
+    const VkPushConstantRange block_index{kBlockIndexStages, 0, kBlockIndexBytes};
+    return create_set_and_pipeline_layout(
+        fn_, device_, bindings, kBindingCount, target_.indexed_blocks ? &block_index : nullptr,
+        "the blade descriptor set layout", "the blade pipeline layout", &set_layout_, &layout_, failure, what);
 }
 
 bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const VkDescriptorSetLayoutBinding* bindings,
-                                    uint32_t binding_count, const char* set_name, const char* layout_name,
-                                    VkDescriptorSetLayout* set_layout, VkPipelineLayout* layout, VkFailure* failure,
-                                    const char** what) {
+                                    uint32_t binding_count, const VkPushConstantRange* push_range, const char* set_name,
+                                    const char* layout_name, VkDescriptorSetLayout* set_layout,
+                                    VkPipelineLayout* layout, VkFailure* failure, const char** what) {
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.bindingCount = binding_count;
     set_info.pBindings = bindings;
@@ -229,6 +231,8 @@ bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const 
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout_info.setLayoutCount = 1;
     layout_info.pSetLayouts = set_layout;
+    layout_info.pushConstantRangeCount = push_range ? 1 : 0;
+    layout_info.pPushConstantRanges = push_range;
     *what = layout_name;
     return vk_ok(fn.vkCreatePipelineLayout(device, &layout_info, nullptr, layout), "vkCreatePipelineLayout", failure);
 }

@@ -65,13 +65,14 @@ struct PipelineTarget {
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     bool depth_greater = false;  // reversed-Z host: GREATER_OR_EQUAL
-    bool storage_blocks = false; // Frame and Field as storage buffers (vk_spirv.hpp; Device)
+    bool indexed_blocks = false; // Frame and Field at a push-constant index (vk_spirv.hpp; Device)
 };
 
 // The descriptor type of the Frame and Field blocks (dynamic offsets: one per draw).
-inline VkDescriptorType block_descriptor_type(bool storage_blocks) {
-    return storage_blocks ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
-}
+constexpr VkDescriptorType kBlockDescriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+// The push constants of the indexed-block shaders (GRASS_INDEXED_BLOCKS): the blocks' index, 0.
+constexpr VkShaderStageFlags kBlockIndexStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr uint32_t kBlockIndexBytes = 4;
 
 // What differs between the graphics pipelines of the backend; the rest (viewport and
 // scissor dynamic, no culling, opaque colour, the target's samples and formats) is shared.
@@ -90,13 +91,13 @@ struct PipelineShape {
 VkPipelineVertexInputStateCreateInfo instance_only_vertex_input();
 
 // A descriptor set layout of `bindings` and a pipeline layout of that one set (the blade
-// pipelines', the interaction pass's). *what names the object being made (`set_name`,
-// `layout_name`) when it fails; what was made stays in *set_layout / *layout for the caller
-// to destroy.
+// pipelines', the interaction pass's), with `push_range` (or none: nullptr). *what names the
+// object being made (`set_name`, `layout_name`) when it fails; what was made stays in
+// *set_layout / *layout for the caller to destroy.
 bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const VkDescriptorSetLayoutBinding* bindings,
-                                    uint32_t binding_count, const char* set_name, const char* layout_name,
-                                    VkDescriptorSetLayout* set_layout, VkPipelineLayout* layout, VkFailure* failure,
-                                    const char** what);
+                                    uint32_t binding_count, const VkPushConstantRange* push_range, const char* set_name,
+                                    const char* layout_name, VkDescriptorSetLayout* set_layout,
+                                    VkPipelineLayout* layout, VkFailure* failure, const char** what);
 
 // Index 0 of out_pipelines depth-tests and writes depth (the target's compare op), index 1
 // does neither; both vertex and fragment stages are specialised with `features` (constant

@@ -270,6 +270,12 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     const bool depth_test = (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) == 0;
     fn_.vkCmdSetViewport(cmd, 0, 1, &viewport);
     fn_.vkCmdSetScissor(cmd, 0, 1, &scissor);
+    if (device_.indexed_blocks) {
+        // The index the shaders read the Frame and Field blocks at (vk_spirv.hpp); it holds
+        // for every pipeline of the layout, whatever is bound after it.
+        const uint32_t block_index = 0;
+        fn_.vkCmdPushConstants(cmd, pipeline_.layout(), kBlockIndexStages, 0, kBlockIndexBytes, &block_index);
+    }
 
     const VkBuffer instances = ring_.instance_buffer(slot_);
     const VkDeviceSize zero = 0;

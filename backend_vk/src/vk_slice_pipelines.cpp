@@ -8,19 +8,19 @@ namespace grass::vk {
 // blade_interface.glsl), not through alpha to coverage. No culling (shared state):
 // volume.frag keeps the back faces itself.
 namespace {
-PipelineShape slice_shape(Shader vert, Shader frag, bool responsive, bool storage_blocks, const char* name) {
-    const Spirv v = spirv(vert, responsive, storage_blocks), f = spirv(frag, responsive, storage_blocks);
+PipelineShape slice_shape(Shader vert, Shader frag, bool responsive, bool indexed_blocks, const char* name) {
+    const Spirv v = spirv(vert, responsive, indexed_blocks), f = spirv(frag, responsive, indexed_blocks);
     return PipelineShape{v.code, v.size, f.code, f.size, instance_only_vertex_input(), false, name};
 }
 } // namespace
 
-PipelineShape SlicePipelines::volume_shape(bool responsive, bool storage_blocks) {
-    return slice_shape(Shader::volume_vert, Shader::volume_frag, responsive, storage_blocks,
+PipelineShape SlicePipelines::volume_shape(bool responsive, bool indexed_blocks) {
+    return slice_shape(Shader::volume_vert, Shader::volume_frag, responsive, indexed_blocks,
                        "the volume tier pipelines");
 }
 
-PipelineShape SlicePipelines::image_shape(bool responsive, bool storage_blocks) {
-    return slice_shape(Shader::image_vert, Shader::image_frag, responsive, storage_blocks, "the image tier pipelines");
+PipelineShape SlicePipelines::image_shape(bool responsive, bool indexed_blocks) {
+    return slice_shape(Shader::image_vert, Shader::image_frag, responsive, indexed_blocks, "the image tier pipelines");
 }
 
 } // namespace grass::vk

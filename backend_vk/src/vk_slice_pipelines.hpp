@@ -21,8 +21,8 @@ struct SlicePipelines {
     static constexpr uint32_t kVerticesPerImageWithSkirts = 30; // on a height map: the quad and 4 skirts (image.vert)
 
     // `responsive`: the fragment shaders compiled with GRASS_RESPONSIVE (wind, trails).
-    static PipelineShape volume_shape(bool responsive, bool storage_blocks);
-    static PipelineShape image_shape(bool responsive, bool storage_blocks);
+    static PipelineShape volume_shape(bool responsive, bool indexed_blocks);
+    static PipelineShape image_shape(bool responsive, bool indexed_blocks);
 };
 
 } // namespace grass::vk

@@ -2,17 +2,22 @@
 // (backend_vk/CMakeLists.txt) in up to four variants each:
 // - responsive: compiled with GRASS_RESPONSIVE, for the pipelines of kBladeCurveFeatures
 //   (blade.vert, volume.frag and image.frag have it; the other shaders are the same);
-// - storage blocks: compiled with GRASS_STORAGE_BLOCKS, the Frame and Field blocks as
-//   read-only storage buffers of the same std140 layout instead of uniform buffers.
+// - indexed blocks: compiled with GRASS_INDEXED_BLOCKS, the Frame and Field blocks read
+//   at an index from a push constant (always 0) instead of the literal 0; the pipeline
+//   layout then has a 4-byte push-constant range, which vk_record sets to 0.
 //
-// Why storage blocks: lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3) specialises a
-// shader whose branches or loop bounds read uniform-buffer values on those values: on every
-// draw after a pipeline or descriptor set bind it copies the shader, substitutes them and
-// compiles it again, with no cache, and keeps the copies with the pipeline. grass binds a
-// set with dynamic offsets for every draw, so each volume and blade draw cost a compile
-// (about 50 ms) and several megabytes kept until the context went (docs/records/testing.md,
-// "Soak"). Its inliner reads uniform-buffer loads only. Other drivers keep the uniform
-// buffers, which are what constant caches serve best.
+// Why indexed blocks: lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3) specialises a
+// shader whose branches or loop bounds read uniform-buffer values at constant offsets on
+// those values: on every draw after a pipeline or descriptor set bind it copies the shader,
+// substitutes them and compiles it again, with no cache, and keeps the copies with the
+// pipeline. grass binds a set with dynamic offsets for every draw, so each volume and blade
+// draw cost a compile (about 50 ms) and several megabytes kept until the context went
+// (docs/records/testing.md, "Soak"). Storage buffers avoided that, but lavapipe loads a
+// storage-buffer value lane by lane (a loop over the 8 lanes with a bounds check per lane):
+// those loops took about 60% of the volume tier's fragment time. A uniform-buffer offset
+// computed from a push constant is neither inlined (not a constant) nor loaded lane by lane
+// (a push constant is uniform by definition, so one scalar load serves every lane).
+// Other drivers get the plain variants: no push constants, constant offsets.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +31,6 @@ struct Spirv {
     uint32_t size; // bytes
 };
 
-Spirv spirv(Shader shader, bool responsive, bool storage_blocks);
+Spirv spirv(Shader shader, bool responsive, bool indexed_blocks);
 
 } // namespace grass::vk
