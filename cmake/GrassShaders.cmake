@@ -51,7 +51,9 @@ function(grass_compile_spirv out_var namespace)
     add_custom_command(
       OUTPUT "${cpp}"
       COMMAND ${CMAKE_COMMAND} -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/spirv"
-      COMMAND ${GRASS_GLSLC} --target-env=vulkan1.1 -Werror -O -mfmt=c -I "${SHADER_DIR}" ${define_args}
+      # No -O: spirv-opt's performance recipe made lavapipe's code for the volume tier about
+      # 25% slower (docs/records/tier-cost.md); drivers optimise the module themselves.
+      COMMAND ${GRASS_GLSLC} --target-env=vulkan1.1 -Werror -mfmt=c -I "${SHADER_DIR}" ${define_args}
               -o "${inc}" "${SHADER_DIR}/${s}"
       COMMAND ${CMAKE_COMMAND} "-DINPUT=${inc}" "-DNAME=${name}" "-DOUTPUT=${cpp}" "-DNAMESPACE=${namespace}"
               -P "${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake"
