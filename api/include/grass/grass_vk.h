@@ -97,8 +97,9 @@ typedef struct grass_vk_record_desc {
 
 GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);
 
-/* Records the draws of the begun frame. Binds its own pipeline and descriptor sets and
- * sets viewport and scissor from the view; the host must rebind its own state after. */
+/* Records the draws of the begun frame. Binds its own pipeline and descriptor sets (on
+ * lavapipe also a push constant of its own pipeline layout) and sets viewport and scissor
+ * from the view; the host must rebind its own state after. */
 GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc* record);
 
 #ifdef __cplusplus
