@@ -15,6 +15,7 @@
 #define GRASS_INTERACTION 64u // responsive grass: the interaction map is bound (interaction.glsl)
 #define GRASS_WIND_MAP 128u   // responsive grass: the field's wind map is bound (wind.glsl; with GRASS_WIND)
 #define GRASS_BLADE_CULLING 256u // per-blade culling, geometry draws (blade_culling.glsl)
+#define GRASS_DEBUG_VIEW 512u    // the frame draws the tier tint or the threshold view (lighting.glsl)
 // Responsive grass's code (and its bindings 10-13) is compiled only where GRASS_RESPONSIVE
 // is defined (so is per-blade culling's, which reads the blades' control points too): the
 // shaders of still grass are exactly what they were, and declare no binding

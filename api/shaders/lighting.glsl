@@ -30,8 +30,9 @@ vec3 grass_lighting(vec3 albedo, vec3 n, float ambient_occlusion, vec2 light) {
 
 // The debug view's tint of a tier (GRASS_VIEW_FLAG_DEBUG_TIERS = 2 in frame.params.y):
 // red geometry, yellow volume, blue image, mixed half into the lit colour.
+// Both debug views' code exists only in the GRASS_DEBUG_VIEW variants (api/src/context/backend.hpp).
 vec3 debug_tint(vec3 color) {
-    if ((uint(frame.params.y + 0.5) & 2u) == 0u) return color;
+    if (!has_map(GRASS_DEBUG_VIEW) || (uint(frame.params.y + 0.5) & 2u) == 0u) return color;
     float kind = field.blade_params.z;
     vec3 tint = kind < 0.5 ? vec3(0.85, 0.06, 0.04) : kind < 1.5 ? vec3(0.90, 0.75, 0.04) : vec3(0.04, 0.18, 0.90);
     return mix(color, tint * (0.4 + 0.6 * dot(color, vec3(0.33)) / 0.2), 0.6);
@@ -42,7 +43,7 @@ vec3 debug_tint(vec3 color) {
 // target encodes back to exactly those bytes; with GRASS_VIEW_FLAG_ENCODE_SRGB (a target
 // that stores what it is given) as the bytes themselves.
 bool debug_thresholds() {
-    return (uint(frame.params.y + 0.5) & 8u) != 0u;
+    return has_map(GRASS_DEBUG_VIEW) && (uint(frame.params.y + 0.5) & 8u) != 0u;
 }
 float srgb_byte_to_linear(float byte) {
     float c = byte / 255.0;

@@ -32,10 +32,11 @@ enum GlProgramKind : uint32_t {
     kProgramKindCount = 4
 };
 // Every feature mask: the design maps' bits, then kFeatureWind, kFeatureInteraction,
-// kFeatureWindMap and kFeatureBladeCulling (backend.hpp).
+// kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView (backend.hpp).
 constexpr uint32_t kFeatureVariants = kFeatureMaskCount;
 static_assert(kFeatureWind == 1u << kMapRoleCount && kFeatureInteraction == kFeatureWind << 1 &&
-                  kFeatureWindMap == kFeatureInteraction << 1 && kFeatureBladeCulling == kFeatureWindMap << 1,
+                  kFeatureWindMap == kFeatureInteraction << 1 && kFeatureBladeCulling == kFeatureWindMap << 1 &&
+                  kFeatureDebugView == kFeatureBladeCulling << 1,
               "feature bits follow the design maps' bits");
 
 // Responsive grass (api/shaders/interaction.glsl, blade_dynamics.glsl, interaction.comp):

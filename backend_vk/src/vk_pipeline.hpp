@@ -55,8 +55,8 @@ enum PipelineKind : uint32_t {
     kPipelineDebugView = 3,
     kPipelineKindCount = 4
 };
-// Feature masks are 9 bits (kFeatureMaskCount, backend.hpp): one per MapRole, then
-// kFeatureWind, kFeatureInteraction, kFeatureWindMap and kFeatureBladeCulling.
+// Feature masks are 10 bits (kFeatureMaskCount, backend.hpp): one per MapRole, then
+// kFeatureWind, kFeatureInteraction, kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView.
 
 struct PipelineTarget {
     VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats

@@ -76,6 +76,41 @@ TEST_F(InvariantsTest, ADrawWhoseFeatureMaskIsNotItsFieldsIsAnInternalError) {
     expect_plan_refused("a feature mask beyond the map roles in the uniforms");
 }
 
+TEST_F(InvariantsTest, TheDebugViewVariantExactlyWhenTheFrameDrawsADebugView) {
+    auto set_debug_bit = [&](bool on) {
+        for (auto& d : ctx->plan.draws) {
+            d.features = on ? d.features | grass::kFeatureDebugView : d.features & ~grass::kFeatureDebugView;
+            d.uniforms.tiling[3] = d.features;
+        }
+    };
+    ASSERT_EQ(ctx->plan.flags & grass::kDebugViewFlags, 0u);
+    set_debug_bit(true);
+    expect_plan_refused("the debug view variant in a frame without a debug view");
+    EXPECT_NE(last_message().find("feature mask"), std::string::npos) << last_message();
+    for (const uint32_t flags : {uint32_t(GRASS_VIEW_FLAG_DEBUG_THRESHOLDS), uint32_t(GRASS_VIEW_FLAG_DEBUG_TIERS)}) {
+        ctx->plan.flags = flags;
+        set_debug_bit(true);
+        EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
+        set_debug_bit(false);
+        expect_plan_refused("a debug view drawn by the variant without its code");
+    }
+}
+
+TEST_F(InvariantsTest, TheFrameGivesItsDrawsTheDebugViewVariantOnlyWhenItDrawsOne) {
+    for (const uint32_t flags : {0u, uint32_t(GRASS_VIEW_FLAG_DEBUG_CELLS), uint32_t(GRASS_VIEW_FLAG_ENCODE_SRGB),
+                                 uint32_t(GRASS_VIEW_FLAG_DEBUG_TIERS), uint32_t(GRASS_VIEW_FLAG_DEBUG_THRESHOLDS)}) {
+        grass_view_desc v = view;
+        v.flags = flags;
+        ASSERT_EQ(grass_begin_frame(ctx, &v), GRASS_SUCCESS) << last_message();
+        ASSERT_FALSE(ctx->plan.draws.empty());
+        for (const auto& d : ctx->plan.draws) {
+            EXPECT_EQ((d.features & grass::kFeatureDebugView) != 0, (flags & grass::kDebugViewFlags) != 0)
+                << "view flags 0x" << std::hex << flags;
+        }
+        ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+    }
+}
+
 TEST_F(InvariantsTest, ResponsiveBitsOnlyAsTheInteractionPlanAllows) {
     std::vector<uint32_t> base;
     for (const auto& d : ctx->plan.draws) base.push_back(d.features);

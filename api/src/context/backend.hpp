@@ -37,8 +37,15 @@ constexpr uint32_t kFeatureBladeCulling = 1u << 8;
 // patch's blade control points (kBladeCurvesBinding) and the vertices per blade (trample.w).
 // (kFeatureWindMap comes with kFeatureWind.)
 constexpr uint32_t kBladeCurveFeatures = kFeatureWind | kFeatureInteraction | kFeatureBladeCulling;
+// The frame draws a debug view that changes the grass's colour (kDebugViewFlags): only then
+// do the shaders hold that code (GRASS_DEBUG_VIEW). A branch on a Frame value is not free:
+// where the rasteriser cannot tell that all its lanes take the same side (lavapipe reads the
+// blocks lane by lane), it runs both, and the threshold view's share (tier_blade_opacity)
+// cost every volume hit a second transition interval (docs/records/tier-cost.md).
+constexpr uint32_t kFeatureDebugView = 1u << 9;
+constexpr uint32_t kDebugViewFlags = GRASS_VIEW_FLAG_DEBUG_TIERS | GRASS_VIEW_FLAG_DEBUG_THRESHOLDS;
 // Every feature mask is below this (the variants a backend may compile).
-constexpr uint32_t kFeatureMaskCount = kFeatureBladeCulling << 1;
+constexpr uint32_t kFeatureMaskCount = kFeatureDebugView << 1;
 // Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's
 // levels (sampler2D, RGBA32F, read with texelFetch) and the patch's blade control points
 // (readonly std430 buffer `BladeCurves`: PatchData::blade_curves).

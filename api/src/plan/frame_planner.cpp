@@ -68,7 +68,7 @@ struct NodeBox {
 class FieldPlanner {
 public:
     FieldPlanner(grass_context* ctx, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
-                 const ViewCulling& culling, const DynamicsFrame& dynamics)
+                 const ViewCulling& culling, const DynamicsFrame& dynamics, uint32_t view_flags)
         : ctx_(ctx), slot_(slot), field_(field), patch_(patch), culling_(culling), frame_(field_frame(field, camera)) {
         for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
         // Responsive grass: the shader variant of every draw of the field (still grass: the
@@ -77,6 +77,7 @@ public:
         reads_map_ = dynamics.field_reads_map(field_up_);
         features_ = field.maps.features | (dynamics.wind ? kFeatureWind : 0u) | (reads_map_ ? kFeatureInteraction : 0u);
         if (field.wind_map.active()) features_ |= kFeatureWind | kFeatureWindMap;
+        if (view_flags & kDebugViewFlags) features_ |= kFeatureDebugView;
         const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
         density_map_ = density_slot != kNoMap ? ctx->maps.get(density_slot) : nullptr;
         height_map_ = height_slot != kNoMap ? ctx->maps.get(height_slot) : nullptr;
@@ -538,7 +539,7 @@ grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
         const Field* field = ctx->fields.get(slot);
         if (!field) continue;
         FieldPlanner planner(ctx, slot, *field, *ctx->patches.get(field->patch_slot), view.camera_position, culling,
-                             dynamics);
+                             dynamics, view.flags);
         const grass_result r = planner.run();
         if (r != GRASS_SUCCESS) {
             plan.clear();
