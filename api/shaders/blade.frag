@@ -16,6 +16,7 @@ layout(location = 7) flat in vec2 v_light;
 layout(location = 0) out vec4 out_color;
 
 void main() {
+    load_blocks();
     vec3 n = normalize(v_normal);
     vec3 to_camera = -v_position;
     if (dot(n, to_camera) < 0.0) n = -n; // two-sided: light the side that faces the camera

@@ -34,6 +34,7 @@ layout(location = 7) flat out vec2 v_light;  // light_maps() at the root
 const float kThresholdEpsilon = 1.0 / 1048576.0;
 
 void main() {
+    load_blocks();
     // Mirrored aperiodic tiling (eq. 6.7): mirror about the cell centre; roots stay inside.
     vec2 s = mirror_signs(i_cell.xy);
     vec3 p = a_position;

@@ -76,21 +76,28 @@ struct FieldData {
 };
 
 // The Frame and Field blocks (uniform buffers, std140), read as `frame` and `field`. Each
-// holds its struct as the one element of an array, indexed by GRASS_BLOCK_INDEX: the literal
-// 0, or (Vulkan, GRASS_INDEXED_BLOCKS) a push constant that the backend sets to 0. The index
+// holds its struct as the one element of an array, indexed by the literal 0, or (Vulkan,
+// GRASS_INDEXED_BLOCKS) by a push constant that the backend sets to 0. The index
 // is for lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3): it recompiles a shader on every
 // draw whose branches read uniform-buffer values at constant offsets, and it loads a storage
 // buffer lane by lane; an offset from a push constant is neither (backend_vk/src/vk_spirv.hpp).
 layout(std140, binding = 0) uniform Frame { FrameData frame_at[1]; };
 layout(std140, binding = 1) uniform Field { FieldData field_at[1]; };
+// lavapipe gathers a read at the pushed index lane by lane, each time the code reads it, and
+// runs both sides of a branch on what it read: there every shader's main() first copies both
+// blocks (load_blocks()), once per invocation.
 #ifdef GRASS_INDEXED_BLOCKS
 layout(push_constant) uniform BlockIndex { uint block_index; } grass_push;
-#define GRASS_BLOCK_INDEX grass_push.block_index
+FrameData g_frame;
+FieldData g_field;
+#define frame g_frame
+#define field g_field
+#define load_blocks() g_frame = frame_at[grass_push.block_index], g_field = field_at[grass_push.block_index]
 #else
-#define GRASS_BLOCK_INDEX 0
+#define frame frame_at[0]
+#define field field_at[0]
+#define load_blocks()
 #endif
-#define frame frame_at[GRASS_BLOCK_INDEX]
-#define field field_at[GRASS_BLOCK_INDEX]
 
 // Design maps (lemme 6.4), 16-bit unorm, bilinear, clamped; sample only those in GRASS_FEATURES.
 layout(binding = 2) uniform sampler2D density_map;  // r: density multiplier

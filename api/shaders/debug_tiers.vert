@@ -17,6 +17,7 @@ vec3 tier_color(float kind) {
 }
 
 void main() {
+    load_blocks();
 #ifdef VULKAN
     int v = gl_VertexIndex;
 #else

@@ -19,6 +19,7 @@ layout(location = 2) flat in uvec2 v_first_cell;
 layout(location = 0) out vec4 out_color;
 
 void main() {
+    load_blocks();
     vec2 local = v_local;
     float shade = 1.0;
     float turn = 0.0; // the bent tangent's angle at half height (grass_lighting_lobes_bent)

@@ -12,6 +12,7 @@ layout(location = 1) out vec2 v_local;    // position in the instance, cells
 layout(location = 2) flat out uvec2 v_first_cell;
 
 void main() {
+    load_blocks();
 #ifdef VULKAN
     int v = gl_VertexIndex;
 #else

@@ -206,6 +206,7 @@ void composite_flat_ground(float t) {
 }
 
 void main() {
+    load_blocks();
     vec3 ray = v_local - v_camera_local;
     // The back face ends the ray; a front face leaves the work to the back face behind it.
     // (Decided geometrically: no dependence on the host's winding or clip conventions.)

@@ -18,6 +18,7 @@ layout(location = 4) flat out vec2 v_terrain;       // i_terrain.xy (0, 0 withou
 layout(location = 5) flat out float v_field_edge;   // i_terrain.z
 
 void main() {
+    load_blocks();
 #ifdef VULKAN
     int v = gl_VertexIndex;
 #else
