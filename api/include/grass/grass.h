@@ -651,7 +651,9 @@ typedef enum grass_view_flags {
     /* Debugging: draw without the depth test (grass is drawn over the host's scene). */
     GRASS_VIEW_FLAG_NO_DEPTH_TEST = 1u << 0,
     /* Debugging: tint each tier's grass: red geometry, yellow volume, blue image
-     * (boulanger2006 figure 12, lemme2012 figure 7.1); the transition zones show both. */
+     * (boulanger2006 figure 12, lemme2012 figure 7.1); the transition zones show both.
+     * This flag and DEBUG_THRESHOLDS draw with shader variants of their own, compiled by the
+     * first frame that sets one of them; frames without them run none of their code. */
     GRASS_VIEW_FLAG_DEBUG_TIERS = 1u << 1,
     /* Debugging: instead of grass, draw every planned instance as a flat box on the ground
      * in its tier's colour, the size of its cell or macro-cell. */
