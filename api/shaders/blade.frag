@@ -4,35 +4,32 @@
 #include "blade_interface.glsl"
 #include "lighting.glsl"
 
-layout(location = 0) in vec3 v_position;
-layout(location = 1) in vec3 v_normal;
-layout(location = 2) in vec3 v_albedo;
-layout(location = 3) centroid in vec2 v_shape;
-layout(location = 4) in float v_density;
-layout(location = 5) in float v_opacity;
-layout(location = 6) flat in float v_threshold;
-layout(location = 7) flat in vec2 v_light;
+// The blade's varyings, packed four to a slot (blade.vert says why).
+layout(location = 0) in vec4 v_position_density;
+layout(location = 1) in vec4 v_normal_opacity;
+layout(location = 2) in vec4 v_albedo_code;
+layout(location = 3) centroid in vec4 v_shape_light;
 
 layout(location = 0) out vec4 out_color;
 
 void main() {
     load_blocks();
-    vec3 n = normalize(v_normal);
-    vec3 to_camera = -v_position;
+    vec3 n = normalize(v_normal_opacity.xyz);
+    vec3 to_camera = -v_position_density.xyz;
     if (dot(n, to_camera) < 0.0) n = -n; // two-sided: light the side that faces the camera
 
-    float ao = blade_ambient_occlusion(v_density, v_shape.y, field.blade_params.x, field.blade_params.y);
-    // The light maps at the root, read only by a variant that has them (else the varying is
-    // dead and the products with 1 fold away).
-    vec2 light = has_map(GRASS_MAP_AMBIENT | GRASS_MAP_DIFFUSE) ? v_light : vec2(1.0);
-    vec3 color = grass_lighting(v_albedo, n, ao, light);
+    float ao = blade_ambient_occlusion(v_position_density.w, v_shape_light.y, field.blade_params.x, field.blade_params.y);
+    // The light maps at the root, read only by a variant that has them (else zw go
+    // unread and the products with 1 fold away).
+    vec2 light = has_map(GRASS_MAP_AMBIENT | GRASS_MAP_DIFFUSE) ? v_shape_light.zw : vec2(1.0);
+    vec3 color = grass_lighting(v_albedo_code.rgb, n, ao, light);
 
     // Distance to the nearest blade edge in pixels -> coverage. Without multisampling the
     // alpha is ignored (no blending); with alpha-to-coverage it antialiases the edges.
     // Blades narrower than a pixel already lose coverage to the rasteriser: their centre
     // stays opaque (the scale is at least 2), or far grass would wash out to the sky.
-    float edge = 0.5 - abs(v_shape.x - 0.5);
-    float alpha = clamp(edge * max(1.0 / max(fwidth(v_shape.x), 1e-6), 2.0) + 0.5, 0.0, 1.0);
-    out_color =
-        debug_thresholds() ? threshold_code(v_threshold) : output_color(vec4(debug_tint(color), alpha * v_opacity));
+    float edge = 0.5 - abs(v_shape_light.x - 0.5);
+    float alpha = clamp(edge * max(1.0 / max(fwidth(v_shape_light.x), 1e-6), 2.0) + 0.5, 0.0, 1.0);
+    out_color = debug_thresholds() ? threshold_color(uint(v_albedo_code.a + 0.5))
+                                   : output_color(vec4(debug_tint(color), alpha * v_normal_opacity.w));
 }

@@ -18,16 +18,19 @@ layout(location = 4) in float a_threshold;   // density threshold in (0, 1]
 layout(location = 5) in vec4 i_origin;        // xyz: cell corner relative to the camera (m)
 layout(location = 6) in uvec4 i_cell;         // xy: the cell, zw: size in cells (1, 1 here)
 
-layout(location = 0) out vec3 v_position;    // camera-relative world position
-layout(location = 1) out vec3 v_normal;
-layout(location = 2) out vec3 v_albedo;
+// The varyings, packed four to a slot. lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3)
+// neither packs varyings nor drops those the fragment shader does not read, and it copies, sets
+// up and interpolates every slot of every vertex and triangle; GL's linker packs them. Per-blade
+// values ride in interpolated slots: the same value at the three vertices interpolates to itself
+// up to rounding, which the light (a factor) does not see and the threshold's debug code (an
+// integer, rounded where it is read) survives.
+layout(location = 0) out vec4 v_position_density; // xyz: camera-relative world position, w: local density
+layout(location = 1) out vec4 v_normal_opacity;   // xyz: normal, w: the blade's opacity in this tier
+layout(location = 2) out vec4 v_albedo_code;      // rgb: albedo, a: threshold_index() of the blade's threshold
 // Centroid: with multisampling, a thin blade often misses the pixel centre; u must be
-// taken inside the covered samples or the edge alpha below would discard them.
-layout(location = 3) centroid out vec2 v_shape; // x: u across the blade, y: height in patch units
-layout(location = 4) out float v_density;
-layout(location = 5) out float v_opacity;
-layout(location = 6) flat out float v_threshold;
-layout(location = 7) flat out vec2 v_light;  // light_maps() at the root
+// taken inside the covered samples or the edge alpha would discard them.
+layout(location = 3) centroid out vec4 v_shape_light; // x: u across the blade, y: height in patch units,
+                                                      // zw: light_maps() at the root
 
 // A threshold of exactly 1 must pass a density of exactly 1 after bilinear filtering;
 // the smallest threshold (1 / 65536) must still fail a density of 0.
@@ -55,8 +58,8 @@ void main() {
     float opacity = tier_blade_opacity(length(root_position), a_threshold, density + kThresholdEpsilon);
 
     vec3 position = mat3(field.patch_to_world) * vec3(p.x, p.y + ground, p.z) + i_origin.xyz;
-    v_normal = mat3(field.patch_to_world) * n;
-    v_albedo = modulate_color(a_color.rgb, cell_point);
+    vec3 normal = mat3(field.patch_to_world) * n;
+    vec3 albedo = modulate_color(a_color.rgb, cell_point);
 #ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION | GRASS_BLADE_CULLING)) {
 #ifdef VULKAN
@@ -85,10 +88,10 @@ void main() {
             // applied as the change from the rest curve's, so a still blade keeps its normal.
             vec3 rest_n = cross(side, bezier_tangent(i1, i2, t));
             vec3 new_n = cross(side, bezier_tangent(pose.v1, pose.v2, t));
-            float scale = length(v_normal);
+            float scale = length(normal);
             vec3 turn = new_n / max(length(new_n), 1e-12) - rest_n / max(length(rest_n), 1e-12);
-            v_normal += scale * (dot(rest_n, v_normal) < 0.0 ? -turn : turn);
-            v_albedo *= pose.shade;
+            normal += scale * (dot(rest_n, normal) < 0.0 ? -turn : turn);
+            albedo *= pose.shade;
         }
         // Per-blade culling (blade_culling.glsl), on the blade as drawn.
         if (has_map(GRASS_BLADE_CULLING) &&
@@ -97,12 +100,10 @@ void main() {
         }
     }
 #endif
-    v_position = position;
-    v_shape = vec2(a_root_shape.z, p.y);
-    v_density = density;
-    v_opacity = opacity;
-    v_threshold = a_threshold;
-    v_light = light_maps(cell_point);
+    v_position_density = vec4(position, density);
+    v_normal_opacity = vec4(normal, opacity);
+    v_albedo_code = vec4(albedo, float(threshold_index(a_threshold)));
+    v_shape_light = vec4(a_root_shape.z, p.y, light_maps(cell_point));
     gl_Position = frame.view_projection * vec4(position, 1.0);
     // Without multisampling a blade is all or nothing (tier_blade_opacity: drawn by the tier
     // where its opacity is at least one half, exactly one tier). With it, alpha-to-coverage

@@ -49,13 +49,18 @@ float srgb_byte_to_linear(float byte) {
     float c = byte / 255.0;
     return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
 }
-vec4 threshold_code(float threshold) {
-    uint code = uint(clamp(threshold, 0.0, 1.0) * 65535.0 + 0.5);
+uint threshold_index(float threshold) {
+    return uint(clamp(threshold, 0.0, 1.0) * 65535.0 + 0.5);
+}
+vec4 threshold_color(uint code) {
     float kind = field.blade_params.z;
     float blue = kind < 0.5 ? 0.0 : kind < 1.5 ? 128.0 : 255.0;
     if (encode_srgb()) return vec4(float(code >> 8) / 255.0, float(code & 255u) / 255.0, blue / 255.0, 1.0);
     return vec4(srgb_byte_to_linear(float(code >> 8)), srgb_byte_to_linear(float(code & 255u)),
                 srgb_byte_to_linear(blue), 1.0);
+}
+vec4 threshold_code(float threshold) {
+    return threshold_color(threshold_index(threshold));
 }
 
 // The light of the blades behind one slice texel. The texel keeps the mean normal of the
