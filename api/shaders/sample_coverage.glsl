@@ -27,11 +27,13 @@ bool write_coverage(float alpha) {
         gl_SampleMask[0] = -1;
         return alpha >= 0.5;
     }
-    const float bayer[16] = float[16](0.03125, 0.53125, 0.15625, 0.65625, 0.78125, 0.28125, 0.90625, 0.40625,
-                                      0.21875, 0.71875, 0.09375, 0.59375, 0.96875, 0.46875, 0.84375, 0.34375);
-    ivec2 p = ivec2(gl_FragCoord.xy) & 3;
+    // The 4 x 4 Bayer matrix, (2 m + 1) / 32 with m's bits, high to low, x0^y0, y0, x1^y1,
+    // y1: arithmetic, not a table (lavapipe reads a table indexed per pixel lane by lane).
+    uvec2 p = uvec2(ivec2(gl_FragCoord.xy)) & 3u;
+    uint a = p.x ^ p.y;
+    uint m = ((a & 1u) << 3) | ((p.y & 1u) << 2) | (a & 2u) | ((p.y & 2u) >> 1);
     bool from_last = (field.tiers.x & 1u) != 0u;
-    float dither = bayer[p.y * 4 + p.x];
+    float dither = (float(m) + 0.5) / 16.0;
     int k = int(clamp(floor(alpha * float(n) + (from_last ? 1.0 - dither : dither)), 0.0, float(n)));
     if (k == 0) return false;
     uint mask = k >= 32 ? 0xffffffffu : (1u << uint(k)) - 1u;
