@@ -207,6 +207,10 @@ Subcommand add_tier_cost(CLI::App& measure) {
     app->add_option("--patch-of", o->patch_scene,
                     "draw the patch of this scene file (FILE.json: its \"patch\"), not the default patch")
         ->check(CLI::ExistingFile);
+    app->add_option("--tier", o->tier, "only the rows of this tier (to profile one)")
+        ->check(CLI::IsMember({"geometry", "volume", "image"}))
+        ->excludes(maps)
+        ->excludes(features);
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));

@@ -61,6 +61,7 @@ struct Options {
     int frames = 5;
     int rounds = 3;          // --maps and --features only
     std::string patch_scene; // --patch-of: the patch of this scene file instead of the default patch
+    std::string tier;        // --tier: only the rows of this tier (geometry, volume or image); empty: all
 };
 
 // One tier drawn alone: its kind, slices and largest macro-cell side (1 = single cells).

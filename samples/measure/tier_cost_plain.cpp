@@ -1,7 +1,7 @@
 // grass-measure tier-cost without --maps or --features: 1024 cells drawn by each tier alone,
 // then by the volume (8 slices) and image tiers in macro-cells of up to 2, 4, 8 and 16 cells a
 // side; the median frame, and per basic cell the frame minus the empty one, in wall and in CPU
-// time. --single: the first, third and fifth rows only (kSingleTiers).
+// time. --single: the first, third and fifth rows only (kSingleTiers); --tier: one tier's rows.
 #include "tier_cost.hpp"
 
 #include "cli.hpp"
@@ -9,6 +9,7 @@
 #include "tool.hpp"
 
 #include <cstdio>
+#include <cstring>
 #include <iterator>
 #include <vector>
 
@@ -41,6 +42,7 @@ int run_plain(Rig& rig) {
     std::printf("| tier | macro-cells up to | instances | frame (ms) | per basic cell (us) | CPU per basic cell (us) "
                 "|\n|---|---|---|---|---|---|\n");
     for (const Setup& s : rows) {
+        if (!o.tier.empty() && std::strncmp(s.name, o.tier.c_str(), o.tier.size()) != 0) continue;
         const TierField tf(s, rig.patch());
         grass_field_id field{};
         grass_sample::check(grass_create_field(ctx, &tf.desc, &field), "grass_create_field", ctx);
