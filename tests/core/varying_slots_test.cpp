@@ -76,9 +76,8 @@ TEST(VaryingSlotsTest, BladeVertexShaderWritesFourSlots) {
     const Outputs still = located_outputs(grass_test_spirv::blade_vert, grass_test_spirv::blade_vert_size);
     ASSERT_EQ(still.error, "");
     EXPECT_EQ(still.slots, 4) << "blade.vert: pack its varyings four to a slot";
-    const Outputs responsive =
-        located_outputs(grass_test_spirv::blade_vert_grass_responsive_grass_indexed_blocks,
-                        grass_test_spirv::blade_vert_grass_responsive_grass_indexed_blocks_size);
+    const Outputs responsive = located_outputs(grass_test_spirv::blade_vert_grass_responsive_grass_indexed_blocks,
+                                               grass_test_spirv::blade_vert_grass_responsive_grass_indexed_blocks_size);
     ASSERT_EQ(responsive.error, "");
     EXPECT_EQ(responsive.slots, 4) << "blade.vert (GRASS_RESPONSIVE, GRASS_INDEXED_BLOCKS)";
 }
