@@ -18,7 +18,8 @@ void main() {
     vec3 to_camera = -v_position_density.xyz;
     if (dot(n, to_camera) < 0.0) n = -n; // two-sided: light the side that faces the camera
 
-    float ao = blade_ambient_occlusion(v_position_density.w, v_shape_light.y, field.blade_params.x, field.blade_params.y);
+    float ao =
+        blade_ambient_occlusion(v_position_density.w, v_shape_light.y, field.blade_params.x, field.blade_params.y);
     // The light maps at the root, read only by a variant that has them (else zw go
     // unread and the products with 1 fold away).
     vec2 light = has_map(GRASS_MAP_AMBIENT | GRASS_MAP_DIFFUSE) ? v_shape_light.zw : vec2(1.0);

@@ -1,10 +1,12 @@
 // The blade tier's varyings fill as few slots as GL's linker would pack them into.
 // lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3) neither packs varyings nor drops those
 // the fragment shader does not read: every output slot of every vertex is copied, set up per
-// triangle and interpolated. With eight one-value-to-three-value outputs the Vulkan blade
-// tier cost 1.3 times GL's CPU time per cell (docs/records/tier-cost.md); packed four to a
-// slot, as GL's linker packs them, the two are level. The test reads the SPIR-V the Vulkan
-// backend compiles (the same GLSL) and counts the vertex shader's located outputs.
+// triangle and interpolated. With eight outputs in eight slots the Vulkan blade tier cost
+// 1.3 times GL's CPU time per cell (docs/records/tier-cost.md); packed four to a slot, as
+// GL's linker packs them, the two are level. The test reads the SPIR-V the Vulkan backend
+// embeds (vk_spirv.hpp) and counts the vertex shader's located outputs in every variant.
+#include "vk_spirv.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -12,21 +14,14 @@
 #include <set>
 #include <string>
 
-namespace grass_test_spirv {
-extern const uint32_t blade_vert[];
-extern const uint32_t blade_vert_size;
-extern const uint32_t blade_vert_grass_responsive_grass_indexed_blocks[];
-extern const uint32_t blade_vert_grass_responsive_grass_indexed_blocks_size;
-} // namespace grass_test_spirv
-
 namespace {
 
 constexpr uint32_t kOpTypeVector = 23, kOpTypeArray = 28, kOpTypeMatrix = 24, kOpTypeStruct = 30;
 constexpr uint32_t kOpTypePointer = 32, kOpVariable = 59, kOpDecorate = 71;
 constexpr uint32_t kDecorationLocation = 30, kStorageOutput = 3;
 
-// The located outputs of a SPIR-V module: one slot each (vectors and scalars of 32 bits; a
-// type that could take more, an array, matrix or struct, is reported as "?" and fails).
+// The located outputs of a SPIR-V module: one slot each (vectors and scalars of 32 bits; an
+// array, matrix or struct, which could take more, is an error).
 struct Outputs {
     int slots = 0;
     std::string error;
@@ -73,13 +68,15 @@ Outputs located_outputs(const uint32_t* words, uint32_t bytes) {
 TEST(VaryingSlotsTest, BladeVertexShaderWritesFourSlots) {
     // Position and density, normal and opacity, albedo and the threshold's code, the shape and
     // the light: 14 values, four slots (blade.vert).
-    const Outputs still = located_outputs(grass_test_spirv::blade_vert, grass_test_spirv::blade_vert_size);
-    ASSERT_EQ(still.error, "");
-    EXPECT_EQ(still.slots, 4) << "blade.vert: pack its varyings four to a slot";
-    const Outputs responsive = located_outputs(grass_test_spirv::blade_vert_grass_responsive_grass_indexed_blocks,
-                                               grass_test_spirv::blade_vert_grass_responsive_grass_indexed_blocks_size);
-    ASSERT_EQ(responsive.error, "");
-    EXPECT_EQ(responsive.slots, 4) << "blade.vert (GRASS_RESPONSIVE, GRASS_INDEXED_BLOCKS)";
+    for (const bool responsive : {false, true}) {
+        for (const bool indexed_blocks : {false, true}) {
+            const grass::vk::Spirv code = grass::vk::spirv(grass::vk::Shader::blade_vert, responsive, indexed_blocks);
+            const Outputs out = located_outputs(code.code, code.size);
+            ASSERT_EQ(out.error, "");
+            EXPECT_EQ(out.slots, 4) << "blade.vert (responsive " << responsive << ", indexed blocks " << indexed_blocks
+                                    << "): pack its varyings four to a slot";
+        }
+    }
 }
 
 TEST(VaryingSlotsTest, RejectsWhatIsNotSpirv) {
