@@ -1,8 +1,8 @@
 // grass-measure: the measurement tools, one subcommand each.
 //   bench      frame cost and image error of the quality presets (docs/quality.md)
 //   tier-cost  the frame cost of each tier, design map and optional feature (docs/three-tiers.md,
-//              docs/feature-cost.md)
-//   popping    popping in the transition zones against blades everywhere (docs/popping.md)
+//              docs/records/feature-cost.md)
+//   popping    popping in the transition zones against blades everywhere (docs/records/popping.md)
 //   dynamics   the cost of responsive grass: wind, colliders, the interaction pass (docs/records/responsive.md)
 #include "cli.hpp"
 #include "measure.hpp"

@@ -63,7 +63,7 @@ struct Options {
     std::string cache_dir;
     int frames = 30;
     uint32_t width = 320, height = 180, samples = 4;
-    double canopy = 0.2;                // m: the height where a view ray meets the lawn (see docs/popping.md)
+    double canopy = 0.2;                // m: the height where a view ray meets the lawn (see docs/records/popping.md)
     uint64_t cell_budget = 150;         // reference geometry cells per zone window
     uint64_t max_reference_cells = 600; // a zone whose narrowest window needs more is not measured
     bool agreement = true;
@@ -640,7 +640,7 @@ Subcommand add_popping(CLI::App& measure) {
     CLI::App* app = measure.add_subcommand(
         "popping", "Popping in the transition zones: a camera dollies through the scene; per zone, the frame-to-frame "
                    "luma change of the lod setup against blades everywhere; then the per-tier mean colours "
-                   "(docs/popping.md).");
+                   "(docs/records/popping.md).");
     grass_sample::add_backend_option(*app, &o->backend);
     app->add_option("--scene", o->scene_path, "scene file")->capture_default_str();
     app->add_option("--frames", o->frames, "frames of the dolly")->capture_default_str()->check(CLI::Range(2, 10000));

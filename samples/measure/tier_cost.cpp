@@ -194,10 +194,12 @@ Subcommand add_tier_cost(CLI::App& measure) {
                      "Prints a Markdown table.");
     grass_sample::add_backend_option(*app, &o->backend);
     grass_sample::add_size_option(*app, &o->width, &o->height, 16, 4096, "image size in pixels");
-    CLI::Option* maps = app->add_flag("--maps", o->maps, "the cost of each design map instead (docs/feature-cost.md)");
-    CLI::Option* features = app->add_flag("--features", o->features,
-                                          "the cost of the other optional features instead (docs/feature-cost.md)")
-                                ->excludes(maps);
+    CLI::Option* maps =
+        app->add_flag("--maps", o->maps, "the cost of each design map instead (docs/records/feature-cost.md)");
+    CLI::Option* features =
+        app->add_flag("--features", o->features,
+                      "the cost of the other optional features instead (docs/records/feature-cost.md)")
+            ->excludes(maps);
     app->add_flag("--single", o->single, "only the tiers alone in single cells (geometry, volume 8 slices, image)")
         ->excludes(maps)
         ->excludes(features);

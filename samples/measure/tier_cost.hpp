@@ -3,7 +3,7 @@
 // tier alone, then by the volume (8 slices) and image tiers in macro-cells of 1, 2, 4, 8 and
 // 16 cells a side. Wall time of a rendered and read-back frame, median of 5, minus the
 // same frame with no grass; per basic cell. Prints a Markdown table.
-// --maps: instead, the cost of each design map (docs/feature-cost.md). For each tier alone
+// --maps: instead, the cost of each design map (docs/records/feature-cost.md). For each tier alone
 // (geometry, volume 8 slices, image; single cells), the plain field (no maps), then the same
 // field with each map alone (density all 1, colour with alpha 0.3, ambient, diffuse, height:
 // a ramp along x, height scale 1 cell), then all five, then the plain field again (the

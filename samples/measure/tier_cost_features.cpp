@@ -1,5 +1,5 @@
 // grass-measure tier-cost --features: the cost of the optional features other than the maps
-// (docs/feature-cost.md), measured as --maps measures the maps: for each tier alone, the
+// (docs/records/feature-cost.md), measured as --maps measures the maps: for each tier alone, the
 // plain field with every optional feature off, then mirror tiling, a transition zone shared
 // with the next cheaper tier, the same with the default transition window, a second grass
 // type, all five maps, and the plain field again.

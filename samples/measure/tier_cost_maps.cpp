@@ -1,4 +1,4 @@
-// grass-measure tier-cost --maps: the cost of each design map (docs/feature-cost.md). For each
+// grass-measure tier-cost --maps: the cost of each design map (docs/records/feature-cost.md). For each
 // tier alone, the plain field, each map alone, all five, the plain field again; rows drawn in
 // rounds, interleaved; per row the frame cost and the GPU memory of the field and its maps.
 #include "tier_cost.hpp"

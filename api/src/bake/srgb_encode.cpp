@@ -55,8 +55,6 @@ uint8_t linear_to_srgb8(float linear) {
     return static_cast<uint8_t>(lo);
 }
 
-double srgb8_to_linear(uint8_t code) { return decode(code / 255.0); }
-
 uint8_t float_to_unorm8(float value) {
     if (!(value > 0.0f)) return 0;
     if (value >= 1.0f) return 255;

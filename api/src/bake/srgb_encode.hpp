@@ -10,9 +10,6 @@ namespace grass {
 // sRGB code (0..255) of a linear value; clamps to [0, 1]; NaN gives 0.
 uint8_t linear_to_srgb8(float linear);
 
-// Linear value of an sRGB code (for tests and tools).
-double srgb8_to_linear(uint8_t code);
-
 // Linear value in [0, 1] to unorm8 (round to nearest); clamps; NaN gives 0.
 uint8_t float_to_unorm8(float value);
 

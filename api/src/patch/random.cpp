@@ -20,12 +20,6 @@ double Random::normal() {
     return std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2);
 }
 
-uint64_t hash_cell(uint64_t i, uint64_t j, uint64_t seed) {
-    Random r(seed ^ (i * 0x9e3779b97f4a7c15ull) ^ (j * 0xc2b2ae3d27d4eb4full));
-    r.next_u64();
-    return r.next_u64();
-}
-
 uint64_t fnv1a64(const void* data, uint64_t size, uint64_t hash) {
     const auto* bytes = static_cast<const unsigned char*>(data);
     for (uint64_t k = 0; k < size; ++k) {

@@ -22,9 +22,6 @@ private:
     uint64_t state_;
 };
 
-// A well-mixed 64-bit hash of two integers and a seed (for per-cell decisions).
-uint64_t hash_cell(uint64_t i, uint64_t j, uint64_t seed);
-
 // FNV-1a 64 over bytes, continuing from `hash` (start with kFnvOffset).
 constexpr uint64_t kFnvOffset = 0xcbf29ce484222325ull;
 uint64_t fnv1a64(const void* data, uint64_t size, uint64_t hash);
