@@ -25,6 +25,9 @@ DEFINES = {
 DEFINES["GRASS_HEADER_VERSION"] = ((DEFINES["GRASS_VERSION_MAJOR"] << 22) | (DEFINES["GRASS_VERSION_MINOR"] << 12)
                                    | DEFINES["GRASS_VERSION_PATCH"])
 globals().update(DEFINES)
+# The package's version is the header's (tests/test_header_layout.py checks DEFINES against
+# grass.h); pyproject.toml reads it from here.
+__version__ = f"{DEFINES['GRASS_VERSION_MAJOR']}.{DEFINES['GRASS_VERSION_MINOR']}.{DEFINES['GRASS_VERSION_PATCH']}"
 
 # ---- Enums (C enums are ints) ---------------------------------------------------------
 
