@@ -32,7 +32,7 @@ from .camera import look_at, perspective
 
 __version__ = _ffi.__version__
 __all__ = ["lib", "GrassError", "ArgumentError", "ClosedError", "Result", "MessageId", "Context", "Patch", "Field",
-           "Map", "patch_desc", "field_desc", "view_desc", "map_desc", "lod_test", "quality_preset", "look_at",
+           "Map", "patch_desc", "field_desc", "view_desc", "map_desc", "tier_desc", "lod_test", "quality_preset", "look_at",
            "perspective", "__version__"] + [n for n in dir(_ffi) if n.startswith(("grass_", "GRASS_"))]
 
 lib = _ffi.load_library()
@@ -87,6 +87,13 @@ def map_desc(pixels, width=None, height=None, format=None, row_pitch=0):
     until the call that takes the desc returns."""
     desc = lib.grass_default_map_desc()
     return desc, _pixels.map_desc(desc, "grass.map_desc", "pixels", pixels, width, height, format, row_pitch)
+
+
+def tier_desc(kind, slices=0):
+    """A grass_tier_desc: `kind` a GRASS_TIER_* kind, `slices` per axis for volume tiers."""
+    where = "grass.tier_desc"
+    return grass_tier_desc(_checks.enum(where, "kind", kind, "grass_tier_kind"),  # noqa: F405
+                           _checks.integer(where, "slices", slices, 0, 2 ** 32 - 1))
 
 
 def lod_test(callback, tier=0, **fields):
@@ -300,14 +307,14 @@ class Context:
             scope = _callbacks.enter()
             try:
                 result = fn(handle, *args)
+                last = self._last
+                if result != GRASS_SUCCESS and last is None:
+                    last = (GRASS_MSG_NONE, lib.grass_get_last_error(handle).decode(errors="replace"))
+                if scope.errors and result == GRASS_SUCCESS and undo is not None:
+                    undo(handle)
             finally:
                 self._in_call = False
                 _callbacks.leave(scope)
-            last = self._last
-            if result != GRASS_SUCCESS and last is None:
-                last = (GRASS_MSG_NONE, lib.grass_get_last_error(handle).decode(errors="replace"))
-            if scope.errors and result == GRASS_SUCCESS and undo is not None:
-                undo(handle)
             self._raise_for(where, result, last, scope.errors)
 
     def call(self, fn, *args):
@@ -324,9 +331,16 @@ class Context:
             if self._in_call:
                 raise GrassError(GRASS_ERROR_INVALID_STATE, GRASS_MSG_NONE,
                                  "Context.destroy: called from inside a grass callback of this context")
-            if self._ctx:
-                lib.grass_destroy_context(self._ctx)
-            self._ctx = None
+            handle, self._ctx = self._ctx, None  # closed already for callbacks during the destruction
+            if handle:
+                self._in_call = True
+                scope = _callbacks.enter()
+                try:
+                    lib.grass_destroy_context(handle)
+                finally:
+                    self._in_call = False
+                    _callbacks.leave(scope)
+                self._raise_for("Context.destroy (the context is destroyed)", GRASS_SUCCESS, None, scope.errors)
 
     def __enter__(self):
         return self

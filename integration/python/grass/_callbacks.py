@@ -7,7 +7,6 @@ import ctypes
 import numbers
 import sys
 import threading
-import traceback
 import weakref
 
 from ._errors import short
@@ -42,9 +41,7 @@ def record(sentence, exception=None):
     if stack:
         stack[-1].errors.append((sentence, exception))
     else:  # a callback called from a raw grass.lib call: nobody to raise to
-        print(f"grass: {sentence}", file=sys.stderr)
-        if exception is not None:
-            traceback.print_exception(type(exception), exception, exception.__traceback__)
+        print(f"grass: {sentence} (in a raw grass.lib call)", file=sys.stderr)
 
 
 def _raised(what, e):
