@@ -34,8 +34,6 @@ def map_desc(desc, where, name, pixels, width=None, height=None, format=None, ro
         view = memoryview(pixels)
     except TypeError:
         _fail(where, name, pixels, "it must be a numpy array or a bytes-like object (bytes, bytearray, memoryview)")
-    if isinstance(pixels, str):
-        _fail(where, name, pixels, "it must be bytes-like, not a str")
     if not view.contiguous:
         _fail(where, name, pixels, "it must be a contiguous buffer (copy it with bytes())")
     if width is None or height is None:
