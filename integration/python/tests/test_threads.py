@@ -45,6 +45,7 @@ def test_one_context_shared_by_two_threads_is_serialised_and_errors_stay_with_th
                     with ctx.frame(overhead_view()):  # holds the context for the whole frame
                         pass
                     assert ctx.frame_stats().blades_drawn > 0
+                assert ctx.last_error == ""  # per thread: never the other thread's message
                 counts["frames"] += 1
 
         def misuse(stop):  # invalid calls: must fail with their own message, every time
@@ -53,6 +54,7 @@ def test_one_context_shared_by_two_threads_is_serialised_and_errors_stay_with_th
                     ctx.create_field(patch, cells_x=0, cells_z=4)
                 assert e.value.message_id == grass.MessageId.GRASS_MSG_ZERO_CELLS, e.value
                 assert "cells_x" in e.value.message, e.value
+                assert ctx.last_error == e.value.message
                 counts["refused"] += 1
 
         errors = run_threads(plan, misuse, plan)
