@@ -7,11 +7,13 @@ run (exit 1, printing the seed and the calls), a signal kills it (faulthandler p
 
 runs the sequences seeded FIRST .. FIRST+COUNT-1; --gl makes one headless GL target and
 gives every sequence a GL context too (rendering with render_gl) besides the CPU ones."""
+import atexit
 import collections
 import faulthandler
 import math
 import os
 import random
+import shutil
 import sys
 import tempfile
 import traceback
@@ -26,7 +28,8 @@ except ImportError:  # the fuzz then uses bytes-like pixels only
 
 faulthandler.enable()
 STATS = collections.defaultdict(lambda: [0, 0])  # op -> [succeeded, refused with a GrassError]
-CACHE = tempfile.mkdtemp(prefix="grass-fuzz-")
+CACHE = tempfile.mkdtemp(prefix="grass-fuzz-")  # a cache_directory some contexts get
+atexit.register(shutil.rmtree, CACHE, True)
 
 
 class Sequence:
