@@ -66,9 +66,8 @@ def view_desc(eye=None, target=None, size=None, fovy=0.9, near=0.05, far=1000.0,
     if eye is not None or target is not None:
         if eye is None or target is None:
             _checks.fail(where, "eye" if eye is None else "target", None, "eye and target go together")
-        eye = _checks.vector(where, "eye", eye, 3)
         view.view[:] = look_at(eye, target, up, where=where)
-        view.camera_position[:] = eye
+        view.camera_position[:] = _checks.vector(where, "eye", eye, 3)
     if size is not None:
         if isinstance(size, (str, bytes)) or not hasattr(size, "__len__") or len(size) != 2:
             _checks.fail(where, "size", size, "it must be (width, height)")
