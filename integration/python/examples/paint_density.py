@@ -1,6 +1,6 @@
 """Painting a density map from numpy: a mown path and a bare circle, planned and rendered.
 
-    GRASS_LIBRARY=build/libgrass.so python3 integration/python/examples/paint_density.py [out.png]
+    ~/grass-venv/bin/python integration/python/examples/paint_density.py [out.png]    # installed as docs/python.md says
 """
 import sys
 

@@ -1,6 +1,6 @@
 """Planning only: a CPU context (no GPU) shows what a camera would draw, with stats.
 
-    GRASS_LIBRARY=build/libgrass.so python3 integration/python/examples/plan_only.py
+    ~/grass-venv/bin/python integration/python/examples/plan_only.py    # installed as docs/python.md says
 """
 import grass
 

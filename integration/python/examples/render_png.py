@@ -1,6 +1,6 @@
 """A headless render to PNG: GL 4.5 through EGL surfaceless (Mesa), an sRGB target.
 
-    GRASS_LIBRARY=build/libgrass.so python3 integration/python/examples/render_png.py [out.png]
+    ~/grass-venv/bin/python integration/python/examples/render_png.py [out.png]    # installed as docs/python.md says
 """
 import sys
 

@@ -25,6 +25,9 @@ DEFINES = {
 DEFINES["GRASS_HEADER_VERSION"] = ((DEFINES["GRASS_VERSION_MAJOR"] << 22) | (DEFINES["GRASS_VERSION_MINOR"] << 12)
                                    | DEFINES["GRASS_VERSION_PATCH"])
 globals().update(DEFINES)
+# The package's version is the header's (tests/test_header_layout.py checks DEFINES against
+# grass.h); pyproject.toml reads it from here.
+__version__ = f"{DEFINES['GRASS_VERSION_MAJOR']}.{DEFINES['GRASS_VERSION_MINOR']}.{DEFINES['GRASS_VERSION_PATCH']}"
 
 # ---- Enums (C enums are ints) ---------------------------------------------------------
 
@@ -354,12 +357,19 @@ def _candidates():
     if env:
         return [env]
     here = os.path.dirname(os.path.abspath(__file__))
-    return [os.path.join(here, "libgrass.so.0"), os.path.join(here, "libgrass.so"), "libgrass.so.0"]
+    found = [os.path.join(here, "libgrass.so.0"), os.path.join(here, "libgrass.so")]
+    try:  # written by cmake --install (integration/python/install-python.cmake)
+        from importlib import import_module
+        found.append(import_module(f"{__package__}._config").LIBRARY)
+    except ImportError:
+        pass
+    return found + ["libgrass.so.0"]
 
 
 def load_library():
     """Loads libgrass: $GRASS_LIBRARY, else libgrass.so.0 next to this package, else the
-    system loader's libgrass.so.0 (an installed grass, or LD_LIBRARY_PATH). Declares every
+    library cmake --install installed with the package (grass/_config.py), else the system
+    loader's libgrass.so.0 (an installed grass, or LD_LIBRARY_PATH). Declares every
     function's signature and checks the library's major version."""
     errors = []
     for path in _candidates():

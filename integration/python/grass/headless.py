@@ -16,6 +16,9 @@ import struct
 import zlib
 from ctypes import CFUNCTYPE, POINTER, c_char_p, c_float, c_int, c_uint, c_void_p
 
+from . import _checks
+from ._errors import ClosedError
+
 _EGL_PLATFORM_SURFACELESS_MESA = 0x31DD
 _EGL_OPENGL_API = 0x30A2
 _EGL_CONTEXT_MAJOR_VERSION, _EGL_CONTEXT_MINOR_VERSION = 0x3098, 0x30FB
@@ -28,6 +31,8 @@ GL_RENDERBUFFER, GL_FRAMEBUFFER, GL_FRAMEBUFFER_COMPLETE = 0x8D41, 0x8D40, 0x8CD
 GL_FRAMEBUFFER_SRGB = 0x8DB9
 GL_COLOR, GL_DEPTH = 0x1800, 0x1801
 GL_RGBA, GL_UNSIGNED_BYTE = 0x1908, 0x1401
+GL_MAX_RENDERBUFFER_SIZE = 0x84E8
+MAX_SIZE = 16384  # checked before any EGL call; the GL's own limit is checked once it exists
 
 _GL = {  # name -> (restype, argtypes)
     "glCreateRenderbuffers": (None, [c_int, POINTER(c_uint)]),
@@ -43,6 +48,7 @@ _GL = {  # name -> (restype, argtypes)
     "glClearBufferfv": (None, [c_uint, c_int, POINTER(c_float)]),
     "glReadPixels": (None, [c_int, c_int, c_int, c_int, c_uint, c_uint, c_void_p]),
     "glFinish": (None, []),
+    "glGetIntegerv": (None, [c_uint, POINTER(c_int)]),
 }
 
 
@@ -50,7 +56,10 @@ class Target:
     """A current GL 4.5 core context and a bound width x height sRGB + depth framebuffer."""
 
     def __init__(self, width, height):
-        self.width, self.height = int(width), int(height)
+        where = "grass.headless.Target"
+        self.width = _checks.integer(where, "width", width, 1, MAX_SIZE)
+        self.height = _checks.integer(where, "height", height, 1, MAX_SIZE)
+        self._context = None
         egl = ctypes.CDLL("libEGL.so.1")
         egl.eglGetProcAddress.restype = c_void_p
         egl.eglGetProcAddress.argtypes = [c_char_p]
@@ -83,6 +92,12 @@ class Target:
                 raise RuntimeError(f"GL lacks {name}")
             self.gl[name] = CFUNCTYPE(restype, *argtypes)(address)
         gl = self.gl
+        limit = c_int()
+        gl["glGetIntegerv"](GL_MAX_RENDERBUFFER_SIZE, ctypes.byref(limit))
+        if max(self.width, self.height) > limit.value:
+            self._release()
+            _checks.fail(where, "(width, height)", (self.width, self.height),
+                         f"this GL's renderbuffers are at most {limit.value} texels wide and high")
         self._renderbuffers = (c_uint * 2)()
         gl["glCreateRenderbuffers"](2, self._renderbuffers)
         gl["glNamedRenderbufferStorage"](self._renderbuffers[0], GL_SRGB8_ALPHA8, self.width, self.height)
@@ -96,18 +111,28 @@ class Target:
             raise RuntimeError("the sRGB + depth framebuffer is incomplete")
         gl["glBindFramebuffer"](GL_FRAMEBUFFER, fb)
 
+    def _open(self, where):
+        if not self._context:
+            raise ClosedError(f"grass.headless.Target.{where}: the target is closed")
+
     def get_proc_address(self, name):
         """The loader for grass.Context.gl: the address of a GL entry point, or None."""
+        if not isinstance(name, bytes):
+            _checks.fail("grass.headless.Target.get_proc_address", "name", name, "it must be bytes")
         return self._egl.eglGetProcAddress(name)
 
     def clear(self, color=(0.45, 0.62, 0.85), depth=1.0):
         """Clears colour (linear RGB, sRGB-encoded on the way in) and depth: before grass draws."""
+        self._open("clear")
+        color = _checks.vector("grass.headless.Target.clear", "color", color, 3)
+        depth = _checks.real("grass.headless.Target.clear", "depth", depth)
         self.gl["glEnable"](GL_FRAMEBUFFER_SRGB)
         self.gl["glClearBufferfv"](GL_COLOR, 0, (c_float * 4)(color[0], color[1], color[2], 1.0))
         self.gl["glClearBufferfv"](GL_DEPTH, 0, (c_float * 1)(depth))
 
     def read_rgba(self):
         """The stored sRGB bytes, RGBA, top row first (bytes of width * height * 4)."""
+        self._open("read_rgba")
         self.gl["glDisable"](GL_FRAMEBUFFER_SRGB)
         buffer = ctypes.create_string_buffer(self.width * self.height * 4)
         self.gl["glReadPixels"](0, 0, self.width, self.height, GL_RGBA, GL_UNSIGNED_BYTE, buffer)
@@ -123,9 +148,14 @@ class Target:
         return rgba
 
     def close(self):
+        """Deletes the framebuffer and the GL context; nothing to do when closed already."""
         if self._context:
             self.gl["glDeleteFramebuffers"](1, ctypes.byref(self._framebuffer))
             self.gl["glDeleteRenderbuffers"](2, self._renderbuffers)
+            self._release()
+
+    def _release(self):
+        if self._context:
             self._egl.eglMakeCurrent(self._display, None, None, None)
             self._egl.eglDestroyContext(self._display, self._context)
             self._context = None
