@@ -7,10 +7,14 @@
  * ctest abi_source_0_3_host runs it; abi_source_0_3_compiles checks that it warns with the
  * macro and is refused without it (tests/abi/source_0_3_compiles.sh).
  */
+#ifdef GRASS_SOURCE_TEST_EGL
+#    define _GNU_SOURCE 1 /* keep_drivers_resident.h: dl_iterate_phdr, RTLD_NODELETE */
+#endif
 #include <grass/grass_gl.h>
 #include <grass/grass_vk.h>
 
 #ifdef GRASS_SOURCE_TEST_EGL
+#    include "keep_drivers_resident.h"
 #    include <EGL/egl.h>
 #    include <EGL/eglext.h>
 #endif
@@ -81,6 +85,7 @@ static void run_gl(void) {
         eglTerminate(display);
         return;
     }
+    keep_drivers_resident();
     CHECK(gl.type == GRASS_STRUCT_TYPE_GL_DESC);
     grass_gl_set_loader_0_3(&gl, load_gl); /* 0.3: gl.get_proc_address = load_gl; */
     CHECK(grass_gl_create_context(GRASS_HEADER_VERSION, &cd, &gl, &ctx) == GRASS_SUCCESS);
