@@ -82,9 +82,11 @@ int main(void) {
         fprintf(stderr, "doc-test prelude: the context's setup failed\n");
         return 1;
     }
+    /* clang-format off */
     {
         /* doc-test block */
     }
+    /* clang-format on */
     grass_destroy_context(ctx);
     if (errors) {
         fprintf(stderr, "doc-test: the block made %d error(s)\n", errors);
