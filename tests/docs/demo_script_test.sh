@@ -2,7 +2,7 @@
 # scripts/demo.sh as the README uses it, its commands printed (GRASS_DEMO_DRY_RUN=1), not run:
 # it configures build/ as scripts/test.sh does (tests on: the README's later ctest commands
 # find the tests), and each backend writes its own image (--backend vk no longer overwrites
-# the GL one).
+# the GL one). And the README's first commands are still demo.sh and test.sh.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 fail() {
@@ -22,4 +22,8 @@ grep -q -- '--output build/grass-demo-vk.png --backend=vulkan --samples 4$' <<<"
 if GRASS_DEMO_DRY_RUN=1 bash "$root/scripts/demo.sh" --backend dx12 >/dev/null 2>&1; then
   fail "--backend dx12 was accepted"
 fi
-echo "demo_script_test: build/ configured as test.sh does; build/grass-demo-gl.png and build/grass-demo-vk.png"
+# The README's first block of commands is these two, before any other (CI runs scripts/test.sh).
+first=$(awk '/^```/ { if (open) exit; open = 1; next } open { sub(/ *#.*/, ""); print }' "$root/README.md")
+[[ $first == $'bash scripts/demo.sh\nbash scripts/test.sh' ]] || fail "README.md's first block is not the two commands: $first"
+echo "demo_script_test: build/ configured as test.sh does; build/grass-demo-gl.png and build/grass-demo-vk.png;" \
+  "the README starts with the two commands"
