@@ -41,7 +41,8 @@
  *     GRASS_MAX_LOD_TESTS, GRASS_DEFAULT_TIER_COUNT, GRASS_DEFAULT_LOD_TEST_COUNT) do not
  *     change.
  *   - Functions are only added; a renamed function keeps its old symbol for programs
- *     built against the older header, which no longer declares it.
+ *     built against the older header, and this header declares its old name only to
+ *     sources that define GRASS_ENABLE_DEPRECATED (the "0.3 names" block at its end).
  *   - The numeric values of enums, struct type tags and message ids never change.
  *
  * Thread safety
