@@ -1,5 +1,7 @@
 #include "overlay.hpp"
 
+#include "overlay_table.hpp"
+
 #include <imgui.h>
 
 namespace grass_viewer {
@@ -33,29 +35,8 @@ void build_overlay(const OverlayInfo& info) {
                 info.samples > 1 ? "MSAA 4x" : "no MSAA");
     ImGui::Text("frame %.2f ms (%.1f fps)  plan %.3f ms", info.frame_ms,
                 info.frame_ms > 0.0 ? 1000.0 / info.frame_ms : 0.0, info.stats.plan_ms);
-    static const char* const kinds[GRASS_TIER_KIND_COUNT] = {"geometry", "volume", "image"};
-    if (ImGui::BeginTable("tiers", 4, ImGuiTableFlags_SizingFixedFit)) {
-        ImGui::TableSetupColumn("tier");
-        ImGui::TableSetupColumn("instances");
-        ImGui::TableSetupColumn("cells");
-        ImGui::TableSetupColumn("GPU ms");
-        ImGui::TableHeadersRow();
-        for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(kinds[k]);
-            ImGui::TableNextColumn();
-            ImGui::Text("%llu", static_cast<unsigned long long>(info.stats.instances[k]));
-            ImGui::TableNextColumn();
-            ImGui::Text("%llu", static_cast<unsigned long long>(info.stats.cells[k]));
-            ImGui::TableNextColumn();
-            if (info.gpu_available && info.stats.instances[k] != 0) { // an undrawn tier has no time of its own
-                ImGui::Text("%.3f", info.gpu_ms[k]);
-            } else {
-                ImGui::TextUnformatted("-");
-            }
-        }
-        ImGui::EndTable();
+    for (const std::string& line : tier_table_lines(info.stats, info.gpu_ms, info.gpu_available)) {
+        ImGui::TextUnformatted(line.c_str()); // aligned text in ImGui's monospaced font
     }
     ImGui::Text("blades %llu  triangles %llu", static_cast<unsigned long long>(info.stats.blades_drawn),
                 static_cast<unsigned long long>(info.stats.triangles));

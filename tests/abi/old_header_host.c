@@ -6,6 +6,9 @@
  * canary. Uses the 0.3 names of functions renamed since. Prints what failed; exit status 0
  * when all is well.
  */
+#ifdef GRASS_ABI_TEST_EGL
+#    define _GNU_SOURCE 1 /* keep_drivers_resident.h: dl_iterate_phdr, RTLD_NODELETE */
+#endif
 #include "grass_gl_0_3.h"
 #include "grass_vk_0_3.h"
 
@@ -14,6 +17,7 @@
 #endif
 
 #ifdef GRASS_ABI_TEST_EGL
+#    include "keep_drivers_resident.h"
 #    include <EGL/egl.h>
 #    include <EGL/eglext.h>
 #endif
@@ -239,6 +243,7 @@ static int make_gl_current(EGLDisplay* out_display, EGLContext* out_context) {
         eglTerminate(display);
         return 0;
     }
+    keep_drivers_resident();
     *out_display = display;
     *out_context = context;
     return 1;

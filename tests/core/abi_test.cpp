@@ -1,5 +1,8 @@
 // The ABI promise (grass.h, "ABI and versions"): accepted header versions, getters that write
 // only the caller's struct size, the fields grown in 0.4, the id helpers and the 0.3 names.
+// The 0.3 names: exported for binaries built against grass.h 0.3, declared (deprecated) to
+// sources that define GRASS_ENABLE_DEPRECATED; this test calls them on purpose.
+#define GRASS_ENABLE_DEPRECATED 1
 #include "context/abi_sizes.hpp"
 #include "core_fixture.hpp"
 #include "view_helpers.hpp"
@@ -9,14 +12,7 @@
 
 #include <cstring>
 
-extern "C" {
-// The 0.3 names: exported for binaries built against grass.h 0.3, declared in no header.
-grass_backend grass_context_backend(const grass_context* context);
-const char* grass_last_error(const grass_context* context);
-grass_gl_desc grass_gl_default_desc(void);
-grass_vk_desc grass_vk_default_desc(void);
-grass_vk_record_desc grass_vk_default_record_desc(void);
-}
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 
 namespace {
 

@@ -41,7 +41,8 @@
  *     GRASS_MAX_LOD_TESTS, GRASS_DEFAULT_TIER_COUNT, GRASS_DEFAULT_LOD_TEST_COUNT) do not
  *     change.
  *   - Functions are only added; a renamed function keeps its old symbol for programs
- *     built against the older header, which no longer declares it.
+ *     built against the older header, and this header declares its old name only to
+ *     sources that define GRASS_ENABLE_DEPRECATED (the "0.3 names" block at its end).
  *   - The numeric values of enums, struct type tags and message ids never change.
  *
  * Thread safety
@@ -1004,6 +1005,45 @@ GRASS_API grass_blade_culling_desc grass_default_blade_culling_desc(void);
  * grass_begin_frame on; NULL turns it off. */
 GRASS_API grass_result grass_set_blade_culling(grass_context* context, grass_field_id field,
                                                const grass_blade_culling_desc* culling);
+
+/* ---- 0.3 names (begin) ------------------------------------------------------------------
+ * Functions renamed in 0.4 (docs/migrating.md lists every source change since 0.3). The
+ * library still exports their 0.3 symbols for programs built against grass.h 0.3. Source
+ * code gets them by defining GRASS_ENABLE_DEPRECATED before including grass: each use then
+ * compiles with a deprecation warning that names the new name. Without the macro a use is
+ * a compile error that says so (GCC 12+, Clang), never an implicit declaration (whose int
+ * result would truncate grass_last_error's pointer). */
+#if defined(_MSC_VER)
+#    define GRASS_DEPRECATED(msg) __declspec(deprecated(msg))
+#elif defined(__GNUC__) || defined(__clang__)
+#    define GRASS_DEPRECATED(msg) __attribute__((deprecated(msg)))
+#elif defined(__cplusplus) && __cplusplus >= 201402L
+#    define GRASS_DEPRECATED(msg) [[deprecated(msg)]]
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 202311L
+#    define GRASS_DEPRECATED(msg) [[deprecated(msg)]]
+#else
+#    define GRASS_DEPRECATED(msg)
+#endif
+
+#if defined(GRASS_ENABLE_DEPRECATED)
+#    define GRASS_RENAMED_IN_0_4(old_name, new_name) \
+        GRASS_DEPRECATED(#old_name " was renamed " #new_name " in grass 0.4 (docs/migrating.md)")
+#elif defined(__has_attribute)
+#    if __has_attribute(unavailable)
+#        define GRASS_RENAMED_IN_0_4(old_name, new_name)                                                      \
+            __attribute__((unavailable(#old_name " was renamed " #new_name                                    \
+                                                 " in grass 0.4; define GRASS_ENABLE_DEPRECATED to keep the " \
+                                                 "0.3 name (docs/migrating.md)")))
+#    endif
+#endif
+
+#if defined(GRASS_RENAMED_IN_0_4)
+GRASS_RENAMED_IN_0_4(grass_context_backend, grass_get_context_backend)
+GRASS_API grass_backend grass_context_backend(const grass_context* context);
+GRASS_RENAMED_IN_0_4(grass_last_error, grass_get_last_error)
+GRASS_API const char* grass_last_error(const grass_context* context);
+#endif
+/* ---- 0.3 names (end) -------------------------------------------------------------------- */
 
 #ifdef __cplusplus
 } /* extern "C" */

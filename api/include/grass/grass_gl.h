@@ -77,6 +77,38 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *   - GL_DITHER (on by default), the stencil and depth buffers' other state. */
 GRASS_API grass_result grass_gl_render(grass_context* context);
 
+/* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */
+#if defined(GRASS_RENAMED_IN_0_4)
+GRASS_RENAMED_IN_0_4(grass_gl_default_desc, grass_default_gl_desc)
+GRASS_API grass_gl_desc grass_gl_default_desc(void);
+#endif
+#if defined(GRASS_ENABLE_DEPRECATED)
+/* The 0.3 loader type: it returned void* (0.4's grass_gl_get_proc_address_fn returns a
+ * grass_gl_proc, which eglGetProcAddress, glXGetProcAddress and glfwGetProcAddress return
+ * as is). A 0.3 loader is given to a desc with grass_gl_set_loader_0_3, with no cast. */
+typedef void* (*grass_gl_get_proc_address_0_3_fn)(void* user_data, const char* name);
+#    if defined(_MSC_VER) && !defined(__cplusplus)
+#        define GRASS_GL_INLINE_0_3 static __inline
+#    else
+#        define GRASS_GL_INLINE_0_3 static inline
+#    endif
+/* Sets desc->get_proc_address to a 0.3 loader. grass calls it as a grass_gl_proc loader:
+ * both return one pointer in the same register on every platform grass supports, as for
+ * programs built against grass.h 0.3. */
+GRASS_DEPRECATED("a loader returning void* is grass 0.3's type: return grass_gl_proc and assign "
+                 "grass_gl_desc.get_proc_address (docs/migrating.md)")
+GRASS_GL_INLINE_0_3 void grass_gl_set_loader_0_3(grass_gl_desc* desc, grass_gl_get_proc_address_0_3_fn loader) {
+    /* Through void (*)(void), the type that converts to and from every function pointer
+     * without -Wcast-function-type's warning. */
+#    if defined(__cplusplus)
+    desc->get_proc_address = reinterpret_cast<grass_gl_get_proc_address_fn>(reinterpret_cast<void (*)(void)>(loader));
+#    else
+    desc->get_proc_address = (grass_gl_get_proc_address_fn)(void (*)(void))loader;
+#    endif
+}
+#endif
+/* ---- 0.3 names (end) -------------------------------------------------------------------- */
+
 #ifdef __cplusplus
 }
 #endif

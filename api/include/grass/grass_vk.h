@@ -102,6 +102,15 @@ GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);
  * from the view; the host must rebind its own state after. */
 GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc* record);
 
+/* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */
+#if defined(GRASS_RENAMED_IN_0_4)
+GRASS_RENAMED_IN_0_4(grass_vk_default_desc, grass_default_vk_desc)
+GRASS_API grass_vk_desc grass_vk_default_desc(void);
+GRASS_RENAMED_IN_0_4(grass_vk_default_record_desc, grass_default_vk_record_desc)
+GRASS_API grass_vk_record_desc grass_vk_default_record_desc(void);
+#endif
+/* ---- 0.3 names (end) -------------------------------------------------------------------- */
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,130 @@
+/*
+ * A host's source written against grass.h 0.3, compiled against the CURRENT headers with
+ * GRASS_ENABLE_DEPRECATED (docs/migrating.md): every 0.3 name it uses compiles with a
+ * deprecation warning and binds to the symbol the library still exports. The one line a
+ * 0.3 source changes is the GL loader's: its loader returns void*, as 0.3's type did, and
+ * goes to the desc through grass_gl_set_loader_0_3 instead of an assignment (no cast).
+ * ctest abi_source_0_3_host runs it; abi_source_0_3_compiles checks that it warns with the
+ * macro and is refused without it (tests/abi/source_0_3_compiles.sh).
+ */
+#ifdef GRASS_SOURCE_TEST_EGL
+#    define _GNU_SOURCE 1 /* keep_drivers_resident.h: dl_iterate_phdr, RTLD_NODELETE */
+#endif
+#include <grass/grass_gl.h>
+#include <grass/grass_vk.h>
+
+#ifdef GRASS_SOURCE_TEST_EGL
+#    include "keep_drivers_resident.h"
+#    include <EGL/egl.h>
+#    include <EGL/eglext.h>
+#endif
+
+#include <stdio.h>
+#include <string.h>
+
+static int failures = 0;
+
+#define CHECK(condition)                                                                  \
+    do {                                                                                  \
+        if (!(condition)) {                                                               \
+            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
+            failures += 1;                                                                \
+        }                                                                                 \
+    } while (0)
+
+/* 0.3: the last refusal's sentence, through grass_last_error (0.4: grass_get_last_error).
+ * Used as the only grass string call, as in the report of a host whose implicit
+ * declaration truncated the pointer to an int and crashed. */
+static void refuse_and_report(grass_context* ctx) {
+    grass_patch_desc pd = grass_default_patch_desc();
+    grass_patch_id patch;
+    const char* message;
+    memset(&patch, 0, sizeof(patch));
+    pd.blade_count = 0; /* refused: 1..65536 */
+    CHECK(grass_create_patch(ctx, &pd, &patch) == GRASS_ERROR_INVALID_ARGUMENT);
+    message = grass_last_error(ctx);
+    CHECK(message != NULL && strstr(message, "blade_count") != NULL);
+    if (message) printf("source_0_3_host: refused as expected: %s\n", message);
+}
+
+#ifdef GRASS_SOURCE_TEST_EGL
+/* 0.3's loader type returned void*. */
+static void* load_gl(void* user_data, const char* name) {
+    void (*proc)(void) = eglGetProcAddress(name);
+    void* address;
+    (void)user_data;
+    memcpy(&address, &proc, sizeof(address));
+    return address;
+}
+
+static void run_gl(void) {
+    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    const EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    void (*proc)(void) = eglGetProcAddress("eglGetPlatformDisplayEXT");
+    PFNEGLGETPLATFORMDISPLAYEXTPROC get_display;
+    EGLDisplay display;
+    EGLContext egl_context;
+    grass_context_desc cd = grass_default_context_desc();
+    grass_gl_desc gl = grass_gl_default_desc();
+    grass_context* ctx = NULL;
+    if (!client || !strstr(client, "EGL_MESA_platform_surfaceless") || !proc) {
+        printf("source_0_3_host: no surfaceless EGL; the GL part is skipped\n");
+        return;
+    }
+    memcpy(&get_display, &proc, sizeof(get_display));
+    display = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, NULL, NULL) || !eglBindAPI(EGL_OPENGL_API)) {
+        printf("source_0_3_host: no EGL display; the GL part is skipped\n");
+        return;
+    }
+    egl_context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+    if (egl_context == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, egl_context)) {
+        printf("source_0_3_host: no GL 4.5 context; the GL part is skipped\n");
+        eglTerminate(display);
+        return;
+    }
+    keep_drivers_resident();
+    CHECK(gl.type == GRASS_STRUCT_TYPE_GL_DESC);
+    grass_gl_set_loader_0_3(&gl, load_gl); /* 0.3: gl.get_proc_address = load_gl; */
+    CHECK(grass_gl_create_context(GRASS_HEADER_VERSION, &cd, &gl, &ctx) == GRASS_SUCCESS);
+    if (ctx) {
+        CHECK(grass_context_backend(ctx) == GRASS_BACKEND_GL);
+        refuse_and_report(ctx);
+        grass_destroy_context(ctx);
+        printf("source_0_3_host: a GL context made through a 0.3 loader\n");
+    } else {
+        fprintf(stderr, "source_0_3_host: grass_gl_create_context failed\n");
+    }
+    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(display, egl_context);
+    eglTerminate(display);
+}
+#endif
+
+int main(void) {
+    grass_context_desc cd = grass_default_context_desc();
+    grass_context* ctx = NULL;
+    grass_vk_desc vk = grass_vk_default_desc();
+    grass_vk_record_desc record = grass_vk_default_record_desc();
+    grass_gl_desc gl = grass_gl_default_desc();
+
+    CHECK(gl.type == GRASS_STRUCT_TYPE_GL_DESC && gl.get_proc_address == NULL);
+    CHECK(vk.type == GRASS_STRUCT_TYPE_VK_DESC && vk.frames_in_flight == 2);
+    CHECK(record.type == GRASS_STRUCT_TYPE_VK_RECORD_DESC && record.command_buffer == NULL);
+    CHECK(grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx) == GRASS_SUCCESS);
+    if (!ctx) return 1;
+    CHECK(grass_context_backend(ctx) == GRASS_BACKEND_NONE);
+    refuse_and_report(ctx);
+    grass_destroy_context(ctx);
+#ifdef GRASS_SOURCE_TEST_EGL
+    run_gl();
+#endif
+    if (failures) {
+        fprintf(stderr, "source_0_3_host: %d check(s) failed\n", failures);
+        return 1;
+    }
+    printf("source_0_3_host: all checks passed\n");
+    return 0;
+}
