@@ -1,5 +1,6 @@
 #include "cli.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace grass_sample {
@@ -68,8 +69,9 @@ CLI::Option* add_point_option(CLI::App& app, const std::string& name, double out
         [](std::string& text) {
             double p[3];
             char tail = 0;
-            if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &p[0], &p[1], &p[2], &tail) != 3) {
-                return "\"" + text + "\" is not X,Y,Z";
+            if (std::sscanf(text.c_str(), "%lf,%lf,%lf%c", &p[0], &p[1], &p[2], &tail) != 3 || !std::isfinite(p[0]) ||
+                !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+                return "\"" + text + "\" is not X,Y,Z (three finite numbers)";
             }
             return std::string();
         },
@@ -96,6 +98,19 @@ CLI::Validator open_range(double lo, double hi) {
             return std::string();
         },
         "(" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + ")");
+}
+
+CLI::Validator closed_range(double lo, double hi) {
+    return CLI::Validator(
+        [lo, hi](std::string& text) {
+            double v = 0.0;
+            if (!CLI::detail::lexical_cast(text, v) || !(v >= lo && v <= hi)) {
+                return "\"" + text + "\" is not between " + CLI::detail::to_string(lo) + " and " +
+                       CLI::detail::to_string(hi);
+            }
+            return std::string();
+        },
+        "[" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + "]");
 }
 
 CLI::Validator at_least(double lo) {

@@ -28,7 +28,7 @@ CLI::Option* add_backend_option(CLI::App& app, grass_backend* out, const std::st
 CLI::Option* add_size_option(CLI::App& app, uint32_t* width, uint32_t* height, uint32_t min, uint32_t max,
                              const std::string& help);
 
-// `name` X,Y,Z into out; *given set when the option is on the command line.
+// `name` X,Y,Z (finite numbers) into out; *given set when the option is on the command line.
 CLI::Option* add_point_option(CLI::App& app, const std::string& name, double out[3], bool* given,
                               const std::string& help);
 
@@ -42,6 +42,9 @@ grass_blade_culling_desc blade_culling_desc(const std::vector<std::string>& test
 
 // A value strictly between lo and hi (CLI::Range includes its ends).
 CLI::Validator open_range(double lo, double hi);
+// A value in lo..hi, ends included: CLI::Range, but NaN refused (CLI::Range lets it through:
+// "--density nan" was taken and then ignored).
+CLI::Validator closed_range(double lo, double hi);
 // A number no smaller than lo.
 CLI::Validator at_least(double lo);
 

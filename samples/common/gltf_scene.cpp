@@ -1,7 +1,10 @@
 #include "gltf_scene.hpp"
 
+#include "file_bytes.hpp"
 #include "gltf_accessor.hpp"
+#include "json_depth.hpp"
 #include "png_chunks.hpp"
+#include "png_palette.hpp"
 #include "terrain_raster.hpp"
 
 #include <png.h>
@@ -13,7 +16,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <stdexcept>
 
@@ -25,7 +27,6 @@ using Mat4 = std::array<double, 16>; // column-major
 using tinygltf::Model;
 using tinygltf::Value;
 
-constexpr uint64_t kMaxFileBytes = uint64_t(256) << 20;      // a .gltf, .glb or a file it names
 constexpr uint64_t kMaxTriangles = uint64_t(1) << 22;        // of all meshes together
 constexpr uint32_t kMaxCellsPerSide = 1u << 20;              // of the terrain's field
 constexpr uint32_t kDefaultMaxMapTexels = 1024;              // per side, when texel_size is not given
@@ -35,22 +36,15 @@ constexpr double kMaxTexelTests = double(uint64_t(1) << 28); // texels the raste
 
 [[noreturn]] void refuse(const std::string& why) { throw std::runtime_error(why); }
 
-std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+std::string quoted(const std::string& s) { return "\"" + cut(s) + "\""; }
 
 // ---- Files: size-capped, and only beside the scene -------------------------------------
 
+// The whole file (read_file_bytes: a regular file of at most kMaxFileBytes).
 std::vector<unsigned char> read_file(const std::string& path) {
-    struct stat st {};
-    if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) refuse("cannot open " + path);
-    if (uint64_t(st.st_size) > kMaxFileBytes) {
-        refuse(path + " has " + std::to_string(st.st_size) + " bytes; at most " + std::to_string(kMaxFileBytes) +
-               " are read");
-    }
-    std::ifstream in(path, std::ios::binary);
-    std::vector<unsigned char> bytes(size_t(st.st_size));
-    if (!in || !in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()))) {
-        refuse("cannot read " + path);
-    }
+    std::vector<unsigned char> bytes;
+    std::string error;
+    if (!read_file_bytes(path, kMaxFileBytes, &bytes, &error)) refuse(error);
     return bytes;
 }
 
@@ -83,7 +77,7 @@ std::string expand_path(const std::string& path, void*) { return path; }
 
 bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
     if (!inside_folder(path, *static_cast<SceneFolder*>(user))) {
-        if (err) *err += "the file " + quoted(path) + " lies outside the scene's folder\n";
+        if (err) *err += "the file " + quoted(cut_path(path)) + " lies outside the scene's folder\n";
         return false;
     }
     try {
@@ -138,6 +132,14 @@ Model load_model(const std::string& path, std::vector<std::string>* notes) {
     std::vector<unsigned char> bytes = read_file(path);
     const bool binary = bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
     if (binary) check_glb(bytes);
+    // The JSON (the whole .gltf, a GLB's JSON chunk) nested at most kMaxJsonDepth deep before
+    // tinygltf, whose conversion of a parsed value recurses a level at a time, reads it.
+    const size_t json_at = binary ? 20 : 0;
+    const size_t json_size =
+        binary ? size_t(bytes[12] | bytes[13] << 8 | bytes[14] << 16 | uint32_t(bytes[15]) << 24) : bytes.size();
+    const std::string deep =
+        json_depth_problem(reinterpret_cast<const char*>(bytes.data()) + json_at, json_size, kMaxJsonDepth, false);
+    if (!deep.empty()) refuse("has JSON that " + deep);
     SceneFolder folder;
     const size_t slash = path.find_last_of('/');
     if (slash != std::string::npos) folder.dir = path.substr(0, slash + 1);
@@ -156,6 +158,7 @@ Model load_model(const std::string& path, std::vector<std::string>* notes) {
         refuse(std::string("cannot be read by tinygltf: ") + e.what());
     }
     while (!err.empty() && err.back() == '\n') err.pop_back();
+    err = cut(err, 400); // tinygltf quotes what it stopped at
     if (!ok) refuse("is not a glTF 2.0 file tinygltf reads: " + (err.empty() ? std::string("no reason given") : err));
     if (!warn.empty()) notes->push_back("tinygltf: " + warn);
     for (const std::string& e : model.extensionsRequired) refuse("requires the extension " + e + ", not supported");
@@ -491,6 +494,9 @@ void add_collider(Walk* w, int n, const Mat4& m, const GrassExtras& ex) {
     const double a[3] = {0.0, -half, 0.0}, b[3] = {0.0, half, 0.0};
     point(m, a, c.a);
     point(m, b, c.b);
+    if (w->info.colliders.size() == GRASS_MAX_COLLIDERS) {
+        refuse("has more than " + std::to_string(GRASS_MAX_COLLIDERS) + " colliders (GRASS_MAX_COLLIDERS) at " + label);
+    }
     w->info.colliders.push_back(c);
 }
 
@@ -630,6 +636,11 @@ DensityTexture decode_density_texture(const Model& model, int texture) {
         png_image_free(&png);
         refuse("image " + std::to_string(source) + " is " + std::to_string(png.width) + "x" +
                std::to_string(png.height) + "; at most " + std::to_string(kMaxTextureTexels) + " a side is read");
+    }
+    const std::string palette = png_palette_problem(bytes, size);
+    if (!palette.empty()) {
+        png_image_free(&png);
+        refuse("image " + std::to_string(source) + " (the density texture) is refused: " + palette);
     }
     DensityTexture t;
     png.format = PNG_FORMAT_RGBA;

@@ -2,8 +2,6 @@
 
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 namespace grass_sample {
 
@@ -27,16 +25,6 @@ std::string png_chunk_problem(const unsigned char* bytes, size_t size) {
         offset += 12 + size_t(length);
     }
     return "";
-}
-
-bool read_file_bytes(const std::string& path, std::vector<unsigned char>* out, std::string* error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        *error = "cannot read " + path;
-        return false;
-    }
-    out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return true;
 }
 
 } // namespace grass_sample

@@ -6,7 +6,6 @@
 
 #include <cstddef>
 #include <string>
-#include <vector>
 
 namespace grass_sample {
 
@@ -14,8 +13,5 @@ namespace grass_sample {
 // which chunk claims how much, and how much is left. Bytes that are not a PNG pass: libpng
 // says what is wrong with them.
 std::string png_chunk_problem(const unsigned char* bytes, size_t size);
-
-// The whole file, or false with `error` set ("cannot read PATH").
-bool read_file_bytes(const std::string& path, std::vector<unsigned char>* out, std::string* error);
 
 } // namespace grass_sample

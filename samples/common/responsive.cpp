@@ -138,6 +138,13 @@ std::vector<grass_host::HostMesh> moving_meshes(const Responsive& r, double t) {
     return out;
 }
 
+size_t moving_mesh_count(const Responsive& r) {
+    size_t count = 0;
+    for (int beads : beads_of(r, 0.0)) count += size_t(beads);
+    for (const SceneWindSource& s : r.sources) count += s.source.kind == GRASS_WIND_SOURCE_POINT ? 1 : 0;
+    return count;
+}
+
 std::vector<std::array<double, 3>> moving_mesh_origins(const Responsive& r, double t) {
     // A capsule's bead count is fixed (its length at time 0), so the meshes stay the same.
     const std::vector<int> beads = beads_of(r, 0.0);

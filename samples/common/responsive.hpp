@@ -63,6 +63,10 @@ std::vector<grass_collider> colliders_at(const Responsive& r, double t, double s
 // bead's does not), a grey body of 0.8 m radius at a POINT source (a helicopter); grass-render
 // moves them every frame (grass_host::Host::move_mesh) to moving_mesh_origins.
 std::vector<grass_host::HostMesh> moving_meshes(const Responsive& r, double t);
+// How many meshes moving_meshes makes, counted without making them (a capsule is up to 64
+// beads); grass-render refuses more than kMaxMovingMeshes before it builds any.
+size_t moving_mesh_count(const Responsive& r);
+constexpr size_t kMaxMovingMeshes = 4096;
 // The origins of moving_meshes' meshes at time t, in their order.
 std::vector<std::array<double, 3>> moving_mesh_origins(const Responsive& r, double t);
 

@@ -23,6 +23,9 @@ const char* map_role_name(MapRole role);
 // The role's map in a map stack.
 grass_map_id* map_slot(grass_map_stack* stack, MapRole role);
 
+// The image's side in pixels: "image.width" and "image.height", grass-render's --size.
+constexpr uint32_t kMaxImageSide = 8192;
+
 struct Scene {
     grass_patch_desc patch = grass_default_patch_desc();
     grass_field_desc field = grass_default_field_desc();
@@ -53,7 +56,7 @@ struct Scene {
     float sun_direction[3] = {0.35f, 0.8f, 0.25f};
     float sun_color[3] = {1.0f, 0.95f, 0.85f};
     float ambient_color[3] = {0.30f, 0.36f, 0.45f};
-    uint32_t width = 640, height = 360, samples = 4;
+    uint32_t width = 640, height = 360, samples = 4; // samples: 1 or 4
     // The host's ground under the grass (an engine's terrain stand-in).
     bool ground = true;
     float ground_color[3] = {0.040f, 0.042f, 0.016f};
@@ -71,7 +74,9 @@ Scene demo_scene();
 
 // Reads a scene file over the demo's defaults, but for its lod setup and density path: a
 // scene file starts from the library's default tiers and uniform density. False and *error
-// on a bad file or key.
+// on a bad file or key (named by its path, "field.tiers[1].kind"); *scene is then unchanged.
+// The file is read by read_file_bytes (a regular file of at most kMaxSceneFileBytes) and
+// refused when it nests deeper than kMaxJsonDepth, before it is parsed.
 bool load_scene(const std::string& path, Scene* scene, std::string* error);
 
 struct GltfInfo; // gltf_scene.hpp

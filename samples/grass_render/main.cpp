@@ -12,12 +12,17 @@
 #include "tool.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
 
 namespace {
+
+// grass_view_desc.time's range (docs/api.md): every frame's time is checked against it before
+// the first is drawn.
+constexpr double kMaxViewTime = 1e9;
 
 struct Options {
     grass_backend backend = GRASS_BACKEND_GL;
@@ -41,14 +46,15 @@ void add_options(CLI::App& app, Options* o) {
     app.add_option("--scene", o->scene_path,
                    "scene file (FILE.json, FILE.gltf or FILE.glb; default: the built-in demo)");
     app.add_option("--output", o->output, "image to write (FILE.png)")->capture_default_str();
-    grass_sample::add_size_option(app, &o->width, &o->height, 1, 8192,
+    grass_sample::add_size_option(app, &o->width, &o->height, 1, grass_sample::kMaxImageSide,
                                   "image size in pixels (default from the scene, 640x360)")
         ->default_str("");
     app.add_option("--samples", o->samples, "1 or 4 (default from the scene, 4)")->check(CLI::IsMember({1, 4}));
     grass_sample::add_point_option(app, "--camera", o->camera, &o->have_camera, "camera position in metres");
     grass_sample::add_point_option(app, "--target", o->target, &o->have_target, "point the camera looks at");
-    app.add_option("--fov", o->fov, "vertical field of view in degrees")->check(grass_sample::open_range(1, 179));
-    app.add_option("--density", o->density, "uniform density multiplier 0..1")->check(CLI::Range(0.0, 1.0));
+    app.add_option("--fov", o->fov, "vertical field of view in degrees")->check(grass_sample::open_range(0, 180));
+    app.add_option("--density", o->density, "uniform density multiplier 0..1")
+        ->check(grass_sample::closed_range(0.0, 1.0));
     app.add_flag("--no-mirror", o->no_mirror, "turn mirrored tiling off");
     app.add_flag("--no-ground", o->no_ground, "the host draws no ground under the grass");
     app.add_flag("--debug-tiers", o->debug_tiers, "tint each tier's grass (red geometry, yellow volume, blue image)");
@@ -57,7 +63,7 @@ void add_options(CLI::App& app, Options* o) {
         ->check(grass_sample::open_range(1, 1e8));
     app.add_option("--cache", o->cache_dir, "cache baked slices in DIR (an existing directory)");
     app.add_option("--time", o->time, "time of the first frame in seconds (grass_view_desc.time: wind, paths)")
-        ->check(CLI::Range(-1e9, 1e9))
+        ->check(grass_sample::closed_range(-kMaxViewTime, kMaxViewTime))
         ->capture_default_str();
     app.add_option("--frames", o->frames, "frames to render, 1/fps apart (the last one is --output)")
         ->check(CLI::Range(1, 100000))
@@ -122,6 +128,42 @@ void print_gltf(const grass_sample::GltfInfo& g, const grass_sample::Scene& scen
 
 int fail(const std::string& message) { return grass_sample::fail("grass-render", message); }
 
+// What the options ask that no frame could honour, checked before anything is drawn: the
+// last frame's time (--time 1e9 --frames 3 failed only after the first frame).
+std::string option_problem(const Options& o) {
+    const double last = o.time + (o.frames - 1) / o.fps;
+    if (!(std::fabs(last) <= kMaxViewTime)) {
+        char text[200];
+        std::snprintf(text, sizeof(text),
+                      "--time %.17g with --frames %u at --fps %.17g puts the last frame at %.17g s; a frame's time "
+                      "lies in [-1e9, 1e9]",
+                      o.time, o.frames, o.fps, last);
+        return text;
+    }
+    return "";
+}
+
+// What the scene, with the options over it, asks that grass-render cannot honour: a camera
+// that sees nothing, more colliders than grass takes, more moving meshes than it draws.
+std::string scene_problem(const Options& o, const grass_sample::Scene& scene) {
+    if (!(scene.far_m > scene.near_m)) {
+        return (o.far_m > 0.0f ? "--far " + std::to_string(o.far_m)
+                               : "the scene's far plane " + std::to_string(scene.far_m)) +
+               " m is not beyond the near plane (" + std::to_string(scene.near_m) + " m)";
+    }
+    const size_t colliders = scene.responsive.colliders.size();
+    if (colliders > GRASS_MAX_COLLIDERS) {
+        return "the scene and --collider give " + std::to_string(colliders) + " colliders; grass takes at most " +
+               std::to_string(GRASS_MAX_COLLIDERS);
+    }
+    const size_t meshes = grass_sample::moving_mesh_count(scene.responsive);
+    if (meshes > grass_sample::kMaxMovingMeshes) {
+        return "the colliders and wind sources need " + std::to_string(meshes) +
+               " meshes to draw; grass-render draws at most " + std::to_string(grass_sample::kMaxMovingMeshes);
+    }
+    return "";
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -132,6 +174,11 @@ int main(int argc, char** argv) {
     add_options(app, &o);
     const int parsed = grass_sample::parse(app, argc, argv);
     if (parsed >= 0) return parsed;
+    const std::string bad_options = option_problem(o);
+    if (!bad_options.empty()) {
+        fail(bad_options);
+        return 2;
+    }
     const grass_backend backend = o.backend;
     const std::string& output = o.output;
     grass_sample::Scene scene = grass_sample::demo_scene();
@@ -153,6 +200,8 @@ int main(int argc, char** argv) {
     if (o.width) scene.width = o.width, scene.height = o.height;
     if (o.samples) scene.samples = o.samples;
     apply_responsive_options(o, &scene.responsive);
+    const std::string bad_scene = scene_problem(o, scene);
+    if (!bad_scene.empty()) return fail(bad_scene);
     // The host draws the colliders (balls, legs) and point wind sources and moves them every frame.
     const size_t first_mesh = scene.meshes.size();
     for (grass_host::HostMesh& m : grass_sample::moving_meshes(scene.responsive, o.time))

@@ -6,6 +6,7 @@
 
 #include "accuracy.hpp"
 #include "cli.hpp"
+#include "file_bytes.hpp"
 #include "headless_host.hpp"
 #include "image_io.hpp"
 #include "image_metrics.hpp"
@@ -20,7 +21,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -196,14 +196,14 @@ struct PreparedScene {
     std::string identity;     // what defines its images but the camera (reference_key)
 };
 
-// FNV-1a 64 of a file's bytes, as hex; "none" for an empty path, "missing" for an unreadable one.
+// FNV-1a 64 of a file's bytes, as hex; "none" for an empty path, "missing" for one that
+// read_file_bytes refuses (missing, not a regular file, over kMaxFileBytes).
 std::string file_hash(const std::string& path) {
     if (path.empty()) return "none";
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return "missing";
-    std::ostringstream bytes;
-    bytes << in.rdbuf();
-    return reference_hash(bytes.str());
+    std::vector<unsigned char> bytes;
+    std::string error;
+    if (!grass_sample::read_file_bytes(path, grass_sample::kMaxFileBytes, &bytes, &error)) return "missing";
+    return reference_hash(std::string(bytes.begin(), bytes.end()));
 }
 
 bool prepare_scene(const Options& opt, const BenchScene& bs, PreparedScene* ps, std::string* error) {

@@ -666,11 +666,11 @@ Subcommand add_popping(CLI::App& measure) {
         "--no-agreement", [o]() { o->agreement = false; }, "leave out the per-tier mean-colour agreement");
     app->add_option("--wind", o->wind, "m/s of wind (default direction, gusts and turbulence); 0: still grass")
         ->capture_default_str()
-        ->check(CLI::Range(0.0f, 1000.0f));
+        ->check(grass_sample::closed_range(0.0, 1000.0));
     grass_sample::add_blade_culling_option(*app, &o->blade_culling, "of the lod setup's geometry tier");
     app->add_option("--wind-time", o->wind_time, "seconds: grass_view_desc.time of every frame")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(grass_sample::closed_range(0.0, 1e6));
     return {app, [o]() { return run(*o); }};
 }
 

@@ -5,6 +5,7 @@
 
 #include <png.h>
 
+#include <cstdio>
 #include <vector>
 
 namespace {
@@ -34,6 +35,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         grass_fuzz::use_scene(scene);
     } else if (error.empty()) {
         std::abort(); // a refused scene says why
+    } else if (error.size() > path.size() + 1000) {
+        // in a few words: values are cut, never echoed whole (a 64 MB string was, issue 37)
+        std::fprintf(stderr, "a refused scene gave a message of %zu bytes\n", error.size());
+        std::abort();
     }
     return 0;
 }

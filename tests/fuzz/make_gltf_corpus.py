@@ -3,7 +3,10 @@
 scripts/make-gltf-scene.py with an 8 x 8 terrain (hill-8x8.glb: rocks, shed, camera, a sphere
 and a capsule collider, small enough for the fuzzer's 64 KiB inputs), and the quad of
 tests/gltf/gltf_scene_test.cpp as a GLB, as .gltf with its buffer beside it (buffer.bin,
-which fuzz_gltf writes) or in a data URI, and with a PNG density texture (density.png).
+which fuzz_gltf writes) or in a data URI, and with a PNG density texture (density.png); and
+the quad with a node whose "extras" nest arrays 100 deep in all (read), 101 (refused by the
+loader's depth limit, as .gltf and .glb) and 20,000 (the 41 KB file that crashed tinygltf's
+recursive parser, issue 37).
 
   python3 tests/fuzz/make_gltf_corpus.py
 """
@@ -51,11 +54,23 @@ def quad(buffer, extras=None, more_nodes=()):
 
 
 def glb(doc, binary):
-    text = json.dumps(doc, sort_keys=True, separators=(",", ":")).encode()
+    return glb_text(json.dumps(doc, sort_keys=True, separators=(",", ":")).encode(), binary)
+
+
+def glb_text(text, binary):
     text += b" " * (-len(text) % 4)
     total = 12 + 8 + len(text) + 8 + len(binary)
     return (struct.pack("<4sII", b"glTF", 2, total) + struct.pack("<I4s", len(text), b"JSON") + text +
             struct.pack("<I4s", len(binary), b"BIN\0") + binary)
+
+
+def deep_extras(depth):
+    """The quad with a node "deep" whose extras hold arrays nesting the JSON `depth` levels deep in
+    all (the document, "nodes", the node and its "extras" are the first four)."""
+    doc = quad({"byteLength": 124, "uri": "buffer.bin"}, more_nodes=[{"name": "deep", "extras": {"note": "DEEP"}}])
+    text = json.dumps(doc, sort_keys=True, separators=(",", ":"))
+    arrays = depth - 4
+    return text.replace('"DEEP"', "[" * arrays + "0" + "]" * arrays)
 
 
 def write(name, data):
@@ -84,6 +99,12 @@ def main():
     textured["images"] = [{"uri": "density.png", "name": "grass"}]
     textured["textures"] = [{"source": 0}]
     write("quad-texture.gltf", textured)
+    for depth in (100, 101, 20000):
+        write("quad-extras-deep-%d.gltf" % depth, deep_extras(depth).encode())
+    deep_glb = json.loads(deep_extras(100).replace("[" * 96 + "0" + "]" * 96, "0"))  # the same without the arrays
+    deep_glb["buffers"][0].pop("uri")
+    text = json.dumps(deep_glb, sort_keys=True, separators=(",", ":")).replace('"note":0', '"note":' + "[" * 97 + "0" + "]" * 97)
+    write("quad-extras-deep-101.glb", glb_text(text.encode(), QUAD_BIN))
 
 
 if __name__ == "__main__":

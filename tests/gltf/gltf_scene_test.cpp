@@ -9,11 +9,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <random>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace {
 
@@ -372,3 +374,99 @@ TEST(GltfScene, RandomlyCorruptedSampleScenesNeverCrash) {
 }
 
 } // namespace
+
+namespace {
+
+// The quad with a node whose "extras" nest arrays `depth` levels deep in the whole document
+// (the document, "nodes", the node and its "extras" are the first four).
+std::string deep_extras(size_t depth) {
+    Gltf g = Gltf::quad();
+    g.doc["nodes"].push_back(json::parse(R"({"name": "deep", "extras": {"note": "DEEP"}})"));
+    std::string text = g.doc.dump();
+    const size_t at = text.find("\"DEEP\"");
+    return text.replace(at, 6, std::string(depth - 4, '[') + "0" + std::string(depth - 4, ']'));
+}
+
+std::vector<unsigned char> bytes_of(const std::string& text) {
+    return std::vector<unsigned char>(text.begin(), text.end());
+}
+
+} // namespace
+
+// A glTF whose extras nested 20,000 deep (41 KB) crashed grass-render in tinygltf's recursive
+// conversion of the parsed JSON; 5,000 deep crashed the ASan build and fuzz_gltf. The JSON of
+// a .gltf and of a GLB's JSON chunk is measured before tinygltf sees it.
+TEST(GltfScene, DeepExtrasAreRefusedBeforeTinygltfReadsThem) {
+    Gltf g = Gltf::quad();
+    g.doc["buffers"][0]["uri"] = "deep.bin";
+    write_bytes(scratch() + "deep.bin", g.bin);
+    for (size_t depth : {size_t(101), size_t(5000), size_t(20000), size_t(200000)}) {
+        std::string text = deep_extras(depth);
+        text.replace(text.find("\"byteLength\":124}"), 17, "\"byteLength\":124,\"uri\":\"deep.bin\"}");
+        expect_refused(load_bytes("deep.gltf", bytes_of(text)),
+                       {"deep.gltf: has JSON that nests arrays and objects deeper than 100 levels"});
+        // The same JSON as a GLB's JSON chunk, the buffer in its BIN chunk.
+        Gltf b = Gltf::quad();
+        b.doc = json::parse(deep_extras(std::min<size_t>(depth, 100)));
+        std::vector<unsigned char> glb = b.glb();
+        const std::string plain = b.doc.dump(), deep = deep_extras(depth);
+        // Put the deep text in place of the plain one, keeping the GLB's lengths right.
+        std::string padded = deep;
+        while (padded.size() % 4) padded += ' ';
+        std::vector<unsigned char> out(glb.begin(), glb.begin() + 12);
+        auto word = [&](uint32_t v) {
+            for (int k = 0; k < 4; ++k) out.push_back(uint8_t(v >> (8 * k)));
+        };
+        word(uint32_t(padded.size()));
+        word(0x4E4F534A);
+        out.insert(out.end(), padded.begin(), padded.end());
+        std::string plain_padded = plain;
+        while (plain_padded.size() % 4) plain_padded += ' ';
+        out.insert(out.end(), glb.begin() + 20 + std::ptrdiff_t(plain_padded.size()), glb.end());
+        const uint32_t total = uint32_t(out.size());
+        for (int k = 0; k < 4; ++k) out[8 + size_t(k)] = uint8_t(total >> (8 * k));
+        expect_refused(load_bytes("deep.glb", out),
+                       {"deep.glb: has JSON that nests arrays and objects deeper than 100"});
+    }
+    std::string text = deep_extras(100);
+    text.replace(text.find("\"byteLength\":124}"), 17, "\"byteLength\":124,\"uri\":\"deep.bin\"}");
+    const Loaded l = load_bytes("deep100.gltf", bytes_of(text));
+    EXPECT_TRUE(l.ok) << "100 levels are read: " << l.error;
+}
+
+// Every file a glTF names is read as a regular file of bounded size: a FIFO or a directory
+// in a buffer's or an image's place is refused by name, not waited on.
+TEST(GltfScene, BuffersAndImagesThatAreNotRegularFilesAreRefused) {
+    const std::string fifo = scratch() + "fifo.bin";
+    unlink(fifo.c_str());
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    mkdir((scratch() + "folder.bin").c_str(), 0755);
+    for (const char* uri : {"fifo.bin", "folder.bin"}) {
+        Gltf g = Gltf::quad();
+        g.doc["buffers"][0]["uri"] = uri;
+        expect_refused(load_bytes("special.gltf", bytes_of(g.doc.dump())),
+                       {uri, std::string(uri) == "fifo.bin" ? "is a FIFO, not a regular file"
+                                                            : "is a directory, not a regular file"});
+    }
+    unlink(fifo.c_str());
+}
+
+// A palette PNG as the density texture whose indices run past its palette is refused, naming
+// the pixel and the index (libpng read such an index as black: zero density).
+TEST(GltfScene, ADensityTextureWithIndicesPastItsPaletteIsRefused) {
+    Gltf g = Gltf::quad();
+    g.doc["buffers"][0]["uri"] = "palette.bin";
+    write_bytes(scratch() + "palette.bin", g.bin);
+    g.doc["nodes"][0]["extras"]["grass"]["density_texture"] = 0;
+    g.doc["textures"] = json::parse(R"([{"source": 0}])");
+    g.doc["images"] = json::parse(R"([{"uri": "palette.png"}])");
+    g.doc["accessors"].push_back(
+        json::parse(R"({"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC2"})"));
+    g.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 3;
+    write_bytes(scratch() + "palette.png", read_bytes(GRASS_FUZZ_CORPUS_DIR "/png_map/palette-index-past-palette.png"));
+    expect_refused(load_bytes("palette.gltf", bytes_of(g.doc.dump())),
+                   {"image 0 (the density texture) is refused: pixel (0, 1) has palette index 5; the palette has 2"});
+    write_bytes(scratch() + "palette.png", read_bytes(GRASS_FUZZ_CORPUS_DIR "/png_map/palette-2x2.png"));
+    const Loaded l = load_bytes("palette.gltf", bytes_of(g.doc.dump()));
+    EXPECT_TRUE(l.ok) << "a palette PNG whose indices fit: " << l.error;
+}

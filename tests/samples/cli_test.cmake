@@ -30,7 +30,7 @@ expect("tier-cost --features --single" 2 "--(single excludes --features|features
 expect("tier-cost --patch-of nosuch.json" 2 "--patch-of: File does not exist: nosuch.json" ${MEASURE} tier-cost
        --patch-of nosuch.json)
 file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/cli-bad-patch.json" "{\"patch\": {\"blade_count\": -3}}")
-expect("tier-cost --patch-of with a bad patch" 1 "--patch-of: .*cli-bad-patch.json: \"blade_count\" is -3, out of range"
+expect("tier-cost --patch-of with a bad patch" 1 "--patch-of: .*cli-bad-patch.json: \"patch.blade_count\" is -3, out of range"
        ${MEASURE} tier-cost --patch-of "${CMAKE_CURRENT_BINARY_DIR}/cli-bad-patch.json")
 
 set(tools "grass-render" "bench" "tier-cost" "popping" "dynamics")
@@ -89,3 +89,40 @@ if(VIEWER)
   expect("grass-viewer --scene bad-mesh.gltf" 2 "bad-mesh.gltf: .*node 0 \"terrain\" names mesh 3; the file has 0"
          ${VIEWER} --scene "${scratch}/bad-mesh.gltf")
 endif()
+
+# Values grass-render cannot honour are refused before anything renders (issue 37): NaN in
+# any number (CLI::Range let it through: --density nan was ignored), a field of view outside
+# (0, 180), frames whose times leave grass_view_desc.time's range (--time 1e9 --frames 3 failed
+# only after the first frame), and in a scene file the same, named by the key.
+expect("grass-render --density nan" 2 "--density: \"nan\" is not between 0 and 1" ${RENDER} --density nan)
+expect("grass-render --time nan" 2 "--time: \"nan\" is not between" ${RENDER} --time nan)
+expect("grass-render --camera nan,0,0" 2 "--camera: \"nan,0,0\" is not X,Y,Z \\(three finite numbers\\)" ${RENDER}
+       --camera nan,0,0)
+expect("grass-render --target 0,inf,0" 2 "--target: \"0,inf,0\" is not X,Y,Z" ${RENDER} --target 0,inf,0)
+expect("grass-render --fov 180" 2 "--fov: \"180\" is not between 0 and 180 \\(exclusive\\)" ${RENDER} --fov 180)
+expect("grass-render --fov -55" 2 "--fov: \"-55\" is not between 0 and 180" ${RENDER} --fov -55)
+expect("grass-render --time 1e9 --frames 3" 2
+       "--time 1000000000 with --frames 3 at --fps 24 puts the last frame at 1000000000.08[0-9]* s; a frame's time lies in \\[-1e9, 1e9\\]"
+       ${RENDER} --time 1e9 --frames 3)
+expect("popping --wind nan" 2 "--wind: \"nan\" is not between 0 and 1000" ${MEASURE} popping --wind nan)
+set(scenes "${CMAKE_CURRENT_BINARY_DIR}/cli-test-scenes")
+file(MAKE_DIRECTORY "${scenes}")
+file(WRITE "${scenes}/fov.json" "{\"camera\": {\"fov\": -55}}")
+expect("grass-render --scene fov.json" 1 "fov.json: \"camera.fov\" is -55; it must lie between 0 and 180" ${RENDER}
+       --scene "${scenes}/fov.json")
+file(WRITE "${scenes}/null.json" "null")
+expect("grass-render --scene null.json" 1 "null.json: the scene must be an object, not null" ${RENDER}
+       --scene "${scenes}/null.json")
+file(WRITE "${scenes}/map-zero.json" "{\"field\": {\"density_map\": \"/dev/zero\"}}")
+expect("grass-render --scene map-zero.json" 1 "map-zero.json: /dev/zero is a character device, not a regular file"
+       ${RENDER} --scene "${scenes}/map-zero.json")
+# Counts are refused before the work they imply: colliders past GRASS_MAX_COLLIDERS with
+# --collider's, and capsules whose beads grass-render would have to build as meshes.
+string(REPEAT "{\"centre\": [0, 0, 0]}," 65535 many)
+file(WRITE "${scenes}/colliders.json" "{\"colliders\": [${many} {\"centre\": [0, 0, 0]}]}")
+expect("grass-render 65536 colliders and --collider" 1 "the scene and --collider give 65537 colliders; grass takes at most 65536"
+       ${RENDER} --scene "${scenes}/colliders.json" --collider sphere:0,0,0,1)
+string(REPEAT "{\"shape\": \"capsule\", \"radius\": 0.01, \"centre\": [0, 0, 0], \"end\": [0, 10, 0]}," 99 legs)
+file(WRITE "${scenes}/legs.json" "{\"colliders\": [${legs} {\"centre\": [0, 0, 0]}]}")
+expect("grass-render 99 long capsules" 1 "the colliders and wind sources need 6337 meshes to draw; grass-render draws at most 4096"
+       ${RENDER} --scene "${scenes}/legs.json")

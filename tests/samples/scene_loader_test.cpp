@@ -85,14 +85,14 @@ TEST(SceneLoader, APngChunkLongerThanItsFileIsRefusedBeforeLibpngAllocatesIt) {
 // number is now checked against what its field can hold and refused by name.
 TEST(SceneLoader, ANumberItsFieldCannotHoldIsRefusedByName) {
     const Case cases[] = {
-        {R"({"patch": {"blade_count": 1e308}})", "\"blade_count\" is 1e+308, out of range"},
-        {R"({"patch": {"blade_count": -1}})", "\"blade_count\" is -1, out of range"},
-        {R"({"patch": {"blade_count": 2.5}})", "\"blade_count\" is 2.5, out of range"},
-        {R"({"patch": {"blade_count": 4294967296}})", "\"blade_count\" is 4294967296, out of range"},
+        {R"({"patch": {"blade_count": 1e308}})", "\"patch.blade_count\" is 1e+308, out of range"},
+        {R"({"patch": {"blade_count": -1}})", "\"patch.blade_count\" is -1, out of range"},
+        {R"({"patch": {"blade_count": 2.5}})", "\"patch.blade_count\" is 2.5, out of range"},
+        {R"({"patch": {"blade_count": 4294967296}})", "\"patch.blade_count\" is 4294967296, out of range"},
         {R"({"field": {"cells": [1e30, 4]}})", "\"field.cells\" is 1e+30, out of range"},
-        {R"({"patch": {"ao_height": 1e300}})", "\"ao_height\" is 1e+300, out of range"},
-        {R"({"camera": {"fov": 1e300}})", "\"fov\" is 1e+300, out of range"},
-        {R"({"patch": {"blade_count": "many"}})", "\"blade_count\" must be a number, not \"many\""},
+        {R"({"patch": {"ao_height": 1e300}})", "\"patch.ao_height\" is 1e+300, out of range"},
+        {R"({"camera": {"fov": 1e300}})", "\"camera.fov\" is 1e+300, out of range"},
+        {R"({"patch": {"blade_count": "many"}})", "\"patch.blade_count\" must be a number, not \"many\""},
     };
     for (const Case& c : cases) {
         grass_sample::Scene scene;
@@ -104,7 +104,7 @@ TEST(SceneLoader, ANumberItsFieldCannotHoldIsRefusedByName) {
     grass_sample::Scene scene;
     std::string error;
     EXPECT_FALSE(grass_sample::load_scene(kCorpus + "/scene/blade-count-1e308.json", &scene, &error));
-    EXPECT_NE(error.find("\"blade_count\" is 1e+308, out of range"), std::string::npos) << error;
+    EXPECT_NE(error.find("\"patch.blade_count\" is 1e+308, out of range"), std::string::npos) << error;
 }
 
 } // namespace
