@@ -19,6 +19,10 @@ HEADERS = ["grass.h", "grass_gl.h", "grass_vk.h"]
 
 def _source():
     text = "\n".join(open(os.path.join(INCLUDE, "grass", h), encoding="utf-8").read() for h in HEADERS)
+    # The "0.3 names" blocks declare old names for sources only (GRASS_ENABLE_DEPRECATED);
+    # the binding binds the current names.
+    text, blocks = re.subn(r"/\* ---- 0\.3 names \(begin\).*?/\* ---- 0\.3 names \(end\)[^\n]*", " ", text, flags=re.S)
+    assert blocks == len(HEADERS), "each header has one 0.3 names block"
     text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
     return re.sub(r"//[^\n]*", " ", text)
 
