@@ -47,8 +47,8 @@
  * Thread safety
  *   A context is externally synchronized: calls on one context must not overlap. Separate
  *   contexts share nothing and may be used from separate threads. The library's only
- *   global state is the registry of live contexts' owner tags (see "Ids" below), which is
- *   thread-safe. Allocation and log callbacks are per context and are called on the
+ *   global state is thread-safe: the registry of live contexts' owner tags (see "Ids"
+ *   below) and counters that make names unique. Allocation and log callbacks are per context and are called on the
  *   thread that made the call that triggered them.
  *
  * Re-entrancy
