@@ -4,6 +4,7 @@
 #include "context/context.hpp"
 #include "context/names.hpp"
 #include "context/raw_enum.hpp"
+#include "context/validate.hpp"
 
 #include <grass/grass_gl.h>
 
@@ -61,6 +62,7 @@ GRASS_API grass_result grass_gl_render(grass_context* context) {
                                  "grass_gl_render: the context was made by %s, not grass_gl_create_context",
                                  grass::backend_creator(kind));
         }
+        GRASS_TRY(grass::check_gpu_current(context, "grass_gl_render"));
         if (!context->in_frame) {
             return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
                                  "grass_gl_render: no frame has begun; call grass_begin_frame first");

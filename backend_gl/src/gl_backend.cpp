@@ -147,6 +147,7 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
         tile_colliders_[l].create(gl_);
     }
     tier_vertex_array_ = create_instance_vertex_array(gl_, instances_.name());
+    label_context();
     create_timers();
     result = check_errors(kCreateFunction, "creating the programs, white texture, samplers and timer queries");
     if (result != GRASS_SUCCESS) return result;
@@ -155,7 +156,7 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
 }
 
 GlBackend::~GlBackend() {
-    if (!loaded_) return;
+    if (!loaded_ || abandoned()) return; // abandoned: the GL objects go with their GL context
     for (uint32_t slot = 0; slot < patches_.size(); ++slot) release_patch(slot);
     for (uint32_t slot = 0; slot < fields_.size(); ++slot) release_field(slot);
     for (uint32_t slot = 0; slot < maps_.size(); ++slot) release_map(slot);

@@ -45,6 +45,8 @@ public:
     grass_result upload_blade_curves(uint32_t slot, const PatchData& patch) override;
     uint64_t dynamics_gpu_bytes() const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
+    // The host's GL context of this grass context is current (gl_current.cpp).
+    grass_result check_current(const char* function) override;
 
     // Draws the context's plan into the bound draw framebuffer (gl_draw.cpp). In a debug
     // context (GL_CONTEXT_FLAG_DEBUG_BIT) the GL error flags are checked after the draws:
@@ -87,6 +89,9 @@ private:
     };
 
     grass_result init(const grass_gl_desc& desc);
+    // gl_current.cpp: gives tier_vertex_array_ (a container object: never shared between GL
+    // contexts) a label unique in the process, which check_current looks for.
+    void label_context();
     // The program of `kind` for `features`, compiled on first use (upload_field compiles a
     // field's variants ahead of its first frame).
     grass_result program(GlProgramKind kind, uint32_t features, const char* function, GLuint* out_program);
@@ -134,6 +139,8 @@ private:
     GlFunctions gl_;
     GLuint programs_[kProgramKindCount][kFeatureVariants] = {}; // 0: not compiled yet
     GLuint tier_vertex_array_ = 0; // instances only: the volume and image tiers, debug boxes
+    char context_label_[48] = {};  // tier_vertex_array_'s label (label_context)
+    GLsizei context_label_length_ = 0;
     GLuint white_texture_ = 0;
     GLuint sampler_ = 0;           // design maps: linear, clamped
     GLuint slice_sampler_ = 0;     // slice colour and normal: trilinear, clamped

@@ -90,7 +90,11 @@
     X(PFNGLDELETEQUERIESPROC, DeleteQueries)                                         \
     X(PFNGLQUERYCOUNTERPROC, QueryCounter)                                           \
     X(PFNGLGETQUERYOBJECTIVPROC, GetQueryObjectiv)                                   \
-    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
+    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)                             \
+    /* the current-context check (gl_current.cpp) */                                 \
+    X(PFNGLISVERTEXARRAYPROC, IsVertexArray)                                         \
+    X(PFNGLOBJECTLABELPROC, ObjectLabel)                                             \
+    X(PFNGLGETOBJECTLABELPROC, GetObjectLabel)
 
 namespace grass {
 

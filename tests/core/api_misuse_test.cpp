@@ -34,6 +34,28 @@ protected:
     }
 };
 
+// A getter given NULL for its output says which argument, like every other refusal.
+TEST_F(MisuseTest, GettersGivenNullOutputsLogTheArgument) {
+    double ms[GRASS_TIER_KIND_COUNT];
+    grass_bool available = 0;
+    const struct {
+        const char* argument;
+        grass_result result;
+    } cases[] = {
+        {"out_stats", grass_get_frame_stats(ctx, nullptr)},
+        {"out_stats", grass_get_memory_stats(ctx, nullptr)},
+        {"out_ms", grass_get_tier_gpu_ms(ctx, nullptr, &available)},
+        {"out_available", grass_get_tier_gpu_ms(ctx, ms, nullptr)},
+    };
+    ASSERT_EQ(log.size(), 4u) << "one message per refusal";
+    for (size_t k = 0; k < 4; ++k) {
+        EXPECT_EQ(cases[k].result, GRASS_ERROR_INVALID_ARGUMENT);
+        EXPECT_EQ(log[k].id, GRASS_MSG_NULL_ARGUMENT);
+        EXPECT_NE(log[k].message.find(cases[k].argument), std::string::npos) << log[k].message;
+    }
+    expect_context_still_usable();
+}
+
 TEST_F(MisuseTest, NanInTheBaseTransformIsRefused) {
     grass_field_desc d = valid_field();
     d.base_transform[13] = std::numeric_limits<double>::quiet_NaN();

@@ -10,8 +10,11 @@
 #include <gtest/gtest.h>
 
 #include <dirent.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <cstdlib>
 #include <string>
@@ -78,6 +81,50 @@ TEST(BakeCacheProcesses, TwoWritersOfOneKeyNeverLeaveATornFile) {
     grass::SliceSet last(&host);
     EXPECT_EQ(grass::load_baked(dir.c_str(), key, &host, &last), CacheMiss::none);
     EXPECT_EQ(count_files(dir, "grass-slices-"), 1) << "no temporary file is left behind";
+    EXPECT_EQ(std::system(("rm -rf " + dir).c_str()), 0);
+}
+
+// A FIFO or a directory under a cache file's name: the load returns at once (a FIFO once
+// blocked fopen forever, in grass_create_field), says the name is not a regular file, and
+// leaves it alone. Runs in a child process, so that a hang fails the test instead of
+// stopping the suite.
+TEST(BakeCacheFiles, AFifoOrADirectoryUnderTheNameIsRefusedAtOnce) {
+    char pattern[] = "/tmp/grass-bake-special-XXXXXX";
+    ASSERT_NE(mkdtemp(pattern), nullptr);
+    const std::string dir = pattern;
+    const uint64_t key = 0x0123456789abcdefull;
+    const std::string name = dir + "/grass-slices-0123456789abcdef.bin";
+    for (const char* kind : {"fifo", "directory"}) {
+        SCOPED_TRACE(kind);
+        ASSERT_EQ(std::string(kind) == "fifo" ? mkfifo(name.c_str(), 0600) : mkdir(name.c_str(), 0700), 0);
+        const pid_t child = fork();
+        ASSERT_GE(child, 0);
+        if (child == 0) {
+            grass_allocator hooks{};
+            grass::HostAllocator host(hooks);
+            grass::SliceSet set(&host);
+            const CacheMiss miss = grass::load_baked(dir.c_str(), key, &host, &set);
+            const std::string phrase = grass::cache_miss_phrase(miss);
+            _exit(phrase.find("not a regular file") != std::string::npos ? 0 : 1);
+        }
+        int status = 0;
+        bool exited = false;
+        for (int wait_ms = 0; wait_ms < 10000 && !exited; wait_ms += 10) {
+            exited = waitpid(child, &status, WNOHANG) == child;
+            if (!exited) usleep(10000);
+        }
+        if (!exited) {
+            kill(child, SIGKILL);
+            waitpid(child, &status, 0);
+        }
+        EXPECT_TRUE(exited) << "the load of a " << kind << " did not return within 10 s";
+        EXPECT_TRUE(exited && WIFEXITED(status) && WEXITSTATUS(status) == 0)
+            << "the load of a " << kind << " did not say the name is not a regular file";
+        struct stat st;
+        ASSERT_EQ(lstat(name.c_str(), &st), 0) << "it is left alone";
+        EXPECT_EQ(std::string(kind) == "fifo" ? S_ISFIFO(st.st_mode) : S_ISDIR(st.st_mode), true);
+        ASSERT_EQ(std::string(kind) == "fifo" ? unlink(name.c_str()) : rmdir(name.c_str()), 0);
+    }
     EXPECT_EQ(std::system(("rm -rf " + dir).c_str()), 0);
 }
 

@@ -47,9 +47,28 @@
  *
  * Thread safety
  *   A context is externally synchronized: calls on one context must not overlap. Separate
- *   contexts share nothing and may be used from separate threads. The library has no
- *   global mutable state. Allocation and log callbacks are per context and are called on
- *   the thread that made the call that triggered them.
+ *   contexts share nothing and may be used from separate threads. The library's only
+ *   global state is thread-safe: the registry of live contexts' owner tags (see "Ids"
+ *   below) and counters that make names unique. Allocation and log callbacks are per context and are called on the
+ *   thread that made the call that triggered them.
+ *
+ * Re-entrancy
+ *   While a callback of a context runs (a GRASS_LOD_TEST_CALLBACK during grass_begin_frame,
+ *   the log callback, an allocator hook), every call on that same context is refused with
+ *   GRASS_ERROR_INVALID_STATE and GRASS_MSG_REENTRANT_CALL and changes nothing
+ *   (grass_destroy_context logs the refusal and destroys nothing). Allowed are the calls
+ *   that take no context (grass_result_string, grass_default_*, the id tests, ...) and the
+ *   two getters grass_get_last_error and grass_get_context_backend. A refusal made inside
+ *   the log callback is kept as the last error but not logged again (no recursion); one
+ *   made inside another callback is logged. Calls on other contexts are allowed.
+ *
+ * Ids
+ *   An id's owner tag is unique among the live contexts of the process: a process-wide
+ *   counter hands tags out in turn and skips those still live, so the tag of a destroyed
+ *   context comes back only after 65,534 more contexts were made. A slot whose generation
+ *   would wrap is retired, never reused. So an id is refused as stale for the whole life
+ *   of its context once its object is destroyed, and as foreign by every other context,
+ *   unless 65,534 contexts were made after its own was destroyed.
  *
  * Ownership
  *   Pointers passed in descs are read during the call only and never kept (map pixels are
@@ -174,6 +193,10 @@ typedef enum grass_message_id {
     GRASS_MSG_FRAME_ALREADY_BEGUN = 301,
     GRASS_MSG_WRONG_BACKEND = 302,
     GRASS_MSG_UPLOAD_NOT_RECORDED = 303,
+    /* 0.5: a call made from inside a callback of the same context (a lod test callback, the
+     * log callback, an allocator hook), refused with GRASS_ERROR_INVALID_STATE; see
+     * "Re-entrancy" above. */
+    GRASS_MSG_REENTRANT_CALL = 304,
     /* 4xx: version and environment */
     GRASS_MSG_VERSION_MISMATCH = 400,
     GRASS_MSG_DEVICE_UNSUPPORTED = 401,
@@ -195,6 +218,10 @@ typedef enum grass_message_id {
     /* 0.5: warning: grass_view_desc.time went backwards (a host restarted its clock): the
      * responsive grass state keeps going with a time step of 0 for that frame. */
     GRASS_MSG_TIME_BACKWARDS = 407,
+    /* 0.5: a call of a GL context (grass_gl_create_context) made while the GL context it was
+     * created with is not current on the calling thread (none is, or another one is):
+     * refused with GRASS_ERROR_INVALID_STATE before any GL call (grass_gl.h). */
+    GRASS_MSG_GL_CONTEXT_NOT_CURRENT = 408,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501

@@ -6,6 +6,17 @@
  * destroy, patch, field, render), and gives a proc-address loader. The plugin draws into
  * the framebuffer the host has bound, with the host's depth buffer, and restores every GL
  * state it touches (see grass_gl_render).
+ *
+ * The GL context must be the very one the grass context was created with (not another
+ * one, not even one sharing its objects). Every call that would touch GL (patch, map and
+ * field creation and destruction, map updates, wind maps, frames, grass_gl_render,
+ * grass_get_tier_gpu_ms) first checks this and refuses otherwise, with
+ * GRASS_ERROR_INVALID_STATE and GRASS_MSG_GL_CONTEXT_NOT_CURRENT, before any GL call and
+ * leaving no GL error. grass_destroy_context then logs the error and frees its host memory
+ * without GL calls (its GL objects go with their GL context). The check costs two GL
+ * queries per call (glIsVertexArray and glGetObjectLabel on a vertex array object grass
+ * labelled with a process-unique name at creation: vertex arrays are never shared between
+ * GL contexts, and with no context current both calls do nothing).
  */
 #ifndef GRASS_GRASS_GL_H
 #define GRASS_GRASS_GL_H

@@ -15,6 +15,12 @@
 #include <random>
 #include <type_traits>
 
+#ifndef _WIN32
+#    include <fcntl.h>
+#    include <sys/stat.h>
+#    include <unistd.h>
+#endif
+
 namespace grass {
 
 namespace {
@@ -117,6 +123,35 @@ void hash_value(uint64_t* h, T value) {
     *h = fnv1a64(bytes, sizeof(T) <= 4 ? 4 : 8, *h);
 }
 
+// Opens `path` for reading if it is a regular file. A FIFO under the name would block a
+// plain fopen until a writer comes (forever): it is opened non-blocking, and the opened
+// descriptor is checked (fstat, no race with a rename). *miss says why on failure.
+std::FILE* open_regular(const char* path, CacheMiss* miss) {
+#ifndef _WIN32
+    const int fd = ::open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        *miss = errno == ENOENT || errno == ENOTDIR ? CacheMiss::missing : CacheMiss::unreadable;
+        return nullptr;
+    }
+    struct stat st;
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        *miss = CacheMiss::not_regular;
+        ::close(fd);
+        return nullptr;
+    }
+    std::FILE* f = ::fdopen(fd, "rb");
+    if (!f) {
+        *miss = CacheMiss::unreadable;
+        ::close(fd);
+    }
+    return f;
+#else
+    std::FILE* f = std::fopen(path, "rb");
+    if (!f) *miss = errno == ENOENT || errno == ENOTDIR ? CacheMiss::missing : CacheMiss::unreadable;
+    return f;
+#endif
+}
+
 bool read_exact(std::FILE* f, void* data, size_t bytes) { return bytes == 0 || std::fread(data, 1, bytes, f) == bytes; }
 bool write_exact(std::FILE* f, const void* data, size_t bytes) {
     return bytes == 0 || std::fwrite(data, 1, bytes, f) == bytes;
@@ -174,6 +209,8 @@ const char* cache_miss_phrase(CacheMiss miss) {
         return "is missing";
     case CacheMiss::unreadable:
         return "cannot be read";
+    case CacheMiss::not_regular:
+        return "is not a regular file (a directory, pipe or device) and is left alone";
     case CacheMiss::truncated:
         return "is truncated (or longer than its header says)";
     case CacheMiss::corrupt:
@@ -193,9 +230,9 @@ CacheMiss load_baked(const char* directory, uint64_t key, HostAllocator* host, S
     char path[kMaxPath];
     if (!file_path(directory, key, "", path, sizeof(path))) return CacheMiss::missing;
     if (path_out) std::memcpy(path_out, path, sizeof(path));
-    std::FILE* f = std::fopen(path, "rb");
-    if (!f) return errno == ENOENT || errno == ENOTDIR ? CacheMiss::missing : CacheMiss::unreadable;
     CacheMiss miss = CacheMiss::none;
+    std::FILE* f = open_regular(path, &miss);
+    if (!f) return miss;
     do {
         if (std::fseek(f, 0, SEEK_END) != 0) {
             miss = CacheMiss::unreadable;

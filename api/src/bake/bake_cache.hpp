@@ -31,6 +31,7 @@ enum class CacheMiss {
     none,          // loaded
     missing,       // no file of the key (the first run): not worth a warning
     unreadable,    // it exists but cannot be read
+    not_regular,   // a directory, FIFO, socket or device under the name: neither read nor replaced
     truncated,     // shorter or longer than its header says, or empty
     corrupt,       // not a grass cache file, a broken header hash or impossible sizes
     other_version, // written by a grass whose baked bytes differ (kBakeFormatVersion)
@@ -42,7 +43,7 @@ const char* cache_miss_phrase(CacheMiss miss);
 
 // Reads the file of `key` in `directory` into `out`. Returns CacheMiss::none on success;
 // otherwise `out` is left empty of data and the result says why: the file is missing,
-// unreadable, truncated, too long, or any header field, the key or the recomputed content
+// unreadable, not a regular file (never read: a FIFO does not block), truncated, too long, or any header field, the key or the recomputed content
 // hash does not match. Sizes are checked against the file's length before anything is
 // allocated. `path_out` (optional, kCachePathCapacity chars) receives the file's path.
 constexpr size_t kCachePathCapacity = 4096;

@@ -28,7 +28,10 @@ grass_result ensure_slices(grass_context* ctx, const char* fn, uint32_t patch_sl
                           cache_miss_phrase(miss));
             }
             bake_slices(patch->data, slices_per_axis, 0, 0, &ctx->host, set);
-            if (dir && !store_baked(dir, key, *set) && !ctx->cache_write_warned) {
+            // A directory or FIFO under the name stays: it was named in the warning above,
+            // and a store would only fail and warn again about the directory.
+            const bool store = dir && miss != CacheMiss::not_regular;
+            if (store && !store_baked(dir, key, *set) && !ctx->cache_write_warned) {
                 ctx->cache_write_warned = true;
                 ctx->warn(GRASS_MSG_BAKE_CACHE,
                           "%s: cannot write to the cache directory %s (missing, not a directory, read-only or full); "

@@ -19,7 +19,9 @@ void* HostAllocator::allocate(size_t size, size_t alignment) {
     const size_t total = size + kHeaderSpace;
     void* raw = nullptr;
     if (hooks_.alloc_fn) {
+        ++hooks_running_;
         raw = hooks_.alloc_fn(hooks_.user_data, total, kMaxAlignment);
+        --hooks_running_;
     } else {
         raw = std::aligned_alloc(kMaxAlignment, (total + kMaxAlignment - 1) / kMaxAlignment * kMaxAlignment);
     }
@@ -42,7 +44,9 @@ void HostAllocator::deallocate(void* ptr) noexcept {
     allocations_ -= 1;
     void* raw = user - header->offset;
     if (hooks_.free_fn) {
+        ++hooks_running_;
         hooks_.free_fn(hooks_.user_data, raw);
+        --hooks_running_;
     } else {
         std::free(raw);
     }

@@ -25,6 +25,8 @@ public:
     uint64_t bytes() const { return bytes_; }
     uint64_t bytes_peak() const { return bytes_peak_; } // the highest bytes() since construction
     uint64_t allocations() const { return allocations_; }
+    // The host's alloc_fn or free_fn is running (its context refuses calls meanwhile).
+    bool hook_running() const { return hooks_running_ > 0; }
 
     template <class T, class... Args>
     T* create(Args&&... args) {
@@ -43,6 +45,7 @@ private:
     uint64_t bytes_ = 0;
     uint64_t bytes_peak_ = 0;
     uint64_t allocations_ = 0;
+    uint32_t hooks_running_ = 0;
 };
 
 // Standard-library allocator that routes to a context's HostAllocator. Throws

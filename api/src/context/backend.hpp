@@ -131,6 +131,21 @@ public:
         for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = 0.0;
         return false;
     }
+
+    // Whether the GPU context this backend was made with is current on the calling thread
+    // (GL: grass_gl.h; a Vulkan device needs no such thing). Otherwise logs the refusal of
+    // `function` and returns its error, having made no GPU call.
+    virtual grass_result check_current(const char* function) {
+        (void)function;
+        return GRASS_SUCCESS;
+    }
+    // The context is destroyed while its GPU context is not current: the backend releases
+    // no GPU object (they go with the GPU context) and frees only host memory.
+    void abandon() { abandoned_ = true; }
+    bool abandoned() const { return abandoned_; }
+
+private:
+    bool abandoned_ = false;
 };
 
 // The backend of a context made by grass_create_context(): holds nothing, draws nothing.

@@ -2,6 +2,7 @@
 #include "context/context.hpp"
 
 #include "context/abi_sizes.hpp"
+#include "context/owner_tags.hpp"
 #include "context/raw_enum.hpp"
 #include "context/validate.hpp"
 
@@ -21,7 +22,12 @@ grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
 }
 
 grass_context::~grass_context() {
-    // Fields and patches release their GPU resources before the backend goes.
+    // Fields and patches release their GPU resources before the backend goes (not those of
+    // an abandoned backend: destroy_context).
+    if (backend && backend->abandoned()) {
+        host.destroy(backend);
+        backend = nullptr;
+    }
     for (uint32_t slot = 0; slot < fields.capacity(); ++slot) {
         if (fields.get(slot) && backend) backend->release_field(slot);
     }
@@ -33,6 +39,7 @@ grass_context::~grass_context() {
     }
     host.destroy(backend);
     backend = nullptr;
+    grass::release_owner_tag(owner);
 }
 
 void grass_context::emit(grass_log_level level, grass_message_id id, const char* format, va_list args) {
@@ -42,7 +49,22 @@ void grass_context::emit(grass_log_level level, grass_message_id id, const char*
     char message[sizeof(last_error)];
     std::vsnprintf(message, sizeof(message), format, args);
     if (level == GRASS_LOG_ERROR) std::memcpy(last_error, message, sizeof(last_error));
-    if (desc.log_fn && level <= desc.log_level) desc.log_fn(desc.log_user_data, level, id, message);
+    // Never from inside the log callback: a call it makes is refused, and that refusal is
+    // kept as the last error only (no recursion).
+    if (desc.log_fn && level <= desc.log_level && log_callbacks_running == 0) {
+        grass::CallbackScope scope(log_callbacks_running);
+        desc.log_fn(desc.log_user_data, level, id, message);
+    }
+}
+
+grass_result grass_context::refuse_reentrant(const char* function) {
+    const char* callback = log_callbacks_running > 0 ? "the log callback"
+                           : host.hook_running()     ? "an allocator hook"
+                                                     : "a lod test callback";
+    return fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_REENTRANT_CALL,
+                "%s: called from inside %s of this context; a callback must not call its own context (grass.h "
+                "\"Re-entrancy\")",
+                function, callback);
 }
 
 grass_result grass_context::fail(grass_result result, grass_message_id id, const char* format, ...) {
@@ -91,16 +113,6 @@ grass_result early_fail(const grass_context_desc* desc, grass_result result, gra
     return result;
 }
 
-// A tag that tells this context's ids from another's: mixes the context's address.
-uint16_t owner_tag_for(const void* p) {
-    uint64_t x = reinterpret_cast<uintptr_t>(p);
-    x ^= x >> 33;
-    x *= 0xff51afd7ed558ccdull;
-    x ^= x >> 33;
-    const uint16_t tag = static_cast<uint16_t>(x);
-    return tag == 0 ? 1 : tag;
-}
-
 } // namespace
 
 grass_result create_context(const char* function, uint32_t header_version, const grass_context_desc* desc,
@@ -143,15 +155,23 @@ grass_result create_context(const char* function, uint32_t header_version, const
     }
 
     // The context lives in memory from its own allocator.
+    // The tag tells this context's ids from every other live context's (owner_tags.hpp);
+    // the context releases it when it is destroyed.
+    const uint16_t owner = acquire_owner_tag();
+    if (owner == 0) {
+        return early_fail(desc, GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_TOO_MANY_OBJECTS,
+                          "%s: 65535 contexts are live in this process; destroy one first", function);
+    }
     HostAllocator bootstrap(desc->allocator);
     grass_context* ctx = nullptr;
     void* memory = nullptr;
     try {
         memory = bootstrap.allocate(sizeof(grass_context), alignof(grass_context));
-        ctx = new (memory) grass_context(*desc, owner_tag_for(memory));
+        ctx = new (memory) grass_context(*desc, owner);
         ctx->header_minor = minor;
     } catch (const std::bad_alloc&) {
         if (memory) bootstrap.deallocate(memory);
+        release_owner_tag(owner);
         return early_fail(desc, GRASS_ERROR_OUT_OF_MEMORY, GRASS_MSG_OUT_OF_MEMORY, "%s: out of host memory", function);
     }
     const grass_result r = guarded(ctx, function, [&] { return factory(ctx, factory_user_data, &ctx->backend); });
@@ -167,6 +187,13 @@ grass_result create_context(const char* function, uint32_t header_version, const
 
 void destroy_context(grass_context* ctx) {
     if (!ctx) return;
+    if (ctx->in_callback()) {
+        ctx->refuse_reentrant("grass_destroy_context");
+        return;
+    }
+    // Without its GPU context current, the context frees its host memory and leaves its GPU
+    // objects to the GPU context (check_gpu_current logged why).
+    if (check_gpu_current(ctx, "grass_destroy_context") != GRASS_SUCCESS) ctx->backend->abandon();
     const grass_allocator hooks = ctx->desc.allocator;
     ctx->~grass_context();
     HostAllocator(hooks).deallocate(ctx);
@@ -236,7 +263,11 @@ GRASS_API grass_backend grass_get_context_backend(const grass_context* context) 
 GRASS_API const char* grass_get_last_error(const grass_context* context) { return context ? context->last_error : ""; }
 
 GRASS_API grass_result grass_get_memory_stats(const grass_context* context, grass_memory_stats* out_stats) {
-    if (!context || !out_stats) return GRASS_ERROR_INVALID_ARGUMENT;
+    auto* ctx = const_cast<grass_context*>(context); // logging only
+    if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
+    const char* fn = "grass_get_memory_stats";
+    GRASS_TRY(grass::check_entry(ctx, fn));
+    GRASS_TRY(grass::check_not_null(ctx, fn, "out_stats", out_stats));
     grass_memory_stats stats{};
     stats.host_bytes = context->host.bytes();
     stats.host_allocations = context->host.allocations();

@@ -96,6 +96,14 @@ struct grass_context {
     char last_error[512] = {0};
     grass::Vector<char> cache_directory; // copy of desc.cache_directory (empty: no disk cache)
     bool cache_write_warned = false;     // the cache directory could not be written: said once
+    // Host callbacks running on this context (grass.h "Re-entrancy"): lod test callbacks and
+    // the log callback; the allocator's hooks are counted by `host`. While one runs, every
+    // call on the context but the pure getters is refused (refuse_reentrant).
+    uint32_t lod_callbacks_running = 0;
+    uint32_t log_callbacks_running = 0;
+    bool in_callback() const { return lod_callbacks_running > 0 || log_callbacks_running > 0 || host.hook_running(); }
+    // Logs and returns the refusal of `function`, called from inside a callback.
+    grass_result refuse_reentrant(const char* function);
 
     // Logs `message` (printf format) at error level with `id`, keeps it as the last error,
     // and returns `result`: `return ctx->fail(GRASS_ERROR_..., GRASS_MSG_..., "...", ...);`
@@ -128,8 +136,34 @@ grass_result create_context(const char* function, uint32_t header_version, const
                             BackendFactory factory, void* factory_user_data, grass_context** out_context);
 void destroy_context(grass_context* context);
 
+// Counts a host callback in flight for its lifetime: `CallbackScope scope(ctx->lod_callbacks_running);`.
+class CallbackScope {
+public:
+    explicit CallbackScope(uint32_t& counter) noexcept : counter_(counter) { ++counter_; }
+    ~CallbackScope() { --counter_; }
+    CallbackScope(const CallbackScope&) = delete;
+    CallbackScope& operator=(const CallbackScope&) = delete;
+
+private:
+    uint32_t& counter_;
+};
+
+// The entry check of every call on a context: refuses a call made from inside one of the
+// context's callbacks (grass.h "Re-entrancy"). guarded() makes it; calls that do not go
+// through guarded() make it themselves: `GRASS_TRY(grass::check_entry(ctx, fn));`.
+inline grass_result check_entry(grass_context* ctx, const char* function) {
+    return ctx->in_callback() ? ctx->refuse_reentrant(function) : GRASS_SUCCESS;
+}
+
+// The check of every call that makes GPU calls (grass_gl.h): the backend's GPU context is
+// current. `GRASS_TRY(grass::check_gpu_current(ctx, fn));` before anything else.
+inline grass_result check_gpu_current(grass_context* ctx, const char* function) {
+    return ctx->backend ? ctx->backend->check_current(function) : GRASS_SUCCESS;
+}
+
 // Runs `body` and turns C++ exceptions into result codes (std::bad_alloc into
-// GRASS_ERROR_OUT_OF_MEMORY), so that no exception crosses the C boundary.
+// GRASS_ERROR_OUT_OF_MEMORY), so that no exception crosses the C boundary. Makes the
+// entry check (check_entry) first.
 template <class Body>
 grass_result guarded(grass_context* ctx, const char* function, Body&& body) noexcept;
 

@@ -8,6 +8,7 @@ namespace grass {
 
 template <class Body>
 grass_result guarded(grass_context* ctx, const char* function, Body&& body) noexcept {
+    if (ctx && ctx->in_callback()) return ctx->refuse_reentrant(function);
     try {
         return body();
     } catch (const std::bad_alloc&) {

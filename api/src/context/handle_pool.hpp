@@ -1,5 +1,7 @@
 // Objects addressed by id handles with a generation (after Box2D's id pools): a slot
-// array whose freed slots are reused with a bumped generation, so stale ids are caught.
+// array whose freed slots are reused with a bumped generation, so stale ids are caught. A
+// slot whose 16-bit generation would wrap is retired instead (never reused), so no stale
+// id of the pool is ever accepted again (grass.h "Ids").
 #pragma once
 
 #include "context/allocator.hpp"
@@ -44,10 +46,12 @@ public:
     void erase(uint32_t slot) {
         host_->destroy(slots_[slot].object);
         slots_[slot].object = nullptr;
-        slots_[slot].generation =
-            static_cast<uint16_t>(slots_[slot].generation + 1 == 0 ? 1 : slots_[slot].generation + 1);
+        if (slots_[slot].generation == kLastGeneration) return; // retired: 16 bytes kept for good
+        slots_[slot].generation = static_cast<uint16_t>(slots_[slot].generation + 1);
         free_.push_back(slot);
     }
+    // The generation of a slot's last object: the slot is retired when it is erased.
+    static constexpr uint16_t kLastGeneration = 0xffff;
     uint16_t generation(uint32_t slot) const { return slots_[slot].generation; }
 
     // index is slot + 1 (0 is the null id).

@@ -366,13 +366,17 @@ GRASS_API grass_grass_type_desc grass_default_grass_type_desc(void) {
 GRASS_API grass_result grass_create_field(grass_context* context, const grass_field_desc* desc,
                                           grass_field_id* out_field) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
-    return guarded(context, "grass_create_field", [&] { return grass::create_field(context, desc, out_field); });
+    return guarded(context, "grass_create_field", [&] {
+        GRASS_TRY(grass::check_gpu_current(context, "grass_create_field"));
+        return grass::create_field(context, desc, out_field);
+    });
 }
 
 GRASS_API grass_result grass_destroy_field(grass_context* context, grass_field_id field) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_destroy_field", [&] {
         const char* fn = "grass_destroy_field";
+        GRASS_TRY(grass::check_gpu_current(context, fn));
         GRASS_TRY(grass::check_field_id(context, fn, "field", field));
         if (context->in_frame) {
             return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_ALREADY_BEGUN,

@@ -98,6 +98,7 @@ GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_vie
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_begin_frame", [&] {
         const char* fn = "grass_begin_frame";
+        GRASS_TRY(grass::check_gpu_current(context, fn)); // responsive grass uploads here
         if (context->in_frame) {
             return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_ALREADY_BEGUN,
                                  "%s: a frame has already begun; call grass_end_frame first", fn);
@@ -116,6 +117,7 @@ GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_vie
 
 GRASS_API grass_result grass_end_frame(grass_context* context) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    GRASS_TRY(grass::check_entry(context, "grass_end_frame"));
     if (!context->in_frame) {
         return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
                              "grass_end_frame: no frame has begun; call grass_begin_frame first");
@@ -126,22 +128,31 @@ GRASS_API grass_result grass_end_frame(grass_context* context) {
 }
 
 GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass_frame_stats* out_stats) {
-    if (!context || !out_stats) return GRASS_ERROR_INVALID_ARGUMENT;
+    auto* ctx = const_cast<grass_context*>(context); // logging only
+    if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
+    const char* fn = "grass_get_frame_stats";
+    GRASS_TRY(grass::check_entry(ctx, fn));
+    GRASS_TRY(grass::check_not_null(ctx, fn, "out_stats", out_stats));
     grass::write_out_struct(context->header_minor, context->plan.stats, out_stats);
     return GRASS_SUCCESS;
 }
 
 GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, double out_ms[GRASS_TIER_KIND_COUNT],
                                              grass_bool* out_available) {
-    if (!context || !out_ms || !out_available) return GRASS_ERROR_INVALID_ARGUMENT;
-    for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = 0.0;
-    *out_available = 0;
-    if (!context->backend) return GRASS_SUCCESS;
-    double ms[GRASS_TIER_KIND_COUNT] = {};
     // The context is const for the host; polling the backend's queries is not a change
     // the host can see.
     grass_context* ctx = const_cast<grass_context*>(context);
-    return guarded(ctx, "grass_get_tier_gpu_ms", [&] {
+    if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
+    const char* fn = "grass_get_tier_gpu_ms";
+    GRASS_TRY(grass::check_entry(ctx, fn));
+    GRASS_TRY(grass::check_not_null(ctx, fn, "out_ms", out_ms));
+    GRASS_TRY(grass::check_not_null(ctx, fn, "out_available", out_available));
+    for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = 0.0;
+    *out_available = 0;
+    if (!ctx->backend) return GRASS_SUCCESS;
+    double ms[GRASS_TIER_KIND_COUNT] = {};
+    return guarded(ctx, fn, [&] {
+        GRASS_TRY(grass::check_gpu_current(ctx, fn)); // polls the timer queries
         if (ctx->backend->tier_gpu_ms(ms)) {
             for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = ms[k] > 0.0 ? ms[k] : 0.0;
             *out_available = 1;

@@ -127,6 +127,7 @@ GRASS_API grass_result grass_create_map(grass_context* context, const grass_map_
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_create_map", [&] {
         const char* fn = "grass_create_map";
+        GRASS_TRY(grass::check_gpu_current(context, fn));
         GRASS_TRY(grass::check_not_null(context, fn, "out_map", out_map));
         uint32_t slot = 0;
         GRASS_TRY(grass::make_map(context, fn, "desc", desc, false, &slot));
@@ -140,13 +141,17 @@ GRASS_API grass_result grass_create_map(grass_context* context, const grass_map_
 GRASS_API grass_result grass_update_map(grass_context* context, grass_map_id map, uint32_t x, uint32_t y,
                                         const grass_map_desc* region) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
-    return guarded(context, "grass_update_map", [&] { return grass::update_map(context, map, x, y, region); });
+    return guarded(context, "grass_update_map", [&] {
+        GRASS_TRY(grass::check_gpu_current(context, "grass_update_map"));
+        return grass::update_map(context, map, x, y, region);
+    });
 }
 
 GRASS_API grass_result grass_destroy_map(grass_context* context, grass_map_id map) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_destroy_map", [&] {
         const char* fn = "grass_destroy_map";
+        GRASS_TRY(grass::check_gpu_current(context, fn));
         GRASS_TRY(grass::check_map_id(context, fn, "map", map));
         const uint32_t slot = map.index - 1;
         const uint32_t users = context->maps.get(slot)->field_users;

@@ -117,13 +117,17 @@ GRASS_API grass_patch_desc grass_default_patch_desc(void) {
 GRASS_API grass_result grass_create_patch(grass_context* context, const grass_patch_desc* desc,
                                           grass_patch_id* out_patch) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
-    return guarded(context, "grass_create_patch", [&] { return grass::create_patch(context, desc, out_patch); });
+    return guarded(context, "grass_create_patch", [&] {
+        GRASS_TRY(grass::check_gpu_current(context, "grass_create_patch"));
+        return grass::create_patch(context, desc, out_patch);
+    });
 }
 
 GRASS_API grass_result grass_destroy_patch(grass_context* context, grass_patch_id patch) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_destroy_patch", [&] {
         const char* fn = "grass_destroy_patch";
+        GRASS_TRY(grass::check_gpu_current(context, fn));
         GRASS_TRY(grass::check_patch_id(context, fn, "patch", patch));
         const uint32_t slot = patch.index - 1;
         const grass::Patch* p = context->patches.get(slot);
@@ -147,6 +151,7 @@ GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_
     auto* ctx = const_cast<grass_context*>(context); // logging only
     if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
     const char* fn = "grass_get_patch_info";
+    GRASS_TRY(grass::check_entry(ctx, fn));
     GRASS_TRY(grass::check_not_null(ctx, fn, "out_info", out_info));
     GRASS_TRY(grass::check_patch_id(ctx, fn, "patch", patch));
     const grass::PatchData& d = ctx->patches.get(patch.index - 1)->data;
@@ -168,6 +173,7 @@ GRASS_API grass_result grass_get_patch_thresholds(const grass_context* context, 
     auto* ctx = const_cast<grass_context*>(context);
     if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
     const char* fn = "grass_get_patch_thresholds";
+    GRASS_TRY(grass::check_entry(ctx, fn));
     GRASS_TRY(grass::check_not_null(ctx, fn, "out_thresholds", out_thresholds));
     GRASS_TRY(grass::check_patch_id(ctx, fn, "patch", patch));
     const grass::PatchData& d = ctx->patches.get(patch.index - 1)->data;

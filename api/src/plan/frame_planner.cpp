@@ -210,7 +210,10 @@ private:
             info.tier = test.tier;
             int64_t answer;
             if (test.kind == GRASS_LOD_TEST_CALLBACK) {
-                answer = static_cast<int64_t>(test.callback(test.user_data, &info));
+                {
+                    CallbackScope scope(ctx_->lod_callbacks_running); // calls on ctx_ are refused meanwhile
+                    answer = static_cast<int64_t>(test.callback(test.user_data, &info));
+                }
                 if (answer < GRASS_LOD_DISCARD || answer > GRASS_LOD_DRAW) {
                     return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                                       "grass_begin_frame: lod test %u of field %u (a callback) answered %lld for node "
