@@ -98,8 +98,6 @@ def test_a_callback_calling_back_into_its_context_is_refused():
             ctx.end_frame()
 
 
-@pytest.mark.xfail(strict=True, reason="needs the C library's GL-context-current check (issue 37): "
-                   "grass_gl_render succeeds silently from a thread with no current GL context")
 def test_render_gl_from_a_thread_without_the_gl_context_is_refused():
     import grass.headless
     with grass.headless.Target(64, 64) as target:
@@ -118,5 +116,6 @@ def test_render_gl_from_a_thread_without_the_gl_context_is_refused():
             t.start()
             t.join(60)
             assert isinstance(outcome[0], grass.GrassError), outcome
+            assert "GRASS_MSG_GL_CONTEXT_NOT_CURRENT" in str(outcome[0]), outcome
             with ctx.frame(overhead_view()):  # the owning thread still renders
                 ctx.render_gl()
