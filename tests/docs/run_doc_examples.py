@@ -24,12 +24,23 @@ compiled or run:
                                   the files copied in, and EXE run.
   <!-- doc-test: skip: REASON -->  not run, listed in the output. Only for what cannot run
                                   here.
+  <!-- doc-test: install-run files=SRC:DEST,... -->
+                                  sh: an install command, run exactly as written by
+                                  --install-run (ctest docs_install_commands): the marked
+                                  blocks of one document, in order, in one bash -e session
+                                  whose working folder is a copy of the repository's tracked
+                                  files (FILES copied in beside them), inside a user and mount
+                                  namespace with an empty tmpfs over /opt, so a command that
+                                  installs under /opt runs as written and leaves the machine
+                                  untouched. Without --install-run such a block gets the sh
+                                  checks above.
 
 A c, cmake or python block without a marker that is not complete fails the test, so a new
 example cannot slip through untested. Other languages (json, cpp, qml, text) are counted
 but not run.
 
     run_doc_examples.py --build BUILD_DIR [--scratch DIR] [--cc CC] [--python PYTHON]
+    run_doc_examples.py --install-run [--scratch DIR]
 """
 import argparse
 import os
@@ -222,6 +233,10 @@ class Runner:
             if block.lang != "cmake":
                 raise RuntimeError("cmake-project marks a cmake block")
             return "ok", self.cmake_project(block, mark[len("cmake-project"):])
+        elif mark.startswith("install-run"):
+            if block.lang != "sh":
+                raise RuntimeError("install-run marks an sh block")
+            return "ok", self.sh(block)
         elif mark:
             raise RuntimeError(f"unknown doc-test marker: {mark}")
         if block.lang == "c":
@@ -233,13 +248,62 @@ class Runner:
         raise RuntimeError("a cmake block needs a cmake-project marker (or a skip reason)")
 
 
+def tracked_copy(dest):
+    """A copy of the repository's tracked files (what a fresh clone holds) under dest."""
+    names = subprocess.run(["git", "-C", ROOT, "ls-files", "-z"], stdout=subprocess.PIPE, check=True).stdout
+    for name in filter(None, names.decode().split("\0")):
+        src = os.path.join(ROOT, name)
+        if os.path.isfile(src):
+            os.makedirs(os.path.join(dest, os.path.dirname(name)), exist_ok=True)
+            shutil.copy2(src, os.path.join(dest, name))
+
+
+def install_run(scratch):
+    """Runs the install-run blocks of each document as written (see the module's text)."""
+    shutil.rmtree(scratch, ignore_errors=True)
+    os.makedirs(scratch)
+    ran = 0
+    for path in doc_files():
+        marked = [b for b in blocks(path) if (b.mark or "").startswith("install-run")]
+        if not marked:
+            continue
+        src = os.path.join(scratch, os.path.basename(path)[:-3])
+        tracked_copy(src)
+        for block in marked:
+            opts = dict(o.split("=", 1) for o in block.mark.split()[1:] if "=" in o)
+            for pair in filter(None, opts.get("files", "").split(",")):
+                file_src, _, file_dest = pair.partition(":")
+                shutil.copy(os.path.join(ROOT, file_src), os.path.join(src, file_dest or os.path.basename(file_src)))
+        script = "mount -t tmpfs grass-doc-test /opt\ncd \"$1\"\nset -e -x\n" + "".join(
+            f"# {b.where()}\n{b.text}" for b in marked)
+        env = {k: v for k, v in os.environ.items() if k not in ("LD_LIBRARY_PATH", "PKG_CONFIG_PATH", "CMAKE_PREFIX_PATH")}
+        r = subprocess.run(["unshare", "--map-root-user", "--mount", "bash", "-c", script, "install-run", src],
+                           env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=1200)
+        print(r.stdout[-6000:])
+        where = ", ".join(b.where() for b in marked)
+        if r.returncode != 0:
+            print(f"FAIL {where}: exited {r.returncode}")
+            return 1
+        print(f"ok   {where} (install-run)")
+        ran += len(marked)
+    print(f"run_doc_examples --install-run: {ran} passed, 0 failed")
+    return 0 if ran else 1
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--build", required=True, help="a build directory with libgrass.so")
+    parser.add_argument("--build", help="a build directory with libgrass.so")
     parser.add_argument("--scratch", help="where blocks are built (default BUILD/docs-test)")
     parser.add_argument("--cc", default="cc")
     parser.add_argument("--python", default=sys.executable)
+    parser.add_argument("--install-run", action="store_true", help="run the install-run blocks as written")
     args = parser.parse_args()
+    if args.install_run:
+        if not args.scratch:
+            parser.error("--install-run needs --scratch")
+        return install_run(os.path.abspath(args.scratch))
+    if not args.build:
+        parser.error("--build is required")
     runner = Runner(args)
     failed, skipped, passed, other = [], [], 0, {}
     for path in doc_files():
