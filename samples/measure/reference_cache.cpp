@@ -1,11 +1,14 @@
 #include "reference_cache.hpp"
 
+#include "file_bytes.hpp"
 #include "image_io.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace grass_measure {
 namespace bench {
@@ -26,8 +29,14 @@ std::string reference_hash(const std::string& key) {
 }
 
 bool load_reference(const std::string& dir, const std::string& key, CachedReference* out) {
-    std::ifstream in(dir + "/" + reference_hash(key) + ".ref", std::ios::binary);
-    if (!in) return false;
+    // Read as any file the tools read (grass_sample::read_file_bytes): a FIFO, a directory or
+    // a device under the reference's name is a cache miss, never a blocked or endless read.
+    std::vector<unsigned char> bytes;
+    std::string error;
+    if (!grass_sample::read_file_bytes(dir + "/" + reference_hash(key) + ".ref", grass_sample::kMaxFileBytes, &bytes,
+                                       &error))
+        return false;
+    std::istringstream in(std::string(bytes.begin(), bytes.end()));
     std::string magic, stored_key;
     uint32_t w = 0, h = 0;
     double ms = 0, render_s = 0;
@@ -35,11 +44,13 @@ bool load_reference(const std::string& dir, const std::string& key, CachedRefere
     if (!std::getline(in, header) || !std::getline(in, stored_key)) return false;
     std::istringstream hs(header);
     if (!(hs >> magic >> w >> h >> ms >> render_s) || magic != kMagic || stored_key != key) return false;
+    const uint64_t pixels_bytes = uint64_t(w) * h * 4;
+    const uint64_t at = static_cast<uint64_t>(in.tellg());
+    if (pixels_bytes != bytes.size() - at) return false; // truncated or padded: not this reference
     CachedReference r;
     r.image.width = w;
     r.image.height = h;
-    r.image.rgba.resize(size_t(w) * h * 4);
-    if (!in.read(reinterpret_cast<char*>(r.image.rgba.data()), std::streamsize(r.image.rgba.size()))) return false;
+    r.image.rgba.assign(bytes.begin() + std::ptrdiff_t(at), bytes.end());
     r.frame_ms = ms;
     r.render_s = render_s;
     *out = std::move(r);
