@@ -4,13 +4,42 @@
 # tests in both backends (llvmpipe GL, lavapipe Vulkan with the validation layers).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+# Each stage's minutes, printed as it ends and again at the end (the suite must stay well
+# inside CI's 90 minutes; docs/testing.md gives the figures).
+stage_name=
+stage_start=$SECONDS
+stage_summary=()
+minutes() { awk -v s="$1" 'BEGIN { printf "%.1f", s / 60 }'; }
+stage() {
+  if [[ -n $stage_name ]]; then
+    local line
+    line=$(printf '%-22s %5s min' "$stage_name" "$(minutes $((SECONDS - stage_start)))")
+    stage_summary+=("$line")
+    echo "test.sh: $line (total $(minutes "$SECONDS") min)"
+  fi
+  stage_name=$1
+  stage_start=$SECONDS
+}
+summary() {
+  stage ""
+  echo "test.sh: minutes by stage"
+  printf '  %s\n' "${stage_summary[@]}"
+  echo "test.sh: total $(minutes "$SECONDS") min"
+}
+trap 'status=$?; if ((status != 0)); then stage ""; echo "test.sh: failed in a stage above after $(minutes "$SECONDS") min"; fi' EXIT
+
+stage "packages"
 bash scripts/install-deps.sh
 jobs=$(nproc)
 
+stage "plain: build"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_TESTS=ON >/dev/null
 cmake --build build -j "$jobs"
+stage "plain: tests"
 ctest --test-dir build --output-on-failure -j "$jobs"
 
+stage "asan: build"
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_TESTS=ON -DGRASS_SANITIZE=ON \
   -DGRASS_BUILD_SAMPLES=OFF >/dev/null
 cmake --build build-asan -j "$jobs"
@@ -23,10 +52,12 @@ cmake --build build-asan -j "$jobs"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:intercept_tls_get_addr=0"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizer/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+stage "asan: tests"
 ctest --test-dir build-asan --output-on-failure -j "$jobs"
 
 # Threads under ThreadSanitizer: only the thread tests (four contexts on four threads,
 # CPU-only and GL), in a build of the library without the Vulkan backend they do not use.
+stage "tsan: build and tests"
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_TESTS=ON -DGRASS_TSAN=ON \
   -DGRASS_BUILD_SAMPLES=OFF -DGRASS_BUILD_VULKAN=OFF >/dev/null
 cmake --build build-tsan -j "$jobs" --target grass_thread_tests
@@ -55,4 +86,6 @@ done
 # The long runs: docs/testing.md. One input may take 120 s: a hang still fails, while an input
 # of many draws on llvmpipe under ASan took 31 s alone (fuzz_gpu_sequence, seed 1), over the
 # 30 s default, and failed the run on a slow frame, not on a bug.
+stage "fuzz: build and runs"
 FUZZ_SEED=1 FUZZ_TIMEOUT=120 FUZZ_BUILD_DIR=build-fuzz-short bash scripts/fuzz.sh 20
+summary
