@@ -17,7 +17,7 @@ layout(std140, binding = 0) uniform Interaction {
 struct Collider {
     vec4 a;        // xyz: centre (sphere) or one axis end (capsule), w: radius
     vec4 b;        // xyz: the capsule's other end, w: shape (0 sphere, 1 capsule)
-    vec4 velocity; // xyz: m/s
+    vec4 velocity; // xyz: m/s, w: 1 = the collider continues its passage, 0 = new (its first frame)
 };
 layout(std430, binding = 1) readonly buffer Colliders {
     Collider colliders[];
@@ -73,7 +73,7 @@ void sphere_contact(inout Contact best, Collider c, vec2 column, float dt, vec2 
     vec3 cs = mix(c0, c1, s);
     float d = length(column - cs.xy);
     if (d >= r) return;
-    bool continues = length(column - c0.xy) < r;
+    bool continues = c.velocity.w > 0.5 && length(column - c0.xy) < r; // w: not new (bin_colliders)
     keep(best, cs.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, cs.xy, d, r, c.velocity.xy, fallback),
          continues);
 }
@@ -94,7 +94,7 @@ void capsule_contact(inout Contact best, Collider c, vec2 column, float dt, floa
         vec3 q = a + axis * t;
         float d = length(column - q.xy);
         if (d >= r) continue;
-        continues = continues || k == 0;
+        continues = continues || (k == 0 && c.velocity.w > 0.5);
         keep(best, q.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, q.xy, d, r, v.xy, fallback),
              continues);
     }
@@ -132,8 +132,8 @@ void main() {
                 capsule_contact(best, c, column, dt, texel_size, texel.xy);
             }
         }
-        // A collider that was already on the texel when this frame's sweep began continues
-        // the same passage: the texel keeps the deepest contact of the passage (ties: the
+        // A collider that was already on the texel when this frame's sweep began, and at the
+        // last frame (velocity.w, decided by the core), continues the same passage: the texel keeps the deepest contact of the passage (ties: the
         // youngest), so a trail is the same at any frame rate (tests/core/interaction_pass_test).
         // A new passage replaces what an earlier one left.
         bool keep_stored = best.continues && texel.w < 1e29 && (texel.z < best.u || (texel.z == best.u && texel.w < best.age));

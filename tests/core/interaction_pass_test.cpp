@@ -136,6 +136,47 @@ TEST_F(InteractionPassTest, ARestingSphereIsTheSameAtAnyFrameRateAndItsTrailAges
     EXPECT_NEAR(t->age, 1.0, 1e-6);
 }
 
+// docs/responsive.md: a new passage replaces what an earlier one left. A sphere rests 0.5 s
+// at a spot and leaves (a deep dent that then recovers for 2 s); a new, shallower sphere with
+// no velocity rests over it for 2 s. Every texel under the new sphere is pressed by it now
+// (age 0, its underside). Before the fix a collider without velocity continued a passage on
+// its first frame, so the older, deeper dent was kept and aged: 4 s old inside the new press.
+TEST_F(InteractionPassTest, ANewStationarySphereReplacesAnOlderDeeperDent) {
+    const double eye[3] = {2.0, 3.0, 2.0};
+    const grass_collider old_ball = sphere(2.0, 0.1, 2.5, 0.3f);
+    ASSERT_EQ(grass_set_colliders(ctx, &old_ball, 1), GRASS_SUCCESS);
+    double t = 10.0;
+    for (int k = 0; k < 15; ++k) ASSERT_EQ(frame(t += 1.0 / 30, eye), GRASS_SUCCESS);
+    ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS);
+    for (int k = 0; k < 60; ++k) ASSERT_EQ(frame(t += 1.0 / 30, eye), GRASS_SUCCESS);
+    const double old_centre[3] = {2.0, 0.1, 2.5};
+    const InteractionTexel* dent = read(plan(), map[0], 0, eye, old_centre);
+    ASSERT_NE(dent, nullptr);
+    EXPECT_NEAR(dent->age, 2.0, 1e-3);
+    const grass_collider ball = sphere(2.1, 0.35, 2.5, 0.4f); // underside -0.05 m; the dent's is -0.2 m
+    ASSERT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS);
+    for (int k = 0; k < 60; ++k) ASSERT_EQ(frame(t += 1.0 / 30, eye), GRASS_SUCCESS);
+    int inside = 0, stale = 0;
+    for (double du = -0.35; du <= 0.35; du += 0.025) {
+        for (double dv = -0.35; dv <= 0.35; dv += 0.025) {
+            if (du * du + dv * dv > 0.35 * 0.35) continue;
+            const double p[3] = {2.1 + du, 0.0, 2.5 + dv};
+            const InteractionTexel* texel = read(plan(), map[0], 0, eye, p);
+            ASSERT_NE(texel, nullptr);
+            inside += 1;
+            stale += texel->age == 0.0f ? 0 : 1;
+        }
+    }
+    EXPECT_GT(inside, 500);
+    EXPECT_EQ(stale, 0) << "texels under the new sphere that keep the older dent";
+    const double centre[3] = {2.1, 0.0, 2.5};
+    const InteractionTexel* now = read(plan(), map[0], 0, eye, centre);
+    EXPECT_NEAR(now->underside, 0.35 - 0.4 - 3.0, 3e-3);
+    // Resting on, it continues its own passage: the next frame keeps what it pressed.
+    ASSERT_EQ(frame(t += 1.0 / 30, eye), GRASS_SUCCESS);
+    EXPECT_NEAR(read(plan(), map[0], 0, eye, centre)->underside, 0.35 - 0.4 - 3.0, 3e-3);
+}
+
 TEST_F(InteractionPassTest, AZeroTimeStepFreezesTheMap) {
     const grass_collider c = sphere(2.0, 0.1, 2.5, 0.3f, 1.0f, 0.0f, 0.0f);
     ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);

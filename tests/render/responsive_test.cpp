@@ -18,6 +18,8 @@ constexpr double kEyeHeight = 2.0; // the orthographic camera, metres above the 
 constexpr float kNear = 0.5f, kFar = 3.0f;
 constexpr float kNoGrass = -1e30f;
 
+struct Under;
+
 class ResponsiveTest : public RenderTest {
 protected:
     void SetUp() override {
@@ -73,6 +75,9 @@ protected:
         *z = cz - half + (py + 0.5) * 2.0 * half / host->target().height;
     }
 
+    Under under(const grass_collider& c, const std::vector<float>& before, const std::vector<float>& after, double cx,
+                double cz, double half, double tolerance) const;
+
     void set_mechanics() { ASSERT_EQ(grass_set_blade_mechanics(ctx, patch, &mechanics), GRASS_SUCCESS) << log; }
     void set_fine_map() {
         grass_interaction_desc d = grass_default_interaction_desc();
@@ -119,6 +124,35 @@ double underside(const grass_collider& c, double x, double z, double inset) {
     return c.centre[1] - std::sqrt(double(c.radius) * c.radius - d * d);
 }
 
+// The grass under a collider's footprint (shrunk by 1 cm) in two height images of a top_view
+// over (cx, cz): pixels, those standing above the underside + `tolerance` before, those with
+// grass after, those standing above it after, and the highest grass after over the underside.
+struct Under {
+    size_t footprint = 0, above_before = 0, grass_after = 0, inside = 0;
+    double worst = -1e9;
+};
+
+Under ResponsiveTest::under(const grass_collider& c, const std::vector<float>& before, const std::vector<float>& after,
+                            double cx, double cz, double half, double tolerance) const {
+    Under r;
+    for (uint32_t py = 0; py < host->target().height; ++py) {
+        for (uint32_t px = 0; px < host->target().width; ++px) {
+            double x, z;
+            pixel_ground(cx, cz, half, px, py, &x, &z);
+            const double u = underside(c, x, z, 0.01);
+            if (!std::isfinite(u)) continue;
+            ++r.footprint;
+            const size_t i = size_t(py) * host->target().width + px;
+            r.above_before += before[i] != kNoGrass && before[i] > u + tolerance;
+            if (after[i] == kNoGrass) continue;
+            ++r.grass_after;
+            r.worst = std::max(r.worst, after[i] - u);
+            r.inside += after[i] > u + tolerance;
+        }
+    }
+    return r;
+}
+
 // A resting sphere and a level capsule: over each one's footprint the grass's top stays
 // below its underside (within the tolerance: a blade's width and the map's texels), where
 // before the collider came most of it stood above.
@@ -136,23 +170,8 @@ TEST_P(ResponsiveTest, NoBladeInsideRestingColliders) {
     const std::vector<float> after = heights(top_view(cx, cz, half, 0.0), &image);
     save(image, "pressed");
     for (const grass_collider& c : colliders) {
-        size_t footprint = 0, above_before = 0, grass_after = 0, inside = 0;
-        double worst = -1e9;
-        for (uint32_t py = 0; py < host->target().height; ++py) {
-            for (uint32_t px = 0; px < host->target().width; ++px) {
-                double x, z;
-                pixel_ground(cx, cz, half, px, py, &x, &z);
-                const double u = underside(c, x, z, 0.01);
-                if (!std::isfinite(u)) continue;
-                ++footprint;
-                const size_t i = size_t(py) * host->target().width + px;
-                above_before += before[i] != kNoGrass && before[i] > u + kTolerance;
-                if (after[i] == kNoGrass) continue;
-                ++grass_after;
-                worst = std::max(worst, after[i] - u);
-                inside += after[i] > u + kTolerance;
-            }
-        }
+        const auto [footprint, above_before, grass_after, inside, worst] =
+            under(c, before, after, cx, cz, half, kTolerance);
         const char* name = c.shape == GRASS_COLLIDER_SPHERE ? "sphere" : "capsule";
         ASSERT_GT(footprint, 100u) << name;
         // Not vacuous: the grass stood above the underside before, and is still drawn.
@@ -160,6 +179,35 @@ TEST_P(ResponsiveTest, NoBladeInsideRestingColliders) {
         EXPECT_GT(double(grass_after) / footprint, 0.3) << name << ": the pressed grass must still be drawn";
         EXPECT_EQ(inside, 0u) << name << ": grass up to " << worst << " m above the underside";
     }
+}
+
+// A new passage replaces what an earlier one left (docs/responsive.md): a deep dent recovers
+// for 3 s, then a sphere without velocity comes to rest over it. A second later no grass
+// stands inside the new sphere. Before the fix a collider without velocity continued a
+// passage on its first frame, so the older, deeper dent was kept and recovered on: a disc of
+// standing grass inside the new press.
+TEST_P(ResponsiveTest, ANewRestingSphereReplacesAnOlderDeeperDent) {
+    set_fine_map();
+    mechanics.recovery_time = 0.5f;
+    set_mechanics();
+    make_field(field_desc(8));
+    constexpr double kTolerance = 0.01;                           // metres, as NoBladeInsideRestingColliders
+    const grass_collider old_ball = sphere(1.0, 0.1, 1.05, 0.3f); // underside 0.2 m below the ground
+    const grass_collider ball = sphere(1.0, 0.25 + 0.03, 1.05, 0.25f);
+    const double cx = 1.0, cz = 1.05, half = 0.4;
+    ASSERT_EQ(grass_set_colliders(ctx, &old_ball, 1), GRASS_SUCCESS) << log;
+    heights(top_view(cx, cz, half, 10.0));
+    ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS) << log;
+    const std::vector<float> recovered = heights(top_view(cx, cz, half, 13.0));
+    ASSERT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS) << log;
+    heights(top_view(cx, cz, half, 13.0 + 1.0 / 30));
+    grass_host::Image image;
+    const std::vector<float> after = heights(top_view(cx, cz, half, 14.0), &image);
+    save(image, "new_passage");
+    const Under r = under(ball, recovered, after, cx, cz, half, kTolerance);
+    ASSERT_GT(r.footprint, 100u);
+    EXPECT_GT(double(r.above_before) / r.footprint, 0.2) << "the dent must have recovered before the new sphere came";
+    EXPECT_EQ(r.inside, 0u) << "grass up to " << r.worst << " m above the new sphere's underside";
 }
 
 // Recovery: once the collider has gone, the trail's depth decays as exp(-t / recovery_time).

@@ -51,6 +51,22 @@ TileRect tiles_of(const InteractionLevelUniforms& level, const double lo[2], con
 
 bool empty(const TileRect& r) { return r.x0 > r.x1 || r.z0 > r.z1; }
 
+// bin_colliders: whether `c` was at `before` (the last frame) where its sweep starts now.
+bool continues_passage(const grass_collider& c, const grass_collider* before, double dt) {
+    if (before == nullptr || before->shape != c.shape) return false;
+    for (int end = 0; end < (c.shape == GRASS_COLLIDER_CAPSULE ? 2 : 1); ++end) {
+        const double* now = end == 0 ? c.centre : c.end;
+        const double* then = end == 0 ? before->centre : before->end;
+        double d2 = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const double d = then[k] - (now[k] - double(c.velocity[k]) * dt);
+            d2 += d * d;
+        }
+        if (!(d2 < double(c.radius) * c.radius)) return false;
+    }
+    return true;
+}
+
 } // namespace
 
 grass_result validate_colliders(grass_context* ctx, const char* fn, const grass_collider* colliders, uint32_t count) {
@@ -86,13 +102,14 @@ grass_result validate_colliders(grass_context* ctx, const char* fn, const grass_
     return GRASS_SUCCESS;
 }
 
-uint64_t bin_colliders(const Vector<grass_collider>& colliders, const MapFrame& frame, double dt,
-                       DynamicsState* scratch, InteractionPlan* plan) {
+uint64_t bin_colliders(const Vector<grass_collider>& colliders, const Vector<grass_collider>& previous,
+                       const MapFrame& frame, double dt, DynamicsState* scratch, InteractionPlan* plan) {
     const uint32_t levels = plan->levels;
     Vector<TileRect>& rects = scratch->tile_rects;
     rects.clear();
     plan->colliders.clear();
-    for (const grass_collider& c : colliders) {
+    for (size_t i = 0; i < colliders.size(); ++i) {
+        const grass_collider& c = colliders[i];
         if (!(c.radius > 0.0f)) continue; // radius 0 touches nothing
         GpuCollider g{};
         to_map(frame, c.centre, g.a);
@@ -101,7 +118,7 @@ uint64_t bin_colliders(const Vector<grass_collider>& colliders, const MapFrame& 
         g.velocity[0] = static_cast<float>(dot3(vel, frame.u));
         g.velocity[1] = static_cast<float>(dot3(vel, frame.v));
         g.velocity[2] = static_cast<float>(dot3(vel, frame.up));
-        g.velocity[3] = 0.0f;
+        g.velocity[3] = continues_passage(c, i < previous.size() ? &previous[i] : nullptr, dt) ? 1.0f : 0.0f;
         g.a[3] = c.radius;
         g.b[3] = static_cast<float>(c.shape);
         // The swept footprint across up: both ends now and a step ago, grown by the radius.

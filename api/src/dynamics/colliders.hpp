@@ -30,7 +30,11 @@ struct MapFrame {
 // Converts the colliders that reach a level's window into plan->colliders (GpuCollider) and
 // fills plan->tile_offsets / tile_colliders of each of plan->levels levels (whose uniforms
 // are already set). Returns the number of colliders in the map.
-uint64_t bin_colliders(const Vector<grass_collider>& colliders, const MapFrame& frame, double dt,
-                       DynamicsState* scratch, InteractionPlan* plan);
+// A collider continues its passage (GpuCollider::velocity[3] = 1) when `previous` (the last
+// frame's colliders) has one of its shape at its index, each of whose ends lies within its
+// radius of where this frame's sweep starts (end - velocity x dt). Otherwise it is new: its
+// first frame, or moved without a velocity; its contacts replace what earlier passages left.
+uint64_t bin_colliders(const Vector<grass_collider>& colliders, const Vector<grass_collider>& previous,
+                       const MapFrame& frame, double dt, DynamicsState* scratch, InteractionPlan* plan);
 
 } // namespace grass

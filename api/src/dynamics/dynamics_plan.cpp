@@ -63,6 +63,7 @@ void commit_dynamics(grass_context* ctx) {
     state.has_time = true;
     state.previous_time = state.pending_time;
     state.map = state.pending_map;
+    state.previous_colliders.swap(state.pending_colliders); // no allocation: the copy was made while planning
 }
 
 } // namespace grass

@@ -31,6 +31,9 @@ struct DynamicsState {
     grass_wind_desc wind{};                              // sources points at `sources` below
     grass_wind_source sources[GRASS_MAX_WIND_SOURCES]{}; // the copied wind sources
     Vector<grass_collider> colliders;                    // copied by grass_set_colliders
+    // The colliders of the last frame that began (index i there is index i now): a collider
+    // continues its passage only where it was then (GpuCollider::velocity[3]).
+    Vector<grass_collider> previous_colliders;
     grass_interaction_desc interaction{};
     InteractionMapState map;
     bool has_time = false; // a frame has begun: previous_time holds its time
@@ -38,6 +41,7 @@ struct DynamicsState {
     // What the frame being planned commits once it has begun (commit_dynamics).
     double pending_time = 0.0;
     InteractionMapState pending_map;
+    Vector<grass_collider> pending_colliders; // this frame's colliders, previous_colliders once committed
     // Scratch of the binning (kept so that a frame allocates nothing once grown): the tile
     // rectangles of the colliders in the map, two per collider, and per-tile write cursors.
     Vector<TileRect> tile_rects;

@@ -79,6 +79,7 @@ void plan_interaction(const DynamicsState& state, const double camera[3], double
     FrameUniforms& fu = plan->frame;
     InteractionPlan& ip = plan->interaction;
     *next = state.map;
+    scratch->pending_colliders.assign(state.colliders.begin(), state.colliders.end());
     const bool exists = state.map.exists || !state.colliders.empty(); // made at the first frame with colliders
     plan->stats.colliders = state.colliders.size();
     if (!exists) return; // no map: levels 0, the uniforms stay zero
@@ -132,7 +133,7 @@ void plan_interaction(const DynamicsState& state, const double camera[3], double
     }
     next->exists = true;
     next->clear_pending = false;
-    plan->stats.colliders_in_map = bin_colliders(state.colliders, frame, dt, scratch, &ip);
+    plan->stats.colliders_in_map = bin_colliders(state.colliders, state.previous_colliders, frame, dt, scratch, &ip);
     plan->stats.interaction_texels = uint64_t(ip.levels) * n * n;
 }
 

@@ -62,7 +62,7 @@ void test_sphere(const GpuCollider& c, V2 p, float dt, Contact* best) {
     const V2 away = p - V2{cu, cv};
     const float d = length(away);
     if (!(d < r)) return;
-    const bool continues = length(p - from) < r;
+    const bool continues = c.velocity[3] > 0.5f && length(p - from) < r; // bin_colliders: not new
     offer(best, ch - std::sqrt(r * r - d * d), (1.0f - s) * dt, away, d, r, V2{c.velocity[0], c.velocity[1]},
           continues);
 }
@@ -89,7 +89,7 @@ void test_capsule(const GpuCollider& c, V2 p, float dt, float texel, Contact* be
         const V2 away = p - V2{q[0], q[1]};
         const float d = length(away);
         if (!(d < r)) continue;
-        continues = continues || k == 0;
+        continues = continues || (k == 0 && c.velocity[3] > 0.5f);
         offer(best, q[2] - std::sqrt(r * r - d * d), back, away, d, r, V2{c.velocity[0], c.velocity[1]}, continues);
     }
 }

@@ -115,7 +115,7 @@ inline uint32_t draw_slice_set(const TierDraw& draw) { return draw.kind == GRASS
 struct GpuCollider {
     float a[4];        // u, v, h of the centre (sphere) or one axis end (capsule); w = radius (m)
     float b[4];        // u, v, h of the capsule's other end (= a for a sphere); w = shape (grass_collider_shape)
-    float velocity[4]; // u, v, h components, m/s; w = unused
+    float velocity[4]; // u, v, h components, m/s; w = 1: the collider continues its passage (colliders.hpp), 0: new
 };
 static_assert(sizeof(GpuCollider) == 48, "GpuCollider must match interaction.comp");
 
