@@ -69,6 +69,12 @@ grass_vk_record_desc grass_default_vk_record_desc(void) {
     return d;
 }
 
+grass_vk_prepare_desc grass_default_vk_prepare_desc(void) {
+    grass_vk_prepare_desc d{};
+    d.type = GRASS_STRUCT_TYPE_VK_PREPARE_DESC;
+    return d;
+}
+
 grass_result grass_vk_create_context(uint32_t header_version, const grass_context_desc* desc,
                                      const grass_vk_desc* vk_desc, grass_context** out_context) {
     // vk_desc is checked by the factory, once the context can log.
@@ -76,18 +82,30 @@ grass_result grass_vk_create_context(uint32_t header_version, const grass_contex
                                  const_cast<grass_vk_desc*>(vk_desc), out_context);
 }
 
-grass_result grass_vk_prepare_frame(grass_context* ctx, void* command_buffer) {
-    const char* function = "grass_vk_prepare_frame";
+grass_result grass_vk_prepare(grass_context* ctx, const grass_vk_prepare_desc* prepare) {
+    const char* function = "grass_vk_prepare";
     if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
     return grass::guarded(ctx, function, [&] {
         VkBackend* backend = nullptr;
         grass_result r = check_frame_call(ctx, function, &backend);
         if (r != GRASS_SUCCESS) return r;
-        if (!command_buffer) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: command_buffer is NULL",
+        if (!prepare)
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: prepare is NULL", function);
+        if (grass::raw_enum(prepare->type) != GRASS_STRUCT_TYPE_VK_PREPARE_DESC) {
+            return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                             "%s: prepare->type is 0x%08x; expected GRASS_STRUCT_TYPE_VK_PREPARE_DESC (0x%08x)",
+                             function, static_cast<unsigned>(grass::raw_enum(prepare->type)),
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_PREPARE_DESC));
+        }
+        if (prepare->next) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: prepare->next must be NULL",
                              function);
         }
-        return backend->prepare_frame(static_cast<VkCommandBuffer>(command_buffer));
+        if (!prepare->command_buffer) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+                             "%s: prepare->command_buffer is NULL", function);
+        }
+        return backend->prepare_frame(static_cast<VkCommandBuffer>(prepare->command_buffer));
     });
 }
 

@@ -50,7 +50,7 @@ public:
     uint64_t dynamics_gpu_bytes() const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
 
-    // grass_vk_prepare_frame and grass_vk_record (arguments already checked).
+    // grass_vk_prepare and grass_vk_record (arguments already checked).
     grass_result prepare_frame(VkCommandBuffer cmd);
     grass_result record(VkCommandBuffer cmd);
 

@@ -51,7 +51,7 @@ public:
     // buffers are retired (frames up to `frame` may use them); the pipeline stays.
     void release(uint64_t frame);
     bool has_map() const { return levels_ > 0; }
-    // Records the pass of the frame prepare() last saw in `slot` (grass_vk_prepare_frame,
+    // Records the pass of the frame prepare() last saw in `slot` (grass_vk_prepare,
     // outside a render pass): see grass_vk.h for the barriers.
     void record(VkCommandBuffer cmd, uint32_t slot, const InteractionPlan& plan);
 

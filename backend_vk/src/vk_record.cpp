@@ -227,7 +227,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         if (!draw_ready(d, debug_view, &problem)) {
             return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_UPLOAD_NOT_RECORDED,
                               "grass_vk_record: a field drawn this frame (slot %u) waits for %s; call "
-                              "grass_vk_prepare_frame() with a command buffer that runs before this one, after "
+                              "grass_vk_prepare() with a command buffer that runs before this one, after "
                               "grass_begin_frame() and outside the render pass",
                               d.field_slot, problem);
         }

@@ -1,4 +1,4 @@
-// One batch of uploads recorded by grass_vk_prepare_frame: staging-buffer copies into
+// One batch of uploads recorded by grass_vk_prepare: staging-buffer copies into
 // device-local vertex/index buffers, design map images and slice array images, with the
 // barriers around them (image layouts UNDEFINED -> TRANSFER_DST -> SHADER_READ_ONLY, every
 // level and layer; transfer writes made visible to vertex input and shader reads); and

@@ -1,7 +1,7 @@
 // The headless Vulkan host: an instance with the validation layers when installed (every
 // warning and error is counted), one graphics queue, an offscreen sRGB colour + depth
 // target (multisampled with a resolve image when asked), a render pass or dynamic
-// rendering, and the frame around grass_vk_prepare_frame / grass_vk_record. It links the
+// rendering, and the frame around grass_vk_prepare / grass_vk_record. It links the
 // Vulkan loader; grass gets only vkGetInstanceProcAddr and the handles.
 //
 // GRASS_VK_DEVICE: pick the first physical device whose name contains this text.
@@ -928,11 +928,15 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     if (r != VK_SUCCESS) return host_failure("vkBeginCommandBuffer", r);
 
     // grass plans the frame, then records its uploads outside the pass and its draws in it.
-    // Once prepare_frame has recorded, the command buffer is submitted even when a later
+    // Once grass_vk_prepare has recorded, the command buffer is submitted even when a later
     // grass call fails: its uploads must run.
     grass_result result = grass_begin_frame(context, &view);
     const bool frame_begun = result == GRASS_SUCCESS;
-    if (frame_begun) result = grass_vk_prepare_frame(context, cmd_);
+    if (frame_begun) {
+        grass_vk_prepare_desc prepare = grass_default_vk_prepare_desc();
+        prepare.command_buffer = cmd_;
+        result = grass_vk_prepare(context, &prepare);
+    }
     begin_pass(cmd_);
     if (target_.ground) draw_ground(cmd_, view);
     if (meshes_) meshes_->record(cmd_, view, target_.width, target_.height);

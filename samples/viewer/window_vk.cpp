@@ -2,7 +2,7 @@
 // (validation layers on when installed and asked for), the device, the swapchain (sRGB,
 // recreated on resize), a render pass with a depth buffer (multisampled and resolved into
 // the swapchain image when MSAA is on) and two frames in flight. grass records with
-// grass_vk_prepare_frame / grass_vk_record in that pass, after the host's ground and meshes
+// grass_vk_prepare / grass_vk_record in that pass, after the host's ground and meshes
 // and before the overlay; a screenshot copies the swapchain image before it is presented.
 #include "ground.hpp"
 #include "mesh_drawer_vk.hpp"
@@ -855,7 +855,11 @@ grass_result VkWindow::draw_frame(grass_context* ctx, const grass_view_desc& vie
     // grass plans, records its uploads outside the pass and its draws inside, after the ground.
     grass_result result = grass_begin_frame(ctx, &view);
     const bool begun = result == GRASS_SUCCESS;
-    if (begun) result = grass_vk_prepare_frame(ctx, f.cmd);
+    if (begun) {
+        grass_vk_prepare_desc prepare = grass_default_vk_prepare_desc();
+        prepare.command_buffer = f.cmd;
+        result = grass_vk_prepare(ctx, &prepare);
+    }
     VkClearValue clears[2] = {};
     for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = desc_.scene.clear_color[c];
     clears[1].depthStencil = {1.0f, 0};

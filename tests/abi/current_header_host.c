@@ -35,7 +35,7 @@ int main(void) {
     const uint64_t unwritten = 0xababababababababull;
     int k;
 
-    CHECK(grass_library_version() == GRASS_HEADER_VERSION);
+    CHECK(grass_get_library_version() == GRASS_HEADER_VERSION);
     CHECK(grass_default_gl_desc().type == GRASS_STRUCT_TYPE_GL_DESC);
     CHECK(grass_default_vk_desc().type == GRASS_STRUCT_TYPE_VK_DESC);
     CHECK(grass_default_vk_record_desc().type == GRASS_STRUCT_TYPE_VK_RECORD_DESC);

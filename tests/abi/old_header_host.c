@@ -297,6 +297,13 @@ int main(void) {
     CHECK_OK(grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx));
     if (!ctx) return 1;
     CHECK(grass_context_backend(ctx) == GRASS_BACKEND_NONE);
+    {
+        /* grass_vk_prepare_frame (0.5: grass_vk_prepare with a desc) still resolves and
+         * refuses a context that is not a Vulkan one, naming the call it forwards to. */
+        int not_a_command_buffer = 0;
+        CHECK(grass_vk_prepare_frame(ctx, &not_a_command_buffer) == GRASS_ERROR_INVALID_STATE);
+        CHECK(strstr(grass_last_error(ctx), "grass_vk_prepare") != NULL);
+    }
     run_scene(ctx, 0);
     grass_destroy_context(ctx);
 

@@ -18,12 +18,12 @@ if ! "$cc" "${flags[@]}" -DGRASS_ENABLE_DEPRECATED -Wno-error=deprecated-declara
   echo "source_0_3_compiles: refused with GRASS_ENABLE_DEPRECATED"
   exit 1
 fi
-for pair in grass_context_backend:grass_get_context_backend grass_last_error:grass_get_last_error \
-  grass_gl_default_desc:grass_default_gl_desc grass_vk_default_desc:grass_default_vk_desc \
-  grass_vk_default_record_desc:grass_default_vk_record_desc; do
-  old=${pair%%:*}
-  new=${pair##*:}
-  if ! grep -q "$old was renamed $new in grass 0.4" "$scratch/with.log"; then
+for rename in grass_context_backend:grass_get_context_backend:0.4 grass_last_error:grass_get_last_error:0.4 \
+  grass_gl_default_desc:grass_default_gl_desc:0.4 grass_vk_default_desc:grass_default_vk_desc:0.4 \
+  grass_vk_default_record_desc:grass_default_vk_record_desc:0.4 \
+  grass_library_version:grass_get_library_version:0.5 grass_vk_prepare_frame:grass_vk_prepare:0.5; do
+  IFS=: read -r old new version <<<"$rename"
+  if ! grep -q "$old was renamed $new in grass $version" "$scratch/with.log"; then
     cat "$scratch/with.log"
     echo "source_0_3_compiles: no deprecation warning for $old naming $new"
     exit 1
@@ -40,7 +40,7 @@ if "$cc" "${flags[@]}" "$source" 2>"$scratch/without.log"; then
   exit 1
 fi
 for old in grass_context_backend grass_last_error grass_gl_default_desc grass_vk_default_desc \
-  grass_vk_default_record_desc; do
+  grass_vk_default_record_desc grass_library_version grass_vk_prepare_frame; do
   if ! grep -q "$old was renamed .* define GRASS_ENABLE_DEPRECATED" "$scratch/without.log"; then
     cat "$scratch/without.log"
     echo "source_0_3_compiles: without the macro, no error for $old that names GRASS_ENABLE_DEPRECATED"

@@ -5,7 +5,8 @@
  * 0.3 source changes is the GL loader's: its loader returns void*, as 0.3's type did, and
  * goes to the desc through grass_gl_set_loader_0_3 instead of an assignment (no cast).
  * ctest abi_source_0_3_host runs it; abi_source_0_3_compiles checks that it warns with the
- * macro and is refused without it (tests/abi/source_0_3_compiles.sh).
+ * macro and is refused without it (tests/abi/source_0_3_compiles.sh). It also uses the two
+ * names that 0.3 and 0.4 shared and 0.5 renamed (the headers' "0.4 names" blocks).
  */
 #ifdef GRASS_SOURCE_TEST_EGL
 #    define _GNU_SOURCE 1 /* keep_drivers_resident.h: dl_iterate_phdr, RTLD_NODELETE */
@@ -116,6 +117,13 @@ int main(void) {
     CHECK(grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx) == GRASS_SUCCESS);
     if (!ctx) return 1;
     CHECK(grass_context_backend(ctx) == GRASS_BACKEND_NONE);
+    /* Renamed in 0.5 (the "0.4 names" blocks): grass_library_version, and
+     * grass_vk_prepare_frame, whose command buffer 0.5 passes in a desc. */
+    CHECK(grass_library_version() == GRASS_HEADER_VERSION);
+    {
+        int not_a_command_buffer = 0;
+        CHECK(grass_vk_prepare_frame(ctx, &not_a_command_buffer) == GRASS_ERROR_INVALID_STATE);
+    }
     refuse_and_report(ctx);
     grass_destroy_context(ctx);
 #ifdef GRASS_SOURCE_TEST_EGL

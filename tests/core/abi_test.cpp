@@ -1,5 +1,6 @@
 // The ABI promise (grass.h, "ABI and versions"): accepted header versions, getters that write
-// only the caller's struct size, the fields grown in 0.4, the id helpers and the 0.3 names.
+// only the caller's struct size, the fields grown in 0.4, the id helpers and the 0.3 names
+// (and the 0.4 names renamed in 0.5).
 // The 0.3 names: exported for binaries built against grass.h 0.3, declared (deprecated) to
 // sources that define GRASS_ENABLE_DEPRECATED; this test calls them on purpose.
 #define GRASS_ENABLE_DEPRECATED 1
@@ -62,9 +63,9 @@ TEST(HeaderVersion, From03ToTheLibrarysOwnIsAccepted) {
         EXPECT_EQ(r.result, GRASS_SUCCESS) << "0." << minor << ": " << r.message;
         grass_destroy_context(ctx);
     }
-    EXPECT_EQ(grass_library_version(), GRASS_HEADER_VERSION);
-    EXPECT_EQ(grass_library_version() >> 22, 0u);
-    EXPECT_EQ((grass_library_version() >> 12) & 0x3ffu, 5u);
+    EXPECT_EQ(grass_get_library_version(), GRASS_HEADER_VERSION);
+    EXPECT_EQ(grass_get_library_version() >> 22, 0u);
+    EXPECT_EQ((grass_get_library_version() >> 12) & 0x3ffu, 5u);
 }
 
 TEST(OutStructSizes, TheCurrentHeaderGetsWholeStructsAnd03GetsItsOwn) {
@@ -247,6 +248,17 @@ TEST_F(CoreTest, The03NamesStillAnswer) {
     EXPECT_EQ(grass_vk_default_desc().frames_in_flight, grass_default_vk_desc().frames_in_flight);
     EXPECT_EQ(grass_vk_default_record_desc().type, GRASS_STRUCT_TYPE_VK_RECORD_DESC);
     EXPECT_EQ(grass_default_vk_record_desc().type, GRASS_STRUCT_TYPE_VK_RECORD_DESC);
+}
+
+// Renamed in 0.5 (the headers' "0.4 names" blocks): the old symbols answer as the new ones.
+TEST_F(CoreTest, The04NamesStillAnswer) {
+    EXPECT_EQ(grass_library_version(), grass_get_library_version());
+    int not_a_command_buffer = 0;
+    EXPECT_EQ(grass_vk_prepare_frame(nullptr, &not_a_command_buffer), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(grass_vk_prepare_frame(ctx, &not_a_command_buffer), GRASS_ERROR_INVALID_STATE)
+        << "forwarded to grass_vk_prepare, which refuses a context that is not a Vulkan one";
+    EXPECT_NE(std::strstr(grass_get_last_error(ctx), "grass_vk_prepare:"), nullptr) << grass_get_last_error(ctx);
+    EXPECT_EQ(grass_default_vk_prepare_desc().type, GRASS_STRUCT_TYPE_VK_PREPARE_DESC);
 }
 
 } // namespace

@@ -242,7 +242,7 @@ TEST(ContextCreation, AHeaderOfAnotherMajorVersionIsRefused) {
     EXPECT_EQ(seen, GRASS_MSG_VERSION_MISMATCH);
     d.type = GRASS_STRUCT_TYPE_FIELD_DESC;
     EXPECT_EQ(grass_create_context(GRASS_HEADER_VERSION, &d, &ctx), GRASS_ERROR_WRONG_STRUCT_TYPE);
-    EXPECT_EQ(grass_library_version(), GRASS_HEADER_VERSION);
+    EXPECT_EQ(grass_get_library_version(), GRASS_HEADER_VERSION);
 }
 
 TEST(ResultStrings, EveryCodeHasItsName) {

@@ -135,6 +135,7 @@ TEST_F(DesignMapTest, TheMapStackRefusesWrongRolesScalesAndTransforms) {
     EXPECT_EQ(ctx->fields.get(f.index - 1)->maps.features, 0x1fu);
     // Maps in use cannot go; after the field, they can.
     EXPECT_EQ(grass_destroy_map(ctx, r), GRASS_ERROR_IN_USE);
+    EXPECT_EQ(last_id(), GRASS_MSG_MAP_IN_USE) << "a map's own id, not the patch's";
     EXPECT_EQ(grass_destroy_field(ctx, f), GRASS_SUCCESS);
     EXPECT_EQ(grass_destroy_map(ctx, r), GRASS_SUCCESS);
     EXPECT_EQ(grass_destroy_map(ctx, r), GRASS_ERROR_INVALID_HANDLE) << "stale";

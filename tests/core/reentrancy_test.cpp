@@ -126,10 +126,12 @@ std::vector<Call> calls() {
              const grass_vk_record_desc r = grass_default_vk_record_desc();
              return grass_vk_record(o.ctx, &r);
          }},
-        {"grass_vk_prepare_frame",
+        {"grass_vk_prepare",
          [](Objects& o) {
              int dummy = 0;
-             return grass_vk_prepare_frame(o.ctx, &dummy);
+             grass_vk_prepare_desc p = grass_default_vk_prepare_desc();
+             p.command_buffer = &dummy;
+             return grass_vk_prepare(o.ctx, &p);
          }},
         {"grass_destroy_context",
          [](Objects& o) {

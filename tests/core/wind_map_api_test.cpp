@@ -85,6 +85,7 @@ TEST_F(WindMapApiTest, AWindMapPlansItsVariantAndRemovingItPlansStillGrass) {
     EXPECT_EQ(u.wind_map_v[2], -1.0f);
     // In use: the map stays.
     EXPECT_EQ(grass_destroy_map(ctx, wind), GRASS_ERROR_IN_USE);
+    EXPECT_EQ(last_id(), GRASS_MSG_MAP_IN_USE);
     EXPECT_NE(last_message().find("still used"), std::string::npos) << last_message();
     // Removed by NULL, and by a null map id: the still plan again, and the map can go.
     ASSERT_EQ(grass_set_field_wind_map(ctx, field, nullptr), GRASS_SUCCESS) << last_message();

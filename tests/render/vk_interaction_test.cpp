@@ -1,13 +1,14 @@
 // The interaction pass on Vulkan (grass_vk.h, docs/responsive.md), through grass's own
 // dispatch table (vk_intercept.hpp counts the dispatches grass records):
-// - grass_vk_prepare_frame records one dispatch per map level for a frame with colliders, and
+// - grass_vk_prepare records one dispatch per map level for a frame with colliders, and
 //   none for a frame of still grass, which holds no responsive GPU memory; the frame with a
 //   collider shows its trail where the collider is and nothing changes far from it; once the
 //   map is dropped (grass_set_interaction) no pass runs and its memory is given back;
 // - the barriers of grass_vk.h satisfy the synchronization validation of
 //   VK_LAYER_KHRONOS_validation over frames that write and read the map, remake it and
 //   scroll it;
-// - grass_vk_record refuses a frame whose pass prepare_frame did not record.
+// - grass_vk_record refuses a frame whose pass grass_vk_prepare did not record;
+// - grass_vk_prepare refuses a bad desc, naming the argument, and records nothing.
 #include "render_fixture.hpp"
 #include "vk_intercept.hpp"
 
@@ -154,6 +155,44 @@ TEST(VkInteraction, PrepareFrameRecordsThePassOnlyForFramesWithColliders) {
         grass_host::write_png(std::string(dir) + "/vk_interaction_still.png", still, nullptr);
         grass_host::write_png(std::string(dir) + "/vk_interaction_pressed.png", pressed, nullptr);
     }
+}
+
+// grass_vk_prepare's desc (0.5; grass_vk_prepare_frame took the command buffer alone) is
+// checked as every desc: each refusal names the argument, records nothing, and the frame's
+// pass stays pending (grass_vk_record still refuses the frame).
+TEST(VkInteraction, PrepareRefusesABadDescAndRecordsNothing) {
+    Scene s;
+    make_scene(&s);
+    ASSERT_FALSE(HasFatalFailure());
+    ASSERT_EQ(set_ball(s.ctx, kBall[0], 0.0f), GRASS_SUCCESS) << s.log;
+    grass_view_desc v = scene_view(s, 1.0);
+    ASSERT_EQ(grass_begin_frame(s.ctx, &v), GRASS_SUCCESS) << s.log;
+    const int dispatches = vi::live().dispatches;
+    const grass_vk_prepare_desc valid = grass_default_vk_prepare_desc();
+    EXPECT_EQ(valid.type, GRASS_STRUCT_TYPE_VK_PREPARE_DESC);
+    EXPECT_EQ(valid.next, nullptr);
+    EXPECT_EQ(valid.command_buffer, nullptr);
+    void* never_used = reinterpret_cast<void*>(uintptr_t(1));
+    EXPECT_EQ(grass_vk_prepare(s.ctx, nullptr), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(s.log.find("grass_vk_prepare: prepare is NULL"), std::string::npos) << s.log;
+    grass_vk_prepare_desc p = valid;
+    p.type = GRASS_STRUCT_TYPE_VK_RECORD_DESC;
+    p.command_buffer = never_used;
+    EXPECT_EQ(grass_vk_prepare(s.ctx, &p), GRASS_ERROR_WRONG_STRUCT_TYPE);
+    EXPECT_NE(s.log.find("prepare->type is 0x67720202"), std::string::npos) << s.log;
+    p = valid;
+    p.next = &valid;
+    p.command_buffer = never_used;
+    EXPECT_EQ(grass_vk_prepare(s.ctx, &p), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(s.log.find("prepare->next must be NULL"), std::string::npos) << s.log;
+    p = valid;
+    EXPECT_EQ(grass_vk_prepare(s.ctx, &p), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(s.log.find("prepare->command_buffer is NULL"), std::string::npos) << s.log;
+    EXPECT_EQ(vi::live().dispatches, dispatches) << "a refused prepare records nothing";
+    grass_vk_record_desc record = grass_default_vk_record_desc();
+    record.command_buffer = never_used;
+    EXPECT_EQ(grass_vk_record(s.ctx, &record), GRASS_ERROR_INVALID_STATE) << "the pass is still pending";
+    EXPECT_EQ(grass_end_frame(s.ctx), GRASS_SUCCESS);
 }
 
 TEST(VkInteraction, RecordRefusesAFrameWhosePassWasNotPrepared) {

@@ -110,7 +110,7 @@ extern "C" {
 #endif
 
 /* The version of the library that is linked (same encoding as GRASS_HEADER_VERSION). */
-GRASS_API uint32_t grass_library_version(void);
+GRASS_API uint32_t grass_get_library_version(void);
 
 /* ---- Results ---------------------------------------------------------------------- */
 
@@ -145,6 +145,7 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_GL_DESC = 0x67720101,
     GRASS_STRUCT_TYPE_VK_DESC = 0x67720201,
     GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202,
+    GRASS_STRUCT_TYPE_VK_PREPARE_DESC = 0x67720203, /* 0.5 */
     /* 0.5: responsive grass */
     GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
@@ -186,8 +187,9 @@ typedef enum grass_message_id {
     GRASS_MSG_STALE_HANDLE = 200,
     GRASS_MSG_FOREIGN_HANDLE = 201,
     GRASS_MSG_NULL_HANDLE = 202,
-    GRASS_MSG_PATCH_IN_USE = 203, /* also: a map still used by a field */
+    GRASS_MSG_PATCH_IN_USE = 203, /* a patch still used by a field (before 0.5 also a map) */
     GRASS_MSG_TOO_MANY_OBJECTS = 204,
+    GRASS_MSG_MAP_IN_USE = 205, /* 0.5: a map still used by a field */
     /* 3xx: call order */
     GRASS_MSG_FRAME_NOT_BEGUN = 300,
     GRASS_MSG_FRAME_ALREADY_BEGUN = 301,
@@ -369,7 +371,7 @@ typedef struct grass_patch_desc {
 GRASS_API grass_patch_desc grass_default_patch_desc(void);
 
 /* Generates the patch. GPU contexts upload it at once (GL: the host's GL context must be
- * current; Vulkan: it is copied to the device by the next grass_vk_prepare_frame()). */
+ * current; Vulkan: it is copied to the device by the next grass_vk_prepare()). */
 GRASS_API grass_result grass_create_patch(grass_context* context, const grass_patch_desc* desc,
                                           grass_patch_id* out_patch);
 
@@ -428,7 +430,7 @@ GRASS_API grass_result grass_create_map(grass_context* context, const grass_map_
  * row_pitch applies). Paint or mow grass at run time: the next frame plans and draws with
  * the new texels; nothing outside the rectangle changes. Not between grass_begin_frame and
  * grass_end_frame. GL: the host's GL context must be current. Vulkan: the copy is recorded
- * by the next grass_vk_prepare_frame(). */
+ * by the next grass_vk_prepare(). */
 GRASS_API grass_result grass_update_map(grass_context* context, grass_map_id map, uint32_t x, uint32_t y,
                                         const grass_map_desc* region);
 
@@ -790,7 +792,7 @@ GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass
  * *out_available = 0 until a timed frame has finished on the GPU. Frames that draw
  * nothing or draw GRASS_VIEW_FLAG_DEBUG_CELLS are not timed. Several draw calls of one
  * frame (grass_gl_render, grass_vk_record) add up. GL: the host's GL context must be
- * current; Vulkan: call grass_vk_prepare_frame every frame (it resets the queries). */
+ * current; Vulkan: call grass_vk_prepare every frame (it resets the queries). */
 GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, double out_ms[GRASS_TIER_KIND_COUNT],
                                              grass_bool* out_available);
 
@@ -801,7 +803,7 @@ GRASS_API grass_result grass_get_tier_gpu_ms(const grass_context* context, doubl
  * where blades and slices are drawn, and what colliders leave behind (pressed grass and its
  * recovery) is kept in an *interaction map*: a few texels per metre around the camera,
  * toroidally addressed, updated on the GPU once per frame (GL: by the frame's first
- * grass_gl_render; Vulkan: by grass_vk_prepare_frame). Everything here is optional: with
+ * grass_gl_render; Vulkan: by grass_vk_prepare). Everything here is optional: with
  * no wind, no colliders and no gravity change, the shaders and GPU memory are those of
  * still grass. Each tier draws the same state: blades follow Jahrmann's three control
  * points, volume and image tiers shear their slice lookups as bakay's length-preserving
@@ -1071,6 +1073,28 @@ GRASS_RENAMED_IN_0_4(grass_last_error, grass_get_last_error)
 GRASS_API const char* grass_last_error(const grass_context* context);
 #endif
 /* ---- 0.3 names (end) -------------------------------------------------------------------- */
+
+/* ---- 0.4 names (begin) ------------------------------------------------------------------
+ * Functions renamed in 0.5, in the 0.3 block's way: the library still exports the 0.4
+ * symbols; sources get them by defining GRASS_ENABLE_DEPRECATED (with a deprecation warning
+ * that names the new name), and without the macro a use is a compile error that says so. */
+#if defined(GRASS_ENABLE_DEPRECATED)
+#    define GRASS_RENAMED_IN_0_5(old_name, new_name) \
+        GRASS_DEPRECATED(#old_name " was renamed " #new_name " in grass 0.5 (docs/migrating.md)")
+#elif defined(__has_attribute)
+#    if __has_attribute(unavailable)
+#        define GRASS_RENAMED_IN_0_5(old_name, new_name)                                                      \
+            __attribute__((unavailable(#old_name " was renamed " #new_name                                    \
+                                                 " in grass 0.5; define GRASS_ENABLE_DEPRECATED to keep the " \
+                                                 "0.4 name (docs/migrating.md)")))
+#    endif
+#endif
+
+#if defined(GRASS_RENAMED_IN_0_5)
+GRASS_RENAMED_IN_0_5(grass_library_version, grass_get_library_version)
+GRASS_API uint32_t grass_library_version(void);
+#endif
+/* ---- 0.4 names (end) -------------------------------------------------------------------- */
 
 #ifdef __cplusplus
 } /* extern "C" */

@@ -11,7 +11,7 @@
  *
  * Per frame:
  *   grass_begin_frame(ctx, &view);            plan (CPU only)
- *   grass_vk_prepare_frame(ctx, cmd);         outside a render pass: uploads + barriers
+ *   grass_vk_prepare(ctx, &prepare);          outside a render pass: uploads + barriers
  *   ... host begins its render pass ...
  *   grass_vk_record(ctx, &record);            inside the pass, in its first subpass
  *   ... host ends the pass, submits ...
@@ -67,7 +67,7 @@ GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const gr
  * The interaction pass (responsive grass, docs/responsive.md): the interaction map is one
  * RGBA32F image per level, N x N texels, shared by every frame in flight (it persists from
  * frame to frame), always in VK_IMAGE_LAYOUT_GENERAL. For a frame with colliders or a trail
- * prepare_frame records, after the uploads:
+ * grass_vk_prepare records, after the uploads:
  *   1. Only the first time after the map is made (or remade by grass_set_interaction): a
  *      barrier UNDEFINED -> GENERAL (TOP_OF_PIPE -> TRANSFER, access 0 -> TRANSFER_WRITE)
  *      and vkCmdClearColorImage of each level to the cleared texel.
@@ -87,7 +87,17 @@ GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const gr
  * queue of vk_desc.queue_family, in frame order. The device needs nothing beyond Vulkan 1.1
  * core for it (storage images of a declared format, storage buffers in the vertex stage
  * read only). */
-GRASS_API grass_result grass_vk_prepare_frame(grass_context* context, void* command_buffer);
+typedef struct grass_vk_prepare_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_PREPARE_DESC */
+    const void* next;       /* NULL */
+    void* command_buffer;   /* VkCommandBuffer outside any render pass */
+} grass_vk_prepare_desc;
+
+/* 0.5 */
+GRASS_API grass_vk_prepare_desc grass_default_vk_prepare_desc(void);
+
+/* 0.5: replaces grass_vk_prepare_frame(context, command_buffer) (docs/migrating.md). */
+GRASS_API grass_result grass_vk_prepare(grass_context* context, const grass_vk_prepare_desc* prepare);
 
 typedef struct grass_vk_record_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_RECORD_DESC */
@@ -97,9 +107,9 @@ typedef struct grass_vk_record_desc {
 
 GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);
 
-/* Records the draws of the begun frame. Binds its own pipeline and descriptor sets (on
- * lavapipe also a push constant of its own pipeline layout) and sets viewport and scissor
- * from the view; the host must rebind its own state after. */
+/* Records the draws of the begun frame. Binds its own pipeline and descriptor sets, may
+ * set push constants of its own pipeline layout, and sets viewport and scissor from the
+ * view; the host must rebind its own state after. */
 GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc* record);
 
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */
@@ -110,6 +120,13 @@ GRASS_RENAMED_IN_0_4(grass_vk_default_record_desc, grass_default_vk_record_desc)
 GRASS_API grass_vk_record_desc grass_vk_default_record_desc(void);
 #endif
 /* ---- 0.3 names (end) -------------------------------------------------------------------- */
+
+/* ---- 0.4 names (begin): see grass.h's block of the same name ----------------------------- */
+#if defined(GRASS_RENAMED_IN_0_5)
+GRASS_RENAMED_IN_0_5(grass_vk_prepare_frame, grass_vk_prepare)
+GRASS_API grass_result grass_vk_prepare_frame(grass_context* context, void* command_buffer);
+#endif
+/* ---- 0.4 names (end) -------------------------------------------------------------------- */
 
 #ifdef __cplusplus
 }

@@ -45,6 +45,12 @@ GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void) {
     d.type = GRASS_STRUCT_TYPE_VK_RECORD_DESC;
     return d;
 }
+GRASS_API grass_vk_prepare_desc grass_default_vk_prepare_desc(void) {
+    grass_vk_prepare_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_VK_PREPARE_DESC;
+    return d;
+}
 GRASS_API grass_result grass_vk_create_context(uint32_t, const grass_context_desc* desc, const grass_vk_desc*,
                                                grass_context**) {
     if (desc && desc->log_fn) {
@@ -53,11 +59,10 @@ GRASS_API grass_result grass_vk_create_context(uint32_t, const grass_context_des
     }
     return GRASS_ERROR_UNSUPPORTED;
 }
-GRASS_API grass_result grass_vk_prepare_frame(grass_context* context, void*) {
+GRASS_API grass_result grass_vk_prepare(grass_context* context, const grass_vk_prepare_desc*) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
-    return context->fail(
-        GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
-        "grass_vk_prepare_frame: the context is not a Vulkan context (this build has no Vulkan backend)");
+    return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+                         "grass_vk_prepare: the context is not a Vulkan context (this build has no Vulkan backend)");
 }
 GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc*) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;

@@ -210,7 +210,7 @@ grass_result make_null_backend(grass_context* ctx, void*, Backend** out) {
 
 extern "C" {
 
-GRASS_API uint32_t grass_library_version(void) { return GRASS_HEADER_VERSION; }
+GRASS_API uint32_t grass_get_library_version(void) { return GRASS_HEADER_VERSION; }
 
 GRASS_API const char* grass_result_string(grass_result result) {
     // A C host may pass any int: read it as one (raw_enum.hpp).

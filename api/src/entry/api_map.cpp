@@ -156,7 +156,7 @@ GRASS_API grass_result grass_destroy_map(grass_context* context, grass_map_id ma
         const uint32_t slot = map.index - 1;
         const uint32_t users = context->maps.get(slot)->field_users;
         if (users > 0) {
-            return context->fail(GRASS_ERROR_IN_USE, GRASS_MSG_PATCH_IN_USE,
+            return context->fail(GRASS_ERROR_IN_USE, GRASS_MSG_MAP_IN_USE,
                                  "%s: map (index %u) is still used by %u field(s); destroy them first", fn, map.index,
                                  users);
         }

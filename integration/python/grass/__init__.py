@@ -21,6 +21,7 @@ import contextlib
 import ctypes
 import numbers
 import threading
+import warnings
 
 from . import _callbacks, _checks, _ffi, _pixels
 from ._errors import ArgumentError, ClosedError, GrassError, MessageId, Result, short
@@ -501,11 +502,19 @@ class Context:
         """grass_gl_render: draws the begun frame into the bound GL draw framebuffer."""
         self._call("Context.render_gl", lib.grass_gl_render)
 
+    def vk_prepare(self, command_buffer):
+        """grass_vk_prepare into `command_buffer`, a raw VkCommandBuffer as an int, outside any
+        render pass."""
+        where = "Context.vk_prepare"
+        prepare = lib.grass_default_vk_prepare_desc()
+        prepare.command_buffer = _checks.integer(where, "command_buffer", command_buffer, 0, 2 ** 64 - 1) or None
+        self._call(where, lib.grass_vk_prepare, ctypes.byref(prepare))
+
     def vk_prepare_frame(self, command_buffer):
-        """grass_vk_prepare_frame: `command_buffer` a raw VkCommandBuffer as an int."""
-        where = "Context.vk_prepare_frame"
-        self._call(where, lib.grass_vk_prepare_frame,
-                   _checks.integer(where, "command_buffer", command_buffer, 0, 2 ** 64 - 1) or None)
+        """The 0.4 name of vk_prepare (grass_vk_prepare_frame became grass_vk_prepare in 0.5)."""
+        warnings.warn("Context.vk_prepare_frame was renamed Context.vk_prepare in grass 0.5", DeprecationWarning,
+                      stacklevel=2)
+        self.vk_prepare(command_buffer)
 
     def vk_record(self, command_buffer):
         """grass_vk_record into `command_buffer`, a raw VkCommandBuffer as an int."""

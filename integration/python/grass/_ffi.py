@@ -44,6 +44,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_VIEW_DESC": 0x67720005, "GRASS_STRUCT_TYPE_GRASS_TYPE_DESC": 0x67720006,
         "GRASS_STRUCT_TYPE_QUALITY_DESC": 0x67720007, "GRASS_STRUCT_TYPE_GL_DESC": 0x67720101,
         "GRASS_STRUCT_TYPE_VK_DESC": 0x67720201, "GRASS_STRUCT_TYPE_VK_RECORD_DESC": 0x67720202,
+        "GRASS_STRUCT_TYPE_VK_PREPARE_DESC": 0x67720203,
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
         "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_WIND_MAP_DESC": 0x6772000B,
         "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C,
@@ -57,7 +58,7 @@ ENUMS = {
         "GRASS_MSG_BAD_ENUM": 109, "GRASS_MSG_ZERO_VECTOR": 110, "GRASS_MSG_MAP_ROLE": 111,
         "GRASS_MSG_MAP_REGION": 112, "GRASS_MSG_IN_GRASS_TYPE": 113,
         "GRASS_MSG_STALE_HANDLE": 200, "GRASS_MSG_FOREIGN_HANDLE": 201, "GRASS_MSG_NULL_HANDLE": 202,
-        "GRASS_MSG_PATCH_IN_USE": 203, "GRASS_MSG_TOO_MANY_OBJECTS": 204,
+        "GRASS_MSG_PATCH_IN_USE": 203, "GRASS_MSG_TOO_MANY_OBJECTS": 204, "GRASS_MSG_MAP_IN_USE": 205,
         "GRASS_MSG_FRAME_NOT_BEGUN": 300, "GRASS_MSG_FRAME_ALREADY_BEGUN": 301, "GRASS_MSG_WRONG_BACKEND": 302,
         "GRASS_MSG_UPLOAD_NOT_RECORDED": 303, "GRASS_MSG_REENTRANT_CALL": 304,
         "GRASS_MSG_VERSION_MISMATCH": 400, "GRASS_MSG_DEVICE_UNSUPPORTED": 401,
@@ -284,6 +285,10 @@ class grass_vk_record_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("command_buffer", c_void_p)]
 
 
+class grass_vk_prepare_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("command_buffer", c_void_p)]
+
+
 STRUCTS = {name: cls for name, cls in globals().items()
            if isinstance(cls, type) and issubclass(cls, Structure) and name.startswith("grass_")}
 
@@ -293,7 +298,7 @@ _ctx = c_void_p  # grass_context*, opaque
 _P = POINTER
 FUNCTIONS = {
     # grass.h
-    "grass_library_version": (c_uint32, []),
+    "grass_get_library_version": (c_uint32, []),
     "grass_result_string": (c_char_p, [grass_enum]),
     "grass_default_context_desc": (grass_context_desc, []),
     "grass_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(_ctx)]),
@@ -347,7 +352,8 @@ FUNCTIONS = {
     # grass_vk.h
     "grass_default_vk_desc": (grass_vk_desc, []),
     "grass_vk_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_vk_desc), _P(_ctx)]),
-    "grass_vk_prepare_frame": (grass_enum, [_ctx, c_void_p]),
+    "grass_default_vk_prepare_desc": (grass_vk_prepare_desc, []),
+    "grass_vk_prepare": (grass_enum, [_ctx, _P(grass_vk_prepare_desc)]),
     "grass_default_vk_record_desc": (grass_vk_record_desc, []),
     "grass_vk_record": (grass_enum, [_ctx, _P(grass_vk_record_desc)]),
 }
@@ -388,7 +394,7 @@ def load_library():
         fn = getattr(lib, name)
         fn.restype = restype
         fn.argtypes = argtypes
-    version = lib.grass_library_version()
+    version = lib.grass_get_library_version()
     if version >> 22 != GRASS_VERSION_MAJOR or ((version >> 12) & 0x3FF) < GRASS_VERSION_MINOR:
         raise OSError(f"{lib._name} is version {version >> 22}.{(version >> 12) & 0x3FF}; this binding needs "
                       f"{GRASS_VERSION_MAJOR}.{GRASS_VERSION_MINOR} or a later minor version")

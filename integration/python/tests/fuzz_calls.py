@@ -242,7 +242,7 @@ class Sequence:
 
     def op_vk(self):
         ctx = self.context() or grass.Context()
-        getattr(ctx, self.r.choice(["vk_record", "vk_prepare_frame"]))(self.integer(0, 2 ** 20))
+        getattr(ctx, self.r.choice(["vk_record", "vk_prepare"]))(self.integer(0, 2 ** 20))
 
     def op_stats(self):
         ctx = self.context() or grass.Context()

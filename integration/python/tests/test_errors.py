@@ -167,6 +167,18 @@ def test_arguments_are_checked_before_ctypes_converts_them():
         raises(lambda: ctx.vk_record(None), "command_buffer", "None")
 
 
+def test_the_04_name_of_vk_prepare_warns_and_calls_it():
+    """grass_vk_prepare_frame became grass_vk_prepare (a desc) in 0.5: Context.vk_prepare_frame
+    still works, with a DeprecationWarning, and reaches grass_vk_prepare (here refused: the
+    context is no Vulkan context)."""
+    with grass.Context() as ctx:
+        e = raises(lambda: ctx.vk_prepare(1), "grass_vk_prepare")
+        assert e.message_id == grass.MessageId.GRASS_MSG_WRONG_BACKEND
+        with pytest.warns(DeprecationWarning, match="vk_prepare_frame was renamed"):
+            raises(lambda: ctx.vk_prepare_frame(1), "grass_vk_prepare")
+        raises(lambda: ctx.vk_prepare(None), "command_buffer", "None")
+
+
 def test_cameras_that_cannot_be_built_are_refused():
     raises(lambda: grass.view_desc(eye=(1, 2, 3), target=(1, 2, 3), size=(64, 64)), "eye", "target", "(1, 2, 3)")
     raises(lambda: grass.view_desc(eye=(0, 10, 0), target=(0, 0, 0), size=(64, 64)), "up")

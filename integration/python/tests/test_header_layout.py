@@ -19,10 +19,12 @@ HEADERS = ["grass.h", "grass_gl.h", "grass_vk.h"]
 
 def _source():
     text = "\n".join(open(os.path.join(INCLUDE, "grass", h), encoding="utf-8").read() for h in HEADERS)
-    # The "0.3 names" blocks declare old names for sources only (GRASS_ENABLE_DEPRECATED);
-    # the binding binds the current names.
+    # The "0.3 names" and "0.4 names" blocks declare old names for sources only
+    # (GRASS_ENABLE_DEPRECATED); the binding binds the current names.
     text, blocks = re.subn(r"/\* ---- 0\.3 names \(begin\).*?/\* ---- 0\.3 names \(end\)[^\n]*", " ", text, flags=re.S)
     assert blocks == len(HEADERS), "each header has one 0.3 names block"
+    text, blocks = re.subn(r"/\* ---- 0\.4 names \(begin\).*?/\* ---- 0\.4 names \(end\)[^\n]*", " ", text, flags=re.S)
+    assert blocks == 2, "grass.h and grass_vk.h have a 0.4 names block"
     text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
     return re.sub(r"//[^\n]*", " ", text)
 
@@ -187,4 +189,4 @@ def test_the_library_exports_every_function():
     import grass
     for name in _ffi.FUNCTIONS:
         assert hasattr(grass.lib, name)
-    assert grass.lib.grass_library_version() >> 12 == _ffi.GRASS_HEADER_VERSION >> 12
+    assert grass.lib.grass_get_library_version() >> 12 == _ffi.GRASS_HEADER_VERSION >> 12

@@ -99,7 +99,9 @@ bool VkFieldRenderer::create_context(const grass_context_desc& desc, QString* er
 }
 
 grass_result VkFieldRenderer::prepare(QString* error) {
-    const grass_result r = grass_vk_prepare_frame(context_, command_buffer());
+    grass_vk_prepare_desc prepare = grass_default_vk_prepare_desc();
+    prepare.command_buffer = command_buffer();
+    const grass_result r = grass_vk_prepare(context_, &prepare);
     if (r != GRASS_SUCCESS) *error = QString::fromUtf8(grass_get_last_error(context_));
     return r;
 }

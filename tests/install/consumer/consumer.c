@@ -25,8 +25,8 @@ int main(void) {
     grass_frame_stats stats;
     int failed = 0;
 
-    if (grass_library_version() >> 22 != GRASS_VERSION_MAJOR) {
-        fprintf(stderr, "consumer: library version 0x%08x, header major %d\n", (unsigned)grass_library_version(),
+    if (grass_get_library_version() >> 22 != GRASS_VERSION_MAJOR) {
+        fprintf(stderr, "consumer: library version 0x%08x, header major %d\n", (unsigned)grass_get_library_version(),
                 GRASS_VERSION_MAJOR);
         return 1;
     }
@@ -59,8 +59,8 @@ int main(void) {
     grass_destroy_context(ctx);
     if (failed) return 1;
     printf("consumer: grass %u.%u.%u, %llu nodes visited, %llu cells drawn as blades\n",
-           (unsigned)(grass_library_version() >> 22), (unsigned)((grass_library_version() >> 12) & 0x3ff),
-           (unsigned)(grass_library_version() & 0xfff), (unsigned long long)stats.nodes_visited,
+           (unsigned)(grass_get_library_version() >> 22), (unsigned)((grass_get_library_version() >> 12) & 0x3ff),
+           (unsigned)(grass_get_library_version() & 0xfff), (unsigned long long)stats.nodes_visited,
            (unsigned long long)stats.cells_drawn);
     if (stats.cells_drawn == 0) {
         fprintf(stderr, "consumer: the camera looks at the field, but the frame plan draws no cell\n");
