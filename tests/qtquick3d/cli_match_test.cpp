@@ -25,22 +25,11 @@ QColor cli_sky() {
     return QColor(encode(0.55), encode(0.70), encode(0.90));
 }
 
-const char* kScene = R"(
-import QtQuick
-import QtQuick3D
-import Grass 1.0
-Item {
-    View3D {
-        id: view
-        anchors.fill: parent
-        renderMode: View3D.Inline
-        environment: SceneEnvironment { backgroundMode: SceneEnvironment.Transparent }
-        camera: cam
-        PerspectiveCamera { id: cam; position: Qt.vector3d(0, 1.2, 2.2); eulerRotation.x: -35; fieldOfView: 60; clipNear: 0.05; clipFar: 50 }
-    }
-    GrassField { objectName: "grass"; view: view; extent: Qt.size(3, 3); cellSize: 1 }
+QString scene() {
+    return qt_test::grass_scene("position: Qt.vector3d(0, 1.2, 2.2); eulerRotation.x: -35; fieldOfView: 60; "
+                                "clipNear: 0.05; clipFar: 50",
+                                "", "extent: Qt.size(3, 3); cellSize: 1");
 }
-)";
 
 // The same field and camera for grass-render (its target: the camera pitched 35 degrees down).
 const char* kCliScene = R"({
@@ -98,9 +87,8 @@ TEST(CliMatch, TheAdaptersImageMatchesTheHeadlessCli) {
     const QImage cli = cli_image(dir, {});
     ASSERT_EQ(cli.size(), QSize(320, 240));
     const QColor sky = cli_sky();
-    auto window = qt_test::make_window(QString::fromUtf8(kScene), 1, sky);
-    ASSERT_TRUE(window);
-    QObject* grass = qt_test::child(window.get(), "grass");
+    auto [window, grass] = qt_test::make_grass_window(scene(), 1, sky);
+    ASSERT_TRUE(grass);
     const QImage qt = qt_test::render(window.get(), grass);
     qt.save("qtquick3d_cli_match_adapter.png");
     cli.save("qtquick3d_cli_match_cli.png");

@@ -10,30 +10,16 @@
 
 namespace {
 
-using qt_test::child;
-using qt_test::make_window;
+using qt_test::kClear;
+using qt_test::make_grass_window;
 using qt_test::render;
-
-const QColor kClear(255, 0, 255);
 
 // No ground: every pixel is grass or the clear colour. The camera looks down the -z axis at
 // the field, world +x to the right of the image.
-const char* kScene = R"(
-import QtQuick
-import QtQuick3D
-import Grass 1.0
-Item {
-    View3D {
-        id: view
-        anchors.fill: parent
-        renderMode: View3D.Inline
-        environment: SceneEnvironment { backgroundMode: SceneEnvironment.Transparent }
-        camera: cam
-        PerspectiveCamera { id: cam; position: Qt.vector3d(0, 260, 160); eulerRotation.x: -60; clipNear: 5; clipFar: 5000 }
-    }
-    GrassField { objectName: "grass"; view: view; extent: Qt.size(200, 200); cellSize: 25 }
+QString scene() {
+    return qt_test::grass_scene("position: Qt.vector3d(0, 260, 160); eulerRotation.x: -60; clipNear: 5; clipFar: 5000",
+                                "", "extent: Qt.size(200, 200); cellSize: 25");
 }
-)";
 
 bool is_clear(QRgb p) { return qRed(p) > 200 && qBlue(p) > 200 && qGreen(p) < 60; }
 
@@ -55,9 +41,7 @@ TEST(GrassFieldProperties, ADensityMapImageLeavesABareArea) {
     const QString path = dir.filePath(QStringLiteral("density.png"));
     ASSERT_TRUE(map.save(path));
 
-    auto window = make_window(QString::fromUtf8(kScene), 1, kClear);
-    ASSERT_TRUE(window);
-    QObject* grass = child(window.get(), "grass");
+    auto [window, grass] = make_grass_window(scene(), 1);
     ASSERT_TRUE(grass);
     const auto [left_full, right_full] = grass_by_half(render(window.get(), grass, 3));
     // Uniform grass fills both halves alike (the guard against a vacuous comparison).
@@ -76,9 +60,7 @@ TEST(GrassFieldProperties, ADensityMapImageLeavesABareArea) {
 }
 
 TEST(GrassFieldProperties, ABadValueIsRefusedByNameAndThePreviousFieldStaysDrawn) {
-    auto window = make_window(QString::fromUtf8(kScene), 1, kClear);
-    ASSERT_TRUE(window);
-    QObject* grass = child(window.get(), "grass");
+    auto [window, grass] = make_grass_window(scene(), 1);
     ASSERT_TRUE(grass);
     const QImage before = render(window.get(), grass, 3);
     ASSERT_GT(grass_by_half(before).first, window->width() * window->height() / 16);

@@ -14,44 +14,31 @@
 namespace {
 
 using qt_test::child;
+using qt_test::kClear;
+using qt_test::make_grass_window;
 using qt_test::make_window;
 using qt_test::render;
 using qt_test::render_frames;
 
-const QColor kClear(255, 0, 255);
-
 // A lit Quick 3D scene (a sphere, a cube, a ground) with grass among the models.
-const char* kScene = R"(
-import QtQuick
-import QtQuick3D
-import Grass 1.0
-Item {
-    View3D {
-        id: view
-        anchors.fill: parent
-        renderMode: View3D.Inline
-        environment: SceneEnvironment { backgroundMode: SceneEnvironment.Transparent }
-        camera: cam
-        PerspectiveCamera { id: cam; position: Qt.vector3d(0, 120, 380); eulerRotation.x: -18; clipNear: 5; clipFar: 5000 }
+QString scene() {
+    return qt_test::grass_scene("position: Qt.vector3d(0, 120, 380); eulerRotation.x: -18; clipNear: 5; clipFar: 5000",
+                                R"(
         DirectionalLight { eulerRotation: Qt.vector3d(-40, 30, 0) }
         Node {
             objectName: "models"
             Model { source: "#Sphere"; position: Qt.vector3d(-80, 60, 0); materials: PrincipledMaterial { baseColor: "#d04030" } }
             Model { source: "#Cube"; position: Qt.vector3d(90, 40, 60); eulerRotation.y: 30; materials: PrincipledMaterial { baseColor: "#3050d0" } }
             Model { source: "#Rectangle"; scale: Qt.vector3d(5, 5, 1); eulerRotation.x: -90; materials: PrincipledMaterial { baseColor: "#705030" } }
-        }
-    }
-    GrassField { objectName: "grass"; view: view; extent: Qt.size(300, 300); cellSize: 25 }
+        })",
+                                "extent: Qt.size(300, 300); cellSize: 25");
 }
-)";
 
 class HostImageTest : public ::testing::TestWithParam<int> {};
 
 TEST_P(HostImageTest, OutsideTheGrassTheEnginesImageIsUnchanged) {
     const int samples = GetParam();
-    auto window = make_window(QString::fromUtf8(kScene), samples, kClear);
-    ASSERT_TRUE(window);
-    QObject* grass = child(window.get(), "grass");
+    auto [window, grass] = make_grass_window(scene(), samples);
     ASSERT_TRUE(grass);
     const QImage on = render(window.get(), grass, 3);
     grass->setProperty("visible", false);
@@ -105,9 +92,7 @@ qulonglong stat(QObject* grass, const char* key) {
 // with it (after the frames in flight), and each new one holds the same memory and draws
 // the same image.
 TEST(SceneGraphLifetime, GrassItemsMadeAndDestroyedLeaveNothingBehind) {
-    auto window = make_window(QString::fromUtf8(kScene), 1, kClear);
-    ASSERT_TRUE(window);
-    QObject* grass = child(window.get(), "grass");
+    auto [window, grass] = make_grass_window(scene(), 1);
     ASSERT_TRUE(grass);
     const QImage first = render(window.get(), grass, 4); // past the first frames' one-time allocations
     const qulonglong host = stat(grass, "hostBytes"), gpu = stat(grass, "gpuBytes");
@@ -154,7 +139,7 @@ TEST(SceneGraphLifetime, GrassItemsMadeAndDestroyedLeaveNothingBehind) {
     // 4 samples, then 1: the MSAA change a host makes (the old window goes first).
     window.reset();
     for (int samples : {4, 1}) {
-        window = make_window(QString::fromUtf8(kScene), samples, kClear);
+        window = make_window(scene(), samples, kClear);
         ASSERT_TRUE(window);
         grass = child(window.get(), "grass");
         const QImage image = render(window.get(), grass, 4);
@@ -191,10 +176,10 @@ Item {
     }
 }
 )"),
-                                       1, QColor(255, 0, 255));
+                                       1, kClear);
     ASSERT_TRUE(window);
     const QImage image = qt_test::render_frames(window.get(), 3);
-    EXPECT_EQ(image.pixel(0, 0), QColor(255, 0, 255).rgba());
+    EXPECT_EQ(image.pixel(0, 0), kClear.rgba());
     EXPECT_TRUE(qt_test::take_validation_messages().empty());
 }
 

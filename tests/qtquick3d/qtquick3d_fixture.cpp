@@ -94,6 +94,36 @@ QObject* child(QQuickView* window, const char* name) {
     return window->rootObject()->findChild<QObject*>(QString::fromLatin1(name));
 }
 
+QString grass_scene(const QString& camera, const QString& models, const QString& field) {
+    return QStringLiteral(R"(
+import QtQuick
+import QtQuick3D
+import Grass 1.0
+Item {
+    View3D {
+        id: view
+        anchors.fill: parent
+        renderMode: View3D.Inline
+        environment: SceneEnvironment { backgroundMode: SceneEnvironment.Transparent }
+        camera: cam
+        PerspectiveCamera { id: cam; %1 }
+%2
+    }
+    GrassField { objectName: "grass"; view: view; %3 }
+}
+)")
+        .arg(camera, models, field); // in one pass: a % in an argument stays as it is
+}
+
+GrassWindow make_grass_window(const QString& qml, int samples, QColor clear) {
+    GrassWindow w;
+    w.window = make_window(qml, samples, clear);
+    if (!w.window) return w; // make_window said why
+    w.grass = child(w.window.get(), "grass");
+    if (!w.grass) ADD_FAILURE() << "the scene has no GrassField \"grass\"";
+    return w;
+}
+
 QImage render(QQuickView* window, QObject* grass, int frames) {
     const int target = grass->property("framesDrawn").toInt() + frames;
     QImage image;

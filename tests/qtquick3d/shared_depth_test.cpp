@@ -10,28 +10,15 @@
 
 namespace {
 
-using qt_test::child;
-using qt_test::make_window;
+using qt_test::kClear;
+using qt_test::make_grass_window;
 using qt_test::render;
 using qt_test::render_frames;
-
-const QColor kClear(255, 0, 255);
 
 // The camera 150 units up, pitched 30 degrees down; a red cube floats between it and the
 // grass (nothing of the grass can reach in front of it); a flat blue slab lies in the grass.
 QString scene(bool ground) {
-    return QStringLiteral(R"(
-import QtQuick
-import QtQuick3D
-import Grass 1.0
-Item {
-    View3D {
-        id: view
-        anchors.fill: parent
-        renderMode: View3D.Inline
-        environment: SceneEnvironment { backgroundMode: SceneEnvironment.Transparent }
-        camera: cam
-        PerspectiveCamera { id: cam; position: Qt.vector3d(0, 150, 300); eulerRotation.x: -30; clipNear: 5; clipFar: 5000 }
+    const QString models = QStringLiteral(R"(
         Model {
             source: "#Cube"; position: Qt.vector3d(0, 100, 213.4); scale: Qt.vector3d(0.3, 0.3, 0.3)
             materials: PrincipledMaterial { baseColor: "#ff0000"; lighting: PrincipledMaterial.NoLighting }
@@ -44,12 +31,10 @@ Item {
             visible: %1
             source: "#Rectangle"; scale: Qt.vector3d(6, 6, 1); eulerRotation.x: -90
             materials: PrincipledMaterial { baseColor: "#808080"; lighting: PrincipledMaterial.NoLighting }
-        }
-    }
-    GrassField { objectName: "grass"; view: view; extent: Qt.size(400, 400); cellSize: 25 }
-}
-)")
-        .arg(ground ? "true" : "false");
+        })")
+                               .arg(ground ? "true" : "false");
+    return qt_test::grass_scene("position: Qt.vector3d(0, 150, 300); eulerRotation.x: -30; clipNear: 5; clipFar: 5000",
+                                models, "extent: Qt.size(400, 400); cellSize: 25");
 }
 
 bool is_red(QRgb p) { return qRed(p) > 200 && qGreen(p) < 40 && qBlue(p) < 40; }
@@ -81,9 +66,7 @@ struct Params {
 class SharedDepthTest : public ::testing::TestWithParam<Params> {};
 
 TEST_P(SharedDepthTest, ModelsAndGrassHideEachOther) {
-    auto window = make_window(scene(GetParam().ground), GetParam().samples, kClear);
-    ASSERT_TRUE(window);
-    QObject* grass = child(window.get(), "grass");
+    auto [window, grass] = make_grass_window(scene(GetParam().ground), GetParam().samples);
     ASSERT_TRUE(grass);
 
     // The models alone: where the cube and the slab are.
