@@ -17,6 +17,13 @@ namespace {
 
 QString number(double v) { return QString::number(v, 'g', 10); }
 
+// The refusal of `value` for GrassField.`property`, a number that must lie within `range` (in
+// words), `kept` being the value it keeps.
+QString range_refusal(const char* property, double value, const char* range, double kept) {
+    return QStringLiteral("GrassField.%1: %2; it must be within %3; kept %4")
+        .arg(QString::fromLatin1(property), number(value), QString::fromLatin1(range), number(kept));
+}
+
 } // namespace
 
 GrassField::GrassField(QQuickItem* parent) : QQuickItem(parent), report_(std::make_shared<RendererReport>()) {
@@ -51,9 +58,13 @@ void GrassField::dropRenderer() {
 
 void GrassField::releaseResources() { dropRenderer(); }
 
-void GrassField::changed() {
+template <typename T>
+void GrassField::store(T& setting, const T& value, void (GrassField::*notify)()) {
+    if (setting == value) return;
+    setting = value;
     settings_dirty_ = true;
     if (window_) window_->update();
+    emit(this->*notify)();
 }
 
 void GrassField::itemChange(ItemChange change, const ItemChangeData& data) {
@@ -164,10 +175,7 @@ void GrassField::setPosition(const QVector3D& p) {
         return refuse(QStringLiteral("GrassField.position: (%1, %2, %3) is not finite; kept (%4, %5, %6)")
                           .arg(number(p.x()), number(p.y()), number(p.z()), number(position_.x()),
                                number(position_.y()), number(position_.z())));
-    if (p == position_) return;
-    position_ = p;
-    changed();
-    emit positionChanged();
+    store(position_, p, &GrassField::positionChanged);
 }
 
 void GrassField::setExtent(const QSizeF& e) {
@@ -175,30 +183,17 @@ void GrassField::setExtent(const QSizeF& e) {
         return refuse(
             QStringLiteral("GrassField.extent: %1 x %2; both must be finite and > 0; kept %3 x %4")
                 .arg(number(e.width()), number(e.height()), number(extent_.width()), number(extent_.height())));
-    if (e == extent_) return;
-    extent_ = e;
-    changed();
-    emit extentChanged();
+    store(extent_, e, &GrassField::extentChanged);
 }
 
 void GrassField::setCellSize(double c) {
-    if (!(c >= 1e-4 && c <= 1e4))
-        return refuse(QStringLiteral("GrassField.cellSize: %1; it must be within 1e-4 .. 1e4; kept %2")
-                          .arg(number(c), number(cell_size_)));
-    if (c == cell_size_) return;
-    cell_size_ = c;
-    changed();
-    emit cellSizeChanged();
+    if (!(c >= 1e-4 && c <= 1e4)) return refuse(range_refusal("cellSize", c, "1e-4 .. 1e4", cell_size_));
+    store(cell_size_, c, &GrassField::cellSizeChanged);
 }
 
 void GrassField::setDensity(double density) {
-    if (!(density >= 0.0 && density <= 1.0))
-        return refuse(QStringLiteral("GrassField.density: %1; it must be within 0 .. 1; kept %2")
-                          .arg(number(density), number(density_)));
-    if (density == density_) return;
-    density_ = density;
-    changed();
-    emit densityChanged();
+    if (!(density >= 0.0 && density <= 1.0)) return refuse(range_refusal("density", density, "0 .. 1", density_));
+    store(density_, density, &GrassField::densityChanged);
 }
 
 void GrassField::setQuality(int q) {
@@ -206,10 +201,7 @@ void GrassField::setQuality(int q) {
         return refuse(QStringLiteral("GrassField.quality: %1; it must be 0 (reference) .. 4 (fastest); kept %2")
                           .arg(q)
                           .arg(quality_));
-    if (q == quality_) return;
-    quality_ = q;
-    changed();
-    emit qualityChanged();
+    store(quality_, q, &GrassField::qualityChanged);
 }
 
 void GrassField::setDepthTest(bool on) {
@@ -236,17 +228,14 @@ bool GrassField::loadMap(const QUrl& url, bool single_channel, const char* prope
 }
 
 void GrassField::setDensityMap(const QUrl& url) {
-    if (url == density_map_ || !loadMap(url, true, "densityMap", &density_image_)) return;
-    density_map_ = url;
-    changed();
-    emit densityMapChanged();
+    // Loaded only when it differs: store() compares again, to no effect.
+    if (url != density_map_ && loadMap(url, true, "densityMap", &density_image_))
+        store(density_map_, url, &GrassField::densityMapChanged);
 }
 
 void GrassField::setColorMap(const QUrl& url) {
-    if (url == color_map_ || !loadMap(url, false, "colorMap", &color_image_)) return;
-    color_map_ = url;
-    changed();
-    emit colorMapChanged();
+    if (url != color_map_ && loadMap(url, false, "colorMap", &color_image_))
+        store(color_map_, url, &GrassField::colorMapChanged);
 }
 
 void setUpGraphics(GraphicsApi api, int samples) {

@@ -105,7 +105,10 @@ private slots:
 private:
     void refuse(const QString& message);
     void attachWindow(QQuickWindow* window);
-    void changed();
+    // Sets a setting to `value` where it differs: the renderer gets the settings at the next
+    // sync (the window asked to update), QML hears `notify`.
+    template <typename T>
+    void store(T& setting, const T& value, void (GrassField::*notify)());
     bool loadMap(const QUrl& url, bool single_channel, const char* property, QImage* out);
     void dropRenderer();
 
