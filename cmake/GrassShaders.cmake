@@ -5,7 +5,7 @@ set(GRASS_SHADER_DIR "${PROJECT_SOURCE_DIR}/api/shaders")
 file(GLOB GRASS_SHADER_INCLUDES CONFIGURE_DEPENDS "${GRASS_SHADER_DIR}/*.glsl")
 
 # Both functions read shaders from GRASS_SHADER_DIR, or from SHADER_DIR when the caller sets
-# it (the sample hosts keep their own shaders).
+# it (the test hosts keep their own shaders).
 
 # grass_embed_glsl(<out_cpp> <namespace> <shader>...): shader source strings for GL.
 function(grass_embed_glsl out_cpp namespace)

@@ -10,7 +10,7 @@ packages=(
   glslc                                                              # GLSL -> SPIR-V at build time
   libpng-dev nlohmann-json3-dev                                      # image I/O, JSON scenes
   libtinygltf-dev                                                    # glTF scenes (header; images decoded by libpng)
-  libcli11-dev                                                       # the sample tools' command lines
+  libcli11-dev                                                       # the tools' command lines
   libgtest-dev libbenchmark-dev                                      # tests, benchmarks
   python3-pytest python3-numpy python3-pip python3-setuptools        # the Python binding: tests, maps from arrays, pip install
   clang-format-15 python3                                            # the style check, the docs' link check

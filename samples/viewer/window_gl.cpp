@@ -182,7 +182,7 @@ bool GlWindow::set_samples(uint32_t samples, bool* contexts_stale, std::string* 
     return false;
 }
 
-// The headless hosts' ground (samples/headless/shaders/ground.*), compiled for GL.
+// The headless hosts' ground (test_hosts/shaders/ground.*), compiled for GL.
 bool GlWindow::create_ground(std::string* error) {
     const char* sources[2] = {grass_host_shaders::ground_vert, grass_host_shaders::ground_frag};
     const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};

@@ -530,7 +530,7 @@ void VkWindow::destroy_targets() {
     destroy_image(&depth_);
 }
 
-// The headless hosts' ground (samples/headless/shaders/ground.*) in this render pass.
+// The headless hosts' ground (test_hosts/shaders/ground.*) in this render pass.
 bool VkWindow::create_ground_pipeline(std::string* error) {
     grass_host::VkHostPipelineDesc desc;
     desc.vertex_code = grass_host_spirv::ground_vert;

@@ -1,6 +1,6 @@
 /*
  * For the ABI hosts' GL part (C99): pins Mesa's GL driver once it is loaded, as the headless
- * hosts do (samples/headless/driver_residency.cpp). eglTerminate unloads it at exit, and
+ * hosts do (test_hosts/driver_residency.cpp). eglTerminate unloads it at exit, and
  * LeakSanitizer then reports its exit-time allocations from an "<unknown module>" that
  * tests/sanitizer/lsan.supp cannot name. Call after a GL context was made.
  */

@@ -4,8 +4,8 @@ names nothing that does not exist.
 
 Usage: check_architecture.py [repository root]   (default: the root above this script)
 
-Sources: the files that `git ls-files` lists under api/, backend_gl/, backend_vk/ and
-integration/ whose names end in .c .h .cpp .hpp .inl .glsl .vert .frag .comp .py or .cmake,
+Sources: the files that `git ls-files` lists under api/, backend_gl/, backend_vk/,
+integration/, test_hosts/ and tools/ whose names end in .c .h .cpp .hpp .inl .glsl .vert .frag .comp .py or .cmake,
 or are called CMakeLists.txt.
 
 A *name* is a span of the page in backticks (`...`). A name is expanded before matching:
@@ -23,9 +23,9 @@ A source S is *named* when one of these holds:
 Every folder that holds a source must appear as a folder name (`F/`) somewhere on the page.
 
 In the other direction, the page fails when it names what does not exist:
-  - a name that starts with api/, backend_gl/, backend_vk/, integration/, samples/, tests/,
-    scripts/, cmake/ or docs/ must match a tracked file or folder (after expansion);
-  - in a row whose first cell holds a folder name F/ under the four roots, every other name
+  - a name that starts with one of the roots above, samples/, tests/, scripts/, cmake/ or
+    docs/ must match a tracked file or folder (after expansion);
+  - in a row whose first cell holds a folder name F/ under the roots, every other name
     that looks like a file name (it has a source extension or ends in .*) must match a
     tracked file under F;
   - elsewhere, such a bare file name must match some tracked file of the repository.
@@ -37,7 +37,7 @@ import re
 import subprocess
 import sys
 
-ROOTS = ("api/", "backend_gl/", "backend_vk/", "integration/")
+ROOTS = ("api/", "backend_gl/", "backend_vk/", "integration/", "test_hosts/", "tools/")
 CHECKED_PREFIXES = ROOTS + ("samples/", "tests/", "scripts/", "cmake/", "docs/")
 EXTS = (".c", ".h", ".cpp", ".hpp", ".inl", ".glsl", ".vert", ".frag", ".comp", ".py", ".cmake")
 FILE_LIKE = re.compile(r"^[\w./-]*\w\.(?:\*|c|h|cpp|hpp|inl|glsl|vert|frag|comp|py|cmake|txt)$")

@@ -54,7 +54,7 @@ PRELUDES = os.path.join(ROOT, "tests", "docs", "preludes")
 RUN = {"c", "cmake", "python", "sh"}
 MARK = re.compile(r"^<!--\s*doc-test:\s*(.*?)\s*-->$")
 GENERATED = re.compile(r"^<!--\s*readme-example:begin: generated from (\S+)")
-REPO_PATH = re.compile(r"(?<![\w/.$-])((?:scripts|samples|docs|integration|tests|api|backend_gl|backend_vk|build)"
+REPO_PATH = re.compile(r"(?<![\w/.$-])((?:scripts|samples|tools|test_hosts|docs|integration|tests|api|backend_gl|backend_vk|build)"
                        r"/[\w./+-]*[\w+-])")
 
 

@@ -1,4 +1,4 @@
-// libFuzzer target: the sample tools' glTF scene loader (samples/common/gltf_scene.cpp, over
+// libFuzzer target: the tools' glTF scene loader (tools/scene/gltf_scene.cpp, over
 // tinygltf compiled into the fuzz build) on .gltf JSON and .glb bytes, then the scene on a
 // CPU-only context (fuzz_scene_use.hpp) with the file's colliders. The input is the file;
 // the loader takes a GLB by its magic ("glTF"), anything else as JSON. Beside it lie a

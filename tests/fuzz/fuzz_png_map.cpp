@@ -1,5 +1,5 @@
-// libFuzzer target: the sample tools' PNG design-map loader (libpng's simplified API in
-// samples/common/scene.cpp) for every map role, and the maps made from what it decodes on a
+// libFuzzer target: the tools' PNG design-map loader (libpng's simplified API in
+// tools/scene/scene.cpp) for every map role, and the maps made from what it decodes on a
 // CPU-only context. The input is the PNG file; a fixed scene names it for each role.
 #include "fuzz_scene_use.hpp"
 

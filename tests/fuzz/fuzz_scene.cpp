@@ -1,4 +1,4 @@
-// libFuzzer target: the sample tools' scene JSON loader (samples/common/scene.cpp) and what
+// libFuzzer target: the tools' scene JSON loader (tools/scene/scene.cpp) and what
 // they then do with the scene on a CPU-only context. The input is the scene file; a small
 // valid PNG, map.png, lies beside it for the "maps" and "density_map" keys to name.
 #include "fuzz_scene_use.hpp"

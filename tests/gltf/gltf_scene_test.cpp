@@ -1,4 +1,4 @@
-// glTF scenes (samples/common/gltf_scene.hpp): the shipped sample scene becomes a field with
+// glTF scenes (tools/scene/gltf_scene.hpp): the shipped sample scene becomes a field with
 // height and density maps, host meshes, a camera and colliders; the terrain rasteriser puts
 // heights where the mesh is; hostile files (truncated, wrong indices, huge counts, missing
 // buffers, non-triangles, NaN, cycles, paths out of the folder) are refused with an error

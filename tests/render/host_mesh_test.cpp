@@ -1,4 +1,4 @@
-// The hosts' mesh drawers (samples/headless/mesh_drawer_*.hpp) share depth with grass under
+// The hosts' mesh drawers (test_hosts/mesh_drawer_*.hpp) share depth with grass under
 // every depth convention, with 1 and 4 samples: a wall across a lawn hides the grass behind
 // it and the grass in front of it hides its foot. And the glTF sample scene renders with
 // grass on its terrain and its shed drawn by the host, in both backends.

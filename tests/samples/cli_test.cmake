@@ -1,4 +1,4 @@
-# The sample tools' command lines (ctest sample_cli): every tool and subcommand answers
+# The samples' and tools' command lines (ctest sample_cli): every tool and subcommand answers
 # --help with its usage and exit 0, and refuses an unknown option and a bad --backend value
 # with exit 2 and an error that names the option and the value. Nothing is rendered.
 #   cmake -DRENDER=<grass-render> -DMEASURE=<grass-measure> [-DVIEWER=<grass-viewer>] -P cli_test.cmake

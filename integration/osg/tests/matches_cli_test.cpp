@@ -1,5 +1,5 @@
 // The adapter's image of a fixed field and camera against the headless host's (the one
-// grass-render draws with: samples/headless), on an sRGB target and on OSG's usual RGBA8
+// grass-render draws with: test_hosts), on an sRGB target and on OSG's usual RGBA8
 // target. The tolerance is what the headless host differs from itself between those two
 // targets (the shader's sRGB encoding against the target's).
 #include "osg_scene.hpp"

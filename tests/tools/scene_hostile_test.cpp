@@ -1,4 +1,4 @@
-// The scene loader (samples/common/scene.cpp) with the hostile and careless files of issue 37:
+// The scene loader (tools/scene/scene.cpp) with the hostile and careless files of issue 37:
 // deep nesting, files that are not regular files or too large, counts past the library's
 // limits, values the tools cannot honour, values too long to echo. Each is refused at once,
 // naming the key (by its path) or the file, and the value.

@@ -1,4 +1,4 @@
-// The sample tools' scene files (samples/common/scene.*, docs/scene-format.md): what a scene
+// The tools' scene files (tools/scene/scene.*, docs/scene-format.md): what a scene
 // file that leaves a setting out starts from. Nothing is rendered.
 #include "scene.hpp"
 

@@ -1,4 +1,4 @@
-// Command lines of the sample tools, through CLI11: the parse with the tools' exit codes and
+// Command lines of the samples and tools, through CLI11: the parse with the tools' exit codes and
 // the options more than one tool has (backend, image size, points, ranges).
 #pragma once
 

@@ -1,7 +1,7 @@
-// grass-measure bench's image metrics (samples/measure/image_metrics.*): SSIM after Wang et al.
+// grass-measure bench's image metrics (tools/measure/image_metrics.*): SSIM after Wang et al.
 // 2004 (Gaussian window 11, sigma 1.5, K1 0.01, K2 0.03, L 255) and PSNR; the linear-light
 // downsampling, RMS and row bands, and the accuracy measure normalised by the seed-to-seed
-// error (samples/measure/accuracy.*).
+// error (tools/measure/accuracy.*).
 #include "accuracy.hpp"
 #include "image_metrics.hpp"
 

@@ -82,8 +82,8 @@ std::string csv(const std::vector<Row>& rows, const Options& o) {
 std::string markdown(const std::vector<Row>& rows, const Options& o, double total_s) {
     std::ostringstream s;
     s << "# grass-bench results\n\n"
-      << "Written by `grass-measure bench` (samples/measure/bench.cpp; docs/quality.md explains it). " << o.width
-      << " x " << o.height
+      << "Written by `grass-measure bench` (tools/measure/bench.cpp; docs/quality.md explains it). " << o.width << " x "
+      << o.height
       << " pixels, each preset on a target with its own MSAA sample count; frame = wall time of a rendered and "
          "read-back "
          "frame, median of "
@@ -284,7 +284,7 @@ std::string sweep_markdown(const std::vector<Row>& rows, const Options& o, doubl
     const grass_quality_desc d = grass_quality_preset(GRASS_QUALITY_DEFAULT);
     std::ostringstream s;
     s << "# grass-bench sweep: one knob at a time from DEFAULT\n\n"
-      << "Written by `grass-measure bench --sweep` (samples/measure/bench.cpp; docs/quality.md explains the knobs and "
+      << "Written by `grass-measure bench --sweep` (tools/measure/bench.cpp; docs/quality.md explains the knobs and "
          "the "
          "measures). Each row is DEFAULT with one knob of `grass_quality_desc` changed (the others at DEFAULT's: "
          "distance_scale "

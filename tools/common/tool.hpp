@@ -1,4 +1,4 @@
-// What every sample tool does around grass: its name in messages, a failed grass call as an
+// What every tool and sample does around grass: its name in messages, a failed grass call as an
 // error naming the call, the library's log on stderr, files it writes.
 #pragma once
 

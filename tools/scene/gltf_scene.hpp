@@ -1,4 +1,4 @@
-// A glTF 2.0 scene (.gltf or .glb, read by tinygltf) made into the sample tools' Scene:
+// A glTF 2.0 scene (.gltf or .glb, read by tinygltf) made into the tools' Scene:
 // the terrain mesh becomes the field (its extent, a height map and a density map rasterised
 // from the mesh), every mesh becomes a host mesh drawn around grass, the first perspective
 // camera the scene's camera, and nodes marked as colliders a list of collider shapes.

@@ -1,4 +1,4 @@
-// grass-measure bench's reference cache (samples/measure/reference_cache.cpp): a reference
+// grass-measure bench's reference cache (tools/measure/reference_cache.cpp): a reference
 // stored is loaded back exactly; anything else under its name (a FIFO, a directory, a file
 // cut short or grown) is a miss at once, never a blocked or endless read (issue 37).
 #include "reference_cache.hpp"

@@ -1,4 +1,4 @@
-// Private to the headless host library: one factory per backend.
+// Private to the test hosts' library: one factory per backend.
 #pragma once
 
 #include "headless_host.hpp"

@@ -1,4 +1,4 @@
-// The sample tools' scene loader (samples/common/scene.cpp) with hostile files: the inputs
+// The tools' scene loader (tools/scene/scene.cpp) with hostile files: the inputs
 // fuzz_scene and fuzz_png_map found, kept as regressions.
 #include "png_chunks.hpp"
 #include "scene.hpp"

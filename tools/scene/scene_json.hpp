@@ -1,4 +1,4 @@
-// The scene files' JSON reading (samples/common/scene.cpp, responsive_scene.cpp): every key
+// The scene files' JSON reading (tools/scene/scene.cpp, responsive_scene.cpp): every key
 // named by its path from the top ("field.maps.density", "colliders[2].centre"), numbers
 // checked against what their field can hold, keys checked against a list, values shown in
 // messages cut short (never a whole array or a 64 MB string), each refusal naming the key.

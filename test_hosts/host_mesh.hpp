@@ -1,5 +1,5 @@
 // A mesh of the host's own scene (terrain, rocks, buildings): what an engine draws around
-// grass. Plain data, filled by a scene loader (samples/common/gltf_scene.hpp) and drawn by the
+// grass. Plain data, filled by a scene loader (tools/scene/gltf_scene.hpp) and drawn by the
 // hosts' mesh drawers (mesh_drawer_gl.hpp, mesh_drawer_vk.hpp), simply lit, into the depth
 // buffer grass shares.
 #pragma once
