@@ -39,7 +39,7 @@ struct FrameData {
                            // w: the target's samples per pixel (set by the backend)
     vec4 target;           // x: 1 when the host's clip z runs 0..1 (Vulkan, GL_ZERO_TO_ONE clip control),
                            // 0 for GL's default -1..1 (set by the backend)
-    // Responsive grass (api/src/plan/frame_plan.hpp FrameUniforms): read only by variants with
+    // Responsive grass (api/src/foundation/frame_plan.hpp FrameUniforms): read only by variants with
     // GRASS_WIND / GRASS_INTERACTION.
     vec4 wind;             // xyz: mean wind velocity (world m/s), w: gust strength
     vec4 wind_shape;       // x: 1 / gust length, y: turbulence, z: source count, w: time step (s)

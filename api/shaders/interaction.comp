@@ -6,14 +6,14 @@
 // continuous trail. Texel: (dir_u, dir_v, U, age), see interaction.glsl.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-// api/src/plan/frame_plan.hpp InteractionLevelUniforms.
+// api/src/foundation/frame_plan.hpp InteractionLevelUniforms.
 layout(std140, binding = 0) uniform Interaction {
     ivec4 window; // xy: the window's first texel mod N, zw: W - W_prev (clamped to +-N)
     vec4 origin;  // xy: texel W's lower corner relative to the camera (m), z: texel size (m), w: time step (s)
     uvec4 counts; // x: N, y: tile size (texels), z: tiles per side, w: 1 = clear everything
 } level;
 
-// api/src/plan/frame_plan.hpp GpuCollider: u, v, h in the map's frame (m; h above the anchor).
+// api/src/foundation/frame_plan.hpp GpuCollider: u, v, h in the map's frame (m; h above the anchor).
 struct Collider {
     vec4 a;        // xyz: centre (sphere) or one axis end (capsule), w: radius
     vec4 b;        // xyz: the capsule's other end, w: shape (0 sphere, 1 capsule)

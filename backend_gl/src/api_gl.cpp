@@ -2,9 +2,9 @@
 #include "gl_backend.hpp"
 
 #include "context/context.hpp"
-#include "context/names.hpp"
-#include "context/raw_enum.hpp"
-#include "context/validate.hpp"
+#include "foundation/names.hpp"
+#include "foundation/raw_enum.hpp"
+#include "foundation/validate.hpp"
 
 #include <grass/grass_gl.h>
 

@@ -1,6 +1,6 @@
 #include "gl_instance_input.hpp"
 
-#include "plan/frame_plan.hpp"
+#include "foundation/frame_plan.hpp"
 
 #include <cstddef>
 

@@ -1,11 +1,11 @@
 // The public entry points of grass_vk.h: argument checks, then the Vulkan backend.
 #include "context/context.hpp"
-#include "context/names.hpp"
+#include "foundation/names.hpp"
 #include "vk_backend.hpp"
 #include "vk_desc_check.hpp"
 #include "vk_device.hpp"
 
-#include "context/raw_enum.hpp"
+#include "foundation/raw_enum.hpp"
 
 #include <grass/grass_vk.h>
 

@@ -10,7 +10,7 @@
 // places by hand.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 #include "vk_descriptors.hpp"
 #include "vk_memory.hpp"
 

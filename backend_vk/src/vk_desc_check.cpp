@@ -1,6 +1,6 @@
 #include "vk_desc_check.hpp"
 
-#include "context/raw_enum.hpp"
+#include "foundation/raw_enum.hpp"
 
 #include "context/context.hpp"
 

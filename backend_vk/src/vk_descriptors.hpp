@@ -6,7 +6,7 @@
 // with a patch's slices), from per-frame pools reset when their frame slot comes round.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 #include "vk_desc_check.hpp"
 #include "vk_functions.hpp"
 #include "vk_result.hpp"

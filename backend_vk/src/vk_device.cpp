@@ -1,7 +1,7 @@
 #include "vk_device.hpp"
 
-#include "context/allocator.hpp"
 #include "context/context.hpp"
+#include "foundation/allocator.hpp"
 
 #include <cstring>
 

@@ -5,7 +5,7 @@
 // Buffers grow as needed; the old ones go to the deferred deletion queue.
 #pragma once
 
-#include "plan/frame_plan.hpp"
+#include "foundation/frame_plan.hpp"
 #include "vk_deferred.hpp"
 #include "vk_desc_check.hpp"
 #include "vk_memory.hpp"

@@ -9,7 +9,7 @@
 // sets), prepare_frame calls record() (barriers and dispatches, outside the render pass).
 #pragma once
 
-#include "plan/frame_plan.hpp"
+#include "foundation/frame_plan.hpp"
 #include "vk_deferred.hpp"
 #include "vk_desc_check.hpp"
 #include "vk_functions.hpp"

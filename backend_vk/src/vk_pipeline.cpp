@@ -4,8 +4,8 @@
 #include "vk_slice_pipelines.hpp"
 
 #include "context/backend.hpp"
+#include "foundation/frame_plan.hpp"
 #include "patch/patch_data.hpp"
-#include "plan/frame_plan.hpp"
 #include "vk_spirv.hpp"
 
 #include <cstddef>

@@ -7,7 +7,7 @@
 // pass. At most one copy per image in a batch.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 #include "vk_functions.hpp"
 
 namespace grass::vk {

@@ -27,7 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The 0.3 layouts, as the library records them (api/src/context/abi_sizes.cpp). */
+/* The 0.3 layouts, as the library records them (api/src/foundation/abi_sizes.cpp). */
 typedef char frame_stats_is_152_bytes[sizeof(grass_frame_stats) == 152 ? 1 : -1];
 typedef char memory_stats_is_24_bytes[sizeof(grass_memory_stats) == 24 ? 1 : -1];
 typedef char patch_info_is_48_bytes[sizeof(grass_patch_info) == 48 ? 1 : -1];

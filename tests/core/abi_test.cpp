@@ -4,8 +4,8 @@
 // The 0.3 names: exported for binaries built against grass.h 0.3, declared (deprecated) to
 // sources that define GRASS_ENABLE_DEPRECATED; this test calls them on purpose.
 #define GRASS_ENABLE_DEPRECATED 1
-#include "context/abi_sizes.hpp"
 #include "core_fixture.hpp"
+#include "foundation/abi_sizes.hpp"
 #include "view_helpers.hpp"
 
 #include <grass/grass_gl.h>

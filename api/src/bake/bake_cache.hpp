@@ -6,7 +6,7 @@
 #pragma once
 
 #include "bake/baked_slices.hpp"
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <grass/grass.h>
 

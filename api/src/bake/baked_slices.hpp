@@ -5,7 +5,7 @@
 // core (slice_baker.cpp) and the backends (texture arrays).
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <cstdint>
 

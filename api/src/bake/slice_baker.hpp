@@ -6,7 +6,7 @@
 
 #include "bake/baked_slices.hpp"
 #include "bake/slice_image.hpp"
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 #include "patch/patch_data.hpp"
 
 #include <cstdint>

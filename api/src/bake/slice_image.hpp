@@ -2,7 +2,7 @@
 // SliceSet: what the slice rasteriser resolves to and what the mip filters work on.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <cstdint>
 

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "bake/slice_image.hpp"
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <cstdint>
 

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "bake/baked_slices.hpp"
+#include "foundation/frame_plan.hpp"
 #include "patch/patch_data.hpp"
-#include "plan/frame_plan.hpp"
 
 #include <grass/grass.h>
 

@@ -1,18 +1,18 @@
 // The context: creation with a version check, logging, memory stats, destruction.
 #include "context/context.hpp"
 
-#include "context/abi_sizes.hpp"
-#include "context/owner_tags.hpp"
-#include "context/raw_enum.hpp"
-#include "context/validate.hpp"
+#include "foundation/abi_sizes.hpp"
+#include "foundation/owner_tags.hpp"
+#include "foundation/raw_enum.hpp"
+#include "foundation/validate.hpp"
 
 #include <cassert>
 #include <cstdio>
 #include <cstring>
 
 grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
-    : host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), maps(&host), plan(&host),
-      plan_scratch(&host), dynamics(&host), cache_directory(grass::StlAllocator<char>(&host)) {
+    : grass::Log(d), host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), maps(&host),
+      plan(&host), plan_scratch(&host), dynamics(&host), cache_directory(grass::StlAllocator<char>(&host)) {
     if (d.cache_directory && d.cache_directory[0]) {
         cache_directory.assign(d.cache_directory, d.cache_directory + std::strlen(d.cache_directory) + 1);
         desc.cache_directory = cache_directory.data();
@@ -42,21 +42,6 @@ grass_context::~grass_context() {
     grass::release_owner_tag(owner);
 }
 
-void grass_context::emit(grass_log_level level, grass_message_id id, const char* format, va_list args) {
-    // Errors and warnings carry a stable id (grass.h); GRASS_MSG_NONE there is a bug in grass.
-    // The test fixtures' log functions fail any test that sees one; debug builds stop here.
-    assert(id != GRASS_MSG_NONE || level == GRASS_LOG_INFO);
-    char message[sizeof(last_error)];
-    std::vsnprintf(message, sizeof(message), format, args);
-    if (level == GRASS_LOG_ERROR) std::memcpy(last_error, message, sizeof(last_error));
-    // Never from inside the log callback: a call it makes is refused, and that refusal is
-    // kept as the last error only (no recursion).
-    if (desc.log_fn && level <= desc.log_level && log_callbacks_running == 0) {
-        grass::CallbackScope scope(log_callbacks_running);
-        desc.log_fn(desc.log_user_data, level, id, message);
-    }
-}
-
 grass_result grass_context::refuse_reentrant(const char* function) {
     const char* callback = log_callbacks_running > 0 ? "the log callback"
                            : host.hook_running()     ? "an allocator hook"
@@ -65,28 +50,6 @@ grass_result grass_context::refuse_reentrant(const char* function) {
                 "%s: called from inside %s of this context; a callback must not call its own context (grass.h "
                 "\"Re-entrancy\")",
                 function, callback);
-}
-
-grass_result grass_context::fail(grass_result result, grass_message_id id, const char* format, ...) {
-    va_list args;
-    va_start(args, format);
-    emit(GRASS_LOG_ERROR, id, format, args);
-    va_end(args);
-    return result;
-}
-
-void grass_context::warn(grass_message_id id, const char* format, ...) {
-    va_list args;
-    va_start(args, format);
-    emit(GRASS_LOG_WARNING, id, format, args);
-    va_end(args);
-}
-
-void grass_context::info(grass_message_id id, const char* format, ...) {
-    va_list args;
-    va_start(args, format);
-    emit(GRASS_LOG_INFO, id, format, args);
-    va_end(args);
 }
 
 namespace grass {

@@ -1,8 +1,8 @@
 #include "context/invariants.hpp"
 
 #include "context/context.hpp"
-#include "context/names.hpp"
-#include "context/raw_enum.hpp"
+#include "foundation/names.hpp"
+#include "foundation/raw_enum.hpp"
 
 namespace grass {
 

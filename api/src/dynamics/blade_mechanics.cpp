@@ -1,6 +1,6 @@
 #include "dynamics/blade_mechanics.hpp"
 
-#include "context/validate.hpp"
+#include "foundation/validate.hpp"
 
 #include <cstdio>
 
@@ -19,8 +19,7 @@ grass_blade_mechanics default_blade_mechanics() {
     return m;
 }
 
-grass_result validate_blade_mechanics(grass_context* ctx, const char* fn, const char* name,
-                                      const grass_blade_mechanics& m) {
+grass_result validate_blade_mechanics(Log* log, const char* fn, const char* name, const grass_blade_mechanics& m) {
     struct Rule {
         const char* field;
         float value;
@@ -32,7 +31,7 @@ grass_result validate_blade_mechanics(grass_context* ctx, const char* fn, const 
     for (const Rule& r : rules) {
         char arg[96];
         std::snprintf(arg, sizeof arg, "%s->%s", name, r.field);
-        GRASS_TRY(check_range(ctx, fn, arg, r.value, r.lo, r.hi));
+        GRASS_TRY(check_range(log, fn, arg, r.value, r.lo, r.hi));
     }
     return GRASS_SUCCESS;
 }

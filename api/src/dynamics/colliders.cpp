@@ -1,7 +1,7 @@
 #include "dynamics/colliders.hpp"
 
-#include "context/raw_enum.hpp"
-#include "context/validate.hpp"
+#include "foundation/raw_enum.hpp"
+#include "foundation/validate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,11 +13,11 @@ namespace {
 
 double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-grass_result check_position(grass_context* ctx, const char* fn, const char* name, const double p[3]) {
-    GRASS_TRY(check_finite_array(ctx, fn, name, p, 3));
+grass_result check_position(Log* log, const char* fn, const char* name, const double p[3]) {
+    GRASS_TRY(check_finite_array(log, fn, name, p, 3));
     for (int c = 0; c < 3; ++c) {
         if (std::fabs(p[c]) > 1e12) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: %s[%d] is %g; it must be within +-1e12 m", fn, name, c, p[c]);
         }
     }
@@ -69,9 +69,9 @@ bool continues_passage(const grass_collider& c, const grass_collider* before, do
 
 } // namespace
 
-grass_result validate_colliders(grass_context* ctx, const char* fn, const grass_collider* colliders, uint32_t count) {
-    GRASS_TRY(check_range(ctx, fn, "count", count, 0, GRASS_MAX_COLLIDERS));
-    if (count > 0) GRASS_TRY(check_not_null(ctx, fn, "colliders", colliders));
+grass_result validate_colliders(Log* log, const char* fn, const grass_collider* colliders, uint32_t count) {
+    GRASS_TRY(check_range(log, fn, "count", count, 0, GRASS_MAX_COLLIDERS));
+    if (count > 0) GRASS_TRY(check_not_null(log, fn, "colliders", colliders));
     char name[64];
     auto arg = [&](uint32_t i, const char* field) {
         std::snprintf(name, sizeof name, "colliders[%u].%s", i, field);
@@ -81,22 +81,22 @@ grass_result validate_colliders(grass_context* ctx, const char* fn, const grass_
         const grass_collider& c = colliders[i];
         const int64_t shape = raw_enum(c.shape);
         if (shape != GRASS_COLLIDER_SPHERE && shape != GRASS_COLLIDER_CAPSULE) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                              "%s: %s is %lld; it must be GRASS_COLLIDER_SPHERE or GRASS_COLLIDER_CAPSULE", fn,
                              arg(i, "shape"), static_cast<long long>(shape));
         }
-        GRASS_TRY(check_range(ctx, fn, arg(i, "radius"), c.radius, 0.0, 1e6));
-        GRASS_TRY(check_position(ctx, fn, arg(i, "centre"), c.centre));
+        GRASS_TRY(check_range(log, fn, arg(i, "radius"), c.radius, 0.0, 1e6));
+        GRASS_TRY(check_position(log, fn, arg(i, "centre"), c.centre));
         // A sphere's end is unused: finite all the same (a NaN anywhere is a host's bug).
         if (shape == GRASS_COLLIDER_CAPSULE) {
-            GRASS_TRY(check_position(ctx, fn, arg(i, "end"), c.end));
+            GRASS_TRY(check_position(log, fn, arg(i, "end"), c.end));
         } else {
-            GRASS_TRY(check_finite_array(ctx, fn, arg(i, "end"), c.end, 3));
+            GRASS_TRY(check_finite_array(log, fn, arg(i, "end"), c.end, 3));
         }
         for (int k = 0; k < 3; ++k) {
             char component[64];
             std::snprintf(component, sizeof component, "colliders[%u].velocity[%d]", i, k);
-            GRASS_TRY(check_range(ctx, fn, component, c.velocity[k], -1e5, 1e5));
+            GRASS_TRY(check_range(log, fn, component, c.velocity[k], -1e5, 1e5));
         }
     }
     return GRASS_SUCCESS;

@@ -5,9 +5,9 @@
 // colliders touch, not with the field or the number of colliders elsewhere.
 #pragma once
 
-#include "context/context.hpp"
 #include "dynamics/dynamics_state.hpp"
-#include "plan/frame_plan.hpp"
+#include "foundation/frame_plan.hpp"
+#include "foundation/log.hpp"
 
 #include <grass/grass.h>
 
@@ -18,7 +18,7 @@ constexpr uint32_t kInteractionTileSize = 16;
 
 // Every collider: a known shape, a radius in 0 .. 1e6, finite positions within +-1e12 m,
 // velocity components within +-1e5 m/s.
-grass_result validate_colliders(grass_context* ctx, const char* fn, const grass_collider* colliders, uint32_t count);
+grass_result validate_colliders(Log* log, const char* fn, const grass_collider* colliders, uint32_t count);
 
 // The map's frame at this frame: unit axes (world), the camera's height above the anchor.
 struct MapFrame {

@@ -18,14 +18,14 @@ void clear_responsive_uniforms(FrameUniforms* f) {
 
 } // namespace
 
-DynamicsFrame plan_dynamics(grass_context* ctx, const grass_view_desc& view) {
-    DynamicsState& state = ctx->dynamics;
-    FramePlan& plan = ctx->plan;
+DynamicsFrame plan_dynamics(DynamicsState* state_out, FramePlan* plan_out, Log* log, const grass_view_desc& view) {
+    DynamicsState& state = *state_out;
+    FramePlan& plan = *plan_out;
     // The step: the time since the previous frame; 0 at the first frame and when the host's
     // clock went backwards (said once per occurrence).
     double dt = state.has_time ? view.time - state.previous_time : 0.0;
     if (dt < 0.0) {
-        ctx->warn(GRASS_MSG_TIME_BACKWARDS,
+        log->warn(GRASS_MSG_TIME_BACKWARDS,
                   "grass_begin_frame: view->time is %.9g s, earlier than the previous frame's %.9g s; the responsive "
                   "grass steps 0 this frame",
                   view.time, state.previous_time);
@@ -46,20 +46,8 @@ DynamicsFrame plan_dynamics(grass_context* ctx, const grass_view_desc& view) {
     return out;
 }
 
-grass_result upload_blade_curves(grass_context* ctx) {
-    for (const TierDraw& draw : ctx->plan.draws) {
-        if ((draw.features & kBladeCurveFeatures) == 0) continue;
-        Patch* patch = ctx->patches.get(draw.patch_slot);
-        if (patch->blade_curves_uploaded) continue;
-        const grass_result r = ctx->backend->upload_blade_curves(draw.patch_slot, patch->data);
-        if (r != GRASS_SUCCESS) return r;
-        patch->blade_curves_uploaded = true;
-    }
-    return GRASS_SUCCESS;
-}
-
-void commit_dynamics(grass_context* ctx) {
-    DynamicsState& state = ctx->dynamics;
+void commit_dynamics(DynamicsState* state_out) {
+    DynamicsState& state = *state_out;
     state.has_time = true;
     state.previous_time = state.pending_time;
     state.map = state.pending_map;

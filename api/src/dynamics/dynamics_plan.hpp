@@ -4,7 +4,9 @@
 // plans: no feature bit, no pass, zero uniforms.
 #pragma once
 
-#include "context/context.hpp"
+#include "dynamics/dynamics_state.hpp"
+#include "foundation/frame_plan.hpp"
+#include "foundation/log.hpp"
 
 #include <grass/grass.h>
 
@@ -20,15 +22,11 @@ struct DynamicsFrame {
     }
 };
 
-// Fills ctx->plan's responsive parts (frame uniforms, interaction plan, stats.colliders*,
-// interaction_texels, time_step) for `view` and keeps what to commit in ctx->dynamics.
-DynamicsFrame plan_dynamics(grass_context* ctx, const grass_view_desc& view);
-
-// Before the backend's begin_frame: the blade curves of each patch a responsive draw uses,
-// once per patch.
-grass_result upload_blade_curves(grass_context* ctx);
+// Fills plan's responsive parts (frame uniforms, interaction plan, stats.colliders*,
+// interaction_texels, time_step) for `view` and keeps what to commit in *state.
+DynamicsFrame plan_dynamics(DynamicsState* state, FramePlan* plan, Log* log, const grass_view_desc& view);
 
 // After the frame has begun: the time and the map's state become the previous frame's.
-void commit_dynamics(grass_context* ctx);
+void commit_dynamics(DynamicsState* state);
 
 } // namespace grass

@@ -3,7 +3,7 @@
 // scrolling state, and the clock. Nothing here is per blade: a field is tiled from one patch.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <grass/grass.h>
 

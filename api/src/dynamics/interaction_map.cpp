@@ -1,6 +1,6 @@
 #include "dynamics/interaction_map.hpp"
 
-#include "context/validate.hpp"
+#include "foundation/validate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,25 +31,25 @@ grass_interaction_desc default_interaction_desc() {
     return d;
 }
 
-grass_result validate_interaction(grass_context* ctx, const char* fn, const grass_interaction_desc& d) {
-    GRASS_TRY(check_direction(ctx, fn, "desc->up", d.up));
+grass_result validate_interaction(Log* log, const char* fn, const grass_interaction_desc& d) {
+    GRASS_TRY(check_direction(log, fn, "desc->up", d.up));
     const uint32_t n = d.resolution;
     if (n < 64 || n > 2048 || (n & (n - 1)) != 0) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                          "%s: desc->resolution is %u; it must be a power of two in [64, 2048]", fn, n);
     }
-    GRASS_TRY(check_range(ctx, fn, "desc->level_count", d.level_count, 1, 2));
-    GRASS_TRY(check_range(ctx, fn, "desc->texel_size[0]", d.texel_size[0], 1e-3, 1e3));
+    GRASS_TRY(check_range(log, fn, "desc->level_count", d.level_count, 1, 2));
+    GRASS_TRY(check_range(log, fn, "desc->texel_size[0]", d.texel_size[0], 1e-3, 1e3));
     if (d.level_count == 2) {
-        GRASS_TRY(check_range(ctx, fn, "desc->texel_size[1]", d.texel_size[1], 1e-3, 1e3));
+        GRASS_TRY(check_range(log, fn, "desc->texel_size[1]", d.texel_size[1], 1e-3, 1e3));
         if (d.texel_size[1] < d.texel_size[0]) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_RANGE_INVERTED,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_RANGE_INVERTED,
                              "%s: desc->texel_size[0] (%g) is greater than desc->texel_size[1] (%g); the coarse level "
                              "(1) must not be finer than level 0",
                              fn, static_cast<double>(d.texel_size[0]), static_cast<double>(d.texel_size[1]));
         }
     } else {
-        GRASS_TRY(check_finite(ctx, fn, "desc->texel_size[1]", d.texel_size[1])); // unused, finite all the same
+        GRASS_TRY(check_finite(log, fn, "desc->texel_size[1]", d.texel_size[1])); // unused, finite all the same
     }
     return GRASS_SUCCESS;
 }

@@ -7,10 +7,10 @@
 // camera is more than kReanchorDistance from it).
 #pragma once
 
-#include "context/context.hpp"
 #include "dynamics/colliders.hpp"
 #include "dynamics/dynamics_state.hpp"
-#include "plan/frame_plan.hpp"
+#include "foundation/frame_plan.hpp"
+#include "foundation/log.hpp"
 
 #include <grass/grass.h>
 
@@ -20,7 +20,7 @@ constexpr double kReanchorDistance = 1e4; // metres along up
 
 grass_interaction_desc default_interaction_desc();
 
-grass_result validate_interaction(grass_context* ctx, const char* fn, const grass_interaction_desc& desc);
+grass_result validate_interaction(Log* log, const char* fn, const grass_interaction_desc& desc);
 
 // The map's unit axes for desc.up: u (world x made orthogonal to up; world z when up is near
 // x) and v = u x up, across it; and the camera's height above `anchor`. For up = +y: u = +x,

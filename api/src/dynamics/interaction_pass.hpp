@@ -4,7 +4,7 @@
 // map against it.
 #pragma once
 
-#include "plan/frame_plan.hpp"
+#include "foundation/frame_plan.hpp"
 
 #include <cstdint>
 

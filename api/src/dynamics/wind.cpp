@@ -1,7 +1,7 @@
 #include "dynamics/wind.hpp"
 
-#include "context/raw_enum.hpp"
-#include "context/validate.hpp"
+#include "foundation/raw_enum.hpp"
+#include "foundation/validate.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -24,7 +24,7 @@ void normalize3(const float v[3], double out[3]) {
     out[2] = z / len;
 }
 
-grass_result validate_source(grass_context* ctx, const char* fn, uint32_t i, const grass_wind_source& s) {
+grass_result validate_source(Log* log, const char* fn, uint32_t i, const grass_wind_source& s) {
     char name[96];
     auto arg = [&](const char* field) {
         std::snprintf(name, sizeof name, "wind->sources[%u].%s", i, field);
@@ -32,33 +32,33 @@ grass_result validate_source(grass_context* ctx, const char* fn, uint32_t i, con
     };
     const int64_t kind = raw_enum(s.kind);
     if (kind != GRASS_WIND_SOURCE_POINT && kind != GRASS_WIND_SOURCE_CONE && kind != GRASS_WIND_SOURCE_BLAST) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                          "%s: %s is %lld; it must be GRASS_WIND_SOURCE_POINT, _CONE or _BLAST", fn, arg("kind"),
                          static_cast<long long>(kind));
     }
     // Every number finite, used or not (a NaN anywhere is a host's bug); ranges where used.
-    GRASS_TRY(check_finite_array(ctx, fn, arg("position"), s.position, 3));
+    GRASS_TRY(check_finite_array(log, fn, arg("position"), s.position, 3));
     for (int c = 0; c < 3; ++c) {
         if (std::fabs(s.position[c]) > kMaxPosition) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: %s[%d] is %g; it must be within +-1e12 m", fn, arg("position"), c, s.position[c]);
         }
     }
-    GRASS_TRY(check_finite_array(ctx, fn, arg("direction"), s.direction, 3));
-    GRASS_TRY(check_finite(ctx, fn, arg("cone_angle"), s.cone_angle));
-    GRASS_TRY(check_finite(ctx, fn, arg("start_time"), s.start_time));
-    GRASS_TRY(check_finite(ctx, fn, arg("duration"), s.duration));
-    GRASS_TRY(check_finite(ctx, fn, arg("front_speed"), s.front_speed));
-    GRASS_TRY(check_range(ctx, fn, arg("speed"), s.speed, 0.0, 1e3));
-    GRASS_TRY(check_range(ctx, fn, arg("radius"), s.radius, 1e-3, 1e6));
+    GRASS_TRY(check_finite_array(log, fn, arg("direction"), s.direction, 3));
+    GRASS_TRY(check_finite(log, fn, arg("cone_angle"), s.cone_angle));
+    GRASS_TRY(check_finite(log, fn, arg("start_time"), s.start_time));
+    GRASS_TRY(check_finite(log, fn, arg("duration"), s.duration));
+    GRASS_TRY(check_finite(log, fn, arg("front_speed"), s.front_speed));
+    GRASS_TRY(check_range(log, fn, arg("speed"), s.speed, 0.0, 1e3));
+    GRASS_TRY(check_range(log, fn, arg("radius"), s.radius, 1e-3, 1e6));
     if (kind == GRASS_WIND_SOURCE_CONE) {
-        GRASS_TRY(check_direction(ctx, fn, arg("direction"), s.direction));
-        GRASS_TRY(check_range_above(ctx, fn, arg("cone_angle"), s.cone_angle, 0.0, 1.5707963267948966));
+        GRASS_TRY(check_direction(log, fn, arg("direction"), s.direction));
+        GRASS_TRY(check_range_above(log, fn, arg("cone_angle"), s.cone_angle, 0.0, 1.5707963267948966));
     }
     if (kind == GRASS_WIND_SOURCE_BLAST) {
-        GRASS_TRY(check_range(ctx, fn, arg("start_time"), s.start_time, -kMaxTime, kMaxTime));
-        GRASS_TRY(check_range_above(ctx, fn, arg("duration"), s.duration, 0.0, 1e4));
-        GRASS_TRY(check_range_above(ctx, fn, arg("front_speed"), s.front_speed, 0.0, 1e4));
+        GRASS_TRY(check_range(log, fn, arg("start_time"), s.start_time, -kMaxTime, kMaxTime));
+        GRASS_TRY(check_range_above(log, fn, arg("duration"), s.duration, 0.0, 1e4));
+        GRASS_TRY(check_range_above(log, fn, arg("front_speed"), s.front_speed, 0.0, 1e4));
     }
     return GRASS_SUCCESS;
 }
@@ -85,17 +85,17 @@ grass_wind_desc default_wind_desc() {
     return w;
 }
 
-grass_result validate_wind(grass_context* ctx, const char* fn, const grass_wind_desc& w) {
-    GRASS_TRY(check_direction(ctx, fn, "wind->direction", w.direction));
-    GRASS_TRY(check_range(ctx, fn, "wind->speed", w.speed, 0.0, 1e3));
-    GRASS_TRY(check_range(ctx, fn, "wind->gust_strength", w.gust_strength, 0.0, 4.0));
-    GRASS_TRY(check_range(ctx, fn, "wind->gust_length", w.gust_length, 0.1, 1e5));
-    GRASS_TRY(check_range(ctx, fn, "wind->turbulence", w.turbulence, 0.0, 1.0));
+grass_result validate_wind(Log* log, const char* fn, const grass_wind_desc& w) {
+    GRASS_TRY(check_direction(log, fn, "wind->direction", w.direction));
+    GRASS_TRY(check_range(log, fn, "wind->speed", w.speed, 0.0, 1e3));
+    GRASS_TRY(check_range(log, fn, "wind->gust_strength", w.gust_strength, 0.0, 4.0));
+    GRASS_TRY(check_range(log, fn, "wind->gust_length", w.gust_length, 0.1, 1e5));
+    GRASS_TRY(check_range(log, fn, "wind->turbulence", w.turbulence, 0.0, 1.0));
     static const char* const gravity_names[3] = {"wind->gravity[0]", "wind->gravity[1]", "wind->gravity[2]"};
-    for (int c = 0; c < 3; ++c) GRASS_TRY(check_range(ctx, fn, gravity_names[c], w.gravity[c], -1e3, 1e3));
-    GRASS_TRY(check_range(ctx, fn, "wind->source_count", w.source_count, 0, GRASS_MAX_WIND_SOURCES));
-    if (w.source_count > 0) GRASS_TRY(check_not_null(ctx, fn, "wind->sources", w.sources));
-    for (uint32_t i = 0; i < w.source_count; ++i) GRASS_TRY(validate_source(ctx, fn, i, w.sources[i]));
+    for (int c = 0; c < 3; ++c) GRASS_TRY(check_range(log, fn, gravity_names[c], w.gravity[c], -1e3, 1e3));
+    GRASS_TRY(check_range(log, fn, "wind->source_count", w.source_count, 0, GRASS_MAX_WIND_SOURCES));
+    if (w.source_count > 0) GRASS_TRY(check_not_null(log, fn, "wind->sources", w.sources));
+    for (uint32_t i = 0; i < w.source_count; ++i) GRASS_TRY(validate_source(log, fn, i, w.sources[i]));
     return GRASS_SUCCESS;
 }
 

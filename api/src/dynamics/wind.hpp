@@ -5,8 +5,8 @@
 // in double so that a shader needs only camera-relative floats.
 #pragma once
 
-#include "context/context.hpp"
-#include "plan/frame_plan.hpp"
+#include "foundation/frame_plan.hpp"
+#include "foundation/log.hpp"
 
 #include <grass/grass.h>
 
@@ -24,7 +24,7 @@ constexpr double kGustOffset[3] = {0.0, 0.37, 0.71};
 grass_wind_desc default_wind_desc();
 
 // The desc and each source: finite numbers in their documented ranges, known kinds.
-grass_result validate_wind(grass_context* ctx, const char* fn, const grass_wind_desc& wind);
+grass_result validate_wind(Log* log, const char* fn, const grass_wind_desc& wind);
 
 // Wind blows or gravity differs from standard: the draws need the kFeatureWind variant.
 bool wind_is_active(const grass_wind_desc& wind);

@@ -1,7 +1,6 @@
 #include "dynamics/wind_map.hpp"
 
-#include "context/context.hpp"
-#include "context/validate.hpp"
+#include "foundation/validate.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -16,23 +15,21 @@ grass_wind_map_desc default_wind_map_desc() {
     return d;
 }
 
-grass_result validate_wind_map(grass_context* ctx, const char* fn, const grass_wind_map_desc& d, uint32_t cells_x,
-                               uint32_t cells_z, FieldWindMap* out) {
-    GRASS_TRY(check_map_id(ctx, fn, "desc->map", d.map));
-    const DesignMap* map = ctx->maps.get(d.map.index - 1);
-    if (map->channels != 4) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_MAP_ROLE,
+grass_result validate_wind_map(Log* log, const char* fn, const grass_wind_map_desc& d, const DesignMap& map,
+                               uint32_t cells_x, uint32_t cells_z, FieldWindMap* out) {
+    if (map.channels != 4) {
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_MAP_ROLE,
                          "%s: desc->map has %u channel(s); a wind map needs an RGBA format (r, g: the wind along "
                          "the field's x and z)",
-                         fn, map->channels);
+                         fn, map.channels);
     }
-    GRASS_TRY(check_range(ctx, fn, "desc->speed", d.speed, 0.0, 1e3));
-    GRASS_TRY(check_finite_array(ctx, fn, "desc->cell_to_map", d.cell_to_map, 6));
+    GRASS_TRY(check_range(log, fn, "desc->speed", d.speed, 0.0, 1e3));
+    GRASS_TRY(check_finite_array(log, fn, "desc->cell_to_map", d.cell_to_map, 6));
     bool all_zero = true;
     for (double v : d.cell_to_map) all_zero = all_zero && v == 0.0;
     const double det = d.cell_to_map[0] * d.cell_to_map[3] - d.cell_to_map[1] * d.cell_to_map[2];
     if (!all_zero && !(std::fabs(det) > 0.0)) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM,
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM,
                          "%s: desc->cell_to_map maps the field onto a line (determinant %g); it must be invertible, "
                          "or all zero for a map that spans the field",
                          fn, det);

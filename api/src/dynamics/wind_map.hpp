@@ -4,14 +4,14 @@
 // kFeatureWind); a field without one plans and draws exactly what it did before.
 #pragma once
 
-#include "context/backend.hpp"
-#include "plan/frame_plan.hpp"
+#include "context/backend.hpp" // the shader interface (kNoMap): foundation/shader_interface.hpp once split
+#include "foundation/frame_plan.hpp"
+#include "foundation/log.hpp"
+#include "maps/design_map.hpp"
 
 #include <grass/grass.h>
 
 #include <cstdint>
-
-struct grass_context;
 
 namespace grass {
 
@@ -24,11 +24,12 @@ struct FieldWindMap {
 
 grass_wind_map_desc default_wind_map_desc();
 
-// Validates `desc` (type tag, the map's id and format, speed, transform) for a field of
-// cells_x x cells_z cells and fills `out` (the all-zero transform made to span the field).
+// Validates `desc` (its map's format: `map` is the design map desc->map names, whose id
+// the caller checked; speed, transform) for a field of cells_x x cells_z cells and fills
+// `out` (the all-zero transform made to span the field).
 // On error logs naming the argument and returns the code; `out` is untouched.
-grass_result validate_wind_map(grass_context* ctx, const char* fn, const grass_wind_map_desc& desc, uint32_t cells_x,
-                               uint32_t cells_z, FieldWindMap* out);
+grass_result validate_wind_map(Log* log, const char* fn, const grass_wind_map_desc& desc, const DesignMap& map,
+                               uint32_t cells_x, uint32_t cells_z, FieldWindMap* out);
 
 // FieldUniforms::wind_map_u / wind_map_v of a field with `wind` (zero without a wind map).
 void pack_wind_map(const FieldWindMap& wind, FieldUniforms* uniforms);

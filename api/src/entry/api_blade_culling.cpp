@@ -2,7 +2,8 @@
 // field and every grass type of it are checked before any changes, so a refusal leaves the
 // earlier culling intact; the next grass_begin_frame plans with the new one.
 #include "context/context.hpp"
-#include "context/validate.hpp"
+#include "context/id_checks.hpp"
+#include "foundation/validate.hpp"
 #include "plan/blade_culling.hpp"
 
 using grass::guarded;

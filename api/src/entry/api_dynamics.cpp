@@ -2,12 +2,13 @@
 // colliders, the interaction map. Each validates everything before it changes anything, so
 // a refusal leaves the earlier state intact; the state is read by the next grass_begin_frame.
 #include "context/context.hpp"
-#include "context/validate.hpp"
+#include "context/id_checks.hpp"
 #include "dynamics/blade_mechanics.hpp"
 #include "dynamics/colliders.hpp"
 #include "dynamics/interaction_map.hpp"
 #include "dynamics/wind.hpp"
 #include "dynamics/wind_map.hpp"
+#include "foundation/validate.hpp"
 
 #include <cstring>
 
@@ -104,8 +105,9 @@ GRASS_API grass_result grass_set_field_wind_map(grass_context* context, grass_fi
         if (desc) {
             GRASS_TRY(GRASS_CHECK_DESC(context, fn, desc, GRASS_STRUCT_TYPE_WIND_MAP_DESC));
             if (!grass_map_id_is_null(desc->map)) {
-                GRASS_TRY(grass::validate_wind_map(context, fn, *desc, host_field->desc.cells_x,
-                                                   host_field->desc.cells_z, &wind));
+                GRASS_TRY(grass::check_map_id(context, fn, "desc->map", desc->map));
+                GRASS_TRY(grass::validate_wind_map(context, fn, *desc, *context->maps.get(desc->map.index - 1),
+                                                   host_field->desc.cells_x, host_field->desc.cells_z, &wind));
             }
         }
         // The field and its grass types (hidden fields of the same cells) share the wind.

@@ -1,8 +1,10 @@
 // C entry points for fields: a grid of cells covered by one patch.
-#include "bake/tier_slices.hpp"
 #include "context/context.hpp"
+#include "context/id_checks.hpp"
 #include "context/invariants.hpp"
-#include "context/validate.hpp"
+#include "context/tier_slices.hpp"
+#include "entry/api_map.hpp"
+#include "foundation/validate.hpp"
 #include "maps/design_map.hpp"
 #include "plan/lod_setup.hpp"
 

@@ -1,9 +1,9 @@
 // C entry points for frames: begin (validate the view, plan), end, stats.
-#include "context/abi_sizes.hpp"
 #include "context/context.hpp"
 #include "context/invariants.hpp"
-#include "context/validate.hpp"
 #include "dynamics/dynamics_plan.hpp"
+#include "foundation/abi_sizes.hpp"
+#include "foundation/validate.hpp"
 #include "plan/frame_planner.hpp"
 
 #include <cmath>
@@ -72,6 +72,20 @@ grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_
     return GRASS_SUCCESS;
 }
 
+// Before the backend's begin_frame: the blade curves of each patch a responsive draw uses,
+// once per patch.
+grass_result upload_blade_curves(grass_context* ctx) {
+    for (const TierDraw& draw : ctx->plan.draws) {
+        if ((draw.features & kBladeCurveFeatures) == 0) continue;
+        Patch* patch = ctx->patches.get(draw.patch_slot);
+        if (patch->blade_curves_uploaded) continue;
+        const grass_result r = ctx->backend->upload_blade_curves(draw.patch_slot, patch->data);
+        if (r != GRASS_SUCCESS) return r;
+        patch->blade_curves_uploaded = true;
+    }
+    return GRASS_SUCCESS;
+}
+
 } // namespace
 } // namespace grass
 
@@ -104,11 +118,21 @@ GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_vie
                                  "%s: a frame has already begun; call grass_end_frame first", fn);
         }
         GRASS_TRY(grass::validate_view(context, fn, view));
-        GRASS_TRY(grass::build_frame_plan(context, *view));
+        const grass::FramePlanning planning{context->fields,
+                                            context->patches,
+                                            context->maps,
+                                            context->dynamics,
+                                            context->plan,
+                                            context->plan_scratch,
+                                            *context,
+                                            context->lod_callbacks_running,
+                                            context->desc.depth_mode,
+                                            context->backend && context->backend->kind() == GRASS_BACKEND_VULKAN};
+        GRASS_TRY(grass::build_frame_plan(planning, *view));
         GRASS_TRY(grass::check_plan(context, fn));
         GRASS_TRY(grass::upload_blade_curves(context));
         GRASS_TRY(context->backend->begin_frame(context->plan));
-        grass::commit_dynamics(context);
+        grass::commit_dynamics(&context->dynamics);
         context->in_frame = true;
         context->frame_number += 1;
         return GRASS_SUCCESS;

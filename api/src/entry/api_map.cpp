@@ -1,6 +1,8 @@
 // C entry points for design maps: images a field's map stack references (lemme2012 6.4).
+#include "entry/api_map.hpp"
 #include "context/context.hpp"
-#include "context/validate.hpp"
+#include "context/id_checks.hpp"
+#include "foundation/validate.hpp"
 #include "maps/design_map.hpp"
 
 #include <algorithm>

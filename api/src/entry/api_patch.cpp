@@ -1,7 +1,8 @@
 // C entry points for patches (grass types).
-#include "context/abi_sizes.hpp"
 #include "context/context.hpp"
-#include "context/validate.hpp"
+#include "context/id_checks.hpp"
+#include "foundation/abi_sizes.hpp"
+#include "foundation/validate.hpp"
 #include "patch/patch_generator.hpp"
 
 #include <cstring>

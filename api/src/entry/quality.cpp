@@ -2,8 +2,8 @@
 // A preset is a grass_quality_desc; applying one shapes a patch desc and Lemme's default lod
 // setup (lod_setup.cpp) by a few scales, so every level is the same method, nearer or further.
 #include "context/context.hpp"
-#include "context/raw_enum.hpp"
-#include "context/validate.hpp"
+#include "foundation/raw_enum.hpp"
+#include "foundation/validate.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,6 @@
 #include "maps/design_map.hpp"
 
-#include "context/context.hpp"
-#include "context/validate.hpp"
+#include "foundation/validate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,21 +46,21 @@ uint32_t map_format_channels(int64_t format) {
     }
 }
 
-grass_result convert_map(grass_context* ctx, const char* fn, const char* name, const grass_map_desc* desc,
-                         uint32_t max_width, uint32_t max_height, Vector<uint16_t>* out) {
-    GRASS_TRY(check_desc_header(ctx, fn, name, desc, desc ? raw_enum(desc->type) : int64_t{GRASS_STRUCT_TYPE_MAP_DESC},
+grass_result convert_map(Log* log, const char* fn, const char* name, const grass_map_desc* desc, uint32_t max_width,
+                         uint32_t max_height, Vector<uint16_t>* out) {
+    GRASS_TRY(check_desc_header(log, fn, name, desc, desc ? raw_enum(desc->type) : int64_t{GRASS_STRUCT_TYPE_MAP_DESC},
                                 desc ? desc->next : nullptr, GRASS_STRUCT_TYPE_MAP_DESC, "GRASS_STRUCT_TYPE_MAP_DESC"));
     const grass_map_desc& d = *desc;
     const int64_t format = raw_enum(d.format);
     const uint32_t channels = map_format_channels(format);
     const uint32_t bytes = component_bytes(format);
     if (channels == 0) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
                          "%s: %s->format is %lld; it must be a grass_map_format", fn, name,
                          static_cast<long long>(format));
     }
     if (d.width < 1 || d.width > max_width || d.height < 1 || d.height > max_height) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
                          "%s: %s is %u x %u texels; it must be 1..%u wide and 1..%u high", fn, name, d.width, d.height,
                          max_width, max_height);
     }
@@ -69,15 +68,15 @@ grass_result convert_map(grass_context* ctx, const char* fn, const char* name, c
     const uint64_t row_bytes = static_cast<uint64_t>(d.width) * texel_bytes;
     const uint64_t pitch = d.row_pitch ? d.row_pitch : row_bytes;
     if (pitch < row_bytes || pitch % bytes != 0) {
-        return ctx->fail(
+        return log->fail(
             GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
             "%s: %s->row_pitch is %u bytes; it must be at least width x texel size (%llu) and a multiple of %u", fn,
             name, d.row_pitch, static_cast<unsigned long long>(row_bytes), bytes);
     }
     if (!d.pixels)
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s->pixels is NULL", fn, name);
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s->pixels is NULL", fn, name);
 
-    Vector<uint16_t> texels{StlAllocator<uint16_t>(&ctx->host)};
+    Vector<uint16_t> texels{out->get_allocator()}; // the context's host memory, as *out
     texels.resize(static_cast<size_t>(d.width) * d.height * channels);
     const auto* base = static_cast<const unsigned char*>(d.pixels);
     for (uint32_t y = 0; y < d.height; ++y) {
@@ -95,7 +94,7 @@ grass_result convert_map(grass_context* ctx, const char* fn, const char* name, c
                 float f;
                 std::memcpy(&f, row + 4 * i, 4);
                 if (!(f >= 0.0f && f <= 1.0f)) { // also catches NaN
-                    return ctx->fail(
+                    return log->fail(
                         GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_MAP,
                         "%s: %s texel (%u, %u) channel %u is %g; float maps must hold finite values in [0, 1]", fn,
                         name, i / channels, y, i % channels, static_cast<double>(f));

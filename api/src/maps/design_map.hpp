@@ -2,14 +2,13 @@
 // (colour maps: linear RGB + alpha), with a min/max pyramid for the single-channel ones.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
+#include "foundation/log.hpp"
 #include "maps/map_pyramid.hpp"
 
 #include <grass/grass.h>
 
 #include <cstdint>
-
-struct grass_context;
 
 namespace grass {
 
@@ -31,18 +30,11 @@ uint32_t map_format_channels(int64_t format);
 // to 16-bit unorm in `out` (sRGB colour to linear). `max_width`/`max_height` bound the size
 // (16384 for a new map, the space left for a region). On error logs, returns the code and
 // leaves `out` untouched.
-grass_result convert_map(grass_context* ctx, const char* function, const char* name, const grass_map_desc* desc,
+grass_result convert_map(Log* log, const char* function, const char* name, const grass_map_desc* desc,
                          uint32_t max_width, uint32_t max_height, Vector<uint16_t>* out);
 
 // Bilinear sample of channel 0 with edge clamping at map uv (u along x, v along z), as the
 // GPU does; `channels` is the texel stride.
 float sample_map(const uint16_t* texels, uint32_t width, uint32_t height, uint32_t channels, double u, double v);
-
-// Makes a map object in the context's pool and uploads it; `field_private` maps come from
-// grass_field_desc.density_map and have no public id. On failure nothing is left.
-grass_result make_map(grass_context* ctx, const char* function, const char* name, const grass_map_desc* desc,
-                      bool field_private, uint32_t* out_slot);
-// Releases the map in `slot` (no field may use it).
-void release_map(grass_context* ctx, uint32_t slot);
 
 } // namespace grass

@@ -5,7 +5,7 @@
 // node, whatever the field's size.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <cstdint>
 

@@ -2,7 +2,7 @@
 // value in (0, 1]; a blade is drawn where the local density is at least its threshold.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <grass/grass.h>
 

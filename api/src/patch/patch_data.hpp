@@ -2,7 +2,7 @@
 // patch units, with per-blade density thresholds. Shared by the core and the backends.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <cstdint>
 

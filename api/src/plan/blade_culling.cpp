@@ -1,6 +1,7 @@
 #include "plan/blade_culling.hpp"
 
-#include "context/validate.hpp"
+#include "foundation/validate.hpp"
+#include "plan/field.hpp"
 
 namespace grass {
 
@@ -20,9 +21,9 @@ grass_blade_culling_desc default_blade_culling_desc() {
 
 namespace {
 
-grass_result check_bool(grass_context* ctx, const char* fn, const char* name, grass_bool b) {
+grass_result check_bool(Log* log, const char* fn, const char* name, grass_bool b) {
     if (b == 0 || b == 1) return GRASS_SUCCESS;
-    return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: %s is %u; it must be 0 or 1", fn, name,
+    return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: %s is %u; it must be 0 or 1", fn, name,
                      static_cast<unsigned>(b));
 }
 
@@ -40,27 +41,27 @@ float geometry_end(const Field& field) {
 
 } // namespace
 
-grass_result resolve_blade_culling(grass_context* ctx, const char* fn, const Field& field,
-                                   const grass_blade_culling_desc& d, BladeCulling* out) {
-    GRASS_TRY(check_bool(ctx, fn, "culling->orientation", d.orientation));
-    GRASS_TRY(check_range(ctx, fn, "culling->orientation_limit", d.orientation_limit, 0.5, 1.0));
-    GRASS_TRY(check_bool(ctx, fn, "culling->view_frustum", d.view_frustum));
-    GRASS_TRY(check_range(ctx, fn, "culling->frustum_tolerance", d.frustum_tolerance, 0.0, 1.0));
+grass_result resolve_blade_culling(Log* log, const char* fn, const Field& field, const grass_blade_culling_desc& d,
+                                   BladeCulling* out) {
+    GRASS_TRY(check_bool(log, fn, "culling->orientation", d.orientation));
+    GRASS_TRY(check_range(log, fn, "culling->orientation_limit", d.orientation_limit, 0.5, 1.0));
+    GRASS_TRY(check_bool(log, fn, "culling->view_frustum", d.view_frustum));
+    GRASS_TRY(check_range(log, fn, "culling->frustum_tolerance", d.frustum_tolerance, 0.0, 1.0));
     const int64_t mode = raw_enum(d.distance);
     if (mode != GRASS_DISTANCE_CULLING_OFF && mode != GRASS_DISTANCE_CULLING_BLADE_INDEX &&
         mode != GRASS_DISTANCE_CULLING_THRESHOLD) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                          "%s: culling->distance is %lld; it must be GRASS_DISTANCE_CULLING_OFF, _BLADE_INDEX or "
                          "_THRESHOLD",
                          fn, static_cast<long long>(mode));
     }
-    GRASS_TRY(check_range(ctx, fn, "culling->distance_levels", d.distance_levels, 1.0, 64.0));
-    GRASS_TRY(check_range(ctx, fn, "culling->distance_max", d.distance_max, 0.0, 3.0e38));
+    GRASS_TRY(check_range(log, fn, "culling->distance_levels", d.distance_levels, 1.0, 64.0));
+    GRASS_TRY(check_range(log, fn, "culling->distance_max", d.distance_max, 0.0, 3.0e38));
     BladeCulling c;
     if (mode != GRASS_DISTANCE_CULLING_OFF) {
         c.distance_max = d.distance_max > 0.0f ? d.distance_max : geometry_end(field);
         if (c.distance_max <= 0.0f) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: culling->distance_max is 0, which means the far end of the field's geometry "
                              "tiers, but none of its geometry tiers has a finite distance band; give metres",
                              fn);

@@ -3,6 +3,8 @@
 // api/shaders/blade_culling.glsl as each blade's vertices are placed.
 #pragma once
 
+#include "foundation/log.hpp"
+
 #include <grass/grass.h>
 
 namespace grass {
@@ -22,7 +24,7 @@ grass_blade_culling_desc default_blade_culling_desc();
 
 // Checks `desc` (named "culling") for `field`'s tiers and writes what the shaders read. A
 // distance_max of 0 takes the far end of the field's geometry bands; none finite is refused.
-grass_result resolve_blade_culling(grass_context* ctx, const char* fn, const Field& field,
-                                   const grass_blade_culling_desc& desc, BladeCulling* out);
+grass_result resolve_blade_culling(Log* log, const char* fn, const Field& field, const grass_blade_culling_desc& desc,
+                                   BladeCulling* out);
 
 } // namespace grass

@@ -1,7 +1,7 @@
 #include "plan/frame_planner.hpp"
 
-#include "context/validate.hpp"
 #include "dynamics/dynamics_plan.hpp"
+#include "foundation/validate.hpp"
 #include "maps/design_map.hpp"
 #include "plan/lod_setup.hpp"
 #include "plan/tier_transitions.hpp"
@@ -67,9 +67,9 @@ struct NodeBox {
 
 class FieldPlanner {
 public:
-    FieldPlanner(grass_context* ctx, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
+    FieldPlanner(const FramePlanning& in, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
                  const ViewCulling& culling, const DynamicsFrame& dynamics, uint32_t view_flags)
-        : ctx_(ctx), slot_(slot), field_(field), patch_(patch), culling_(culling), frame_(field_frame(field, camera)) {
+        : in_(in), slot_(slot), field_(field), patch_(patch), culling_(culling), frame_(field_frame(field, camera)) {
         for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
         // Responsive grass: the shader variant of every draw of the field (still grass: the
         // maps' bits only).
@@ -79,8 +79,8 @@ public:
         if (field.wind_map.active()) features_ |= kFeatureWind | kFeatureWindMap;
         if (view_flags & kDebugViewFlags) features_ |= kFeatureDebugView;
         const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
-        density_map_ = density_slot != kNoMap ? ctx->maps.get(density_slot) : nullptr;
-        height_map_ = height_slot != kNoMap ? ctx->maps.get(height_slot) : nullptr;
+        density_map_ = density_slot != kNoMap ? in.maps.get(density_slot) : nullptr;
+        height_map_ = height_slot != kNoMap ? in.maps.get(height_slot) : nullptr;
         // Field edges: each image tier's stand-in at the border, the nearest volume tier before
         // it (neither an overlay tier).
         const LodSetup& lod = field_.lod;
@@ -94,7 +94,7 @@ public:
     }
 
     grass_result run() {
-        PlanScratch& scratch = ctx_->plan_scratch;
+        PlanScratch& scratch = in_.scratch;
         const LodSetup& lod = field_.lod;
         for (uint32_t t = 0; t < lod.tier_count; ++t) scratch.per_tier[t].clear();
         scratch.stack.clear();
@@ -153,7 +153,7 @@ private:
     }
 
     grass_result visit(const PlanNode& node) {
-        FramePlan& plan = ctx_->plan;
+        FramePlan& plan = in_.plan;
         plan.stats.nodes_visited += 1;
         const NodeCells cells = field_.tree.cells_of(node.level, node.x, node.z);
         // No grass anywhere in the node: discard it without visiting its subtree.
@@ -211,15 +211,15 @@ private:
             int64_t answer;
             if (test.kind == GRASS_LOD_TEST_CALLBACK) {
                 {
-                    CallbackScope scope(ctx_->lod_callbacks_running); // calls on ctx_ are refused meanwhile
+                    CallbackScope scope(in_.lod_callbacks_running); // calls on the context are refused meanwhile
                     answer = static_cast<int64_t>(test.callback(test.user_data, &info));
                 }
                 if (answer < GRASS_LOD_DISCARD || answer > GRASS_LOD_DRAW) {
-                    return ctx_->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
-                                      "grass_begin_frame: lod test %u of field %u (a callback) answered %lld for node "
-                                      "(level %u, cell %u, %u); it must answer a grass_lod_answer",
-                                      k, slot_ + 1, static_cast<long long>(answer), node.level, info.cell_x,
-                                      info.cell_z);
+                    return in_.log.fail(
+                        GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                        "grass_begin_frame: lod test %u of field %u (a callback) answered %lld for node "
+                        "(level %u, cell %u, %u); it must answer a grass_lod_answer",
+                        k, slot_ + 1, static_cast<long long>(answer), node.level, info.cell_x, info.cell_z);
                 }
             } else {
                 answer = evaluate_builtin_test(test, info, node_top, camera_height);
@@ -257,7 +257,7 @@ private:
         for (uint64_t dz = 0; dz < 2; ++dz) {
             for (uint64_t dx = 0; dx < 2; ++dx) {
                 const uint64_t x = node.x * 2 + dx, z = node.z * 2 + dz;
-                if (x < nx && z < nz) ctx_->plan_scratch.stack.push_back(PlanNode{level, tests, x, z});
+                if (x < nx && z < nz) in_.scratch.stack.push_back(PlanNode{level, tests, x, z});
             }
         }
     }
@@ -338,7 +338,7 @@ private:
                       (k & 4) ? box.hi[2] : box.lo[2], corners[k]);
         }
         if (!culling_.box_may_be_visible(corners)) {
-            ctx_->plan.stats.nodes_culled += 1;
+            in_.plan.stats.nodes_culled += 1;
             return;
         }
         PlanCandidate c;
@@ -359,16 +359,16 @@ private:
         c.instance.terrain[3] = 0.0f;
         c.density =
             density_at(double(cells.x0) + 0.5 * double(cells.count_x), double(cells.z0) + 0.5 * double(cells.count_z));
-        ctx_->plan_scratch.per_tier[tier].push_back(c);
+        in_.scratch.per_tier[tier].push_back(c);
     }
 
     void emit_draws() {
-        FramePlan& plan = ctx_->plan;
+        FramePlan& plan = in_.plan;
         const LodSetup& lod = field_.lod;
         const PatchData& pd = patch_.data;
         bool drew = false;
         for (uint32_t t = 0; t < lod.tier_count; ++t) {
-            auto& candidates = ctx_->plan_scratch.per_tier[t];
+            auto& candidates = in_.scratch.per_tier[t];
             if (candidates.empty()) continue;
             const grass_tier_kind kind = lod.tiers[t].kind;
             if (kind == GRASS_TIER_GEOMETRY) { // front to back: early depth rejects the rest
@@ -481,7 +481,7 @@ private:
         u->culling[3] = c.distance_levels;
     }
 
-    grass_context* ctx_;
+    const FramePlanning& in_;
     uint32_t slot_;
     const Field& field_;
     const Patch& patch_;
@@ -501,9 +501,9 @@ private:
 
 } // namespace
 
-grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
+grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& view) {
     const auto start = std::chrono::steady_clock::now();
-    FramePlan& plan = ctx->plan;
+    FramePlan& plan = in.plan;
     plan.clear();
 
     // Camera-relative view: the host's rotation only; the translation is the camera position.
@@ -527,21 +527,20 @@ grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view) {
     plan.frame.sun_direction[3] = plan.frame.sun_color[3] = plan.frame.ambient_color[3] = 0.0f;
     plan.frame.params[0] = static_cast<float>(std::fmod(view.time, 86400.0));
     plan.frame.params[1] = static_cast<float>(view.flags);
-    plan.frame.params[2] = ctx->desc.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
+    plan.frame.params[2] = in.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
     plan.frame.params[3] = 0.0f;
     // The clip convention: Vulkan's is 0..1; a GL backend reads the host's at each render.
-    const bool vulkan = ctx->backend && ctx->backend->kind() == GRASS_BACKEND_VULKAN;
-    plan.frame.target[0] = vulkan ? 1.0f : 0.0f;
+    plan.frame.target[0] = in.clip_z_zero_to_one ? 1.0f : 0.0f;
     plan.frame.target[1] = plan.frame.target[2] = plan.frame.target[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;
-    const DynamicsFrame dynamics = plan_dynamics(ctx, view);
+    const DynamicsFrame dynamics = plan_dynamics(&in.dynamics, &plan, &in.log, view);
 
-    const ViewCulling culling(view_projection, ctx->desc.depth_mode);
-    for (uint32_t slot = 0; slot < ctx->fields.capacity(); ++slot) {
-        const Field* field = ctx->fields.get(slot);
+    const ViewCulling culling(view_projection, in.depth_mode);
+    for (uint32_t slot = 0; slot < in.fields.capacity(); ++slot) {
+        const Field* field = in.fields.get(slot);
         if (!field) continue;
-        FieldPlanner planner(ctx, slot, *field, *ctx->patches.get(field->patch_slot), view.camera_position, culling,
+        FieldPlanner planner(in, slot, *field, *in.patches.get(field->patch_slot), view.camera_position, culling,
                              dynamics, view.flags);
         const grass_result r = planner.run();
         if (r != GRASS_SUCCESS) {

@@ -3,14 +3,37 @@
 // instances to draw, relative to the camera. No GPU involved.
 #pragma once
 
-#include "context/context.hpp"
+#include "dynamics/dynamics_state.hpp"
+#include "foundation/frame_plan.hpp"
+#include "foundation/handle_pool.hpp"
+#include "foundation/log.hpp"
+#include "maps/design_map.hpp"
+#include "plan/field.hpp"
+#include "plan/plan_scratch.hpp"
 
 #include <grass/grass.h>
 
 namespace grass {
 
-// Rebuilds ctx->plan from a validated view. Fails only when a host lod-test callback
+// What a frame is planned from and into (the context's, context.hpp): its fields, patches
+// and maps; its responsive state (dynamics_plan.hpp); the plan and the planner's scratch.
+// Errors go to `log`; `lod_callbacks_running` counts a host lod-test callback in flight
+// (calls on the context are refused meanwhile).
+struct FramePlanning {
+    const HandlePool<Field>& fields;
+    const HandlePool<Patch>& patches;
+    const HandlePool<DesignMap>& maps;
+    DynamicsState& dynamics;
+    FramePlan& plan;
+    PlanScratch& scratch;
+    Log& log;
+    uint32_t& lod_callbacks_running;
+    grass_depth_mode depth_mode;
+    bool clip_z_zero_to_one; // the backend's clip z runs 0..1 (FrameUniforms::target.x)
+};
+
+// Rebuilds in.plan from a validated view. Fails only when a host lod-test callback
 // answers something that is not a grass_lod_answer (the plan is then empty).
-grass_result build_frame_plan(grass_context* ctx, const grass_view_desc& view);
+grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& view);
 
 } // namespace grass

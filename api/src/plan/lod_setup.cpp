@@ -1,7 +1,7 @@
 #include "plan/lod_setup.hpp"
 
-#include "context/raw_enum.hpp"
-#include "context/validate.hpp"
+#include "foundation/raw_enum.hpp"
+#include "foundation/validate.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -11,11 +11,11 @@ namespace grass {
 
 namespace {
 
-grass_result validate_test(grass_context* ctx, const char* fn, uint32_t k, const grass_lod_test& t,
-                           const grass_tier_desc* tiers, uint32_t tier_count) {
+grass_result validate_test(Log* log, const char* fn, uint32_t k, const grass_lod_test& t, const grass_tier_desc* tiers,
+                           uint32_t tier_count) {
     const int64_t kind = raw_enum(t.kind);
     if (t.tier >= tier_count) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                          "%s: desc->lod_tests[%u].tier is %u; the field has %u tiers", fn, k, t.tier, tier_count);
     }
     const bool geometry = raw_enum(tiers[t.tier].kind) == GRASS_TIER_GEOMETRY;
@@ -23,18 +23,18 @@ grass_result validate_test(grass_context* ctx, const char* fn, uint32_t k, const
     case GRASS_LOD_TEST_DISTANCE_BAND: {
         const double b = t.begin, e = t.end, ti = t.transition_in, to = t.transition_out;
         if (!std::isfinite(b) || b < 0.0 || std::isnan(e) || !(e > b)) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->lod_tests[%u] is a distance band from %g to %g m; it needs 0 <= begin < end "
                              "(end may be infinite)",
                              fn, k, b, e);
         }
         if (!(t.edge_ratio >= 0.0f && t.edge_ratio <= 1.0f)) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->lod_tests[%u].edge_ratio is %g; it must be in [0, 1]", fn, k,
                              static_cast<double>(t.edge_ratio));
         }
         if (!std::isfinite(ti) || !std::isfinite(to) || ti < 0.0 || to < 0.0 || (std::isfinite(e) && ti + to > e - b)) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->lod_tests[%u] has transitions of %g m in and %g m out; they must be finite, "
                              ">= 0 and fit in the band (%g m)",
                              fn, k, ti, to, e - b);
@@ -43,11 +43,11 @@ grass_result validate_test(grass_context* ctx, const char* fn, uint32_t k, const
     }
     case GRASS_LOD_TEST_MACRO_CELL:
         if (t.max_macro_cells < 1) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->lod_tests[%u].max_macro_cells is 0; it must be >= 1", fn, k);
         }
         if (geometry && t.max_macro_cells > 1) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->lod_tests[%u] asks for macro-cells of up to %u cells on tier %u, which is a "
                              "geometry tier; geometry draws single cells only",
                              fn, k, t.max_macro_cells, t.tier);
@@ -55,19 +55,19 @@ grass_result validate_test(grass_context* ctx, const char* fn, uint32_t k, const
         return GRASS_SUCCESS;
     case GRASS_LOD_TEST_UNPLANARITY:
         if (!(t.max_unplanarity >= 0.0f && std::isfinite(t.max_unplanarity))) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->lod_tests[%u].max_unplanarity is %g m; it must be finite and >= 0", fn, k,
                              static_cast<double>(t.max_unplanarity));
         }
         if (!(t.unplanarity_ratio >= 0.0f && t.unplanarity_ratio <= 1.0f)) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->lod_tests[%u].unplanarity_ratio is %g; it must be in [0, 1]", fn, k,
                              static_cast<double>(t.unplanarity_ratio));
         }
         return GRASS_SUCCESS;
     case GRASS_LOD_TEST_HILLTOP:
         if (geometry) {
-            return ctx->fail(
+            return log->fail(
                 GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                 "%s: desc->lod_tests[%u] is a hilltop test on tier %u, a geometry tier; hilltop silhouettes "
                 "are drawn by a volume (or image) tier",
@@ -76,12 +76,12 @@ grass_result validate_test(grass_context* ctx, const char* fn, uint32_t k, const
         return GRASS_SUCCESS;
     case GRASS_LOD_TEST_CALLBACK:
         if (!t.callback) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
                              "%s: desc->lod_tests[%u].callback is NULL", fn, k);
         }
         return GRASS_SUCCESS;
     default:
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                          "%s: desc->lod_tests[%u].kind is %lld; it must be a grass_lod_test_kind", fn, k,
                          static_cast<long long>(kind));
     }
@@ -89,7 +89,7 @@ grass_result validate_test(grass_context* ctx, const char* fn, uint32_t k, const
 
 } // namespace
 
-grass_result make_lod_setup(grass_context* ctx, const char* fn, const grass_field_desc& d, LodSetup* out) {
+grass_result make_lod_setup(Log* log, const char* fn, const grass_field_desc& d, LodSetup* out) {
     LodSetup s;
     if (d.tier_count == 0 && d.lod_test_count == 0 && !d.tiers && !d.lod_tests) {
         grass_default_lod_setup(d.cell_size, s.tiers, s.tests);
@@ -112,13 +112,13 @@ grass_result make_lod_setup(grass_context* ctx, const char* fn, const grass_fiel
         }
     } else {
         if (d.tier_count < 1 || d.tier_count > GRASS_MAX_TIERS || !d.tiers) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->tier_count is %u with tiers %s; give 1..%d tiers, or neither tiers nor lod "
                              "tests for the defaults",
                              fn, d.tier_count, d.tiers ? "set" : "NULL", GRASS_MAX_TIERS);
         }
         if (d.lod_test_count < 1 || d.lod_test_count > GRASS_MAX_LOD_TESTS || !d.lod_tests) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->lod_test_count is %u with lod_tests %s; give 1..%d tests", fn, d.lod_test_count,
                              d.lod_tests ? "set" : "NULL", GRASS_MAX_LOD_TESTS);
         }
@@ -130,25 +130,25 @@ grass_result make_lod_setup(grass_context* ctx, const char* fn, const grass_fiel
     for (uint32_t t = 0; t < s.tier_count; ++t) {
         const int64_t kind = raw_enum(s.tiers[t].kind);
         if (kind < GRASS_TIER_GEOMETRY || kind > GRASS_TIER_IMAGE) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                              "%s: desc->tiers[%u].kind is %lld; it must be a grass_tier_kind", fn, t,
                              static_cast<long long>(kind));
         }
         const bool volume = kind == GRASS_TIER_VOLUME;
         if (volume ? (s.tiers[t].slices < 1 || s.tiers[t].slices > 64) : s.tiers[t].slices != 0) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->tiers[%u].slices is %u; volume tiers need 1..64 slices per axis, other tiers 0",
                              fn, t, s.tiers[t].slices);
         }
     }
     for (uint32_t k = 0; k < s.test_count; ++k) {
-        GRASS_TRY(validate_test(ctx, fn, k, s.tests[k], s.tiers, s.tier_count));
+        GRASS_TRY(validate_test(log, fn, k, s.tests[k], s.tiers, s.tier_count));
         s.tests_of_tier[s.tests[k].tier] |= 1u << k;
         if (s.tests[k].kind == GRASS_LOD_TEST_HILLTOP) s.overlay_tiers |= 1u << s.tests[k].tier;
     }
     for (uint32_t t = 0; t < s.tier_count; ++t) {
         if (s.tests_of_tier[t] == 0) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                              "%s: desc->tiers[%u] has no lod test; every tier needs at least one", fn, t);
         }
     }

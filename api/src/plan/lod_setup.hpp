@@ -2,7 +2,7 @@
 // and evaluating one built-in test for a node.
 #pragma once
 
-#include "context/context.hpp"
+#include "foundation/log.hpp"
 #include "plan/lod_setup_types.hpp"
 
 #include <grass/grass.h>
@@ -11,7 +11,7 @@ namespace grass {
 
 // Validates the tiers and tests of a field desc (or takes the defaults when both are
 // empty) and fills `out`. Logs and returns an error naming the bad test or tier.
-grass_result make_lod_setup(grass_context* ctx, const char* fn, const grass_field_desc& desc, LodSetup* out);
+grass_result make_lod_setup(Log* log, const char* fn, const grass_field_desc& desc, LodSetup* out);
 
 // Answer of a built-in test (not CALLBACK) for a node whose box top lies `node_top` metres
 // above the field's plane, the camera `camera_height` metres above it.

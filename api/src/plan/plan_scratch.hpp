@@ -2,8 +2,8 @@
 // allocates nothing once the vectors have grown.
 #pragma once
 
-#include "context/allocator.hpp"
-#include "plan/frame_plan.hpp"
+#include "foundation/allocator.hpp"
+#include "foundation/frame_plan.hpp"
 
 #include <grass/grass.h>
 

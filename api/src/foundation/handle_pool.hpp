@@ -4,7 +4,7 @@
 // id of the pool is ever accepted again (grass.h "Ids").
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <cstdint>
 

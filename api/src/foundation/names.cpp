@@ -1,4 +1,4 @@
-#include "context/names.hpp"
+#include "foundation/names.hpp"
 
 namespace grass {
 

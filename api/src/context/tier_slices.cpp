@@ -1,9 +1,9 @@
-#include "bake/tier_slices.hpp"
+#include "context/tier_slices.hpp"
 
 #include "bake/bake_cache.hpp"
 #include "bake/slice_baker.hpp"
 #include "context/invariants.hpp"
-#include "context/validate.hpp"
+#include "foundation/validate.hpp"
 #include "patch/random.hpp"
 
 namespace grass {

@@ -1,4 +1,4 @@
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <cstdlib>
 

@@ -3,7 +3,7 @@
 // they were made relative to the camera. Layouts match api/shaders/blade_interface.glsl.
 #pragma once
 
-#include "context/allocator.hpp"
+#include "foundation/allocator.hpp"
 
 #include <grass/grass.h>
 

@@ -1,4 +1,4 @@
-#include "context/abi_sizes.hpp"
+#include "foundation/abi_sizes.hpp"
 
 namespace grass {
 

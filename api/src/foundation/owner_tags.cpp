@@ -1,4 +1,4 @@
-#include "context/owner_tags.hpp"
+#include "foundation/owner_tags.hpp"
 
 #include <mutex>
 
