@@ -2,10 +2,10 @@
 // and the design maps. Shared by the GL and Vulkan backends (Vulkan: descriptor set 0).
 
 // Shader variants: GRASS_FEATURES says which design maps the field has (bit = 1 << MapRole,
-// api/src/backend.hpp), so a field samples only its own maps and one without maps runs the
-// code it ran before maps existed. Vulkan: a specialization constant (id 0) set per
-// pipeline; GL: the backend defines GRASS_FEATURES before this file. Either way the
-// compiler folds the tests below away.
+// api/src/foundation/shader_interface.hpp), so a field samples only its own maps and one
+// without maps runs the code it ran before maps existed. Vulkan: a specialization constant
+// (id 0) set per pipeline; GL: the backend defines GRASS_FEATURES before this file. Either
+// way the compiler folds the tests below away.
 #define GRASS_MAP_DENSITY 1u
 #define GRASS_MAP_COLOR 2u
 #define GRASS_MAP_AMBIENT 4u

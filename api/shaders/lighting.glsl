@@ -30,7 +30,7 @@ vec3 grass_lighting(vec3 albedo, vec3 n, float ambient_occlusion, vec2 light) {
 
 // The debug view's tint of a tier (GRASS_VIEW_FLAG_DEBUG_TIERS = 2 in frame.params.y):
 // red geometry, yellow volume, blue image, mixed half into the lit colour.
-// Both debug views' code exists only in the GRASS_DEBUG_VIEW variants (api/src/context/backend.hpp).
+// Both debug views' code exists only in the GRASS_DEBUG_VIEW variants (api/src/foundation/shader_interface.hpp).
 vec3 debug_tint(vec3 color) {
     if (!has_map(GRASS_DEBUG_VIEW) || (uint(frame.params.y + 0.5) & 2u) == 0u) return color;
     float kind = field.blade_params.z;

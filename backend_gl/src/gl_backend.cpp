@@ -186,7 +186,7 @@ GlBackend::~GlBackend() {
 
 grass_result GlBackend::program(GlProgramKind kind, uint32_t features, const char* function, GLuint* out_program) {
     features &= kFeatureVariants - 1;
-    if (kind == kProgramDebugTiers) features &= 1u << kMapHeight; // the boxes sample the height map only
+    if (kind == kProgramDebugTiers) features &= kDebugBoxFeatures; // the boxes sample the height map only
     GLuint& cached = programs_[kind][features];
     if (cached == 0) {
         const grass_result result = create_program(ctx_, gl_, function, kind, features, &cached);
@@ -269,8 +269,6 @@ grass_result GlBackend::upload_patch(uint32_t slot, const PatchData& patch) {
         release_patch(slot);
         return result;
     }
-    gpu.index_count = static_cast<uint32_t>(patch.indices.size());
-    gpu.vertices_per_blade = patch.vertices_per_blade;
     gpu.bytes = vertex_bytes + index_bytes;
     return GRASS_SUCCESS;
 }

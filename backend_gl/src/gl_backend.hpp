@@ -41,6 +41,8 @@ public:
     grass_result begin_frame(const FramePlan& plan) override;
     void end_frame() override;
     uint64_t gpu_bytes() const override;
+    // The target of the last render (gl_draw.cpp): each grass_gl_render reads the host's.
+    RenderTarget render_target() const override { return frame_target_; }
     // Responsive grass (gl_dynamics.cpp).
     grass_result upload_blade_curves(uint32_t slot, const PatchData& patch) override;
     uint64_t dynamics_gpu_bytes() const override;
@@ -59,8 +61,6 @@ private:
         GLuint vertex_array = 0;
         GLuint vertices = 0;
         GLuint indices = 0;
-        uint32_t index_count = 0;
-        uint32_t vertices_per_blade = 0;
         uint64_t bytes = 0;
         GLuint curves = 0; // responsive grass: the blade curves (shader storage), 0 until needed
         uint64_t curve_bytes = 0;
@@ -104,7 +104,7 @@ private:
     void delete_slices(SliceGpu& slices);
     const SliceGpu* find_slices(uint32_t patch_slot, uint32_t slices_per_axis) const;
     // gl_draw.cpp
-    void upload_frame(uint32_t samples, bool clip_zero_to_one);
+    void upload_frame(const RenderTarget& target);
     void draw_blades(const FramePlan& plan) const;
     void draw_sliced(const FramePlan& plan, grass_tier_kind kind) const; // volume or image draws
     void draw_debug(const FramePlan& plan) const;                        // GRASS_VIEW_FLAG_DEBUG_CELLS
@@ -154,8 +154,7 @@ private:
     Vector<unsigned char> uniform_staging_;
     Vector<GLintptr> field_uniform_offsets_; // per draw (all kinds), into uniforms_
     bool frame_uploaded_ = false;
-    uint32_t frame_samples_ = 0;          // the Frame block's params.w as uploaded
-    bool frame_clip_zero_to_one_ = false; // ... and its target.x
+    RenderTarget frame_target_; // the Frame block's target as last uploaded: the host's at the last render
     Vector<PatchGpu> patches_;
     Vector<SliceGpu> slices_; // every patch's sets, unordered
     Vector<FieldGpu> fields_;

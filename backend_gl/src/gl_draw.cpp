@@ -15,17 +15,13 @@ namespace {
 
 size_t align_up(size_t value, size_t alignment) { return (value + alignment - 1) / alignment * alignment; }
 
-constexpr GLsizei kImageVertices = 6;            // one quad, corners from gl_VertexID (image.vert)
-constexpr GLsizei kImageVerticesWithSkirts = 30; // on a height map: the quad and 4 skirts (image.vert)
-constexpr GLsizei kVolumeVertices = 36;          // a cuboid, every face (volume.vert)
-
 } // namespace
 
 // Uniform buffer layout: Frame at offset 0, then one Field block per draw of any kind
-// (the debug view draws them all), each at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT. The Frame
-// block's params.w holds the target's samples per pixel (sample_count() of
-// blade_interface.glsl), its target.x the host's clip depth convention (1: 0..1).
-void GlBackend::upload_frame(uint32_t samples, bool clip_zero_to_one) {
+// (the debug view draws them all), each at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, as the plan
+// holds them. The Frame block gets the host's target of this render (write_render_target):
+// the plan holds the one of the previous render, and a frame may draw into several.
+void GlBackend::upload_frame(const RenderTarget& target) {
     const FramePlan& plan = ctx_->plan;
     const size_t alignment = static_cast<size_t>(uniform_alignment_);
 
@@ -38,17 +34,11 @@ void GlBackend::upload_frame(uint32_t samples, bool clip_zero_to_one) {
     size = stage_interaction_uniforms(plan, size);
     uniform_staging_.assign(size, 0);
     FrameUniforms frame = plan.frame;
-    frame.params[3] = static_cast<float>(samples);
-    frame.target[0] = clip_zero_to_one ? 1.0f : 0.0f;
+    write_render_target(&frame, target);
     std::memcpy(uniform_staging_.data(), &frame, sizeof(FrameUniforms));
     for (size_t i = 0; i < plan.draws.size(); ++i) {
-        FieldUniforms field = plan.draws[i].uniforms;
-        // Responsive grass: blade.vert finds a vertex's blade from the patch's vertices per
-        // blade (trample.w; read only by the variants of kBladeCurveFeatures).
-        if ((plan.draws[i].features & kBladeCurveFeatures) != 0) {
-            field.trample[3] = static_cast<float>(patches_[plan.draws[i].patch_slot].vertices_per_blade);
-        }
-        std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &field, sizeof(FieldUniforms));
+        std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &plan.draws[i].uniforms,
+                    sizeof(FieldUniforms));
     }
     for (uint32_t l = 0; l < plan.interaction.levels && l < 2; ++l) {
         std::memcpy(uniform_staging_.data() + interaction_uniform_offsets_[l], &plan.interaction.level[l],
@@ -57,8 +47,7 @@ void GlBackend::upload_frame(uint32_t samples, bool clip_zero_to_one) {
     uniforms_.upload(gl_, uniform_staging_.data(), uniform_staging_.size());
     instances_.upload(gl_, plan.instances.data(), plan.instances.size() * sizeof(TierInstance));
     frame_uploaded_ = true;
-    frame_samples_ = samples;
-    frame_clip_zero_to_one_ = clip_zero_to_one;
+    frame_target_ = target;
 }
 
 void GlBackend::bind_field_maps(const FieldGpu& field, uint32_t features) const {
@@ -83,7 +72,7 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
         const TierDraw& draw = plan.draws[i];
         if (draw.kind != GRASS_TIER_GEOMETRY) continue;
         const PatchGpu& patch = patches_[draw.patch_slot];
-        if (draw.instance_count == 0 || patch.index_count == 0) continue;
+        if (draw.instance_count == 0 || draw.vertex_count == 0) continue;
         const GLuint program = program_of(kProgramBlades, draw.features);
         if (program != bound_program) {
             gl_.UseProgram(program);
@@ -95,7 +84,7 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
         }
         bind_field_maps(fields_[draw.field_slot], draw.features);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
-        gl_.DrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(patch.index_count), GL_UNSIGNED_INT,
+        gl_.DrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(draw.vertex_count), GL_UNSIGNED_INT,
                                               nullptr, static_cast<GLsizei>(draw.instance_count), draw.first_instance);
     }
 }
@@ -132,11 +121,8 @@ void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
         }
         bind_field_maps(fields_[draw.field_slot], draw.features);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
-        const bool skirts = kind == GRASS_TIER_IMAGE && (draw.features & (1u << kMapHeight)) != 0;
-        gl_.DrawArraysInstancedBaseInstance(
-            GL_TRIANGLES, 0,
-            kind == GRASS_TIER_VOLUME ? kVolumeVertices : (skirts ? kImageVerticesWithSkirts : kImageVertices),
-            static_cast<GLsizei>(draw.instance_count), draw.first_instance);
+        gl_.DrawArraysInstancedBaseInstance(GL_TRIANGLES, 0, static_cast<GLsizei>(draw.vertex_count),
+                                            static_cast<GLsizei>(draw.instance_count), draw.first_instance);
     }
 }
 
@@ -149,15 +135,15 @@ void GlBackend::draw_debug(const FramePlan& plan) const {
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         const TierDraw& draw = plan.draws[i];
         if (draw.instance_count == 0) continue;
-        const GLuint program = program_of(kProgramDebugTiers, draw.features & (1u << kMapHeight));
+        const GLuint program = program_of(kProgramDebugTiers, draw.features & kDebugBoxFeatures);
         if (program != bound_program) {
             gl_.UseProgram(program);
             bound_program = program;
         }
         bind_field_maps(fields_[draw.field_slot], draw.features);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
-        gl_.DrawArraysInstancedBaseInstance(GL_TRIANGLES, 0, kImageVertices, static_cast<GLsizei>(draw.instance_count),
-                                            draw.first_instance);
+        gl_.DrawArraysInstancedBaseInstance(GL_TRIANGLES, 0, static_cast<GLsizei>(draw.vertex_count),
+                                            static_cast<GLsizei>(draw.instance_count), draw.first_instance);
     }
 }
 
@@ -206,12 +192,12 @@ grass_result GlBackend::render(const char* function) {
     // maps its gl_FragDepth with it (window_depth() of blade_interface.glsl).
     GLint clip_depth_mode = GL_NEGATIVE_ONE_TO_ONE;
     gl_.GetIntegerv(GL_CLIP_DEPTH_MODE, &clip_depth_mode);
-    const bool clip_zero_to_one = clip_depth_mode == GL_ZERO_TO_ONE;
+    RenderTarget target;
+    target.samples = sample_count;
+    target.clip_zero_to_one = clip_depth_mode == GL_ZERO_TO_ONE;
     // Once per frame; again if a later call of the frame draws into a target of another kind
     // or with another clip convention.
-    if (!frame_uploaded_ || frame_samples_ != sample_count || frame_clip_zero_to_one_ != clip_zero_to_one) {
-        upload_frame(sample_count, clip_zero_to_one);
-    }
+    if (!frame_uploaded_ || frame_target_ != target) upload_frame(target);
 
     GlDrawStateGuard guard(gl_, dynamics); // also makes texture unit 0 active
     if (pass_pending) {

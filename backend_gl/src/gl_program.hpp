@@ -5,8 +5,8 @@
 
 #include "gl_functions.hpp"
 
-#include "context/backend.hpp"
 #include "context/context.hpp"
+#include "foundation/shader_interface.hpp"
 
 namespace grass {
 

@@ -45,10 +45,20 @@ public:
     grass_result upload_field(uint32_t slot, const FieldMaps& maps) override;
     void release_field(uint32_t slot) override;
     void set_field_wind_map(uint32_t slot, uint32_t map_slot) override;
+    // The render pass's sample count (grass_vk_desc) and Vulkan's one clip convention, 0..1.
+    RenderTarget render_target() const override {
+        RenderTarget target;
+        target.samples = desc_.sample_count;
+        target.clip_zero_to_one = true;
+        return target;
+    }
     grass_result begin_frame(const FramePlan& plan) override;
+    void end_frame() override {} // the host submits: a frame ends with nothing to do here
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
     uint64_t dynamics_gpu_bytes() const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
+    // A Vulkan device is not current on a thread: every call may use it.
+    grass_result check_current(const char*) override { return GRASS_SUCCESS; }
 
     // grass_vk_prepare and grass_vk_record (arguments already checked).
     grass_result prepare_frame(VkCommandBuffer cmd);
@@ -69,7 +79,6 @@ private:
         Buffer curves;
         Buffer curves_staging;
         uint32_t index_count = 0;
-        uint32_t vertices_per_blade = 0;
     };
     // A baked slice set of a patch on the GPU (api/src/baked_slices.hpp): three device-local
     // 2D array images with full mip chains, and until the upload is recorded, the staging

@@ -1,7 +1,7 @@
 // The tier debug view (GRASS_VIEW_FLAG_DEBUG_CELLS): every planned instance of every tier
 // kind as a flat false-colour box on the ground (api/shaders/debug_tiers.*). Same set and
-// pipeline layout as the blades; no patch: six vertices per instance from the vertex
-// index, the tier instances as the only vertex input. BladePipeline makes its pipelines
+// pipeline layout as the blades; no patch: the vertices of a box (TierDraw::vertex_count)
+// from the vertex index, the tier instances as the only vertex input. BladePipeline makes its pipelines
 // per feature mask.
 #pragma once
 
@@ -13,9 +13,8 @@
 namespace grass::vk {
 
 struct DebugViewPipeline {
-    // The vertex binding of the tier instances, and the vertices each instance draws.
+    // The vertex binding of the tier instances.
     static constexpr uint32_t kInstanceBinding = 0;
-    static constexpr uint32_t kVerticesPerBox = 6;
 
     static PipelineShape shape(bool indexed_blocks);
 };

@@ -21,8 +21,8 @@ uint32_t grown_capacity(uint32_t current, uint32_t needed) {
 } // namespace
 
 FrameRing::FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight,
-                     VkDeviceSize uniform_alignment, uint32_t samples)
-    : memory_(memory), deferred_(deferred), frames_in_flight_(frames_in_flight), samples_(samples),
+                     VkDeviceSize uniform_alignment)
+    : memory_(memory), deferred_(deferred), frames_in_flight_(frames_in_flight),
       frame_stride_(align_up(sizeof(FrameUniforms), uniform_alignment ? uniform_alignment : 1)),
       field_stride_(align_up(sizeof(FieldUniforms), uniform_alignment ? uniform_alignment : 1)) {}
 
@@ -74,8 +74,8 @@ bool FrameRing::grow_uniforms(Slot& s, uint32_t needed, uint64_t frame, VkFailur
     return true;
 }
 
-bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, const FieldBlock& field_block,
-                      bool* uniforms_replaced, VkFailure* failure, const char** what) {
+bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool* uniforms_replaced, VkFailure* failure,
+                      const char** what) {
     Slot& s = slots_[slot];
     *uniforms_replaced = false;
     const uint32_t instances = static_cast<uint32_t>(plan.instances.size());
@@ -92,13 +92,9 @@ bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, cons
 
     if (instances > 0) std::memcpy(s.instances.mapped, plan.instances.data(), instances * sizeof(TierInstance));
     auto* uniforms = static_cast<unsigned char*>(s.uniforms.mapped);
-    FrameUniforms frame_block = plan.frame;
-    frame_block.params[3] = static_cast<float>(samples_); // sample_count() of blade_interface.glsl
-    std::memcpy(uniforms + frame_offset(), &frame_block, sizeof(FrameUniforms));
+    std::memcpy(uniforms + frame_offset(), &plan.frame, sizeof(FrameUniforms));
     for (uint32_t i = 0; i < draws; ++i) {
-        FieldUniforms block = plan.draws[i].uniforms;
-        field_block(plan.draws[i], &block);
-        std::memcpy(uniforms + field_offset(i), &block, sizeof(FieldUniforms));
+        std::memcpy(uniforms + field_offset(i), &plan.draws[i].uniforms, sizeof(FieldUniforms));
     }
 
     *what = "the per-frame buffers";

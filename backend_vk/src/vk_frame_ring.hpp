@@ -11,18 +11,14 @@
 #include "vk_memory.hpp"
 
 #include <cstdint>
-#include <functional>
 
 namespace grass::vk {
 
 class FrameRing {
 public:
-    // `samples`: the target's samples per pixel; the Frame block says so
-    // (FrameUniforms::params[3], which the core leaves 0).
     // uniform_alignment: the device's offset alignment of uniform buffers (the Frame and
     // Field blocks).
-    FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight, VkDeviceSize uniform_alignment,
-              uint32_t samples);
+    FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight, VkDeviceSize uniform_alignment);
     ~FrameRing();
     FrameRing(const FrameRing&) = delete;
     FrameRing& operator=(const FrameRing&) = delete;
@@ -31,14 +27,12 @@ public:
     // need a uniform buffer to point at).
     bool create(VkFailure* failure, const char** what);
 
-    // What the backend adds to a draw's Field block (FieldUniforms fields the core leaves to
-    // it); called for each draw with a copy of the plan's block.
-    using FieldBlock = std::function<void(const TierDraw& draw, FieldUniforms* block)>;
-    // Writes `plan` into slot `slot`, growing its buffers first if needed.
+    // Writes `plan` into slot `slot` as it is (its blocks are complete), growing its
+    // buffers first if needed.
     // *uniforms_replaced: the slot's uniform buffer is new, so descriptor sets that point
     // at it must be rewritten. May throw std::bad_alloc.
-    bool write(uint32_t slot, const FramePlan& plan, uint64_t frame, const FieldBlock& field_block,
-               bool* uniforms_replaced, VkFailure* failure, const char** what);
+    bool write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool* uniforms_replaced, VkFailure* failure,
+               const char** what);
 
     VkBuffer instance_buffer(uint32_t slot) const { return slots_[slot].instances.buffer; }
     VkBuffer uniform_buffer(uint32_t slot) const { return slots_[slot].uniforms.buffer; }
@@ -61,7 +55,6 @@ private:
     Memory& memory_;
     DeferredDeletion& deferred_;
     uint32_t frames_in_flight_;
-    uint32_t samples_;
     VkDeviceSize frame_stride_;
     VkDeviceSize field_stride_;
     Slot slots_[kMaxFramesInFlight];

@@ -6,11 +6,9 @@
 // and the state every pipeline shares (create_pipeline_pair).
 #pragma once
 
-#include "context/backend.hpp"
+#include "foundation/shader_interface.hpp"
 #include "vk_functions.hpp"
 #include "vk_result.hpp"
-
-#include "context/backend.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -42,10 +40,11 @@ enum BladeBinding : uint32_t {
     kBindingCount = 14
 };
 static_assert(kBindingDensityMap == 2 && kBindingColorMap == 6 && kBindingHeightMap == 9,
-              "kMapBinding of api/src/backend.hpp");
-static_assert(kBindingInteractionMap0 == 10 && kBindingInteractionMap1 == 11 && kBindingBladeCurves == 12 &&
-                  kBindingWindMap == kWindMapBinding,
-              "kInteractionMapBinding, kBladeCurvesBinding and kWindMapBinding of api/src/context/backend.hpp");
+              "kMapBinding of api/src/foundation/shader_interface.hpp");
+static_assert(
+    kBindingInteractionMap0 == 10 && kBindingInteractionMap1 == 11 && kBindingBladeCurves == 12 &&
+        kBindingWindMap == kWindMapBinding,
+    "kInteractionMapBinding, kBladeCurvesBinding and kWindMapBinding of api/src/foundation/shader_interface.hpp");
 
 // The kinds of graphics pipeline; each exists per map feature mask (GRASS_FEATURES).
 enum PipelineKind : uint32_t {

@@ -29,14 +29,7 @@ grass_result VkBackend::begin_frame(const FramePlan& plan) {
     bool uniforms_replaced = false;
     VkFailure failure;
     const char* what = "";
-    // Responsive blades find their control points by vertex index: the vertices per blade
-    // of the draw's patch (FieldUniforms::trample[3], set by the backend).
-    const auto field_block = [this](const TierDraw& d, FieldUniforms* block) {
-        if ((d.features & kBladeCurveFeatures) != 0 && d.patch_slot < patches_.size()) {
-            block->trample[3] = float(patches_[d.patch_slot].vertices_per_blade);
-        }
-    };
-    if (!ring_.write(slot_, plan, frame_, field_block, &uniforms_replaced, &failure, &what)) {
+    if (!ring_.write(slot_, plan, frame_, &uniforms_replaced, &failure, &what)) {
         return fail("grass_begin_frame", what, failure);
     }
     if (uniforms_replaced) {
@@ -298,7 +291,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
                 bound_pipeline = pipeline;
             }
             bind_set(i, fields_[d.field_slot].sets[slot_].set);
-            fn_.vkCmdDraw(cmd, DebugViewPipeline::kVerticesPerBox, d.instance_count, 0, d.first_instance);
+            fn_.vkCmdDraw(cmd, d.vertex_count, d.instance_count, 0, d.first_instance);
         }
         return GRASS_SUCCESS;
     }
@@ -328,7 +321,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
             fn_.vkCmdBindIndexBuffer(cmd, p.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
             bound_patch = d.patch_slot;
         }
-        fn_.vkCmdDrawIndexed(cmd, p.index_count, d.instance_count, 0, 0, d.first_instance);
+        fn_.vkCmdDrawIndexed(cmd, d.vertex_count, d.instance_count, 0, 0, d.first_instance);
     }
     write_stamp(cmd, stamps, 1);
     if (slice_draws == 0) {
@@ -339,11 +332,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     const struct {
         grass_tier_kind kind;
         PipelineKind pipeline;
-        uint32_t vertices;
-    } passes[2] = {
-        {GRASS_TIER_VOLUME, kPipelineVolume, SlicePipelines::kVerticesPerVolume},
-        {GRASS_TIER_IMAGE, kPipelineImage, SlicePipelines::kVerticesPerImage},
-    };
+    } passes[2] = {{GRASS_TIER_VOLUME, kPipelineVolume}, {GRASS_TIER_IMAGE, kPipelineImage}};
     for (const auto& pass : passes) {
         bound_pipeline = VK_NULL_HANDLE;
         for (uint32_t i = 0; i < plan.draws.size(); ++i) {
@@ -359,9 +348,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
                 bound_pipeline = pipeline;
             }
             bind_set(i, draw_sets_[i]);
-            const bool skirts = pass.kind == GRASS_TIER_IMAGE && (d.features & (1u << kMapHeight)) != 0;
-            fn_.vkCmdDraw(cmd, skirts ? SlicePipelines::kVerticesPerImageWithSkirts : pass.vertices, d.instance_count,
-                          0, d.first_instance);
+            fn_.vkCmdDraw(cmd, d.vertex_count, d.instance_count, 0, d.first_instance);
         }
         write_stamp(cmd, stamps, pass.kind == GRASS_TIER_VOLUME ? 2 : 3);
     }

@@ -27,7 +27,6 @@ grass_result VkBackend::upload_patch(uint32_t slot, const PatchData& patch) {
     PatchGpu fresh;
     fresh.live = true;
     fresh.index_count = static_cast<uint32_t>(patch.indices.size());
-    fresh.vertices_per_blade = patch.vertices_per_blade;
     if (patch.vertices.empty() || patch.indices.empty()) {
         fresh.index_count = 0; // nothing to draw
         patches_[slot] = fresh;

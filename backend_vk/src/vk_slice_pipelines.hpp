@@ -1,8 +1,9 @@
 // The pipelines of the baked-slice tiers (lemme2012 5.2, 5.3): the volume tier (a cuboid
-// carrier per instance, 36 vertices, ray-cast through the implicit vertical slices,
-// api/shaders/volume.*) and the image tier (a horizontal quad per instance, 6 vertices,
+// carrier per instance, ray-cast through the implicit vertical slices, api/shaders/volume.*)
+// and the image tier (a horizontal quad per instance, with skirts on a height map,
 // api/shaders/image.*). Same set and pipeline layout as the blades; no patch vertices: the
-// vertices come from the vertex index, the tier instances are the only vertex input.
+// vertices come from the vertex index (how many: TierDraw::vertex_count, decided by the
+// core), the tier instances are the only vertex input.
 // Alpha to coverage on multisampled targets. BladePipeline makes them per feature mask.
 #pragma once
 
@@ -14,11 +15,8 @@
 namespace grass::vk {
 
 struct SlicePipelines {
-    // The vertex binding of the tier instances, and the vertices each instance draws.
+    // The vertex binding of the tier instances.
     static constexpr uint32_t kInstanceBinding = 0;
-    static constexpr uint32_t kVerticesPerVolume = 36;          // 6 faces x 2 triangles
-    static constexpr uint32_t kVerticesPerImage = 6;            // 2 triangles
-    static constexpr uint32_t kVerticesPerImageWithSkirts = 30; // on a height map: the quad and 4 skirts (image.vert)
 
     // `responsive`: the fragment shaders compiled with GRASS_RESPONSIVE (wind, trails).
     static PipelineShape volume_shape(bool responsive, bool indexed_blocks);

@@ -20,10 +20,20 @@ public:
         return GRASS_SUCCESS;
     }
     void release_map(uint32_t) override {}
+    grass_result upload_blade_curves(uint32_t, const grass::PatchData&) override { return GRASS_SUCCESS; }
     grass_result upload_field(uint32_t, const grass::FieldMaps&) override { return GRASS_SUCCESS; }
     void release_field(uint32_t) override {}
+    void set_field_wind_map(uint32_t, uint32_t) override {}
+    grass::RenderTarget render_target() const override { return grass::RenderTarget{}; }
     grass_result begin_frame(const grass::FramePlan&) override { return GRASS_SUCCESS; }
+    void end_frame() override {}
     uint64_t gpu_bytes() const override { return 0; }
+    uint64_t dynamics_gpu_bytes() const override { return 0; }
+    bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override {
+        for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = 0.0;
+        return false;
+    }
+    grass_result check_current(const char*) override { return GRASS_SUCCESS; }
 };
 
 // Replaces *ctx with a context of the same desc (the fixture's log) whose backend is a new B.

@@ -127,7 +127,8 @@ GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_vie
                                             *context,
                                             context->lod_callbacks_running,
                                             context->desc.depth_mode,
-                                            context->backend && context->backend->kind() == GRASS_BACKEND_VULKAN};
+                                            context->backend ? context->backend->render_target()
+                                                             : grass::RenderTarget{}};
         GRASS_TRY(grass::build_frame_plan(planning, *view));
         GRASS_TRY(grass::check_plan(context, fn));
         GRASS_TRY(grass::upload_blade_curves(context));

@@ -18,10 +18,9 @@ struct FrameUniforms {
     float sun_color[4];        // rgb
     float ambient_color[4];    // rgb
     float params[4];           // x = time (s), y = flags, z = +1 (depth 0 is near) or -1 (reversed depth),
-                               // w = 1 when the target is multisampled: the backend sets it (0 from the core)
+                               // w = the target's samples per pixel (RenderTarget, write_render_target)
     float target[4];           // x = 1 when the host's clip z runs 0..1 (Vulkan; GL with glClipControl's
-                               // GL_ZERO_TO_ONE), 0 for GL's default -1..1: the GL backend reads it at each
-                               // render (the core sets 1 for Vulkan, 0 for GL); yzw = 0
+                               // GL_ZERO_TO_ONE), 0 for GL's default -1..1 (RenderTarget); yzw = 0
     // Responsive grass (docs/responsive.md, api/shaders/wind.glsl, interaction.glsl). Read only by
     // shader variants with kFeatureWind / kFeatureInteraction; zero otherwise.
     float wind[4];          // xyz: mean wind velocity, world m/s (zero: none); w: gust strength (fraction of speed)
@@ -44,6 +43,26 @@ struct FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 1312, "std140 Frame block");
 
+// The host's render target as the shaders must know it, which only a backend knows
+// (Backend::render_target): its samples per pixel (sample_count() of blade_interface.glsl)
+// and its clip convention, the clip z range the volume tier maps its gl_FragDepth with
+// (window_depth()).
+struct RenderTarget {
+    uint32_t samples = 1;          // 1: not multisampled
+    bool clip_zero_to_one = false; // clip z runs 0..1 (Vulkan, GL_ZERO_TO_ONE), else -1..1 (GL's default)
+    bool operator==(const RenderTarget& o) const {
+        return samples == o.samples && clip_zero_to_one == o.clip_zero_to_one;
+    }
+    bool operator!=(const RenderTarget& o) const { return !(*this == o); }
+};
+
+// The one place the Frame block's target fields are written: the planner with what the
+// backend reports, and a backend again where the host draws one frame into another target.
+inline void write_render_target(FrameUniforms* frame, const RenderTarget& target) {
+    frame->params[3] = static_cast<float>(target.samples);
+    frame->target[0] = target.clip_zero_to_one ? 1.0f : 0.0f;
+}
+
 // std140 uniform block `Field` (binding 1).
 struct FieldUniforms {
     float patch_to_world[16]; // patch units -> world metres (rotation x cell size), no translation
@@ -62,7 +81,9 @@ struct FieldUniforms {
     // Responsive grass: the draw's patch's grass_blade_mechanics and the field's up.
     float mechanics[4]; // x = stiffness (m/s^2), y = mass, z = wind response (m/s^2 per m/s), w = variation
     float trample[4];   // x = trample depth (0..1), y = recovery time (s), z = 1 if this field reads the
-                        // interaction map (its up within 60 degrees of the map's up), w = unused
+                        // interaction map (its up within 60 degrees of the map's up), w = the patch's vertices
+                        // per blade in the responsive variants (kBladeCurveFeatures: blade.vert finds a
+                        // vertex's blade from it), else 0
     float field_up[4];  // xyz = the field's up, world, unit; w = metres per patch unit (the cell size)
     // The field's wind map (dynamics/wind_map.hpp; read only by variants with kFeatureWindMap):
     // cell space -> its map u (xyz, as map_u), w = m/s for an encoded 1; and its map v (xyz).
@@ -91,7 +112,8 @@ struct TierInstance {
 };
 static_assert(sizeof(TierInstance) == 48, "TierInstance must match the shader's instance layout");
 
-// One instanced draw: the instances one tier of one field draws this frame.
+// One instanced draw: the instances one tier of one field draws this frame, with everything
+// the backend needs to bind and draw it: the core decided it all once, for every backend.
 struct TierDraw {
     grass_tier_kind kind; // how to draw: blades (geometry), volume or image
     uint32_t tier;        // index of the tier in its field
@@ -100,9 +122,12 @@ struct TierDraw {
     uint32_t patch_slot;
     uint32_t first_instance; // into FramePlan::instances
     uint32_t instance_count;
-    uint32_t features; // shader variant: the field's maps (bit = 1 << MapRole), then the responsive and culling
-                       // bits (backend.hpp); equals uniforms.tiling[3]
-    FieldUniforms uniforms;
+    uint32_t vertex_count;  // per instance: the patch's indices (geometry, an indexed draw; 0 for an empty
+                            // patch), the volume's cuboid or the image's quad, with skirts on a height map
+                            // (slice_tier_vertices); a debug box under GRASS_VIEW_FLAG_DEBUG_CELLS
+    uint32_t features;      // shader variant: the field's maps (bit = 1 << MapRole), then the responsive and
+                            // culling bits (foundation/shader_interface.hpp); equals uniforms.tiling[3]
+    FieldUniforms uniforms; // complete: a backend uploads it as it is
 };
 
 // The baked slice set a volume or image draw samples: its slices per axis for a volume

@@ -65,6 +65,11 @@ struct NodeBox {
     double terrain_lo = 0.0, terrain_hi = 0.0; // terrain height range under the node, cells
 };
 
+// The vertices of a geometry draw: the patch's indices (none for a patch without blades).
+uint32_t patch_indices(const PatchData& pd) {
+    return pd.vertices.empty() ? 0u : static_cast<uint32_t>(pd.indices.size());
+}
+
 class FieldPlanner {
 public:
     FieldPlanner(const FramePlanning& in, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
@@ -78,6 +83,7 @@ public:
         features_ = field.maps.features | (dynamics.wind ? kFeatureWind : 0u) | (reads_map_ ? kFeatureInteraction : 0u);
         if (field.wind_map.active()) features_ |= kFeatureWind | kFeatureWindMap;
         if (view_flags & kDebugViewFlags) features_ |= kFeatureDebugView;
+        debug_cells_ = (view_flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
         const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
         density_map_ = density_slot != kNoMap ? in.maps.get(density_slot) : nullptr;
         height_map_ = height_slot != kNoMap ? in.maps.get(height_slot) : nullptr;
@@ -387,6 +393,13 @@ private:
             if (kind == GRASS_TIER_GEOMETRY && field_.culling.enabled) draw.features |= kFeatureBladeCulling;
             fill_uniforms(kind, t, &draw.uniforms);
             draw.uniforms.tiling[3] = draw.features;
+            // Responsive variants find a vertex's blade from the patch's vertices per blade.
+            if ((draw.features & kBladeCurveFeatures) != 0) {
+                draw.uniforms.trample[3] = static_cast<float>(pd.vertices_per_blade);
+            }
+            draw.vertex_count = debug_cells_                  ? kDebugBoxVertices
+                                : kind == GRASS_TIER_GEOMETRY ? patch_indices(pd)
+                                                              : slice_tier_vertices(kind, draw.features);
             plan.draws.push_back(draw);
             drew = true;
             const uint64_t triangles_per_blade = pd.indices_per_blade / 3;
@@ -493,6 +506,7 @@ private:
     double field_up_[3] = {0, 1, 0}; // the field's up, world, unit
     bool reads_map_ = false;         // the field reads the interaction map
     uint32_t features_ = 0;          // TierDraw::features of every draw of the field
+    bool debug_cells_ = false;       // every draw is drawn as debug boxes (GRASS_VIEW_FLAG_DEBUG_CELLS)
     static constexpr uint32_t kNoEdgeTier = ~0u;
     static constexpr uint64_t kEdgeStrip = 16; // cells along the border in a field-edge instance, at most
     static constexpr uint64_t kEdgeDepth = 16; // cells into the field of the field-edge instances, at most
@@ -528,9 +542,8 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     plan.frame.params[0] = static_cast<float>(std::fmod(view.time, 86400.0));
     plan.frame.params[1] = static_cast<float>(view.flags);
     plan.frame.params[2] = in.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
-    plan.frame.params[3] = 0.0f;
-    // The clip convention: Vulkan's is 0..1; a GL backend reads the host's at each render.
-    plan.frame.target[0] = in.clip_z_zero_to_one ? 1.0f : 0.0f;
+    // The target's samples and clip convention, as the backend reports them.
+    write_render_target(&plan.frame, in.target);
     plan.frame.target[1] = plan.frame.target[2] = plan.frame.target[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;

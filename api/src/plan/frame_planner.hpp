@@ -29,7 +29,7 @@ struct FramePlanning {
     Log& log;
     uint32_t& lod_callbacks_running;
     grass_depth_mode depth_mode;
-    bool clip_z_zero_to_one; // the backend's clip z runs 0..1 (FrameUniforms::target.x)
+    RenderTarget target; // the target's samples and clip convention, as the backend reports them
 };
 
 // Rebuilds in.plan from a validated view. Fails only when a host lod-test callback
