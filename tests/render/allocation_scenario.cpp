@@ -59,9 +59,9 @@ ScenarioResult run_allocation_scenario(grass_host::Host& host, const AllocationP
         EXPECT_EQ(grass_set_wind(out.context, &wind), GRASS_SUCCESS) << log.text;
         grass_collider ball{};
         ball.radius = 0.4f;
-        ball.centre[0] = 8.0;
-        ball.centre[1] = 0.2;
-        ball.centre[2] = 3.0;
+        ball.center[0] = 8.0;
+        ball.center[1] = 0.2;
+        ball.center[2] = 3.0;
         EXPECT_EQ(grass_set_colliders(out.context, &ball, 1), GRASS_SUCCESS) << log.text;
     }
     out.setup_allocations = static_cast<int>(probe.allocations_made() - made_before);
