@@ -4,21 +4,10 @@
  * grass_memory_stats.host_bytes_peak), the 0.4 names answer and the id helpers are exported.
  * Exit status 0 when all is well.
  */
+#include "host_checks.h"
+
 #include <grass/grass_gl.h>
 #include <grass/grass_vk.h>
-
-#include <stdio.h>
-#include <string.h>
-
-static int failures = 0;
-
-#define CHECK(condition)                                                                  \
-    do {                                                                                  \
-        if (!(condition)) {                                                               \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
-            failures += 1;                                                                \
-        }                                                                                 \
-    } while (0)
 
 #define CHECK_OK(call) CHECK((call) == GRASS_SUCCESS)
 
@@ -89,10 +78,5 @@ int main(void) {
     CHECK_OK(grass_destroy_field(ctx, field));
     CHECK_OK(grass_destroy_patch(ctx, patch));
     grass_destroy_context(ctx);
-    if (failures) {
-        fprintf(stderr, "current_header_host: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("current_header_host: all checks passed\n");
-    return 0;
+    return checks_result("current_header_host");
 }

@@ -16,31 +16,15 @@
 #    error "the current grass.h is on this host's include path; it must see only the frozen 0.3 headers"
 #endif
 
-#ifdef GRASS_ABI_TEST_EGL
-#    include "keep_drivers_resident.h"
-#    include <EGL/egl.h>
-#    include <EGL/eglext.h>
-#endif
+#include "host_checks.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
 /* The 0.3 layouts, as the library records them (api/src/foundation/abi_sizes.cpp). */
 typedef char frame_stats_is_152_bytes[sizeof(grass_frame_stats) == 152 ? 1 : -1];
 typedef char memory_stats_is_24_bytes[sizeof(grass_memory_stats) == 24 ? 1 : -1];
 typedef char patch_info_is_48_bytes[sizeof(grass_patch_info) == 48 ? 1 : -1];
-
-static int failures = 0;
-
-#define CHECK(condition)                                                                  \
-    do {                                                                                  \
-        if (!(condition)) {                                                               \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
-            failures += 1;                                                                \
-        }                                                                                 \
-    } while (0)
 
 #define CHECK_OK(call)                                                                                      \
     do {                                                                                                    \
@@ -207,48 +191,6 @@ static void run_scene(grass_context* ctx, int gpu) {
 }
 
 #ifdef GRASS_ABI_TEST_EGL
-/* The 0.3 loader type returns void*: copied out of the function pointer (ISO C has no cast
- * between the two; grass.h 0.4's grass_gl_proc ends that). */
-static void* load_gl(void* user_data, const char* name) {
-    void (*proc)(void) = eglGetProcAddress(name);
-    void* address;
-    (void)user_data;
-    memcpy(&address, &proc, sizeof(address));
-    return address;
-}
-
-/* A GL 4.5 core context on EGL's surfaceless platform, current; 0 where there is none. */
-static int make_gl_current(EGLDisplay* out_display, EGLContext* out_context) {
-    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    PFNEGLGETPLATFORMDISPLAYEXTPROC get_display;
-    EGLDisplay display;
-    EGLContext context;
-    EGLint major = 0, minor = 0;
-    const EGLint attributes[] = {
-        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
-        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    void (*proc)(void) = eglGetProcAddress("eglGetPlatformDisplayEXT");
-    if (!client || !strstr(client, "EGL_MESA_platform_surfaceless") || !proc) return 0;
-    memcpy(&get_display, &proc, sizeof(get_display));
-    display = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
-    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) return 0;
-    if (!eglBindAPI(EGL_OPENGL_API)) return 0;
-    context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
-    if (context == EGL_NO_CONTEXT) {
-        eglTerminate(display);
-        return 0;
-    }
-    if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
-        eglDestroyContext(display, context);
-        eglTerminate(display);
-        return 0;
-    }
-    keep_drivers_resident();
-    *out_display = display;
-    *out_context = context;
-    return 1;
-}
-
 static void run_gl(const grass_context_desc* cd) {
     EGLDisplay display;
     EGLContext egl_context;
@@ -259,16 +201,14 @@ static void run_gl(const grass_context_desc* cd) {
         return;
     }
     CHECK(gl.type == GRASS_STRUCT_TYPE_GL_DESC);
-    gl.get_proc_address = load_gl;
+    gl.get_proc_address = load_gl_0_3;
     CHECK_OK(grass_gl_create_context(GRASS_HEADER_VERSION, cd, &gl, &ctx));
     if (ctx) {
         CHECK(grass_context_backend(ctx) == GRASS_BACKEND_GL);
         run_scene(ctx, 1);
         grass_destroy_context(ctx);
     }
-    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(display, egl_context);
-    eglTerminate(display);
+    release_gl(display, egl_context);
     printf("old_header_host: GL context checked\n");
 }
 #endif
@@ -310,10 +250,5 @@ int main(void) {
 #ifdef GRASS_ABI_TEST_EGL
     run_gl(&cd);
 #endif
-    if (failures) {
-        fprintf(stderr, "old_header_host: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("old_header_host: all checks passed\n");
-    return 0;
+    return checks_result("old_header_host");
 }

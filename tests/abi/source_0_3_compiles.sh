@@ -10,7 +10,7 @@ include=$2
 source=$3
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-flags=(-std=c99 -Wall -Wextra -Wpedantic -Werror -Werror=implicit-function-declaration -fsyntax-only "-I$include" -DGRASS_SOURCE_TEST_EGL)
+flags=(-std=c99 -Wall -Wextra -Wpedantic -Werror -Werror=implicit-function-declaration -fsyntax-only "-I$include" -DGRASS_ABI_TEST_EGL)
 
 if ! "$cc" "${flags[@]}" -DGRASS_ENABLE_DEPRECATED -Wno-error=deprecated-declarations "$source" \
   2>"$scratch/with.log"; then

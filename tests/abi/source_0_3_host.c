@@ -8,30 +8,13 @@
  * macro and is refused without it (tests/abi/source_0_3_compiles.sh). It also uses the two
  * names that 0.3 and 0.4 shared and 0.5 renamed (the headers' "0.4 names" blocks).
  */
-#ifdef GRASS_SOURCE_TEST_EGL
+#ifdef GRASS_ABI_TEST_EGL
 #    define _GNU_SOURCE 1 /* keep_drivers_resident.h: dl_iterate_phdr, RTLD_NODELETE */
 #endif
+#include "host_checks.h"
+
 #include <grass/grass_gl.h>
 #include <grass/grass_vk.h>
-
-#ifdef GRASS_SOURCE_TEST_EGL
-#    include "keep_drivers_resident.h"
-#    include <EGL/egl.h>
-#    include <EGL/eglext.h>
-#endif
-
-#include <stdio.h>
-#include <string.h>
-
-static int failures = 0;
-
-#define CHECK(condition)                                                                  \
-    do {                                                                                  \
-        if (!(condition)) {                                                               \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
-            failures += 1;                                                                \
-        }                                                                                 \
-    } while (0)
 
 /* 0.3: the last refusal's sentence, through grass_last_error (0.4: grass_get_last_error).
  * Used as the only grass string call, as in the report of a host whose implicit
@@ -48,47 +31,19 @@ static void refuse_and_report(grass_context* ctx) {
     if (message) printf("source_0_3_host: refused as expected: %s\n", message);
 }
 
-#ifdef GRASS_SOURCE_TEST_EGL
-/* 0.3's loader type returned void*. */
-static void* load_gl(void* user_data, const char* name) {
-    void (*proc)(void) = eglGetProcAddress(name);
-    void* address;
-    (void)user_data;
-    memcpy(&address, &proc, sizeof(address));
-    return address;
-}
-
+#ifdef GRASS_ABI_TEST_EGL
 static void run_gl(void) {
-    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    const EGLint attributes[] = {
-        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
-        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    void (*proc)(void) = eglGetProcAddress("eglGetPlatformDisplayEXT");
-    PFNEGLGETPLATFORMDISPLAYEXTPROC get_display;
     EGLDisplay display;
     EGLContext egl_context;
     grass_context_desc cd = grass_default_context_desc();
     grass_gl_desc gl = grass_gl_default_desc();
     grass_context* ctx = NULL;
-    if (!client || !strstr(client, "EGL_MESA_platform_surfaceless") || !proc) {
-        printf("source_0_3_host: no surfaceless EGL; the GL part is skipped\n");
+    if (!make_gl_current(&display, &egl_context)) {
+        printf("source_0_3_host: no GL 4.5 context through EGL; the GL part is skipped\n");
         return;
     }
-    memcpy(&get_display, &proc, sizeof(get_display));
-    display = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
-    if (display == EGL_NO_DISPLAY || !eglInitialize(display, NULL, NULL) || !eglBindAPI(EGL_OPENGL_API)) {
-        printf("source_0_3_host: no EGL display; the GL part is skipped\n");
-        return;
-    }
-    egl_context = eglCreateContext(display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
-    if (egl_context == EGL_NO_CONTEXT || !eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, egl_context)) {
-        printf("source_0_3_host: no GL 4.5 context; the GL part is skipped\n");
-        eglTerminate(display);
-        return;
-    }
-    keep_drivers_resident();
     CHECK(gl.type == GRASS_STRUCT_TYPE_GL_DESC);
-    grass_gl_set_loader_0_3(&gl, load_gl); /* 0.3: gl.get_proc_address = load_gl; */
+    grass_gl_set_loader_0_3(&gl, load_gl_0_3); /* 0.3: gl.get_proc_address = load_gl_0_3; */
     CHECK(grass_gl_create_context(GRASS_HEADER_VERSION, &cd, &gl, &ctx) == GRASS_SUCCESS);
     if (ctx) {
         CHECK(grass_context_backend(ctx) == GRASS_BACKEND_GL);
@@ -98,9 +53,7 @@ static void run_gl(void) {
     } else {
         fprintf(stderr, "source_0_3_host: grass_gl_create_context failed\n");
     }
-    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-    eglDestroyContext(display, egl_context);
-    eglTerminate(display);
+    release_gl(display, egl_context);
 }
 #endif
 
@@ -126,13 +79,8 @@ int main(void) {
     }
     refuse_and_report(ctx);
     grass_destroy_context(ctx);
-#ifdef GRASS_SOURCE_TEST_EGL
+#ifdef GRASS_ABI_TEST_EGL
     run_gl();
 #endif
-    if (failures) {
-        fprintf(stderr, "source_0_3_host: %d check(s) failed\n", failures);
-        return 1;
-    }
-    printf("source_0_3_host: all checks passed\n");
-    return 0;
+    return checks_result("source_0_3_host");
 }

@@ -156,8 +156,8 @@ private:
         for (int k = 0; k < 40; ++k) {
             colliders[k].shape = k % 2 ? GRASS_COLLIDER_CAPSULE : GRASS_COLLIDER_SPHERE;
             colliders[k].radius = 0.3f;
-            colliders[k].centre[0] = 8.0 + 0.3 * k, colliders[k].centre[2] = 8.0 - 0.2 * k;
-            colliders[k].end[0] = colliders[k].centre[0] + 0.5, colliders[k].end[2] = colliders[k].centre[2];
+            colliders[k].center[0] = 8.0 + 0.3 * k, colliders[k].center[2] = 8.0 - 0.2 * k;
+            colliders[k].end[0] = colliders[k].center[0] + 0.5, colliders[k].end[2] = colliders[k].center[2];
             colliders[k].velocity[0] = 1.0f;
         }
         if (!call("grass_set_colliders", [&] { return grass_set_colliders(ctx_, colliders, 40); })) return false;

@@ -89,7 +89,7 @@ protected:
         for (int k = 0; k < 2; ++k) {
             const std::string s = "colliders[" + std::to_string(k) + "].";
             one(s + "radius", &colliders[k].radius);
-            arrd(s + "centre", colliders[k].centre, 3);
+            arrd(s + "center", colliders[k].center, 3);
             arrd(s + "end", colliders[k].end, 3);
             arr(s + "velocity", colliders[k].velocity, 3);
         }
@@ -229,8 +229,8 @@ TEST_F(DynamicsApiTest, RangesEnumsNullsAndZeroVectorsAreRefused) {
          [](DynamicsApiTest* t) { t->colliders[0].shape = static_cast<grass_collider_shape>(7); }},
         {"colliders[0].radius", GRASS_MSG_OUT_OF_RANGE, [](DynamicsApiTest* t) { t->colliders[0].radius = -1.0f; }},
         {"colliders[0].radius", GRASS_MSG_OUT_OF_RANGE, [](DynamicsApiTest* t) { t->colliders[0].radius = 2e6f; }},
-        {"colliders[0].centre[0]", GRASS_MSG_OUT_OF_RANGE,
-         [](DynamicsApiTest* t) { t->colliders[0].centre[0] = -2e12; }},
+        {"colliders[0].center[0]", GRASS_MSG_OUT_OF_RANGE,
+         [](DynamicsApiTest* t) { t->colliders[0].center[0] = -2e12; }},
         {"colliders[1].end[1]", GRASS_MSG_OUT_OF_RANGE, [](DynamicsApiTest* t) { t->colliders[1].end[1] = 2e12; }},
         {"colliders[1].velocity[2]", GRASS_MSG_OUT_OF_RANGE,
          [](DynamicsApiTest* t) { t->colliders[1].velocity[2] = 2e5f; }},

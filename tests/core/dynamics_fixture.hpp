@@ -87,7 +87,7 @@ protected:
         grass_collider c{};
         c.shape = GRASS_COLLIDER_SPHERE;
         c.radius = radius;
-        c.centre[0] = x, c.centre[1] = y, c.centre[2] = z;
+        c.center[0] = x, c.center[1] = y, c.center[2] = z;
         c.velocity[0] = vx, c.velocity[1] = vy, c.velocity[2] = vz;
         return c;
     }

@@ -282,8 +282,8 @@ std::vector<grass_collider> random_colliders(size_t count, double half_width, fl
         c = grass_collider{};
         c.shape = unit(rng) < 0.5 ? GRASS_COLLIDER_SPHERE : GRASS_COLLIDER_CAPSULE;
         c.radius = float(0.01 + unit(rng) * max_radius);
-        c.centre[0] = 2.0 + pos(rng), c.centre[1] = unit(rng) * 0.5, c.centre[2] = 2.0 + pos(rng);
-        c.end[0] = c.centre[0] + pos(rng) * 0.1, c.end[1] = unit(rng), c.end[2] = c.centre[2] + pos(rng) * 0.1;
+        c.center[0] = 2.0 + pos(rng), c.center[1] = unit(rng) * 0.5, c.center[2] = 2.0 + pos(rng);
+        c.end[0] = c.center[0] + pos(rng) * 0.1, c.end[1] = unit(rng), c.end[2] = c.center[2] + pos(rng) * 0.1;
         if (unit(rng) < 0.7) {
             for (float& v : c.velocity) v = float((unit(rng) - 0.5) * 10.0);
         }

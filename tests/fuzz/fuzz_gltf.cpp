@@ -43,7 +43,7 @@ grass_collider to_collider(const grass_sample::GltfCollider& g) {
     grass_collider c{};
     c.shape = g.shape == grass_sample::GltfCollider::Shape::sphere ? GRASS_COLLIDER_SPHERE : GRASS_COLLIDER_CAPSULE;
     c.radius = static_cast<float>(g.radius);
-    std::memcpy(c.centre, g.a, sizeof(c.centre));
+    std::memcpy(c.center, g.a, sizeof(c.center));
     std::memcpy(c.end, g.b, sizeof(c.end));
     return c;
 }

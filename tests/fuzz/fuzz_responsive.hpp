@@ -129,11 +129,11 @@ inline grass_collider make_collider(FuzzedDataProvider& in, bool sane) {
         pick_raw_enum(in, &c.shape, -1, 2);
     }
     c.radius = value_f(in, sane, 0.0, in.ConsumeIntegralInRange<int>(0, 7) == 0 ? 1e6 : 3.0);
-    pick_position(in, sane, c.centre, 20.0);
+    pick_position(in, sane, c.center, 20.0);
     if (in.ConsumeBool()) {
         pick_position(in, sane, c.end, 20.0);
     } else {
-        std::memcpy(c.end, c.centre, sizeof(c.end));
+        std::memcpy(c.end, c.center, sizeof(c.end));
     }
     if (in.ConsumeBool()) {
         const double most = in.ConsumeIntegralInRange<int>(0, 7) == 0 ? 1e5 : 20.0;

@@ -2,7 +2,8 @@
 // Vulkan, gl_allocation_failure_test.cpp on GL): a context, a patch, a density map, a field
 // with every tier and, optionally, wind and a collider, then two frames, with one chosen GPU allocation
 // failing. Every call either succeeds, or fails with GRASS_ERROR_OUT_OF_MEMORY because of the
-// injected failure and succeeds when repeated; the last frame draws grass.
+// injected failure and succeeds when repeated; the last frame draws grass. The runs of a
+// process share a bake cache: only the first bakes the slices (they allocate no GPU memory).
 #pragma once
 
 #include "render_fixture.hpp"

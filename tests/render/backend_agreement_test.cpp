@@ -42,9 +42,9 @@ void responsive_frame(grass_context* ctx, int frame, grass_view_desc* view) {
         grass_collider ball{};
         ball.shape = GRASS_COLLIDER_SPHERE;
         ball.radius = 0.3f;
-        ball.centre[0] = 2.4;
-        ball.centre[1] = 0.25;
-        ball.centre[2] = 1.2;
+        ball.center[0] = 2.4;
+        ball.center[1] = 0.25;
+        ball.center[2] = 1.2;
         ball.velocity[0] = 2.0f;
         ASSERT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS);
     } else {

@@ -448,8 +448,8 @@ TEST_P(GlStateTest, ResponsiveRenderRestoresItsExtraState) {
     grass_collider c{};
     c.shape = GRASS_COLLIDER_SPHERE;
     c.radius = 0.3f;
-    c.centre[0] = c.centre[2] = 0.5;
-    c.centre[1] = 0.3;
+    c.center[0] = c.center[2] = 0.5;
+    c.center[1] = 0.3;
     ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS) << log;
     const double eye[3] = {0.5, 2.0, 0.5}, target[3] = {0.5, 0.0, 0.5001};
     grass_view_desc v = view(eye, target);

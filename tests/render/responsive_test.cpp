@@ -94,9 +94,9 @@ grass_collider sphere(double x, double y, double z, float r) {
     grass_collider c{};
     c.shape = GRASS_COLLIDER_SPHERE;
     c.radius = r;
-    c.centre[0] = x;
-    c.centre[1] = y;
-    c.centre[2] = z;
+    c.center[0] = x;
+    c.center[1] = y;
+    c.center[2] = z;
     return c;
 }
 grass_collider capsule(double x0, double x1, double y, double z, float r) {
@@ -111,7 +111,7 @@ grass_collider capsule(double x0, double x1, double y, double z, float r) {
 // The collider's underside at ground point (x, z): its lowest point over it, or +inf
 // outside its footprint (the footprint shrunk by `inset` metres).
 double underside(const grass_collider& c, double x, double z, double inset) {
-    double ax = c.centre[0], az = c.centre[2], bx = c.end[0], bz = c.end[2];
+    double ax = c.center[0], az = c.center[2], bx = c.end[0], bz = c.end[2];
     if (c.shape == GRASS_COLLIDER_SPHERE) {
         bx = ax;
         bz = az;
@@ -121,7 +121,7 @@ double underside(const grass_collider& c, double x, double z, double inset) {
     const double dx = x - (ax + t * ex), dz = z - (az + t * ez), d = std::sqrt(dx * dx + dz * dz);
     const double r = c.radius - inset;
     if (d >= r) return INFINITY;
-    return c.centre[1] - std::sqrt(double(c.radius) * c.radius - d * d);
+    return c.center[1] - std::sqrt(double(c.radius) * c.radius - d * d);
 }
 
 // The grass under a collider's footprint (shrunk by 1 cm) in two height images of a top_view

@@ -139,9 +139,9 @@ TEST_P(ResponsiveTiersTest, TrailVisibleInEveryTier) {
         grass_collider s{};
         s.shape = GRASS_COLLIDER_SPHERE;
         s.radius = 0.4f;
-        s.centre[0] = 1.0;
-        s.centre[1] = 0.41;
-        s.centre[2] = 1.0;
+        s.center[0] = 1.0;
+        s.center[1] = 0.41;
+        s.center[2] = 1.0;
         return s;
     }();
     double time = 0.0;
@@ -239,9 +239,9 @@ TEST_P(ResponsiveTiersTest, ARollingBallsTrailIsTheSameAtAnyFrameRate) {
         grass_collider c{};
         c.shape = GRASS_COLLIDER_SPHERE;
         c.radius = 0.3f;
-        c.centre[0] = 0.2 + speed * t;
-        c.centre[1] = 0.22;
-        c.centre[2] = 1.0;
+        c.center[0] = 0.2 + speed * t;
+        c.center[1] = 0.22;
+        c.center[2] = 1.0;
         c.velocity[0] = speed;
         return c;
     };
@@ -287,9 +287,9 @@ TEST_P(ResponsiveTiersTest, AfterA10KmMoveNoStaleTrailReappears) {
     grass_collider c{};
     c.shape = GRASS_COLLIDER_SPHERE;
     c.radius = 0.4f;
-    c.centre[0] = 1.0;
-    c.centre[1] = 0.3;
-    c.centre[2] = 1.0;
+    c.center[0] = 1.0;
+    c.center[1] = 0.3;
+    c.center[2] = 1.0;
     const grass_host::Image still = frame(1.0);
     ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS) << log;
     frame(1.1);
@@ -340,8 +340,8 @@ TEST_P(ResponsiveTiersTest, TheExtremesDrawFiniteGrassInEveryTier) {
         for (int k = 0; k < 2; ++k) {
             far[k].shape = k == 0 ? GRASS_COLLIDER_SPHERE : GRASS_COLLIDER_CAPSULE;
             far[k].radius = 5.0f;
-            far[k].centre[0] = 1e7;
-            far[k].centre[2] = -1e7 * k;
+            far[k].center[0] = 1e7;
+            far[k].center[2] = -1e7 * k;
             far[k].end[0] = 1e7 + 3.0;
             far[k].end[2] = -1e7 * k;
             far[k].velocity[0] = 1e5f;
@@ -350,8 +350,8 @@ TEST_P(ResponsiveTiersTest, TheExtremesDrawFiniteGrassInEveryTier) {
         EXPECT_EQ(mean_difference(still, frame(time += 10.0)), 0.0) << tier.name << ": colliders 1e7 m away";
         grass_collider zero{};
         zero.shape = GRASS_COLLIDER_SPHERE;
-        zero.centre[0] = 1.0;
-        zero.centre[2] = 1.0;
+        zero.center[0] = 1.0;
+        zero.center[2] = 1.0;
         ASSERT_EQ(grass_set_colliders(ctx, &zero, 1), GRASS_SUCCESS) << log;
         EXPECT_EQ(mean_difference(still, frame(time += 10.0)), 0.0) << tier.name << ": a collider of radius 0";
         grass_wind_desc w = grass_default_wind_desc();
@@ -367,9 +367,9 @@ TEST_P(ResponsiveTiersTest, TheExtremesDrawFiniteGrassInEveryTier) {
         grass_collider huge{};
         huge.shape = GRASS_COLLIDER_SPHERE;
         huge.radius = 1e6f;
-        huge.centre[0] = 1.0;
-        huge.centre[1] = 1e6 - 0.02; // its underside 2 cm above the ground: everything pressed
-        huge.centre[2] = 1.0;
+        huge.center[0] = 1.0;
+        huge.center[1] = 1e6 - 0.02; // its underside 2 cm above the ground: everything pressed
+        huge.center[2] = 1.0;
         ASSERT_EQ(grass_set_colliders(ctx, &huge, 1), GRASS_SUCCESS) << log;
         const grass_host::Image pressed = frame(time += 10.0);
         save(pressed, std::string(tier.name) + ".huge-collider");

@@ -83,9 +83,9 @@ grass_result set_ball(grass_context* ctx, double x, float vx) {
     grass_collider ball{};
     ball.shape = GRASS_COLLIDER_SPHERE;
     ball.radius = kBallRadius;
-    ball.centre[0] = x;
-    ball.centre[1] = kBall[1];
-    ball.centre[2] = kBall[2];
+    ball.center[0] = x;
+    ball.center[1] = kBall[1];
+    ball.center[2] = kBall[2];
     ball.velocity[0] = vx;
     return grass_set_colliders(ctx, &ball, 1);
 }

@@ -110,14 +110,14 @@ TEST(SceneFile, ReadsWindMapMechanicsAndColliders) {
     const auto colliders = grass_sample::colliders_at(r, 2.0, 0.1);
     ASSERT_EQ(colliders.size(), 2u);
     EXPECT_EQ(colliders[0].shape, GRASS_COLLIDER_SPHERE);
-    EXPECT_DOUBLE_EQ(colliders[0].centre[0], 4.0);
+    EXPECT_DOUBLE_EQ(colliders[0].center[0], 4.0);
     EXPECT_NEAR(colliders[0].velocity[0], 2.0f, 1e-4f);
     EXPECT_FLOAT_EQ(colliders[0].velocity[1], 0.0f);
     // The leg: its hip stays, its foot follows the keyframes (linear between them); the
     // velocity is the foot's, the end that touches the grass.
     EXPECT_EQ(colliders[1].shape, GRASS_COLLIDER_CAPSULE);
     const auto leg = grass_sample::colliders_at(r, 0.5, 0.5)[1];
-    EXPECT_DOUBLE_EQ(leg.centre[1], 0.9);
+    EXPECT_DOUBLE_EQ(leg.center[1], 0.9);
     EXPECT_DOUBLE_EQ(leg.end[0], 0.5);
     EXPECT_NEAR(leg.end[1], 0.135, 1e-12);
     EXPECT_NEAR(leg.velocity[0], 1.0f, 1e-5f);
@@ -177,8 +177,8 @@ TEST(SceneFile, TheResponsiveSamplesLoad) {
     const auto b0 = grass_sample::colliders_at(ball.responsive, 0.0, 0.1)[0];
     const auto b2 = grass_sample::colliders_at(ball.responsive, 2.0, 0.1)[0];
     EXPECT_EQ(b0.shape, GRASS_COLLIDER_SPHERE);
-    EXPECT_NEAR(std::hypot(b2.centre[0] - b0.centre[0], b2.centre[2] - b0.centre[2]), 5.2, 1e-9) << "2.6 m/s";
-    EXPECT_NEAR(b2.centre[1], 0.3, 1e-9) << "on the ground";
+    EXPECT_NEAR(std::hypot(b2.center[0] - b0.center[0], b2.center[2] - b0.center[2]), 5.2, 1e-9) << "2.6 m/s";
+    EXPECT_NEAR(b2.center[1], 0.3, 1e-9) << "on the ground";
     EXPECT_FLOAT_EQ(b0.radius, 0.3f);
 
     // The legs: capsules whose feet touch the ground in turn (one planted while the other swings).

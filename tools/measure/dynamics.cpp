@@ -89,9 +89,9 @@ std::vector<grass_collider> crowd(int n) {
         grass_collider& c = out[size_t(i)];
         c.shape = GRASS_COLLIDER_SPHERE;
         c.radius = 0.3f;
-        c.centre[0] = (i % side + 0.5) * step + jitter();
-        c.centre[1] = 0.2;
-        c.centre[2] = (i / side + 0.5) * step + jitter();
+        c.center[0] = (i % side + 0.5) * step + jitter();
+        c.center[1] = 0.2;
+        c.center[2] = (i / side + 0.5) * step + jitter();
         c.velocity[0] = 1.0f;
         c.velocity[2] = 0.5f;
     }

@@ -59,11 +59,11 @@ std::vector<grass_collider> colliders_at(const Responsive& r, double t, double s
         grass_collider g{};
         g.shape = c.shape;
         g.radius = c.radius;
-        c.centre.at(t, g.centre);
+        c.centre.at(t, g.center);
         const Path* lower = &c.centre;
         if (c.shape == GRASS_COLLIDER_CAPSULE) {
             c.end.at(t, g.end);
-            if (g.end[1] < g.centre[1]) lower = &c.end;
+            if (g.end[1] < g.center[1]) lower = &c.end;
         }
         velocity_of(*lower, t, step, g.velocity);
         out.push_back(g);
@@ -115,7 +115,7 @@ grass_host::HostMesh sphere_mesh(float radius, const float albedo[3]) {
 std::vector<int> beads_of(const Responsive& r, double t0) {
     std::vector<int> beads;
     for (const grass_collider& c : colliders_at(r, t0, 1.0))
-        beads.push_back(c.shape == GRASS_COLLIDER_SPHERE ? 1 : bead_count(distance(c.centre, c.end), c.radius));
+        beads.push_back(c.shape == GRASS_COLLIDER_SPHERE ? 1 : bead_count(distance(c.center, c.end), c.radius));
     return beads;
 }
 
@@ -154,8 +154,8 @@ std::vector<std::array<double, 3>> moving_mesh_origins(const Responsive& r, doub
         const grass_collider& c = colliders[i];
         for (int k = 0; k < beads[i]; ++k) {
             const double s = beads[i] > 1 ? double(k) / (beads[i] - 1) : 0.0; // a sphere: its centre
-            out.push_back({c.centre[0] + (c.end[0] - c.centre[0]) * s, c.centre[1] + (c.end[1] - c.centre[1]) * s,
-                           c.centre[2] + (c.end[2] - c.centre[2]) * s});
+            out.push_back({c.center[0] + (c.end[0] - c.center[0]) * s, c.center[1] + (c.end[1] - c.center[1]) * s,
+                           c.center[2] + (c.end[2] - c.center[2]) * s});
         }
     }
     for (const grass_wind_source& s : wind_sources_at(r, t))

@@ -42,7 +42,8 @@
  *     change.
  *   - Functions are only added; a renamed function keeps its old symbol for programs
  *     built against the older header, and this header declares its old name only to
- *     sources that define GRASS_ENABLE_DEPRECATED (the "0.3 names" block at its end).
+ *     sources that define GRASS_ENABLE_DEPRECATED ("Renamed names" below); a renamed
+ *     field keeps its place, and its old name is an alias for those sources.
  *   - The numeric values of enums, struct type tags and message ids never change.
  *
  * Thread safety
@@ -107,6 +108,47 @@ extern "C" {
 #    define GRASS_API __attribute__((visibility("default")))
 #else
 #    define GRASS_API
+#endif
+
+/* ---- Renamed names -----------------------------------------------------------------------
+ * A name renamed since 0.3 stays declared for source code that defines
+ * GRASS_ENABLE_DEPRECATED before including grass: each use then compiles with a deprecation
+ * warning that names the new name (functions: the "0.3 names" and "0.4 names" blocks at the
+ * ends of the headers; fields: an alias in the struct). Without the macro a use of an old
+ * function name is a compile error that says so (GCC 12+, Clang), never an implicit
+ * declaration (whose int result would truncate grass_last_error's pointer).
+ * docs/migrating.md lists every rename. */
+#if defined(_MSC_VER)
+#    define GRASS_DEPRECATED(msg) __declspec(deprecated(msg))
+#elif defined(__GNUC__) || defined(__clang__)
+#    define GRASS_DEPRECATED(msg) __attribute__((deprecated(msg)))
+#elif defined(__cplusplus) && __cplusplus >= 201402L
+#    define GRASS_DEPRECATED(msg) [[deprecated(msg)]]
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 202311L
+#    define GRASS_DEPRECATED(msg) [[deprecated(msg)]]
+#else
+#    define GRASS_DEPRECATED(msg)
+#endif
+
+/* GRASS_RENAMED(old_name, new_name, version): the attribute of a name renamed in `version`. */
+#if defined(GRASS_ENABLE_DEPRECATED)
+#    define GRASS_RENAMED(old_name, new_name, version) \
+        GRASS_DEPRECATED(#old_name " was renamed " #new_name " in grass " #version " (docs/migrating.md)")
+#elif defined(__has_attribute)
+#    if __has_attribute(unavailable)
+#        define GRASS_RENAMED(old_name, new_name, version)                                                \
+            __attribute__((unavailable(#old_name " was renamed " #new_name " in grass " #version          \
+                                                 "; define GRASS_ENABLE_DEPRECATED to keep the old name " \
+                                                 "(docs/migrating.md)")))
+#    endif
+#endif
+
+/* A renamed struct field keeps its old name as a second member of an anonymous union, so
+ * layout and size do not change. Only with GRASS_ENABLE_DEPRECATED, and only where anonymous
+ * unions are standard (C11 and later, C++): in C99 an old field name is not declared. */
+#if defined(GRASS_ENABLE_DEPRECATED) && \
+    (defined(__cplusplus) || (defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L))
+#    define GRASS_FIELD_ALIASES 1
 #endif
 
 /* The version of the library that is linked (same encoding as GRASS_HEADER_VERSION). */
@@ -758,7 +800,7 @@ typedef struct grass_frame_stats {
     uint64_t cells_drawn;      /* geometry-tier patch instances (cells) */
     uint64_t blades_submitted; /* cells_drawn x blades per patch */
     uint64_t blades_drawn;     /* blades the geometry tier draws, from the density and the
-                                    tier transitions at each cell's centre: exact without a map
+                                    tier transitions at each cell's center: exact without a map
                                     and away from transition zones, an estimate elsewhere */
     uint64_t triangles;        /* triangles of the drawn blades */
     double plan_ms;            /* CPU time of the frame plan */
@@ -942,11 +984,18 @@ typedef enum grass_collider_shape {
 /* A collider of one frame. */
 typedef struct grass_collider {
     grass_collider_shape shape;
-    float radius;     /* metres, 0 .. 1e6 (0 touches nothing) */
-    double centre[3]; /* SPHERE: the centre; CAPSULE: one end of its axis. World metres, within +-1e12 */
-    double end[3];    /* CAPSULE: the other end of its axis; unused for a sphere */
+    float radius; /* metres, 0 .. 1e6 (0 touches nothing) */
+#if defined(GRASS_FIELD_ALIASES)
+    union {
+        double center[3];
+        GRASS_RENAMED(centre, center, 0.5) double centre[3]; /* its 0.5 development name */
+    };
+#else
+    double center[3]; /* SPHERE: the center; CAPSULE: one end of its axis. World metres, within +-1e12 */
+#endif
+    double end[3]; /* CAPSULE: the other end of its axis; unused for a sphere */
     /* Optional, world m/s, each component within +-1e5: how the collider moved over the last
-     * time step. The pass sweeps it from centre - velocity x step to centre, so a fast
+     * time step. The pass sweeps it from center - velocity x step to center, so a fast
      * collider leaves a continuous trail at any frame rate. Zero: only where it is now. */
     float velocity[3];
 } grass_collider;
@@ -1036,62 +1085,22 @@ GRASS_API grass_result grass_set_blade_culling(grass_context* context, grass_fie
                                                const grass_blade_culling_desc* culling);
 
 /* ---- 0.3 names (begin) ------------------------------------------------------------------
- * Functions renamed in 0.4 (docs/migrating.md lists every source change since 0.3). The
- * library still exports their 0.3 symbols for programs built against grass.h 0.3. Source
- * code gets them by defining GRASS_ENABLE_DEPRECATED before including grass: each use then
- * compiles with a deprecation warning that names the new name. Without the macro a use is
- * a compile error that says so (GCC 12+, Clang), never an implicit declaration (whose int
- * result would truncate grass_last_error's pointer). */
-#if defined(_MSC_VER)
-#    define GRASS_DEPRECATED(msg) __declspec(deprecated(msg))
-#elif defined(__GNUC__) || defined(__clang__)
-#    define GRASS_DEPRECATED(msg) __attribute__((deprecated(msg)))
-#elif defined(__cplusplus) && __cplusplus >= 201402L
-#    define GRASS_DEPRECATED(msg) [[deprecated(msg)]]
-#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 202311L
-#    define GRASS_DEPRECATED(msg) [[deprecated(msg)]]
-#else
-#    define GRASS_DEPRECATED(msg)
-#endif
-
-#if defined(GRASS_ENABLE_DEPRECATED)
-#    define GRASS_RENAMED_IN_0_4(old_name, new_name) \
-        GRASS_DEPRECATED(#old_name " was renamed " #new_name " in grass 0.4 (docs/migrating.md)")
-#elif defined(__has_attribute)
-#    if __has_attribute(unavailable)
-#        define GRASS_RENAMED_IN_0_4(old_name, new_name)                                                      \
-            __attribute__((unavailable(#old_name " was renamed " #new_name                                    \
-                                                 " in grass 0.4; define GRASS_ENABLE_DEPRECATED to keep the " \
-                                                 "0.3 name (docs/migrating.md)")))
-#    endif
-#endif
-
-#if defined(GRASS_RENAMED_IN_0_4)
-GRASS_RENAMED_IN_0_4(grass_context_backend, grass_get_context_backend)
+ * Functions renamed in 0.4 (docs/migrating.md lists every source change since 0.3), declared
+ * with GRASS_RENAMED ("Renamed names" near the top). The library still exports their 0.3
+ * symbols for programs built against grass.h 0.3. */
+#if defined(GRASS_RENAMED)
+GRASS_RENAMED(grass_context_backend, grass_get_context_backend, 0.4)
 GRASS_API grass_backend grass_context_backend(const grass_context* context);
-GRASS_RENAMED_IN_0_4(grass_last_error, grass_get_last_error)
+GRASS_RENAMED(grass_last_error, grass_get_last_error, 0.4)
 GRASS_API const char* grass_last_error(const grass_context* context);
 #endif
 /* ---- 0.3 names (end) -------------------------------------------------------------------- */
 
 /* ---- 0.4 names (begin) ------------------------------------------------------------------
  * Functions renamed in 0.5, in the 0.3 block's way: the library still exports the 0.4
- * symbols; sources get them by defining GRASS_ENABLE_DEPRECATED (with a deprecation warning
- * that names the new name), and without the macro a use is a compile error that says so. */
-#if defined(GRASS_ENABLE_DEPRECATED)
-#    define GRASS_RENAMED_IN_0_5(old_name, new_name) \
-        GRASS_DEPRECATED(#old_name " was renamed " #new_name " in grass 0.5 (docs/migrating.md)")
-#elif defined(__has_attribute)
-#    if __has_attribute(unavailable)
-#        define GRASS_RENAMED_IN_0_5(old_name, new_name)                                                      \
-            __attribute__((unavailable(#old_name " was renamed " #new_name                                    \
-                                                 " in grass 0.5; define GRASS_ENABLE_DEPRECATED to keep the " \
-                                                 "0.4 name (docs/migrating.md)")))
-#    endif
-#endif
-
-#if defined(GRASS_RENAMED_IN_0_5)
-GRASS_RENAMED_IN_0_5(grass_library_version, grass_get_library_version)
+ * symbols. (grass_collider.centre, renamed center in 0.5, is an alias in the struct.) */
+#if defined(GRASS_RENAMED)
+GRASS_RENAMED(grass_library_version, grass_get_library_version, 0.5)
 GRASS_API uint32_t grass_library_version(void);
 #endif
 /* ---- 0.4 names (end) -------------------------------------------------------------------- */

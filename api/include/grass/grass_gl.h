@@ -89,8 +89,8 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
 GRASS_API grass_result grass_gl_render(grass_context* context);
 
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */
-#if defined(GRASS_RENAMED_IN_0_4)
-GRASS_RENAMED_IN_0_4(grass_gl_default_desc, grass_default_gl_desc)
+#if defined(GRASS_RENAMED)
+GRASS_RENAMED(grass_gl_default_desc, grass_default_gl_desc, 0.4)
 GRASS_API grass_gl_desc grass_gl_default_desc(void);
 #endif
 #if defined(GRASS_ENABLE_DEPRECATED)

@@ -113,17 +113,17 @@ GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);
 GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc* record);
 
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */
-#if defined(GRASS_RENAMED_IN_0_4)
-GRASS_RENAMED_IN_0_4(grass_vk_default_desc, grass_default_vk_desc)
+#if defined(GRASS_RENAMED)
+GRASS_RENAMED(grass_vk_default_desc, grass_default_vk_desc, 0.4)
 GRASS_API grass_vk_desc grass_vk_default_desc(void);
-GRASS_RENAMED_IN_0_4(grass_vk_default_record_desc, grass_default_vk_record_desc)
+GRASS_RENAMED(grass_vk_default_record_desc, grass_default_vk_record_desc, 0.4)
 GRASS_API grass_vk_record_desc grass_vk_default_record_desc(void);
 #endif
 /* ---- 0.3 names (end) -------------------------------------------------------------------- */
 
 /* ---- 0.4 names (begin): see grass.h's block of the same name ----------------------------- */
-#if defined(GRASS_RENAMED_IN_0_5)
-GRASS_RENAMED_IN_0_5(grass_vk_prepare_frame, grass_vk_prepare)
+#if defined(GRASS_RENAMED)
+GRASS_RENAMED(grass_vk_prepare_frame, grass_vk_prepare, 0.5)
 GRASS_API grass_result grass_vk_prepare_frame(grass_context* context, void* command_buffer);
 #endif
 /* ---- 0.4 names (end) -------------------------------------------------------------------- */

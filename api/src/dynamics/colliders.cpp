@@ -55,8 +55,8 @@ bool empty(const TileRect& r) { return r.x0 > r.x1 || r.z0 > r.z1; }
 bool continues_passage(const grass_collider& c, const grass_collider* before, double dt) {
     if (before == nullptr || before->shape != c.shape) return false;
     for (int end = 0; end < (c.shape == GRASS_COLLIDER_CAPSULE ? 2 : 1); ++end) {
-        const double* now = end == 0 ? c.centre : c.end;
-        const double* then = end == 0 ? before->centre : before->end;
+        const double* now = end == 0 ? c.center : c.end;
+        const double* then = end == 0 ? before->center : before->end;
         double d2 = 0.0;
         for (int k = 0; k < 3; ++k) {
             const double d = then[k] - (now[k] - double(c.velocity[k]) * dt);
@@ -86,7 +86,7 @@ grass_result validate_colliders(Log* log, const char* fn, const grass_collider* 
                              arg(i, "shape"), static_cast<long long>(shape));
         }
         GRASS_TRY(check_range(log, fn, arg(i, "radius"), c.radius, 0.0, 1e6));
-        GRASS_TRY(check_position(log, fn, arg(i, "centre"), c.centre));
+        GRASS_TRY(check_position(log, fn, arg(i, "center"), c.center));
         // A sphere's end is unused: finite all the same (a NaN anywhere is a host's bug).
         if (shape == GRASS_COLLIDER_CAPSULE) {
             GRASS_TRY(check_position(log, fn, arg(i, "end"), c.end));
@@ -112,8 +112,8 @@ uint64_t bin_colliders(const Vector<grass_collider>& colliders, const Vector<gra
         const grass_collider& c = colliders[i];
         if (!(c.radius > 0.0f)) continue; // radius 0 touches nothing
         GpuCollider g{};
-        to_map(frame, c.centre, g.a);
-        to_map(frame, c.shape == GRASS_COLLIDER_CAPSULE ? c.end : c.centre, g.b);
+        to_map(frame, c.center, g.a);
+        to_map(frame, c.shape == GRASS_COLLIDER_CAPSULE ? c.end : c.center, g.b);
         const double vel[3] = {c.velocity[0], c.velocity[1], c.velocity[2]};
         g.velocity[0] = static_cast<float>(dot3(vel, frame.u));
         g.velocity[1] = static_cast<float>(dot3(vel, frame.v));

@@ -3,6 +3,7 @@ grass_vk.h, as ctypes declares them. Names are the C names. tests/test_header_la
 checks this file against the headers (sizes, offsets, enum values, signatures)."""
 import ctypes
 import os
+import warnings
 from ctypes import (CFUNCTYPE, POINTER, Structure, c_char_p, c_double, c_float, c_int, c_int32, c_size_t,
                     c_uint16, c_uint32, c_uint64, c_void_p)
 
@@ -253,8 +254,20 @@ class grass_wind_map_desc(Structure):
 
 
 class grass_collider(Structure):
-    _fields_ = [("shape", grass_enum), ("radius", c_float), ("centre", c_double * 3), ("end", c_double * 3),
+    _fields_ = [("shape", grass_enum), ("radius", c_float), ("center", c_double * 3), ("end", c_double * 3),
                 ("velocity", c_float * 3)]
+
+    # center's 0.5 development name, as the header's alias (GRASS_ENABLE_DEPRECATED): the same
+    # storage, with a DeprecationWarning; also a keyword of the constructor.
+    @property
+    def centre(self):
+        warnings.warn("grass_collider.centre was renamed center in grass 0.5", DeprecationWarning, stacklevel=2)
+        return self.center
+
+    @centre.setter
+    def centre(self, value):
+        warnings.warn("grass_collider.centre was renamed center in grass 0.5", DeprecationWarning, stacklevel=2)
+        self.center[:] = tuple(value)
 
 
 class grass_interaction_desc(Structure):

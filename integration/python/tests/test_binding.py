@@ -112,7 +112,7 @@ def test_responsive_grass_through_the_raw_binding():
         for i, c in enumerate(colliders):
             c.shape = grass.GRASS_COLLIDER_SPHERE if i == 0 else grass.GRASS_COLLIDER_CAPSULE
             c.radius = 0.4
-            c.centre[:] = (8.0 + i, 0.2, 4.0)
+            c.center[:] = (8.0 + i, 0.2, 4.0)
             c.end[:] = (9.5, 0.2, 4.0)
             c.velocity[:] = (1.0, 0.0, 0.0)
         ctx.call(lib.grass_set_colliders, colliders, 2)

@@ -179,6 +179,20 @@ def test_the_04_name_of_vk_prepare_warns_and_calls_it():
         raises(lambda: ctx.vk_prepare(None), "command_buffer", "None")
 
 
+def test_the_development_name_of_collider_center_warns_and_is_center():
+    """grass_collider.centre became center in 0.5 (as grass_lod_node.center): the old name is
+    the same storage, read, written and as a constructor keyword, with a DeprecationWarning."""
+    c = grass.grass_collider()
+    with pytest.warns(DeprecationWarning, match="centre was renamed center"):
+        c.centre[:] = (1.0, 2.0, 3.0)
+    assert list(c.center) == [1.0, 2.0, 3.0]
+    with pytest.warns(DeprecationWarning, match="centre was renamed center"):
+        c = grass.grass_collider(shape=grass.GRASS_COLLIDER_SPHERE, centre=(4.0, 5.0, 6.0))
+    assert list(c.center) == [4.0, 5.0, 6.0]
+    with pytest.warns(DeprecationWarning, match="centre was renamed center"):
+        assert list(c.centre) == [4.0, 5.0, 6.0]
+
+
 def test_cameras_that_cannot_be_built_are_refused():
     raises(lambda: grass.view_desc(eye=(1, 2, 3), target=(1, 2, 3), size=(64, 64)), "eye", "target", "(1, 2, 3)")
     raises(lambda: grass.view_desc(eye=(0, 10, 0), target=(0, 0, 0), size=(64, 64)), "up")

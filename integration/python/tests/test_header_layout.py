@@ -25,6 +25,10 @@ def _source():
     assert blocks == len(HEADERS), "each header has one 0.3 names block"
     text, blocks = re.subn(r"/\* ---- 0\.4 names \(begin\).*?/\* ---- 0\.4 names \(end\)[^\n]*", " ", text, flags=re.S)
     assert blocks == 2, "grass.h and grass_vk.h have a 0.4 names block"
+    # ... and renamed fields' aliases (an anonymous union under GRASS_FIELD_ALIASES): the
+    # binding binds the current field.
+    text, blocks = re.subn(r"#if defined\(GRASS_FIELD_ALIASES\)\n.*?#else\n(.*?)#endif\n", r"\1", text, flags=re.S)
+    assert blocks == 1, "grass_collider.centre is the one field alias"
     text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
     return re.sub(r"//[^\n]*", " ", text)
 
