@@ -36,9 +36,9 @@ struct FrameData {
     vec4 sun_color;        // rgb
     vec4 ambient_color;    // rgb
     vec4 params;           // x: time in seconds, y: view flags, z: +1 depth 0 near, -1 reversed depth,
-                           // w: the target's samples per pixel (set by the backend)
+                           // w: the target's samples per pixel (as the backend reports it: write_render_target)
     vec4 target;           // x: 1 when the host's clip z runs 0..1 (Vulkan, GL_ZERO_TO_ONE clip control),
-                           // 0 for GL's default -1..1 (set by the backend)
+                           // 0 for GL's default -1..1 (as the backend reports it)
     // Responsive grass (api/src/foundation/frame_plan.hpp FrameUniforms): read only by variants with
     // GRASS_WIND / GRASS_INTERACTION.
     vec4 wind;             // xyz: mean wind velocity (world m/s), w: gust strength

@@ -29,12 +29,6 @@ LAYERS = [
 ]
 RANK = {folder: rank for rank, layer in enumerate(LAYERS) for folder in layer}
 
-# Until the shader interface (map roles, feature bits, bindings, kNoMap, FieldMaps) leaves
-# context/backend.hpp for foundation/shader_interface.hpp, a concept folder may include
-# context/backend.hpp for it. Once that file exists, this allowance ends.
-SHADER_INTERFACE = "api/src/foundation/shader_interface.hpp"
-PENDING_SHADER_INCLUDE = "context/backend.hpp"
-
 BACKENDS = ("backend_gl", "backend_vk")
 SOURCE = re.compile(r"\.(c|h|cpp|hpp|inl)$")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
@@ -59,7 +53,6 @@ def includes(root, path):
 
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
-    shader_interface_split = os.path.exists(os.path.join(root, SHADER_INTERFACE))
     core = os.path.join(root, "api", "src")
     faults = []
     for folder in sorted(os.listdir(core)):
@@ -78,14 +71,10 @@ def main():
             if to not in RANK:
                 faults.append(f"{path}:{number}: #include \"{target}\": {to}/ is no folder of api/src")
             elif RANK[to] >= RANK[folder]:
-                if target == PENDING_SHADER_INCLUDE and not shader_interface_split and folder != "foundation":
-                    continue
                 if RANK[to] == RANK[folder]:
                     why = f"runs sideways: {folder}/ and {to}/ lie in one layer"
                 else:
                     why = f"runs back up: {folder}/ lies below {to}/"
-                if target == PENDING_SHADER_INCLUDE:
-                    why += f"; the shader interface is in {SHADER_INTERFACE} now"
                 faults.append(f"{path}:{number}: #include \"{target}\" {why}")
     for backend in BACKENDS:
         for path in sources(root, backend):

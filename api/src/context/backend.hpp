@@ -35,12 +35,6 @@ struct MapRegion {
     uint32_t x = 0, y = 0, width = 0, height = 0;
 };
 
-// The maps a field samples: the map slot of each role (kNoMap: none) and the feature mask.
-struct FieldMaps {
-    uint32_t map_slot[kMapRoleCount] = {kNoMap, kNoMap, kNoMap, kNoMap, kNoMap};
-    uint32_t features = 0; // bit r set <=> map_slot[r] != kNoMap
-};
-
 class Backend {
 public:
     virtual ~Backend() = default;

@@ -4,7 +4,7 @@
 // kFeatureWind); a field without one plans and draws exactly what it did before.
 #pragma once
 
-#include "context/backend.hpp" // the shader interface (kNoMap): foundation/shader_interface.hpp once split
+#include "foundation/shader_interface.hpp" // kNoMap
 #include "foundation/frame_plan.hpp"
 #include "foundation/log.hpp"
 #include "maps/design_map.hpp"

@@ -75,4 +75,11 @@ constexpr uint32_t slice_tier_vertices(grass_tier_kind kind, uint32_t features) 
                                                    : kImageVertices;
 }
 
+// The maps a field samples: the map slot of each role (kNoMap: none) and the feature mask
+// (the map bits of the shader variant its draws run).
+struct FieldMaps {
+    uint32_t map_slot[kMapRoleCount] = {kNoMap, kNoMap, kNoMap, kNoMap, kNoMap};
+    uint32_t features = 0; // bit r set <=> map_slot[r] != kNoMap
+};
+
 } // namespace grass

@@ -4,10 +4,10 @@
 #pragma once
 
 #include "bake/baked_slices.hpp"
-#include "context/backend.hpp" // the shader interface (kNoMap, FieldMaps): foundation/shader_interface.hpp once split
 #include "dynamics/blade_mechanics.hpp"
 #include "dynamics/wind_map.hpp"
 #include "foundation/allocator.hpp"
+#include "foundation/shader_interface.hpp"
 #include "patch/patch_data.hpp"
 #include "plan/blade_culling.hpp"
 #include "plan/lod_setup_types.hpp"
