@@ -4,9 +4,9 @@
 // kFeatureWind); a field without one plans and draws exactly what it did before.
 #pragma once
 
-#include "foundation/shader_interface.hpp" // kNoMap
 #include "foundation/frame_plan.hpp"
 #include "foundation/log.hpp"
+#include "foundation/shader_interface.hpp" // kNoMap
 #include "maps/design_map.hpp"
 
 #include <grass/grass.h>
