@@ -4,12 +4,12 @@ namespace grass_bootstrap {
 
 bool GlFunctions::load(GlProcLoader loader, void* user_data, std::string* error) {
     *this = GlFunctions{};
-#define GRASS_BOOTSTRAP_GL_LOAD(type, name)                           \
-    name = reinterpret_cast<type>(loader(user_data, "gl" #name));     \
-    if (!name) {                                                      \
-        *error = "the GL loader has no gl" #name;                     \
-        *this = GlFunctions{};                                        \
-        return false;                                                 \
+#define GRASS_BOOTSTRAP_GL_LOAD(type, name)                       \
+    name = reinterpret_cast<type>(loader(user_data, "gl" #name)); \
+    if (!name) {                                                  \
+        *error = "the GL loader has no gl" #name;                 \
+        *this = GlFunctions{};                                    \
+        return false;                                             \
     }
     GRASS_BOOTSTRAP_GL_FUNCTIONS(GRASS_BOOTSTRAP_GL_LOAD)
 #undef GRASS_BOOTSTRAP_GL_LOAD

@@ -15,8 +15,6 @@ namespace bench {
 
 // ---- The bench's scenes ---------------------------------------------------------------
 
-
-
 // Football: scripts/football-cameras.sh's cameras. The field's centre strip, 20 m wide and
 // 60 m deep from the near goal line (80 x 240 of its 380 x 532 cells), so every preset's
 // tiers up to the image tier (200 cells = 50 m out for DEFAULT) are in view.
@@ -140,7 +138,6 @@ bool lod_setup(grass_context* ctx, const grass_quality_desc& q, const grass_samp
     }
     return true;
 }
-
 
 namespace {
 
