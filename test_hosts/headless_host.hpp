@@ -111,7 +111,7 @@ public:
 
     // Vulkan: messages the validation layers printed (warnings and errors) since creation.
     // GL: GL debug-output errors. 0 when silent.
-    virtual uint32_t validation_messages() const = 0;
+    virtual uint32_t validation_messages() const { return messages_; }
     // Moves the target's mesh `index` (TargetDesc::meshes) to a new world origin from the
     // next render on: a host object that moves (a ball that rolls).
     // Hosts without meshes ignore it.
@@ -119,7 +119,7 @@ public:
         (void)index;
         (void)origin;
     }
-    virtual std::string validation_log() const = 0;
+    virtual std::string validation_log() const { return log_; }
 
     // GL hosts: the address of a GL entry point in the host's context, which stays current
     // on the creating thread (for tests that inspect GL state). Others return nullptr.
@@ -136,7 +136,15 @@ public:
 
 protected:
     explicit Host(const TargetDesc& target) : target_(target) {}
+    // One validation message (a line, without its newline): counted and logged.
+    void add_validation_message(const std::string& line) {
+        messages_ += 1;
+        log_ += line;
+        log_ += '\n';
+    }
     TargetDesc target_;
+    uint32_t messages_ = 0;
+    std::string log_;
 };
 
 // Fills image->rgba from image->rgba_f32 (linear floats): clamped, sRGB-encoded RGB, alpha

@@ -5,8 +5,11 @@
 //
 // GRASS_HOST_GL: unset = EGL, then OSMesa; "egl" = EGL only; "osmesa" = OSMesa only.
 #include "driver_residency.hpp"
+#include "gl_loader.hpp"
+#include "gl_target.hpp"
 #include "ground.hpp"
 #include "host_factories.hpp"
+#include "host_shaders.hpp"
 #include "mesh_drawer_gl.hpp"
 
 #include <grass/grass_gl.h>
@@ -24,68 +27,9 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace grass_host_shaders {
-extern const char* const ground_vert;
-extern const char* const ground_frag;
-} // namespace grass_host_shaders
-
 namespace grass_host {
 
 namespace {
-
-#define GRASS_HOST_GL_FUNCTIONS(X)                                                       \
-    X(PFNGLGETERRORPROC, GetError)                                                       \
-    X(PFNGLGETSTRINGPROC, GetString)                                                     \
-    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                 \
-    X(PFNGLENABLEPROC, Enable)                                                           \
-    X(PFNGLDISABLEPROC, Disable)                                                         \
-    X(PFNGLVIEWPORTPROC, Viewport)                                                       \
-    X(PFNGLSCISSORPROC, Scissor)                                                         \
-    X(PFNGLDEPTHMASKPROC, DepthMask)                                                     \
-    X(PFNGLCOLORMASKPROC, ColorMask)                                                     \
-    X(PFNGLPIXELSTOREIPROC, PixelStorei)                                                 \
-    X(PFNGLCREATERENDERBUFFERSPROC, CreateRenderbuffers)                                 \
-    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                                 \
-    X(PFNGLNAMEDRENDERBUFFERSTORAGEMULTISAMPLEPROC, NamedRenderbufferStorageMultisample) \
-    X(PFNGLCREATEFRAMEBUFFERSPROC, CreateFramebuffers)                                   \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                                   \
-    X(PFNGLNAMEDFRAMEBUFFERRENDERBUFFERPROC, NamedFramebufferRenderbuffer)               \
-    X(PFNGLCHECKNAMEDFRAMEBUFFERSTATUSPROC, CheckNamedFramebufferStatus)                 \
-    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                         \
-    X(PFNGLCLEARBUFFERFVPROC, ClearBufferfv)                                             \
-    X(PFNGLBLITNAMEDFRAMEBUFFERPROC, BlitNamedFramebuffer)                               \
-    X(PFNGLREADPIXELSPROC, ReadPixels)                                                   \
-    X(PFNGLDEBUGMESSAGECALLBACKPROC, DebugMessageCallback)                               \
-    X(PFNGLDEBUGMESSAGECONTROLPROC, DebugMessageControl)                                 \
-    X(PFNGLCREATESHADERPROC, CreateShader)                                               \
-    X(PFNGLSHADERSOURCEPROC, ShaderSource)                                               \
-    X(PFNGLCOMPILESHADERPROC, CompileShader)                                             \
-    X(PFNGLGETSHADERIVPROC, GetShaderiv)                                                 \
-    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                                       \
-    X(PFNGLDELETESHADERPROC, DeleteShader)                                               \
-    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                                             \
-    X(PFNGLATTACHSHADERPROC, AttachShader)                                               \
-    X(PFNGLLINKPROGRAMPROC, LinkProgram)                                                 \
-    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                               \
-    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                     \
-    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                                             \
-    X(PFNGLUSEPROGRAMPROC, UseProgram)                                                   \
-    X(PFNGLCREATEBUFFERSPROC, CreateBuffers)                                             \
-    X(PFNGLNAMEDBUFFERDATAPROC, NamedBufferData)                                         \
-    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                                             \
-    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                           \
-    X(PFNGLCREATEVERTEXARRAYSPROC, CreateVertexArrays)                                   \
-    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)                                   \
-    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                         \
-    X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                   \
-    X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                     \
-    X(PFNGLCLIPCONTROLPROC, ClipControl)
-
-struct HostGl {
-#define GRASS_HOST_GL_DECLARE(type, name) type name = nullptr;
-    GRASS_HOST_GL_FUNCTIONS(GRASS_HOST_GL_DECLARE)
-#undef GRASS_HOST_GL_DECLARE
-};
 
 // OSMesa, loaded at run time (osmesa.h would pull in the legacy gl.h).
 using OSMesaContext = void*;
@@ -126,8 +70,6 @@ public:
     void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const override;
     grass_result render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
                         std::string* error) override;
-    uint32_t validation_messages() const override { return messages_; }
-    std::string validation_log() const override { return log_; }
     void move_mesh(size_t index, const double origin[3]) override {
         if (meshes_) meshes_->set_origin(index, origin);
     }
@@ -162,17 +104,14 @@ private:
     OsMesaGetProcAddressFn osmesa_get_proc_address_ = nullptr;
     std::vector<uint8_t> osmesa_buffer_;
 
-    HostGl gl_;
+    grass_bootstrap::GlFunctions gl_;
     bool gl_loaded_ = false;
     bool debug_output_ = false;
     std::string device_name_;
-    GLuint draw_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0; // multisampled when target.samples > 1
-    GLuint resolve_fbo_ = 0, resolve_rb_ = 0;           // only when multisampled
+    grass_bootstrap::GlRenderTarget fb_; // multisampled when target.samples > 1
     std::vector<uint8_t> readback_;
-    uint32_t messages_ = 0;
     uint32_t debug_errors_ = 0;         // errors seen by debug_callback
     uint32_t debug_errors_counted_ = 0; // debug_errors_ at the last count_gl_errors
-    std::string log_;
 };
 
 bool GlHost::init(std::string* error) {
@@ -199,16 +138,8 @@ bool GlHost::init(std::string* error) {
     }
     if (!load_functions(error)) return false;
 
-    GLint major = 0, minor = 0;
-    gl_.GetIntegerv(GL_MAJOR_VERSION, &major);
-    gl_.GetIntegerv(GL_MINOR_VERSION, &minor);
-    if (major < 4 || (major == 4 && minor < 5)) {
-        *error = "the GL context is " + std::to_string(major) + "." + std::to_string(minor) + "; 4.5 is required";
-        return false;
-    }
-    const auto* renderer = reinterpret_cast<const char*>(gl_.GetString(GL_RENDERER));
-    device_name_ = std::string(renderer ? renderer : "unknown GL renderer") +
-                   (path_ == Path::egl ? " (EGL surfaceless)" : " (OSMesa)");
+    if (!grass_bootstrap::require_gl45(gl_, error)) return false;
+    device_name_ = grass_bootstrap::gl_renderer(gl_) + (path_ == Path::egl ? " (EGL surfaceless)" : " (OSMesa)");
 
     // KHR_debug is core in 4.3; a debug context reports everything, others at least errors.
     gl_.DebugMessageCallback(&GlHost::debug_callback, this);
@@ -351,16 +282,11 @@ grass_gl_proc GlHost::load_proc(void* user_data, const char* name) {
 }
 
 bool GlHost::load_functions(std::string* error) {
-#define GRASS_HOST_GL_LOAD(type, name)                              \
-    gl_.name = reinterpret_cast<type>(gl_proc_address("gl" #name)); \
-    if (!gl_.name) {                                                \
-        *error = "the GL loader has no gl" #name;                   \
-        return false;                                               \
-    }
-    GRASS_HOST_GL_FUNCTIONS(GRASS_HOST_GL_LOAD)
-#undef GRASS_HOST_GL_LOAD
-    gl_loaded_ = true;
-    return true;
+    const auto loader = [](void* host, const char* name) {
+        return static_cast<const GlHost*>(host)->gl_proc_address(name);
+    };
+    gl_loaded_ = gl_.load(loader, this, error);
+    return gl_loaded_;
 }
 
 bool GlHost::create_target(std::string* error) {
@@ -381,38 +307,12 @@ bool GlHost::create_target(std::string* error) {
     const GLsizei w = GLsizei(t.width), h = GLsizei(t.height);
     const GLsizei samples = t.samples > 1 ? GLsizei(t.samples) : 0;
     const GLenum color_format = t.float_color ? GL_RGBA32F : t.unorm_color ? GL_RGBA8 : GL_SRGB8_ALPHA8;
-    gl_.CreateRenderbuffers(1, &color_rb_);
-    gl_.NamedRenderbufferStorageMultisample(color_rb_, samples, color_format, w, h);
-    gl_.CreateRenderbuffers(1, &depth_rb_);
-    gl_.NamedRenderbufferStorageMultisample(depth_rb_, samples, GL_DEPTH_COMPONENT32F, w, h);
-    gl_.CreateFramebuffers(1, &draw_fbo_);
-    gl_.NamedFramebufferRenderbuffer(draw_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb_);
-    gl_.NamedFramebufferRenderbuffer(draw_fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_rb_);
-    GLenum status = gl_.CheckNamedFramebufferStatus(draw_fbo_, GL_FRAMEBUFFER);
-    if (status != GL_FRAMEBUFFER_COMPLETE) {
-        *error = "the offscreen framebuffer is incomplete: status " + hex(status);
-        return false;
-    }
-    if (samples > 0) {
-        gl_.CreateRenderbuffers(1, &resolve_rb_);
-        gl_.NamedRenderbufferStorageMultisample(resolve_rb_, 0, color_format, w, h);
-        gl_.CreateFramebuffers(1, &resolve_fbo_);
-        gl_.NamedFramebufferRenderbuffer(resolve_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_rb_);
-        status = gl_.CheckNamedFramebufferStatus(resolve_fbo_, GL_FRAMEBUFFER);
-        if (status != GL_FRAMEBUFFER_COMPLETE) {
-            *error = "the resolve framebuffer is incomplete: status " + hex(status);
-            return false;
-        }
-    }
-    return true;
+    return grass_bootstrap::create_render_target(gl_, w, h, samples, color_format, "the offscreen", &fb_, error);
 }
 
 GlHost::~GlHost() {
     if (gl_loaded_) {
-        const GLuint framebuffers[] = {draw_fbo_, resolve_fbo_};
-        const GLuint renderbuffers[] = {color_rb_, depth_rb_, resolve_rb_};
-        gl_.DeleteFramebuffers(2, framebuffers); // zero names are ignored
-        gl_.DeleteRenderbuffers(3, renderbuffers);
+        grass_bootstrap::destroy_render_target(gl_, &fb_);
         if (ground_program_) gl_.DeleteProgram(ground_program_);
         if (ground_buffer_) gl_.DeleteBuffers(1, &ground_buffer_);
         if (ground_vao_) gl_.DeleteVertexArrays(1, &ground_vao_);
@@ -480,34 +380,10 @@ void GlHost::clear_rect(const float color[4], float depth, const int32_t rect[4]
 
 // The host's terrain stand-in: a camera-relative ground square (shaders/ground.*).
 bool GlHost::create_ground(std::string* error) {
-    const char* sources[2] = {grass_host_shaders::ground_vert, grass_host_shaders::ground_frag};
-    const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
-    ground_program_ = gl_.CreateProgram();
-    for (int k = 0; k < 2; ++k) {
-        const GLuint shader = gl_.CreateShader(stages[k]);
-        gl_.ShaderSource(shader, 1, &sources[k], nullptr);
-        gl_.CompileShader(shader);
-        GLint ok = 0;
-        gl_.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-        if (!ok) {
-            char log[1024] = {0};
-            gl_.GetShaderInfoLog(shader, sizeof(log), nullptr, log);
-            if (error) *error = std::string("ground shader: ") + log;
-            gl_.DeleteShader(shader);
-            return false;
-        }
-        gl_.AttachShader(ground_program_, shader);
-        gl_.DeleteShader(shader);
-    }
-    gl_.LinkProgram(ground_program_);
-    GLint linked = 0;
-    gl_.GetProgramiv(ground_program_, GL_LINK_STATUS, &linked);
-    if (!linked) {
-        char log[1024] = {0};
-        gl_.GetProgramInfoLog(ground_program_, sizeof(log), nullptr, log);
-        if (error) *error = std::string("ground program: ") + log;
-        return false;
-    }
+    std::string ignored;
+    ground_program_ = grass_bootstrap::compile_program(
+        gl_, grass_host_shaders::ground_vert, grass_host_shaders::ground_frag, "ground", error ? error : &ignored);
+    if (!ground_program_) return false;
     gl_.CreateBuffers(1, &ground_buffer_);
     gl_.NamedBufferData(ground_buffer_, sizeof(GroundUniforms), nullptr, GL_DYNAMIC_DRAW);
     gl_.CreateVertexArrays(1, &ground_vao_);
@@ -531,7 +407,7 @@ void GlHost::draw_ground(const grass_view_desc& view) {
 grass_result GlHost::render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
                             std::string* error) {
     const int32_t w = int32_t(target_.width), h = int32_t(target_.height);
-    gl_.BindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, fb_.draw_fbo);
     gl_.Enable(GL_FRAMEBUFFER_SRGB); // linear shader output and clear colours are sRGB-encoded
     gl_.Viewport(0, 0, w, h);
     gl_.DepthMask(GL_TRUE);
@@ -583,10 +459,11 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
         return result;
     }
 
-    GLuint read_fbo = draw_fbo_;
-    if (resolve_fbo_ != 0) {
-        gl_.BlitNamedFramebuffer(draw_fbo_, resolve_fbo_, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        read_fbo = resolve_fbo_;
+    GLuint read_fbo = fb_.draw_fbo;
+    if (fb_.resolve_fbo != 0) {
+        gl_.BlitNamedFramebuffer(fb_.draw_fbo, fb_.resolve_fbo, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
+                                 GL_NEAREST);
+        read_fbo = fb_.resolve_fbo;
     }
     gl_.Disable(GL_FRAMEBUFFER_SRGB); // read the stored sRGB bytes, unconverted
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, read_fbo);
@@ -597,14 +474,14 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     gl_.ReadPixels(0, 0, w, h, GL_RGBA, target_.float_color ? GL_FLOAT : GL_UNSIGNED_BYTE, readback_.data());
     if (target_.read_depth) {
         std::vector<float> depth(size_t(w) * size_t(h));
-        gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);
+        gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, fb_.draw_fbo);
         gl_.ReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
         out->depth.resize(depth.size());
         for (int32_t y = 0; y < h; ++y) { // bottom-up rows
             std::memcpy(&out->depth[size_t(y) * w], &depth[size_t(h - 1 - y) * w], size_t(w) * sizeof(float));
         }
     }
-    gl_.BindFramebuffer(GL_FRAMEBUFFER, draw_fbo_); // stays bound, as a host's scene target would
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, fb_.draw_fbo); // stays bound, as a host's scene target would
 
     out->width = target_.width;
     out->height = target_.height;

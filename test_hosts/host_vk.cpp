@@ -8,7 +8,9 @@
 #include "driver_residency.hpp"
 #include "ground.hpp"
 #include "host_factories.hpp"
+#include "host_shaders.hpp"
 #include "mesh_drawer_vk.hpp"
+#include "vk_bootstrap.hpp"
 
 #include <grass/grass_vk.h>
 
@@ -20,13 +22,6 @@
 #include <cstdlib>
 #include <cstring>
 
-namespace grass_host_spirv {
-extern const uint32_t ground_vert[];
-extern const uint32_t ground_vert_size; // bytes
-extern const uint32_t ground_frag[];
-extern const uint32_t ground_frag_size;
-} // namespace grass_host_spirv
-
 namespace grass_host {
 
 namespace {
@@ -35,20 +30,9 @@ constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_SRGB;            // linear 
 constexpr VkFormat kFloatColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT; // TargetDesc::float_color
 constexpr VkFormat kUnormColorFormat = VK_FORMAT_R8G8B8A8_UNORM;      // TargetDesc::unorm_color
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
-std::string vk_error(const char* call, VkResult result) {
-    char text[128];
-    std::snprintf(text, sizeof(text), "%s failed with VkResult %d", call, static_cast<int>(result));
-    return text;
-}
-
-// An image with its memory and view.
-struct Attachment {
-    VkImage image = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
-};
+using grass_bootstrap::vk_error;
+using Attachment = grass_bootstrap::VkImageParts; // an image with its memory and view
 
 class VkHost final : public Host {
 public:
@@ -69,8 +53,6 @@ public:
     void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const override;
     grass_result render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
                         std::string* error) override;
-    uint32_t validation_messages() const override { return messages_; }
-    std::string validation_log() const override { return log_; }
     void move_mesh(size_t index, const double origin[3]) override {
         if (meshes_) meshes_->set_origin(index, origin);
     }
@@ -86,22 +68,16 @@ private:
     bool create_ground_pipeline(std::string* error);
     bool create_meshes(std::string* error);
     void draw_ground(VkCommandBuffer cmd, const grass_view_desc& view);
-    bool allocate_memory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags, VkDeviceMemory* out,
-                         std::string* error);
     bool create_attachment(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                            VkImageAspectFlags aspect, Attachment* out, std::string* error);
-    void destroy_attachment(Attachment* a);
     void begin_pass(VkCommandBuffer cmd);
     void end_pass(VkCommandBuffer cmd);
     void clear_occluder(VkCommandBuffer cmd, const grass_view_desc& view, const Occluder& occluder);
     void copy_to_readback(VkCommandBuffer cmd);
-    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                     VkDebugUtilsMessageTypeFlagsEXT types,
-                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+    static void on_message(void* user, const std::string& line);
 
-    VkInstance instance_ = VK_NULL_HANDLE;
-    uint32_t api_version_ = VK_API_VERSION_1_1; // the instance's
-    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    grass_bootstrap::VkMessageSink sink_{&VkHost::on_message, this};
+    grass_bootstrap::VkBootInstance instance_;
     VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
     VkPhysicalDeviceProperties properties_{};
     VkPhysicalDeviceMemoryProperties memory_properties_{};
@@ -120,15 +96,11 @@ private:
     Attachment resolve_;                        // only when samples_ > 1
     VkRenderPass render_pass_ = VK_NULL_HANDLE; // null with dynamic rendering
     VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
-    VkBuffer readback_ = VK_NULL_HANDLE;
-    VkDeviceMemory readback_memory_ = VK_NULL_HANDLE;
-    void* readback_mapped_ = nullptr;
+    grass_bootstrap::VkBufferParts readback_; // host-visible, mapped
     bool readback_coherent_ = true;
 
     // The host's terrain stand-in (target.ground): shaders/ground.*, one uniform buffer.
-    VkBuffer ground_buffer_ = VK_NULL_HANDLE;
-    VkDeviceMemory ground_memory_ = VK_NULL_HANDLE;
-    void* ground_mapped_ = nullptr;
+    grass_bootstrap::VkBufferParts ground_buffer_;
     VkDescriptorSetLayout ground_set_layout_ = VK_NULL_HANDLE;
     VkDescriptorPool ground_pool_ = VK_NULL_HANDLE;
     VkDescriptorSet ground_set_ = VK_NULL_HANDLE;
@@ -142,19 +114,10 @@ private:
     VkFence fence_ = VK_NULL_HANDLE;
 
     std::string device_name_;
-    uint32_t messages_ = 0;
-    std::string log_;
 };
 
-VKAPI_ATTR VkBool32 VKAPI_CALL VkHost::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                  VkDebugUtilsMessageTypeFlagsEXT,
-                                                  const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-    auto* host = static_cast<VkHost*>(user);
-    host->messages_ += 1;
-    host->log_ += severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "[error] " : "[warning] ";
-    host->log_ += data && data->pMessage ? data->pMessage : "(no message)";
-    host->log_ += '\n';
-    return VK_FALSE; // never abort the call
+void VkHost::on_message(void* user, const std::string& line) {
+    static_cast<VkHost*>(user)->add_validation_message(line);
 }
 
 // ---- Creation -----------------------------------------------------------------------------
@@ -191,79 +154,17 @@ bool VkHost::create_meshes(std::string* error) {
     return meshes_->init(physical_device_, device_, pass_target(), target_.meshes, error);
 }
 
+// Validation layers on when installed; the messenger also without them when VK_EXT_debug_utils is there.
 bool VkHost::create_instance(std::string* error) {
-    uint32_t loader_version = VK_API_VERSION_1_0;
-    vkEnumerateInstanceVersion(&loader_version);
-    if (loader_version < VK_API_VERSION_1_1) {
-        *error = "the Vulkan loader is older than 1.1";
-        return false;
-    }
-    api_version_ = loader_version >= VK_API_VERSION_1_3 ? VK_API_VERSION_1_3 : VK_API_VERSION_1_1;
-
-    uint32_t count = 0;
-    vkEnumerateInstanceLayerProperties(&count, nullptr);
-    std::vector<VkLayerProperties> layers(count);
-    vkEnumerateInstanceLayerProperties(&count, layers.data());
-    bool validation = false;
-    for (const VkLayerProperties& l : layers) validation |= std::strcmp(l.layerName, kValidationLayer) == 0;
-
-    count = 0;
-    vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr);
-    std::vector<VkExtensionProperties> extensions(count);
-    vkEnumerateInstanceExtensionProperties(nullptr, &count, extensions.data());
-    bool debug_utils = false;
-    for (const VkExtensionProperties& e : extensions) {
-        debug_utils |= std::strcmp(e.extensionName, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0;
-    }
-    // The validation layer brings VK_EXT_debug_utils with it.
-    debug_utils |= validation;
-
-    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-    app.pApplicationName = "grass headless host";
-    app.pEngineName = "grass";
-    app.apiVersion = api_version_;
-
-    // Warnings and errors of every type, also during vkCreateInstance/vkDestroyInstance.
-    VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messenger.messageSeverity =
-        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                            VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                            VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    messenger.pfnUserCallback = &VkHost::on_message;
-    messenger.pUserData = this;
-
-    const char* layer_names[] = {kValidationLayer};
-    const char* extension_names[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
-    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    info.pNext = debug_utils ? &messenger : nullptr;
-    info.pApplicationInfo = &app;
-    info.enabledLayerCount = validation ? 1 : 0;
-    info.ppEnabledLayerNames = layer_names;
-    info.enabledExtensionCount = debug_utils ? 1 : 0;
-    info.ppEnabledExtensionNames = extension_names;
-    VkResult r = vkCreateInstance(&info, nullptr, &instance_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateInstance", r);
-        return false;
-    }
-    if (debug_utils) {
-        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        r = create ? create(instance_, &messenger, nullptr, &messenger_) : VK_ERROR_EXTENSION_NOT_PRESENT;
-        if (r != VK_SUCCESS) {
-            *error = vk_error("vkCreateDebugUtilsMessengerEXT", r);
-            return false;
-        }
-    }
-    return true;
+    grass_bootstrap::VkInstanceDesc desc;
+    desc.application = "grass headless host";
+    desc.messenger_without_layer = true;
+    desc.sink = &sink_;
+    return instance_.create(desc, error);
 }
 
 bool VkHost::pick_device(std::string* error) {
-    uint32_t count = 0;
-    vkEnumeratePhysicalDevices(instance_, &count, nullptr);
-    std::vector<VkPhysicalDevice> devices(count);
-    vkEnumeratePhysicalDevices(instance_, &count, devices.data());
+    const std::vector<VkPhysicalDevice> devices = grass_bootstrap::physical_devices(instance_.handle());
     if (devices.empty()) {
         *error = "no Vulkan physical device";
         return false;
@@ -301,11 +202,8 @@ bool VkHost::pick_device(std::string* error) {
         return false;
     }
 
-    count = 0;
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &count, nullptr);
-    std::vector<VkQueueFamilyProperties> families(count);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_device_, &count, families.data());
-    for (uint32_t i = 0; i < count; ++i) {
+    const std::vector<VkQueueFamilyProperties> families = grass_bootstrap::queue_families(physical_device_);
+    for (uint32_t i = 0; i < families.size(); ++i) {
         if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
             queue_family_ = i;
             return true;
@@ -317,15 +215,9 @@ bool VkHost::pick_device(std::string* error) {
 
 bool VkHost::create_device(std::string* error) {
     // Vulkan 1.3 core needs both the instance and the device at 1.3.
-    const bool core13 = api_version_ >= VK_API_VERSION_1_3 && properties_.apiVersion >= VK_API_VERSION_1_3;
-    uint32_t count = 0;
-    vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, nullptr);
-    std::vector<VkExtensionProperties> extensions(count);
-    vkEnumerateDeviceExtensionProperties(physical_device_, nullptr, &count, extensions.data());
-    bool khr_dynamic_rendering = false;
-    for (const VkExtensionProperties& e : extensions) {
-        khr_dynamic_rendering |= std::strcmp(e.extensionName, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME) == 0;
-    }
+    const bool core13 = instance_.api_version() >= VK_API_VERSION_1_3 && properties_.apiVersion >= VK_API_VERSION_1_3;
+    const bool khr_dynamic_rendering =
+        grass_bootstrap::has_device_extension(physical_device_, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
 
     // Is dynamicRendering there? (Vulkan 1.3 core, else the KHR extension.)
     VkPhysicalDeviceVulkan13Features features13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
@@ -349,30 +241,20 @@ bool VkHost::create_device(std::string* error) {
     VkPhysicalDeviceVulkan13Features enable13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     VkPhysicalDeviceDynamicRenderingFeaturesKHR enable_khr{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};
-    const char* extension_names[] = {VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME};
-    const float priority = 1.0f;
-    VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    queue.queueFamilyIndex = queue_family_;
-    queue.queueCount = 1;
-    queue.pQueuePriorities = &priority;
-    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    info.queueCreateInfoCount = 1;
-    info.pQueueCreateInfos = &queue;
+    std::vector<const char*> extension_names;
+    const void* enable = nullptr;
     if (dynamic_rendering_ && core13) {
         enable13.dynamicRendering = VK_TRUE;
-        info.pNext = &enable13;
+        enable = &enable13;
     } else if (dynamic_rendering_) {
         enable_khr.dynamicRendering = VK_TRUE;
-        info.pNext = &enable_khr;
-        info.enabledExtensionCount = 1;
-        info.ppEnabledExtensionNames = extension_names;
+        enable = &enable_khr;
+        extension_names.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
     }
-    const VkResult r = vkCreateDevice(physical_device_, &info, nullptr, &device_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateDevice", r);
+    if (!grass_bootstrap::create_device(physical_device_, queue_family_, extension_names, enable, &device_, &queue_,
+                                        error)) {
         return false;
     }
-    vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
     static const char* const kDrivers[] = {"libvulkan_", "libVkLayer_", nullptr};
     keep_drivers_resident(kDrivers);
     if (dynamic_rendering_) {
@@ -388,67 +270,15 @@ bool VkHost::create_device(std::string* error) {
     return true;
 }
 
-bool VkHost::allocate_memory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags, VkDeviceMemory* out,
-                             std::string* error) {
-    for (uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {
-        if ((requirements.memoryTypeBits & (1u << i)) &&
-            (memory_properties_.memoryTypes[i].propertyFlags & flags) == flags) {
-            VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-            info.allocationSize = requirements.size;
-            info.memoryTypeIndex = i;
-            const VkResult r = vkAllocateMemory(device_, &info, nullptr, out);
-            if (r != VK_SUCCESS) *error = vk_error("vkAllocateMemory", r);
-            return r == VK_SUCCESS;
-        }
-    }
-    *error = "no Vulkan memory type fits";
-    return false;
-}
-
 bool VkHost::create_attachment(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                                VkImageAspectFlags aspect, Attachment* out, std::string* error) {
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {target_.width, target_.height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = samples;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = usage;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VkResult r = vkCreateImage(device_, &info, nullptr, &out->image);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateImage", r);
-        return false;
-    }
-    VkMemoryRequirements requirements{};
-    vkGetImageMemoryRequirements(device_, out->image, &requirements);
-    if (!allocate_memory(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &out->memory, error)) return false;
-    r = vkBindImageMemory(device_, out->image, out->memory, 0);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkBindImageMemory", r);
-        return false;
-    }
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = out->image;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view.format = format;
-    view.subresourceRange = {aspect, 0, 1, 0, 1};
-    r = vkCreateImageView(device_, &view, nullptr, &out->view);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateImageView", r);
-        return false;
-    }
-    return true;
-}
-
-void VkHost::destroy_attachment(Attachment* a) {
-    if (a->view) vkDestroyImageView(device_, a->view, nullptr);
-    if (a->image) vkDestroyImage(device_, a->image, nullptr);
-    if (a->memory) vkFreeMemory(device_, a->memory, nullptr);
-    *a = Attachment{};
+    grass_bootstrap::VkImageDesc desc;
+    desc.extent = {target_.width, target_.height};
+    desc.format = format;
+    desc.samples = samples;
+    desc.usage = usage;
+    desc.aspect = aspect;
+    return grass_bootstrap::create_image(device_, memory_properties_, desc, out, error);
 }
 
 bool VkHost::create_target(std::string* error) {
@@ -473,72 +303,32 @@ bool VkHost::create_target(std::string* error) {
         return false;
     }
     // Read-back buffer: host-visible, cached when possible. Colour, then (read_depth) depth.
-    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    info.size = VkDeviceSize(target_.width) * target_.height * (texel_bytes_ + (target_.read_depth ? 4 : 0));
-    info.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VkResult r = vkCreateBuffer(device_, &info, nullptr, &readback_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateBuffer", r);
-        return false;
-    }
-    VkMemoryRequirements requirements{};
-    vkGetBufferMemoryRequirements(device_, readback_, &requirements);
+    const VkDeviceSize size =
+        VkDeviceSize(target_.width) * target_.height * (texel_bytes_ + (target_.read_depth ? 4 : 0));
     std::string ignored;
-    if (allocate_memory(requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                        &readback_memory_, &ignored)) {
+    if (grass_bootstrap::create_buffer(device_, memory_properties_, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                       VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                       &readback_, &ignored)) {
         readback_coherent_ = true;
-    } else if (allocate_memory(requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, &readback_memory_, error)) {
-        readback_coherent_ = false;
-    } else {
-        return false;
+        return true;
     }
-    r = vkBindBufferMemory(device_, readback_, readback_memory_, 0);
-    if (r == VK_SUCCESS) r = vkMapMemory(device_, readback_memory_, 0, VK_WHOLE_SIZE, 0, &readback_mapped_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkBindBufferMemory/vkMapMemory", r);
-        return false;
-    }
-    return true;
+    grass_bootstrap::destroy_buffer(device_, &readback_);
+    readback_coherent_ = false;
+    return grass_bootstrap::create_buffer(device_, memory_properties_, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                          VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT, &readback_, error);
 }
 
 bool VkHost::create_render_pass(std::string* error) {
     if (target_.vk_dynamic_rendering) return true;
-    const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
-    VkAttachmentDescription attachments[3] = {};
-    // 0: colour (multisampled or not). Single-sample: it is the image read back.
-    attachments[0].format = color_format_;
-    attachments[0].samples = samples_;
-    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachments[0].storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    attachments[0].finalLayout = msaa ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    // 1: depth.
-    attachments[1] = attachments[0];
-    attachments[1].format = kDepthFormat;
-    attachments[1].storeOp = target_.read_depth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[1].finalLayout =
+    grass_bootstrap::VkPassDesc pass;
+    pass.color_format = color_format_;
+    pass.depth_format = kDepthFormat;
+    pass.samples = samples_;
+    pass.color_final = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL; // read back
+    pass.keep_depth = target_.read_depth;
+    pass.depth_final =
         target_.read_depth ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    // 2: single-sample resolve target, read back.
-    attachments[2] = attachments[0];
-    attachments[2].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[2].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[2].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[2].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-
-    const VkAttachmentReference color_ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference resolve_ref{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &color_ref;
-    subpass.pResolveAttachments = msaa ? &resolve_ref : nullptr;
-    subpass.pDepthStencilAttachment = &depth_ref;
-
-    VkSubpassDependency dependencies[2] = {};
+    VkSubpassDependency* dependencies = pass.dependencies;
     // The last frame's read-back copy and attachment writes come before this pass writes.
     dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
     dependencies[0].dstSubpass = 0;
@@ -560,28 +350,17 @@ bool VkHost::create_render_pass(std::string* error) {
     dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
     dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
 
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = msaa ? 3 : 2;
-    info.pAttachments = attachments;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 2;
-    info.pDependencies = dependencies;
-    VkResult r = vkCreateRenderPass(device_, &info, nullptr, &render_pass_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateRenderPass", r);
-        return false;
-    }
+    if (!grass_bootstrap::create_render_pass(device_, pass, &render_pass_, error)) return false;
 
     const VkImageView views[3] = {color_.view, depth_.view, resolve_.view};
     VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     fb.renderPass = render_pass_;
-    fb.attachmentCount = info.attachmentCount;
+    fb.attachmentCount = samples_ != VK_SAMPLE_COUNT_1_BIT ? 3 : 2;
     fb.pAttachments = views;
     fb.width = target_.width;
     fb.height = target_.height;
     fb.layers = 1;
-    r = vkCreateFramebuffer(device_, &fb, nullptr, &framebuffer_);
+    const VkResult r = vkCreateFramebuffer(device_, &fb, nullptr, &framebuffer_);
     if (r != VK_SUCCESS) {
         *error = vk_error("vkCreateFramebuffer", r);
         return false;
@@ -590,19 +369,8 @@ bool VkHost::create_render_pass(std::string* error) {
 }
 
 bool VkHost::create_commands(std::string* error) {
-    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pool.queueFamilyIndex = queue_family_;
-    VkResult r = vkCreateCommandPool(device_, &pool, nullptr, &command_pool_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateCommandPool", r);
-        return false;
-    }
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = command_pool_;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    r = vkAllocateCommandBuffers(device_, &alloc, &cmd_);
+    if (!grass_bootstrap::create_command_pool(device_, queue_family_, &command_pool_, error)) return false;
+    VkResult r = grass_bootstrap::allocate_command_buffer(device_, command_pool_, &cmd_);
     if (r != VK_SUCCESS) {
         *error = vk_error("vkAllocateCommandBuffers", r);
         return false;
@@ -624,84 +392,42 @@ VkHost::~VkHost() {
         if (ground_layout_) vkDestroyPipelineLayout(device_, ground_layout_, nullptr);
         if (ground_pool_) vkDestroyDescriptorPool(device_, ground_pool_, nullptr); // frees ground_set_
         if (ground_set_layout_) vkDestroyDescriptorSetLayout(device_, ground_set_layout_, nullptr);
-        if (ground_buffer_) vkDestroyBuffer(device_, ground_buffer_, nullptr);
-        if (ground_memory_) vkFreeMemory(device_, ground_memory_, nullptr);
+        grass_bootstrap::destroy_buffer(device_, &ground_buffer_);
         if (fence_) vkDestroyFence(device_, fence_, nullptr);
         if (command_pool_) vkDestroyCommandPool(device_, command_pool_, nullptr); // frees cmd_
         if (framebuffer_) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
         if (render_pass_) vkDestroyRenderPass(device_, render_pass_, nullptr);
-        if (readback_) vkDestroyBuffer(device_, readback_, nullptr);
-        if (readback_memory_) vkFreeMemory(device_, readback_memory_, nullptr);
-        destroy_attachment(&resolve_);
-        destroy_attachment(&depth_);
-        destroy_attachment(&color_);
+        grass_bootstrap::destroy_buffer(device_, &readback_);
+        grass_bootstrap::destroy_image(device_, &resolve_);
+        grass_bootstrap::destroy_image(device_, &depth_);
+        grass_bootstrap::destroy_image(device_, &color_);
         vkDestroyDevice(device_, nullptr);
     }
-    if (messenger_) {
-        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-        if (destroy) destroy(instance_, messenger_, nullptr);
-    }
-    if (instance_) vkDestroyInstance(instance_, nullptr);
+    instance_.destroy(); // while the validation log is still there
 }
 
 // ---- The host's ground --------------------------------------------------------------------
 
 bool VkHost::create_ground(std::string* error) {
-    VkBufferCreateInfo buffer{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    buffer.size = sizeof(GroundUniforms);
-    buffer.usage = VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
-    buffer.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VkResult r = vkCreateBuffer(device_, &buffer, nullptr, &ground_buffer_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateBuffer", r);
+    if (!grass_bootstrap::create_buffer(
+            device_, memory_properties_, sizeof(GroundUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, &ground_buffer_, error) ||
+        !grass_bootstrap::create_uniform_layouts(device_, &ground_set_layout_, &ground_layout_, error)) {
         return false;
     }
-    VkMemoryRequirements requirements{};
-    vkGetBufferMemoryRequirements(device_, ground_buffer_, &requirements);
-    if (!allocate_memory(requirements, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                         &ground_memory_, error)) {
-        return false;
-    }
-    r = vkBindBufferMemory(device_, ground_buffer_, ground_memory_, 0);
-    if (r == VK_SUCCESS) r = vkMapMemory(device_, ground_memory_, 0, VK_WHOLE_SIZE, 0, &ground_mapped_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkBindBufferMemory/vkMapMemory", r);
-        return false;
-    }
-
-    const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
-                                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo set_layout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_layout.bindingCount = 1;
-    set_layout.pBindings = &binding;
-    r = vkCreateDescriptorSetLayout(device_, &set_layout, nullptr, &ground_set_layout_);
     const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool.maxSets = 1;
     pool.poolSizeCount = 1;
     pool.pPoolSizes = &size;
-    if (r == VK_SUCCESS) r = vkCreateDescriptorPool(device_, &pool, nullptr, &ground_pool_);
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = ground_pool_;
-    alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &ground_set_layout_;
-    if (r == VK_SUCCESS) r = vkAllocateDescriptorSets(device_, &alloc, &ground_set_);
-    VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout.setLayoutCount = 1;
-    layout.pSetLayouts = &ground_set_layout_;
-    if (r == VK_SUCCESS) r = vkCreatePipelineLayout(device_, &layout, nullptr, &ground_layout_);
+    VkResult r = vkCreateDescriptorPool(device_, &pool, nullptr, &ground_pool_);
+    if (r == VK_SUCCESS)
+        r = grass_bootstrap::allocate_descriptor_set(device_, ground_pool_, ground_set_layout_, &ground_set_);
     if (r != VK_SUCCESS) {
         *error = vk_error("creating the ground's descriptors", r);
         return false;
     }
-    const VkDescriptorBufferInfo info{ground_buffer_, 0, sizeof(GroundUniforms)};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = ground_set_;
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    write.pBufferInfo = &info;
-    vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+    grass_bootstrap::write_uniform_descriptor(device_, ground_set_, ground_buffer_.buffer, sizeof(GroundUniforms));
     return create_ground_pipeline(error);
 }
 
@@ -725,7 +451,7 @@ bool VkHost::create_ground_pipeline(std::string* error) {
 // the uniform buffer is free to rewrite).
 void VkHost::draw_ground(VkCommandBuffer cmd, const grass_view_desc& view) {
     const GroundUniforms u = make_ground_uniforms(view, target_);
-    std::memcpy(ground_mapped_, &u, sizeof(u));
+    std::memcpy(ground_buffer_.mapped, &u, sizeof(u));
     const VkViewport viewport{0.0f, 0.0f, float(target_.width), float(target_.height), 0.0f, 1.0f};
     const VkRect2D scissor{{0, 0}, {target_.width, target_.height}};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_pipeline_);
@@ -742,7 +468,7 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     vk.get_instance_proc_addr = target_.vk_get_instance_proc_addr
                                     ? target_.vk_get_instance_proc_addr
                                     : (grass_vk_get_instance_proc_addr_fn)vkGetInstanceProcAddr;
-    vk.instance = instance_;
+    vk.instance = instance_.handle();
     vk.physical_device = physical_device_;
     vk.device = device_;
     vk.queue_family = queue_family_;
@@ -897,19 +623,13 @@ void VkHost::copy_to_readback(VkCommandBuffer cmd) {
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {target_.width, target_.height, 1};
     const VkImage image = samples_ != VK_SAMPLE_COUNT_1_BIT ? resolve_.image : color_.image;
-    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_, 1, &region);
+    vkCmdCopyImageToBuffer(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1, &region);
     if (target_.read_depth) {
         region.bufferOffset = VkDeviceSize(target_.width) * target_.height * texel_bytes_;
         region.imageSubresource.aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
-        vkCmdCopyImageToBuffer(cmd, depth_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_, 1, &region);
+        vkCmdCopyImageToBuffer(cmd, depth_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1, &region);
     }
-    VkBufferMemoryBarrier b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
-    b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.buffer = readback_;
-    b.size = VK_WHOLE_SIZE;
+    const VkBufferMemoryBarrier b = grass_bootstrap::host_read_barrier(readback_.buffer);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0,
                          nullptr);
 }
@@ -972,7 +692,7 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
 
     if (!readback_coherent_) {
         VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
-        range.memory = readback_memory_;
+        range.memory = readback_.memory;
         range.size = VK_WHOLE_SIZE;
         vkInvalidateMappedMemoryRanges(device_, 1, &range);
     }
@@ -980,16 +700,16 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     out->height = target_.height;
     if (target_.float_color) {
         out->rgba_f32.resize(size_t(target_.width) * target_.height * 4);
-        std::memcpy(out->rgba_f32.data(), readback_mapped_, out->rgba_f32.size() * sizeof(float)); // rows top-down
+        std::memcpy(out->rgba_f32.data(), readback_.mapped, out->rgba_f32.size() * sizeof(float)); // rows top-down
         encode_float_image(out);
     } else {
         out->rgba.resize(size_t(target_.width) * target_.height * 4);
-        std::memcpy(out->rgba.data(), readback_mapped_, out->rgba.size()); // Vulkan rows run top-down
+        std::memcpy(out->rgba.data(), readback_.mapped, out->rgba.size()); // Vulkan rows run top-down
     }
     if (target_.read_depth) {
         out->depth.resize(size_t(target_.width) * target_.height); // D32_SFLOAT, top-down
         std::memcpy(out->depth.data(),
-                    static_cast<const uint8_t*>(readback_mapped_) +
+                    static_cast<const uint8_t*>(readback_.mapped) +
                         size_t(target_.width) * target_.height * texel_bytes_,
                     out->depth.size() * sizeof(float));
     }

@@ -1,55 +1,16 @@
 #include "mesh_drawer_gl.hpp"
 
+#include "gl_loader.hpp"
+#include "host_shaders.hpp"
 #include "mesh_draw.hpp"
 
 #include <GL/glcorearb.h>
 
 #include <algorithm>
 
-namespace grass_host_shaders {
-extern const char* const mesh_vert;
-extern const char* const mesh_frag;
-} // namespace grass_host_shaders
-
 namespace grass_host {
 
-#define GRASS_MESH_GL_FUNCTIONS(X)                                 \
-    X(PFNGLCREATESHADERPROC, CreateShader)                         \
-    X(PFNGLSHADERSOURCEPROC, ShaderSource)                         \
-    X(PFNGLCOMPILESHADERPROC, CompileShader)                       \
-    X(PFNGLGETSHADERIVPROC, GetShaderiv)                           \
-    X(PFNGLGETSHADERINFOLOGPROC, GetShaderInfoLog)                 \
-    X(PFNGLDELETESHADERPROC, DeleteShader)                         \
-    X(PFNGLCREATEPROGRAMPROC, CreateProgram)                       \
-    X(PFNGLATTACHSHADERPROC, AttachShader)                         \
-    X(PFNGLLINKPROGRAMPROC, LinkProgram)                           \
-    X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                         \
-    X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)               \
-    X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                       \
-    X(PFNGLUSEPROGRAMPROC, UseProgram)                             \
-    X(PFNGLCREATEBUFFERSPROC, CreateBuffers)                       \
-    X(PFNGLNAMEDBUFFERSTORAGEPROC, NamedBufferStorage)             \
-    X(PFNGLNAMEDBUFFERSUBDATAPROC, NamedBufferSubData)             \
-    X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                       \
-    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                     \
-    X(PFNGLCREATEVERTEXARRAYSPROC, CreateVertexArrays)             \
-    X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)             \
-    X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                   \
-    X(PFNGLVERTEXARRAYVERTEXBUFFERPROC, VertexArrayVertexBuffer)   \
-    X(PFNGLVERTEXARRAYELEMENTBUFFERPROC, VertexArrayElementBuffer) \
-    X(PFNGLENABLEVERTEXARRAYATTRIBPROC, EnableVertexArrayAttrib)   \
-    X(PFNGLVERTEXARRAYATTRIBFORMATPROC, VertexArrayAttribFormat)   \
-    X(PFNGLVERTEXARRAYATTRIBBINDINGPROC, VertexArrayAttribBinding) \
-    X(PFNGLDRAWELEMENTSBASEVERTEXPROC, DrawElementsBaseVertex)     \
-    X(PFNGLENABLEPROC, Enable)                                     \
-    X(PFNGLDISABLEPROC, Disable)                                   \
-    X(PFNGLDEPTHFUNCPROC, DepthFunc)                               \
-    X(PFNGLDEPTHMASKPROC, DepthMask)
-
-struct GlMeshDrawer::Impl {
-#define GRASS_MESH_GL_DECLARE(type, name) type name = nullptr;
-    GRASS_MESH_GL_FUNCTIONS(GRASS_MESH_GL_DECLARE)
-#undef GRASS_MESH_GL_DECLARE
+struct GlMeshDrawer::Impl : grass_bootstrap::GlFunctions {
     GLuint program = 0, vao = 0, geometry = 0, uniforms = 0;
     struct Range {
         const HostMesh* mesh;
@@ -59,40 +20,6 @@ struct GlMeshDrawer::Impl {
     std::vector<HostMesh> meshes;
     std::vector<Range> ranges;
     size_t index_offset = 0; // bytes: where the indices begin in `geometry`
-
-    GLuint compile(std::string* error) {
-        const char* sources[2] = {grass_host_shaders::mesh_vert, grass_host_shaders::mesh_frag};
-        const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
-        const GLuint p = CreateProgram();
-        for (int k = 0; k < 2; ++k) {
-            const GLuint shader = CreateShader(stages[k]);
-            ShaderSource(shader, 1, &sources[k], nullptr);
-            CompileShader(shader);
-            GLint ok = 0;
-            GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-            if (!ok) {
-                char log[1024] = {0};
-                GetShaderInfoLog(shader, sizeof(log), nullptr, log);
-                *error = std::string("mesh shader: ") + log;
-                DeleteShader(shader);
-                DeleteProgram(p);
-                return 0;
-            }
-            AttachShader(p, shader);
-            DeleteShader(shader);
-        }
-        LinkProgram(p);
-        GLint linked = 0;
-        GetProgramiv(p, GL_LINK_STATUS, &linked);
-        if (!linked) {
-            char log[1024] = {0};
-            GetProgramInfoLog(p, sizeof(log), nullptr, log);
-            *error = std::string("mesh program: ") + log;
-            DeleteProgram(p);
-            return 0;
-        }
-        return p;
-    }
 };
 
 GlMeshDrawer::GlMeshDrawer() : impl_(std::make_unique<Impl>()) {}
@@ -110,15 +37,9 @@ bool GlMeshDrawer::init(ProcLoader loader, void* user_data, const std::vector<Ho
     std::string ignored;
     std::string* e = error ? error : &ignored;
     Impl& g = *impl_;
-#define GRASS_MESH_GL_LOAD(type, name)                              \
-    g.name = reinterpret_cast<type>(loader(user_data, "gl" #name)); \
-    if (!g.name) {                                                  \
-        *e = "the GL loader has no gl" #name;                       \
-        return false;                                               \
-    }
-    GRASS_MESH_GL_FUNCTIONS(GRASS_MESH_GL_LOAD)
-#undef GRASS_MESH_GL_LOAD
-    g.program = g.compile(e);
+    if (!g.load(loader, user_data, e)) return false;
+    g.program =
+        grass_bootstrap::compile_program(g, grass_host_shaders::mesh_vert, grass_host_shaders::mesh_frag, "mesh", e);
     if (!g.program) return false;
 
     // One buffer: every mesh's vertices, then every mesh's indices.

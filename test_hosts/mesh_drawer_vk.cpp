@@ -1,26 +1,15 @@
 #include "mesh_drawer_vk.hpp"
 
+#include "host_shaders.hpp"
 #include "mesh_draw.hpp"
+#include "vk_bootstrap.hpp"
 
 #include <cstdio>
 #include <cstring>
 
-namespace grass_host_spirv {
-extern const uint32_t mesh_vert[];
-extern const uint32_t mesh_vert_size; // bytes
-extern const uint32_t mesh_frag[];
-extern const uint32_t mesh_frag_size;
-} // namespace grass_host_spirv
-
 namespace grass_host {
 
-namespace {
-std::string vk_failure(const char* what, VkResult r) {
-    char text[160];
-    std::snprintf(text, sizeof(text), "%s failed with VkResult %d", what, static_cast<int>(r));
-    return text;
-}
-} // namespace
+using grass_bootstrap::vk_error;
 
 VkResult create_host_pipeline(VkDevice device, const VkHostPipelineDesc& desc, VkPipeline* out) {
     VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
@@ -114,40 +103,17 @@ bool VkMeshDrawer::init(VkPhysicalDevice physical_device, VkDevice device, const
         index_count += m.indices.size();
     }
     index_offset_ = vertex_bytes;
-    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    info.size = vertex_bytes + index_count * sizeof(uint32_t);
-    if (info.size == 0) info.size = 4;
-    info.usage = VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VkResult r = vkCreateBuffer(device_, &info, nullptr, &buffer_);
-    if (r != VK_SUCCESS) {
-        *e = vk_failure("vkCreateBuffer (host meshes)", r);
-        return false;
-    }
-    VkMemoryRequirements req{};
-    vkGetBufferMemoryRequirements(device_, buffer_, &req);
     VkPhysicalDeviceMemoryProperties props{};
     vkGetPhysicalDeviceMemoryProperties(physical_device, &props);
-    const VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    uint32_t type = UINT32_MAX;
-    for (uint32_t i = 0; i < props.memoryTypeCount && type == UINT32_MAX; ++i) {
-        if ((req.memoryTypeBits & (1u << i)) && (props.memoryTypes[i].propertyFlags & want) == want) type = i;
-    }
-    if (type == UINT32_MAX) {
-        *e = "no host-visible coherent Vulkan memory for the host meshes";
-        return false;
-    }
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = type;
-    r = vkAllocateMemory(device_, &alloc, nullptr, &memory_);
-    void* mapped = nullptr;
-    if (r == VK_SUCCESS) r = vkBindBufferMemory(device_, buffer_, memory_, 0);
-    if (r == VK_SUCCESS) r = vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped);
-    if (r != VK_SUCCESS) {
-        *e = vk_failure("allocating the host meshes' memory", r);
-        return false;
-    }
+    const VkDeviceSize size = vertex_bytes + index_count * sizeof(uint32_t);
+    grass_bootstrap::VkBufferParts geometry;
+    const bool made = grass_bootstrap::create_buffer(
+        device_, props, size ? size : 4, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, &geometry, e);
+    buffer_ = geometry.buffer;
+    memory_ = geometry.memory;
+    if (!made) return false;
+    void* mapped = geometry.mapped;
     auto* bytes = static_cast<unsigned char*>(mapped);
     VkDeviceSize v = 0, i = index_offset_;
     for (const HostMesh& m : meshes_) {
@@ -162,9 +128,9 @@ bool VkMeshDrawer::init(VkPhysicalDevice physical_device, VkDevice device, const
     VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout.pushConstantRangeCount = 1;
     layout.pPushConstantRanges = &push;
-    r = vkCreatePipelineLayout(device_, &layout, nullptr, &layout_);
+    VkResult r = vkCreatePipelineLayout(device_, &layout, nullptr, &layout_);
     if (r != VK_SUCCESS) {
-        *e = vk_failure("vkCreatePipelineLayout (host meshes)", r);
+        *e = vk_error("vkCreatePipelineLayout (host meshes)", r);
         return false;
     }
     const VkVertexInputBindingDescription binding{0, HostMesh::kFloatsPerVertex * sizeof(float),
@@ -186,7 +152,7 @@ bool VkMeshDrawer::init(VkPhysicalDevice physical_device, VkDevice device, const
     pd.target = target_;
     r = create_host_pipeline(device_, pd, &pipeline_);
     if (r != VK_SUCCESS) {
-        *e = vk_failure("creating the host meshes' pipeline", r);
+        *e = vk_error("creating the host meshes' pipeline", r);
         return false;
     }
     return true;

@@ -2,13 +2,15 @@
 // its own sRGB framebuffer (multisampled when asked, resolved like the headless GL host),
 // copies it to the window's framebuffer, draws the overlay there, reads it back for a
 // screenshot and swaps. grass loads its GL entry points through glfwGetProcAddress.
+#include "gl_loader.hpp"
+#include "gl_target.hpp"
 #include "ground.hpp"
+#include "host_shaders.hpp"
 #include "mesh_drawer_gl.hpp"
 #include "window.hpp"
 
 #include <grass/grass_gl.h>
 
-#define GL_GLEXT_PROTOTYPES 1
 #include <GL/glcorearb.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -20,11 +22,6 @@
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
-
-namespace grass_host_shaders {
-extern const char* const ground_vert;
-extern const char* const ground_frag;
-} // namespace grass_host_shaders
 
 namespace grass_viewer {
 
@@ -56,18 +53,18 @@ private:
     static void APIENTRY on_debug(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                                   const GLchar* message, const void* user);
 
+    grass_bootstrap::GlFunctions gl_; // the host's GL calls, loaded through GLFW
     std::string device_name_;
     bool imgui_ = false;
-    GLuint draw_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0; // multisampled when samples_ > 1
-    GLuint resolve_fbo_ = 0, resolve_rb_ = 0;           // only when multisampled
-    uint32_t target_width_ = 0, target_height_ = 0;     // the size they were made
+    grass_bootstrap::GlRenderTarget fb_;            // the scene's: multisampled when samples_ > 1
+    uint32_t target_width_ = 0, target_height_ = 0; // the size they were made
     GLuint ground_program_ = 0, ground_buffer_ = 0, ground_vao_ = 0;
     std::unique_ptr<grass_host::GlMeshDrawer> meshes_; // the scene's host meshes (glTF)
 };
 
 // Loaders return function pointers, as grass_gl_get_proc_address_fn does.
 grass_gl_proc load_gl(void*, const char* name) { return glfwGetProcAddress(name); }
-// The mesh drawer's loader returns them as void*.
+// The mesh drawer's and the host's table's loader returns them as void*.
 void* load_gl_for_meshes(void*, const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
 
 bool GlWindow::init(std::string* error) {
@@ -81,19 +78,13 @@ bool GlWindow::init(std::string* error) {
     if (!open("grass-viewer (GL 4.5)", error)) return false;
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(desc_.vsync ? 1 : 0);
-    GLint major = 0, minor = 0;
-    glGetIntegerv(GL_MAJOR_VERSION, &major);
-    glGetIntegerv(GL_MINOR_VERSION, &minor);
-    if (major < 4 || (major == 4 && minor < 5)) {
-        *error = "the GL context is " + std::to_string(major) + "." + std::to_string(minor) + "; 4.5 is required";
-        return false;
-    }
-    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    device_name_ = renderer ? renderer : "unknown GL renderer";
-    glDebugMessageCallback(&GlWindow::on_debug, desc_.validation_log);
-    glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
-    glEnable(GL_DEBUG_OUTPUT);
-    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    if (!gl_.load(&load_gl_for_meshes, nullptr, error)) return false;
+    if (!grass_bootstrap::require_gl45(gl_, error)) return false;
+    device_name_ = grass_bootstrap::gl_renderer(gl_);
+    gl_.DebugMessageCallback(&GlWindow::on_debug, desc_.validation_log);
+    gl_.DebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
+    gl_.Enable(GL_DEBUG_OUTPUT);
+    gl_.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     if (!create_target(error) || !create_ground(error)) return false;
     if (!desc_.scene.meshes.empty()) {
         meshes_ = std::make_unique<grass_host::GlMeshDrawer>();
@@ -114,12 +105,13 @@ GlWindow::~GlWindow() {
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
     }
+    if (!gl_.loaded()) return;
     destroy_target();
     meshes_.reset(); // while the context is current
-    if (ground_program_) glDeleteProgram(ground_program_);
-    if (ground_buffer_) glDeleteBuffers(1, &ground_buffer_);
-    if (ground_vao_) glDeleteVertexArrays(1, &ground_vao_);
-    glDebugMessageCallback(nullptr, nullptr);
+    if (ground_program_) gl_.DeleteProgram(ground_program_);
+    if (ground_buffer_) gl_.DeleteBuffers(1, &ground_buffer_);
+    if (ground_vao_) gl_.DeleteVertexArrays(1, &ground_vao_);
+    gl_.DebugMessageCallback(nullptr, nullptr);
 }
 
 void APIENTRY GlWindow::on_debug(GLenum, GLenum type, GLuint id, GLenum, GLsizei length, const GLchar* message,
@@ -142,32 +134,11 @@ bool GlWindow::create_target(std::string* error) {
     const GLsizei samples = samples_ > 1 ? GLsizei(samples_) : 0;
     target_width_ = uint32_t(w);
     target_height_ = uint32_t(h);
-    glCreateRenderbuffers(1, &color_rb_);
-    glNamedRenderbufferStorageMultisample(color_rb_, samples, GL_SRGB8_ALPHA8, w, h);
-    glCreateRenderbuffers(1, &depth_rb_);
-    glNamedRenderbufferStorageMultisample(depth_rb_, samples, GL_DEPTH_COMPONENT32F, w, h);
-    glCreateFramebuffers(1, &draw_fbo_);
-    glNamedFramebufferRenderbuffer(draw_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_rb_);
-    glNamedFramebufferRenderbuffer(draw_fbo_, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_rb_);
-    bool complete = glCheckNamedFramebufferStatus(draw_fbo_, GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-    if (samples > 0) {
-        glCreateRenderbuffers(1, &resolve_rb_);
-        glNamedRenderbufferStorageMultisample(resolve_rb_, 0, GL_SRGB8_ALPHA8, w, h);
-        glCreateFramebuffers(1, &resolve_fbo_);
-        glNamedFramebufferRenderbuffer(resolve_fbo_, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_rb_);
-        complete = complete && glCheckNamedFramebufferStatus(resolve_fbo_, GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-    }
-    if (!complete) *error = "the viewer's " + std::to_string(samples_) + "-sample framebuffer is incomplete";
-    return complete;
+    const std::string label = "the viewer's " + std::to_string(samples_) + "-sample";
+    return grass_bootstrap::create_render_target(gl_, w, h, samples, GL_SRGB8_ALPHA8, label.c_str(), &fb_, error);
 }
 
-void GlWindow::destroy_target() {
-    const GLuint framebuffers[] = {draw_fbo_, resolve_fbo_};
-    const GLuint renderbuffers[] = {color_rb_, depth_rb_, resolve_rb_};
-    glDeleteFramebuffers(2, framebuffers); // zero names are ignored
-    glDeleteRenderbuffers(3, renderbuffers);
-    draw_fbo_ = resolve_fbo_ = color_rb_ = depth_rb_ = resolve_rb_ = 0;
-}
+void GlWindow::destroy_target() { grass_bootstrap::destroy_render_target(gl_, &fb_); }
 
 bool GlWindow::set_samples(uint32_t samples, bool* contexts_stale, std::string* error) {
     *contexts_stale = false; // a GL grass context draws into any bound framebuffer
@@ -184,43 +155,27 @@ bool GlWindow::set_samples(uint32_t samples, bool* contexts_stale, std::string* 
 
 // The headless hosts' ground (test_hosts/shaders/ground.*), compiled for GL.
 bool GlWindow::create_ground(std::string* error) {
-    const char* sources[2] = {grass_host_shaders::ground_vert, grass_host_shaders::ground_frag};
-    const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
-    ground_program_ = glCreateProgram();
-    for (int k = 0; k < 2; ++k) {
-        const GLuint shader = glCreateShader(stages[k]);
-        glShaderSource(shader, 1, &sources[k], nullptr);
-        glCompileShader(shader);
-        glAttachShader(ground_program_, shader);
-        glDeleteShader(shader);
-    }
-    glLinkProgram(ground_program_);
-    GLint linked = 0;
-    glGetProgramiv(ground_program_, GL_LINK_STATUS, &linked);
-    if (!linked) {
-        char log[1024] = {0};
-        glGetProgramInfoLog(ground_program_, sizeof(log), nullptr, log);
-        *error = std::string("the ground's program: ") + log;
-        return false;
-    }
-    glCreateBuffers(1, &ground_buffer_);
-    glNamedBufferData(ground_buffer_, sizeof(grass_host::GroundUniforms), nullptr, GL_DYNAMIC_DRAW);
-    glCreateVertexArrays(1, &ground_vao_);
+    ground_program_ = grass_bootstrap::compile_program(gl_, grass_host_shaders::ground_vert,
+                                                       grass_host_shaders::ground_frag, "the ground's", error);
+    if (!ground_program_) return false;
+    gl_.CreateBuffers(1, &ground_buffer_);
+    gl_.NamedBufferData(ground_buffer_, sizeof(grass_host::GroundUniforms), nullptr, GL_DYNAMIC_DRAW);
+    gl_.CreateVertexArrays(1, &ground_vao_);
     return true;
 }
 
 void GlWindow::draw_ground(const grass_view_desc& view) {
     const grass_host::GroundUniforms u = grass_host::make_ground_uniforms(view, desc_.scene);
-    glNamedBufferData(ground_buffer_, sizeof(u), &u, GL_DYNAMIC_DRAW);
-    glUseProgram(ground_program_);
-    glBindVertexArray(ground_vao_);
-    glBindBufferBase(GL_UNIFORM_BUFFER, 0, ground_buffer_);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDrawArrays(GL_TRIANGLES, 0, 6);
-    glDisable(GL_DEPTH_TEST);
-    glBindVertexArray(0);
-    glUseProgram(0);
+    gl_.NamedBufferData(ground_buffer_, sizeof(u), &u, GL_DYNAMIC_DRAW);
+    gl_.UseProgram(ground_program_);
+    gl_.BindVertexArray(ground_vao_);
+    gl_.BindBufferBase(GL_UNIFORM_BUFFER, 0, ground_buffer_);
+    gl_.Enable(GL_DEPTH_TEST);
+    gl_.DepthFunc(GL_LESS);
+    gl_.DrawArrays(GL_TRIANGLES, 0, 6);
+    gl_.Disable(GL_DEPTH_TEST);
+    gl_.BindVertexArray(0);
+    gl_.UseProgram(0);
 }
 
 grass_result GlWindow::draw_frame(grass_context* ctx, const grass_view_desc& view, ImDrawData* overlay,
@@ -234,14 +189,14 @@ grass_result GlWindow::draw_frame(grass_context* ctx, const grass_view_desc& vie
         return GRASS_SUCCESS;
     }
     const GLint w = GLint(width_), h = GLint(height_);
-    glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
-    glEnable(GL_FRAMEBUFFER_SRGB); // linear shader output and clear colours are sRGB-encoded
-    glViewport(0, 0, w, h);
-    glDepthMask(GL_TRUE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, fb_.draw_fbo);
+    gl_.Enable(GL_FRAMEBUFFER_SRGB); // linear shader output and clear colours are sRGB-encoded
+    gl_.Viewport(0, 0, w, h);
+    gl_.DepthMask(GL_TRUE);
+    gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     const float depth = 1.0f;
-    glClearBufferfv(GL_COLOR, 0, desc_.scene.clear_color);
-    glClearBufferfv(GL_DEPTH, 0, &depth);
+    gl_.ClearBufferfv(GL_COLOR, 0, desc_.scene.clear_color);
+    gl_.ClearBufferfv(GL_DEPTH, 0, &depth);
     if (desc_.scene.ground) draw_ground(view);
     if (meshes_) meshes_->draw(view, false, false); // into the depth grass shares
     grass_result result = grass_begin_frame(ctx, &view);
@@ -252,17 +207,18 @@ grass_result GlWindow::draw_frame(grass_context* ctx, const grass_view_desc& vie
     }
     // Resolve as the headless host does (sRGB conversion on), then copy the stored bytes to
     // the window's framebuffer unconverted.
-    GLuint source = draw_fbo_;
-    if (resolve_fbo_) {
-        glBlitNamedFramebuffer(draw_fbo_, resolve_fbo_, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        source = resolve_fbo_;
+    GLuint source = fb_.draw_fbo;
+    if (fb_.resolve_fbo) {
+        gl_.BlitNamedFramebuffer(fb_.draw_fbo, fb_.resolve_fbo, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
+                                 GL_NEAREST);
+        source = fb_.resolve_fbo;
     }
-    glDisable(GL_FRAMEBUFFER_SRGB);
+    gl_.Disable(GL_FRAMEBUFFER_SRGB);
     // A viewport set on the window's framebuffer: Mesa's software GLX resizes the window's
     // buffers only then (without it, the frames after a resize went to stale, black buffers).
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, w, h);
-    glBlitNamedFramebuffer(source, 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl_.Viewport(0, 0, w, h);
+    gl_.BlitNamedFramebuffer(source, 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     if (overlay) ImGui_ImplOpenGL3_RenderDrawData(overlay);
     if (screenshot) read_back(screenshot);
     glfwSwapBuffers(window_);
@@ -274,10 +230,10 @@ grass_result GlWindow::draw_frame(grass_context* ctx, const grass_view_desc& vie
 void GlWindow::read_back(grass_host::Image* out) {
     const size_t row = size_t(width_) * 4;
     std::vector<uint8_t> rows(row * height_);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    glReadBuffer(GL_BACK);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, GLsizei(width_), GLsizei(height_), GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    gl_.ReadBuffer(GL_BACK);
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_.ReadPixels(0, 0, GLsizei(width_), GLsizei(height_), GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
     out->width = width_;
     out->height = height_;
     out->rgba.resize(rows.size());

@@ -5,7 +5,9 @@
 // grass_vk_prepare / grass_vk_record in that pass, after the host's ground and meshes
 // and before the overlay; a screenshot copies the swapchain image before it is presented.
 #include "ground.hpp"
+#include "host_shaders.hpp"
 #include "mesh_drawer_vk.hpp"
+#include "vk_bootstrap.hpp"
 #include "window.hpp"
 
 #include <grass/grass_vk.h>
@@ -26,37 +28,16 @@
 #include <memory>
 #include <vector>
 
-namespace grass_host_spirv {
-extern const uint32_t ground_vert[];
-extern const uint32_t ground_vert_size; // bytes
-extern const uint32_t ground_frag[];
-extern const uint32_t ground_frag_size;
-} // namespace grass_host_spirv
-
 namespace grass_viewer {
 
 namespace {
 
 constexpr uint32_t kFramesInFlight = 2;
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
-std::string vk_error(const char* call, VkResult r) {
-    return std::string(call) + " failed with VkResult " + std::to_string(int(r));
-}
-
-struct Image {
-    VkImage image = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
-};
-
-struct Buffer {
-    VkBuffer buffer = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    void* mapped = nullptr;
-    VkDeviceSize size = 0;
-};
+using grass_bootstrap::vk_error;
+using Image = grass_bootstrap::VkImageParts;
+using Buffer = grass_bootstrap::VkBufferParts; // host-visible, coherent, mapped
 
 // What one frame in flight owns.
 struct Frame {
@@ -106,17 +87,13 @@ private:
     void destroy_image(Image* image);
     bool create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, Buffer* out, std::string* error);
     void destroy_buffer(Buffer* buffer);
-    bool memory_type(uint32_t bits, VkMemoryPropertyFlags flags, uint32_t* out) const;
     bool submit_once(void (*record)(VkCommandBuffer), std::string* error);
     void record_copy(VkCommandBuffer cmd, uint32_t image_index);
     void read_copy(grass_host::Image* out) const;
-    static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                     VkDebugUtilsMessageTypeFlagsEXT types,
-                                                     const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+    static void on_message(void* log, const std::string& line) { static_cast<ValidationLog*>(log)->add(line); }
 
-    VkInstance instance_ = VK_NULL_HANDLE;
-    uint32_t api_version_ = VK_API_VERSION_1_1;
-    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    grass_bootstrap::VkMessageSink sink_{&VkWindow::on_message, desc_.validation_log};
+    grass_bootstrap::VkBootInstance instance_;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkPhysicalDeviceProperties properties_{};
@@ -151,15 +128,6 @@ private:
     Buffer readback_;
 };
 
-VKAPI_ATTR VkBool32 VKAPI_CALL VkWindow::on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                                    VkDebugUtilsMessageTypeFlagsEXT,
-                                                    const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
-    static_cast<ValidationLog*>(user)->add(
-        std::string(severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "[error] " : "[warning] ") +
-        (data && data->pMessage ? data->pMessage : "(no message)"));
-    return VK_FALSE;
-}
-
 // ---- Creation ------------------------------------------------------------------------------
 
 bool VkWindow::init(std::string* error) {
@@ -169,7 +137,7 @@ bool VkWindow::init(std::string* error) {
     }
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     if (!open("grass-viewer (Vulkan)", error) || !create_instance(error)) return false;
-    VkResult r = glfwCreateWindowSurface(instance_, window_, nullptr, &surface_);
+    VkResult r = glfwCreateWindowSurface(instance_.handle(), window_, nullptr, &surface_);
     if (r != VK_SUCCESS) {
         *error = vk_error("glfwCreateWindowSurface", r);
         return false;
@@ -179,72 +147,25 @@ bool VkWindow::init(std::string* error) {
            create_meshes(error) && start_overlay(error);
 }
 
+// Validation layers on when installed and asked for.
 bool VkWindow::create_instance(std::string* error) {
-    uint32_t loader = VK_API_VERSION_1_0;
-    vkEnumerateInstanceVersion(&loader);
-    api_version_ = loader >= VK_API_VERSION_1_3 ? VK_API_VERSION_1_3 : VK_API_VERSION_1_1;
     uint32_t count = 0;
     const char** glfw_extensions = glfwGetRequiredInstanceExtensions(&count);
-    std::vector<const char*> extensions(glfw_extensions, glfw_extensions + count);
-    std::vector<VkLayerProperties> layers;
-    vkEnumerateInstanceLayerProperties(&count, nullptr);
-    layers.resize(count);
-    vkEnumerateInstanceLayerProperties(&count, layers.data());
-    bool validation = false;
-    for (const VkLayerProperties& l : layers)
-        validation |= desc_.validation && !std::strcmp(l.layerName, kValidationLayer);
-    if (validation) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-
-    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-    app.pApplicationName = "grass-viewer";
-    app.pEngineName = "grass";
-    app.apiVersion = api_version_;
-    VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-    messenger.messageSeverity =
-        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-    messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                            VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                            VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-    messenger.pfnUserCallback = &VkWindow::on_message;
-    messenger.pUserData = desc_.validation_log;
-    VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    info.pNext = validation ? &messenger : nullptr;
-    info.pApplicationInfo = &app;
-    info.enabledLayerCount = validation ? 1 : 0;
-    info.ppEnabledLayerNames = &kValidationLayer;
-    info.enabledExtensionCount = uint32_t(extensions.size());
-    info.ppEnabledExtensionNames = extensions.data();
-    VkResult r = vkCreateInstance(&info, nullptr, &instance_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateInstance", r);
-        return false;
-    }
-    if (validation) {
-        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        r = create ? create(instance_, &messenger, nullptr, &messenger_) : VK_ERROR_EXTENSION_NOT_PRESENT;
-        if (r != VK_SUCCESS) {
-            *error = vk_error("vkCreateDebugUtilsMessengerEXT", r);
-            return false;
-        }
-    }
-    return true;
+    grass_bootstrap::VkInstanceDesc desc;
+    desc.application = "grass-viewer";
+    desc.validation = desc_.validation;
+    desc.extensions.assign(glfw_extensions, glfw_extensions + count);
+    desc.sink = &sink_;
+    return instance_.create(desc, error);
 }
 
 // The first device with a queue family that draws and presents to the window.
 bool VkWindow::pick_device(std::string* error) {
-    uint32_t count = 0;
-    vkEnumeratePhysicalDevices(instance_, &count, nullptr);
-    std::vector<VkPhysicalDevice> devices(count);
-    vkEnumeratePhysicalDevices(instance_, &count, devices.data());
-    for (VkPhysicalDevice d : devices) {
+    for (VkPhysicalDevice d : grass_bootstrap::physical_devices(instance_.handle())) {
         vkGetPhysicalDeviceProperties(d, &properties_);
         if (properties_.apiVersion < VK_API_VERSION_1_1) continue;
-        uint32_t n = 0;
-        vkGetPhysicalDeviceQueueFamilyProperties(d, &n, nullptr);
-        std::vector<VkQueueFamilyProperties> families(n);
-        vkGetPhysicalDeviceQueueFamilyProperties(d, &n, families.data());
-        for (uint32_t i = 0; i < n; ++i) {
+        const std::vector<VkQueueFamilyProperties> families = grass_bootstrap::queue_families(d);
+        for (uint32_t i = 0; i < families.size(); ++i) {
             VkBool32 present = VK_FALSE;
             vkGetPhysicalDeviceSurfaceSupportKHR(d, i, surface_, &present);
             if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && present) {
@@ -260,42 +181,14 @@ bool VkWindow::pick_device(std::string* error) {
 }
 
 bool VkWindow::create_device(std::string* error) {
-    const float priority = 1.0f;
-    VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    queue.queueFamilyIndex = family_;
-    queue.queueCount = 1;
-    queue.pQueuePriorities = &priority;
-    const char* extensions[] = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
-    VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    info.queueCreateInfoCount = 1;
-    info.pQueueCreateInfos = &queue;
-    info.enabledExtensionCount = 1;
-    info.ppEnabledExtensionNames = extensions;
-    VkResult r = vkCreateDevice(physical_, &info, nullptr, &device_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateDevice", r);
-        return false;
-    }
-    vkGetDeviceQueue(device_, family_, 0, &queue_);
-    VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pool.queueFamilyIndex = family_;
-    r = vkCreateCommandPool(device_, &pool, nullptr, &pool_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateCommandPool", r);
-        return false;
-    }
-    return true;
+    return grass_bootstrap::create_device(physical_, family_, {VK_KHR_SWAPCHAIN_EXTENSION_NAME}, nullptr, &device_,
+                                          &queue_, error) &&
+           grass_bootstrap::create_command_pool(device_, family_, &pool_, error);
 }
 
 // Per frame in flight: a command buffer, its fence and semaphore, the ground's uniforms.
 bool VkWindow::create_frames(std::string* error) {
-    const VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
-                                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo set_layout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    set_layout.bindingCount = 1;
-    set_layout.pBindings = &binding;
-    VkResult r = vkCreateDescriptorSetLayout(device_, &set_layout, nullptr, &ground_set_layout_);
+    if (!grass_bootstrap::create_uniform_layouts(device_, &ground_set_layout_, &ground_layout_, error)) return false;
     const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFramesInFlight},
                                            {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -303,38 +196,23 @@ bool VkWindow::create_frames(std::string* error) {
     pool.maxSets = kFramesInFlight + 1;
     pool.poolSizeCount = 2;
     pool.pPoolSizes = sizes;
-    if (r == VK_SUCCESS) r = vkCreateDescriptorPool(device_, &pool, nullptr, &descriptor_pool_);
-    VkPipelineLayoutCreateInfo layout{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    layout.setLayoutCount = 1;
-    layout.pSetLayouts = &ground_set_layout_;
-    if (r == VK_SUCCESS) r = vkCreatePipelineLayout(device_, &layout, nullptr, &ground_layout_);
+    VkResult r = vkCreateDescriptorPool(device_, &pool, nullptr, &descriptor_pool_);
     for (Frame& f : frames_) {
-        VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-        alloc.commandPool = pool_;
-        alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        alloc.commandBufferCount = 1;
-        if (r == VK_SUCCESS) r = vkAllocateCommandBuffers(device_, &alloc, &f.cmd);
+        if (r == VK_SUCCESS) r = grass_bootstrap::allocate_command_buffer(device_, pool_, &f.cmd);
         VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
         fence.flags = VK_FENCE_CREATE_SIGNALED_BIT;
         if (r == VK_SUCCESS) r = vkCreateFence(device_, &fence, nullptr, &f.done);
         VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
         if (r == VK_SUCCESS) r = vkCreateSemaphore(device_, &semaphore, nullptr, &f.acquired);
-        VkDescriptorSetAllocateInfo set{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-        set.descriptorPool = descriptor_pool_;
-        set.descriptorSetCount = 1;
-        set.pSetLayouts = &ground_set_layout_;
-        if (r == VK_SUCCESS) r = vkAllocateDescriptorSets(device_, &set, &f.ground_set);
+        if (r == VK_SUCCESS) {
+            r = grass_bootstrap::allocate_descriptor_set(device_, descriptor_pool_, ground_set_layout_, &f.ground_set);
+        }
         if (r != VK_SUCCESS) break;
         if (!create_buffer(sizeof(grass_host::GroundUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, &f.ground, error)) {
             return false;
         }
-        const VkDescriptorBufferInfo buffer{f.ground.buffer, 0, sizeof(grass_host::GroundUniforms)};
-        VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        write.dstSet = f.ground_set;
-        write.descriptorCount = 1;
-        write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-        write.pBufferInfo = &buffer;
-        vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+        grass_bootstrap::write_uniform_descriptor(device_, f.ground_set, f.ground.buffer,
+                                                  sizeof(grass_host::GroundUniforms));
     }
     if (r != VK_SUCCESS) *error = vk_error("creating the frames in flight", r);
     return r == VK_SUCCESS;
@@ -430,36 +308,12 @@ void VkWindow::destroy_swapchain() {
 // Colour (the swapchain image, or a multisampled image resolved into it) and depth; the
 // swapchain image ends ready to present.
 bool VkWindow::create_render_pass(std::string* error) {
-    const bool msaa = samples_ > 1;
-    const auto samples = static_cast<VkSampleCountFlagBits>(samples_);
-    VkAttachmentDescription attachments[3] = {};
-    attachments[0].format = format_.format;
-    attachments[0].samples = samples;
-    attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    attachments[0].storeOp = msaa ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    attachments[0].finalLayout = msaa ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    attachments[1] = attachments[0];
-    attachments[1].format = kDepthFormat;
-    attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    attachments[2] = attachments[0];
-    attachments[2].samples = VK_SAMPLE_COUNT_1_BIT;
-    attachments[2].loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    attachments[2].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    attachments[2].finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    const VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference resolve{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &color;
-    subpass.pResolveAttachments = msaa ? &resolve : nullptr;
-    subpass.pDepthStencilAttachment = &depth;
-    VkSubpassDependency dependencies[2] = {};
+    grass_bootstrap::VkPassDesc pass;
+    pass.color_format = format_.format;
+    pass.depth_format = kDepthFormat;
+    pass.samples = static_cast<VkSampleCountFlagBits>(samples_);
+    pass.color_final = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    VkSubpassDependency* dependencies = pass.dependencies;
     // The acquired image and the last frame's depth are free before this pass writes them.
     dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
     dependencies[0].dstSubpass = 0;
@@ -479,16 +333,7 @@ bool VkWindow::create_render_pass(std::string* error) {
     dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
     dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
     dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = msaa ? 3 : 2;
-    info.pAttachments = attachments;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 2;
-    info.pDependencies = dependencies;
-    const VkResult r = vkCreateRenderPass(device_, &info, nullptr, &render_pass_);
-    if (r != VK_SUCCESS) *error = vk_error("vkCreateRenderPass", r);
-    return r == VK_SUCCESS;
+    return grass_bootstrap::create_render_pass(device_, pass, &render_pass_, error);
 }
 
 bool VkWindow::create_targets(std::string* error) {
@@ -554,7 +399,7 @@ void check_overlay_result(VkResult r) {
 bool VkWindow::start_overlay(std::string* error) {
     if (!overlay_glfw_) overlay_glfw_ = ImGui_ImplGlfw_InitForVulkan(window_, true);
     ImGui_ImplVulkan_InitInfo info{};
-    info.Instance = instance_;
+    info.Instance = instance_.handle();
     info.PhysicalDevice = physical_;
     info.Device = device_;
     info.QueueFamily = family_;
@@ -599,81 +444,27 @@ bool VkWindow::submit_once(void (*record)(VkCommandBuffer), std::string* error) 
     return r == VK_SUCCESS;
 }
 
-bool VkWindow::memory_type(uint32_t bits, VkMemoryPropertyFlags flags, uint32_t* out) const {
-    for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
-        if ((bits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & flags) == flags) {
-            *out = i;
-            return true;
-        }
-    }
-    return false;
-}
-
 bool VkWindow::create_image(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                             VkImageAspectFlags aspect, Image* out, std::string* error) {
-    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-    info.imageType = VK_IMAGE_TYPE_2D;
-    info.format = format;
-    info.extent = {extent_.width, extent_.height, 1};
-    info.mipLevels = 1;
-    info.arrayLayers = 1;
-    info.samples = samples;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
-    info.usage = usage;
-    VkResult r = vkCreateImage(device_, &info, nullptr, &out->image);
-    VkMemoryRequirements req{};
-    if (r == VK_SUCCESS) vkGetImageMemoryRequirements(device_, out->image, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    if (r == VK_SUCCESS &&
-        !memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, &alloc.memoryTypeIndex))
-        r = VK_ERROR_FEATURE_NOT_PRESENT;
-    if (r == VK_SUCCESS) r = vkAllocateMemory(device_, &alloc, nullptr, &out->memory);
-    if (r == VK_SUCCESS) r = vkBindImageMemory(device_, out->image, out->memory, 0);
-    VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    view.image = out->image;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    view.format = format;
-    view.subresourceRange = {aspect, 0, 1, 0, 1};
-    if (r == VK_SUCCESS) r = vkCreateImageView(device_, &view, nullptr, &out->view);
-    if (r != VK_SUCCESS) *error = vk_error("creating a render target", r);
-    return r == VK_SUCCESS;
+    grass_bootstrap::VkImageDesc desc;
+    desc.extent = extent_;
+    desc.format = format;
+    desc.samples = samples;
+    desc.usage = usage;
+    desc.aspect = aspect;
+    return grass_bootstrap::create_image(device_, memory_, desc, out, error);
 }
 
-void VkWindow::destroy_image(Image* image) {
-    if (image->view) vkDestroyImageView(device_, image->view, nullptr);
-    if (image->image) vkDestroyImage(device_, image->image, nullptr);
-    if (image->memory) vkFreeMemory(device_, image->memory, nullptr);
-    *image = Image{};
-}
+void VkWindow::destroy_image(Image* image) { grass_bootstrap::destroy_image(device_, image); }
 
 // A host-visible, coherent, mapped buffer.
 bool VkWindow::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, Buffer* out, std::string* error) {
-    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    info.size = size;
-    info.usage = usage;
-    VkResult r = vkCreateBuffer(device_, &info, nullptr, &out->buffer);
-    VkMemoryRequirements req{};
-    if (r == VK_SUCCESS) vkGetBufferMemoryRequirements(device_, out->buffer, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    if (r == VK_SUCCESS &&
-        !memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
-                     &alloc.memoryTypeIndex))
-        r = VK_ERROR_FEATURE_NOT_PRESENT;
-    if (r == VK_SUCCESS) r = vkAllocateMemory(device_, &alloc, nullptr, &out->memory);
-    if (r == VK_SUCCESS) r = vkBindBufferMemory(device_, out->buffer, out->memory, 0);
-    if (r == VK_SUCCESS) r = vkMapMemory(device_, out->memory, 0, VK_WHOLE_SIZE, 0, &out->mapped);
-    out->size = size;
-    if (r != VK_SUCCESS) *error = vk_error("creating a host-visible buffer", r);
-    return r == VK_SUCCESS;
+    return grass_bootstrap::create_buffer(device_, memory_, size, usage,
+                                          VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                          out, error);
 }
 
-void VkWindow::destroy_buffer(Buffer* buffer) {
-    if (buffer->buffer) vkDestroyBuffer(device_, buffer->buffer, nullptr);
-    if (buffer->memory) vkFreeMemory(device_, buffer->memory, nullptr);
-    *buffer = Buffer{};
-}
+void VkWindow::destroy_buffer(Buffer* buffer) { grass_bootstrap::destroy_buffer(device_, buffer); }
 
 VkWindow::~VkWindow() {
     if (device_) {
@@ -697,13 +488,8 @@ VkWindow::~VkWindow() {
         if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);
         vkDestroyDevice(device_, nullptr);
     }
-    if (surface_) vkDestroySurfaceKHR(instance_, surface_, nullptr);
-    if (messenger_) {
-        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-        if (destroy) destroy(instance_, messenger_, nullptr);
-    }
-    if (instance_) vkDestroyInstance(instance_, nullptr);
+    if (surface_) vkDestroySurfaceKHR(instance_.handle(), surface_, nullptr);
+    instance_.destroy();
 }
 
 // ---- The grass context and the sample count -------------------------------------------------
@@ -711,7 +497,7 @@ VkWindow::~VkWindow() {
 grass_result VkWindow::create_context(const grass_context_desc& desc, grass_context** out) {
     grass_vk_desc vk = grass_default_vk_desc();
     vk.get_instance_proc_addr = (grass_vk_get_instance_proc_addr_fn)vkGetInstanceProcAddr;
-    vk.instance = instance_;
+    vk.instance = instance_.handle();
     vk.physical_device = physical_;
     vk.device = device_;
     vk.queue_family = family_;
@@ -784,13 +570,7 @@ void VkWindow::record_copy(VkCommandBuffer cmd, uint32_t image_index) {
     to_present.dstAccessMask = 0;
     to_present.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     to_present.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    VkBufferMemoryBarrier to_host{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
-    to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    to_host.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    to_host.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    to_host.buffer = readback_.buffer;
-    to_host.size = VK_WHOLE_SIZE;
+    const VkBufferMemoryBarrier to_host = grass_bootstrap::host_read_barrier(readback_.buffer);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
                          VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT | VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &to_host,
                          1, &to_present);

@@ -1,5 +1,6 @@
 #include "osg_headless.hpp"
 
+#include <gl_loader.hpp>
 #include <image_io.hpp>
 
 #define EGL_NO_X11 1
@@ -13,30 +14,9 @@
 
 namespace grass_osg_test {
 
-#define GRASS_OSG_TEST_GL(X)                                                             \
-    X(PFNGLGETERRORPROC, GetError)                                                       \
-    X(PFNGLGETINTEGERVPROC, GetIntegerv)                                                 \
-    X(PFNGLISENABLEDPROC, IsEnabled)                                                     \
-    X(PFNGLENABLEPROC, Enable)                                                           \
-    X(PFNGLDISABLEPROC, Disable)                                                         \
-    X(PFNGLPIXELSTOREIPROC, PixelStorei)                                                 \
-    X(PFNGLCREATERENDERBUFFERSPROC, CreateRenderbuffers)                                 \
-    X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)                                 \
-    X(PFNGLNAMEDRENDERBUFFERSTORAGEMULTISAMPLEPROC, NamedRenderbufferStorageMultisample) \
-    X(PFNGLCREATEFRAMEBUFFERSPROC, CreateFramebuffers)                                   \
-    X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                                   \
-    X(PFNGLNAMEDFRAMEBUFFERRENDERBUFFERPROC, NamedFramebufferRenderbuffer)               \
-    X(PFNGLCHECKNAMEDFRAMEBUFFERSTATUSPROC, CheckNamedFramebufferStatus)                 \
-    X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                                         \
-    X(PFNGLBLITNAMEDFRAMEBUFFERPROC, BlitNamedFramebuffer)                               \
-    X(PFNGLREADPIXELSPROC, ReadPixels)
-
-struct GlTarget::Impl {
+struct GlTarget::Impl : grass_bootstrap::GlFunctions {
     EGLDisplay display = EGL_NO_DISPLAY;
     EGLContext context = EGL_NO_CONTEXT;
-#define GRASS_OSG_TEST_DECLARE(type, name) type name = nullptr;
-    GRASS_OSG_TEST_GL(GRASS_OSG_TEST_DECLARE)
-#undef GRASS_OSG_TEST_DECLARE
 };
 
 namespace {
@@ -82,9 +62,8 @@ std::unique_ptr<GlTarget> GlTarget::create(const TargetFormat& format, std::stri
         return nullptr;
     }
     t->make_current();
-#define GRASS_OSG_TEST_LOAD(type, name) g.name = reinterpret_cast<type>(eglGetProcAddress("gl" #name));
-    GRASS_OSG_TEST_GL(GRASS_OSG_TEST_LOAD)
-#undef GRASS_OSG_TEST_LOAD
+    const auto loader = [](void*, const char* name) { return reinterpret_cast<void*>(eglGetProcAddress(name)); };
+    if (!g.load(loader, nullptr, error)) return nullptr;
     const GLenum colour = format.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
     g.CreateRenderbuffers(3, t->renderbuffers_);
     g.NamedRenderbufferStorageMultisample(t->renderbuffers_[0], GLsizei(format.samples > 1 ? format.samples : 0),
