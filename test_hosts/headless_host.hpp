@@ -7,6 +7,7 @@
 #include <grass/grass.h>
 
 #include "host_mesh.hpp"
+#include "mesh_draw.hpp"
 
 #include <cstdint>
 #include <functional>
@@ -92,7 +93,8 @@ public:
     static std::unique_ptr<Host> create(grass_backend backend, const TargetDesc& target, std::string* error);
 
     virtual grass_backend backend() const = 0;
-    virtual std::string device_name() const = 0;
+    // The device's name as its driver gives it.
+    virtual std::string device_name() const { return device_name_; }
     const TargetDesc& target() const { return target_; }
 
     // Creates a grass context on this host's device.
@@ -115,9 +117,8 @@ public:
     // Moves the target's mesh `index` (TargetDesc::meshes) to a new world origin from the
     // next render on: a host object that moves (a ball that rolls).
     // Hosts without meshes ignore it.
-    virtual void move_mesh(size_t index, const double origin[3]) {
-        (void)index;
-        (void)origin;
+    void move_mesh(size_t index, const double origin[3]) {
+        if (movable_meshes_) movable_meshes_->set_origin(index, origin);
     }
     virtual std::string validation_log() const { return log_; }
 
@@ -143,6 +144,8 @@ protected:
         log_ += '\n';
     }
     TargetDesc target_;
+    std::string device_name_;                 // set by the host's init
+    MovableMeshes* movable_meshes_ = nullptr; // the host's mesh drawer (TargetDesc::meshes), if any
     uint32_t messages_ = 0;
     std::string log_;
 };

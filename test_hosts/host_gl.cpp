@@ -65,14 +65,10 @@ public:
     bool init(std::string* error);
 
     grass_backend backend() const override { return GRASS_BACKEND_GL; }
-    std::string device_name() const override { return device_name_; }
     grass_result create_context(const grass_context_desc& desc, grass_context** out) override;
     void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const override;
     grass_result render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
                         std::string* error) override;
-    void move_mesh(size_t index, const double origin[3]) override {
-        if (meshes_) meshes_->set_origin(index, origin);
-    }
     void* gl_proc_address(const char* name) const override;
 
 private:
@@ -107,7 +103,6 @@ private:
     grass_bootstrap::GlFunctions gl_;
     bool gl_loaded_ = false;
     bool debug_output_ = false;
-    std::string device_name_;
     grass_bootstrap::GlRenderTarget fb_; // multisampled when target.samples > 1
     std::vector<uint8_t> readback_;
     uint32_t debug_errors_ = 0;         // errors seen by debug_callback
@@ -152,6 +147,7 @@ bool GlHost::init(std::string* error) {
     if (target_.ground && !create_ground(error)) return false;
     if (!target_.meshes.empty()) {
         meshes_ = std::make_unique<GlMeshDrawer>();
+        movable_meshes_ = meshes_.get();
         auto loader = [](void* self, const char* name) { return static_cast<GlHost*>(self)->gl_proc_address(name); };
         if (!meshes_->init(loader, this, target_.meshes, error)) return false;
     }
@@ -316,6 +312,7 @@ GlHost::~GlHost() {
         if (ground_program_) gl_.DeleteProgram(ground_program_);
         if (ground_buffer_) gl_.DeleteBuffers(1, &ground_buffer_);
         if (ground_vao_) gl_.DeleteVertexArrays(1, &ground_vao_);
+        movable_meshes_ = nullptr;
         meshes_.reset();
         if (debug_output_) gl_.DebugMessageCallback(nullptr, nullptr);
     }

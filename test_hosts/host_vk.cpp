@@ -48,14 +48,10 @@ public:
     bool init(std::string* error);
 
     grass_backend backend() const override { return GRASS_BACKEND_VULKAN; }
-    std::string device_name() const override { return device_name_; }
     grass_result create_context(const grass_context_desc& desc, grass_context** out) override;
     void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const override;
     grass_result render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
                         std::string* error) override;
-    void move_mesh(size_t index, const double origin[3]) override {
-        if (meshes_) meshes_->set_origin(index, origin);
-    }
 
 private:
     bool create_instance(std::string* error);
@@ -112,8 +108,6 @@ private:
     VkCommandPool command_pool_ = VK_NULL_HANDLE;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
-
-    std::string device_name_;
 };
 
 void VkHost::on_message(void* user, const std::string& line) {
@@ -151,6 +145,7 @@ VkPassTarget VkHost::pass_target() const {
 bool VkHost::create_meshes(std::string* error) {
     if (target_.meshes.empty()) return true;
     meshes_ = std::make_unique<VkMeshDrawer>();
+    movable_meshes_ = meshes_.get();
     return meshes_->init(physical_device_, device_, pass_target(), target_.meshes, error);
 }
 
@@ -387,6 +382,7 @@ bool VkHost::create_commands(std::string* error) {
 VkHost::~VkHost() {
     if (device_) {
         vkDeviceWaitIdle(device_);
+        movable_meshes_ = nullptr;
         meshes_.reset();
         if (ground_pipeline_) vkDestroyPipeline(device_, ground_pipeline_, nullptr);
         if (ground_layout_) vkDestroyPipelineLayout(device_, ground_layout_, nullptr);

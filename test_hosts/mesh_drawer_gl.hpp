@@ -21,13 +21,13 @@
 
 namespace grass_host {
 
-class GlMeshDrawer {
+class GlMeshDrawer final : public MovableMeshes {
 public:
     // A GL entry point by name (eglGetProcAddress, glfwGetProcAddress, ...).
     using ProcLoader = void* (*)(void* user_data, const char* name);
 
     GlMeshDrawer();
-    ~GlMeshDrawer(); // the context that init used must be current
+    ~GlMeshDrawer() override; // the context that init used must be current
     GlMeshDrawer(const GlMeshDrawer&) = delete;
     GlMeshDrawer& operator=(const GlMeshDrawer&) = delete;
 
@@ -40,7 +40,7 @@ public:
     void draw(const grass_view_desc& view, bool reversed_z, bool encode_srgb);
 
     // Moves mesh `index` (of init's list) to a new world origin: a host object that moves.
-    void set_origin(size_t index, const double origin[3]);
+    void set_origin(size_t index, const double origin[3]) override;
 
 private:
     struct Impl;

@@ -47,10 +47,10 @@ struct VkHostPipelineDesc {
 };
 VkResult create_host_pipeline(VkDevice device, const VkHostPipelineDesc& desc, VkPipeline* out);
 
-class VkMeshDrawer {
+class VkMeshDrawer final : public MovableMeshes {
 public:
     VkMeshDrawer() = default;
-    ~VkMeshDrawer();
+    ~VkMeshDrawer() override;
     VkMeshDrawer(const VkMeshDrawer&) = delete;
     VkMeshDrawer& operator=(const VkMeshDrawer&) = delete;
 
@@ -63,7 +63,7 @@ public:
     void record(VkCommandBuffer cmd, const grass_view_desc& view, uint32_t width, uint32_t height) const;
 
     // Moves mesh `index` (of init's list) to a new world origin: a host object that moves.
-    void set_origin(size_t index, const double origin[3]) {
+    void set_origin(size_t index, const double origin[3]) override {
         if (index < meshes_.size()) std::copy(origin, origin + 3, meshes_[index].origin);
     }
 
