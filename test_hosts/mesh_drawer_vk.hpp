@@ -12,6 +12,7 @@
 #pragma once
 
 #include "host_mesh.hpp"
+#include "mesh_draw.hpp"
 
 #include <grass/grass.h>
 #include <vulkan/vulkan.h>
