@@ -1,6 +1,7 @@
 // The hosts' Vulkan bootstrap (test_hosts/bootstrap/vk_bootstrap.*): a message through the
 // instance's messenger reaches the host's sink as one "[error] ..." or "[warning] ..." line.
 // That is the path by which a validation message fails every Vulkan render test.
+#include "driver_residency.hpp"
 #include "vk_bootstrap.hpp"
 
 #include <gtest/gtest.h>
@@ -33,6 +34,11 @@ TEST(VkBootstrap, TheMessengerHandsEveryWarningAndErrorToTheSink) {
     desc.sink = &sink;
     std::string error;
     ASSERT_TRUE(instance.create(desc, &error)) << error;
+    // As the hosts do: the layer and the ICDs stay loaded past vkDestroyInstance, so that
+    // LeakSanitizer can name their allocations (tests/sanitizer/lsan.supp matches them by
+    // library; once unloaded, a layer's buffer is an "<unknown module>" leak).
+    static const char* const kDrivers[] = {"libvulkan_", "libVkLayer_", nullptr};
+    grass_host::keep_drivers_resident(kDrivers);
     if (!vkGetInstanceProcAddr(instance.handle(), "vkSubmitDebugUtilsMessageEXT")) {
         GTEST_SKIP() << "neither the validation layer nor VK_EXT_debug_utils is installed";
     }
