@@ -52,6 +52,8 @@ struct TargetDesc {
     // get_instance_proc_addr); nullptr: the loader's own. Tests pass a wrapper that counts
     // handles or makes a call fail, for grass's dispatch table only.
     void (*(*vk_get_instance_proc_addr)(void* instance, const char* name))(void) = nullptr;
+    // Vulkan: grass_vk_desc::allocation_callbacks (a const VkAllocationCallbacks*); grass only.
+    const void* vk_allocation_callbacks = nullptr;
     // GL: given each GL entry point grass asks the host's loader for (its name and the real
     // one), returns the one grass gets; nullptr: the real ones. For fault-injection tests.
     void (*(*gl_proc_filter)(const char* name, void (*real)(void)))(void) = nullptr;

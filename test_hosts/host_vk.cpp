@@ -474,6 +474,7 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     vk.depth_format = kDepthFormat;
     vk.sample_count = samples_;
     vk.frames_in_flight = 2;
+    vk.allocation_callbacks = target_.vk_allocation_callbacks;
     return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
 }
 

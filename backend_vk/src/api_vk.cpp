@@ -9,13 +9,25 @@
 
 #include <grass/grass_vk.h>
 
+#include <cstddef>
+#include <cstring>
+
 using grass::vk::VkBackend;
 
 namespace {
 
 grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** out_backend) {
     const char* function = "grass_vk_create_context";
-    const auto* vk_desc = static_cast<const grass_vk_desc*>(user_data);
+    // A host built against grass_vk.h 0.3 or 0.4 passed a grass_vk_desc without
+    // allocation_callbacks (0.5): only the bytes it has are read.
+    grass_vk_desc copy{};
+    const grass_vk_desc* vk_desc = nullptr;
+    if (user_data) {
+        const size_t bytes =
+            ctx->header_minor >= 5 ? sizeof(grass_vk_desc) : offsetof(grass_vk_desc, allocation_callbacks);
+        std::memcpy(&copy, user_data, bytes);
+        vk_desc = &copy;
+    }
     grass_result r = grass::vk::check_vk_desc(ctx, function, vk_desc);
     if (r != GRASS_SUCCESS) return r;
     grass::vk::Device device;

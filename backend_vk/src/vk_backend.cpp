@@ -28,7 +28,7 @@ PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d,
 
 VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const Device& device)
     : ctx_(context), desc_(vk_desc), device_(device), fn_(device_.fn),
-      memory_(fn_, device_.device, device_.memory, device_.properties.limits.nonCoherentAtomSize),
+      memory_(fn_, device_.device, device_.memory, device_.properties.limits, &context->host),
       descriptors_(fn_, device_.device, &context->host), frame_sets_(fn_, device_.device, &context->host),
       deferred_(memory_, descriptors_, &context->host, vk_desc.frames_in_flight), pipeline_(fn_, device_.device),
       ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment),
@@ -53,7 +53,7 @@ VkBackend::~VkBackend() {
     deferred_.destroy_now(&default_slices_staging_);
     memory_.destroy_image(&default_slices_); // never retired
     deferred_.destroy_now(&default_curves_);
-    if (timer_pool_ != VK_NULL_HANDLE) fn_.vkDestroyQueryPool(device_.device, timer_pool_, nullptr);
+    if (timer_pool_ != VK_NULL_HANDLE) fn_.vkDestroyQueryPool(device_.device, timer_pool_, fn_.callbacks());
     // The frame ring, pipelines and descriptor pools go with their members.
 }
 
@@ -218,6 +218,29 @@ uint64_t VkBackend::dynamics_gpu_bytes() const {
     uint64_t bytes = interaction_.map_bytes();
     for (const PatchGpu& p : patches_) bytes += p.curves.allocated;
     return bytes;
+}
+
+void VkBackend::device_memory(grass_memory_stats* stats) const {
+    const VkPhysicalDeviceMemoryProperties& m = device_.memory;
+    stats->heap_count = m.memoryHeapCount;
+    stats->device_allocations = memory_.blocks().device_allocations();
+    uint64_t allocated[VK_MAX_MEMORY_HEAPS], in_use[VK_MAX_MEMORY_HEAPS];
+    memory_.blocks().heap_bytes(allocated, in_use);
+    for (uint32_t h = 0; h < m.memoryHeapCount && h < GRASS_MAX_MEMORY_HEAPS; ++h) {
+        stats->heap_size[h] = m.memoryHeaps[h].size;
+        stats->heap_allocated[h] = allocated[h];
+        stats->heap_in_use[h] = in_use[h];
+    }
+    if (!device_.memory_budget) return;
+    VkPhysicalDeviceMemoryBudgetPropertiesEXT budget{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_BUDGET_PROPERTIES_EXT};
+    VkPhysicalDeviceMemoryProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PROPERTIES_2};
+    properties.pNext = &budget;
+    fn_.vkGetPhysicalDeviceMemoryProperties2(device_.physical_device, &properties);
+    stats->heap_budget_known = 1;
+    for (uint32_t h = 0; h < m.memoryHeapCount && h < GRASS_MAX_MEMORY_HEAPS; ++h) {
+        stats->heap_budget[h] = budget.heapBudget[h];
+        stats->heap_usage[h] = budget.heapUsage[h];
+    }
 }
 
 } // namespace grass::vk

@@ -56,6 +56,7 @@ public:
     void end_frame() override {} // the host submits: a frame ends with nothing to do here
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
     uint64_t dynamics_gpu_bytes() const override;
+    void device_memory(grass_memory_stats* stats) const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
     // A Vulkan device is not current on a thread: every call may use it.
     grass_result check_current(const char*) override { return GRASS_SUCCESS; }

@@ -2,6 +2,8 @@
 
 #include "foundation/raw_enum.hpp"
 
+#include <vulkan/vulkan.h>
+
 #include "context/context.hpp"
 
 namespace grass::vk {
@@ -57,6 +59,30 @@ grass_result check_vk_desc(grass_context* ctx, const char* function, const grass
                          "%s: vk_desc->color_format is 0 (VK_FORMAT_UNDEFINED) with render_pass 0; dynamic rendering "
                          "needs the VkFormat of the colour attachment",
                          function);
+    }
+    if (d->allocation_callbacks) {
+        const auto* c = static_cast<const VkAllocationCallbacks*>(d->allocation_callbacks);
+        const struct {
+            bool missing;
+            const char* name;
+        } callbacks[] = {
+            {c->pfnAllocation == nullptr, "pfnAllocation"},
+            {c->pfnReallocation == nullptr, "pfnReallocation"},
+            {c->pfnFree == nullptr, "pfnFree"},
+        };
+        for (const auto& f : callbacks) {
+            if (f.missing) {
+                return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+                                 "%s: vk_desc->allocation_callbacks->%s is NULL; Vulkan requires it", function, f.name);
+            }
+        }
+        if ((c->pfnInternalAllocation == nullptr) != (c->pfnInternalFree == nullptr)) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+                             "%s: vk_desc->allocation_callbacks has pfnInternal%s but not pfnInternal%s; set both "
+                             "or neither",
+                             function, c->pfnInternalFree ? "Free" : "Allocation",
+                             c->pfnInternalFree ? "Allocation" : "Free");
+        }
     }
     return GRASS_SUCCESS;
 }

@@ -18,13 +18,13 @@ VkResult create_pool(const Functions& fn, VkDevice device, uint32_t sets, VkDesc
     info.maxSets = sets;
     info.poolSizeCount = sizeof(sizes) / sizeof(sizes[0]);
     info.pPoolSizes = sizes;
-    return fn.vkCreateDescriptorPool(device, &info, nullptr, out);
+    return fn.vkCreateDescriptorPool(device, &info, fn.callbacks(), out);
 }
 } // namespace
 
 DescriptorAllocator::~DescriptorAllocator() {
     // Destroying a pool frees every set still allocated from it.
-    for (const Pool& p : pools_) fn_.vkDestroyDescriptorPool(device_, p.pool, nullptr);
+    for (const Pool& p : pools_) fn_.vkDestroyDescriptorPool(device_, p.pool, fn_.callbacks());
 }
 
 bool DescriptorAllocator::add_pool(VkFailure* failure) {
@@ -83,7 +83,7 @@ FrameDescriptors::FrameDescriptors(const Functions& functions, VkDevice device, 
 
 FrameDescriptors::~FrameDescriptors() {
     for (const Slot& s : slots_) {
-        for (VkDescriptorPool p : s.pools) fn_.vkDestroyDescriptorPool(device_, p, nullptr);
+        for (VkDescriptorPool p : s.pools) fn_.vkDestroyDescriptorPool(device_, p, fn_.callbacks());
     }
 }
 

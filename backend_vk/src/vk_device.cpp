@@ -43,8 +43,16 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
                          "and Vulkan 1.1 or newer?)",
                          function, missing);
     }
+    if (vk_desc.allocation_callbacks) { // checked by check_vk_desc
+        d.fn.host_callbacks = *static_cast<const VkAllocationCallbacks*>(vk_desc.allocation_callbacks);
+        d.fn.has_host_callbacks = true;
+    }
     d.fn.vkGetPhysicalDeviceProperties(d.physical_device, &d.properties);
     d.fn.vkGetPhysicalDeviceMemoryProperties(d.physical_device, &d.memory);
+    // The heap budget is a physical-device query: where the device lists VK_EXT_memory_budget
+    // it may be made without the host enabling the extension on its VkDevice.
+    d.memory_budget = d.fn.vkGetPhysicalDeviceMemoryProperties2 != nullptr &&
+                      has_device_extension(d, &ctx->host, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
     constexpr uint32_t kVendorMesa = 0x10005; // VK_VENDOR_ID_MESA
     d.indexed_blocks =
         d.properties.vendorID == kVendorMesa && std::strncmp(d.properties.deviceName, "llvmpipe", 8) == 0;

@@ -20,6 +20,9 @@ struct Device {
     // The Frame and Field blocks read at an index from a push constant: on lavapipe only
     // (vk_spirv.hpp says why).
     bool indexed_blocks = false;
+    // The device lists VK_EXT_memory_budget (and vkGetPhysicalDeviceMemoryProperties2 is
+    // loaded): grass_memory_stats reports each heap's budget and the process's usage.
+    bool memory_budget = false;
 };
 
 // The format of single-channel design maps (density, ambient, diffuse, height): 16-bit

@@ -16,6 +16,14 @@ const char* load_functions(grass_vk_get_instance_proc_addr_fn get_instance_proc_
     if (!out->name) return #name;
     GRASS_VK_DEVICE_FUNCTIONS(GRASS_VK_LOAD_DEVICE)
 #undef GRASS_VK_LOAD_DEVICE
+#define GRASS_VK_LOAD_OPTIONAL_INSTANCE(name) \
+    out->name = reinterpret_cast<PFN_##name>(get_instance_proc_addr(static_cast<void*>(instance), #name));
+    GRASS_VK_OPTIONAL_INSTANCE_FUNCTIONS(GRASS_VK_LOAD_OPTIONAL_INSTANCE)
+#undef GRASS_VK_LOAD_OPTIONAL_INSTANCE
+#define GRASS_VK_LOAD_OPTIONAL_DEVICE(name) \
+    out->name = reinterpret_cast<PFN_##name>(out->vkGetDeviceProcAddr(device, #name));
+    GRASS_VK_OPTIONAL_DEVICE_FUNCTIONS(GRASS_VK_LOAD_OPTIONAL_DEVICE)
+#undef GRASS_VK_LOAD_OPTIONAL_DEVICE
     return nullptr;
 }
 

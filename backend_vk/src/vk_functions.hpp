@@ -73,11 +73,26 @@ namespace grass::vk {
     X(vkCmdResetQueryPool)           \
     X(vkCmdWriteTimestamp)
 
+// Vulkan 1.1 functions grass does without (NULL where the host's instance is Vulkan 1.0):
+// the heap budget (VK_EXT_memory_budget) and the driver's wish for dedicated allocations.
+#define GRASS_VK_OPTIONAL_INSTANCE_FUNCTIONS(X) X(vkGetPhysicalDeviceMemoryProperties2)
+#define GRASS_VK_OPTIONAL_DEVICE_FUNCTIONS(X) \
+    X(vkGetBufferMemoryRequirements2)         \
+    X(vkGetImageMemoryRequirements2)
+
 struct Functions {
 #define GRASS_VK_DECLARE_FUNCTION(name) PFN_##name name = nullptr;
     GRASS_VK_INSTANCE_FUNCTIONS(GRASS_VK_DECLARE_FUNCTION)
     GRASS_VK_DEVICE_FUNCTIONS(GRASS_VK_DECLARE_FUNCTION)
+    GRASS_VK_OPTIONAL_INSTANCE_FUNCTIONS(GRASS_VK_DECLARE_FUNCTION)
+    GRASS_VK_OPTIONAL_DEVICE_FUNCTIONS(GRASS_VK_DECLARE_FUNCTION)
 #undef GRASS_VK_DECLARE_FUNCTION
+
+    // The host's VkAllocationCallbacks (grass_vk_desc::allocation_callbacks), copied: every
+    // vkCreate*, vkDestroy*, vkAllocateMemory and vkFreeMemory of grass passes callbacks().
+    VkAllocationCallbacks host_callbacks{};
+    bool has_host_callbacks = false;
+    const VkAllocationCallbacks* callbacks() const { return has_host_callbacks ? &host_callbacks : nullptr; }
 };
 
 // Fills `out`. Returns nullptr on success, or the name of the first function the loader

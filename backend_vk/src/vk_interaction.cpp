@@ -41,10 +41,10 @@ InteractionPass::~InteractionPass() {
     // The host guarantees the device is idle for grass work (context destruction).
     for (Image& m : maps_) deferred_.destroy_now(&m);
     for (Slot& s : slots_) deferred_.destroy_now(&s.data);
-    if (pool_) fn_.vkDestroyDescriptorPool(device_, pool_, nullptr); // frees the sets
-    if (pipeline_) fn_.vkDestroyPipeline(device_, pipeline_, nullptr);
-    if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, nullptr);
-    if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
+    if (pool_) fn_.vkDestroyDescriptorPool(device_, pool_, fn_.callbacks()); // frees the sets
+    if (pipeline_) fn_.vkDestroyPipeline(device_, pipeline_, fn_.callbacks());
+    if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
+    if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
 }
 
 VkImageView InteractionPass::level_view(uint32_t level) const {
@@ -80,7 +80,8 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
     pool_info.poolSizeCount = 3;
     pool_info.pPoolSizes = sizes;
     *what = "the interaction pass's descriptor pool";
-    if (!vk_ok(fn_.vkCreateDescriptorPool(device_, &pool_info, nullptr, &pool_), "vkCreateDescriptorPool", failure)) {
+    if (!vk_ok(fn_.vkCreateDescriptorPool(device_, &pool_info, fn_.callbacks(), &pool_), "vkCreateDescriptorPool",
+               failure)) {
         return false;
     }
     VkDescriptorSetLayout set_layouts[2 * kMaxFramesInFlight];
@@ -104,7 +105,8 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
     module_info.pCode = grass_vk_spirv::interaction_comp;
     VkShaderModule module = VK_NULL_HANDLE;
     *what = "the interaction pass's shader module";
-    if (!vk_ok(fn_.vkCreateShaderModule(device_, &module_info, nullptr, &module), "vkCreateShaderModule", failure)) {
+    if (!vk_ok(fn_.vkCreateShaderModule(device_, &module_info, fn_.callbacks(), &module), "vkCreateShaderModule",
+               failure)) {
         return false;
     }
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
@@ -114,9 +116,9 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
     info.stage.pName = "main";
     info.layout = layout_;
     *what = "the interaction pass's compute pipeline";
-    const bool ok = vk_ok(fn_.vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+    const bool ok = vk_ok(fn_.vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, fn_.callbacks(), &pipeline_),
                           "vkCreateComputePipelines", failure);
-    fn_.vkDestroyShaderModule(device_, module, nullptr);
+    fn_.vkDestroyShaderModule(device_, module, fn_.callbacks());
     if (!ok) pipeline_ = VK_NULL_HANDLE;
     return ok;
 }

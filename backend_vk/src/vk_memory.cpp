@@ -42,18 +42,47 @@ int score(const VkMemoryType& type, uint32_t index, uint32_t type_bits, const Ty
     return s;
 }
 
+// The requirements of `buffer` or `image` (one of them), and whether the driver requires or
+// prefers it on a dedicated allocation (Vulkan 1.1; without the 2 functions, no).
+void requirements_of(const Functions& fn, VkDevice device, VkBuffer buffer, VkImage image, AllocationRequest* out) {
+    out->buffer = buffer;
+    out->image = image;
+    const bool two =
+        buffer ? fn.vkGetBufferMemoryRequirements2 != nullptr : fn.vkGetImageMemoryRequirements2 != nullptr;
+    if (!two) {
+        if (buffer) fn.vkGetBufferMemoryRequirements(device, buffer, &out->requirements);
+        if (image) fn.vkGetImageMemoryRequirements(device, image, &out->requirements);
+        return;
+    }
+    VkMemoryDedicatedRequirements dedicated{VK_STRUCTURE_TYPE_MEMORY_DEDICATED_REQUIREMENTS};
+    VkMemoryRequirements2 requirements{VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2};
+    requirements.pNext = &dedicated;
+    if (buffer) {
+        VkBufferMemoryRequirementsInfo2 info{VK_STRUCTURE_TYPE_BUFFER_MEMORY_REQUIREMENTS_INFO_2};
+        info.buffer = buffer;
+        fn.vkGetBufferMemoryRequirements2(device, &info, &requirements);
+    } else {
+        VkImageMemoryRequirementsInfo2 info{VK_STRUCTURE_TYPE_IMAGE_MEMORY_REQUIREMENTS_INFO_2};
+        info.image = image;
+        fn.vkGetImageMemoryRequirements2(device, &info, &requirements);
+    }
+    out->requirements = requirements.memoryRequirements;
+    out->dedicated = dedicated.requiresDedicatedAllocation || dedicated.prefersDedicatedAllocation;
+}
+
 } // namespace
 
-bool Memory::allocate(const VkMemoryRequirements& requirements, MemoryUse use, VkDeviceMemory* out,
+bool Memory::allocate(const AllocationRequest& request, MemoryUse use, Allocation* out,
                       VkMemoryPropertyFlags* out_flags, VkFailure* failure) {
     const TypeRule rule = rule_for(use);
     bool tried[VK_MAX_MEMORY_TYPES] = {};
     VkResult last = VK_ERROR_OUT_OF_DEVICE_MEMORY;
+    const char* call = "vkAllocateMemory";
     for (;;) {
         int best = -1, best_score = -1;
         for (uint32_t i = 0; i < properties_.memoryTypeCount; ++i) {
             if (tried[i]) continue;
-            const int s = score(properties_.memoryTypes[i], i, requirements.memoryTypeBits, rule);
+            const int s = score(properties_.memoryTypes[i], i, request.requirements.memoryTypeBits, rule);
             if (s > best_score) {
                 best = static_cast<int>(i);
                 best_score = s;
@@ -61,19 +90,15 @@ bool Memory::allocate(const VkMemoryRequirements& requirements, MemoryUse use, V
         }
         if (best < 0) break;
         tried[best] = true;
-        VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-        info.allocationSize = requirements.size;
-        info.memoryTypeIndex = static_cast<uint32_t>(best);
-        last = fn_.vkAllocateMemory(device_, &info, nullptr, out);
+        last = blocks_.allocate(static_cast<uint32_t>(best), request, out, &call);
         if (last == VK_SUCCESS) {
             *out_flags = properties_.memoryTypes[best].propertyFlags;
-            bytes_ += requirements.size;
             return true;
         }
         // Another type may live on a heap with room; any other error is final.
         if (last != VK_ERROR_OUT_OF_DEVICE_MEMORY) break;
     }
-    failure->call = "vkAllocateMemory";
+    failure->call = call;
     failure->result = last;
     return false;
 }
@@ -86,22 +111,30 @@ bool Memory::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, MemoryUs
     info.size = size;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    if (!vk_ok(fn_.vkCreateBuffer(device_, &info, nullptr, &b.buffer), "vkCreateBuffer", failure)) return false;
-
-    VkMemoryRequirements requirements{};
-    fn_.vkGetBufferMemoryRequirements(device_, b.buffer, &requirements);
-    VkMemoryPropertyFlags flags = 0;
-    if (!allocate(requirements, use, &b.memory, &flags, failure)) {
-        fn_.vkDestroyBuffer(device_, b.buffer, nullptr);
+    if (!vk_ok(fn_.vkCreateBuffer(device_, &info, fn_.callbacks(), &b.buffer), "vkCreateBuffer", failure)) {
         return false;
     }
-    b.allocated = requirements.size;
-    b.coherent = (flags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
-    bool ok = vk_ok(fn_.vkBindBufferMemory(device_, b.buffer, b.memory, 0), "vkBindBufferMemory", failure);
-    if (ok && use != MemoryUse::device_local) {
-        ok = vk_ok(fn_.vkMapMemory(device_, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory", failure);
+    AllocationRequest request;
+    request.tiling = Tiling::linear;
+    request.mapped = use != MemoryUse::device_local;
+    VkMemoryPropertyFlags flags = 0;
+    bool ok = true;
+    try {
+        requirements_of(fn_, device_, b.buffer, VK_NULL_HANDLE, &request);
+        ok = allocate(request, use, &b.memory, &flags, failure);
+    } catch (...) {
+        fn_.vkDestroyBuffer(device_, b.buffer, fn_.callbacks());
+        throw;
     }
     if (!ok) {
+        fn_.vkDestroyBuffer(device_, b.buffer, fn_.callbacks());
+        return false;
+    }
+    b.allocated = request.requirements.size;
+    b.mapped = b.memory.mapped;
+    b.coherent = (flags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
+    if (!vk_ok(fn_.vkBindBufferMemory(device_, b.buffer, b.memory.memory, b.memory.offset), "vkBindBufferMemory",
+               failure)) {
         destroy_buffer(&b);
         return false;
     }
@@ -110,12 +143,8 @@ bool Memory::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, MemoryUs
 }
 
 void Memory::destroy_buffer(Buffer* b) {
-    if (b->buffer) fn_.vkDestroyBuffer(device_, b->buffer, nullptr);
-    if (b->memory) {
-        // Freeing mapped memory unmaps it implicitly.
-        fn_.vkFreeMemory(device_, b->memory, nullptr);
-        bytes_ -= b->allocated;
-    }
+    if (b->buffer) fn_.vkDestroyBuffer(device_, b->buffer, fn_.callbacks());
+    blocks_.free(&b->memory);
     *b = Buffer{};
 }
 
@@ -147,24 +176,34 @@ bool Memory::make_image(uint32_t width, uint32_t height, uint32_t layers, uint32
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    if (!vk_ok(fn_.vkCreateImage(device_, &info, nullptr, &im.image), "vkCreateImage", failure)) return false;
-
-    VkMemoryRequirements requirements{};
-    fn_.vkGetImageMemoryRequirements(device_, im.image, &requirements);
-    VkMemoryPropertyFlags flags = 0;
-    if (!allocate(requirements, MemoryUse::device_local, &im.memory, &flags, failure)) {
-        fn_.vkDestroyImage(device_, im.image, nullptr);
+    if (!vk_ok(fn_.vkCreateImage(device_, &info, fn_.callbacks(), &im.image), "vkCreateImage", failure)) {
         return false;
     }
-    im.allocated = requirements.size;
-    bool ok = vk_ok(fn_.vkBindImageMemory(device_, im.image, im.memory, 0), "vkBindImageMemory", failure);
+    AllocationRequest request;
+    request.tiling = Tiling::optimal;
+    VkMemoryPropertyFlags flags = 0;
+    bool ok = true;
+    try {
+        requirements_of(fn_, device_, VK_NULL_HANDLE, im.image, &request);
+        ok = allocate(request, MemoryUse::device_local, &im.memory, &flags, failure);
+    } catch (...) {
+        fn_.vkDestroyImage(device_, im.image, fn_.callbacks());
+        throw;
+    }
+    if (!ok) {
+        fn_.vkDestroyImage(device_, im.image, fn_.callbacks());
+        return false;
+    }
+    im.allocated = request.requirements.size;
+    ok = vk_ok(fn_.vkBindImageMemory(device_, im.image, im.memory.memory, im.memory.offset), "vkBindImageMemory",
+               failure);
     if (ok) {
         VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         view.image = im.image;
         view.viewType = view_type;
         view.format = format;
         view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
-        ok = vk_ok(fn_.vkCreateImageView(device_, &view, nullptr, &im.view), "vkCreateImageView", failure);
+        ok = vk_ok(fn_.vkCreateImageView(device_, &view, fn_.callbacks(), &im.view), "vkCreateImageView", failure);
     }
     if (!ok) {
         destroy_image(&im);
@@ -175,23 +214,21 @@ bool Memory::make_image(uint32_t width, uint32_t height, uint32_t layers, uint32
 }
 
 void Memory::destroy_image(Image* im) {
-    if (im->view) fn_.vkDestroyImageView(device_, im->view, nullptr);
-    if (im->image) fn_.vkDestroyImage(device_, im->image, nullptr);
-    if (im->memory) {
-        fn_.vkFreeMemory(device_, im->memory, nullptr);
-        bytes_ -= im->allocated;
-    }
+    if (im->view) fn_.vkDestroyImageView(device_, im->view, fn_.callbacks());
+    if (im->image) fn_.vkDestroyImage(device_, im->image, fn_.callbacks());
+    blocks_.free(&im->memory);
     *im = Image{};
 }
 
 bool Memory::flush(const Buffer& b, VkDeviceSize offset, VkDeviceSize size, VkFailure* failure) {
     if (b.coherent || size == 0) return true;
-    // The range must start and end on nonCoherentAtomSize (or end at the allocation's end).
+    // The range must start and end on nonCoherentAtomSize: the buffer's memory starts on one
+    // and owns whole atoms (MemoryBlocks::allocate), so rounding out stays inside it.
     VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
-    range.memory = b.memory;
-    range.offset = offset / atom_ * atom_;
-    const VkDeviceSize end = (offset + size + atom_ - 1) / atom_ * atom_;
-    range.size = end >= b.allocated ? VK_WHOLE_SIZE : end - range.offset;
+    range.memory = b.memory.memory;
+    range.offset = b.memory.offset + offset / atom_ * atom_;
+    const VkDeviceSize end = b.memory.offset + (offset + size + atom_ - 1) / atom_ * atom_;
+    range.size = end - range.offset;
     return vk_ok(fn_.vkFlushMappedMemoryRanges(device_, 1, &range), "vkFlushMappedMemoryRanges", failure);
 }
 

@@ -1,9 +1,10 @@
-// GPU memory of the backend: buffers, 2D images and 2D array images, each with its own vkAllocateMemory
-// (grass holds a handful of resources per patch and field, far below any allocation
-// limit), on the memory type that suits its use. Counts the bytes it holds.
+// GPU resources of the backend: buffers, 2D images and 2D array images, each on the memory
+// type that suits its use, suballocated from that type's blocks (vk_memory_blocks.hpp).
+// Counts the bytes they hold.
 #pragma once
 
 #include "vk_functions.hpp"
+#include "vk_memory_blocks.hpp"
 #include "vk_result.hpp"
 
 #include <cstdint>
@@ -19,9 +20,9 @@ enum class MemoryUse {
 
 struct Buffer {
     VkBuffer buffer = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
+    Allocation memory;
     VkDeviceSize size = 0;      // bytes asked for
-    VkDeviceSize allocated = 0; // bytes of device memory held
+    VkDeviceSize allocated = 0; // bytes of device memory it takes (its memory requirements)
     void* mapped = nullptr;     // staging and streaming buffers: mapped for their lifetime
     bool coherent = true;       // false: writes must be flushed (Memory::flush)
 };
@@ -29,7 +30,7 @@ struct Buffer {
 struct Image {
     VkImage image = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
+    Allocation memory;
     VkDeviceSize allocated = 0;
     uint32_t width = 0;
     uint32_t height = 0;
@@ -40,8 +41,9 @@ struct Image {
 class Memory {
 public:
     Memory(const Functions& functions, VkDevice device, const VkPhysicalDeviceMemoryProperties& properties,
-           VkDeviceSize non_coherent_atom_size)
-        : fn_(functions), device_(device), properties_(properties), atom_(non_coherent_atom_size) {}
+           const VkPhysicalDeviceLimits& limits, HostAllocator* host)
+        : fn_(functions), device_(device), properties_(properties), atom_(limits.nonCoherentAtomSize),
+          blocks_(functions, device, properties, limits.bufferImageGranularity, limits.nonCoherentAtomSize, host) {}
     Memory(const Memory&) = delete;
     Memory& operator=(const Memory&) = delete;
 
@@ -62,21 +64,22 @@ public:
     // (nothing to do on coherent memory).
     bool flush(const Buffer& buffer, VkDeviceSize offset, VkDeviceSize size, VkFailure* failure);
 
-    uint64_t bytes() const { return bytes_; }
+    uint64_t bytes() const { return blocks_.bytes_in_use(); }
+    const MemoryBlocks& blocks() const { return blocks_; }
 
 private:
     bool make_image(uint32_t width, uint32_t height, uint32_t layers, uint32_t levels, VkImageViewType view_type,
                     VkFormat format, VkImageUsageFlags usage, Image* out, VkFailure* failure);
-    // Allocates `requirements` on the best memory type for `use`, falling back to the
-    // next suitable type when a heap is full.
-    bool allocate(const VkMemoryRequirements& requirements, MemoryUse use, VkDeviceMemory* out,
-                  VkMemoryPropertyFlags* out_flags, VkFailure* failure);
+    // Allocates `request` on the best memory type for `use`, falling back to the next
+    // suitable type when a heap is full.
+    bool allocate(const AllocationRequest& request, MemoryUse use, Allocation* out, VkMemoryPropertyFlags* out_flags,
+                  VkFailure* failure);
 
     const Functions& fn_;
     VkDevice device_;
     VkPhysicalDeviceMemoryProperties properties_;
     VkDeviceSize atom_;
-    uint64_t bytes_ = 0;
+    MemoryBlocks blocks_;
 };
 
 } // namespace grass::vk

@@ -142,7 +142,7 @@ bool BladePipeline::create_variant(uint32_t features, VkFailure* failure, const 
 void BladePipeline::destroy_variant(uint32_t features) {
     for (auto& pair : pipelines_[features]) {
         for (VkPipeline& p : pair) {
-            if (p) fn_.vkDestroyPipeline(device_, p, nullptr);
+            if (p) fn_.vkDestroyPipeline(device_, p, fn_.callbacks());
             p = VK_NULL_HANDLE;
         }
     }
@@ -150,11 +150,11 @@ void BladePipeline::destroy_variant(uint32_t features) {
 
 void BladePipeline::destroy() {
     for (uint32_t f = 0; f < kFeatureMaskCount; ++f) destroy_variant(f);
-    if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, nullptr);
-    if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
-    if (sampler_) fn_.vkDestroySampler(device_, sampler_, nullptr);
-    if (slice_linear_) fn_.vkDestroySampler(device_, slice_linear_, nullptr);
-    if (slice_nearest_) fn_.vkDestroySampler(device_, slice_nearest_, nullptr);
+    if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
+    if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
+    if (sampler_) fn_.vkDestroySampler(device_, sampler_, fn_.callbacks());
+    if (slice_linear_) fn_.vkDestroySampler(device_, slice_linear_, fn_.callbacks());
+    if (slice_nearest_) fn_.vkDestroySampler(device_, slice_nearest_, fn_.callbacks());
     slice_linear_ = slice_nearest_ = VK_NULL_HANDLE;
     layout_ = VK_NULL_HANDLE;
     set_layout_ = VK_NULL_HANDLE;
@@ -173,21 +173,22 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
     sampler.minLod = 0.0f;
     sampler.maxLod = 0.0f;
     *what = "the design map sampler";
-    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, nullptr, &sampler_), "vkCreateSampler", failure)) return false;
+    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &sampler_), "vkCreateSampler", failure))
+        return false;
 
     // Baked slices: colour and normal trilinear over the whole mip chain; thresholds are
     // never blended (a blend of two blades' thresholds is no blade's), nearest texel and mip.
     sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
     sampler.maxLod = VK_LOD_CLAMP_NONE;
     *what = "the slice sampler";
-    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, nullptr, &slice_linear_), "vkCreateSampler", failure)) {
+    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &slice_linear_), "vkCreateSampler", failure)) {
         return false;
     }
     sampler.magFilter = VK_FILTER_NEAREST;
     sampler.minFilter = VK_FILTER_NEAREST;
     sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     *what = "the slice threshold sampler";
-    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, nullptr, &slice_nearest_), "vkCreateSampler", failure)) {
+    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &slice_nearest_), "vkCreateSampler", failure)) {
         return false;
     }
 
@@ -224,8 +225,8 @@ bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const 
     set_info.bindingCount = binding_count;
     set_info.pBindings = bindings;
     *what = set_name;
-    if (!vk_ok(fn.vkCreateDescriptorSetLayout(device, &set_info, nullptr, set_layout), "vkCreateDescriptorSetLayout",
-               failure)) {
+    if (!vk_ok(fn.vkCreateDescriptorSetLayout(device, &set_info, fn.callbacks(), set_layout),
+               "vkCreateDescriptorSetLayout", failure)) {
         return false;
     }
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -234,7 +235,8 @@ bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const 
     layout_info.pushConstantRangeCount = push_range ? 1 : 0;
     layout_info.pPushConstantRanges = push_range;
     *what = layout_name;
-    return vk_ok(fn.vkCreatePipelineLayout(device, &layout_info, nullptr, layout), "vkCreatePipelineLayout", failure);
+    return vk_ok(fn.vkCreatePipelineLayout(device, &layout_info, fn.callbacks(), layout), "vkCreatePipelineLayout",
+                 failure);
 }
 
 bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
@@ -250,7 +252,8 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
         VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
         info.codeSize = code_size[i];
         info.pCode = code[i];
-        ok = vk_ok(fn.vkCreateShaderModule(device, &info, nullptr, &modules[i]), "vkCreateShaderModule", failure);
+        ok =
+            vk_ok(fn.vkCreateShaderModule(device, &info, fn.callbacks(), &modules[i]), "vkCreateShaderModule", failure);
     }
 
     // The shape's vertex attributes that the vertex shader reads.
@@ -354,17 +357,17 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
     }
     if (ok) {
         *what = shape.name;
-        ok = vk_ok(fn.vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 2, infos, nullptr, out_pipelines),
+        ok = vk_ok(fn.vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 2, infos, fn.callbacks(), out_pipelines),
                    "vkCreateGraphicsPipelines", failure);
         if (!ok) {
             for (int i = 0; i < 2; ++i) {
-                if (out_pipelines[i]) fn.vkDestroyPipeline(device, out_pipelines[i], nullptr);
+                if (out_pipelines[i]) fn.vkDestroyPipeline(device, out_pipelines[i], fn.callbacks());
                 out_pipelines[i] = VK_NULL_HANDLE;
             }
         }
     }
     for (VkShaderModule m : modules) {
-        if (m) fn.vkDestroyShaderModule(device, m, nullptr);
+        if (m) fn.vkDestroyShaderModule(device, m, fn.callbacks());
     }
     return ok;
 }

@@ -28,7 +28,7 @@ void VkBackend::create_timers() {
     info.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = desc_.frames_in_flight * TierTimerRing::kStampsPerSet;
-    if (fn_.vkCreateQueryPool(device_.device, &info, nullptr, &timer_pool_) != VK_SUCCESS) {
+    if (fn_.vkCreateQueryPool(device_.device, &info, fn_.callbacks(), &timer_pool_) != VK_SUCCESS) {
         timer_pool_ = VK_NULL_HANDLE; // timings unavailable; drawing does not need them
         return;
     }

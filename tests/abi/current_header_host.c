@@ -27,6 +27,7 @@ int main(void) {
     CHECK(grass_get_library_version() == GRASS_HEADER_VERSION);
     CHECK(grass_default_gl_desc().type == GRASS_STRUCT_TYPE_GL_DESC);
     CHECK(grass_default_vk_desc().type == GRASS_STRUCT_TYPE_VK_DESC);
+    CHECK(grass_default_vk_desc().allocation_callbacks == NULL);
     CHECK(grass_default_vk_record_desc().type == GRASS_STRUCT_TYPE_VK_RECORD_DESC);
     CHECK_OK(grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx));
     if (!ctx) return 1;
@@ -70,6 +71,9 @@ int main(void) {
     CHECK_OK(grass_get_memory_stats(ctx, &ms));
     CHECK(ms.host_bytes_peak != unwritten);
     CHECK(ms.host_bytes > 0 && ms.host_bytes_peak >= ms.host_bytes);
+    /* 0.5's device heaps: written, and none without a GPU backend. */
+    CHECK(ms.heap_count == 0 && ms.device_allocations == 0);
+    CHECK(ms.heap_size[0] == 0 && ms.heap_usage[GRASS_MAX_MEMORY_HEAPS - 1] == 0);
     printf("current_header_host: %llu draws, host bytes %llu (peak %llu)\n", (unsigned long long)fs.draws,
            (unsigned long long)ms.host_bytes, (unsigned long long)ms.host_bytes_peak);
 

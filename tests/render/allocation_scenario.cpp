@@ -55,6 +55,8 @@ ScenarioResult run_allocation_scenario(grass_host::Host& host, const AllocationP
         const bool failed_before = probe.failures_injected() > injected_before;
         grass_result r = f();
         if (r == GRASS_SUCCESS) return true;
+        out.failed_call = what;
+        if (probe.after_failure) probe.after_failure(out.context, what);
         EXPECT_EQ(r, GRASS_ERROR_OUT_OF_MEMORY) << what << " (allocation " << fail_at << "): " << log.text << error;
         EXPECT_FALSE(failed_before) << what << " failed after the injected failure: " << log.text << error;
         EXPECT_TRUE(probe.failures_injected() > injected_before) << what << " failed without an injected failure";

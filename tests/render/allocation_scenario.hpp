@@ -27,11 +27,15 @@ struct AllocationProbe {
     std::function<int()> failures_injected;
     std::function<int64_t()> allocations_made;
     const char* create_function = "grass_create_context";
+    // Optional: called right after a call failed (context: NULL when its creation failed), to
+    // check what the failure left.
+    std::function<void(grass_context* context, const char* what)> after_failure;
 };
 
 struct ScenarioResult {
     int allocations = -1;             // allocations the scenario made; -1 after a failed expectation
     int setup_allocations = 0;        // of them, those made before the first frame
+    std::string failed_call;          // the call the injected failure failed ("" if none)
     grass_context* context = nullptr; // still alive: the caller checks what it left, then destroys it
     std::unique_ptr<FailureLog> log;  // the context's log (it writes here until destroyed)
 };

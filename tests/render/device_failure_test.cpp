@@ -6,7 +6,11 @@
 //   with every Vulkan object it made destroyed;
 // - every device-memory allocation of a scenario (context, patch, field, frames) failing in
 //   turn with VK_ERROR_OUT_OF_DEVICE_MEMORY gives GRASS_ERROR_OUT_OF_MEMORY from that call
-//   alone; the call repeated succeeds, the frame still draws grass, nothing leaks.
+//   alone, after which grass holds the allocations it counts; the call repeated succeeds, the
+//   frame still draws grass, nothing leaks. grass allocates device memory in blocks
+//   (vk_memory_blocks.hpp), so the scenario runs on a device with small heaps (kSmallHeap):
+//   its resources then need several blocks and dedicated allocations, made at the context,
+//   the patch, the map, the field and the frames, and each of those fails in turn.
 #include "allocation_scenario.hpp"
 #include "vk_intercept.hpp"
 
@@ -15,6 +19,8 @@
 #include <vulkan/vulkan.h>
 
 #include <functional>
+#include <map>
+#include <string>
 
 namespace grass_test {
 namespace {
@@ -79,17 +85,40 @@ TEST(DeviceFailure, ADeviceLostMidFrameIsReportedAndTheContextStaysDestroyable) 
     EXPECT_EQ(vi::live().total(), 0) << "left behind: " << vi::live().describe();
 }
 
+// Heaps of 16 MiB as grass sees them: full blocks of 2 MiB (vk_memory_blocks.hpp: an eighth of
+// the heap), the first two of 512 KiB and 1 MiB, resources over 1 MiB dedicated. The context
+// makes the first block; the field's setup (its buffers and the patch's baked slices) makes
+// blocks and dedicated allocations; responsive grass's frames make more.
+constexpr uint64_t kSmallHeap = uint64_t{16} << 20;
+
 // One run of the scenario (allocation_scenario.hpp) with the `fail_at`th vkAllocateMemory
-// failing (0: none); then every Vulkan object grass made is destroyed with the context.
+// failing (0: none), on a device whose heaps are kSmallHeap; then every Vulkan object grass
+// made is destroyed with the context.
 ScenarioResult allocation_scenario(grass_host::Host& host, int fail_at, bool responsive = false) {
     vi::clear_failures();
+    vi::limit_heaps(kSmallHeap);
     if (fail_at > 0) vi::fail_calls("vkAllocateMemory", VK_ERROR_OUT_OF_DEVICE_MEMORY, 1, fail_at - 1);
     AllocationProbe probe;
     probe.failures_injected = [] { return vi::failures_injected(); };
     probe.allocations_made = [] { return vi::live().memory_made; };
     probe.create_function = "grass_vk_create_context";
+    // A failed allocation leaves grass's accounting true: it holds the allocations it counts
+    // (no block half made), and its resources' bytes are spread over the heaps.
+    probe.after_failure = [](grass_context* ctx, const char* what) {
+        if (!ctx) return;
+        grass_memory_stats s{};
+        ASSERT_EQ(grass_get_memory_stats(ctx, &s), GRASS_SUCCESS);
+        EXPECT_EQ(static_cast<int64_t>(s.device_allocations), vi::live().memory) << what;
+        uint64_t in_use = 0;
+        for (uint32_t h = 0; h < s.heap_count; ++h) {
+            EXPECT_LE(s.heap_in_use[h], s.heap_allocated[h]) << what << ", heap " << h;
+            in_use += s.heap_in_use[h];
+        }
+        EXPECT_EQ(in_use, s.gpu_bytes) << what;
+    };
     ScenarioResult result = run_allocation_scenario(host, probe, fail_at, responsive);
     if (result.context) grass_destroy_context(result.context);
+    vi::limit_heaps(0);
     EXPECT_EQ(vi::live().total(), 0) << "allocation " << fail_at << ": left behind: " << vi::live().describe();
     EXPECT_EQ(host.validation_messages(), 0u) << host.validation_log();
     return result;
@@ -100,9 +129,16 @@ TEST(DeviceFailure, EveryDeviceMemoryAllocationFailingInTurnGivesOutOfMemory) {
     auto host = grass_host::Host::create(GRASS_BACKEND_VULKAN, intercepted_target(), &error);
     ASSERT_TRUE(host) << error;
     const int total = allocation_scenario(*host, 0).allocations;
-    ASSERT_GT(total, 3);
-    for (int n = 1; n <= total && !::testing::Test::HasFailure(); ++n) allocation_scenario(*host, n);
-    std::printf("[ device   ] %d device-memory allocations, each failed once\n", total);
+    ASSERT_GT(total, 3) << "small heaps: several blocks";
+    std::map<std::string, int> failed_in; // the calls whose allocation failed, and how many times
+    for (int n = 1; n <= total && !::testing::Test::HasFailure(); ++n) {
+        failed_in[allocation_scenario(*host, n).failed_call] += 1;
+    }
+    std::string calls;
+    for (const auto& [call, count] : failed_in) calls += " " + call + " x" + std::to_string(count);
+    std::printf("[ device   ] %d device-memory allocations, each failed once, in:%s\n", total, calls.c_str());
+    // Blocks are made as the setup grows, not all at the context's creation.
+    EXPECT_GE(failed_in.size(), 2u) << calls;
 }
 
 TEST(DeviceFailure, EveryAllocationOfResponsiveGrassFailingInTurnGivesOutOfMemory) {

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cstring>
+#include <vector>
 
 namespace grass_test::vk_intercept {
 namespace {
@@ -16,6 +17,66 @@ struct Failure {
     int count = 0, skip = 0;
 } failure;
 int injected = 0;
+uint64_t heap_limit = 0;
+bool budget_emulated = false;
+VkPhysicalDevice last_physical_device = VK_NULL_HANDLE;
+PFN_vkGetPhysicalDeviceMemoryProperties real_vkGetPhysicalDeviceMemoryProperties = nullptr;
+PFN_vkGetPhysicalDeviceMemoryProperties2 real_vkGetPhysicalDeviceMemoryProperties2 = nullptr;
+PFN_vkEnumerateDeviceExtensionProperties real_vkEnumerateDeviceExtensionProperties = nullptr;
+
+VKAPI_ATTR VkResult VKAPI_CALL wrap_vkEnumerateDeviceExtensionProperties(VkPhysicalDevice pd, const char* layer,
+                                                                         uint32_t* count, VkExtensionProperties* out) {
+    if (!budget_emulated || layer) return real_vkEnumerateDeviceExtensionProperties(pd, layer, count, out);
+    uint32_t real_count = 0;
+    VkResult r = real_vkEnumerateDeviceExtensionProperties(pd, nullptr, &real_count, nullptr);
+    if (r != VK_SUCCESS) return r;
+    if (!out) {
+        *count = real_count + 1;
+        return VK_SUCCESS;
+    }
+    if (*count < real_count + 1) return VK_INCOMPLETE;
+    r = real_vkEnumerateDeviceExtensionProperties(pd, nullptr, &real_count, out);
+    if (r != VK_SUCCESS) return r;
+    VkExtensionProperties budget{};
+    std::strcpy(budget.extensionName, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
+    budget.specVersion = 1;
+    out[real_count] = budget;
+    *count = real_count + 1;
+    return VK_SUCCESS;
+}
+
+VKAPI_ATTR void VKAPI_CALL wrap_vkGetPhysicalDeviceMemoryProperties2(VkPhysicalDevice pd,
+                                                                     VkPhysicalDeviceMemoryProperties2* out) {
+    VkPhysicalDeviceMemoryBudgetPropertiesEXT* budget = nullptr;
+    if (budget_emulated) { // take the budget struct out of the chain the driver sees
+        for (VkBaseOutStructure* s = reinterpret_cast<VkBaseOutStructure*>(out); s && s->pNext;) {
+            if (s->pNext->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_BUDGET_PROPERTIES_EXT) {
+                budget = reinterpret_cast<VkPhysicalDeviceMemoryBudgetPropertiesEXT*>(s->pNext);
+                s->pNext = s->pNext->pNext;
+            } else {
+                s = s->pNext;
+            }
+        }
+    }
+    real_vkGetPhysicalDeviceMemoryProperties2(pd, out);
+    if (budget) {
+        for (uint32_t h = 0; h < VK_MAX_MEMORY_HEAPS; ++h) {
+            budget->heapBudget[h] = h < out->memoryProperties.memoryHeapCount ? emulated_budget(h) : 0;
+            budget->heapUsage[h] = h < out->memoryProperties.memoryHeapCount ? emulated_usage(h) : 0;
+        }
+        budget->pNext = out->pNext; // back in the caller's chain, first after the head
+        out->pNext = budget;
+    }
+}
+
+VKAPI_ATTR void VKAPI_CALL wrap_vkGetPhysicalDeviceMemoryProperties(VkPhysicalDevice pd,
+                                                                    VkPhysicalDeviceMemoryProperties* out) {
+    last_physical_device = pd;
+    real_vkGetPhysicalDeviceMemoryProperties(pd, out);
+    for (uint32_t h = 0; h < out->memoryHeapCount && heap_limit > 0; ++h) {
+        if (out->memoryHeaps[h].size > heap_limit) out->memoryHeaps[h].size = heap_limit;
+    }
+}
 
 // True (and counted) when this call of `call` is to fail.
 bool fails(const char* call) {
@@ -162,6 +223,18 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL wrap_vkGetDeviceProcAddr(VkDevice devic
 
 void (*wrap_get_instance_proc_addr(void* instance, const char* name))(void) {
     const PFN_vkVoidFunction real = vkGetInstanceProcAddr(static_cast<VkInstance>(instance), name);
+    if (real && std::strcmp(name, "vkGetPhysicalDeviceMemoryProperties2") == 0) {
+        real_vkGetPhysicalDeviceMemoryProperties2 = reinterpret_cast<PFN_vkGetPhysicalDeviceMemoryProperties2>(real);
+        return reinterpret_cast<PFN_vkVoidFunction>(&wrap_vkGetPhysicalDeviceMemoryProperties2);
+    }
+    if (real && std::strcmp(name, "vkEnumerateDeviceExtensionProperties") == 0) {
+        real_vkEnumerateDeviceExtensionProperties = reinterpret_cast<PFN_vkEnumerateDeviceExtensionProperties>(real);
+        return reinterpret_cast<PFN_vkVoidFunction>(&wrap_vkEnumerateDeviceExtensionProperties);
+    }
+    if (real && std::strcmp(name, "vkGetPhysicalDeviceMemoryProperties") == 0) {
+        real_vkGetPhysicalDeviceMemoryProperties = reinterpret_cast<PFN_vkGetPhysicalDeviceMemoryProperties>(real);
+        return reinterpret_cast<PFN_vkVoidFunction>(&wrap_vkGetPhysicalDeviceMemoryProperties);
+    }
     if (real && std::strcmp(name, "vkGetDeviceProcAddr") == 0) {
         real_device_proc_addr = reinterpret_cast<PFN_vkGetDeviceProcAddr>(real);
         return reinterpret_cast<PFN_vkVoidFunction>(&wrap_vkGetDeviceProcAddr);
@@ -181,6 +254,26 @@ void fail_calls(const char* call, int32_t vk_result, int count, int skip) {
 }
 
 void clear_failures() { failure = Failure{}; }
+void limit_heaps(uint64_t bytes) { heap_limit = bytes; }
+void emulate_memory_budget(bool on) { budget_emulated = on; }
+uint64_t emulated_budget(uint32_t heap) { return (uint64_t{3} << 30) + heap; }
+uint64_t emulated_usage(uint32_t heap) { return (uint64_t{123} << 20) + heap; }
+
+bool driver_has_memory_budget() {
+    if (!last_physical_device || !real_vkEnumerateDeviceExtensionProperties) return false;
+    uint32_t count = 0;
+    if (real_vkEnumerateDeviceExtensionProperties(last_physical_device, nullptr, &count, nullptr) != VK_SUCCESS) {
+        return false;
+    }
+    std::vector<VkExtensionProperties> extensions(count);
+    if (real_vkEnumerateDeviceExtensionProperties(last_physical_device, nullptr, &count, extensions.data()) < 0) {
+        return false;
+    }
+    for (const VkExtensionProperties& e : extensions) {
+        if (std::strcmp(e.extensionName, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME) == 0) return true;
+    }
+    return false;
+}
 int failures_injected() { return injected; }
 Live live() { return counts; }
 

@@ -21,6 +21,22 @@ void fail_calls(const char* call, int32_t vk_result, int count = 1, int skip = 0
 void clear_failures();
 int failures_injected();
 
+// Every memory heap grass is told of (vkGetPhysicalDeviceMemoryProperties) is at most `bytes`
+// large (0: as the driver says): a device with small heaps, whose device-memory blocks are
+// small, so that a scene needs several of them.
+void limit_heaps(uint64_t bytes);
+
+// A device with VK_EXT_memory_budget, whatever the driver has: the extension is listed
+// (vkEnumerateDeviceExtensionProperties) and vkGetPhysicalDeviceMemoryProperties2 answers a
+// VkPhysicalDeviceMemoryBudgetPropertiesEXT with heapBudget[h] = emulated_budget(h) and
+// heapUsage[h] = emulated_usage(h) (the driver sees the chain without it).
+void emulate_memory_budget(bool on);
+uint64_t emulated_budget(uint32_t heap);
+uint64_t emulated_usage(uint32_t heap);
+// Whether the driver itself lists VK_EXT_memory_budget for the physical device grass was
+// given (known once a context was made).
+bool driver_has_memory_budget();
+
 // Objects grass created and has not destroyed: buffers, images, image views, memory
 // allocations, samplers, descriptor pools, pipelines (graphics and compute), query pools.
 struct Live {

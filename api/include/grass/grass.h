@@ -329,6 +329,9 @@ GRASS_API grass_backend grass_get_context_backend(const grass_context* context);
  * next call on the context. */
 GRASS_API const char* grass_get_last_error(const grass_context* context);
 
+/* The most memory heaps a device reports (Vulkan's VK_MAX_MEMORY_HEAPS). */
+#define GRASS_MAX_MEMORY_HEAPS 16
+
 typedef struct grass_memory_stats {
     uint64_t host_bytes;       /* host memory the context holds now, through its allocator */
     uint64_t host_allocations; /* live host allocations */
@@ -341,6 +344,25 @@ typedef struct grass_memory_stats {
      * context that never had wind or colliders. Bounded by grass_interaction_desc: it does
      * not grow with the fields, the time or the number of colliders. */
     uint64_t dynamics_gpu_bytes;
+    /* 0.5, the device memory per heap (Vulkan). gpu_bytes above is what grass's resources
+     * take; grass allocates device memory in blocks per memory type (docs/integration.md,
+     * "Memory"), so a heap's heap_allocated is at least its heap_in_use. Heap h is the
+     * device's VkPhysicalDeviceMemoryProperties::memoryHeaps[h]; entries from heap_count on
+     * are 0. GL reports no heap (heap_count 0, every entry 0): OpenGL has no portable
+     * query of device memory, and Mesa's llvmpipe has none at all; gpu_bytes stays what grass's
+     * buffers and textures take. */
+    uint32_t heap_count;                             /* the device's memory heaps; 0 on GL and without a GPU */
+    uint32_t heap_budget_known;                      /* 1: heap_budget and heap_usage are filled */
+    uint64_t device_allocations;                     /* live vkAllocateMemory of grass (blocks + dedicated) */
+    uint64_t heap_size[GRASS_MAX_MEMORY_HEAPS];      /* bytes of each heap */
+    uint64_t heap_allocated[GRASS_MAX_MEMORY_HEAPS]; /* device memory grass allocated on the heap */
+    uint64_t heap_in_use[GRASS_MAX_MEMORY_HEAPS];    /* of it, bytes bound to grass's resources */
+    /* Where the device has VK_EXT_memory_budget (heap_budget_known 1), read at this call
+     * (grass queries it on the physical device; the host need not enable the extension):
+     * heap_budget: what the whole process can allocate on the heap without degrading;
+     * heap_usage: what the whole process, not only grass, has allocated there. Else 0. */
+    uint64_t heap_budget[GRASS_MAX_MEMORY_HEAPS];
+    uint64_t heap_usage[GRASS_MAX_MEMORY_HEAPS];
 } grass_memory_stats;
 
 GRASS_API grass_result grass_get_memory_stats(const grass_context* context, grass_memory_stats* out_stats);

@@ -50,6 +50,16 @@ typedef struct grass_vk_desc {
     uint32_t depth_format;     /* VkFormat of the depth attachment, required */
     uint32_t sample_count;     /* VkSampleCountFlagBits of the pass: 1, 2, 4, 8...; default 1 */
     uint32_t frames_in_flight; /* 1..8; default 2 */
+    /* 0.5: the host's host-memory allocator for Vulkan objects: a const VkAllocationCallbacks*,
+     * or NULL (default: the driver's). grass copies the struct; its pUserData must stay valid
+     * until the context is destroyed. Every vkCreate*, vkDestroy*, vkAllocateMemory and
+     * vkFreeMemory grass makes passes it (each object is destroyed with the callbacks it was
+     * made with). pfnAllocation, pfnReallocation and pfnFree are required, and
+     * pfnInternalAllocation and pfnInternalFree are both set or both NULL (Vulkan's rule);
+     * otherwise GRASS_ERROR_INVALID_ARGUMENT. Read only from hosts built against grass.h 0.5
+     * or later. Device memory itself is grass's own: a few blocks per memory type
+     * (docs/integration.md, "Memory"). */
+    const void* allocation_callbacks;
 } grass_vk_desc;
 
 GRASS_API grass_vk_desc grass_default_vk_desc(void);

@@ -83,6 +83,9 @@ public:
     // Responsive grass: the part of gpu_bytes() that it holds: the interaction map's levels
     // and the uploaded blade curves (grass_memory_stats.dynamics_gpu_bytes).
     virtual uint64_t dynamics_gpu_bytes() const = 0;
+    // The device memory per heap (grass_memory_stats from heap_count on); a backend that
+    // cannot tell leaves them 0.
+    virtual void device_memory(grass_memory_stats* stats) const { (void)stats; }
 
     // grass_get_tier_gpu_ms: the GPU milliseconds of each tier kind in the most recent frame
     // whose timer queries have finished, read without waiting (a backend may poll its

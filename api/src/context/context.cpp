@@ -237,6 +237,7 @@ GRASS_API grass_result grass_get_memory_stats(const grass_context* context, gras
     stats.gpu_bytes = context->backend ? context->backend->gpu_bytes() : 0;
     stats.host_bytes_peak = context->host.bytes_peak();
     stats.dynamics_gpu_bytes = context->backend ? context->backend->dynamics_gpu_bytes() : 0;
+    if (context->backend) context->backend->device_memory(&stats);
     grass::write_out_struct(context->header_minor, stats, out_stats);
     return GRASS_SUCCESS;
 }

@@ -16,8 +16,10 @@ constexpr size_t kMemoryStats04 = kMemoryStats03 + 8; // + host_bytes_peak
 constexpr size_t kPatchInfo04 = kPatchInfo03;
 
 // Sizes in grass.h 0.5 (the current header).
-constexpr size_t kFrameStats05 = kFrameStats04 + 32;  // + colliders, colliders_in_map, interaction_texels, time_step
-constexpr size_t kMemoryStats05 = kMemoryStats04 + 8; // + dynamics_gpu_bytes
+constexpr size_t kFrameStats05 = kFrameStats04 + 32; // + colliders, colliders_in_map, interaction_texels, time_step
+// + dynamics_gpu_bytes; heap_count, heap_budget_known, device_allocations and five arrays of
+// GRASS_MAX_MEMORY_HEAPS uint64 (the per-heap device memory)
+constexpr size_t kMemoryStats05 = kMemoryStats04 + 8 + 16 + 5 * 16 * 8;
 constexpr size_t kPatchInfo05 = kPatchInfo04;
 
 static_assert(GRASS_VERSION_MAJOR == 0 && GRASS_VERSION_MINOR == 5,
@@ -29,6 +31,9 @@ static_assert(offsetof(grass_frame_stats, draws) == kFrameStats03, "0.4 fields c
 static_assert(offsetof(grass_memory_stats, host_bytes_peak) == kMemoryStats03, "0.4 fields come after the 0.3 ones");
 static_assert(offsetof(grass_frame_stats, colliders) == kFrameStats04, "0.5 fields come after the 0.4 ones");
 static_assert(offsetof(grass_memory_stats, dynamics_gpu_bytes) == kMemoryStats04, "0.5 fields come after the 0.4 ones");
+static_assert(offsetof(grass_memory_stats, heap_count) == kMemoryStats04 + 8,
+              "the heaps come after dynamics_gpu_bytes");
+static_assert(GRASS_MAX_MEMORY_HEAPS == 16, "GRASS_MAX_MEMORY_HEAPS is part of the ABI: it never changes");
 
 } // namespace
 

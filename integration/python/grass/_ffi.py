@@ -22,6 +22,7 @@ DEFINES = {
     "GRASS_MAX_GRASS_TYPES": 8,
     "GRASS_MAX_WIND_SOURCES": 16,
     "GRASS_MAX_COLLIDERS": 65536,
+    "GRASS_MAX_MEMORY_HEAPS": 16,
 }
 DEFINES["GRASS_HEADER_VERSION"] = ((DEFINES["GRASS_VERSION_MAJOR"] << 22) | (DEFINES["GRASS_VERSION_MINOR"] << 12)
                                    | DEFINES["GRASS_VERSION_PATCH"])
@@ -126,9 +127,16 @@ class grass_context_desc(Structure):
                 ("cache_directory", c_char_p)]
 
 
+_HEAPS = DEFINES["GRASS_MAX_MEMORY_HEAPS"]
+
+
 class grass_memory_stats(Structure):
     _fields_ = [("host_bytes", c_uint64), ("host_allocations", c_uint64), ("gpu_bytes", c_uint64),
-                ("host_bytes_peak", c_uint64), ("dynamics_gpu_bytes", c_uint64)]
+                ("host_bytes_peak", c_uint64), ("dynamics_gpu_bytes", c_uint64), ("heap_count", c_uint32),
+                ("heap_budget_known", c_uint32), ("device_allocations", c_uint64),
+                ("heap_size", c_uint64 * _HEAPS), ("heap_allocated", c_uint64 * _HEAPS),
+                ("heap_in_use", c_uint64 * _HEAPS), ("heap_budget", c_uint64 * _HEAPS),
+                ("heap_usage", c_uint64 * _HEAPS)]
 
 
 class grass_patch_id(Structure):
@@ -291,7 +299,8 @@ class grass_vk_desc(Structure):
                 ("get_instance_proc_addr", grass_vk_get_instance_proc_addr_fn), ("instance", c_void_p),
                 ("physical_device", c_void_p), ("device", c_void_p), ("queue_family", c_uint32),
                 ("render_pass", c_uint64), ("subpass", c_uint32), ("color_format", c_uint32),
-                ("depth_format", c_uint32), ("sample_count", c_uint32), ("frames_in_flight", c_uint32)]
+                ("depth_format", c_uint32), ("sample_count", c_uint32), ("frames_in_flight", c_uint32),
+                ("allocation_callbacks", c_void_p)]
 
 
 class grass_vk_record_desc(Structure):
