@@ -85,12 +85,11 @@ grass_result VkBackend::seed_pipeline_cache(const char* function, const void* da
     info.pInitialData = payload;
     VkPipelineCache seeded = VK_NULL_HANDLE;
     VkFailure failure;
-    if (!vk_ok(fn_.vkCreatePipelineCache(device_.device, &info, nullptr, &seeded), "vkCreatePipelineCache",
-               &failure)) {
+    if (!vk_ok(fn_.vkCreatePipelineCache(device_.device, &info, nullptr, &seeded), "vkCreatePipelineCache", &failure)) {
         return fail(function, "a pipeline cache of desc->cache_data", failure);
     }
-    const bool merged = vk_ok(fn_.vkMergePipelineCaches(device_.device, own_cache_, 1, &seeded),
-                              "vkMergePipelineCaches", &failure);
+    const bool merged =
+        vk_ok(fn_.vkMergePipelineCaches(device_.device, own_cache_, 1, &seeded), "vkMergePipelineCaches", &failure);
     fn_.vkDestroyPipelineCache(device_.device, seeded, nullptr);
     return merged ? GRASS_SUCCESS : fail(function, "grass's pipeline cache", failure);
 }

@@ -130,8 +130,8 @@ void make_scene(Scene* s, grass_backend backend, bool host_cache = false, bool b
 grass_view_desc scene_view(const Scene& s) {
     const double far_eye[3] = {8.0, 2.0, -1.0}, far_look[3] = {8.0, 0.0, 10.0};
     const double near_eye[3] = {2.0, 1.2, -0.4}, near_look[3] = {2.0, 0.0, 2.0};
-    return grass_host::make_view(*s.host, s.blade_only ? near_eye : far_eye, s.blade_only ? near_look : far_look,
-                                 50.0f, 0.05f, 200.0f);
+    return grass_host::make_view(*s.host, s.blade_only ? near_eye : far_eye, s.blade_only ? near_look : far_look, 50.0f,
+                                 0.05f, 200.0f);
 }
 
 void render(Scene& s, double time, uint32_t flags = 0) {
@@ -220,9 +220,9 @@ TEST_P(PreparePipelines, NoPipelineIsCreatedInAFrameAfterPreparation) {
     make_scene(&s, GetParam(), false, !gl);
     ASSERT_FALSE(HasFatalFailure());
     grass_pipeline_desc pipelines = grass_default_pipeline_desc();
-    pipelines.features = gl ? GRASS_PIPELINE_FEATURE_ALL
-                            : GRASS_PIPELINE_FEATURE_WIND | GRASS_PIPELINE_FEATURE_INTERACTION |
-                                  GRASS_PIPELINE_FEATURE_DEBUG_VIEWS;
+    pipelines.features =
+        gl ? GRASS_PIPELINE_FEATURE_ALL
+           : GRASS_PIPELINE_FEATURE_WIND | GRASS_PIPELINE_FEATURE_INTERACTION | GRASS_PIPELINE_FEATURE_DEBUG_VIEWS;
     const int64_t before = made(s.backend);
     ASSERT_EQ(grass_prepare_pipelines(s.ctx, &pipelines), GRASS_SUCCESS) << s.log;
     EXPECT_GT(made(s.backend), before) << "preparation compiled nothing";
@@ -403,7 +403,7 @@ TEST(PipelineBlob, GlRoundTripAndBadBlobs) {
     ASSERT_FALSE(HasFatalFailure());
     GLint formats = 0;
     reinterpret_cast<PFNGLGETINTEGERVPROC>(s.host->gl_proc_address("glGetIntegerv"))(GL_NUM_PROGRAM_BINARY_FORMATS,
-                                                                                    &formats);
+                                                                                     &formats);
     grass_pipeline_desc all = grass_default_pipeline_desc();
     all.features = GRASS_PIPELINE_FEATURE_ALL;
     int64_t links = gl_counts.links;

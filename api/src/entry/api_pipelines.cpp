@@ -43,19 +43,25 @@ GRASS_API grass_result grass_prepare_pipelines(grass_context* context, const gra
         }
         if ((desc->cache_data == nullptr) != (desc->cache_data_size == 0)) {
             return context->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
-                                 "%s: desc->cache_data is %s with desc->cache_data_size %llu; give both or neither",
-                                 fn, desc->cache_data ? "set" : "NULL",
+                                 "%s: desc->cache_data is %s with desc->cache_data_size %llu; give both or neither", fn,
+                                 desc->cache_data ? "set" : "NULL",
                                  static_cast<unsigned long long>(desc->cache_data_size));
         }
-        if (desc->cache_data) GRASS_TRY(context->backend->seed_pipeline_cache(fn, desc->cache_data, desc->cache_data_size));
+        if (desc->cache_data)
+            GRASS_TRY(context->backend->seed_pipeline_cache(fn, desc->cache_data, desc->cache_data_size));
         // The union with what was declared before: nothing made is released, and a field
         // created later gets every variant declared so far.
-        const uint32_t declared = context->prepared_features | grass::declared_feature_bits(desc->features);
+        const uint32_t before = context->prepared_features;
         const bool interaction = (desc->features & GRASS_PIPELINE_FEATURE_INTERACTION) != 0;
         if (interaction) GRASS_TRY(context->backend->prepare_variants(fn, nullptr, 0, true));
-        context->prepared_features = declared;
-        for (uint32_t slot = 0; slot < context->fields.capacity(); ++slot)
-            GRASS_TRY(grass::prepare_field_variants(context, fn, slot));
+        context->prepared_features = before | grass::declared_feature_bits(desc->features);
+        for (uint32_t slot = 0; slot < context->fields.capacity(); ++slot) {
+            const grass_result r = grass::prepare_field_variants(context, fn, slot);
+            if (r != GRASS_SUCCESS) { // what was compiled stays; the declaration is the earlier one
+                context->prepared_features = before;
+                return r;
+            }
+        }
         return GRASS_SUCCESS;
     });
 }
