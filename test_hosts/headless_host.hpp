@@ -54,6 +54,9 @@ struct TargetDesc {
     void (*(*vk_get_instance_proc_addr)(void* instance, const char* name))(void) = nullptr;
     // Vulkan: grass_vk_desc::allocation_callbacks (a const VkAllocationCallbacks*); grass only.
     const void* vk_allocation_callbacks = nullptr;
+    // Vulkan: the host makes a VkPipelineCache of its own and hands it to grass
+    // (grass_vk_desc.pipeline_cache); Host::vk_pipeline_cache() names it.
+    bool vk_host_pipeline_cache = false;
     // GL: given each GL entry point grass asks the host's loader for (its name and the real
     // one), returns the one grass gets; nullptr: the real ones. For fault-injection tests.
     void (*(*gl_proc_filter)(const char* name, void (*real)(void)))(void) = nullptr;
@@ -123,6 +126,9 @@ public:
         if (movable_meshes_) movable_meshes_->set_origin(index, origin);
     }
     virtual std::string validation_log() const { return log_; }
+    // Vulkan hosts with TargetDesc::vk_host_pipeline_cache: the VkPipelineCache given to
+    // grass (a non-dispatchable handle); 0 otherwise.
+    virtual uint64_t vk_pipeline_cache() const { return 0; }
 
     // GL hosts: the address of a GL entry point in the host's context, which stays current
     // on the creating thread (for tests that inspect GL state). Others return nullptr.

@@ -49,6 +49,7 @@ public:
 
     grass_backend backend() const override { return GRASS_BACKEND_VULKAN; }
     grass_result create_context(const grass_context_desc& desc, grass_context** out) override;
+    uint64_t vk_pipeline_cache() const override { return reinterpret_cast<uint64_t>(pipeline_cache_); }
     void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const override;
     grass_result render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
                         std::string* error) override;
@@ -78,6 +79,7 @@ private:
     VkPhysicalDeviceProperties properties_{};
     VkPhysicalDeviceMemoryProperties memory_properties_{};
     VkDevice device_ = VK_NULL_HANDLE;
+    VkPipelineCache pipeline_cache_ = VK_NULL_HANDLE; // target.vk_host_pipeline_cache
     uint32_t queue_family_ = 0;
     VkQueue queue_ = VK_NULL_HANDLE;
     bool dynamic_rendering_ = false; // the feature is enabled on the device
@@ -385,6 +387,7 @@ VkHost::~VkHost() {
         movable_meshes_ = nullptr;
         meshes_.reset();
         if (ground_pipeline_) vkDestroyPipeline(device_, ground_pipeline_, nullptr);
+        if (pipeline_cache_) vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
         if (ground_layout_) vkDestroyPipelineLayout(device_, ground_layout_, nullptr);
         if (ground_pool_) vkDestroyDescriptorPool(device_, ground_pool_, nullptr); // frees ground_set_
         if (ground_set_layout_) vkDestroyDescriptorSetLayout(device_, ground_set_layout_, nullptr);
@@ -475,6 +478,11 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     vk.sample_count = samples_;
     vk.frames_in_flight = 2;
     vk.allocation_callbacks = target_.vk_allocation_callbacks;
+    if (target_.vk_host_pipeline_cache && !pipeline_cache_) {
+        VkPipelineCacheCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+        if (vkCreatePipelineCache(device_, &info, nullptr, &pipeline_cache_) != VK_SUCCESS) return GRASS_ERROR_BACKEND;
+    }
+    vk.pipeline_cache = reinterpret_cast<uint64_t>(pipeline_cache_);
     return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
 }
 

@@ -60,7 +60,7 @@ const char* gl_error_name(GLenum error) {
 } // namespace
 
 GlBackend::GlBackend(grass_context* ctx)
-    : ctx_(ctx), uniform_staging_(StlAllocator<unsigned char>(&ctx->host)),
+    : ctx_(ctx), program_cache_(ctx), uniform_staging_(StlAllocator<unsigned char>(&ctx->host)),
       field_uniform_offsets_(StlAllocator<GLintptr>(&ctx->host)), patches_(StlAllocator<PatchGpu>(&ctx->host)),
       slices_(StlAllocator<SliceGpu>(&ctx->host)), fields_(StlAllocator<FieldGpu>(&ctx->host)),
       maps_(StlAllocator<MapGpu>(&ctx->host)) {}
@@ -104,6 +104,7 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     GLint flags = 0;
     gl_.GetIntegerv(GL_CONTEXT_FLAGS, &flags);
     debug_context_ = (flags & GL_CONTEXT_FLAG_DEBUG_BIT) != 0;
+    program_cache_.init(gl_, shader_sources_hash());
 
     // The variants of fields without design maps; the others come with their fields.
     grass_result result = GRASS_SUCCESS;
@@ -188,6 +189,10 @@ grass_result GlBackend::program(GlProgramKind kind, uint32_t features, const cha
     features &= kFeatureVariants - 1;
     if (kind == kProgramDebugTiers) features &= kDebugBoxFeatures; // the boxes sample the height map only
     GLuint& cached = programs_[kind][features];
+    if (cached == 0) {
+        cached = program_cache_.load(gl_, function, kind, features);
+        if (cached != 0) set_sampler_units(gl_, cached);
+    }
     if (cached == 0) {
         const grass_result result = create_program(ctx_, gl_, function, kind, features, &cached);
         if (result != GRASS_SUCCESS) return result;

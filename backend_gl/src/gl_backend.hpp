@@ -6,6 +6,7 @@
 
 #include "gl_functions.hpp"
 #include "gl_program.hpp"
+#include "gl_program_cache.hpp"
 #include "gl_stream_buffer.hpp"
 
 #include "context/backend.hpp"
@@ -38,6 +39,11 @@ public:
     grass_result upload_field(uint32_t slot, const FieldMaps& maps) override;
     void release_field(uint32_t slot) override;
     void set_field_wind_map(uint32_t slot, uint32_t map_slot) override;
+    // gl_prepare.cpp: grass_prepare_pipelines and the program binaries.
+    grass_result prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
+                                  bool interaction_pass) override;
+    grass_result seed_pipeline_cache(const char* function, const void* data, uint64_t size) override;
+    grass_result pipeline_cache_data(const char* function, void* data, uint64_t* size) override;
     grass_result begin_frame(const FramePlan& plan) override;
     void end_frame() override;
     uint64_t gpu_bytes() const override;
@@ -138,6 +144,7 @@ private:
     bool loaded_ = false; // gl_ holds every entry point
     GlFunctions gl_;
     GLuint programs_[kProgramKindCount][kFeatureVariants] = {}; // 0: not compiled yet
+    GlProgramCache program_cache_;                              // program binaries: seeded by grass_prepare_pipelines
     GLuint tier_vertex_array_ = 0; // instances only: the volume and image tiers, debug boxes
     char context_label_[48] = {};  // tier_vertex_array_'s label (label_context)
     GLsizei context_label_length_ = 0;
@@ -164,7 +171,8 @@ private:
     TierTimerRing timer_ring_{kTimerSets, TierTimerRing::WhenBusy::skip_frame};
     bool frame_timer_opened_ = false; // the first render of the frame has opened its set
     // Responsive grass.
-    GLuint interaction_program_ = 0;      // compiled on the first frame with an interaction pass
+    GLuint interaction_program_ = 0; // compiled on the first frame with an interaction pass (or prepared)
+    grass_result make_interaction_program(const char* function);
     GLuint interaction_maps_[2] = {};     // GL_RGBA32F, one per level
     uint32_t interaction_resolution_ = 0; // N of the textures made
     uint32_t interaction_levels_ = 0;     // levels made

@@ -175,12 +175,10 @@ grass_result GlBackend::render(const char* function) {
     // Every program variant the plan draws with (upload_field compiled the fields' tiers';
     // the debug view's are compiled on first use). Compiling binds nothing.
     for (const TierDraw& draw : plan.draws) {
-        const GlProgramKind kind = debug                              ? kProgramDebugTiers
-                                   : draw.kind == GRASS_TIER_GEOMETRY ? kProgramBlades
-                                   : draw.kind == GRASS_TIER_VOLUME   ? kProgramVolume
-                                                                      : kProgramImage;
+        const ShaderVariant variant = draw_variant(draw, plan.flags);
         GLuint unused = 0;
-        const grass_result result = program(kind, draw.features, function, &unused);
+        const grass_result result =
+            program(static_cast<GlProgramKind>(variant.program), variant.features, function, &unused);
         if (result != GRASS_SUCCESS) return result;
     }
     GLint sample_buffers = 0, samples = 0;

@@ -88,7 +88,7 @@ grass_result GlBackend::run_interaction_pass(const FramePlan& plan, const char* 
     const uint32_t levels = pass.levels < 2 ? pass.levels : 2;
     if (levels == 0) return GRASS_SUCCESS;
     if (interaction_program_ == 0) {
-        const grass_result result = create_interaction_program(ctx_, gl_, function, &interaction_program_);
+        const grass_result result = make_interaction_program(function);
         if (result != GRASS_SUCCESS) return result;
     }
     // The map's textures: made (cleared) when the core makes the map, or if they are missing

@@ -36,6 +36,9 @@
     X(PFNGLATTACHSHADERPROC, AttachShader)                                           \
     X(PFNGLDETACHSHADERPROC, DetachShader)                                           \
     X(PFNGLLINKPROGRAMPROC, LinkProgram)                                             \
+    X(PFNGLPROGRAMBINARYPROC, ProgramBinary)                                         \
+    X(PFNGLGETPROGRAMBINARYPROC, GetProgramBinary)                                   \
+    X(PFNGLPROGRAMPARAMETERIPROC, ProgramParameteri)                                 \
     X(PFNGLGETPROGRAMIVPROC, GetProgramiv)                                           \
     X(PFNGLGETPROGRAMINFOLOGPROC, GetProgramInfoLog)                                 \
     X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                               \

@@ -1,5 +1,7 @@
 #include "gl_program.hpp"
 
+#include "patch/random.hpp"
+
 #include <cstdio>
 #include <cstring>
 
@@ -123,6 +125,8 @@ grass_result link(grass_context* ctx, const GlFunctions& gl, const char* functio
                          function);
     }
     for (int i = 0; i < shader_count; ++i) gl.AttachShader(program, shaders[i]);
+    // grass_get_pipeline_cache_data may ask for its binary (gl_program_cache.hpp).
+    gl.ProgramParameteri(program, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
     gl.LinkProgram(program);
     for (int i = 0; i < shader_count; ++i) {
         gl.DetachShader(program, shaders[i]);
@@ -169,12 +173,26 @@ grass_result create_program(grass_context* ctx, const GlFunctions& gl, const cha
     result = link(ctx, gl, function, source.name, features, shaders, 2, &program);
     if (result != GRASS_SUCCESS) return result;
 
+    set_sampler_units(gl, program);
+    *out_program = program;
+    return GRASS_SUCCESS;
+}
+
+void set_sampler_units(const GlFunctions& gl, GLuint program) {
     for (const SamplerUnit& sampler : kSamplerUnits) {
         const GLint location = gl.GetUniformLocation(program, sampler.name);
         if (location >= 0) gl.ProgramUniform1i(program, location, sampler.unit);
     }
-    *out_program = program;
-    return GRASS_SUCCESS;
+}
+
+uint64_t shader_sources_hash() {
+    const char* const sources[] = {
+        grass_gl_shaders::blade_vert,       grass_gl_shaders::blade_frag,  grass_gl_shaders::debug_tiers_vert,
+        grass_gl_shaders::debug_tiers_frag, grass_gl_shaders::image_vert,  grass_gl_shaders::image_frag,
+        grass_gl_shaders::volume_vert,      grass_gl_shaders::volume_frag, grass_gl_shaders::interaction_comp};
+    uint64_t hash = kFnvOffset;
+    for (const char* source : sources) hash = fnv1a64(source, std::strlen(source) + 1, hash);
+    return hash;
 }
 
 } // namespace grass

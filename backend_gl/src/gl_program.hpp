@@ -7,6 +7,7 @@
 
 #include "context/context.hpp"
 #include "foundation/shader_interface.hpp"
+#include "foundation/shader_variants.hpp"
 
 namespace grass {
 
@@ -31,6 +32,11 @@ enum GlProgramKind : uint32_t {
     kProgramDebugTiers = 3, // debug_tiers.vert + debug_tiers.frag (GRASS_VIEW_FLAG_DEBUG_CELLS)
     kProgramKindCount = 4
 };
+static_assert(kProgramBlades == static_cast<uint32_t>(kShaderBlades) &&
+                  kProgramVolume == static_cast<uint32_t>(kShaderVolume) &&
+                  kProgramImage == static_cast<uint32_t>(kShaderImage) &&
+                  kProgramDebugTiers == static_cast<uint32_t>(kShaderDebugBoxes),
+              "the programs of foundation/shader_variants.hpp");
 // Every feature mask: the design maps' bits, then kFeatureWind, kFeatureInteraction,
 // kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView (backend.hpp).
 constexpr uint32_t kFeatureVariants = kFeatureMaskCount;
@@ -62,6 +68,14 @@ constexpr GLuint kInteractionImageUnit = 0;
 // (named after `function`) and nothing is left behind.
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
                             uint32_t features, GLuint* out_program);
+
+// Points the sampler uniforms of `program` at their texture units (after linking, and after
+// glProgramBinary, which resets every uniform).
+void set_sampler_units(const GlFunctions& gl, GLuint program);
+
+// FNV-1a 64 over every embedded shader source: a program binary saved with other sources is
+// not loaded (gl_program_cache.hpp).
+uint64_t shader_sources_hash();
 
 // Compiles and links the interaction pass (interaction.comp), likewise.
 grass_result create_interaction_program(grass_context* ctx, const GlFunctions& gl, const char* function,

@@ -30,11 +30,17 @@ grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** 
     }
     grass_result r = grass::vk::check_vk_desc(ctx, function, vk_desc);
     if (r != GRASS_SUCCESS) return r;
+    // A host built against grass_vk.h 0.3 or 0.4 passed the struct up to frames_in_flight:
+    // the fields 0.5 added read as 0 (their defaults).
+    grass_vk_desc copy{};
+    const size_t bytes =
+        ctx->header_minor >= 5 ? sizeof copy : offsetof(grass_vk_desc, frames_in_flight) + sizeof(uint32_t);
+    std::memcpy(&copy, vk_desc, bytes);
     grass::vk::Device device;
-    r = grass::vk::load_device(ctx, function, *vk_desc, &device);
+    r = grass::vk::load_device(ctx, function, copy, &device);
     if (r != GRASS_SUCCESS) return r;
 
-    VkBackend* backend = ctx->host.create<VkBackend>(ctx, *vk_desc, device);
+    VkBackend* backend = ctx->host.create<VkBackend>(ctx, copy, device);
     try {
         r = backend->init(function);
     } catch (...) {

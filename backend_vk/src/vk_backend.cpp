@@ -54,7 +54,9 @@ VkBackend::~VkBackend() {
     memory_.destroy_image(&default_slices_); // never retired
     deferred_.destroy_now(&default_curves_);
     if (timer_pool_ != VK_NULL_HANDLE) fn_.vkDestroyQueryPool(device_.device, timer_pool_, fn_.callbacks());
-    // The frame ring, pipelines and descriptor pools go with their members.
+    pipeline_.destroy();
+    destroy_pipeline_cache();
+    // The frame ring, interaction pass and descriptor pools go with their members.
 }
 
 grass_result VkBackend::fail(const char* function, const char* what, const VkFailure& failure) {
@@ -64,7 +66,10 @@ grass_result VkBackend::fail(const char* function, const char* what, const VkFai
 grass_result VkBackend::init(const char* function) {
     VkFailure failure;
     const char* what = "";
-    const PipelineTarget target = pipeline_target(ctx_, desc_, device_.indexed_blocks);
+    if (!create_pipeline_cache(&failure, &what)) return fail(function, what, failure);
+    interaction_.use_cache(cache_);
+    PipelineTarget target = pipeline_target(ctx_, desc_, device_.indexed_blocks);
+    target.cache = cache_;
     if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);
     create_timers();

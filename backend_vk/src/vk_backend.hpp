@@ -45,6 +45,11 @@ public:
     grass_result upload_field(uint32_t slot, const FieldMaps& maps) override;
     void release_field(uint32_t slot) override;
     void set_field_wind_map(uint32_t slot, uint32_t map_slot) override;
+    // vk_pipeline_cache.cpp: grass_prepare_pipelines and the pipeline cache.
+    grass_result prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
+                                  bool interaction_pass) override;
+    grass_result seed_pipeline_cache(const char* function, const void* data, uint64_t size) override;
+    grass_result pipeline_cache_data(const char* function, void* data, uint64_t* size) override;
     // The render pass's sample count (grass_vk_desc) and Vulkan's one clip convention, 0..1.
     RenderTarget render_target() const override {
         RenderTarget target;
@@ -130,6 +135,9 @@ private:
     void collect_timers();
 
     grass_result fail(const char* function, const char* what, const VkFailure& failure);
+    // The cache every pipeline goes through: the host's, or one of grass's own (init).
+    bool create_pipeline_cache(VkFailure* failure, const char** what);
+    void destroy_pipeline_cache();
     // What a set binds besides the uniforms and the field's maps: the slices of a volume or
     // image draw (bindings 3-5) and responsive grass (bindings 10-12).
     struct SetViews {
@@ -185,6 +193,8 @@ private:
     DescriptorAllocator descriptors_;
     FrameDescriptors frame_sets_; // the volume and image draws' sets, written per frame
     DeferredDeletion deferred_;
+    VkPipelineCache cache_ = VK_NULL_HANDLE;     // the host's (grass_vk_desc.pipeline_cache) or own_cache_
+    VkPipelineCache own_cache_ = VK_NULL_HANDLE; // grass's own, when the host gave none
     BladePipeline pipeline_;
     FrameRing ring_;
     UploadBatch batch_;

@@ -47,6 +47,10 @@ namespace grass::vk {
     X(vkCreateGraphicsPipelines)     \
     X(vkCreateComputePipelines)      \
     X(vkDestroyPipeline)             \
+    X(vkCreatePipelineCache)         \
+    X(vkDestroyPipelineCache)        \
+    X(vkGetPipelineCacheData)        \
+    X(vkMergePipelineCaches)         \
     X(vkCreateDescriptorPool)        \
     X(vkDestroyDescriptorPool)       \
     X(vkAllocateDescriptorSets)      \

@@ -116,7 +116,7 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
     info.stage.pName = "main";
     info.layout = layout_;
     *what = "the interaction pass's compute pipeline";
-    const bool ok = vk_ok(fn_.vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, fn_.callbacks(), &pipeline_),
+    const bool ok = vk_ok(fn_.vkCreateComputePipelines(device_, cache_, 1, &info, fn_.callbacks(), &pipeline_),
                           "vkCreateComputePipelines", failure);
     fn_.vkDestroyShaderModule(device_, module, fn_.callbacks());
     if (!ok) pipeline_ = VK_NULL_HANDLE;

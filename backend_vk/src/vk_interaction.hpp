@@ -47,6 +47,12 @@ public:
     // retired), grows the slot's buffer, fills it and writes the slot's sets. On failure
     // *what names the object and nothing the GPU uses has changed.
     bool prepare(uint32_t slot, uint64_t frame, const InteractionPlan& plan, VkFailure* failure, const char** what);
+    // Every pipeline goes through `cache` (VkBackend's: the host's or grass's own).
+    void use_cache(VkPipelineCache cache) { cache_ = cache; }
+    // Makes the pipeline unless it exists (grass_prepare_pipelines; prepare() otherwise).
+    bool ensure_pipeline(VkFailure* failure, const char** what) {
+        return pipeline_ != VK_NULL_HANDLE || create_pipeline(failure, what);
+    }
     // The core dropped the map (a plan without a pass): its images and the per-frame
     // buffers are retired (frames up to `frame` may use them); the pipeline stays.
     void release(uint64_t frame);
@@ -85,6 +91,7 @@ private:
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
+    VkPipelineCache cache_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE; // 2 sets per frame in flight, never freed one by one
     Image maps_[2];
     uint32_t levels_ = 0;        // levels of the map's images

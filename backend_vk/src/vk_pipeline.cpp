@@ -114,32 +114,39 @@ bool format_has_stencil(VkFormat format) {
 
 bool BladePipeline::create(const PipelineTarget& target, VkFailure* failure, const char** what) {
     target_ = target;
-    if (!create_layouts(failure, what) || !create_variant(0, failure, what)) {
+    if (!create_layouts(failure, what) || !create_variants(0, failure, what)) {
         destroy();
         return false;
     }
     return true;
 }
 
-bool BladePipeline::create_variant(uint32_t features, VkFailure* failure, const char** what) {
-    if (has_variant(features)) return true;
+bool BladePipeline::create_variant(const ShaderVariant& variant, VkFailure* failure, const char** what) {
+    if (variant.features >= kFeatureMaskCount) return false;
+    if (has_variant(variant)) return true;
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
-    const bool responsive = (features & kBladeCurveFeatures) != 0;
+    const bool responsive = (variant.features & kBladeCurveFeatures) != 0;
     const bool indexed = target_.indexed_blocks;
-    const PipelineShape shapes[kPipelineKindCount] = {
-        blade_shape(responsive, indexed), SlicePipelines::volume_shape(responsive, indexed),
-        SlicePipelines::image_shape(responsive, indexed), DebugViewPipeline::shape(indexed)};
-    for (uint32_t kind = 0; kind < kPipelineKindCount; ++kind) {
-        if (!create_pipeline_pair(fn_, device_, target_, layout_, shapes[kind], features, pipelines_[features][kind],
-                                  failure, what)) {
-            destroy_variant(features);
-            return false;
-        }
+    const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(responsive, indexed)
+                                : variant.program == kShaderVolume ? SlicePipelines::volume_shape(responsive, indexed)
+                                : variant.program == kShaderImage  ? SlicePipelines::image_shape(responsive, indexed)
+                                                                   : DebugViewPipeline::shape(indexed);
+    return create_pipeline_pair(fn_, device_, target_, layout_, shape, variant.features,
+                                pipelines_[variant.features][variant.program], failure, what);
+}
+
+bool BladePipeline::create_variants(uint32_t features, VkFailure* failure, const char** what) {
+    const ShaderVariant variants[] = {{kShaderBlades, features},
+                                      {kShaderVolume, features},
+                                      {kShaderImage, features},
+                                      {kShaderDebugBoxes, features & kDebugBoxFeatures}};
+    for (const ShaderVariant& v : variants) {
+        if (!create_variant(v, failure, what)) return false;
     }
     return true;
 }
 
-void BladePipeline::destroy_variant(uint32_t features) {
+void BladePipeline::destroy_variants(uint32_t features) {
     for (auto& pair : pipelines_[features]) {
         for (VkPipeline& p : pair) {
             if (p) fn_.vkDestroyPipeline(device_, p, fn_.callbacks());
@@ -149,7 +156,7 @@ void BladePipeline::destroy_variant(uint32_t features) {
 }
 
 void BladePipeline::destroy() {
-    for (uint32_t f = 0; f < kFeatureMaskCount; ++f) destroy_variant(f);
+    for (uint32_t f = 0; f < kFeatureMaskCount; ++f) destroy_variants(f);
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
     if (sampler_) fn_.vkDestroySampler(device_, sampler_, fn_.callbacks());
@@ -357,7 +364,7 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
     }
     if (ok) {
         *what = shape.name;
-        ok = vk_ok(fn.vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 2, infos, fn.callbacks(), out_pipelines),
+        ok = vk_ok(fn.vkCreateGraphicsPipelines(device, target.cache, 2, infos, fn.callbacks(), out_pipelines),
                    "vkCreateGraphicsPipelines", failure);
         if (!ok) {
             for (int i = 0; i < 2; ++i) {

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "foundation/shader_interface.hpp"
+#include "foundation/shader_variants.hpp"
 #include "vk_functions.hpp"
 #include "vk_result.hpp"
 
@@ -54,6 +55,11 @@ enum PipelineKind : uint32_t {
     kPipelineDebugView = 3,
     kPipelineKindCount = 4
 };
+static_assert(kPipelineBlade == static_cast<uint32_t>(kShaderBlades) &&
+                  kPipelineVolume == static_cast<uint32_t>(kShaderVolume) &&
+                  kPipelineImage == static_cast<uint32_t>(kShaderImage) &&
+                  kPipelineDebugView == static_cast<uint32_t>(kShaderDebugBoxes),
+              "the programs of foundation/shader_variants.hpp");
 // Feature masks are 10 bits (kFeatureMaskCount, backend.hpp): one per MapRole, then
 // kFeatureWind, kFeatureInteraction, kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView.
 
@@ -63,8 +69,9 @@ struct PipelineTarget {
     VkFormat color_format = VK_FORMAT_UNDEFINED;
     VkFormat depth_format = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    bool depth_greater = false;  // reversed-Z host: GREATER_OR_EQUAL
-    bool indexed_blocks = false; // Frame and Field at a push-constant index (vk_spirv.hpp; Device)
+    bool depth_greater = false;             // reversed-Z host: GREATER_OR_EQUAL
+    bool indexed_blocks = false;            // Frame and Field at a push-constant index (vk_spirv.hpp; Device)
+    VkPipelineCache cache = VK_NULL_HANDLE; // every pipeline goes through it: the host's or grass's own
 };
 
 // The descriptor type of the Frame and Field blocks (dynamic offsets: one per draw).
@@ -117,11 +124,13 @@ public:
     bool create(const PipelineTarget& target, VkFailure* failure, const char** what);
     void destroy();
 
-    // Makes the pipelines of every kind for `features` unless they exist; `features` must be
-    // below kFeatureMaskCount. On failure none of that mask's pipelines exist.
-    bool create_variant(uint32_t features, VkFailure* failure, const char** what);
-    bool has_variant(uint32_t features) const {
-        return features < kFeatureMaskCount && pipelines_[features][kPipelineBlade][0] != VK_NULL_HANDLE;
+    // Makes the pipeline pair of `variant` (foundation/shader_variants.hpp) unless it
+    // exists. On failure neither exists.
+    bool create_variant(const ShaderVariant& variant, VkFailure* failure, const char** what);
+    // The pairs of every kind for `features` (a field's maps: upload_field).
+    bool create_variants(uint32_t features, VkFailure* failure, const char** what);
+    bool has_variant(const ShaderVariant& v) const {
+        return v.features < kFeatureMaskCount && pipelines_[v.features][v.program][0] != VK_NULL_HANDLE;
     }
 
     VkDescriptorSetLayout set_layout() const { return set_layout_; }
@@ -133,7 +142,7 @@ public:
 
 private:
     bool create_layouts(VkFailure* failure, const char** what);
-    void destroy_variant(uint32_t features);
+    void destroy_variants(uint32_t features);
 
     const Functions& fn_;
     VkDevice device_;

@@ -224,11 +224,13 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
                               "grass_begin_frame() and outside the render pass",
                               d.field_slot, problem);
         }
-        // upload_field made the variant of the field's maps; one the plan asks for besides
-        // is made here, before anything is recorded.
+        // upload_field made the variants of the field's maps, grass_prepare_pipelines those of
+        // the features the host declared; one the plan asks for besides is made here, before
+        // anything is recorded.
         VkFailure failure;
         const char* what = "";
-        if (!pipeline_.create_variant(d.features, &failure, &what)) return fail("grass_vk_record", what, failure);
+        if (!pipeline_.create_variant(draw_variant(d, plan.flags), &failure, &what))
+            return fail("grass_vk_record", what, failure);
         draw_count += 1;
         if (!debug_view && d.kind != GRASS_TIER_GEOMETRY) slice_draws += 1;
         if (!debug_view && own_set(d)) own_sets += 1;
@@ -285,7 +287,8 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         for (uint32_t i = 0; i < plan.draws.size(); ++i) {
             const TierDraw& d = plan.draws[i];
             if (!drawn(d, true)) continue;
-            const VkPipeline pipeline = pipeline_.pipeline(kPipelineDebugView, d.features, depth_test);
+            const VkPipeline pipeline =
+                pipeline_.pipeline(kPipelineDebugView, d.features & kDebugBoxFeatures, depth_test);
             if (pipeline != bound_pipeline) {
                 fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
                 bound_pipeline = pipeline;

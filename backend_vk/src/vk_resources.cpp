@@ -406,7 +406,7 @@ grass_result VkBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
     VkFailure failure;
     const char* what = "";
     // The shader variant of its maps, shared with every field of the same mask.
-    if (!pipeline_.create_variant(maps.features, &failure, &what)) return fail(function, what, failure);
+    if (!pipeline_.create_variants(maps.features, &failure, &what)) return fail(function, what, failure);
 
     FieldGpu fresh;
     fresh.live = true;

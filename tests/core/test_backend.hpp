@@ -24,6 +24,14 @@ public:
     grass_result upload_field(uint32_t, const grass::FieldMaps&) override { return GRASS_SUCCESS; }
     void release_field(uint32_t) override {}
     void set_field_wind_map(uint32_t, uint32_t) override {}
+    grass_result prepare_variants(const char*, const grass::ShaderVariant*, uint32_t, bool) override {
+        return GRASS_SUCCESS;
+    }
+    grass_result seed_pipeline_cache(const char*, const void*, uint64_t) override { return GRASS_SUCCESS; }
+    grass_result pipeline_cache_data(const char*, void*, uint64_t* size) override {
+        *size = 0;
+        return GRASS_SUCCESS;
+    }
     grass::RenderTarget render_target() const override { return grass::RenderTarget{}; }
     grass_result begin_frame(const grass::FramePlan&) override { return GRASS_SUCCESS; }
     void end_frame() override {}

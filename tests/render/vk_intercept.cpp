@@ -171,7 +171,12 @@ VKAPI_ATTR VkResult VKAPI_CALL wrap_vkCreateGraphicsPipelines(VkDevice d, VkPipe
                                                               const VkAllocationCallbacks* a, VkPipeline* out) {
     if (fails("vkCreateGraphicsPipelines")) return failure.result;
     const VkResult r = real_vkCreateGraphicsPipelines(d, cache, n, infos, a, out);
-    if (r == VK_SUCCESS) counts.pipelines += n;
+    if (r == VK_SUCCESS) {
+        counts.pipelines += n;
+        counts.pipelines_made += n;
+        if (cache == VK_NULL_HANDLE) counts.pipelines_without_cache += n;
+        counts.last_pipeline_cache = reinterpret_cast<uint64_t>(cache);
+    }
     return r;
 }
 
@@ -180,7 +185,12 @@ VKAPI_ATTR VkResult VKAPI_CALL wrap_vkCreateComputePipelines(VkDevice d, VkPipel
                                                              const VkAllocationCallbacks* a, VkPipeline* out) {
     if (fails("vkCreateComputePipelines")) return failure.result;
     const VkResult r = real_vkCreateComputePipelines(d, cache, n, infos, a, out);
-    if (r == VK_SUCCESS) counts.pipelines += n;
+    if (r == VK_SUCCESS) {
+        counts.pipelines += n;
+        counts.pipelines_made += n;
+        if (cache == VK_NULL_HANDLE) counts.pipelines_without_cache += n;
+        counts.last_pipeline_cache = reinterpret_cast<uint64_t>(cache);
+    }
     return r;
 }
 

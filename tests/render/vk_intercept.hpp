@@ -41,8 +41,11 @@ bool driver_has_memory_budget();
 // allocations, samplers, descriptor pools, pipelines (graphics and compute), query pools.
 struct Live {
     int64_t buffers = 0, images = 0, views = 0, memory = 0, samplers = 0, pools = 0, pipelines = 0, queries = 0;
-    int64_t memory_made = 0; // vkAllocateMemory calls that succeeded, ever
-    int64_t dispatches = 0;  // vkCmdDispatch calls grass recorded, ever (not an object)
+    int64_t memory_made = 0;             // vkAllocateMemory calls that succeeded, ever
+    int64_t dispatches = 0;              // vkCmdDispatch calls grass recorded, ever (not an object)
+    int64_t pipelines_made = 0;          // pipelines grass created (graphics and compute), ever
+    int64_t pipelines_without_cache = 0; // of those, made with pipelineCache VK_NULL_HANDLE
+    uint64_t last_pipeline_cache = 0;    // the pipelineCache of the last one made
     int64_t total() const { return buffers + images + views + memory + samplers + pools + pipelines + queries; }
     std::string describe() const;
 };

@@ -13,9 +13,10 @@ struct Subcommand {
     std::function<int()> run; // the exit status
 };
 
-Subcommand add_bench(CLI::App& measure);     // bench.cpp
-Subcommand add_tier_cost(CLI::App& measure); // tier_cost.cpp
-Subcommand add_popping(CLI::App& measure);   // popping.cpp
-Subcommand add_dynamics(CLI::App& measure);  // dynamics.cpp
+Subcommand add_bench(CLI::App& measure);       // bench.cpp
+Subcommand add_tier_cost(CLI::App& measure);   // tier_cost.cpp
+Subcommand add_popping(CLI::App& measure);     // popping.cpp
+Subcommand add_dynamics(CLI::App& measure);    // dynamics.cpp
+Subcommand add_first_frame(CLI::App& measure); // first_frame.cpp
 
 } // namespace grass_measure

@@ -193,7 +193,8 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
     GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
     GRASS_STRUCT_TYPE_WIND_MAP_DESC = 0x6772000B,
-    GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C
+    GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C,
+    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D /* 0.5 */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -266,6 +267,11 @@ typedef enum grass_message_id {
      * created with is not current on the calling thread (none is, or another one is):
      * refused with GRASS_ERROR_INVALID_STATE before any GL call (grass_gl.h). */
     GRASS_MSG_GL_CONTEXT_NOT_CURRENT = 408,
+    /* 0.5: warning: a pipeline cache blob (grass_pipeline_desc.cache_data) was ignored: too
+     * short, not grass's, of another backend, grass version, device, driver or shader set,
+     * truncated or corrupt; or the driver refused a program binary in it. grass compiles
+     * what it needs instead, so the call still succeeds. */
+    GRASS_MSG_PIPELINE_CACHE = 409,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501
@@ -1105,6 +1111,69 @@ GRASS_API grass_blade_culling_desc grass_default_blade_culling_desc(void);
  * grass_begin_frame on; NULL turns it off. */
 GRASS_API grass_result grass_set_blade_culling(grass_context* context, grass_field_id field,
                                                const grass_blade_culling_desc* culling);
+
+/* ---- Pipelines before the first frame (0.5) ----------------------------------------------
+ * grass compiles a shader variant (a Vulkan pipeline, a GL program) the first time a draw
+ * needs it: turning on wind, colliders, per-blade culling or a debug view would compile
+ * inside that frame and make it hitch. grass_prepare_pipelines says what the host will use;
+ * grass then compiles every variant those features need, for every field that exists now
+ * and, from then on, for each field when it is created (grass_create_field), never in a
+ * frame. A frame that uses a feature the host did not declare still works: its variants
+ * are compiled in that frame, as without preparation. docs/integration.md "Compiling before
+ * the first frame" measures what it saves and what it costs.
+ *
+ * The render target is no part of a variant: Vulkan pipelines are made for the render pass
+ * or formats and sample count of grass_vk_desc; GL programs do not depend on the target. */
+typedef enum grass_pipeline_feature_bits {
+    GRASS_PIPELINE_FEATURE_WIND = 0x1,          /* wind or non-standard gravity (grass_set_wind) */
+    GRASS_PIPELINE_FEATURE_WIND_MAP = 0x2,      /* a field's wind map (grass_set_field_wind_map); brings WIND */
+    GRASS_PIPELINE_FEATURE_INTERACTION = 0x4,   /* colliders or a trail (grass_set_interaction) */
+    GRASS_PIPELINE_FEATURE_BLADE_CULLING = 0x8, /* per-blade culling (grass_set_blade_culling) */
+    GRASS_PIPELINE_FEATURE_DEBUG_VIEWS = 0x10,  /* GRASS_VIEW_FLAG_DEBUG_TIERS, _THRESHOLDS or _CELLS */
+    GRASS_PIPELINE_FEATURE_ALL = 0x1F
+} grass_pipeline_feature_bits;
+
+typedef struct grass_pipeline_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_PIPELINE_DESC */
+    const void* next;       /* NULL */
+    /* The features the host may turn on, GRASS_PIPELINE_FEATURE_* bits; every combination of
+     * them is compiled for each field's design maps (all five: 49 variants per set of maps).
+     * 0: only still grass (what grass_create_field compiles anyway). Default
+     * GRASS_PIPELINE_FEATURE_ALL & ~GRASS_PIPELINE_FEATURE_DEBUG_VIEWS (24 variants). */
+    uint32_t features;
+    /* A blob grass_get_pipeline_cache_data returned earlier (on a previous run), or NULL (the
+     * default). Vulkan: merged into grass's own VkPipelineCache (refused when the host gave
+     * grass_vk_desc.pipeline_cache: seed that one itself); GL: the program binaries in it
+     * replace compiling (GL_ARB_get_program_binary; ignored where the driver reports no
+     * binary format). A blob of another backend, grass version, device, driver or shader
+     * set, truncated or corrupt, is ignored with a GRASS_MSG_PIPELINE_CACHE warning. */
+    const void* cache_data;
+    uint64_t cache_data_size; /* bytes of cache_data; 0 with NULL */
+} grass_pipeline_desc;
+
+GRASS_API grass_pipeline_desc grass_default_pipeline_desc(void);
+
+/* Compiles every pipeline or program the declared features need (see above), for the
+ * fields that exist, and the interaction pass's with GRASS_PIPELINE_FEATURE_INTERACTION;
+ * remembers the features for the fields created later. Outside a frame
+ * (GRASS_MSG_FRAME_ALREADY_BEGUN); GL: with the context's GL context current. May be called
+ * again: it then declares the new set, compiling what is missing (nothing is released).
+ * Refused: features with bits outside GRASS_PIPELINE_FEATURE_ALL, cache_data NULL with a
+ * size or a size of 0 with data (GRASS_ERROR_INVALID_ARGUMENT, naming the value). Cost:
+ * the driver's compile time of each variant not made yet (docs/records/prepare-pipelines.md
+ * measures it on llvmpipe and lavapipe); nothing when all exist. A context made by
+ * grass_create_context compiles nothing. */
+GRASS_API grass_result grass_prepare_pipelines(grass_context* context, const grass_pipeline_desc* desc);
+
+/* The context's own pipeline cache as a blob to store and hand back next run through
+ * grass_pipeline_desc.cache_data: Vulkan, grass's VkPipelineCache (vkGetPipelineCacheData);
+ * GL, the binary of every program compiled so far. With data NULL, *size is set to the
+ * bytes needed; otherwise at most *size bytes are written and *size is set to the bytes
+ * written: GRASS_ERROR_INVALID_ARGUMENT (nothing written) when *size is too small. A
+ * context without a cache of its own gives 0 bytes: grass_create_context's, a GL driver
+ * without program binary formats; a Vulkan context given grass_vk_desc.pipeline_cache is
+ * refused (GRASS_ERROR_INVALID_STATE): the host saves its own cache. Outside a frame. */
+GRASS_API grass_result grass_get_pipeline_cache_data(grass_context* context, void* data, uint64_t* size);
 
 /* ---- 0.3 names (begin) ------------------------------------------------------------------
  * Functions renamed in 0.4 (docs/migrating.md lists every source change since 0.3), declared

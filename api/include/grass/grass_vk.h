@@ -60,6 +60,14 @@ typedef struct grass_vk_desc {
      * or later. Device memory itself is grass's own: a few blocks per memory type
      * (docs/integration.md, "Memory"). */
     const void* allocation_callbacks;
+    /* 0.5: VkPipelineCache of the host, or 0 (the default): grass makes its own, which
+     * grass_get_pipeline_cache_data saves and grass_pipeline_desc.cache_data seeds. When
+     * given, every pipeline grass makes goes through it (vkCreate*Pipelines only: grass never
+     * merges into it nor reads it back); the host keeps it alive until the context is
+     * destroyed, and made it without VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT if
+     * other threads use it meanwhile. Read only from hosts built against grass_vk.h 0.5 or
+     * later. */
+    uint64_t pipeline_cache;
 } grass_vk_desc;
 
 GRASS_API grass_vk_desc grass_default_vk_desc(void);

@@ -13,6 +13,7 @@
 #include "bake/baked_slices.hpp"
 #include "foundation/frame_plan.hpp"
 #include "foundation/shader_interface.hpp"
+#include "foundation/shader_variants.hpp"
 #include "patch/patch_data.hpp"
 
 #include <grass/grass.h>
@@ -67,6 +68,17 @@ public:
     // kNoMap: none). Draws of the field with kFeatureWindMap bind it; no other draw does.
     virtual void set_field_wind_map(uint32_t slot, uint32_t map_slot) = 0;
 
+    // Pipelines before the first frame (grass_prepare_pipelines): makes every variant of
+    // `variants` not made yet, and the interaction pass's when `interaction_pass`; outside
+    // a frame. `function` names the public call for messages.
+    virtual grass_result prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
+                                          bool interaction_pass) = 0;
+    // Seeds the backend's own cache with a blob (grass_pipeline_desc.cache_data, size > 0):
+    // one that does not fit is ignored with a GRASS_MSG_PIPELINE_CACHE warning.
+    virtual grass_result seed_pipeline_cache(const char* function, const void* data, uint64_t size) = 0;
+    // grass_get_pipeline_cache_data (arguments checked; *size > 0 when data is given).
+    virtual grass_result pipeline_cache_data(const char* function, void* data, uint64_t* size) = 0;
+
     // The host's render target as the shaders must know it (frame_plan.hpp): its samples per
     // pixel and its clip convention. grass_begin_frame writes it into the plan's Frame block
     // (write_render_target); the core never guesses it from kind(). A backend whose host may
@@ -120,6 +132,12 @@ public:
     grass_result upload_field(uint32_t, const FieldMaps&) override { return GRASS_SUCCESS; }
     void release_field(uint32_t) override {}
     void set_field_wind_map(uint32_t, uint32_t) override {}
+    grass_result prepare_variants(const char*, const ShaderVariant*, uint32_t, bool) override { return GRASS_SUCCESS; }
+    grass_result seed_pipeline_cache(const char*, const void*, uint64_t) override { return GRASS_SUCCESS; }
+    grass_result pipeline_cache_data(const char*, void*, uint64_t* size) override { // no cache: 0 bytes
+        *size = 0;
+        return GRASS_SUCCESS;
+    }
     RenderTarget render_target() const override { return RenderTarget{}; } // none: the defaults
     grass_result begin_frame(const FramePlan&) override { return GRASS_SUCCESS; }
     void end_frame() override {}

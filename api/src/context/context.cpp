@@ -162,6 +162,16 @@ void destroy_context(grass_context* ctx) {
     HostAllocator(hooks).deallocate(ctx);
 }
 
+grass_result prepare_field_variants(grass_context* ctx, const char* function, uint32_t slot) {
+    const Field* field = ctx->fields.get(slot);
+    if (ctx->prepared_features == 0 || field == nullptr) return GRASS_SUCCESS;
+    uint32_t tier_kinds = 0;
+    for (uint32_t t = 0; t < field->lod.tier_count; ++t) tier_kinds |= 1u << field->lod.tiers[t].kind;
+    ShaderVariant variants[kMaxFieldVariants];
+    const uint32_t count = field_variants(ctx->prepared_features, field->maps.features, tier_kinds, variants);
+    return ctx->backend->prepare_variants(function, variants, count, false);
+}
+
 namespace {
 grass_result make_null_backend(grass_context* ctx, void*, Backend** out) {
     *out = ctx->host.create<NullBackend>();

@@ -44,6 +44,9 @@ struct grass_context : grass::Log {
     uint64_t frame_number = 0;
     grass::Vector<char> cache_directory; // copy of desc.cache_directory (empty: no disk cache)
     bool cache_write_warned = false;     // the cache directory could not be written: said once
+    // grass_prepare_pipelines: the feature bits the host declared (declared_feature_bits),
+    // whose variants each new field gets at creation (prepare_field_variants). 0: none.
+    uint32_t prepared_features = 0;
     // Host callbacks running on this context (grass.h "Re-entrancy"): lod test callbacks and
     // the log callback; the allocator's hooks are counted by `host`. While one runs, every
     // call on the context but the pure getters is refused (refuse_reentrant).
@@ -61,6 +64,11 @@ namespace grass {
 grass_result create_context(const char* function, uint32_t header_version, const grass_context_desc* desc,
                             BackendFactory factory, void* factory_user_data, grass_context** out_context);
 void destroy_context(grass_context* context);
+
+// Has the backend make every variant the declared features (context->prepared_features)
+// need for the field in `slot` (grass_prepare_pipelines, grass_create_field). Nothing
+// without a declaration.
+grass_result prepare_field_variants(grass_context* context, const char* function, uint32_t slot);
 
 // The entry check of every call on a context: refuses a call made from inside one of the
 // context's callbacks (grass.h "Re-entrancy"). guarded() makes it; calls that do not go

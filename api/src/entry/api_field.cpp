@@ -230,6 +230,7 @@ grass_result create_one_field(grass_context* ctx, const char* fn, const grass_fi
     try {
         r = check_field_maps(ctx, fn, slot, field->maps);
         if (r == GRASS_SUCCESS) r = ctx->backend->upload_field(slot, field->maps);
+        if (r == GRASS_SUCCESS) r = prepare_field_variants(ctx, fn, slot);
     } catch (...) {
         undo();
         throw;

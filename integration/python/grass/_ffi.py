@@ -49,7 +49,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_VK_PREPARE_DESC": 0x67720203,
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
         "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_WIND_MAP_DESC": 0x6772000B,
-        "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C,
+        "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C, "GRASS_STRUCT_TYPE_PIPELINE_DESC": 0x6772000D,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -66,7 +66,7 @@ ENUMS = {
         "GRASS_MSG_VERSION_MISMATCH": 400, "GRASS_MSG_DEVICE_UNSUPPORTED": 401,
         "GRASS_MSG_BACKEND_CALL_FAILED": 402, "GRASS_MSG_OUT_OF_MEMORY": 403, "GRASS_MSG_INTERNAL_ERROR": 404,
         "GRASS_MSG_BAKE_CACHE": 405, "GRASS_MSG_DEVICE_LOST": 406, "GRASS_MSG_TIME_BACKWARDS": 407,
-        "GRASS_MSG_GL_CONTEXT_NOT_CURRENT": 408,
+        "GRASS_MSG_GL_CONTEXT_NOT_CURRENT": 408, "GRASS_MSG_PIPELINE_CACHE": 409,
         "GRASS_MSG_CONTEXT_CREATED": 500, "GRASS_MSG_PATCH_GENERATED": 501,
     },
     "grass_depth_mode": {"GRASS_DEPTH_LESS": 0, "GRASS_DEPTH_GREATER": 1},
@@ -97,6 +97,11 @@ ENUMS = {
     "grass_distance_culling": {
         "GRASS_DISTANCE_CULLING_OFF": 0, "GRASS_DISTANCE_CULLING_BLADE_INDEX": 1,
         "GRASS_DISTANCE_CULLING_THRESHOLD": 2,
+    },
+    "grass_pipeline_feature_bits": {
+        "GRASS_PIPELINE_FEATURE_WIND": 0x1, "GRASS_PIPELINE_FEATURE_WIND_MAP": 0x2,
+        "GRASS_PIPELINE_FEATURE_INTERACTION": 0x4, "GRASS_PIPELINE_FEATURE_BLADE_CULLING": 0x8,
+        "GRASS_PIPELINE_FEATURE_DEBUG_VIEWS": 0x10, "GRASS_PIPELINE_FEATURE_ALL": 0x1F,
     },
 }
 for _values in ENUMS.values():
@@ -289,6 +294,11 @@ class grass_blade_culling_desc(Structure):
                 ("distance", grass_enum), ("distance_levels", c_uint32), ("distance_max", c_float)]
 
 
+class grass_pipeline_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("features", c_uint32), ("cache_data", c_void_p),
+                ("cache_data_size", c_uint64)]
+
+
 class grass_gl_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("get_proc_address", grass_gl_get_proc_address_fn),
                 ("get_proc_address_user_data", c_void_p)]
@@ -301,6 +311,7 @@ class grass_vk_desc(Structure):
                 ("render_pass", c_uint64), ("subpass", c_uint32), ("color_format", c_uint32),
                 ("depth_format", c_uint32), ("sample_count", c_uint32), ("frames_in_flight", c_uint32),
                 ("allocation_callbacks", c_void_p)]
+                ("pipeline_cache", c_uint64)]
 
 
 class grass_vk_record_desc(Structure):
@@ -367,6 +378,9 @@ FUNCTIONS = {
     "grass_set_interaction": (grass_enum, [_ctx, _P(grass_interaction_desc)]),
     "grass_default_blade_culling_desc": (grass_blade_culling_desc, []),
     "grass_set_blade_culling": (grass_enum, [_ctx, grass_field_id, _P(grass_blade_culling_desc)]),
+    "grass_default_pipeline_desc": (grass_pipeline_desc, []),
+    "grass_prepare_pipelines": (grass_enum, [_ctx, _P(grass_pipeline_desc)]),
+    "grass_get_pipeline_cache_data": (grass_enum, [_ctx, c_void_p, _P(c_uint64)]),
     # grass_gl.h
     "grass_default_gl_desc": (grass_gl_desc, []),
     "grass_gl_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_gl_desc), _P(_ctx)]),

@@ -1,0 +1,45 @@
+// grass_prepare_pipelines on GL: compiles (or loads from the seeded program binaries) every
+// program variant the core asks for, and the interaction pass's program; the program
+// binaries' blob (gl_program_cache.hpp).
+#include "gl_backend.hpp"
+
+namespace grass {
+
+grass_result GlBackend::make_interaction_program(const char* function) {
+    interaction_program_ = program_cache_.load(gl_, function, kInteractionProgramKind, 0);
+    if (interaction_program_ != 0) return GRASS_SUCCESS;
+    return create_interaction_program(ctx_, gl_, function, &interaction_program_);
+}
+
+grass_result GlBackend::prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
+                                         bool interaction_pass) {
+    for (uint32_t i = 0; i < count; ++i) {
+        GLuint unused = 0;
+        const grass_result result =
+            program(static_cast<GlProgramKind>(variants[i].program), variants[i].features, function, &unused);
+        if (result != GRASS_SUCCESS) return result;
+    }
+    if (interaction_pass && interaction_program_ == 0) {
+        const grass_result result = make_interaction_program(function);
+        if (result != GRASS_SUCCESS) return result;
+    }
+    return GRASS_SUCCESS;
+}
+
+grass_result GlBackend::seed_pipeline_cache(const char* function, const void* data, uint64_t size) {
+    program_cache_.seed(function, data, size);
+    return GRASS_SUCCESS;
+}
+
+grass_result GlBackend::pipeline_cache_data(const char* function, void* data, uint64_t* size) {
+    Vector<GlProgramRecord> records(StlAllocator<GlProgramRecord>(&ctx_->host));
+    for (uint32_t kind = 0; kind < kProgramKindCount; ++kind) {
+        for (uint32_t features = 0; features < kFeatureVariants; ++features) {
+            if (programs_[kind][features] != 0) records.push_back({kind, features, programs_[kind][features]});
+        }
+    }
+    if (interaction_program_ != 0) records.push_back({kInteractionProgramKind, 0, interaction_program_});
+    return program_cache_.save(gl_, function, records.data(), static_cast<uint32_t>(records.size()), data, size);
+}
+
+} // namespace grass
