@@ -58,10 +58,13 @@ stage "asan: tests"
 ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE static
 
 # Threads under ThreadSanitizer: only the thread tests (four contexts on four threads,
-# CPU-only and GL), in a build of the library without the Vulkan backend they do not use.
+# CPU-only, GL, and Vulkan views recorded into secondary command buffers on lavapipe with the
+# validation layers). The secondaries' test runs with a render pass alone here (the dynamic
+# rendering variant differs in Vulkan state, not in grass's threads: the plain and ASan
+# stages run it), for time: lavapipe's pipelines under TSan are most of the stage.
 stage "tsan: build and tests"
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGRASS_BUILD_TESTS=ON -DGRASS_TSAN=ON \
-  -DGRASS_BUILD_SAMPLES=OFF -DGRASS_BUILD_VULKAN=OFF >/dev/null
+  -DGRASS_BUILD_SAMPLES=OFF -DGRASS_BUILD_VULKAN=ON >/dev/null
 cmake --build build-tsan -j "$jobs" --target grass_thread_tests
 # Under TSan's allocator Mesa's llvmpipe now and then reads past an allocation while four GL
 # contexts draw (a SEGV whose top frame is in swrast_dri.so; 1 run in 4 to 8 on this machine,
@@ -70,7 +73,7 @@ cmake --build build-tsan -j "$jobs" --target grass_thread_tests
 tsan_log=build-tsan/threads.log
 for attempt in 1 2 3; do
   if TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sanitizer/tsan.supp" \
-    ctest --test-dir build-tsan -L threads --output-on-failure >"$tsan_log" 2>&1; then
+    ctest --test-dir build-tsan -L threads -E DynamicRendering --output-on-failure >"$tsan_log" 2>&1; then
     cat "$tsan_log"
     break
   fi

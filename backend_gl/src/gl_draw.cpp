@@ -207,7 +207,9 @@ grass_result GlBackend::render(const char* function) {
     }
     if (plan.draws.empty()) return GRASS_SUCCESS;
     if (reads_map && interaction_maps_[0] != 0) bind_interaction_maps();
-    gl_.Viewport(plan.viewport[0], plan.viewport[1], plan.viewport[2], plan.viewport[3]);
+    // Viewport 0 alone (glViewport would set every viewport): grass draws through it.
+    gl_.ViewportIndexedf(0, static_cast<GLfloat>(plan.viewport[0]), static_cast<GLfloat>(plan.viewport[1]),
+                         static_cast<GLfloat>(plan.viewport[2]), static_cast<GLfloat>(plan.viewport[3]));
     if (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) {
         gl_.Disable(GL_DEPTH_TEST);
     } else {
@@ -216,7 +218,7 @@ grass_result GlBackend::render(const char* function) {
     gl_.DepthFunc(ctx_->desc.depth_mode == GRASS_DEPTH_GREATER ? GL_GEQUAL : GL_LEQUAL);
     gl_.DepthMask(GL_TRUE);
     gl_.Disable(GL_CULL_FACE); // blades are two-sided; the volume shader picks its faces itself
-    gl_.Disable(GL_BLEND);
+    gl_.Disablei(GL_BLEND, 0); // draw buffer 0's: the others are masked off (GlDrawStateGuard)
     gl_.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     if (multisampled) {
         gl_.Enable(GL_MULTISAMPLE);

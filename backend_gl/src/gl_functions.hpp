@@ -20,7 +20,11 @@
     X(PFNGLISENABLEDPROC, IsEnabled)                                                 \
     X(PFNGLENABLEPROC, Enable)                                                       \
     X(PFNGLDISABLEPROC, Disable)                                                     \
-    X(PFNGLVIEWPORTPROC, Viewport)                                                   \
+    X(PFNGLISENABLEDIPROC, IsEnabledi)                                               \
+    X(PFNGLENABLEIPROC, Enablei)                                                     \
+    X(PFNGLDISABLEIPROC, Disablei)                                                   \
+    X(PFNGLGETFLOATI_VPROC, GetFloati_v)                                             \
+    X(PFNGLVIEWPORTINDEXEDFPROC, ViewportIndexedf)                                   \
     X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                 \
     X(PFNGLDEPTHMASKPROC, DepthMask)                                                 \
     X(PFNGLPOLYGONMODEPROC, PolygonMode)                                             \

@@ -2,6 +2,8 @@
 
 #include "gl_program.hpp"
 
+#include <algorithm>
+
 namespace grass {
 
 namespace {
@@ -133,17 +135,30 @@ GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl, bool dynamics) : gl_(g
     gl.ActiveTexture(GL_TEXTURE0);
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D, &texture_2d_unit0_);
     gl.GetIntegerv(GL_SAMPLER_BINDING, &sampler_unit0_);
-    gl.GetIntegerv(GL_VIEWPORT, viewport_);
+    gl.GetFloati_v(GL_VIEWPORT, 0, viewport_);
     depth_test_ = gl.IsEnabled(GL_DEPTH_TEST);
     gl.GetIntegerv(GL_DEPTH_FUNC, &depth_func_);
     gl.GetBooleanv(GL_DEPTH_WRITEMASK, &depth_mask_);
     cull_face_ = gl.IsEnabled(GL_CULL_FACE);
-    blend_ = gl.IsEnabled(GL_BLEND);
+    blend_ = gl.IsEnabledi(GL_BLEND, 0);
     multisample_ = gl.IsEnabled(GL_MULTISAMPLE);
     alpha_to_coverage_ = gl.IsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE);
     gl.GetIntegerv(GL_POLYGON_MODE, polygon_mode_); // core profiles report front and back alike
     gl.GetBooleani_v(GL_COLOR_WRITEMASK, 0, color_mask_);
     gl.ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    // The host's other draw buffers (a G-buffer's normals, motion vectors...): grass's
+    // shaders write location 0 alone, and GL leaves what the others get undefined.
+    GLint max_draw_buffers = 1;
+    gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &max_draw_buffers);
+    const GLuint buffers = std::min(static_cast<GLuint>(max_draw_buffers), kMaxDrawBuffers);
+    for (GLuint i = 1; i < buffers; ++i) {
+        GLint buffer = GL_NONE;
+        gl.GetIntegerv(GL_DRAW_BUFFER0 + i, &buffer);
+        if (buffer == GL_NONE) continue;
+        other_buffers_ |= 1u << i;
+        gl.GetBooleani_v(GL_COLOR_WRITEMASK, i, other_masks_[i]);
+        gl.ColorMaski(i, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    }
     for (int i = 0; i < kHostDisabledCount; ++i) {
         if (!gl.IsEnabled(kHostDisabled[i])) continue;
         host_enabled_ |= 1u << i;
@@ -184,16 +199,25 @@ GlDrawStateGuard::~GlDrawStateGuard() {
         gl.BindSampler(unit, static_cast<GLuint>(map_units_[i].sampler));
     }
     gl.ActiveTexture(static_cast<GLenum>(active_texture_));
-    gl.Viewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    gl.ViewportIndexedf(0, viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
     set_enabled(gl, GL_DEPTH_TEST, depth_test_);
     gl.DepthFunc(static_cast<GLenum>(depth_func_));
     gl.DepthMask(depth_mask_);
     set_enabled(gl, GL_CULL_FACE, cull_face_);
-    set_enabled(gl, GL_BLEND, blend_);
+    if (blend_) {
+        gl.Enablei(GL_BLEND, 0);
+    } else {
+        gl.Disablei(GL_BLEND, 0);
+    }
     set_enabled(gl, GL_MULTISAMPLE, multisample_);
     set_enabled(gl, GL_SAMPLE_ALPHA_TO_COVERAGE, alpha_to_coverage_);
     gl.PolygonMode(GL_FRONT_AND_BACK, static_cast<GLenum>(polygon_mode_[0]));
     gl.ColorMaski(0, color_mask_[0], color_mask_[1], color_mask_[2], color_mask_[3]);
+    for (GLuint i = 1; i < kMaxDrawBuffers; ++i) {
+        if ((other_buffers_ & (1u << i)) == 0) continue;
+        const GLboolean* m = other_masks_[i];
+        gl.ColorMaski(i, m[0], m[1], m[2], m[3]);
+    }
     for (int i = 0; i < kHostDisabledCount; ++i) {
         if (host_enabled_ & (1u << i)) gl.Enable(kHostDisabled[i]);
     }

@@ -11,8 +11,13 @@ namespace grass {
 // slice units 3-5 (their 2D array texture and sampler) and the design-map units 6-9 (their
 // 2D texture and sampler). On construction texture unit 0 is made active, and the host's
 // draw state that would change or hide grass is set aside: draw buffer 0's colour mask is
-// made all true and the capabilities of kHostDisabled are disabled (only those the host
-// left enabled are touched; the destructor enables them again). With `dynamics` (a frame
+// made all true, the colour masks of the other draw buffers the framebuffer has
+// (GL_DRAW_BUFFERi not GL_NONE) all false (grass writes draw buffer 0 alone; the blend
+// state of buffers 1..N-1 is never touched), and the capabilities of kHostDisabled are
+// disabled (only those the host left enabled are touched; the destructor enables them
+// again). Viewport 0 and draw buffer 0's blend enable are saved for the draw code, which
+// sets them with glViewportIndexedf(0, ...) and glDisablei(GL_BLEND, 0): the host's other
+// viewports and buffers keep theirs. With `dynamics` (a frame
 // of responsive grass) also the state of gl_dynamics.cpp: image unit 0, shader storage
 // bindings 0-3 and the generic one, texture units 10-11 and 13 (2D texture and sampler).
 class GlDrawStateGuard {
@@ -64,17 +69,22 @@ private:
     GLint sampler_unit0_ = 0;
     SliceUnit slice_units_[kSliceUnits] = {};
     MapUnit map_units_[kMapUnits] = {};
-    GLint viewport_[4] = {0, 0, 0, 0};
+    GLfloat viewport_[4] = {0, 0, 0, 0}; // viewport 0, as floats (a host may set fractional ones)
     GLboolean depth_test_ = GL_FALSE;
     GLint depth_func_ = GL_LESS;
     GLboolean depth_mask_ = GL_TRUE;
     GLboolean cull_face_ = GL_FALSE;
-    GLboolean blend_ = GL_FALSE;
+    GLboolean blend_ = GL_FALSE; // draw buffer 0's
     GLboolean multisample_ = GL_FALSE;
     GLboolean alpha_to_coverage_ = GL_FALSE;
     GLint polygon_mode_[2] = {GL_FILL, GL_FILL};
     GLboolean color_mask_[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE}; // draw buffer 0's
     uint32_t host_enabled_ = 0;                                      // bit i: kHostDisabled[i] was enabled by the host
+    // Draw buffers 1..kMaxDrawBuffers-1 that the bound framebuffer writes (bit i), with
+    // their colour masks: masked off while grass draws.
+    static constexpr GLuint kMaxDrawBuffers = 32;
+    uint32_t other_buffers_ = 0;
+    GLboolean other_masks_[kMaxDrawBuffers][4] = {};
 };
 
 // Around texture uploads from client memory: the unpack pixel-store state and the pixel

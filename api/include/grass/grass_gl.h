@@ -67,10 +67,16 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     frame's first call runs the interaction pass (a compute dispatch per map level)
  *     before drawing, then glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT |
  *     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT); it runs even when nothing is drawn;
- *   - viewport (from grass_view_desc.viewport), depth test/func/mask, cull face (off: no
- *     face is culled, so the front-face winding does not matter), blend (off), multisample
- *     and alpha-to-coverage enables, polygon mode (fill), draw buffer 0's colour mask (all
- *     channels written; alpha holds coverage);
+ *   - viewport 0 (from grass_view_desc.viewport, set with glViewportIndexedf: the host's
+ *     other viewports are not touched), depth test/func/mask, cull face (off: no face is
+ *     culled, so the front-face winding does not matter), draw buffer 0's blend enable
+ *     (off, glDisablei; its blend functions and equations, and those of every other draw
+ *     buffer, are not touched), multisample and alpha-to-coverage enables, polygon mode
+ *     (fill), draw buffer 0's colour mask (all channels written; alpha holds coverage);
+ *   - the colour masks of the other draw buffers the framebuffer has (GL_DRAW_BUFFERi not
+ *     GL_NONE, i >= 1): all off while grass draws, so that a G-buffer's other attachments
+ *     keep their contents (grass's shaders write draw buffer 0 alone). The draw buffers
+ *     themselves are the host's and not touched;
  *   - turned off while grass draws, if the host left them on: stencil test, scissor test
  *     (grass draws the whole viewport; give a split-screen view its own viewport, as on
  *     Vulkan where grass sets the scissor to the viewport), polygon offset (fill), clip
@@ -79,13 +85,15 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     values (stencil func, scissor box, offsets, masks, restart index...) are not touched.
  *
  * Read as the host's conventions and honoured, never changed:
- *   - the bound draw framebuffer and its sample count;
- *   - glClipControl's depth mode (GL_CLIP_DEPTH_MODE) and glDepthRange: the volume tier
- *     writes gl_FragDepth with them. The origin is the host's too (grass draws through the
- *     host's projection as its scene does; only GL_LOWER_LEFT is tested);
+ *   - the bound draw framebuffer, its draw buffers and its sample count;
+ *   - glClipControl's depth mode (GL_CLIP_DEPTH_MODE) and viewport 0's glDepthRange: the
+ *     volume tier writes gl_FragDepth with them. glClipControl's origin: grass draws
+ *     through the host's projection as its scene does, upside down in memory under
+ *     GL_UPPER_LEFT as the host's scene is (both origins are tested);
  *   - GL_FRAMEBUFFER_SRGB and the target's format: grass writes linear colour; where the
  *     target does not encode it, set GRASS_VIEW_FLAG_ENCODE_SRGB (grass.h);
- *   - GL_DITHER (on by default), the stencil and depth buffers' other state. */
+ *   - the provoking vertex (grass's flat varyings are the same at every vertex),
+ *     GL_DITHER (on by default), the stencil and depth buffers' other state. */
 GRASS_API grass_result grass_gl_render(grass_context* context);
 
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */

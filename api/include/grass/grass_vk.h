@@ -21,6 +21,26 @@
  * uses them in turn, one per grass_begin_frame(). The host must have waited for the GPU
  * to finish frame N - frames_in_flight before it calls grass_begin_frame() for frame N,
  * as it does for its own per-frame resources.
+ *
+ * Threads and secondary command buffers:
+ *   - Every call may run on any thread. A context is externally synchronized (grass.h,
+ *     "Thread safety"): its calls must not overlap, and a context moves between threads
+ *     only where the host orders the calls (a join, a mutex). Separate contexts on one
+ *     VkDevice share no grass object and may run at the same time, each on its thread:
+ *     one context per view records a main view and shadow cascades on four threads.
+ *   - grass_vk_record records into a primary command buffer inside the pass, or into a
+ *     secondary one that the host began with VK_COMMAND_BUFFER_USAGE_RENDER_PASS_CONTINUE_BIT
+ *     and the pass's inheritance (the render pass and subpass of grass_vk_desc, or, for
+ *     dynamic rendering, VkCommandBufferInheritanceRenderingInfo with its colour and depth
+ *     formats and sample count) and executes in the pass
+ *     (VK_SUBPASS_CONTENTS_SECONDARY_COMMAND_BUFFERS or
+ *     VK_RENDERING_CONTENTS_SECONDARY_COMMAND_BUFFERS_BIT). It inherits no state: it binds
+ *     and sets all it draws with, viewport and scissor included. grass_vk_prepare records
+ *     into a primary outside any pass (a worker's own, submitted before the pass).
+ *   - The command buffers, their pools and the queue are the host's to synchronize: grass
+ *     records into the buffer it is given (on the calling thread) and touches no pool and
+ *     no queue. It creates and frees its own Vulkan objects on the calling thread, which
+ *     Vulkan allows on one device from several threads at once.
  */
 #ifndef GRASS_GRASS_VK_H
 #define GRASS_GRASS_VK_H
@@ -120,7 +140,8 @@ GRASS_API grass_result grass_vk_prepare(grass_context* context, const grass_vk_p
 typedef struct grass_vk_record_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_RECORD_DESC */
     const void* next;       /* NULL */
-    void* command_buffer;   /* VkCommandBuffer inside the host's render pass */
+    void* command_buffer;   /* VkCommandBuffer inside the host's render pass: a primary, or a
+                               secondary that inherits the pass (see "Threads" above) */
 } grass_vk_record_desc;
 
 GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);
