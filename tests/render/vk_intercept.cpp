@@ -160,8 +160,8 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL wrap_vkGetDeviceProcAddr(VkDevice devic
     return real;
 }
 
-void (*wrap_get_instance_proc_addr(void* instance, const char* name))(void) {
-    const PFN_vkVoidFunction real = vkGetInstanceProcAddr(static_cast<VkInstance>(instance), name);
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL wrap_get_instance_proc_addr(VkInstance instance, const char* name) {
+    const PFN_vkVoidFunction real = vkGetInstanceProcAddr(instance, name);
     if (real && std::strcmp(name, "vkGetDeviceProcAddr") == 0) {
         real_device_proc_addr = reinterpret_cast<PFN_vkGetDeviceProcAddr>(real);
         return reinterpret_cast<PFN_vkVoidFunction>(&wrap_vkGetDeviceProcAddr);

@@ -4,12 +4,14 @@
 // time per process (the wrappers keep the loader's pointers in globals).
 #pragma once
 
+#include <grass/grass_vk.h>
+
 #include <cstdint>
 #include <string>
 
 namespace grass_test::vk_intercept {
 
-using GetInstanceProcAddr = void (*(*)(void* instance, const char* name))(void);
+using GetInstanceProcAddr = grass_vk_get_instance_proc_addr_fn;
 
 // The wrapper to give the host.
 GetInstanceProcAddr get_instance_proc_addr();

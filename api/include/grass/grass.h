@@ -110,6 +110,21 @@ extern "C" {
 #    define GRASS_API
 #endif
 
+/* The calling convention of every callback grass calls (log, allocation, LOD tests, the GL
+ * loader): VKAPI_PTR's rule (vk_platform.h), __stdcall on Windows (which 64-bit Windows
+ * ignores: it has one convention), nothing elsewhere. Define a callback with it between the
+ * return type and the name, as Vulkan's VKAPI_CALL:
+ *   static void GRASS_API_PTR on_log(void* user_data, grass_log_level level,
+ *                                    grass_message_id id, const char* message) { ... }
+ * Where it is empty (every platform but 32-bit Windows) a callback without it converts as
+ * before. Vulkan's own entry point (grass_vk_get_instance_proc_addr_fn) follows VKAPI_PTR
+ * exactly (GRASS_VKAPI_PTR, grass_vk.h). */
+#if defined(_WIN32)
+#    define GRASS_API_PTR __stdcall
+#else
+#    define GRASS_API_PTR
+#endif
+
 /* ---- Renamed names -----------------------------------------------------------------------
  * A name renamed since 0.3 stays declared for source code that defines
  * GRASS_ENABLE_DEPRECATED before including grass: each use then compiles with a deprecation
@@ -273,15 +288,16 @@ typedef enum grass_message_id {
 
 /* Called for every message the context emits. `message` is one English sentence that
  * names the call, the argument and the value. */
-typedef void (*grass_log_fn)(void* user_data, grass_log_level level, grass_message_id id, const char* message);
+typedef void(GRASS_API_PTR* grass_log_fn)(void* user_data, grass_log_level level, grass_message_id id,
+                                          const char* message);
 
 /* ---- Allocation ------------------------------------------------------------------- */
 
 /* Host-memory hooks. All three are set or all are NULL (then malloc/free are used).
  * `alignment` is a power of two no larger than 64. free_fn is never given NULL. */
 typedef struct grass_allocator {
-    void* (*alloc_fn)(void* user_data, size_t size, size_t alignment);
-    void (*free_fn)(void* user_data, void* ptr);
+    void*(GRASS_API_PTR* alloc_fn)(void* user_data, size_t size, size_t alignment);
+    void(GRASS_API_PTR* free_fn)(void* user_data, void* ptr);
     void* user_data;
 } grass_allocator;
 
@@ -547,7 +563,7 @@ typedef struct grass_lod_node {
     double height_max;   /* ... and the highest */
 } grass_lod_node;
 
-typedef grass_lod_answer (*grass_lod_test_fn)(void* user_data, const grass_lod_node* node);
+typedef grass_lod_answer(GRASS_API_PTR* grass_lod_test_fn)(void* user_data, const grass_lod_node* node);
 
 typedef enum grass_lod_test_kind {
     /* Draws the tier between begin and end metres from the camera: discards a node entirely
