@@ -78,6 +78,10 @@ struct Functions {
     GRASS_VK_INSTANCE_FUNCTIONS(GRASS_VK_DECLARE_FUNCTION)
     GRASS_VK_DEVICE_FUNCTIONS(GRASS_VK_DECLARE_FUNCTION)
 #undef GRASS_VK_DECLARE_FUNCTION
+    // VK_EXT_debug_utils: all three, or none when labels are off (vk_labels.hpp).
+    PFN_vkSetDebugUtilsObjectNameEXT vkSetDebugUtilsObjectNameEXT = nullptr;
+    PFN_vkCmdBeginDebugUtilsLabelEXT vkCmdBeginDebugUtilsLabelEXT = nullptr;
+    PFN_vkCmdEndDebugUtilsLabelEXT vkCmdEndDebugUtilsLabelEXT = nullptr;
 };
 
 // Fills `out`. Returns nullptr on success, or the name of the first function the loader

@@ -1,5 +1,6 @@
 #include "vk_interaction.hpp"
 
+#include "vk_labels.hpp"
 #include "vk_pipeline.hpp"
 #include "vk_uploads.hpp"
 
@@ -83,6 +84,7 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
     if (!vk_ok(fn_.vkCreateDescriptorPool(device_, &pool_info, nullptr, &pool_), "vkCreateDescriptorPool", failure)) {
         return false;
     }
+    name_object(fn_, device_, VK_OBJECT_TYPE_DESCRIPTOR_POOL, pool_, *what);
     VkDescriptorSetLayout set_layouts[2 * kMaxFramesInFlight];
     for (uint32_t i = 0; i < sets; ++i) set_layouts[i] = set_layout_;
     VkDescriptorSet allocated[2 * kMaxFramesInFlight] = {};
@@ -107,6 +109,7 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
     if (!vk_ok(fn_.vkCreateShaderModule(device_, &module_info, nullptr, &module), "vkCreateShaderModule", failure)) {
         return false;
     }
+    name_object(fn_, device_, VK_OBJECT_TYPE_SHADER_MODULE, module, *what);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -118,6 +121,7 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
                           "vkCreateComputePipelines", failure);
     fn_.vkDestroyShaderModule(device_, module, nullptr);
     if (!ok) pipeline_ = VK_NULL_HANDLE;
+    if (ok) name_object(fn_, device_, VK_OBJECT_TYPE_PIPELINE, pipeline_, *what);
     return ok;
 }
 

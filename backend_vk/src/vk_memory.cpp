@@ -1,5 +1,7 @@
 #include "vk_memory.hpp"
 
+#include "vk_labels.hpp"
+
 namespace grass::vk {
 
 namespace {
@@ -87,6 +89,10 @@ bool Memory::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, MemoryUs
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     if (!vk_ok(fn_.vkCreateBuffer(device_, &info, nullptr, &b.buffer), "vkCreateBuffer", failure)) return false;
+    name_object(fn_, device_, VK_OBJECT_TYPE_BUFFER, b.buffer,
+                use == MemoryUse::device_local ? "grass buffer"
+                : use == MemoryUse::staging    ? "grass staging buffer"
+                                               : "grass streaming buffer");
 
     VkMemoryRequirements requirements{};
     fn_.vkGetBufferMemoryRequirements(device_, b.buffer, &requirements);
@@ -95,6 +101,7 @@ bool Memory::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, MemoryUs
         fn_.vkDestroyBuffer(device_, b.buffer, nullptr);
         return false;
     }
+    name_object(fn_, device_, VK_OBJECT_TYPE_DEVICE_MEMORY, b.memory, "grass buffer memory");
     b.allocated = requirements.size;
     b.coherent = (flags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT) != 0;
     bool ok = vk_ok(fn_.vkBindBufferMemory(device_, b.buffer, b.memory, 0), "vkBindBufferMemory", failure);
@@ -148,6 +155,8 @@ bool Memory::make_image(uint32_t width, uint32_t height, uint32_t layers, uint32
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     if (!vk_ok(fn_.vkCreateImage(device_, &info, nullptr, &im.image), "vkCreateImage", failure)) return false;
+    const bool array = view_type == VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    name_object(fn_, device_, VK_OBJECT_TYPE_IMAGE, im.image, array ? "grass array image" : "grass image");
 
     VkMemoryRequirements requirements{};
     fn_.vkGetImageMemoryRequirements(device_, im.image, &requirements);
@@ -156,6 +165,7 @@ bool Memory::make_image(uint32_t width, uint32_t height, uint32_t layers, uint32
         fn_.vkDestroyImage(device_, im.image, nullptr);
         return false;
     }
+    name_object(fn_, device_, VK_OBJECT_TYPE_DEVICE_MEMORY, im.memory, "grass image memory");
     im.allocated = requirements.size;
     bool ok = vk_ok(fn_.vkBindImageMemory(device_, im.image, im.memory, 0), "vkBindImageMemory", failure);
     if (ok) {
@@ -165,6 +175,9 @@ bool Memory::make_image(uint32_t width, uint32_t height, uint32_t layers, uint32
         view.format = format;
         view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
         ok = vk_ok(fn_.vkCreateImageView(device_, &view, nullptr, &im.view), "vkCreateImageView", failure);
+        if (ok) {
+            name_object(fn_, device_, VK_OBJECT_TYPE_IMAGE_VIEW, im.view, array ? "grass array view" : "grass view");
+        }
     }
     if (!ok) {
         destroy_image(&im);

@@ -27,9 +27,14 @@ grass_vk_desc make_vk_desc(void) {
     return vk;
 }
 
-grass_context_desc make_context_desc(void);
-grass_context_desc make_context_desc(void) {
+/* Debug labels on whatever the context (GRASS_DEBUG_LABELS_AUTO, the default, labels in
+ * debug contexts only): `labels` must live until the create call returns. */
+grass_context_desc make_context_desc(grass_debug_labels_desc* labels);
+grass_context_desc make_context_desc(grass_debug_labels_desc* labels) {
     grass_context_desc desc = grass_default_context_desc();
     desc.log_fn = log_message;
+    *labels = grass_default_debug_labels_desc();
+    labels->labels = GRASS_DEBUG_LABELS_ON;
+    desc.next = labels;
     return desc;
 }

@@ -208,7 +208,8 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
     GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
     GRASS_STRUCT_TYPE_WIND_MAP_DESC = 0x6772000B,
-    GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C
+    GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C,
+    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000D /* 0.5 */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -281,6 +282,9 @@ typedef enum grass_message_id {
      * created with is not current on the calling thread (none is, or another one is):
      * refused with GRASS_ERROR_INVALID_STATE before any GL call (grass_gl.h). */
     GRASS_MSG_GL_CONTEXT_NOT_CURRENT = 408,
+    /* 0.5: warning: GRASS_DEBUG_LABELS_ON was asked for, and the API cannot label (Vulkan
+     * without VK_EXT_debug_utils on the instance): the context works, unlabelled. */
+    GRASS_MSG_DEBUG_LABELS_UNAVAILABLE = 409,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501
@@ -312,7 +316,7 @@ typedef enum grass_depth_mode {
 
 typedef struct grass_context_desc {
     grass_struct_type type;    /* GRASS_STRUCT_TYPE_CONTEXT_DESC */
-    const void* next;          /* NULL */
+    const void* next;          /* NULL, or a chain of extensions: a grass_debug_labels_desc (0.5) */
     grass_allocator allocator; /* default: all NULL = malloc/free */
     grass_log_fn log_fn;       /* default NULL: messages are dropped */
     void* log_user_data;
@@ -325,6 +329,43 @@ typedef struct grass_context_desc {
 } grass_context_desc;
 
 GRASS_API grass_context_desc grass_default_context_desc(void);
+
+/* 0.5: debug labels and object names, for frame debuggers (RenderDoc, Nsight) and
+ * validation messages (docs/integration.md, "Frame debuggers and calling
+ * conventions"). With them on, every object
+ * grass creates carries a name beginning "grass " (buffers, images, views, samplers,
+ * pipelines, layouts, descriptor pools and set layouts, memory, query pools; GL: buffers,
+ * textures, samplers, programs, vertex arrays, queries) and grass's work in a command
+ * buffer or GL frame is grouped under labels: "grass uploads" and "grass interaction pass"
+ * (grass_vk_prepare; GL: inside "grass render"), and "grass draw" (GL: "grass render") with
+ * one label inside per tier kind drawn ("grass blades", "grass volumes", "grass images").
+ *   Vulkan: grass calls VK_EXT_debug_utils, which the host enables on its instance (grass
+ *   cannot): it is there when the host's vkGetInstanceProcAddr returns
+ *   vkSetDebugUtilsObjectNameEXT and vkCmdBeginDebugUtilsLabelEXT.
+ *   GL: KHR_debug (GL 4.3 core): glObjectLabel, glPushDebugGroup / glPopDebugGroup.
+ * Off, it costs one branch per object created and per label, and builds no string. */
+typedef enum grass_debug_labels {
+    /* The default: on in a GL debug context (GL_CONTEXT_FLAG_DEBUG_BIT), and on Vulkan when
+     * the host enabled VK_EXT_debug_utils on its instance; off otherwise. */
+    GRASS_DEBUG_LABELS_AUTO = 0,
+    /* Never: grass names nothing (but the vertex array of grass_gl.h's current-context
+     * check, labelled "grass context N" always) and pushes no label. */
+    GRASS_DEBUG_LABELS_OFF = 1,
+    /* Always on GL; on Vulkan whenever VK_EXT_debug_utils is enabled (without it grass
+     * cannot label, and says so in a warning, GRASS_MSG_DEBUG_LABELS_UNAVAILABLE). */
+    GRASS_DEBUG_LABELS_ON = 2
+} grass_debug_labels;
+
+/* Chained through grass_context_desc.next (any backend; the null backend has nothing to
+ * label). */
+typedef struct grass_debug_labels_desc {
+    grass_struct_type type;    /* GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC */
+    const void* next;          /* NULL, or a further extension of grass_context_desc */
+    grass_debug_labels labels; /* default GRASS_DEBUG_LABELS_AUTO */
+} grass_debug_labels_desc;
+
+/* 0.5 */
+GRASS_API grass_debug_labels_desc grass_default_debug_labels_desc(void);
 
 /* A context with no GPU backend: it generates patches, plans frames and reports stats,
  * and draws nothing. For tools, tests and servers. The GPU contexts are made by

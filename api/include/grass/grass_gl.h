@@ -90,7 +90,12 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     host's projection as its scene does; only GL_LOWER_LEFT is tested);
  *   - GL_FRAMEBUFFER_SRGB and the target's format: grass writes linear colour; where the
  *     target does not encode it, set GRASS_VIEW_FLAG_ENCODE_SRGB (grass.h);
- *   - GL_DITHER (on by default), the stencil and depth buffers' other state. */
+ *   - GL_DITHER (on by default), the stencil and depth buffers' other state.
+ *
+ * Debug labels (grass.h, grass_debug_labels_desc; on by default in a debug context): the
+ * call is one debug group, "grass render" (glPushDebugGroup / glPopDebugGroup, balanced),
+ * with a group per pass and tier kind inside, and grass's GL objects carry glObjectLabel
+ * names beginning "grass ". */
 GRASS_API grass_result grass_gl_render(grass_context* context);
 
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */

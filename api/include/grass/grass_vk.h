@@ -17,6 +17,11 @@
  *   ... host ends the pass, submits ...
  *   grass_end_frame(ctx);
  *
+ * Debug labels (grass.h, grass_debug_labels_desc): where the host enabled VK_EXT_debug_utils
+ * on its instance, grass names its objects and labels its passes in the host's command
+ * buffers (vkCmdBeginDebugUtilsLabelEXT / vkCmdEndDebugUtilsLabelEXT, balanced within each
+ * call).
+ *
  * Frames in flight: the plugin keeps frames_in_flight copies of its per-frame buffers and
  * uses them in turn, one per grass_begin_frame(). The host must have waited for the GPU
  * to finish frame N - frames_in_flight before it calls grass_begin_frame() for frame N,
