@@ -5,6 +5,7 @@
 #pragma once
 
 #include <grass/grass.h>
+#include <grass/grass_vk.h>
 
 #include "host_mesh.hpp"
 #include "mesh_draw.hpp"
@@ -51,7 +52,7 @@ struct TargetDesc {
     // Vulkan: the vkGetInstanceProcAddr the host hands grass (grass_vk_desc's
     // get_instance_proc_addr); nullptr: the loader's own. Tests pass a wrapper that counts
     // handles or makes a call fail, for grass's dispatch table only.
-    void (*(*vk_get_instance_proc_addr)(void* instance, const char* name))(void) = nullptr;
+    grass_vk_get_instance_proc_addr_fn vk_get_instance_proc_addr = nullptr;
     // Vulkan: grass_vk_desc::allocation_callbacks (a const VkAllocationCallbacks*); grass only.
     const void* vk_allocation_callbacks = nullptr;
     // Vulkan: the host makes a VkPipelineCache of its own and hands it to grass

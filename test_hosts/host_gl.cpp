@@ -78,7 +78,7 @@ private:
     void release_egl();
     bool init_osmesa(std::string* error);
     grass_gl_proc proc(const char* name) const;
-    static grass_gl_proc load_proc(void* user_data, const char* name);
+    static grass_gl_proc GRASS_API_PTR load_proc(void* user_data, const char* name);
     bool load_functions(std::string* error);
     bool create_target(std::string* error);
     void clear_rect(const float color[4], float depth, const int32_t rect[4]);
@@ -271,7 +271,7 @@ grass_gl_proc GlHost::proc(const char* name) const {
 
 void* GlHost::gl_proc_address(const char* name) const { return reinterpret_cast<void*>(proc(name)); }
 
-grass_gl_proc GlHost::load_proc(void* user_data, const char* name) {
+grass_gl_proc GRASS_API_PTR GlHost::load_proc(void* user_data, const char* name) {
     const auto* host = static_cast<const GlHost*>(user_data);
     const grass_gl_proc real = host->proc(name);
     return host->target_.gl_proc_filter ? host->target_.gl_proc_filter(name, real) : real;

@@ -464,9 +464,8 @@ void VkHost::draw_ground(VkCommandBuffer cmd, const grass_view_desc& view) {
 
 grass_result VkHost::create_context(const grass_context_desc& desc, grass_context** out) {
     grass_vk_desc vk = grass_default_vk_desc();
-    vk.get_instance_proc_addr = target_.vk_get_instance_proc_addr
-                                    ? target_.vk_get_instance_proc_addr
-                                    : (grass_vk_get_instance_proc_addr_fn)vkGetInstanceProcAddr;
+    vk.get_instance_proc_addr =
+        target_.vk_get_instance_proc_addr ? target_.vk_get_instance_proc_addr : vkGetInstanceProcAddr;
     vk.instance = instance_.handle();
     vk.physical_device = physical_device_;
     vk.device = device_;

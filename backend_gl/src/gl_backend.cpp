@@ -105,6 +105,8 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     gl_.GetIntegerv(GL_CONTEXT_FLAGS, &flags);
     debug_context_ = (flags & GL_CONTEXT_FLAG_DEBUG_BIT) != 0;
     program_cache_.init(gl_, shader_sources_hash());
+    labels_ = ctx_->debug_labels == GRASS_DEBUG_LABELS_ON ||
+              (ctx_->debug_labels == GRASS_DEBUG_LABELS_AUTO && debug_context_);
 
     // The variants of fields without design maps; the others come with their fields.
     grass_result result = GRASS_SUCCESS;
@@ -115,6 +117,7 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     }
 
     gl_.CreateTextures(GL_TEXTURE_2D, 1, &white_texture_);
+    label(GL_TEXTURE, white_texture_, "grass default design map");
     gl_.TextureStorage2D(white_texture_, 1, GL_R16, 1, 1);
     {
         const uint16_t white = 0xFFFF;
@@ -123,6 +126,7 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     }
 
     gl_.CreateSamplers(1, &sampler_);
+    label(GL_SAMPLER, sampler_, "grass design map sampler");
     gl_.SamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     gl_.SamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl_.SamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -130,11 +134,13 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
 
     // Slice colour and normal: trilinear. Thresholds are ids, not signals: never blended.
     gl_.CreateSamplers(1, &slice_sampler_);
+    label(GL_SAMPLER, slice_sampler_, "grass slice sampler");
     gl_.SamplerParameteri(slice_sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     gl_.SamplerParameteri(slice_sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl_.SamplerParameteri(slice_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl_.SamplerParameteri(slice_sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl_.CreateSamplers(1, &threshold_sampler_);
+    label(GL_SAMPLER, threshold_sampler_, "grass slice threshold sampler");
     gl_.SamplerParameteri(threshold_sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
     gl_.SamplerParameteri(threshold_sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl_.SamplerParameteri(threshold_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -143,12 +149,17 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     instances_.create(gl_);
     uniforms_.create(gl_);
     colliders_.create(gl_);
+    label(GL_BUFFER, instances_.name(), "grass instances");
+    label(GL_BUFFER, uniforms_.name(), "grass uniforms");
+    label(GL_BUFFER, colliders_.name(), "grass colliders");
     for (int l = 0; l < 2; ++l) {
         tile_offsets_[l].create(gl_);
         tile_colliders_[l].create(gl_);
+        label(GL_BUFFER, tile_offsets_[l].name(), "grass collider tile offsets");
+        label(GL_BUFFER, tile_colliders_[l].name(), "grass collider tiles");
     }
     tier_vertex_array_ = create_instance_vertex_array(gl_, instances_.name());
-    label_context();
+    label_context(); // always: the current-context check reads this label (gl_current.cpp)
     create_timers();
     result = check_errors(kCreateFunction, "creating the programs, white texture, samplers and timer queries");
     if (result != GRASS_SUCCESS) return result;
@@ -192,10 +203,13 @@ grass_result GlBackend::program(GlProgramKind kind, uint32_t features, const cha
     if (cached == 0) {
         cached = program_cache_.load(gl_, function, kind, features);
         if (cached != 0) set_sampler_units(gl_, cached);
-    }
-    if (cached == 0) {
-        const grass_result result = create_program(ctx_, gl_, function, kind, features, &cached);
-        if (result != GRASS_SUCCESS) return result;
+        if (cached == 0) {
+            const grass_result result = create_program(ctx_, gl_, function, kind, features, &cached);
+            if (result != GRASS_SUCCESS) return result;
+        }
+        static const char* const kNames[kProgramKindCount] = {"grass blades program", "grass volume program",
+                                                              "grass image program", "grass debug cells program"};
+        label(GL_PROGRAM, cached, kNames[kind]); // made or loaded from the binary cache
     }
     *out_program = cached;
     return GRASS_SUCCESS;
@@ -246,6 +260,8 @@ grass_result GlBackend::upload_patch(uint32_t slot, const PatchData& patch) {
     const size_t index_bytes = patch.indices.size() * sizeof(uint32_t);
     gl_.CreateBuffers(1, &gpu.vertices);
     gl_.CreateBuffers(1, &gpu.indices);
+    label(GL_BUFFER, gpu.vertices, "grass patch vertices");
+    label(GL_BUFFER, gpu.indices, "grass patch indices");
     if (vertex_bytes > 0) {
         gl_.NamedBufferStorage(gpu.vertices, static_cast<GLsizeiptr>(vertex_bytes), patch.vertices.data(), 0);
     }
@@ -254,6 +270,7 @@ grass_result GlBackend::upload_patch(uint32_t slot, const PatchData& patch) {
     }
 
     gl_.CreateVertexArrays(1, &gpu.vertex_array);
+    label(GL_VERTEX_ARRAY, gpu.vertex_array, "grass patch vertex array");
     const GLuint vao = gpu.vertex_array;
     gl_.VertexArrayVertexBuffer(vao, kVertexBinding, gpu.vertices, 0, sizeof(BladeVertex));
     gl_.VertexArrayVertexBuffer(vao, kInstanceBinding, instances_.name(), 0, sizeof(TierInstance));
@@ -311,16 +328,18 @@ grass_result GlBackend::upload_slices(uint32_t slot, const SliceSet& set) {
         GLenum type;
         const void* texels;
         size_t texel_bytes;
+        const char* name; // its label (debug labels)
     };
     const Array arrays[] = {
-        {&gpu.color, GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, set.color.data(), 4},
-        {&gpu.normal, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, set.normal.data(), 4},
-        {&gpu.threshold, GL_RGBA16, GL_RGBA, GL_UNSIGNED_SHORT, set.threshold.data(), 8},
+        {&gpu.color, GL_SRGB8_ALPHA8, GL_RGBA, GL_UNSIGNED_BYTE, set.color.data(), 4, "grass slice colours"},
+        {&gpu.normal, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, set.normal.data(), 4, "grass slice normals"},
+        {&gpu.threshold, GL_RGBA16, GL_RGBA, GL_UNSIGNED_SHORT, set.threshold.data(), 8, "grass slice thresholds"},
     };
     {
         GlUnpackStateGuard unpack(gl_, 1); // rows tightly packed, whatever their width
         for (const Array& a : arrays) {
             gl_.CreateTextures(GL_TEXTURE_2D_ARRAY, 1, a.texture);
+            label(GL_TEXTURE, *a.texture, a.name);
             gl_.TextureStorage3D(*a.texture, static_cast<GLsizei>(set.mip_levels), a.internal_format,
                                  static_cast<GLsizei>(set.width), static_cast<GLsizei>(set.height),
                                  static_cast<GLsizei>(set.layers));
@@ -395,6 +414,7 @@ grass_result GlBackend::upload_map(uint32_t slot, const MapTexels& map) {
     MapGpu& gpu = maps_[slot];
     const bool rgba = map.channels == 4;
     gl_.CreateTextures(GL_TEXTURE_2D, 1, &gpu.texture);
+    label(GL_TEXTURE, gpu.texture, "grass design map");
     gl_.TextureStorage2D(gpu.texture, 1, rgba ? GL_RGBA16 : GL_R16, static_cast<GLsizei>(map.width),
                          static_cast<GLsizei>(map.height));
     {

@@ -156,6 +156,28 @@ private:
     GLint max_texture_size_ = 0;
     GLint max_array_layers_ = 0;
     bool debug_context_ = false; // GL_CONTEXT_FLAG_DEBUG_BIT: glGetError after every render
+    // Debug labels and object names (grass.h, grass_debug_labels), decided at creation: ON,
+    // or AUTO in a debug context.
+    bool labels_ = false;
+    // Names a GL object "grass ..." (KHR_debug) where labels are on: one branch when off.
+    void label(GLenum identifier, GLuint name, const char* text) const {
+        if (labels_ && name != 0) gl_.ObjectLabel(identifier, name, -1, text);
+    }
+    // A debug group around the GL calls made while it lives, where labels are on.
+    class DebugGroup {
+    public:
+        DebugGroup(const GlBackend& backend, const char* name) : gl_(backend.labels_ ? &backend.gl_ : nullptr) {
+            if (gl_) gl_->PushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
+        }
+        ~DebugGroup() {
+            if (gl_) gl_->PopDebugGroup();
+        }
+        DebugGroup(const DebugGroup&) = delete;
+        DebugGroup& operator=(const DebugGroup&) = delete;
+
+    private:
+        const GlFunctions* gl_;
+    };
     GlStreamBuffer instances_;
     GlStreamBuffer uniforms_;
     Vector<unsigned char> uniform_staging_;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 namespace grass {
 
@@ -67,12 +68,14 @@ void GlBackend::bind_field_maps(const FieldGpu& field, uint32_t features) const 
 // Geometry draws: the patch's blades, instances front to back.
 void GlBackend::draw_blades(const FramePlan& plan) const {
     GLuint bound_program = 0;
+    std::optional<DebugGroup> group; // "grass blades" around the geometry tiers' draws
     for (const GLint unit : kMapUnit) gl_.BindSampler(static_cast<GLuint>(unit), sampler_);
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         const TierDraw& draw = plan.draws[i];
         if (draw.kind != GRASS_TIER_GEOMETRY) continue;
         const PatchGpu& patch = patches_[draw.patch_slot];
         if (draw.instance_count == 0 || draw.vertex_count == 0) continue;
+        if (!group) group.emplace(*this, "grass blades");
         const GLuint program = program_of(kProgramBlades, draw.features);
         if (program != bound_program) {
             gl_.UseProgram(program);
@@ -95,9 +98,11 @@ void GlBackend::draw_sliced(const FramePlan& plan, grass_tier_kind kind) const {
     bool bound = false;
     GLuint bound_program = 0;
     const GlProgramKind program_kind = kind == GRASS_TIER_VOLUME ? kProgramVolume : kProgramImage;
+    std::optional<DebugGroup> group; // around the tier kind's draws, where it has some
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         const TierDraw& draw = plan.draws[i];
         if (draw.kind != kind || draw.instance_count == 0) continue;
+        if (!group) group.emplace(*this, kind == GRASS_TIER_VOLUME ? "grass volumes" : "grass images");
         if (!bound) {
             gl_.BindVertexArray(tier_vertex_array_);
             for (const GLint unit : kMapUnit) gl_.BindSampler(static_cast<GLuint>(unit), sampler_);
@@ -197,11 +202,13 @@ grass_result GlBackend::render(const char* function) {
     // or with another clip convention.
     if (!frame_uploaded_ || frame_target_ != target) upload_frame(target);
 
-    GlDrawStateGuard guard(gl_, dynamics); // also makes texture unit 0 active
+    GlDrawStateGuard guard(gl_, dynamics);                // also makes texture unit 0 active
+    const DebugGroup render_group(*this, "grass render"); // popped before the guard restores
     if (pass_pending) {
         // Before any draw of the frame, and before the Frame block is bound at uniform
         // binding 0 (the pass binds its level's block there).
         interaction_ran_ = true;
+        const DebugGroup group(*this, "grass interaction pass");
         const grass_result result = run_interaction_pass(plan, function);
         if (result != GRASS_SUCCESS) return result;
     }
@@ -229,6 +236,7 @@ grass_result GlBackend::render(const char* function) {
     gl_.BindBufferRange(GL_UNIFORM_BUFFER, 0, uniforms_.name(), 0, sizeof(FrameUniforms));
 
     if (debug) {
+        const DebugGroup group(*this, "grass debug cells");
         draw_debug(plan);
     } else {
         // Near tiers first, so the depth test rejects most of the far tiers' fragments.

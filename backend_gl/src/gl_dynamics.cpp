@@ -43,6 +43,7 @@ grass_result GlBackend::upload_blade_curves(uint32_t slot, const PatchData& patc
     gpu.curve_bytes = 0;
     const size_t bytes = patch.blade_curves.size() * sizeof(float);
     gl_.CreateBuffers(1, &gpu.curves);
+    label(GL_BUFFER, gpu.curves, "grass blade curves");
     const float none[8] = {};
     gl_.NamedBufferStorage(gpu.curves, static_cast<GLsizeiptr>(bytes > 0 ? bytes : sizeof none),
                            bytes > 0 ? patch.blade_curves.data() : none, 0);
@@ -98,6 +99,7 @@ grass_result GlBackend::run_interaction_pass(const FramePlan& plan, const char* 
         const GLsizei n = static_cast<GLsizei>(pass.resolution);
         for (uint32_t l = 0; l < levels; ++l) {
             gl_.CreateTextures(GL_TEXTURE_2D, 1, &interaction_maps_[l]);
+            label(GL_TEXTURE, interaction_maps_[l], "grass interaction map");
             gl_.TextureStorage2D(interaction_maps_[l], 1, GL_RGBA32F, n, n);
             gl_.TextureParameteri(interaction_maps_[l], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
             gl_.TextureParameteri(interaction_maps_[l], GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -101,7 +101,10 @@
     /* the current-context check (gl_current.cpp) */                                 \
     X(PFNGLISVERTEXARRAYPROC, IsVertexArray)                                         \
     X(PFNGLOBJECTLABELPROC, ObjectLabel)                                             \
-    X(PFNGLGETOBJECTLABELPROC, GetObjectLabel)
+    X(PFNGLGETOBJECTLABELPROC, GetObjectLabel)                                       \
+    /* debug labels (grass_debug_labels): KHR_debug, GL 4.3 core */                  \
+    X(PFNGLPUSHDEBUGGROUPPROC, PushDebugGroup)                                       \
+    X(PFNGLPOPDEBUGGROUPPROC, PopDebugGroup)
 
 namespace grass {
 

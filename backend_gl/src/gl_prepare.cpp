@@ -7,8 +7,10 @@ namespace grass {
 
 grass_result GlBackend::make_interaction_program(const char* function) {
     interaction_program_ = program_cache_.load(gl_, function, kInteractionProgramKind, 0);
-    if (interaction_program_ != 0) return GRASS_SUCCESS;
-    return create_interaction_program(ctx_, gl_, function, &interaction_program_);
+    grass_result result = GRASS_SUCCESS;
+    if (interaction_program_ == 0) result = create_interaction_program(ctx_, gl_, function, &interaction_program_);
+    if (result == GRASS_SUCCESS) label(GL_PROGRAM, interaction_program_, "grass interaction program");
+    return result;
 }
 
 grass_result GlBackend::prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,

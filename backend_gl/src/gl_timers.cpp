@@ -13,6 +13,7 @@ void GlBackend::create_timers() {
     gl_.GetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);
     if (bits <= 0) return; // no timer queries: grass_get_tier_gpu_ms says unavailable
     gl_.CreateQueries(GL_TIMESTAMP, static_cast<GLsizei>(kTimerQueries), timer_queries_);
+    for (const GLuint query : timer_queries_) label(GL_QUERY, query, "grass tier timer query");
     timer_ring_.set_clock(static_cast<uint32_t>(bits), 1.0); // GL_TIMESTAMP counts nanoseconds
     timers_ = true;
 }

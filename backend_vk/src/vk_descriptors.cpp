@@ -1,5 +1,7 @@
 #include "vk_descriptors.hpp"
 
+#include "vk_labels.hpp"
+
 namespace grass::vk {
 
 namespace {
@@ -18,7 +20,12 @@ VkResult create_pool(const Functions& fn, VkDevice device, uint32_t sets, VkDesc
     info.maxSets = sets;
     info.poolSizeCount = sizeof(sizes) / sizeof(sizes[0]);
     info.pPoolSizes = sizes;
-    return fn.vkCreateDescriptorPool(device, &info, fn.callbacks(), out);
+    const VkResult r = fn.vkCreateDescriptorPool(device, &info, fn.callbacks(), out);
+    if (r == VK_SUCCESS) {
+        name_object(fn, device, VK_OBJECT_TYPE_DESCRIPTOR_POOL, *out,
+                    flags ? "grass descriptor pool (fields)" : "grass descriptor pool (frame draws)");
+    }
+    return r;
 }
 } // namespace
 

@@ -2,6 +2,7 @@
 
 #include "context/context.hpp"
 #include "foundation/allocator.hpp"
+#include "vk_labels.hpp"
 
 #include <cstring>
 
@@ -142,6 +143,17 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
         VkFormatFeatureFlags wanted = VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_TRANSFER_DST_BIT;
         if (f.linear) wanted |= VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
         if ((format.optimalTilingFeatures & wanted) != wanted) return unsupported(ctx, function, d, f.what);
+    }
+
+    // Debug labels and object names (grass.h, grass_debug_labels): AUTO and ON take them
+    // where the host enabled VK_EXT_debug_utils.
+    if (!load_labels(ctx->debug_labels, vk_desc.get_instance_proc_addr, d.instance, &d.fn) &&
+        ctx->debug_labels == GRASS_DEBUG_LABELS_ON) {
+        ctx->warn(GRASS_MSG_DEBUG_LABELS_UNAVAILABLE,
+                  "%s: debug labels are GRASS_DEBUG_LABELS_ON, but the instance has no VK_EXT_debug_utils (the "
+                  "host's vkGetInstanceProcAddr returned NULL for vkSetDebugUtilsObjectNameEXT or "
+                  "vkCmdBeginDebugUtilsLabelEXT): enable the extension on the instance to see grass's labels",
+                  function);
     }
     return GRASS_SUCCESS;
 }

@@ -97,6 +97,10 @@ struct Functions {
     VkAllocationCallbacks host_callbacks{};
     bool has_host_callbacks = false;
     const VkAllocationCallbacks* callbacks() const { return has_host_callbacks ? &host_callbacks : nullptr; }
+    // VK_EXT_debug_utils: all three, or none when labels are off (vk_labels.hpp).
+    PFN_vkSetDebugUtilsObjectNameEXT vkSetDebugUtilsObjectNameEXT = nullptr;
+    PFN_vkCmdBeginDebugUtilsLabelEXT vkCmdBeginDebugUtilsLabelEXT = nullptr;
+    PFN_vkCmdEndDebugUtilsLabelEXT vkCmdEndDebugUtilsLabelEXT = nullptr;
 };
 
 // Fills `out`. Returns nullptr on success, or the name of the first function the loader

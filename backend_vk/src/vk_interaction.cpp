@@ -1,5 +1,6 @@
 #include "vk_interaction.hpp"
 
+#include "vk_labels.hpp"
 #include "vk_pipeline.hpp"
 #include "vk_uploads.hpp"
 
@@ -84,6 +85,7 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
                failure)) {
         return false;
     }
+    name_object(fn_, device_, VK_OBJECT_TYPE_DESCRIPTOR_POOL, pool_, *what);
     VkDescriptorSetLayout set_layouts[2 * kMaxFramesInFlight];
     for (uint32_t i = 0; i < sets; ++i) set_layouts[i] = set_layout_;
     VkDescriptorSet allocated[2 * kMaxFramesInFlight] = {};
@@ -109,6 +111,7 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
                failure)) {
         return false;
     }
+    name_object(fn_, device_, VK_OBJECT_TYPE_SHADER_MODULE, module, *what);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -120,6 +123,7 @@ bool InteractionPass::create_pipeline(VkFailure* failure, const char** what) {
                           "vkCreateComputePipelines", failure);
     fn_.vkDestroyShaderModule(device_, module, fn_.callbacks());
     if (!ok) pipeline_ = VK_NULL_HANDLE;
+    if (ok) name_object(fn_, device_, VK_OBJECT_TYPE_PIPELINE, pipeline_, *what);
     return ok;
 }
 

@@ -1,5 +1,7 @@
 #include "vk_memory.hpp"
 
+#include "vk_labels.hpp"
+
 namespace grass::vk {
 
 namespace {
@@ -114,6 +116,10 @@ bool Memory::create_buffer(VkDeviceSize size, VkBufferUsageFlags usage, MemoryUs
     if (!vk_ok(fn_.vkCreateBuffer(device_, &info, fn_.callbacks(), &b.buffer), "vkCreateBuffer", failure)) {
         return false;
     }
+    name_object(fn_, device_, VK_OBJECT_TYPE_BUFFER, b.buffer,
+                use == MemoryUse::device_local ? "grass buffer"
+                : use == MemoryUse::staging    ? "grass staging buffer"
+                                               : "grass streaming buffer");
     AllocationRequest request;
     request.tiling = Tiling::linear;
     request.mapped = use != MemoryUse::device_local;
@@ -179,6 +185,8 @@ bool Memory::make_image(uint32_t width, uint32_t height, uint32_t layers, uint32
     if (!vk_ok(fn_.vkCreateImage(device_, &info, fn_.callbacks(), &im.image), "vkCreateImage", failure)) {
         return false;
     }
+    const bool array = view_type == VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    name_object(fn_, device_, VK_OBJECT_TYPE_IMAGE, im.image, array ? "grass array image" : "grass image");
     AllocationRequest request;
     request.tiling = Tiling::optimal;
     VkMemoryPropertyFlags flags = 0;
@@ -204,6 +212,9 @@ bool Memory::make_image(uint32_t width, uint32_t height, uint32_t layers, uint32
         view.format = format;
         view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, levels, 0, layers};
         ok = vk_ok(fn_.vkCreateImageView(device_, &view, fn_.callbacks(), &im.view), "vkCreateImageView", failure);
+        if (ok) {
+            name_object(fn_, device_, VK_OBJECT_TYPE_IMAGE_VIEW, im.view, array ? "grass array view" : "grass view");
+        }
     }
     if (!ok) {
         destroy_image(&im);

@@ -1,4 +1,5 @@
 #include "vk_memory_blocks.hpp"
+#include "vk_labels.hpp"
 
 #include <algorithm>
 
@@ -49,6 +50,8 @@ VkResult MemoryBlocks::allocate_memory(uint32_t type, VkDeviceSize size, const A
     }
     const VkResult r = fn_.vkAllocateMemory(device_, &info, fn_.callbacks(), out);
     if (r == VK_SUCCESS) {
+        name_object(fn_, device_, VK_OBJECT_TYPE_DEVICE_MEMORY, *out,
+                    dedicated_for && dedicated_for->dedicated ? "grass dedicated memory" : "grass memory block");
         heap_allocated_[properties_.memoryTypes[type].heapIndex] += size;
         device_allocations_ += 1;
     }

@@ -1,6 +1,7 @@
 #include "vk_pipeline.hpp"
 
 #include "vk_debug_view.hpp"
+#include "vk_labels.hpp"
 #include "vk_slice_pipelines.hpp"
 
 #include "context/backend.hpp"
@@ -180,8 +181,8 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
     sampler.minLod = 0.0f;
     sampler.maxLod = 0.0f;
     *what = "the design map sampler";
-    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &sampler_), "vkCreateSampler", failure))
-        return false;
+    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &sampler_), "vkCreateSampler", failure)) return false;
+    name_object(fn_, device_, VK_OBJECT_TYPE_SAMPLER, sampler_, *what);
 
     // Baked slices: colour and normal trilinear over the whole mip chain; thresholds are
     // never blended (a blend of two blades' thresholds is no blade's), nearest texel and mip.
@@ -191,6 +192,7 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
     if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &slice_linear_), "vkCreateSampler", failure)) {
         return false;
     }
+    name_object(fn_, device_, VK_OBJECT_TYPE_SAMPLER, slice_linear_, *what);
     sampler.magFilter = VK_FILTER_NEAREST;
     sampler.minFilter = VK_FILTER_NEAREST;
     sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
@@ -198,6 +200,7 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
     if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &slice_nearest_), "vkCreateSampler", failure)) {
         return false;
     }
+    name_object(fn_, device_, VK_OBJECT_TYPE_SAMPLER, slice_nearest_, *what);
 
     const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     const VkDescriptorSetLayoutBinding bindings[kBindingCount] = {
@@ -236,14 +239,18 @@ bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const 
                "vkCreateDescriptorSetLayout", failure)) {
         return false;
     }
+    name_object(fn, device, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, *set_layout, set_name);
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     layout_info.setLayoutCount = 1;
     layout_info.pSetLayouts = set_layout;
     layout_info.pushConstantRangeCount = push_range ? 1 : 0;
     layout_info.pPushConstantRanges = push_range;
     *what = layout_name;
-    return vk_ok(fn.vkCreatePipelineLayout(device, &layout_info, fn.callbacks(), layout), "vkCreatePipelineLayout",
-                 failure);
+    if (!vk_ok(fn.vkCreatePipelineLayout(device, &layout_info, fn.callbacks(), layout), "vkCreatePipelineLayout", failure)) {
+        return false;
+    }
+    name_object(fn, device, VK_OBJECT_TYPE_PIPELINE_LAYOUT, *layout, layout_name);
+    return true;
 }
 
 bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
@@ -259,8 +266,8 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
         VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
         info.codeSize = code_size[i];
         info.pCode = code[i];
-        ok =
-            vk_ok(fn.vkCreateShaderModule(device, &info, fn.callbacks(), &modules[i]), "vkCreateShaderModule", failure);
+        ok = vk_ok(fn.vkCreateShaderModule(device, &info, fn.callbacks(), &modules[i]), "vkCreateShaderModule", failure);
+        if (ok) name_object(fn, device, VK_OBJECT_TYPE_SHADER_MODULE, modules[i], "grass shader module");
     }
 
     // The shape's vertex attributes that the vertex shader reads.
@@ -366,6 +373,9 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
         *what = shape.name;
         ok = vk_ok(fn.vkCreateGraphicsPipelines(device, target.cache, 2, infos, fn.callbacks(), out_pipelines),
                    "vkCreateGraphicsPipelines", failure);
+        if (ok) {
+            for (int i = 0; i < 2; ++i) name_object(fn, device, VK_OBJECT_TYPE_PIPELINE, out_pipelines[i], shape.name);
+        }
         if (!ok) {
             for (int i = 0; i < 2; ++i) {
                 if (out_pipelines[i]) fn.vkDestroyPipeline(device, out_pipelines[i], fn.callbacks());

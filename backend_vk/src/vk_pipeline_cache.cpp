@@ -4,6 +4,7 @@
 // context/pipeline_blob.hpp) and grass_pipeline_desc.cache_data seeds (vkMergePipelineCaches
 // from a cache made of the blob, after its headers were checked against this device).
 #include "vk_backend.hpp"
+#include "vk_labels.hpp"
 
 #include "context/context.hpp"
 #include "context/pipeline_blob.hpp"
@@ -36,6 +37,7 @@ bool VkBackend::create_pipeline_cache(VkFailure* failure, const char** what) {
                failure)) {
         return false;
     }
+    name_object(fn_, device_.device, VK_OBJECT_TYPE_PIPELINE_CACHE, own_cache_, "grass pipeline cache");
     cache_ = own_cache_;
     return true;
 }

@@ -4,7 +4,10 @@
 #include "vk_backend.hpp"
 
 #include "context/context.hpp"
+#include "vk_labels.hpp"
 #include "vk_staging.hpp"
+
+#include <optional>
 
 namespace grass::vk {
 
@@ -60,6 +63,7 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
     if (pending_uploads_ > 0) record_uploads(cmd);
     // Responsive grass: the interaction pass, once per frame (grass_vk.h).
     if (interaction_pending_) {
+        const LabelScope label(fn_, cmd, "grass interaction pass");
         interaction_.record(cmd, slot_, ctx_->plan.interaction);
         interaction_pending_ = false;
     }
@@ -117,7 +121,10 @@ void VkBackend::record_uploads(VkCommandBuffer cmd) {
                                       regions_.data(), static_cast<uint32_t>(regions_.size()));
         }
     }
-    batch_.record(fn_, cmd);
+    {
+        const LabelScope label(fn_, cmd, "grass uploads"); // after the batch is built: nothing can throw
+        batch_.record(fn_, cmd);
+    }
 
     // The staging buffers wait until this frame's copies have run on the GPU.
     deferred_.retire(&default_white_staging_, frame_);
@@ -263,6 +270,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     scissor.extent = {static_cast<uint32_t>(x1 > x0 ? x1 - x0 : 0), static_cast<uint32_t>(y1 > y0 ? y1 - y0 : 0)};
 
     const bool depth_test = (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) == 0;
+    const LabelScope draw_label(fn_, cmd, "grass draw"); // around everything recorded below
     fn_.vkCmdSetViewport(cmd, 0, 1, &viewport);
     fn_.vkCmdSetScissor(cmd, 0, 1, &scissor);
     if (device_.indexed_blocks) {
@@ -282,6 +290,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
 
     if (debug_view) {
         // Every draw as boxes, in plan order.
+        const LabelScope label(fn_, cmd, "grass debug cells");
         VkPipeline bound_pipeline = VK_NULL_HANDLE;
         fn_.vkCmdBindVertexBuffers(cmd, DebugViewPipeline::kInstanceBinding, 1, &instances, &zero);
         for (uint32_t i = 0; i < plan.draws.size(); ++i) {
@@ -307,9 +316,11 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     write_stamp(cmd, stamps, 0);
     VkPipeline bound_pipeline = VK_NULL_HANDLE;
     uint32_t bound_patch = UINT32_MAX;
+    std::optional<LabelScope> blades_label; // "grass blades" around the geometry tiers' draws
     for (uint32_t i = 0; i < plan.draws.size(); ++i) {
         const TierDraw& d = plan.draws[i];
         if (d.kind != GRASS_TIER_GEOMETRY || !drawn(d, false)) continue;
+        if (!blades_label) blades_label.emplace(fn_, cmd, "grass blades");
         const VkPipeline pipeline = pipeline_.pipeline(kPipelineBlade, d.features, depth_test);
         if (pipeline != bound_pipeline) {
             fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
@@ -326,6 +337,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         }
         fn_.vkCmdDrawIndexed(cmd, d.vertex_count, d.instance_count, 0, 0, d.first_instance);
     }
+    blades_label.reset();
     write_stamp(cmd, stamps, 1);
     if (slice_draws == 0) {
         write_stamp(cmd, stamps, 2);
@@ -337,10 +349,12 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         PipelineKind pipeline;
     } passes[2] = {{GRASS_TIER_VOLUME, kPipelineVolume}, {GRASS_TIER_IMAGE, kPipelineImage}};
     for (const auto& pass : passes) {
+        std::optional<LabelScope> label; // around the pass's draws, where it has some
         bound_pipeline = VK_NULL_HANDLE;
         for (uint32_t i = 0; i < plan.draws.size(); ++i) {
             const TierDraw& d = plan.draws[i];
             if (d.kind != pass.kind || !draw_sets_[i]) continue;
+            if (!label) label.emplace(fn_, cmd, pass.kind == GRASS_TIER_VOLUME ? "grass volumes" : "grass images");
             const VkPipeline pipeline = pipeline_.pipeline(pass.pipeline, d.features, depth_test);
             if (pipeline != bound_pipeline) {
                 if (!bound_pipeline) {

@@ -11,6 +11,7 @@
 #include "vk_backend.hpp"
 
 #include "context/context.hpp"
+#include "vk_labels.hpp"
 
 namespace grass::vk {
 
@@ -32,6 +33,7 @@ void VkBackend::create_timers() {
         timer_pool_ = VK_NULL_HANDLE; // timings unavailable; drawing does not need them
         return;
     }
+    name_object(fn_, device_.device, VK_OBJECT_TYPE_QUERY_POOL, timer_pool_, "grass tier timer queries");
     timer_ring_.set_clock(valid_bits, period);
 }
 

@@ -63,7 +63,7 @@ private:
 };
 
 // Loaders return function pointers, as grass_gl_get_proc_address_fn does.
-grass_gl_proc load_gl(void*, const char* name) { return glfwGetProcAddress(name); }
+grass_gl_proc GRASS_API_PTR load_gl(void*, const char* name) { return glfwGetProcAddress(name); }
 // The mesh drawer's and the host's table's loader returns them as void*.
 void* load_gl_for_meshes(void*, const char* name) { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
 

@@ -496,7 +496,7 @@ VkWindow::~VkWindow() {
 
 grass_result VkWindow::create_context(const grass_context_desc& desc, grass_context** out) {
     grass_vk_desc vk = grass_default_vk_desc();
-    vk.get_instance_proc_addr = (grass_vk_get_instance_proc_addr_fn)vkGetInstanceProcAddr;
+    vk.get_instance_proc_addr = vkGetInstanceProcAddr; // PFN_vkGetInstanceProcAddr itself: no cast
     vk.instance = instance_.handle();
     vk.physical_device = physical_;
     vk.device = device_;

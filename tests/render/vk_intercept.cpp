@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 namespace grass_test::vk_intercept {
@@ -78,6 +79,24 @@ VKAPI_ATTR void VKAPI_CALL wrap_vkGetPhysicalDeviceMemoryProperties(VkPhysicalDe
     }
 }
 
+std::vector<Handle> made_handles;
+std::map<Handle, std::string> given_names;
+std::vector<std::string> labels;
+bool debug_utils_hidden = false;
+
+template <class H>
+uint64_t bits(H h) {
+    if constexpr (std::is_pointer_v<H>) {
+        return reinterpret_cast<uint64_t>(h);
+    } else {
+        return static_cast<uint64_t>(h);
+    }
+}
+template <class H>
+void record_made(VkObjectType type, const H* handles, uint32_t n = 1) {
+    for (uint32_t i = 0; i < n; ++i) made_handles.push_back({int32_t(type), bits(handles[i])});
+}
+
 // True (and counted) when this call of `call` is to fail.
 bool fails(const char* call) {
     if (!failure.call || std::strcmp(failure.call, call) != 0 || failure.count == 0) return false;
@@ -111,15 +130,24 @@ GRASS_REAL(vkCmdDispatch)
 GRASS_REAL(vkDestroyPipeline)
 GRASS_REAL(vkCreateQueryPool)
 GRASS_REAL(vkDestroyQueryPool)
+GRASS_REAL(vkCreateDescriptorSetLayout)
+GRASS_REAL(vkCreatePipelineLayout)
+GRASS_REAL(vkCreateShaderModule)
+GRASS_REAL(vkSetDebugUtilsObjectNameEXT)
+GRASS_REAL(vkCmdBeginDebugUtilsLabelEXT)
+GRASS_REAL(vkCmdEndDebugUtilsLabelEXT)
 #undef GRASS_REAL
 
 // A create call: fails when told to, else counts what it made.
-#define GRASS_CREATE(name, Info, Handle, counter)                                                            \
+#define GRASS_CREATE(name, Info, Handle, counter, object_type)                                               \
     VKAPI_ATTR VkResult VKAPI_CALL wrap_##name(VkDevice d, const Info* info, const VkAllocationCallbacks* a, \
                                                Handle* out) {                                                \
         if (fails(#name)) return failure.result;                                                             \
         const VkResult r = real_##name(d, info, a, out);                                                     \
-        if (r == VK_SUCCESS) counts.counter += 1;                                                            \
+        if (r == VK_SUCCESS) {                                                                               \
+            counts.counter += 1;                                                                             \
+            record_made(object_type, out);                                                                   \
+        }                                                                                                    \
         return r;                                                                                            \
     }
 #define GRASS_DESTROY(name, Handle, counter)                                                       \
@@ -127,11 +155,11 @@ GRASS_REAL(vkDestroyQueryPool)
         if (h != VK_NULL_HANDLE) counts.counter -= 1;                                              \
         real_##name(d, h, a);                                                                      \
     }
-GRASS_CREATE(vkCreateBuffer, VkBufferCreateInfo, VkBuffer, buffers)
+GRASS_CREATE(vkCreateBuffer, VkBufferCreateInfo, VkBuffer, buffers, VK_OBJECT_TYPE_BUFFER)
 GRASS_DESTROY(vkDestroyBuffer, VkBuffer, buffers)
-GRASS_CREATE(vkCreateImage, VkImageCreateInfo, VkImage, images)
+GRASS_CREATE(vkCreateImage, VkImageCreateInfo, VkImage, images, VK_OBJECT_TYPE_IMAGE)
 GRASS_DESTROY(vkDestroyImage, VkImage, images)
-GRASS_CREATE(vkCreateImageView, VkImageViewCreateInfo, VkImageView, views)
+GRASS_CREATE(vkCreateImageView, VkImageViewCreateInfo, VkImageView, views, VK_OBJECT_TYPE_IMAGE_VIEW)
 GRASS_DESTROY(vkDestroyImageView, VkImageView, views)
 VKAPI_ATTR VkResult VKAPI_CALL wrap_vkAllocateMemory(VkDevice d, const VkMemoryAllocateInfo* info,
                                                      const VkAllocationCallbacks* a, VkDeviceMemory* out) {
@@ -140,15 +168,17 @@ VKAPI_ATTR VkResult VKAPI_CALL wrap_vkAllocateMemory(VkDevice d, const VkMemoryA
     if (r == VK_SUCCESS) {
         counts.memory += 1;
         counts.memory_made += 1;
+        record_made(VK_OBJECT_TYPE_DEVICE_MEMORY, out);
     }
     return r;
 }
 GRASS_DESTROY(vkFreeMemory, VkDeviceMemory, memory)
-GRASS_CREATE(vkCreateSampler, VkSamplerCreateInfo, VkSampler, samplers)
+GRASS_CREATE(vkCreateSampler, VkSamplerCreateInfo, VkSampler, samplers, VK_OBJECT_TYPE_SAMPLER)
 GRASS_DESTROY(vkDestroySampler, VkSampler, samplers)
-GRASS_CREATE(vkCreateDescriptorPool, VkDescriptorPoolCreateInfo, VkDescriptorPool, pools)
+GRASS_CREATE(vkCreateDescriptorPool, VkDescriptorPoolCreateInfo, VkDescriptorPool, pools,
+             VK_OBJECT_TYPE_DESCRIPTOR_POOL)
 GRASS_DESTROY(vkDestroyDescriptorPool, VkDescriptorPool, pools)
-GRASS_CREATE(vkCreateQueryPool, VkQueryPoolCreateInfo, VkQueryPool, queries)
+GRASS_CREATE(vkCreateQueryPool, VkQueryPoolCreateInfo, VkQueryPool, queries, VK_OBJECT_TYPE_QUERY_POOL)
 GRASS_DESTROY(vkDestroyQueryPool, VkQueryPool, queries)
 GRASS_DESTROY(vkDestroyPipeline, VkPipeline, pipelines)
 #undef GRASS_CREATE
@@ -176,6 +206,7 @@ VKAPI_ATTR VkResult VKAPI_CALL wrap_vkCreateGraphicsPipelines(VkDevice d, VkPipe
         counts.pipelines_made += n;
         if (cache == VK_NULL_HANDLE) counts.pipelines_without_cache += n;
         counts.last_pipeline_cache = reinterpret_cast<uint64_t>(cache);
+        record_made(VK_OBJECT_TYPE_PIPELINE, out, n);
     }
     return r;
 }
@@ -190,8 +221,39 @@ VKAPI_ATTR VkResult VKAPI_CALL wrap_vkCreateComputePipelines(VkDevice d, VkPipel
         counts.pipelines_made += n;
         if (cache == VK_NULL_HANDLE) counts.pipelines_without_cache += n;
         counts.last_pipeline_cache = reinterpret_cast<uint64_t>(cache);
+        record_made(VK_OBJECT_TYPE_PIPELINE, out, n);
     }
     return r;
+}
+
+// Objects counted only for their names.
+#define GRASS_MADE(name, Info, Handle, object_type)                                                          \
+    VKAPI_ATTR VkResult VKAPI_CALL wrap_##name(VkDevice d, const Info* info, const VkAllocationCallbacks* a, \
+                                               Handle* out) {                                                \
+        const VkResult r = real_##name(d, info, a, out);                                                     \
+        if (r == VK_SUCCESS) record_made(object_type, out);                                                  \
+        return r;                                                                                            \
+    }
+GRASS_MADE(vkCreateDescriptorSetLayout, VkDescriptorSetLayoutCreateInfo, VkDescriptorSetLayout,
+           VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT)
+GRASS_MADE(vkCreatePipelineLayout, VkPipelineLayoutCreateInfo, VkPipelineLayout, VK_OBJECT_TYPE_PIPELINE_LAYOUT)
+GRASS_MADE(vkCreateShaderModule, VkShaderModuleCreateInfo, VkShaderModule, VK_OBJECT_TYPE_SHADER_MODULE)
+#undef GRASS_MADE
+
+VKAPI_ATTR VkResult VKAPI_CALL wrap_vkSetDebugUtilsObjectNameEXT(VkDevice d,
+                                                                 const VkDebugUtilsObjectNameInfoEXT* info) {
+    given_names[Handle{int32_t(info->objectType), info->objectHandle}] = info->pObjectName ? info->pObjectName : "";
+    return real_vkSetDebugUtilsObjectNameEXT(d, info);
+}
+
+VKAPI_ATTR void VKAPI_CALL wrap_vkCmdBeginDebugUtilsLabelEXT(VkCommandBuffer cmd, const VkDebugUtilsLabelEXT* label) {
+    labels.push_back(std::string("+") + label->pLabelName);
+    real_vkCmdBeginDebugUtilsLabelEXT(cmd, label);
+}
+
+VKAPI_ATTR void VKAPI_CALL wrap_vkCmdEndDebugUtilsLabelEXT(VkCommandBuffer cmd) {
+    labels.push_back("-");
+    real_vkCmdEndDebugUtilsLabelEXT(cmd);
 }
 
 VKAPI_ATTR void VKAPI_CALL wrap_vkCmdDispatch(VkCommandBuffer cmd, uint32_t x, uint32_t y, uint32_t z) {
@@ -227,12 +289,14 @@ VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL wrap_vkGetDeviceProcAddr(VkDevice devic
     GRASS_WRAP(vkDestroyPipeline)
     GRASS_WRAP(vkCreateQueryPool)
     GRASS_WRAP(vkDestroyQueryPool)
-#undef GRASS_WRAP
+    GRASS_WRAP(vkCreateDescriptorSetLayout)
+    GRASS_WRAP(vkCreatePipelineLayout)
+    GRASS_WRAP(vkCreateShaderModule)
     return real;
 }
 
-void (*wrap_get_instance_proc_addr(void* instance, const char* name))(void) {
-    const PFN_vkVoidFunction real = vkGetInstanceProcAddr(static_cast<VkInstance>(instance), name);
+VKAPI_ATTR PFN_vkVoidFunction VKAPI_CALL wrap_get_instance_proc_addr(VkInstance instance, const char* name) {
+    const PFN_vkVoidFunction real = vkGetInstanceProcAddr(instance, name);
     if (real && std::strcmp(name, "vkGetPhysicalDeviceMemoryProperties2") == 0) {
         real_vkGetPhysicalDeviceMemoryProperties2 = reinterpret_cast<PFN_vkGetPhysicalDeviceMemoryProperties2>(real);
         return reinterpret_cast<PFN_vkVoidFunction>(&wrap_vkGetPhysicalDeviceMemoryProperties2);
@@ -249,6 +313,15 @@ void (*wrap_get_instance_proc_addr(void* instance, const char* name))(void) {
         real_device_proc_addr = reinterpret_cast<PFN_vkGetDeviceProcAddr>(real);
         return reinterpret_cast<PFN_vkVoidFunction>(&wrap_vkGetDeviceProcAddr);
     }
+    if (!real) return real;
+    const bool debug_utils = std::strcmp(name, "vkSetDebugUtilsObjectNameEXT") == 0 ||
+                             std::strcmp(name, "vkCmdBeginDebugUtilsLabelEXT") == 0 ||
+                             std::strcmp(name, "vkCmdEndDebugUtilsLabelEXT") == 0;
+    if (debug_utils && debug_utils_hidden) return nullptr;
+    GRASS_WRAP(vkSetDebugUtilsObjectNameEXT)
+    GRASS_WRAP(vkCmdBeginDebugUtilsLabelEXT)
+    GRASS_WRAP(vkCmdEndDebugUtilsLabelEXT)
+#undef GRASS_WRAP
     return real;
 }
 
@@ -286,6 +359,16 @@ bool driver_has_memory_budget() {
 }
 int failures_injected() { return injected; }
 Live live() { return counts; }
+
+std::vector<Handle> made() { return made_handles; }
+std::map<Handle, std::string> names() { return given_names; }
+std::vector<std::string> label_events() { return labels; }
+void clear_debug_records() {
+    made_handles.clear();
+    given_names.clear();
+    labels.clear();
+}
+void hide_debug_utils(bool hide) { debug_utils_hidden = hide; }
 
 std::string Live::describe() const {
     return std::to_string(buffers) + " buffers, " + std::to_string(images) + " images, " + std::to_string(views) +

@@ -4,12 +4,17 @@
 // time per process (the wrappers keep the loader's pointers in globals).
 #pragma once
 
+#include <grass/grass_vk.h>
+
 #include <cstdint>
+#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace grass_test::vk_intercept {
 
-using GetInstanceProcAddr = void (*(*)(void* instance, const char* name))(void);
+using GetInstanceProcAddr = grass_vk_get_instance_proc_addr_fn;
 
 // The wrapper to give the host.
 GetInstanceProcAddr get_instance_proc_addr();
@@ -50,5 +55,27 @@ struct Live {
     std::string describe() const;
 };
 Live live();
+
+// Debug labels (VK_EXT_debug_utils, grass.h grass_debug_labels): what grass made and named
+// through this wrapper, and the labels it recorded. The wrapper hands grass its own
+// vkSetDebugUtilsObjectNameEXT and vkCmdBegin/EndDebugUtilsLabelEXT, which record and then
+// call the loader's.
+struct Handle {
+    int32_t type; // VkObjectType
+    uint64_t handle;
+    bool operator<(const Handle& o) const { return type != o.type ? type < o.type : handle < o.handle; }
+};
+// Every object grass created since clear_debug_records(): buffers, images, views, memory,
+// samplers, descriptor pools, descriptor set layouts, pipeline layouts, shader modules,
+// pipelines, query pools.
+std::vector<Handle> made();
+// The names grass gave, by object (the last name of each).
+std::map<Handle, std::string> names();
+// "+name" for each vkCmdBeginDebugUtilsLabelEXT, "-" for each vkCmdEndDebugUtilsLabelEXT, in order.
+std::vector<std::string> label_events();
+void clear_debug_records();
+// true: the wrapper answers NULL for the three functions, as the loader does for an instance
+// without VK_EXT_debug_utils.
+void hide_debug_utils(bool hide);
 
 } // namespace grass_test::vk_intercept

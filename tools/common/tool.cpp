@@ -20,7 +20,7 @@ int fail(const char* tool, const std::string& message) {
     return 1;
 }
 
-void log_to_stderr(void*, grass_log_level level, grass_message_id id, const char* message) {
+void GRASS_API_PTR log_to_stderr(void*, grass_log_level level, grass_message_id id, const char* message) {
     static const char* const names[] = {"error", "warning", "info"};
     std::fprintf(stderr, "grass %s %d: %s\n", names[level], static_cast<int>(id), message);
 }

@@ -22,7 +22,7 @@ void check(grass_result result, const char* call, const grass_context* ctx = nul
 int fail(const char* tool, const std::string& message);
 
 // A grass_context_desc.log_fn: "grass <level> <id>: <message>" on stderr.
-void log_to_stderr(void* user_data, grass_log_level level, grass_message_id id, const char* message);
+void GRASS_API_PTR log_to_stderr(void* user_data, grass_log_level level, grass_message_id id, const char* message);
 
 // Creates the directory and its parents (as mkdir -p); false on failure.
 bool make_dirs(const std::string& path);

@@ -110,6 +110,21 @@ extern "C" {
 #    define GRASS_API
 #endif
 
+/* The calling convention of every callback grass calls (log, allocation, LOD tests, the GL
+ * loader): VKAPI_PTR's rule (vk_platform.h), __stdcall on Windows (which 64-bit Windows
+ * ignores: it has one convention), nothing elsewhere. Define a callback with it between the
+ * return type and the name, as Vulkan's VKAPI_CALL:
+ *   static void GRASS_API_PTR on_log(void* user_data, grass_log_level level,
+ *                                    grass_message_id id, const char* message) { ... }
+ * Where it is empty (every platform but 32-bit Windows) a callback without it converts as
+ * before. Vulkan's own entry point (grass_vk_get_instance_proc_addr_fn) follows VKAPI_PTR
+ * exactly (GRASS_VKAPI_PTR, grass_vk.h). */
+#if defined(_WIN32)
+#    define GRASS_API_PTR __stdcall
+#else
+#    define GRASS_API_PTR
+#endif
+
 /* ---- Renamed names -----------------------------------------------------------------------
  * A name renamed since 0.3 stays declared for source code that defines
  * GRASS_ENABLE_DEPRECATED before including grass: each use then compiles with a deprecation
@@ -194,7 +209,8 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
     GRASS_STRUCT_TYPE_WIND_MAP_DESC = 0x6772000B,
     GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C,
-    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D /* 0.5 */
+    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,    /* 0.5 */
+    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E /* 0.5 */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -272,6 +288,9 @@ typedef enum grass_message_id {
      * truncated or corrupt; or the driver refused a program binary in it. grass compiles
      * what it needs instead, so the call still succeeds. */
     GRASS_MSG_PIPELINE_CACHE = 409,
+    /* 0.5: warning: GRASS_DEBUG_LABELS_ON was asked for, and the API cannot label (Vulkan
+     * without VK_EXT_debug_utils on the instance): the context works, unlabelled. */
+    GRASS_MSG_DEBUG_LABELS_UNAVAILABLE = 410,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501
@@ -279,15 +298,16 @@ typedef enum grass_message_id {
 
 /* Called for every message the context emits. `message` is one English sentence that
  * names the call, the argument and the value. */
-typedef void (*grass_log_fn)(void* user_data, grass_log_level level, grass_message_id id, const char* message);
+typedef void(GRASS_API_PTR* grass_log_fn)(void* user_data, grass_log_level level, grass_message_id id,
+                                          const char* message);
 
 /* ---- Allocation ------------------------------------------------------------------- */
 
 /* Host-memory hooks. All three are set or all are NULL (then malloc/free are used).
  * `alignment` is a power of two no larger than 64. free_fn is never given NULL. */
 typedef struct grass_allocator {
-    void* (*alloc_fn)(void* user_data, size_t size, size_t alignment);
-    void (*free_fn)(void* user_data, void* ptr);
+    void*(GRASS_API_PTR* alloc_fn)(void* user_data, size_t size, size_t alignment);
+    void(GRASS_API_PTR* free_fn)(void* user_data, void* ptr);
     void* user_data;
 } grass_allocator;
 
@@ -302,7 +322,7 @@ typedef enum grass_depth_mode {
 
 typedef struct grass_context_desc {
     grass_struct_type type;    /* GRASS_STRUCT_TYPE_CONTEXT_DESC */
-    const void* next;          /* NULL */
+    const void* next;          /* NULL, or a chain of extensions: a grass_debug_labels_desc (0.5) */
     grass_allocator allocator; /* default: all NULL = malloc/free */
     grass_log_fn log_fn;       /* default NULL: messages are dropped */
     void* log_user_data;
@@ -315,6 +335,43 @@ typedef struct grass_context_desc {
 } grass_context_desc;
 
 GRASS_API grass_context_desc grass_default_context_desc(void);
+
+/* 0.5: debug labels and object names, for frame debuggers (RenderDoc, Nsight) and
+ * validation messages (docs/integration.md, "Frame debuggers and calling
+ * conventions"). With them on, every object
+ * grass creates carries a name beginning "grass " (buffers, images, views, samplers,
+ * pipelines, layouts, descriptor pools and set layouts, memory, query pools; GL: buffers,
+ * textures, samplers, programs, vertex arrays, queries) and grass's work in a command
+ * buffer or GL frame is grouped under labels: "grass uploads" and "grass interaction pass"
+ * (grass_vk_prepare; GL: inside "grass render"), and "grass draw" (GL: "grass render") with
+ * one label inside per tier kind drawn ("grass blades", "grass volumes", "grass images").
+ *   Vulkan: grass calls VK_EXT_debug_utils, which the host enables on its instance (grass
+ *   cannot): it is there when the host's vkGetInstanceProcAddr returns
+ *   vkSetDebugUtilsObjectNameEXT and vkCmdBeginDebugUtilsLabelEXT.
+ *   GL: KHR_debug (GL 4.3 core): glObjectLabel, glPushDebugGroup / glPopDebugGroup.
+ * Off, it costs one branch per object created and per label, and builds no string. */
+typedef enum grass_debug_labels {
+    /* The default: on in a GL debug context (GL_CONTEXT_FLAG_DEBUG_BIT), and on Vulkan when
+     * the host enabled VK_EXT_debug_utils on its instance; off otherwise. */
+    GRASS_DEBUG_LABELS_AUTO = 0,
+    /* Never: grass names nothing (but the vertex array of grass_gl.h's current-context
+     * check, labelled "grass context N" always) and pushes no label. */
+    GRASS_DEBUG_LABELS_OFF = 1,
+    /* Always on GL; on Vulkan whenever VK_EXT_debug_utils is enabled (without it grass
+     * cannot label, and says so in a warning, GRASS_MSG_DEBUG_LABELS_UNAVAILABLE). */
+    GRASS_DEBUG_LABELS_ON = 2
+} grass_debug_labels;
+
+/* Chained through grass_context_desc.next (any backend; the null backend has nothing to
+ * label). */
+typedef struct grass_debug_labels_desc {
+    grass_struct_type type;    /* GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC */
+    const void* next;          /* NULL, or a further extension of grass_context_desc */
+    grass_debug_labels labels; /* default GRASS_DEBUG_LABELS_AUTO */
+} grass_debug_labels_desc;
+
+/* 0.5 */
+GRASS_API grass_debug_labels_desc grass_default_debug_labels_desc(void);
 
 /* A context with no GPU backend: it generates patches, plans frames and reports stats,
  * and draws nothing. For tools, tests and servers. The GPU contexts are made by
@@ -575,7 +632,7 @@ typedef struct grass_lod_node {
     double height_max;   /* ... and the highest */
 } grass_lod_node;
 
-typedef grass_lod_answer (*grass_lod_test_fn)(void* user_data, const grass_lod_node* node);
+typedef grass_lod_answer(GRASS_API_PTR* grass_lod_test_fn)(void* user_data, const grass_lod_node* node);
 
 typedef enum grass_lod_test_kind {
     /* Draws the tier between begin and end metres from the camera: discards a node entirely

@@ -27,12 +27,17 @@
 extern "C" {
 #endif
 
-/* A GL entry point as a loader returns it; grass casts it to the entry point's type. */
+/* A GL entry point as a loader returns it; grass casts it to the entry point's type (whose
+ * convention is APIENTRY's: __stdcall on Windows). No convention of its own: it is the type
+ * eglGetProcAddress and glfwGetProcAddress return. */
 typedef void (*grass_gl_proc)(void);
 /* Returns the address of a GL entry point, or NULL: wraps the host's loader, e.g.
- *   static grass_gl_proc load(void* user_data, const char* name) { return eglGetProcAddress(name); }
- * (eglGetProcAddress and glfwGetProcAddress return this very type). */
-typedef grass_gl_proc (*grass_gl_get_proc_address_fn)(void* user_data, const char* name);
+ *   static grass_gl_proc GRASS_API_PTR load(void* user_data, const char* name) {
+ *       return eglGetProcAddress(name);
+ *   }
+ * (eglGetProcAddress and glfwGetProcAddress return this very type). grass calls it with
+ * GRASS_API_PTR (grass.h; APIENTRY's rule: __stdcall on Windows, nothing elsewhere). */
+typedef grass_gl_proc(GRASS_API_PTR* grass_gl_get_proc_address_fn)(void* user_data, const char* name);
 
 typedef struct grass_gl_desc {
     grass_struct_type type;                        /* GRASS_STRUCT_TYPE_GL_DESC */
@@ -93,7 +98,12 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *   - GL_FRAMEBUFFER_SRGB and the target's format: grass writes linear colour; where the
  *     target does not encode it, set GRASS_VIEW_FLAG_ENCODE_SRGB (grass.h);
  *   - the provoking vertex (grass's flat varyings are the same at every vertex),
- *     GL_DITHER (on by default), the stencil and depth buffers' other state. */
+ *     GL_DITHER (on by default), the stencil and depth buffers' other state.
+ *
+ * Debug labels (grass.h, grass_debug_labels_desc; on by default in a debug context): the
+ * call is one debug group, "grass render" (glPushDebugGroup / glPopDebugGroup, balanced),
+ * with a group per pass and tier kind inside, and grass's GL objects carry glObjectLabel
+ * names beginning "grass ". */
 GRASS_API grass_result grass_gl_render(grass_context* context);
 
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */
@@ -105,7 +115,7 @@ GRASS_API grass_gl_desc grass_gl_default_desc(void);
 /* The 0.3 loader type: it returned void* (0.4's grass_gl_get_proc_address_fn returns a
  * grass_gl_proc, which eglGetProcAddress, glXGetProcAddress and glfwGetProcAddress return
  * as is). A 0.3 loader is given to a desc with grass_gl_set_loader_0_3, with no cast. */
-typedef void* (*grass_gl_get_proc_address_0_3_fn)(void* user_data, const char* name);
+typedef void*(GRASS_API_PTR* grass_gl_get_proc_address_0_3_fn)(void* user_data, const char* name);
 #    if defined(_MSC_VER) && !defined(__cplusplus)
 #        define GRASS_GL_INLINE_0_3 static __inline
 #    else

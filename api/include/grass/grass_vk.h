@@ -17,6 +17,11 @@
  *   ... host ends the pass, submits ...
  *   grass_end_frame(ctx);
  *
+ * Debug labels (grass.h, grass_debug_labels_desc): where the host enabled VK_EXT_debug_utils
+ * on its instance, grass names its objects and labels its passes in the host's command
+ * buffers (vkCmdBeginDebugUtilsLabelEXT / vkCmdEndDebugUtilsLabelEXT, balanced within each
+ * call).
+ *
  * Frames in flight: the plugin keeps frames_in_flight copies of its per-frame buffers and
  * uses them in turn, one per grass_begin_frame(). The host must have waited for the GPU
  * to finish frame N - frames_in_flight before it calls grass_begin_frame() for frame N,
@@ -51,8 +56,26 @@
 extern "C" {
 #endif
 
-/* PFN_vkGetInstanceProcAddr, cast: (grass_vk_get_instance_proc_addr_fn)vkGetInstanceProcAddr */
-typedef void (*(*grass_vk_get_instance_proc_addr_fn)(void* instance, const char* name))(void);
+/* VKAPI_PTR (vk_platform.h), spelled here so that no Vulkan header is needed: the calling
+ * convention of Vulkan's entry points. */
+#if defined(_WIN32)
+#    define GRASS_VKAPI_PTR __stdcall
+#elif defined(__ANDROID__) && defined(__ARM_ARCH) && __ARM_ARCH >= 7 && defined(__ARM_32BIT_STATE)
+#    define GRASS_VKAPI_PTR __attribute__((pcs("aapcs-vfp")))
+#else
+#    define GRASS_VKAPI_PTR
+#endif
+
+/* VkInstance is `struct VkInstance_T*` (VK_DEFINE_HANDLE); declaring the struct includes no
+ * Vulkan header. */
+struct VkInstance_T;
+/* PFN_vkVoidFunction. */
+typedef void(GRASS_VKAPI_PTR* grass_vk_void_function)(void);
+/* PFN_vkGetInstanceProcAddr, its very type: `vk_desc.get_instance_proc_addr =
+ * vkGetInstanceProcAddr;` needs no cast, in C and C++. Before 0.5 it took a void* instance
+ * and needed a cast; a cast to it still compiles (docs/migrating.md). */
+typedef grass_vk_void_function(GRASS_VKAPI_PTR* grass_vk_get_instance_proc_addr_fn)(struct VkInstance_T* instance,
+                                                                                    const char* name);
 
 typedef struct grass_vk_desc {
     grass_struct_type type;                                    /* GRASS_STRUCT_TYPE_VK_DESC */

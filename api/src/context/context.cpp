@@ -19,6 +19,7 @@ grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
     } else {
         desc.cache_directory = nullptr;
     }
+    desc.next = nullptr; // the host's chain is read during the create call only (debug_labels)
 }
 
 grass_context::~grass_context() {
@@ -98,9 +99,34 @@ grass_result create_context(const char* function, uint32_t header_version, const
                           static_cast<unsigned long long>(raw_enum(desc->type)),
                           static_cast<unsigned>(GRASS_STRUCT_TYPE_CONTEXT_DESC));
     }
-    if (desc->next)
-        return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: desc->next must be NULL",
-                          function);
+    // The extensions chained through desc->next (grass.h): each known type once, no loop.
+    grass_debug_labels debug_labels = GRASS_DEBUG_LABELS_AUTO;
+    bool has_debug_labels = false;
+    struct Link {
+        grass_struct_type type;
+        const void* next;
+    };
+    uint32_t links = 0;
+    for (const void* p = desc->next; p; p = static_cast<const Link*>(p)->next) {
+        const int64_t type = raw_enum(static_cast<const Link*>(p)->type);
+        links += 1;
+        if (type != GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC || has_debug_labels) {
+            return early_fail(desc, GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                              "%s: desc->next's chain holds, as its link %u, a struct of type 0x%08llx; expected "
+                              "GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC (0x%08x), once",
+                              function, links, static_cast<unsigned long long>(type),
+                              static_cast<unsigned>(GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC));
+        }
+        has_debug_labels = true;
+        const int64_t labels = raw_enum(static_cast<const grass_debug_labels_desc*>(p)->labels);
+        if (labels != GRASS_DEBUG_LABELS_AUTO && labels != GRASS_DEBUG_LABELS_OFF && labels != GRASS_DEBUG_LABELS_ON) {
+            return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                              "%s: the grass_debug_labels_desc chained to desc->next has labels %lld; it must be "
+                              "GRASS_DEBUG_LABELS_AUTO, _OFF or _ON (0..2)",
+                              function, static_cast<long long>(labels));
+        }
+        debug_labels = static_cast<grass_debug_labels>(labels);
+    }
     const grass_allocator& a = desc->allocator;
     if ((a.alloc_fn == nullptr) != (a.free_fn == nullptr)) {
         return early_fail(desc, GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
@@ -132,6 +158,7 @@ grass_result create_context(const char* function, uint32_t header_version, const
         memory = bootstrap.allocate(sizeof(grass_context), alignof(grass_context));
         ctx = new (memory) grass_context(*desc, owner);
         ctx->header_minor = minor;
+        ctx->debug_labels = debug_labels;
     } catch (const std::bad_alloc&) {
         if (memory) bootstrap.deallocate(memory);
         release_owner_tag(owner);
@@ -218,6 +245,14 @@ GRASS_API grass_context_desc grass_default_context_desc(void) {
     d.type = GRASS_STRUCT_TYPE_CONTEXT_DESC;
     d.log_level = GRASS_LOG_WARNING;
     d.depth_mode = GRASS_DEPTH_LESS;
+    return d;
+}
+
+GRASS_API grass_debug_labels_desc grass_default_debug_labels_desc(void) {
+    grass_debug_labels_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC;
+    d.labels = GRASS_DEBUG_LABELS_AUTO;
     return d;
 }
 

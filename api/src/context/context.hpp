@@ -33,6 +33,9 @@ struct grass_context : grass::Log {
     grass_context_desc desc;
     uint16_t owner;
     uint32_t header_minor = GRASS_VERSION_MINOR; // of the header the host was built against (abi_sizes.hpp)
+    // From the grass_debug_labels_desc chained to the create call's desc (grass.h); the
+    // backend resolves AUTO when it is made.
+    grass_debug_labels debug_labels = GRASS_DEBUG_LABELS_AUTO;
     grass::Backend* backend = nullptr;
     grass::HandlePool<grass::Patch> patches;
     grass::HandlePool<grass::Field> fields;

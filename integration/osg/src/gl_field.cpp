@@ -15,7 +15,7 @@ namespace {
 
 std::atomic<int> live_fields{0};
 
-grass_gl_proc load_gl(void*, const char* name) {
+grass_gl_proc GRASS_API_PTR load_gl(void*, const char* name) {
     void* address = osg::getGLExtensionFuncPtr(name);
     grass_gl_proc proc = nullptr;
     static_assert(sizeof(proc) == sizeof(address), "function and object pointers of one size");
@@ -23,7 +23,7 @@ grass_gl_proc load_gl(void*, const char* name) {
     return proc;
 }
 
-void log_to_osg(void*, grass_log_level level, grass_message_id id, const char* message) {
+void GRASS_API_PTR log_to_osg(void*, grass_log_level level, grass_message_id id, const char* message) {
     const osg::NotifySeverity severity = level == GRASS_LOG_ERROR     ? osg::WARN
                                          : level == GRASS_LOG_WARNING ? osg::NOTICE
                                                                       : osg::INFO;

@@ -50,6 +50,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
         "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_WIND_MAP_DESC": 0x6772000B,
         "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C, "GRASS_STRUCT_TYPE_PIPELINE_DESC": 0x6772000D,
+        "GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC": 0x6772000E,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -67,9 +68,11 @@ ENUMS = {
         "GRASS_MSG_BACKEND_CALL_FAILED": 402, "GRASS_MSG_OUT_OF_MEMORY": 403, "GRASS_MSG_INTERNAL_ERROR": 404,
         "GRASS_MSG_BAKE_CACHE": 405, "GRASS_MSG_DEVICE_LOST": 406, "GRASS_MSG_TIME_BACKWARDS": 407,
         "GRASS_MSG_GL_CONTEXT_NOT_CURRENT": 408, "GRASS_MSG_PIPELINE_CACHE": 409,
+        "GRASS_MSG_DEBUG_LABELS_UNAVAILABLE": 410,
         "GRASS_MSG_CONTEXT_CREATED": 500, "GRASS_MSG_PATCH_GENERATED": 501,
     },
     "grass_depth_mode": {"GRASS_DEPTH_LESS": 0, "GRASS_DEPTH_GREATER": 1},
+    "grass_debug_labels": {"GRASS_DEBUG_LABELS_AUTO": 0, "GRASS_DEBUG_LABELS_OFF": 1, "GRASS_DEBUG_LABELS_ON": 2},
     "grass_backend": {"GRASS_BACKEND_NONE": 0, "GRASS_BACKEND_GL": 1, "GRASS_BACKEND_VULKAN": 2},
     "grass_threshold_mode": {"GRASS_THRESHOLD_UNIFORM": 0, "GRASS_THRESHOLD_CLUSTERED": 1},
     "grass_map_format": {
@@ -133,6 +136,10 @@ class grass_context_desc(Structure):
 
 
 _HEAPS = DEFINES["GRASS_MAX_MEMORY_HEAPS"]
+
+
+class grass_debug_labels_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("labels", grass_enum)]
 
 
 class grass_memory_stats(Structure):
@@ -334,6 +341,7 @@ FUNCTIONS = {
     "grass_get_library_version": (c_uint32, []),
     "grass_result_string": (c_char_p, [grass_enum]),
     "grass_default_context_desc": (grass_context_desc, []),
+    "grass_default_debug_labels_desc": (grass_debug_labels_desc, []),
     "grass_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(_ctx)]),
     "grass_destroy_context": (None, [_ctx]),
     "grass_get_context_backend": (grass_enum, [_ctx]),

@@ -44,7 +44,8 @@ def parse_structs():
             decl = " ".join(decl.split())
             if not decl:
                 continue
-            fn = re.search(r"\(\s*\*\s*(\w+)\s*\)\s*\(", decl)
+            # A function pointer, with its calling convention (GRASS_API_PTR) or none.
+            fn = re.search(r"\(\s*(?:GRASS_\w*API_PTR)?\s*\*\s*(\w+)\s*\)\s*\(", decl)
             if fn:
                 fields.append(fn.group(1))
                 continue

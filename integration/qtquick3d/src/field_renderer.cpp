@@ -12,7 +12,7 @@ namespace {
 
 QAtomicInt g_live_renderers, g_live_contexts;
 
-void log_to_report(void* user_data, grass_log_level level, grass_message_id id, const char* message) {
+void GRASS_API_PTR log_to_report(void* user_data, grass_log_level level, grass_message_id id, const char* message) {
     if (level != GRASS_LOG_ERROR) return;
     auto* report = static_cast<RendererReport*>(user_data);
     QMutexLocker lock(&report->mutex);

@@ -11,7 +11,7 @@ namespace grass_qt {
 
 namespace {
 
-grass_gl_proc get_proc_address(void* user_data, const char* name) {
+grass_gl_proc GRASS_API_PTR get_proc_address(void* user_data, const char* name) {
     return static_cast<QOpenGLContext*>(user_data)->getProcAddress(name);
 }
 
