@@ -18,8 +18,9 @@ namespace {
 
 grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** out_backend) {
     const char* function = "grass_vk_create_context";
-    // A host built against grass_vk.h 0.3 or 0.4 passed a grass_vk_desc without
-    // allocation_callbacks (0.5): only the bytes it has are read.
+    // A host built against grass_vk.h 0.3 or 0.4 passed a grass_vk_desc that ends at
+    // frames_in_flight: only the bytes it has are read, and the fields 0.5 added
+    // (allocation_callbacks, pipeline_cache) read as 0, their defaults.
     grass_vk_desc copy{};
     const grass_vk_desc* vk_desc = nullptr;
     if (user_data) {
@@ -30,12 +31,6 @@ grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** 
     }
     grass_result r = grass::vk::check_vk_desc(ctx, function, vk_desc);
     if (r != GRASS_SUCCESS) return r;
-    // A host built against grass_vk.h 0.3 or 0.4 passed the struct up to frames_in_flight:
-    // the fields 0.5 added read as 0 (their defaults).
-    grass_vk_desc copy{};
-    const size_t bytes =
-        ctx->header_minor >= 5 ? sizeof copy : offsetof(grass_vk_desc, frames_in_flight) + sizeof(uint32_t);
-    std::memcpy(&copy, vk_desc, bytes);
     grass::vk::Device device;
     r = grass::vk::load_device(ctx, function, copy, &device);
     if (r != GRASS_SUCCESS) return r;
