@@ -53,10 +53,10 @@ struct TargetDesc {
     // get_instance_proc_addr); nullptr: the loader's own. Tests pass a wrapper that counts
     // handles or makes a call fail, for grass's dispatch table only.
     grass_vk_get_instance_proc_addr_fn vk_get_instance_proc_addr = nullptr;
-    // Vulkan: grass_vk_desc::allocation_callbacks (a const VkAllocationCallbacks*); grass only.
+    // Vulkan: grass_vk_host_objects_desc::allocation_callbacks (a const VkAllocationCallbacks*); grass only.
     const void* vk_allocation_callbacks = nullptr;
     // Vulkan: the host makes a VkPipelineCache of its own and hands it to grass
-    // (grass_vk_desc.pipeline_cache); Host::vk_pipeline_cache() names it.
+    // (grass_vk_host_objects_desc.pipeline_cache); Host::vk_pipeline_cache() names it.
     bool vk_host_pipeline_cache = false;
     // GL: given each GL entry point grass asks the host's loader for (its name and the real
     // one), returns the one grass gets; nullptr: the real ones. For fault-injection tests.

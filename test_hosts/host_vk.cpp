@@ -476,12 +476,16 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     vk.depth_format = kDepthFormat;
     vk.sample_count = samples_;
     vk.frames_in_flight = 2;
-    vk.allocation_callbacks = target_.vk_allocation_callbacks;
     if (target_.vk_host_pipeline_cache && !pipeline_cache_) {
         VkPipelineCacheCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
         if (vkCreatePipelineCache(device_, &info, nullptr, &pipeline_cache_) != VK_SUCCESS) return GRASS_ERROR_BACKEND;
     }
-    vk.pipeline_cache = reinterpret_cast<uint64_t>(pipeline_cache_);
+    // What the host lends grass besides its device, chained only when it lends something (as
+    // an engine would: a host lending nothing passes the bare desc).
+    grass_vk_host_objects_desc lent = grass_default_vk_host_objects_desc();
+    lent.allocation_callbacks = target_.vk_allocation_callbacks;
+    lent.pipeline_cache = reinterpret_cast<uint64_t>(pipeline_cache_);
+    if (lent.allocation_callbacks || lent.pipeline_cache) vk.next = &lent;
     return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
 }
 

@@ -18,21 +18,14 @@ namespace {
 
 grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** out_backend) {
     const char* function = "grass_vk_create_context";
-    // A host built against grass_vk.h 0.3 or 0.4 passed a grass_vk_desc that ends at
-    // frames_in_flight: only the bytes it has are read, and the fields 0.5 added
-    // (allocation_callbacks, pipeline_cache) read as 0, their defaults.
-    grass_vk_desc copy{};
-    const grass_vk_desc* vk_desc = nullptr;
-    if (user_data) {
-        const size_t bytes =
-            ctx->header_minor >= 5 ? sizeof(grass_vk_desc) : offsetof(grass_vk_desc, allocation_callbacks);
-        std::memcpy(&copy, user_data, bytes);
-        vk_desc = &copy;
-    }
-    grass_result r = grass::vk::check_vk_desc(ctx, function, vk_desc);
+    const auto* vk_desc = static_cast<const grass_vk_desc*>(user_data);
+    grass_vk_host_objects_desc host_objects{};
+    grass_result r = grass::vk::check_vk_desc(ctx, function, vk_desc, &host_objects);
     if (r != GRASS_SUCCESS) return r;
+    grass_vk_desc copy = *vk_desc;
+    copy.next = nullptr; // its extensions are read (host_objects); the host's chain is not kept
     grass::vk::Device device;
-    r = grass::vk::load_device(ctx, function, copy, &device);
+    r = grass::vk::load_device(ctx, function, copy, host_objects, &device);
     if (r != GRASS_SUCCESS) return r;
 
     VkBackend* backend = ctx->host.create<VkBackend>(ctx, copy, device);
@@ -73,6 +66,12 @@ grass_vk_desc grass_default_vk_desc(void) {
     d.type = GRASS_STRUCT_TYPE_VK_DESC;
     d.sample_count = 1;
     d.frames_in_flight = 2;
+    return d;
+}
+
+grass_vk_host_objects_desc grass_default_vk_host_objects_desc(void) {
+    grass_vk_host_objects_desc d{};
+    d.type = GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC;
     return d;
 }
 

@@ -193,7 +193,7 @@ private:
     DescriptorAllocator descriptors_;
     FrameDescriptors frame_sets_; // the volume and image draws' sets, written per frame
     DeferredDeletion deferred_;
-    VkPipelineCache cache_ = VK_NULL_HANDLE;     // the host's (grass_vk_desc.pipeline_cache) or own_cache_
+    VkPipelineCache cache_ = VK_NULL_HANDLE;     // the host's (grass_vk_host_objects_desc.pipeline_cache) or own_cache_
     VkPipelineCache own_cache_ = VK_NULL_HANDLE; // grass's own, when the host gave none
     BladePipeline pipeline_;
     FrameRing ring_;

@@ -8,7 +8,71 @@
 
 namespace grass::vk {
 
-grass_result check_vk_desc(grass_context* ctx, const char* function, const grass_vk_desc* d) {
+namespace {
+
+// The checks of a chained grass_vk_host_objects_desc.
+grass_result check_host_objects(grass_context* ctx, const char* function, const grass_vk_host_objects_desc& h) {
+    if (h.allocation_callbacks) {
+        const auto* c = static_cast<const VkAllocationCallbacks*>(h.allocation_callbacks);
+        const struct {
+            bool missing;
+            const char* name;
+        } callbacks[] = {
+            {c->pfnAllocation == nullptr, "pfnAllocation"},
+            {c->pfnReallocation == nullptr, "pfnReallocation"},
+            {c->pfnFree == nullptr, "pfnFree"},
+        };
+        for (const auto& f : callbacks) {
+            if (f.missing) {
+                return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+                                 "%s: grass_vk_host_objects_desc.allocation_callbacks->%s is NULL; Vulkan requires it",
+                                 function, f.name);
+            }
+        }
+        if ((c->pfnInternalAllocation == nullptr) != (c->pfnInternalFree == nullptr)) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
+                             "%s: grass_vk_host_objects_desc.allocation_callbacks has pfnInternal%s but not "
+                             "pfnInternal%s; set both or neither",
+                             function, c->pfnInternalFree ? "Free" : "Allocation",
+                             c->pfnInternalFree ? "Allocation" : "Free");
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
+// Walks the extensions chained to vk_desc->next: each a known type, each once.
+grass_result read_chain(grass_context* ctx, const char* function, const void* next,
+                        grass_vk_host_objects_desc* host_objects) {
+    *host_objects = grass_default_vk_host_objects_desc();
+    bool has_host_objects = false;
+    for (int depth = 0; next; ++depth) {
+        struct Header {
+            grass_struct_type type;
+            const void* next;
+        };
+        const auto* header = static_cast<const Header*>(next);
+        const uint32_t type = grass::raw_enum(header->type);
+        if (type != GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC || has_host_objects || depth > 0) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL,
+                             "%s: vk_desc->next chain holds a struct of type 0x%08x; it may hold "
+                             "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC (0x%08x), once",
+                             function, static_cast<unsigned>(type),
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC));
+        }
+        *host_objects = *static_cast<const grass_vk_host_objects_desc*>(next);
+        has_host_objects = true;
+        next = host_objects->next;
+        host_objects->next = nullptr;
+        const grass_result r = check_host_objects(ctx, function, *host_objects);
+        if (r != GRASS_SUCCESS) return r;
+    }
+    return GRASS_SUCCESS;
+}
+
+} // namespace
+
+grass_result check_vk_desc(grass_context* ctx, const char* function, const grass_vk_desc* d,
+                           grass_vk_host_objects_desc* host_objects) {
     if (!d) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: vk_desc is NULL", function);
     if (grass::raw_enum(d->type) != GRASS_STRUCT_TYPE_VK_DESC) {
         return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
@@ -16,10 +80,8 @@ grass_result check_vk_desc(grass_context* ctx, const char* function, const grass
                          static_cast<unsigned>(grass::raw_enum(d->type)),
                          static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DESC));
     }
-    if (d->next) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: vk_desc->next must be NULL",
-                         function);
-    }
+    const grass_result chain = read_chain(ctx, function, d->next, host_objects);
+    if (chain != GRASS_SUCCESS) return chain;
     const struct {
         bool missing;
         const char* name;
@@ -59,30 +121,6 @@ grass_result check_vk_desc(grass_context* ctx, const char* function, const grass
                          "%s: vk_desc->color_format is 0 (VK_FORMAT_UNDEFINED) with render_pass 0; dynamic rendering "
                          "needs the VkFormat of the colour attachment",
                          function);
-    }
-    if (d->allocation_callbacks) {
-        const auto* c = static_cast<const VkAllocationCallbacks*>(d->allocation_callbacks);
-        const struct {
-            bool missing;
-            const char* name;
-        } callbacks[] = {
-            {c->pfnAllocation == nullptr, "pfnAllocation"},
-            {c->pfnReallocation == nullptr, "pfnReallocation"},
-            {c->pfnFree == nullptr, "pfnFree"},
-        };
-        for (const auto& f : callbacks) {
-            if (f.missing) {
-                return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
-                                 "%s: vk_desc->allocation_callbacks->%s is NULL; Vulkan requires it", function, f.name);
-            }
-        }
-        if ((c->pfnInternalAllocation == nullptr) != (c->pfnInternalFree == nullptr)) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
-                             "%s: vk_desc->allocation_callbacks has pfnInternal%s but not pfnInternal%s; set both "
-                             "or neither",
-                             function, c->pfnInternalFree ? "Free" : "Allocation",
-                             c->pfnInternalFree ? "Allocation" : "Free");
-        }
     }
     return GRASS_SUCCESS;
 }

@@ -12,6 +12,9 @@ namespace grass::vk {
 constexpr uint32_t kMaxFramesInFlight = 8;
 
 // Logs the first problem through `context` (named after `function`) and returns its code.
-grass_result check_vk_desc(grass_context* context, const char* function, const grass_vk_desc* vk_desc);
+// Walks vk_desc->next: on success *host_objects is the chained grass_vk_host_objects_desc,
+// copied, or its defaults where there is none (its next then NULL).
+grass_result check_vk_desc(grass_context* context, const char* function, const grass_vk_desc* vk_desc,
+                           grass_vk_host_objects_desc* host_objects);
 
 } // namespace grass::vk

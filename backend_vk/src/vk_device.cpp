@@ -33,7 +33,8 @@ grass_result unsupported(grass_context* ctx, const char* function, const Device&
 
 } // namespace
 
-grass_result load_device(grass_context* ctx, const char* function, const grass_vk_desc& vk_desc, Device* out) {
+grass_result load_device(grass_context* ctx, const char* function, const grass_vk_desc& vk_desc,
+                         const grass_vk_host_objects_desc& host_objects, Device* out) {
     Device& d = *out;
     d.instance = static_cast<VkInstance>(vk_desc.instance);
     d.physical_device = static_cast<VkPhysicalDevice>(vk_desc.physical_device);
@@ -44,10 +45,11 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
                          "and Vulkan 1.1 or newer?)",
                          function, missing);
     }
-    if (vk_desc.allocation_callbacks) { // checked by check_vk_desc
-        d.fn.host_callbacks = *static_cast<const VkAllocationCallbacks*>(vk_desc.allocation_callbacks);
+    if (host_objects.allocation_callbacks) { // checked by check_vk_desc
+        d.fn.host_callbacks = *static_cast<const VkAllocationCallbacks*>(host_objects.allocation_callbacks);
         d.fn.has_host_callbacks = true;
     }
+    d.host_pipeline_cache = reinterpret_cast<VkPipelineCache>(host_objects.pipeline_cache); // 64-bit handles
     d.fn.vkGetPhysicalDeviceProperties(d.physical_device, &d.properties);
     d.fn.vkGetPhysicalDeviceMemoryProperties(d.physical_device, &d.memory);
     // The heap budget is a physical-device query: where the device lists VK_EXT_memory_budget

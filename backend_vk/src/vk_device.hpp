@@ -23,6 +23,8 @@ struct Device {
     // The device lists VK_EXT_memory_budget (and vkGetPhysicalDeviceMemoryProperties2 is
     // loaded): grass_memory_stats reports each heap's budget and the process's usage.
     bool memory_budget = false;
+    // The host's VkPipelineCache (grass_vk_host_objects_desc), or none: grass makes its own.
+    VkPipelineCache host_pipeline_cache = VK_NULL_HANDLE;
 };
 
 // The format of single-channel design maps (density, ambient, diffuse, height): 16-bit
@@ -39,6 +41,7 @@ constexpr VkFormat kSliceThresholdFormat = VK_FORMAT_R16G16B16A16_UNORM; // thre
 // vk_desc->render_pass is 0, a graphics queue family, the sample count, the density map
 // and slice formats. Logs and returns GRASS_ERROR_UNSUPPORTED (or GRASS_ERROR_BACKEND when the
 // loader lacks a function). `vk_desc` has passed check_vk_desc().
-grass_result load_device(grass_context* context, const char* function, const grass_vk_desc& vk_desc, Device* out);
+grass_result load_device(grass_context* context, const char* function, const grass_vk_desc& vk_desc,
+                         const grass_vk_host_objects_desc& host_objects, Device* out);
 
 } // namespace grass::vk

@@ -17,7 +17,7 @@ const char* load_functions(grass_vk_get_instance_proc_addr_fn get_instance_proc_
     GRASS_VK_DEVICE_FUNCTIONS(GRASS_VK_LOAD_DEVICE)
 #undef GRASS_VK_LOAD_DEVICE
 #define GRASS_VK_LOAD_OPTIONAL_INSTANCE(name) \
-    out->name = reinterpret_cast<PFN_##name>(get_instance_proc_addr(static_cast<void*>(instance), #name));
+    out->name = reinterpret_cast<PFN_##name>(get_instance_proc_addr(instance, #name));
     GRASS_VK_OPTIONAL_INSTANCE_FUNCTIONS(GRASS_VK_LOAD_OPTIONAL_INSTANCE)
 #undef GRASS_VK_LOAD_OPTIONAL_INSTANCE
 #define GRASS_VK_LOAD_OPTIONAL_DEVICE(name) \

@@ -92,7 +92,7 @@ struct Functions {
     GRASS_VK_OPTIONAL_DEVICE_FUNCTIONS(GRASS_VK_DECLARE_FUNCTION)
 #undef GRASS_VK_DECLARE_FUNCTION
 
-    // The host's VkAllocationCallbacks (grass_vk_desc::allocation_callbacks), copied: every
+    // The host's VkAllocationCallbacks (grass_vk_host_objects_desc::allocation_callbacks), copied: every
     // vkCreate*, vkDestroy*, vkAllocateMemory and vkFreeMemory of grass passes callbacks().
     VkAllocationCallbacks host_callbacks{};
     bool has_host_callbacks = false;

@@ -181,7 +181,8 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
     sampler.minLod = 0.0f;
     sampler.maxLod = 0.0f;
     *what = "the design map sampler";
-    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &sampler_), "vkCreateSampler", failure)) return false;
+    if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &sampler_), "vkCreateSampler", failure))
+        return false;
     name_object(fn_, device_, VK_OBJECT_TYPE_SAMPLER, sampler_, *what);
 
     // Baked slices: colour and normal trilinear over the whole mip chain; thresholds are
@@ -246,7 +247,8 @@ bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const 
     layout_info.pushConstantRangeCount = push_range ? 1 : 0;
     layout_info.pPushConstantRanges = push_range;
     *what = layout_name;
-    if (!vk_ok(fn.vkCreatePipelineLayout(device, &layout_info, fn.callbacks(), layout), "vkCreatePipelineLayout", failure)) {
+    if (!vk_ok(fn.vkCreatePipelineLayout(device, &layout_info, fn.callbacks(), layout), "vkCreatePipelineLayout",
+               failure)) {
         return false;
     }
     name_object(fn, device, VK_OBJECT_TYPE_PIPELINE_LAYOUT, *layout, layout_name);
@@ -266,7 +268,8 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
         VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
         info.codeSize = code_size[i];
         info.pCode = code[i];
-        ok = vk_ok(fn.vkCreateShaderModule(device, &info, fn.callbacks(), &modules[i]), "vkCreateShaderModule", failure);
+        ok =
+            vk_ok(fn.vkCreateShaderModule(device, &info, fn.callbacks(), &modules[i]), "vkCreateShaderModule", failure);
         if (ok) name_object(fn, device, VK_OBJECT_TYPE_SHADER_MODULE, modules[i], "grass shader module");
     }
 

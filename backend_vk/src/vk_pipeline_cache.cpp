@@ -1,5 +1,5 @@
 // The Vulkan backend's pipeline cache and grass_prepare_pipelines: every pipeline goes through
-// the host's VkPipelineCache (grass_vk_desc.pipeline_cache) or grass's own, which
+// the host's VkPipelineCache (grass_vk_host_objects_desc.pipeline_cache) or grass's own, which
 // grass_get_pipeline_cache_data saves (vkGetPipelineCacheData behind grass's blob header,
 // context/pipeline_blob.hpp) and grass_pipeline_desc.cache_data seeds (vkMergePipelineCaches
 // from a cache made of the blob, after its headers were checked against this device).
@@ -27,8 +27,8 @@ uint64_t device_identity(const VkPhysicalDeviceProperties& p) {
 } // namespace
 
 bool VkBackend::create_pipeline_cache(VkFailure* failure, const char** what) {
-    if (desc_.pipeline_cache != 0) {
-        cache_ = reinterpret_cast<VkPipelineCache>(desc_.pipeline_cache); // non-dispatchable: 64-bit
+    if (device_.host_pipeline_cache != VK_NULL_HANDLE) {
+        cache_ = device_.host_pipeline_cache;
         return true;
     }
     VkPipelineCacheCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
@@ -62,8 +62,8 @@ grass_result VkBackend::seed_pipeline_cache(const char* function, const void* da
     if (own_cache_ == VK_NULL_HANDLE) {
         return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_OUT_OF_RANGE,
                           "%s: desc->cache_data is given but the context uses the host's VkPipelineCache "
-                          "(grass_vk_desc.pipeline_cache 0x%llx); seed that cache instead",
-                          function, static_cast<unsigned long long>(desc_.pipeline_cache));
+                          "(grass_vk_host_objects_desc.pipeline_cache 0x%llx); seed that cache instead",
+                          function, static_cast<unsigned long long>(reinterpret_cast<uint64_t>(cache_)));
     }
     const VkPhysicalDeviceProperties& p = device_.properties;
     uint64_t bytes = 0;
@@ -87,7 +87,8 @@ grass_result VkBackend::seed_pipeline_cache(const char* function, const void* da
     info.pInitialData = payload;
     VkPipelineCache seeded = VK_NULL_HANDLE;
     VkFailure failure;
-    if (!vk_ok(fn_.vkCreatePipelineCache(device_.device, &info, fn_.callbacks(), &seeded), "vkCreatePipelineCache", &failure)) {
+    if (!vk_ok(fn_.vkCreatePipelineCache(device_.device, &info, fn_.callbacks(), &seeded), "vkCreatePipelineCache",
+               &failure)) {
         return fail(function, "a pipeline cache of desc->cache_data", failure);
     }
     const bool merged =
@@ -98,10 +99,11 @@ grass_result VkBackend::seed_pipeline_cache(const char* function, const void* da
 
 grass_result VkBackend::pipeline_cache_data(const char* function, void* data, uint64_t* size) {
     if (own_cache_ == VK_NULL_HANDLE) {
-        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_OUT_OF_RANGE,
-                          "%s: the context uses the host's VkPipelineCache (grass_vk_desc.pipeline_cache 0x%llx); "
-                          "save it with vkGetPipelineCacheData",
-                          function, static_cast<unsigned long long>(desc_.pipeline_cache));
+        return ctx_->fail(
+            GRASS_ERROR_INVALID_STATE, GRASS_MSG_OUT_OF_RANGE,
+            "%s: the context uses the host's VkPipelineCache (grass_vk_host_objects_desc.pipeline_cache 0x%llx); "
+            "save it with vkGetPipelineCacheData",
+            function, static_cast<unsigned long long>(reinterpret_cast<uint64_t>(cache_)));
     }
     VkFailure failure;
     size_t bytes = 0;

@@ -7,7 +7,7 @@
 //   on a field made before and one made after the call, create no pipeline or program;
 //   without the call the windy frame does create one (the hook sees frames).
 // - Vulkan: every pipeline goes through a pipeline cache: grass's own, or the host's when
-//   grass_vk_desc.pipeline_cache gives one (grass's blob calls then refuse).
+//   grass_vk_host_objects_desc.pipeline_cache gives one (grass's blob calls then refuse).
 // - The blob of grass_get_pipeline_cache_data seeds a new context's cache (Vulkan: the
 //   merged cache is as large as the saved one; GL: the programs come from their binaries,
 //   no link); truncated, corrupt, foreign and mismatched blobs are ignored with

@@ -352,5 +352,42 @@ TEST(VkMemory, CallbacksMissingAFunctionAreRefused) {
     CountingCallbacks::the = nullptr;
 }
 
+// grass_vk_desc never changes layout (grass_default_vk_desc returns it by value): what else the
+// host lends comes chained through its next (grass_vk_host_objects_desc), once. Anything else
+// there is refused by its type tag, before any Vulkan call (the handles here are not Vulkan's).
+TEST(VkMemory, TheVkDescsChainTakesTheHostObjectsOnceAndNothingElse) {
+    int not_vulkan = 0;
+    grass_vk_desc vk = grass_default_vk_desc();
+    vk.get_instance_proc_addr = vi::get_instance_proc_addr();
+    vk.instance = vk.physical_device = vk.device = &not_vulkan;
+    vk.color_format = VK_FORMAT_R8G8B8A8_UNORM;
+    vk.depth_format = VK_FORMAT_D32_SFLOAT;
+    grass_wind_desc wind = grass_default_wind_desc();
+    grass_vk_host_objects_desc first = grass_default_vk_host_objects_desc();
+    grass_vk_host_objects_desc second = grass_default_vk_host_objects_desc();
+    first.next = &second;
+    struct Case {
+        const char* what;
+        const void* next;
+        const char* named;
+    } cases[] = {
+        {"another struct", &wind, "0x67720009"},
+        {"the host objects twice", &first, "once"},
+    };
+    for (const Case& k : cases) {
+        vk.next = k.next;
+        FailureLog log;
+        grass_context* ctx = nullptr;
+        const grass_context_desc cd = logged_desc(&log);
+        EXPECT_EQ(grass_vk_create_context(GRASS_HEADER_VERSION, &cd, &vk, &ctx), GRASS_ERROR_INVALID_ARGUMENT)
+            << k.what;
+        EXPECT_EQ(ctx, nullptr) << k.what;
+        EXPECT_EQ(log.last_error, GRASS_MSG_NEXT_NOT_NULL) << k.what << ": " << log.text;
+        EXPECT_NE(log.text.find("vk_desc->next"), std::string::npos) << log.text;
+        EXPECT_NE(log.text.find(k.named), std::string::npos) << log.text;
+    }
+    EXPECT_EQ(vi::live().total(), 0) << "left behind: " << vi::live().describe();
+}
+
 } // namespace
 } // namespace grass_test

@@ -202,7 +202,8 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_GL_DESC = 0x67720101,
     GRASS_STRUCT_TYPE_VK_DESC = 0x67720201,
     GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202,
-    GRASS_STRUCT_TYPE_VK_PREPARE_DESC = 0x67720203, /* 0.5 */
+    GRASS_STRUCT_TYPE_VK_PREPARE_DESC = 0x67720203,      /* 0.5 */
+    GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC = 0x67720204, /* 0.5 */
     /* 0.5: responsive grass */
     GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
@@ -1200,7 +1201,7 @@ typedef struct grass_pipeline_desc {
     uint32_t features;
     /* A blob grass_get_pipeline_cache_data returned earlier (on a previous run), or NULL (the
      * default). Vulkan: merged into grass's own VkPipelineCache (refused when the host gave
-     * grass_vk_desc.pipeline_cache: seed that one itself); GL: the program binaries in it
+     * grass_vk_host_objects_desc.pipeline_cache: seed that one itself); GL: the program binaries in it
      * replace compiling (GL_ARB_get_program_binary; ignored where the driver reports no
      * binary format). A blob of another backend, grass version, device, driver or shader
      * set, truncated or corrupt, is ignored with a GRASS_MSG_PIPELINE_CACHE warning. */
@@ -1228,7 +1229,7 @@ GRASS_API grass_result grass_prepare_pipelines(grass_context* context, const gra
  * bytes needed; otherwise at most *size bytes are written and *size is set to the bytes
  * written: GRASS_ERROR_INVALID_ARGUMENT (nothing written) when *size is too small. A
  * context without a cache of its own gives 0 bytes: grass_create_context's, a GL driver
- * without program binary formats; a Vulkan context given grass_vk_desc.pipeline_cache is
+ * without program binary formats; a Vulkan context given grass_vk_host_objects_desc.pipeline_cache is
  * refused (GRASS_ERROR_INVALID_STATE): the host saves its own cache. Outside a frame. */
 GRASS_API grass_result grass_get_pipeline_cache_data(grass_context* context, void* data, uint64_t* size);
 

@@ -78,8 +78,9 @@ typedef grass_vk_void_function(GRASS_VKAPI_PTR* grass_vk_get_instance_proc_addr_
                                                                                     const char* name);
 
 typedef struct grass_vk_desc {
-    grass_struct_type type;                                    /* GRASS_STRUCT_TYPE_VK_DESC */
-    const void* next;                                          /* NULL */
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_DESC */
+    /* NULL, or a chain of extensions: a grass_vk_host_objects_desc (0.5) */
+    const void* next;
     grass_vk_get_instance_proc_addr_fn get_instance_proc_addr; /* required */
     void* instance;                                            /* VkInstance, required */
     void* physical_device;                                     /* VkPhysicalDevice, required */
@@ -93,27 +94,35 @@ typedef struct grass_vk_desc {
     uint32_t depth_format;     /* VkFormat of the depth attachment, required */
     uint32_t sample_count;     /* VkSampleCountFlagBits of the pass: 1, 2, 4, 8...; default 1 */
     uint32_t frames_in_flight; /* 1..8; default 2 */
-    /* 0.5: the host's host-memory allocator for Vulkan objects: a const VkAllocationCallbacks*,
+} grass_vk_desc;
+
+GRASS_API grass_vk_desc grass_default_vk_desc(void);
+
+/* 0.5: what else the host lends grass, chained through grass_vk_desc.next (the desc itself
+ * never changes layout: grass.h, "ABI and versions"). Both default to grass's own. */
+typedef struct grass_vk_host_objects_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC */
+    const void* next;       /* NULL, or a further extension of grass_vk_desc */
+    /* The host's host-memory allocator for Vulkan objects: a const VkAllocationCallbacks*,
      * or NULL (default: the driver's). grass copies the struct; its pUserData must stay valid
      * until the context is destroyed. Every vkCreate*, vkDestroy*, vkAllocateMemory and
      * vkFreeMemory grass makes passes it (each object is destroyed with the callbacks it was
      * made with). pfnAllocation, pfnReallocation and pfnFree are required, and
      * pfnInternalAllocation and pfnInternalFree are both set or both NULL (Vulkan's rule);
-     * otherwise GRASS_ERROR_INVALID_ARGUMENT. Read only from hosts built against grass.h 0.5
-     * or later. Device memory itself is grass's own: a few blocks per memory type
-     * (docs/integration.md, "Memory"). */
+     * otherwise GRASS_ERROR_INVALID_ARGUMENT. Device memory itself is grass's own: a few
+     * blocks per memory type (docs/integration.md, "Memory"). */
     const void* allocation_callbacks;
-    /* 0.5: VkPipelineCache of the host, or 0 (the default): grass makes its own, which
+    /* VkPipelineCache of the host, or 0 (the default): grass makes its own, which
      * grass_get_pipeline_cache_data saves and grass_pipeline_desc.cache_data seeds. When
      * given, every pipeline grass makes goes through it (vkCreate*Pipelines only: grass never
      * merges into it nor reads it back); the host keeps it alive until the context is
      * destroyed, and made it without VK_PIPELINE_CACHE_CREATE_EXTERNALLY_SYNCHRONIZED_BIT if
-     * other threads use it meanwhile. Read only from hosts built against grass_vk.h 0.5 or
-     * later. */
+     * other threads use it meanwhile. */
     uint64_t pipeline_cache;
-} grass_vk_desc;
+} grass_vk_host_objects_desc;
 
-GRASS_API grass_vk_desc grass_default_vk_desc(void);
+/* 0.5 */
+GRASS_API grass_vk_host_objects_desc grass_default_vk_host_objects_desc(void);
 
 GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const grass_context_desc* desc,
                                                const grass_vk_desc* vk_desc, grass_context** out_context);

@@ -46,7 +46,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_VIEW_DESC": 0x67720005, "GRASS_STRUCT_TYPE_GRASS_TYPE_DESC": 0x67720006,
         "GRASS_STRUCT_TYPE_QUALITY_DESC": 0x67720007, "GRASS_STRUCT_TYPE_GL_DESC": 0x67720101,
         "GRASS_STRUCT_TYPE_VK_DESC": 0x67720201, "GRASS_STRUCT_TYPE_VK_RECORD_DESC": 0x67720202,
-        "GRASS_STRUCT_TYPE_VK_PREPARE_DESC": 0x67720203,
+        "GRASS_STRUCT_TYPE_VK_PREPARE_DESC": 0x67720203, "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC": 0x67720204,
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
         "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_WIND_MAP_DESC": 0x6772000B,
         "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C, "GRASS_STRUCT_TYPE_PIPELINE_DESC": 0x6772000D,
@@ -316,8 +316,11 @@ class grass_vk_desc(Structure):
                 ("get_instance_proc_addr", grass_vk_get_instance_proc_addr_fn), ("instance", c_void_p),
                 ("physical_device", c_void_p), ("device", c_void_p), ("queue_family", c_uint32),
                 ("render_pass", c_uint64), ("subpass", c_uint32), ("color_format", c_uint32),
-                ("depth_format", c_uint32), ("sample_count", c_uint32), ("frames_in_flight", c_uint32),
-                ("allocation_callbacks", c_void_p)]
+                ("depth_format", c_uint32), ("sample_count", c_uint32), ("frames_in_flight", c_uint32)]
+
+
+class grass_vk_host_objects_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("allocation_callbacks", c_void_p),
                 ("pipeline_cache", c_uint64)]
 
 
@@ -397,6 +400,7 @@ FUNCTIONS = {
     "grass_default_vk_desc": (grass_vk_desc, []),
     "grass_vk_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_vk_desc), _P(_ctx)]),
     "grass_default_vk_prepare_desc": (grass_vk_prepare_desc, []),
+    "grass_default_vk_host_objects_desc": (grass_vk_host_objects_desc, []),
     "grass_vk_prepare": (grass_enum, [_ctx, _P(grass_vk_prepare_desc)]),
     "grass_default_vk_record_desc": (grass_vk_record_desc, []),
     "grass_vk_record": (grass_enum, [_ctx, _P(grass_vk_record_desc)]),
