@@ -40,13 +40,14 @@ static PFNGLREADPIXELSPROC gl_read_pixels;
 
 /* [readme:loader] */
 /* grass calls this for every GL entry point it uses. */
-static grass_gl_proc load_gl(void* user_data, const char* name) {
+static grass_gl_proc GRASS_API_PTR load_gl(void* user_data, const char* name) {
     (void)user_data;
     return eglGetProcAddress(name);
 }
 
 /* Every message grass logs: an id and a sentence naming the call, the argument and its value. */
-static void log_message(void* user_data, grass_log_level level, grass_message_id id, const char* message) {
+static void GRASS_API_PTR log_message(void* user_data, grass_log_level level, grass_message_id id,
+                                      const char* message) {
     (void)user_data;
     fprintf(stderr, "grass %s %d: %s\n", level == GRASS_LOG_ERROR ? "error" : "warning", (int)id, message);
 }
