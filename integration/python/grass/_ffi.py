@@ -3,6 +3,7 @@ grass_vk.h, as ctypes declares them. Names are the C names. tests/test_header_la
 checks this file against the headers (sizes, offsets, enum values, signatures)."""
 import ctypes
 import os
+import sys
 import warnings
 from ctypes import (CFUNCTYPE, POINTER, Structure, c_char_p, c_double, c_float, c_int, c_int32, c_size_t,
                     c_uint16, c_uint32, c_uint64, c_void_p)
@@ -115,12 +116,16 @@ grass_bool = c_uint32
 
 # ---- Callback types -------------------------------------------------------------------
 
-grass_log_fn = CFUNCTYPE(None, c_void_p, grass_enum, grass_enum, c_char_p)
-grass_alloc_fn = CFUNCTYPE(c_void_p, c_void_p, c_size_t, c_size_t)
-grass_free_fn = CFUNCTYPE(None, c_void_p, c_void_p)
+# GRASS_API_PTR and GRASS_VKAPI_PTR are __stdcall on Windows (grass.h, grass_vk.h): ctypes'
+# WINFUNCTYPE there (the same as CFUNCTYPE on 64-bit Windows), the C convention elsewhere.
+_API_FUNCTYPE = getattr(ctypes, "WINFUNCTYPE", CFUNCTYPE) if sys.platform == "win32" else CFUNCTYPE
+
+grass_log_fn = _API_FUNCTYPE(None, c_void_p, grass_enum, grass_enum, c_char_p)
+grass_alloc_fn = _API_FUNCTYPE(c_void_p, c_void_p, c_size_t, c_size_t)
+grass_free_fn = _API_FUNCTYPE(None, c_void_p, c_void_p)
 # grass_gl_proc is a function pointer; a loader returns its address (or None).
-grass_gl_get_proc_address_fn = CFUNCTYPE(c_void_p, c_void_p, c_char_p)
-grass_vk_get_instance_proc_addr_fn = CFUNCTYPE(c_void_p, c_void_p, c_char_p)
+grass_gl_get_proc_address_fn = _API_FUNCTYPE(c_void_p, c_void_p, c_char_p)
+grass_vk_get_instance_proc_addr_fn = _API_FUNCTYPE(c_void_p, c_void_p, c_char_p)
 
 # ---- Structs ----------------------------------------------------------------------------
 
@@ -199,7 +204,7 @@ class grass_lod_node(Structure):
                 ("height_max", c_double)]
 
 
-grass_lod_test_fn = CFUNCTYPE(grass_enum, c_void_p, POINTER(grass_lod_node))
+grass_lod_test_fn = _API_FUNCTYPE(grass_enum, c_void_p, POINTER(grass_lod_node))
 
 
 class grass_lod_test(Structure):
