@@ -52,6 +52,12 @@ grass_result check_vk_desc(grass_context* ctx, const char* function, const grass
                          "depth attachment, so its VkFormat is required",
                          function);
     }
+    if (d->view_mask != 0 && d->view_mask != 0x3u) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: vk_desc->view_mask is 0x%x; it must be 0 (mono) or 0x3 (stereo: views 0 and 1, the two "
+                         "eyes of grass_stereo_view_desc)",
+                         function, d->view_mask);
+    }
     if (d->render_pass == 0 && d->color_format == 0) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                          "%s: vk_desc->color_format is 0 (VK_FORMAT_UNDEFINED) with render_pass 0; dynamic rendering "

@@ -59,6 +59,18 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
                            "(dynamic rendering) needs");
     }
 
+    if (vk_desc.view_mask != 0) { // stereo: multiview is core in 1.1, but optional
+        VkPhysicalDeviceMultiviewFeatures multiview{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_FEATURES};
+        VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        features.pNext = &multiview;
+        d.fn.vkGetPhysicalDeviceFeatures2(d.physical_device, &features);
+        if (!multiview.multiview) {
+            return unsupported(ctx, function, d,
+                               "lacks the multiview feature (VkPhysicalDeviceMultiviewFeatures::multiview), which "
+                               "vk_desc->view_mask 0x3 (stereo) needs");
+        }
+    }
+
     uint32_t family_count = 0;
     d.fn.vkGetPhysicalDeviceQueueFamilyProperties(d.physical_device, &family_count, nullptr);
     if (vk_desc.queue_family >= family_count) {

@@ -16,6 +16,7 @@ namespace grass::vk {
     X(vkGetPhysicalDeviceMemoryProperties)      \
     X(vkGetPhysicalDeviceFormatProperties)      \
     X(vkGetPhysicalDeviceQueueFamilyProperties) \
+    X(vkGetPhysicalDeviceFeatures2)             \
     X(vkEnumerateDeviceExtensionProperties)
 
 // Device-level functions: queried with the host's device, so calls skip the loader's

@@ -65,6 +65,9 @@ struct PipelineTarget {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     bool depth_greater = false;  // reversed-Z host: GREATER_OR_EQUAL
     bool indexed_blocks = false; // Frame and Field at a push-constant index (vk_spirv.hpp; Device)
+    // Multiview (grass_vk_desc.view_mask): 0x3 for a stereo pass (the GRASS_MULTIVIEW modules;
+    // dynamic rendering's viewMask; a render pass's subpass carries its own), 0 for mono.
+    uint32_t view_mask = 0;
 };
 
 // The descriptor type of the Frame and Field blocks (dynamic offsets: one per draw).

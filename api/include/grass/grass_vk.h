@@ -50,6 +50,17 @@ typedef struct grass_vk_desc {
     uint32_t depth_format;     /* VkFormat of the depth attachment, required */
     uint32_t sample_count;     /* VkSampleCountFlagBits of the pass: 1, 2, 4, 8...; default 1 */
     uint32_t frames_in_flight; /* 1..8; default 2 */
+    /* (mem34's allocation_callbacks and pipe34's pipeline_cache go here, before view_mask.) */
+    /* 0.5: Stereo (grass_stereo_view_desc; docs/integration.md, "Stereo: multiview"): the view
+     * mask of the pass grass draws in. 0 (the default): a mono pass. 0x3: a multiview pass of
+     * two views, view 0 the first eye and view 1 the second, into 2-layer attachments; every
+     * frame of the context is then a stereo frame. Dynamic rendering: the host begins its
+     * rendering with VkRenderingInfo::viewMask 0x3; a render pass: its subpass has view mask
+     * 0x3 (VkRenderPassMultiviewCreateInfo). The host enabled the multiview feature
+     * (VkPhysicalDeviceMultiviewFeatures, or Vulkan11Features.multiview); a device without it
+     * is refused (GRASS_ERROR_UNSUPPORTED). Its pipelines run the multiview shader variant;
+     * a context with view_mask 0 has exactly the pipelines, shaders and memory of before. */
+    uint32_t view_mask;
 } grass_vk_desc;
 
 GRASS_API grass_vk_desc grass_default_vk_desc(void);

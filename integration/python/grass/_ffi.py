@@ -49,6 +49,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
         "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_WIND_MAP_DESC": 0x6772000B,
         "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C,
+        "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC": 0x6772000D, "GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC": 0x6772000E,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -218,6 +219,15 @@ class grass_view_desc(Structure):
                 ("time", c_double), ("flags", c_uint32)]
 
 
+class grass_stereo_view_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("camera_position", c_double * 3),
+                ("view", c_float * 16), ("projection", c_float * 16)]
+
+
+class grass_lod_origin_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("position", c_double * 3)]
+
+
 _KINDS = DEFINES["GRASS_TIER_KIND_COUNT"]
 
 
@@ -291,7 +301,8 @@ class grass_vk_desc(Structure):
                 ("get_instance_proc_addr", grass_vk_get_instance_proc_addr_fn), ("instance", c_void_p),
                 ("physical_device", c_void_p), ("device", c_void_p), ("queue_family", c_uint32),
                 ("render_pass", c_uint64), ("subpass", c_uint32), ("color_format", c_uint32),
-                ("depth_format", c_uint32), ("sample_count", c_uint32), ("frames_in_flight", c_uint32)]
+                ("depth_format", c_uint32), ("sample_count", c_uint32), ("frames_in_flight", c_uint32),
+                ("view_mask", c_uint32)]
 
 
 class grass_vk_record_desc(Structure):
@@ -343,6 +354,8 @@ FUNCTIONS = {
     "grass_create_field": (grass_enum, [_ctx, _P(grass_field_desc), _P(grass_field_id)]),
     "grass_destroy_field": (grass_enum, [_ctx, grass_field_id]),
     "grass_default_view_desc": (grass_view_desc, []),
+    "grass_default_stereo_view_desc": (grass_stereo_view_desc, []),
+    "grass_default_lod_origin_desc": (grass_lod_origin_desc, []),
     "grass_begin_frame": (grass_enum, [_ctx, _P(grass_view_desc)]),
     "grass_end_frame": (grass_enum, [_ctx]),
     "grass_get_frame_stats": (grass_enum, [_ctx, _P(grass_frame_stats)]),
