@@ -344,6 +344,7 @@ bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* o
     subpass.pDepthStencilAttachment = &depth_ref;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    info.pNext = desc.next;
     info.attachmentCount = msaa ? 3 : 2;
     info.pAttachments = attachments;
     info.subpassCount = 1;

@@ -124,6 +124,7 @@ struct VkPassDesc {
     bool keep_depth = false;
     VkImageLayout depth_final = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     VkSubpassDependency dependencies[2] = {}; // into and out of the pass
+    const void* next = nullptr;               // VkRenderPassCreateInfo::pNext (a multiview pass's view masks)
 };
 bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* out, std::string* error);
 

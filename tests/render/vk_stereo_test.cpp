@@ -2,7 +2,7 @@
 // "Stereo: multiview"), on a host of its own (the bootstrap's; dynamic rendering, the
 // multiview feature on, validation layers on and silent):
 // - the two eyes drawn by one grass_vk_record into a multiview pass (view mask 0x3) of 2-layer
-//   colour and depth arrays are, layer for layer and pixel for pixel, the eyes drawn one at a
+//   colour and depth arrays, with dynamic rendering and in a render pass, are, layer for layer and pixel for pixel, the eyes drawn one at a
 //   time as mono views by a mono context with the stereo frame's lod origin (the eyes'
 //   midpoint), over the geometry, volume and image tiers and the debug boxes. The positions
 //   are dyadic (the eyes 1/32 m either side of the midpoint, cells of 1/4 m), so that the
@@ -18,7 +18,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdlib.h> // mkdtemp
+
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -51,7 +55,10 @@ struct StereoHost {
     VkCommandPool pool = VK_NULL_HANDLE;
     uint32_t family = 0;
 
+    VkRenderPass multiview_pass = VK_NULL_HANDLE; // 0: dynamic rendering (create_multiview_pass)
+
     ~StereoHost() {
+        if (multiview_pass) vkDestroyRenderPass(device, multiview_pass, nullptr);
         if (pool) vkDestroyCommandPool(device, pool, nullptr);
         if (device) vkDestroyDevice(device, nullptr);
     }
@@ -90,7 +97,39 @@ struct StereoHost {
                grass_bootstrap::create_command_pool(device, family, &pool, error);
     }
 
-    grass_vk_desc vk_desc(uint32_t view_mask) const {
+    // A classic render pass whose one subpass has view mask 0x3 (VkRenderPassMultiviewCreateInfo):
+    // colour cleared and kept for the copy, depth cleared.
+    bool create_multiview_pass(std::string* error) {
+        grass_bootstrap::VkPassDesc desc;
+        desc.color_format = kColorFormat;
+        desc.depth_format = kDepthFormat;
+        desc.color_final = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        desc.dependencies[0] = {VK_SUBPASS_EXTERNAL,
+                                0,
+                                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                    VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+                                0,
+                                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                                0};
+        desc.dependencies[1] = {0,
+                                VK_SUBPASS_EXTERNAL,
+                                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                VK_PIPELINE_STAGE_TRANSFER_BIT,
+                                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                                VK_ACCESS_TRANSFER_READ_BIT,
+                                0};
+        const uint32_t view_mask = 0x3, correlation = 0x3;
+        VkRenderPassMultiviewCreateInfo multiview{VK_STRUCTURE_TYPE_RENDER_PASS_MULTIVIEW_CREATE_INFO};
+        multiview.subpassCount = 1;
+        multiview.pViewMasks = &view_mask;
+        multiview.correlationMaskCount = 1;
+        multiview.pCorrelationMasks = &correlation;
+        desc.next = &multiview;
+        return grass_bootstrap::create_render_pass(device, desc, &multiview_pass, error);
+    }
+
+    grass_vk_desc vk_desc(uint32_t view_mask, bool render_pass = false) const {
         grass_vk_desc d = grass_default_vk_desc();
         d.get_instance_proc_addr = reinterpret_cast<grass_vk_get_instance_proc_addr_fn>(vkGetInstanceProcAddr);
         d.instance = instance.handle();
@@ -100,13 +139,15 @@ struct StereoHost {
         d.color_format = kColorFormat;
         d.depth_format = kDepthFormat;
         d.view_mask = view_mask;
+        if (render_pass) d.render_pass = reinterpret_cast<uint64_t>(multiview_pass);
         return d;
     }
 
     // One frame of `view` into `layers`-layer colour and depth (a multiview pass of view mask
     // 0x3 for two), read back layer by layer (RGBA8, top row first).
+    // With render_pass: in multiview_pass (two layers) instead of dynamic rendering.
     grass_result render(grass_context* ctx, const grass_view_desc& view, uint32_t layers,
-                        std::vector<std::vector<uint8_t>>* out, std::string* error) {
+                        std::vector<std::vector<uint8_t>>* out, std::string* error, bool render_pass = false) {
         VkImageParts color, depth;
         VkBufferParts readback;
         grass_bootstrap::VkImageDesc image;
@@ -125,9 +166,23 @@ struct StereoHost {
                                             &readback, error);
         VkCommandBuffer cmd = VK_NULL_HANDLE;
         ok = ok && grass_bootstrap::allocate_command_buffer(device, pool, &cmd) == VK_SUCCESS;
+        VkFramebuffer framebuffer = VK_NULL_HANDLE;
+        if (ok && render_pass) { // multiview: a framebuffer of one layer, the views are the array's layers
+            const VkImageView attachments[2] = {color.view, depth.view};
+            VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+            info.renderPass = multiview_pass;
+            info.attachmentCount = 2;
+            info.pAttachments = attachments;
+            info.width = kWidth;
+            info.height = kHeight;
+            info.layers = 1;
+            ok = vkCreateFramebuffer(device, &info, nullptr, &framebuffer) == VK_SUCCESS;
+        }
         grass_result r = ok ? GRASS_SUCCESS : GRASS_ERROR_BACKEND;
-        if (ok) r = record_and_submit(ctx, view, layers, cmd, color.image, color.view, depth.image, depth.view,
-                                      readback.buffer);
+        if (ok)
+            r = record_and_submit(ctx, view, layers, cmd, color.image, color.view, depth.image, depth.view,
+                                  readback.buffer, framebuffer);
+        if (framebuffer) vkDestroyFramebuffer(device, framebuffer, nullptr);
         if (r == GRASS_SUCCESS) {
             out->assign(layers, std::vector<uint8_t>(layer_bytes));
             for (uint32_t l = 0; l < layers; ++l) {
@@ -143,8 +198,8 @@ struct StereoHost {
     }
 
 private:
-    static VkImageMemoryBarrier barrier(VkImage image, VkImageAspectFlags aspect, uint32_t layers,
-                                        VkImageLayout from, VkImageLayout to, VkAccessFlags src, VkAccessFlags dst) {
+    static VkImageMemoryBarrier barrier(VkImage image, VkImageAspectFlags aspect, uint32_t layers, VkImageLayout from,
+                                        VkImageLayout to, VkAccessFlags src, VkAccessFlags dst) {
         VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
         b.srcAccessMask = src;
         b.dstAccessMask = dst;
@@ -158,7 +213,7 @@ private:
 
     grass_result record_and_submit(grass_context* ctx, const grass_view_desc& view, uint32_t layers,
                                    VkCommandBuffer cmd, VkImage color, VkImageView color_view, VkImage depth,
-                                   VkImageView depth_view, VkBuffer readback) {
+                                   VkImageView depth_view, VkBuffer readback, VkFramebuffer framebuffer) {
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         vkBeginCommandBuffer(cmd, &begin);
@@ -176,9 +231,12 @@ private:
             barrier(depth, VK_IMAGE_ASPECT_DEPTH_BIT, layers, VK_IMAGE_LAYOUT_UNDEFINED,
                     VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, 0,
                     VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT)};
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
-                             0, 0, nullptr, 0, nullptr, 2, into);
+        if (!framebuffer) {
+            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT,
+                                 0, 0, nullptr, 0, nullptr, 2, into);
+        }
         VkRenderingAttachmentInfo color_attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
         color_attachment.imageView = color_view;
         color_attachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
@@ -198,17 +256,32 @@ private:
         rendering.colorAttachmentCount = 1;
         rendering.pColorAttachments = &color_attachment;
         rendering.pDepthAttachment = &depth_attachment;
-        vkCmdBeginRendering(cmd, &rendering);
+        VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+        const VkClearValue clears[2] = {color_attachment.clearValue, depth_attachment.clearValue};
+        pass.renderPass = multiview_pass;
+        pass.framebuffer = framebuffer;
+        pass.renderArea = rendering.renderArea;
+        pass.clearValueCount = 2;
+        pass.pClearValues = clears;
+        if (framebuffer) {
+            vkCmdBeginRenderPass(cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
+        } else {
+            vkCmdBeginRendering(cmd, &rendering);
+        }
         grass_vk_record_desc record = grass_default_vk_record_desc();
         record.command_buffer = cmd;
         if (r == GRASS_SUCCESS) r = grass_vk_record(ctx, &record);
-        vkCmdEndRendering(cmd);
-        const VkImageMemoryBarrier out = barrier(color, VK_IMAGE_ASPECT_COLOR_BIT, layers,
-                                                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
-                             nullptr, 0, nullptr, 1, &out);
+        if (framebuffer) {
+            vkCmdEndRenderPass(cmd); // ends in TRANSFER_SRC_OPTIMAL
+        } else {
+            vkCmdEndRendering(cmd);
+            const VkImageMemoryBarrier out =
+                barrier(color, VK_IMAGE_ASPECT_COLOR_BIT, layers, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                        VK_ACCESS_TRANSFER_READ_BIT);
+            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                                 0, nullptr, 0, nullptr, 1, &out);
+        }
         VkBufferImageCopy copy{};
         copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, layers};
         copy.imageExtent = {kWidth, kHeight, 1};
@@ -288,16 +361,37 @@ void make_scene(grass_context* ctx) {
     ASSERT_EQ(grass_create_field(ctx, &fd, &field), GRASS_SUCCESS);
 }
 
+// A directory of baked slices for the test's contexts, removed at exit.
+struct BakeCache {
+    std::string path;
+    BakeCache() {
+        std::string pattern = (std::filesystem::temp_directory_path() / "grass-stereo-XXXXXX").string();
+        if (mkdtemp(pattern.data())) path = pattern;
+    }
+    ~BakeCache() {
+        std::error_code ignored;
+        if (!path.empty()) std::filesystem::remove_all(path, ignored);
+    }
+};
+
+const char* bake_cache() {
+    static BakeCache cache;
+    return cache.path.empty() ? nullptr : cache.path.c_str();
+}
+
 struct Contexts {
     std::string log;
     grass_context* mono = nullptr;
     grass_context* stereo = nullptr;
+    grass_context* stereo_pass = nullptr; // stereo in the host's multiview render pass
     ~Contexts() {
+        grass_destroy_context(stereo_pass);
         grass_destroy_context(stereo);
         grass_destroy_context(mono);
     }
     grass_context_desc desc() {
         grass_context_desc cd = grass_default_context_desc();
+        cd.cache_directory = bake_cache(); // the three contexts bake the same slices once
         cd.log_user_data = &log;
         cd.log_fn = [](void* user, grass_log_level, grass_message_id, const char* message) {
             *static_cast<std::string*>(user) += std::string(message) + "\n";
@@ -314,36 +408,59 @@ size_t differing_pixels(const std::vector<uint8_t>& a, const std::vector<uint8_t
     return n;
 }
 
+// One host and its three contexts (mono, stereo with dynamic rendering, stereo in a render
+// pass) for the suite: creating a context compiles its pipelines, seconds on lavapipe.
 class VkStereo : public ::testing::Test {
 protected:
-    void SetUp() override {
-        std::string error, skip;
-        if (!host.create(&error, &skip)) {
-            if (!skip.empty()) GTEST_SKIP() << skip;
-            FAIL() << error;
-        }
+    static void SetUpTestSuite() {
+        shared_host = new StereoHost;
+        shared_contexts = new Contexts;
+        if (!shared_host->create(&setup_error, &setup_skip)) return;
+        StereoHost& host = *shared_host;
+        Contexts& contexts = *shared_contexts;
         grass_context_desc cd = contexts.desc();
         const grass_vk_desc mono = host.vk_desc(0), stereo = host.vk_desc(0x3);
-        ASSERT_EQ(grass_vk_create_context(GRASS_HEADER_VERSION, &cd, &mono, &contexts.mono), GRASS_SUCCESS)
-            << contexts.log;
-        ASSERT_EQ(grass_vk_create_context(GRASS_HEADER_VERSION, &cd, &stereo, &contexts.stereo), GRASS_SUCCESS)
-            << contexts.log;
-        make_scene(contexts.mono);
-        make_scene(contexts.stereo);
+        if (grass_vk_create_context(GRASS_HEADER_VERSION, &cd, &mono, &contexts.mono) != GRASS_SUCCESS ||
+            grass_vk_create_context(GRASS_HEADER_VERSION, &cd, &stereo, &contexts.stereo) != GRASS_SUCCESS ||
+            !host.create_multiview_pass(&setup_error)) {
+            setup_error += contexts.log;
+            return;
+        }
+        const grass_vk_desc stereo_pass = host.vk_desc(0x3, true);
+        if (grass_vk_create_context(GRASS_HEADER_VERSION, &cd, &stereo_pass, &contexts.stereo_pass) != GRASS_SUCCESS) {
+            setup_error += contexts.log;
+        }
     }
-    void TearDown() override {
-        grass_destroy_context(contexts.stereo);
-        grass_destroy_context(contexts.mono);
-        contexts.stereo = contexts.mono = nullptr;
-        EXPECT_EQ(host.messages, "");
+    static void TearDownTestSuite() {
+        delete shared_contexts; // the contexts before their device
+        delete shared_host;
+        shared_contexts = nullptr;
+        shared_host = nullptr;
     }
-    StereoHost host;
-    Contexts contexts;
+    void SetUp() override {
+        if (!setup_skip.empty()) GTEST_SKIP() << setup_skip;
+        ASSERT_EQ(setup_error, "");
+        ASSERT_NE(contexts.stereo_pass, nullptr);
+    }
+    void TearDown() override { EXPECT_EQ(host.messages, ""); }
+
+    static StereoHost* shared_host;
+    static Contexts* shared_contexts;
+    static std::string setup_error, setup_skip;
+    StereoHost& host = *shared_host;
+    Contexts& contexts = *shared_contexts;
 };
+
+StereoHost* VkStereo::shared_host = nullptr;
+Contexts* VkStereo::shared_contexts = nullptr;
+std::string VkStereo::setup_error, VkStereo::setup_skip;
 
 // The stereo frame's eyes, each pixel for pixel the mono frame of that eye with the same
 // lod origin, for the tiers (flags 0) and the debug boxes (DEBUG_CELLS).
 TEST_F(VkStereo, EachLayerOfTheMultiviewPassIsThatEyeDrawnAlone) {
+    make_scene(contexts.mono);
+    make_scene(contexts.stereo);
+    make_scene(contexts.stereo_pass);
     for (uint32_t flags : {0u, uint32_t(GRASS_VIEW_FLAG_DEBUG_CELLS)}) {
         SCOPED_TRACE(flags);
         grass_view_desc left = mono_eye(0, flags), right = mono_eye(1, flags);
@@ -353,9 +470,11 @@ TEST_F(VkStereo, EachLayerOfTheMultiviewPassIsThatEyeDrawnAlone) {
         std::memcpy(second.projection, right.projection, sizeof(second.projection));
         grass_view_desc stereo = left;
         stereo.next = &second;
-        std::vector<std::vector<uint8_t>> layers, mono_left, mono_right;
+        std::vector<std::vector<uint8_t>> layers, pass_layers, mono_left, mono_right;
         std::string error;
         ASSERT_EQ(host.render(contexts.stereo, stereo, 2, &layers, &error), GRASS_SUCCESS) << error << contexts.log;
+        ASSERT_EQ(host.render(contexts.stereo_pass, stereo, 2, &pass_layers, &error, true), GRASS_SUCCESS)
+            << error << contexts.log;
         grass_frame_stats stereo_stats{};
         ASSERT_EQ(grass_get_frame_stats(contexts.stereo, &stereo_stats), GRASS_SUCCESS);
 
@@ -369,6 +488,10 @@ TEST_F(VkStereo, EachLayerOfTheMultiviewPassIsThatEyeDrawnAlone) {
         ASSERT_EQ(layers.size(), 2u);
         EXPECT_EQ(differing_pixels(layers[0], mono_left[0]), 0u);
         EXPECT_EQ(differing_pixels(layers[1], mono_right[0]), 0u);
+        // The same in the host's multiview render pass.
+        ASSERT_EQ(pass_layers.size(), 2u);
+        EXPECT_EQ(differing_pixels(pass_layers[0], mono_left[0]), 0u);
+        EXPECT_EQ(differing_pixels(pass_layers[1], mono_right[0]), 0u);
         // The eyes see different pictures, and grass in them.
         EXPECT_GT(differing_pixels(layers[0], layers[1]), size_t(kWidth) * kHeight / 50);
         EXPECT_GT(stereo_stats.instances[GRASS_TIER_GEOMETRY], 0u);

@@ -81,7 +81,7 @@ grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_vi
 
 // A stereo frame needs a target of two views, and a target of two views a stereo frame.
 grass_result check_views(grass_context* ctx, const char* fn, const ViewExtensions& ext) {
-    if (!ctx->backend) return GRASS_SUCCESS; // plans only
+    if (!ctx->backend || ctx->backend->kind() == GRASS_BACKEND_NONE) return GRASS_SUCCESS; // plans only
     const uint32_t views = ctx->backend->render_target().views;
     if (ext.stereo && views == 2) return GRASS_SUCCESS;
     if (!ext.stereo && views == 1) return GRASS_SUCCESS;
