@@ -15,7 +15,15 @@ namespace {
 
 grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** out_backend) {
     const char* function = "grass_vk_create_context";
-    const auto* vk_desc = static_cast<const grass_vk_desc*>(user_data);
+    const auto* host_desc = static_cast<const grass_vk_desc*>(user_data);
+    // view_mask (0.5) lies in what was the struct's tail padding before: a host built against
+    // an older header may leave it uninitialised, and draws mono.
+    grass_vk_desc copy{};
+    if (host_desc) {
+        copy = *host_desc;
+        if (ctx->header_minor < 5) copy.view_mask = 0;
+    }
+    const grass_vk_desc* vk_desc = host_desc ? &copy : nullptr;
     grass_result r = grass::vk::check_vk_desc(ctx, function, vk_desc);
     if (r != GRASS_SUCCESS) return r;
     grass::vk::Device device;

@@ -120,7 +120,8 @@ GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);
 
 /* Records the draws of the begun frame. Binds its own pipeline and descriptor sets, may
  * set push constants of its own pipeline layout, and sets viewport and scissor from the
- * view; the host must rebind its own state after. */
+ * view; the host must rebind its own state after. A stereo context (view_mask 0x3) records
+ * each draw once; the pass's multiview runs it for both eyes (one viewport for both). */
 GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc* record);
 
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */
