@@ -10,6 +10,7 @@
 // - a stereo frame in a mono context, a mono frame in a stereo context and a view mask other
 //   than 0 or 0x3 are refused, naming what is wrong; so is a stereo frame on GL
 //   (GL_OVR_multiview: Mesa's llvmpipe has none), tested in GlStereo below.
+#include "driver_residency.hpp"
 #include "render_fixture.hpp"
 #include "vk_bootstrap.hpp"
 
@@ -70,6 +71,10 @@ struct StereoHost {
         desc.messenger_without_layer = true;
         desc.sink = &sink;
         if (!instance.create(desc, error)) return false;
+        // As the hosts do: the layer and the ICDs stay loaded past vkDestroyInstance, so that
+        // LeakSanitizer can name their allocations (tests/sanitizer/lsan.supp).
+        static const char* const kDrivers[] = {"libvulkan_", "libVkLayer_", nullptr};
+        grass_host::keep_drivers_resident(kDrivers);
         const auto devices = grass_bootstrap::physical_devices(instance.handle());
         if (devices.empty()) return *error = "no Vulkan device", false;
         physical = devices[0];
