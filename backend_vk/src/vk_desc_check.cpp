@@ -80,7 +80,8 @@ grass_result read_chain(grass_context* ctx, const char* function, const void* ne
                              "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC (0x%08x) and GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC "
                              "(0x%08x), each once",
                              function, static_cast<unsigned>(type),
-                             type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC || type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC
+                             type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC ||
+                                     type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC
                                  ? " a second time"
                                  : "",
                              static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC),
