@@ -54,10 +54,10 @@ void main() {
     vec2 cell_point = vec2(i_cell.xy) + root;
     float density = local_density(cell_point);
     float ground = terrain_height(cell_point);
-    vec3 root_position = mat3(field.patch_to_world) * vec3(root.x, ground, root.y) + i_origin.xyz;
+    vec3 root_position = mat3(field.patch_to_world) * vec3(root.x, ground, root.y) + GRASS_INSTANCE_ORIGIN(i_origin.xyz);
     float opacity = tier_blade_opacity(length(root_position), a_threshold, density + kThresholdEpsilon);
 
-    vec3 position = mat3(field.patch_to_world) * vec3(p.x, p.y + ground, p.z) + i_origin.xyz;
+    vec3 position = mat3(field.patch_to_world) * vec3(p.x, p.y + ground, p.z) + GRASS_INSTANCE_ORIGIN(i_origin.xyz);
     vec3 normal = mat3(field.patch_to_world) * n;
     vec3 albedo = modulate_color(a_color.rgb, cell_point);
 #ifdef GRASS_RESPONSIVE
@@ -104,7 +104,7 @@ void main() {
     v_normal_opacity = vec4(normal, opacity);
     v_albedo_code = vec4(albedo, float(threshold_index(a_threshold)));
     v_shape_light = vec4(a_root_shape.z, p.y, light_maps(cell_point));
-    gl_Position = frame.view_projection * vec4(position, 1.0);
+    gl_Position = GRASS_VIEW_PROJECTION * vec4(position, 1.0);
     // Without multisampling a blade is all or nothing (tier_blade_opacity: drawn by the tier
     // where its opacity is at least one half, exactly one tier). With it, alpha-to-coverage
     // fades it.

@@ -9,11 +9,22 @@
 // (its convention is the host's).
 bool blade_in_frustum(vec3 v0, vec3 m, vec3 v2, float tolerance) {
     vec3 points[3] = vec3[3](v0, m, v2);
+#ifdef GRASS_MULTIVIEW
+    // Points relative to the plan's origin: in either eye's frustum, so both eyes keep it.
+    for (int e = 0; e < 2; ++e) {
+        for (int k = 0; k < 3; ++k) {
+            vec4 p = frame.eye_view_projection[e] * vec4(points[k] - frame.eye_position[e].xyz, 1.0);
+            float h = p.w * (1.0 + tolerance);
+            if (p.w > 0.0 && abs(p.x) <= h && abs(p.y) <= h) return true;
+        }
+    }
+#else
     for (int k = 0; k < 3; ++k) {
         vec4 p = frame.view_projection * vec4(points[k], 1.0);
         float h = p.w * (1.0 + tolerance);
         if (p.w > 0.0 && abs(p.x) <= h && abs(p.y) <= h) return true;
     }
+#endif
     return false;
 }
 
@@ -22,6 +33,9 @@ bool blade_in_frustum(vec3 v0, vec3 m, vec3 v2, float tolerance) {
 // metres, as drawn; side: its width direction (world); up: the field's up; r: its density
 // threshold over the local density (lemme 3.3: drawn at full density while r <= 1).
 bool blade_culled(uint blade, vec3 v0, vec3 v1, vec3 v2, vec3 side, vec3 up, float r) {
+#ifdef GRASS_MULTIVIEW
+    v0 += GRASS_EYE; // from the plan's origin: both eyes cull the same blades
+#endif
     vec4 c = field.culling;
     // Orientation (eq. 17): seen nearly edge-on, the blade is thinner than a pixel and aliases.
     if (c.x <= 1.0 && abs(dot(normalize(v0), normalize(side))) > c.x) return true;

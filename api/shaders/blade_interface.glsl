@@ -1,6 +1,20 @@
 // The data every grass shader sees: the uniform blocks of api/src/frame_plan.hpp (std140)
 // and the design maps. Shared by the GL and Vulkan backends (Vulkan: descriptor set 0).
 
+// Stereo (grass_stereo_view_desc): the multiview variant, GRASS_MULTIVIEW, compiled only for
+// the pipelines of a Vulkan context made with a view mask. gl_ViewIndex picks the eye: its
+// view-projection and its position relative to the plan's origin (the Frame block's eyes).
+// Every vertex shader makes its instance's origin relative to the eye
+// (GRASS_INSTANCE_ORIGIN), so what follows is eye-relative as in a mono frame; what must be
+// the same for both eyes measures from the plan's origin again (wind_at, interaction_texel,
+// blade_culled add GRASS_EYE back). Without it the preprocessed shaders are those of before.
+#ifdef GRASS_MULTIVIEW
+#ifndef VULKAN
+#error "GRASS_MULTIVIEW is the Vulkan multiview variant; the GL backend has no GL_OVR_multiview path"
+#endif
+#extension GL_EXT_multiview : require
+#endif
+
 // Shader variants: GRASS_FEATURES says which design maps the field has (bit = 1 << MapRole,
 // api/src/foundation/shader_interface.hpp), so a field samples only its own maps and one
 // without maps runs the code it ran before maps existed. Vulkan: a specialization constant
@@ -50,6 +64,10 @@ struct FrameData {
     vec4 map_axis_v;       // xyz: world direction of map texel y, w: camera height above the map's anchor (m)
     vec4 map_levels[2];    // xy: camera's map coordinate (texels, mod N), z: texels per metre, w: N
     vec4 wind_sources[64]; // 16 sources x 4 vec4 (frame_plan.hpp)
+#ifdef GRASS_MULTIVIEW
+    mat4 eye_view_projection[2]; // per eye: eye-relative world -> clip (StereoUniforms)
+    vec4 eye_position[2];        // per eye: xyz relative to the plan's origin (m)
+#endif
 };
 
 struct FieldData {
@@ -97,6 +115,17 @@ FieldData g_field;
 #define frame frame_at[0]
 #define field field_at[0]
 #define load_blocks()
+#endif
+
+// The view-projection of the view drawn (the eye's in the multiview variant), the eye's
+// position relative to the plan's origin, and an instance origin made relative to the eye.
+#ifdef GRASS_MULTIVIEW
+#define GRASS_VIEW_PROJECTION frame.eye_view_projection[gl_ViewIndex]
+#define GRASS_EYE frame.eye_position[gl_ViewIndex].xyz
+#define GRASS_INSTANCE_ORIGIN(o) ((o) - GRASS_EYE)
+#else
+#define GRASS_VIEW_PROJECTION frame.view_projection
+#define GRASS_INSTANCE_ORIGIN(o) o
 #endif
 
 // Design maps (lemme 6.4), 16-bit unorm, bilinear, clamped; sample only those in GRASS_FEATURES.
@@ -171,7 +200,7 @@ int sample_count() {
 // the depth range (GL: the host's glDepthRange; Vulkan: the viewport's 0..1, vk_record).
 // Reversed depth needs nothing here: it is in the host's projection.
 float window_depth(vec3 position) {
-    vec4 clip = frame.view_projection * vec4(position, 1.0);
+    vec4 clip = GRASS_VIEW_PROJECTION * vec4(position, 1.0);
     float z = clip.z / clip.w;
     if (frame.target.x < 0.5) z = 0.5 * z + 0.5;
 #ifdef VULKAN

@@ -35,9 +35,9 @@ void main() {
     // On a height map the corners follow the terrain like the image tier's quads.
     float ground = terrain_height(vec2(i_cell.xy) + xz);
     vec3 p = vec3(xz.x, 0.02 + 0.03 * (2.0 - kind) + ground, xz.y); // cells
-    vec3 position = mat3(field.patch_to_world) * p + i_origin.xyz;
+    vec3 position = mat3(field.patch_to_world) * p + GRASS_INSTANCE_ORIGIN(i_origin.xyz);
     v_color = tier_color(kind);
-    gl_Position = frame.view_projection * vec4(position, 1.0);
+    gl_Position = GRASS_VIEW_PROJECTION * vec4(position, 1.0);
     // Far away the few centimetres above the ground are below the depth buffer's
     // resolution: pull the boxes slightly towards the camera in clip space, finer tiers
     // more (params.z: +1 when depth 0 is near, -1 for reversed depth).

@@ -41,8 +41,8 @@ void main() {
     // instance (the UNPLANARITY lod test keeps hilly instances small).
     float ground = terrain_height(vec2(i_cell.xy) + local);
     vec3 p = vec3(local.x, 0.5 * field.blade_params.w + ground - drop, local.y);
-    v_position = mat3(field.patch_to_world) * p + i_origin.xyz;
+    v_position = mat3(field.patch_to_world) * p + GRASS_INSTANCE_ORIGIN(i_origin.xyz);
     v_local = local;
     v_first_cell = i_cell.xy;
-    gl_Position = frame.view_projection * vec4(v_position, 1.0);
+    gl_Position = GRASS_VIEW_PROJECTION * vec4(v_position, 1.0);
 }

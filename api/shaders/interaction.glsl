@@ -12,6 +12,9 @@ layout(binding = 11) uniform sampler2D interaction_level1;
 // The map's texel at camera-relative point p: level 0 where p is inside its window, else
 // level 1 where inside it, else false (no press known there).
 bool interaction_texel(vec3 p, out vec4 texel) {
+#ifdef GRASS_MULTIVIEW
+    p += GRASS_EYE; // eye-relative -> relative to the plan's origin, the map's
+#endif
     texel = vec4(0.0, 0.0, 1e30, 1e30);
     int levels = int(frame.map_up.w + 0.5);
     vec2 uv = vec2(dot(p, frame.map_axis_u.xyz), dot(p, frame.map_axis_v.xyz));

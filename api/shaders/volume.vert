@@ -38,12 +38,12 @@ void main() {
     vec2 terrain = has_map(GRASS_MAP_HEIGHT) ? i_terrain.xy : vec2(0.0);
     if (has_map(GRASS_MAP_HEIGHT)) local.y = terrain.x + float((k >> 1) & 1) * (terrain.y - terrain.x + size.y);
     mat3 to_world = mat3(field.patch_to_world);
-    vec3 position = to_world * local + i_origin.xyz;
+    vec3 position = to_world * local + GRASS_INSTANCE_ORIGIN(i_origin.xyz);
     v_local = local;
-    v_camera_local = inverse(to_world) * (-i_origin.xyz);
+    v_camera_local = inverse(to_world) * (-GRASS_INSTANCE_ORIGIN(i_origin.xyz));
     v_face_normal = normals[v / 6];
     v_cell = i_cell;
     v_terrain = terrain;
     v_field_edge = i_terrain.z;
-    gl_Position = frame.view_projection * vec4(position, 1.0);
+    gl_Position = GRASS_VIEW_PROJECTION * vec4(position, 1.0);
 }

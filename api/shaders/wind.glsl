@@ -88,6 +88,9 @@ vec3 wind_of_map(vec2 cell_point) {
 // The wind velocity (world m/s) at camera-relative p, which lies over `cell_point` of the
 // field (cells), across `up` (the field's up: the component along it moves nothing).
 vec3 wind_at(vec3 p, vec3 up, vec2 cell_point) {
+#ifdef GRASS_MULTIVIEW
+    p += GRASS_EYE; // eye-relative -> relative to the plan's origin, the wind's
+#endif
     vec3 w = vec3(0.0);
     vec3 mean = frame.wind.xyz;
     float speed = length(mean);

@@ -19,13 +19,13 @@ namespace {
 grass_result make_backend(grass_context* ctx, void* user_data, grass::Backend** out_backend) {
     const char* function = "grass_vk_create_context";
     const auto* vk_desc = static_cast<const grass_vk_desc*>(user_data);
-    grass_vk_host_objects_desc host_objects{};
-    grass_result r = grass::vk::check_vk_desc(ctx, function, vk_desc, &host_objects);
+    grass::vk::VkDescExtensions extensions;
+    grass_result r = grass::vk::check_vk_desc(ctx, function, vk_desc, &extensions);
     if (r != GRASS_SUCCESS) return r;
     grass_vk_desc copy = *vk_desc;
-    copy.next = nullptr; // its extensions are read (host_objects); the host's chain is not kept
+    copy.next = nullptr; // its extensions are read (extensions); the host's chain is not kept
     grass::vk::Device device;
-    r = grass::vk::load_device(ctx, function, copy, host_objects, &device);
+    r = grass::vk::load_device(ctx, function, copy, extensions, &device);
     if (r != GRASS_SUCCESS) return r;
 
     VkBackend* backend = ctx->host.create<VkBackend>(ctx, copy, device);
@@ -72,6 +72,12 @@ grass_vk_desc grass_default_vk_desc(void) {
 grass_vk_host_objects_desc grass_default_vk_host_objects_desc(void) {
     grass_vk_host_objects_desc d{};
     d.type = GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC;
+    return d;
+}
+
+grass_vk_multiview_desc grass_default_vk_multiview_desc(void) {
+    grass_vk_multiview_desc d{};
+    d.type = GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC;
     return d;
 }
 

@@ -12,7 +12,7 @@ namespace grass::vk {
 
 namespace {
 
-PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d, bool indexed_blocks) {
+PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d, const Device& device) {
     PipelineTarget t;
     t.render_pass = reinterpret_cast<VkRenderPass>(d.render_pass); // non-dispatchable handles are 64-bit
     t.subpass = d.subpass;
@@ -20,7 +20,8 @@ PipelineTarget pipeline_target(const grass_context* ctx, const grass_vk_desc& d,
     t.depth_format = static_cast<VkFormat>(d.depth_format);
     t.samples = static_cast<VkSampleCountFlagBits>(d.sample_count);
     t.depth_greater = ctx->desc.depth_mode == GRASS_DEPTH_GREATER;
-    t.indexed_blocks = indexed_blocks;
+    t.indexed_blocks = device.indexed_blocks;
+    t.view_mask = device.view_mask;
     return t;
 }
 
@@ -31,7 +32,8 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       memory_(fn_, device_.device, device_.memory, device_.properties.limits, &context->host),
       descriptors_(fn_, device_.device, &context->host), frame_sets_(fn_, device_.device, &context->host),
       deferred_(memory_, descriptors_, &context->host, vk_desc.frames_in_flight), pipeline_(fn_, device_.device),
-      ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment),
+      ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment,
+            device_.view_mask != 0),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
       fields_(StlAllocator<FieldGpu>(&context->host)), maps_(StlAllocator<MapGpu>(&context->host)),
       slices_(StlAllocator<SliceGpu>(&context->host)), draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),
@@ -68,7 +70,7 @@ grass_result VkBackend::init(const char* function) {
     const char* what = "";
     if (!create_pipeline_cache(&failure, &what)) return fail(function, what, failure);
     interaction_.use_cache(cache_);
-    PipelineTarget target = pipeline_target(ctx_, desc_, device_.indexed_blocks);
+    PipelineTarget target = pipeline_target(ctx_, desc_, device_);
     target.cache = cache_;
     if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);
@@ -180,7 +182,7 @@ VkBackend::SetViews VkBackend::draw_views(const TierDraw& d) const {
 
 void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& field, const SetViews& views) {
     const VkBuffer uniforms = ring_.uniform_buffer(slot);
-    const VkDescriptorBufferInfo frame_block{uniforms, 0, sizeof(FrameUniforms)};
+    const VkDescriptorBufferInfo frame_block{uniforms, 0, ring_.frame_block_bytes()};
     const VkDescriptorBufferInfo field_block{uniforms, 0, sizeof(FieldUniforms)};
     const VkDescriptorBufferInfo curves{views.curves, 0, VK_WHOLE_SIZE};
     // The samplers are immutable, in the layout. Bindings 2..11 and 13: images[binding - 2].

@@ -55,6 +55,7 @@ public:
         RenderTarget target;
         target.samples = desc_.sample_count;
         target.clip_zero_to_one = true;
+        target.views = device_.view_mask != 0 ? 2u : 1u; // view_mask is 0 or 0x3 (check_vk_desc)
         return target;
     }
     grass_result begin_frame(const FramePlan& plan) override;

@@ -5,9 +5,10 @@
 namespace grass::vk {
 
 // Opaque boxes: no alpha to coverage.
-PipelineShape DebugViewPipeline::shape(bool indexed_blocks) {
-    const Spirv vert = spirv(Shader::debug_vert, false, indexed_blocks);
-    const Spirv frag = spirv(Shader::debug_frag, false, indexed_blocks);
+PipelineShape DebugViewPipeline::shape(SpirvVariant variant) {
+    variant.responsive = false; // the boxes have no responsive code
+    const Spirv vert = spirv(Shader::debug_vert, variant);
+    const Spirv frag = spirv(Shader::debug_frag, variant);
     return PipelineShape{vert.code,
                          vert.size,
                          frag.code,

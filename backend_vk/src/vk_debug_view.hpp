@@ -7,6 +7,7 @@
 
 #include "vk_functions.hpp"
 #include "vk_pipeline.hpp"
+#include "vk_spirv.hpp"
 
 #include <cstdint>
 
@@ -16,7 +17,7 @@ struct DebugViewPipeline {
     // The vertex binding of the tier instances.
     static constexpr uint32_t kInstanceBinding = 0;
 
-    static PipelineShape shape(bool indexed_blocks);
+    static PipelineShape shape(SpirvVariant variant);
 };
 
 } // namespace grass::vk

@@ -40,30 +40,53 @@ grass_result check_host_objects(grass_context* ctx, const char* function, const 
     return GRASS_SUCCESS;
 }
 
+// The checks of a chained grass_vk_multiview_desc.
+grass_result check_multiview(grass_context* ctx, const char* function, const grass_vk_multiview_desc& m) {
+    if (m.view_mask != 0 && m.view_mask != 0x3u) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: grass_vk_multiview_desc.view_mask is 0x%x; it must be 0 (mono) or 0x3 (stereo: views 0 "
+                         "and 1, the two eyes of grass_stereo_view_desc)",
+                         function, m.view_mask);
+    }
+    return GRASS_SUCCESS;
+}
+
 // Walks the extensions chained to vk_desc->next: each a known type, each once.
-grass_result read_chain(grass_context* ctx, const char* function, const void* next,
-                        grass_vk_host_objects_desc* host_objects) {
-    *host_objects = grass_default_vk_host_objects_desc();
-    bool has_host_objects = false;
-    for (int depth = 0; next; ++depth) {
+grass_result read_chain(grass_context* ctx, const char* function, const void* next, VkDescExtensions* out) {
+    *out = VkDescExtensions{};
+    bool has_host_objects = false, has_multiview = false;
+    while (next) {
         struct Header {
             grass_struct_type type;
             const void* next;
         };
-        const auto* header = static_cast<const Header*>(next);
-        const uint32_t type = grass::raw_enum(header->type);
-        if (type != GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC || has_host_objects || depth > 0) {
+        const uint32_t type = grass::raw_enum(static_cast<const Header*>(next)->type);
+        grass_result r = GRASS_SUCCESS;
+        if (type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC && !has_host_objects) {
+            out->host_objects = *static_cast<const grass_vk_host_objects_desc*>(next);
+            has_host_objects = true;
+            next = out->host_objects.next;
+            out->host_objects.next = nullptr;
+            r = check_host_objects(ctx, function, out->host_objects);
+        } else if (type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC && !has_multiview) {
+            out->multiview = *static_cast<const grass_vk_multiview_desc*>(next);
+            has_multiview = true;
+            next = out->multiview.next;
+            out->multiview.next = nullptr;
+            r = check_multiview(ctx, function, out->multiview);
+        } else {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL,
-                             "%s: vk_desc->next chain holds a struct of type 0x%08x; it may hold "
-                             "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC (0x%08x), once",
+                             "%s: vk_desc->next chain holds a struct of type 0x%08x%s; it may hold "
+                             "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC (0x%08x) and GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC "
+                             "(0x%08x), each once",
                              function, static_cast<unsigned>(type),
-                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC));
+                             type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC ||
+                                     type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC
+                                 ? " a second time"
+                                 : "",
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC),
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC));
         }
-        *host_objects = *static_cast<const grass_vk_host_objects_desc*>(next);
-        has_host_objects = true;
-        next = host_objects->next;
-        host_objects->next = nullptr;
-        const grass_result r = check_host_objects(ctx, function, *host_objects);
         if (r != GRASS_SUCCESS) return r;
     }
     return GRASS_SUCCESS;
@@ -72,7 +95,7 @@ grass_result read_chain(grass_context* ctx, const char* function, const void* ne
 } // namespace
 
 grass_result check_vk_desc(grass_context* ctx, const char* function, const grass_vk_desc* d,
-                           grass_vk_host_objects_desc* host_objects) {
+                           VkDescExtensions* extensions) {
     if (!d) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: vk_desc is NULL", function);
     if (grass::raw_enum(d->type) != GRASS_STRUCT_TYPE_VK_DESC) {
         return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
@@ -80,7 +103,7 @@ grass_result check_vk_desc(grass_context* ctx, const char* function, const grass
                          static_cast<unsigned>(grass::raw_enum(d->type)),
                          static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DESC));
     }
-    const grass_result chain = read_chain(ctx, function, d->next, host_objects);
+    const grass_result chain = read_chain(ctx, function, d->next, extensions);
     if (chain != GRASS_SUCCESS) return chain;
     const struct {
         bool missing;

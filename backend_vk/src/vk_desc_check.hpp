@@ -11,10 +11,16 @@ namespace grass::vk {
 // The most frames in flight a context keeps per-frame buffers for (grass_vk_desc).
 constexpr uint32_t kMaxFramesInFlight = 8;
 
+// The extensions chained to grass_vk_desc.next, copied (their next NULL), or their defaults
+// where the chain has none.
+struct VkDescExtensions {
+    grass_vk_host_objects_desc host_objects = grass_default_vk_host_objects_desc();
+    grass_vk_multiview_desc multiview = grass_default_vk_multiview_desc();
+};
+
 // Logs the first problem through `context` (named after `function`) and returns its code.
-// Walks vk_desc->next: on success *host_objects is the chained grass_vk_host_objects_desc,
-// copied, or its defaults where there is none (its next then NULL).
+// Walks vk_desc->next: on success *extensions holds what it chains.
 grass_result check_vk_desc(grass_context* context, const char* function, const grass_vk_desc* vk_desc,
-                           grass_vk_host_objects_desc* host_objects);
+                           VkDescExtensions* extensions);
 
 } // namespace grass::vk

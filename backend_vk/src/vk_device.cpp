@@ -34,7 +34,8 @@ grass_result unsupported(grass_context* ctx, const char* function, const Device&
 } // namespace
 
 grass_result load_device(grass_context* ctx, const char* function, const grass_vk_desc& vk_desc,
-                         const grass_vk_host_objects_desc& host_objects, Device* out) {
+                         const VkDescExtensions& extensions, Device* out) {
+    const grass_vk_host_objects_desc& host_objects = extensions.host_objects;
     Device& d = *out;
     d.instance = static_cast<VkInstance>(vk_desc.instance);
     d.physical_device = static_cast<VkPhysicalDevice>(vk_desc.physical_device);
@@ -68,6 +69,19 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
         return unsupported(ctx, function, d,
                            "has neither Vulkan 1.3 nor VK_KHR_dynamic_rendering, which vk_desc->render_pass 0 "
                            "(dynamic rendering) needs");
+    }
+
+    d.view_mask = extensions.multiview.view_mask;
+    if (d.view_mask != 0) { // stereo: multiview is core in 1.1, but optional
+        VkPhysicalDeviceMultiviewFeatures multiview{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_FEATURES};
+        VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        features.pNext = &multiview;
+        if (d.fn.vkGetPhysicalDeviceFeatures2) d.fn.vkGetPhysicalDeviceFeatures2(d.physical_device, &features);
+        if (!multiview.multiview) {
+            return unsupported(ctx, function, d,
+                               "lacks the multiview feature (VkPhysicalDeviceMultiviewFeatures::multiview), which "
+                               "grass_vk_multiview_desc.view_mask 0x3 (stereo) needs");
+        }
     }
 
     uint32_t family_count = 0;

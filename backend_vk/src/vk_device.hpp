@@ -2,6 +2,7 @@
 // the properties it needs; with the checks that the device can run grass.
 #pragma once
 
+#include "vk_desc_check.hpp"
 #include "vk_functions.hpp"
 
 #include <grass/grass_vk.h>
@@ -25,6 +26,9 @@ struct Device {
     bool memory_budget = false;
     // The host's VkPipelineCache (grass_vk_host_objects_desc), or none: grass makes its own.
     VkPipelineCache host_pipeline_cache = VK_NULL_HANDLE;
+    // The view mask of the host's pass (grass_vk_multiview_desc): 0 mono, 0x3 stereo (the
+    // device has the multiview feature).
+    uint32_t view_mask = 0;
 };
 
 // The format of single-channel design maps (density, ambient, diffuse, height): 16-bit
@@ -42,6 +46,6 @@ constexpr VkFormat kSliceThresholdFormat = VK_FORMAT_R16G16B16A16_UNORM; // thre
 // and slice formats. Logs and returns GRASS_ERROR_UNSUPPORTED (or GRASS_ERROR_BACKEND when the
 // loader lacks a function). `vk_desc` has passed check_vk_desc().
 grass_result load_device(grass_context* context, const char* function, const grass_vk_desc& vk_desc,
-                         const grass_vk_host_objects_desc& host_objects, Device* out);
+                         const VkDescExtensions& extensions, Device* out);
 
 } // namespace grass::vk

@@ -21,9 +21,10 @@ uint32_t grown_capacity(uint32_t current, uint32_t needed) {
 } // namespace
 
 FrameRing::FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight,
-                     VkDeviceSize uniform_alignment)
+                     VkDeviceSize uniform_alignment, bool stereo)
     : memory_(memory), deferred_(deferred), frames_in_flight_(frames_in_flight),
-      frame_stride_(align_up(sizeof(FrameUniforms), uniform_alignment ? uniform_alignment : 1)),
+      frame_bytes_(sizeof(FrameUniforms) + (stereo ? sizeof(StereoUniforms) : 0)),
+      frame_stride_(align_up(frame_bytes_, uniform_alignment ? uniform_alignment : 1)),
       field_stride_(align_up(sizeof(FieldUniforms), uniform_alignment ? uniform_alignment : 1)) {}
 
 FrameRing::~FrameRing() {
@@ -93,6 +94,9 @@ bool FrameRing::write(uint32_t slot, const FramePlan& plan, uint64_t frame, bool
     if (instances > 0) std::memcpy(s.instances.mapped, plan.instances.data(), instances * sizeof(TierInstance));
     auto* uniforms = static_cast<unsigned char*>(s.uniforms.mapped);
     std::memcpy(uniforms + frame_offset(), &plan.frame, sizeof(FrameUniforms));
+    if (frame_bytes_ > sizeof(FrameUniforms)) { // stereo: the eyes after the Frame block's mono part
+        std::memcpy(uniforms + frame_offset() + sizeof(FrameUniforms), &plan.eyes, sizeof(StereoUniforms));
+    }
     for (uint32_t i = 0; i < draws; ++i) {
         std::memcpy(uniforms + field_offset(i), &plan.draws[i].uniforms, sizeof(FieldUniforms));
     }

@@ -17,8 +17,9 @@ namespace grass::vk {
 class FrameRing {
 public:
     // uniform_alignment: the device's offset alignment of uniform buffers (the Frame and
-    // Field blocks).
-    FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight, VkDeviceSize uniform_alignment);
+    // Field blocks). stereo: a multiview context's Frame block, StereoUniforms after FrameUniforms.
+    FrameRing(Memory& memory, DeferredDeletion& deferred, uint32_t frames_in_flight, VkDeviceSize uniform_alignment,
+              bool stereo);
     ~FrameRing();
     FrameRing(const FrameRing&) = delete;
     FrameRing& operator=(const FrameRing&) = delete;
@@ -38,6 +39,8 @@ public:
     VkBuffer uniform_buffer(uint32_t slot) const { return slots_[slot].uniforms.buffer; }
     // Dynamic offsets of the Frame block and of draw i's Field block.
     uint32_t frame_offset() const { return 0; }
+    // The Frame block's bytes: FrameUniforms, and StereoUniforms in a stereo context.
+    VkDeviceSize frame_block_bytes() const { return frame_bytes_; }
     uint32_t field_offset(uint32_t draw) const { return static_cast<uint32_t>(frame_stride_ + field_stride_ * draw); }
 
 private:
@@ -55,6 +58,7 @@ private:
     Memory& memory_;
     DeferredDeletion& deferred_;
     uint32_t frames_in_flight_;
+    VkDeviceSize frame_bytes_;
     VkDeviceSize frame_stride_;
     VkDeviceSize field_stride_;
     Slot slots_[kMaxFramesInFlight];

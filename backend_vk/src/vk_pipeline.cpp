@@ -37,15 +37,15 @@ static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_
 static_assert(offsetof(TierInstance, cell) == 16 && offsetof(TierInstance, terrain) == 32 && sizeof(TierInstance) == 48,
               "instance layout of blade.vert");
 
-PipelineShape blade_shape(bool responsive, bool indexed_blocks) {
+PipelineShape blade_shape(SpirvVariant variant) {
     VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertex_input.vertexBindingDescriptionCount = 2;
     vertex_input.pVertexBindingDescriptions = kBindings;
     vertex_input.vertexAttributeDescriptionCount = sizeof(kAttributes) / sizeof(kAttributes[0]);
     vertex_input.pVertexAttributeDescriptions = kAttributes;
     // With multisampling, the blade edge alpha becomes coverage (blade.frag).
-    const Spirv vert = spirv(Shader::blade_vert, responsive, indexed_blocks);
-    const Spirv frag = spirv(Shader::blade_frag, responsive, indexed_blocks);
+    const Spirv vert = spirv(Shader::blade_vert, variant);
+    const Spirv frag = spirv(Shader::blade_frag, variant);
     return PipelineShape{vert.code, vert.size, frag.code, frag.size, vertex_input, true, "the blade pipelines"};
 }
 
@@ -126,12 +126,15 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, VkFailure* fail
     if (variant.features >= kFeatureMaskCount) return false;
     if (has_variant(variant)) return true;
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
-    const bool responsive = (variant.features & kBladeCurveFeatures) != 0;
-    const bool indexed = target_.indexed_blocks;
-    const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(responsive, indexed)
-                                : variant.program == kShaderVolume ? SlicePipelines::volume_shape(responsive, indexed)
-                                : variant.program == kShaderImage  ? SlicePipelines::image_shape(responsive, indexed)
-                                                                   : DebugViewPipeline::shape(indexed);
+    // A multiview target (stereo) runs the GRASS_MULTIVIEW modules for every pipeline.
+    SpirvVariant modules;
+    modules.responsive = (variant.features & kBladeCurveFeatures) != 0;
+    modules.indexed_blocks = target_.indexed_blocks;
+    modules.multiview = target_.view_mask != 0;
+    const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(modules)
+                                : variant.program == kShaderVolume ? SlicePipelines::volume_shape(modules)
+                                : variant.program == kShaderImage  ? SlicePipelines::image_shape(modules)
+                                                                   : DebugViewPipeline::shape(modules);
     return create_pipeline_pair(fn_, device_, target_, layout_, shape, variant.features,
                                 pipelines_[variant.features][variant.program], failure, what);
 }
@@ -348,6 +351,7 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
     // Dynamic rendering (Vulkan 1.3 or VK_KHR_dynamic_rendering): the formats stand in
     // for the render pass.
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    rendering.viewMask = target.view_mask; // stereo: both eyes in one pass (0: mono)
     rendering.colorAttachmentCount = 1;
     rendering.pColorAttachmentFormats = &target.color_format;
     rendering.depthAttachmentFormat = target.depth_format;

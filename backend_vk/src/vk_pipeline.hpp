@@ -72,6 +72,9 @@ struct PipelineTarget {
     bool depth_greater = false;             // reversed-Z host: GREATER_OR_EQUAL
     bool indexed_blocks = false;            // Frame and Field at a push-constant index (vk_spirv.hpp; Device)
     VkPipelineCache cache = VK_NULL_HANDLE; // every pipeline goes through it: the host's or grass's own
+    // Multiview (grass_vk_multiview_desc.view_mask): 0x3 for a stereo pass (the GRASS_MULTIVIEW
+    // modules; dynamic rendering's viewMask; a render pass's subpass carries its own), 0 for mono.
+    uint32_t view_mask = 0;
 };
 
 // The descriptor type of the Frame and Field blocks (dynamic offsets: one per draw).

@@ -9,6 +9,7 @@
 
 #include "vk_functions.hpp"
 #include "vk_pipeline.hpp"
+#include "vk_spirv.hpp"
 
 #include <cstdint>
 
@@ -19,8 +20,8 @@ struct SlicePipelines {
     static constexpr uint32_t kInstanceBinding = 0;
 
     // `responsive`: the fragment shaders compiled with GRASS_RESPONSIVE (wind, trails).
-    static PipelineShape volume_shape(bool responsive, bool indexed_blocks);
-    static PipelineShape image_shape(bool responsive, bool indexed_blocks);
+    static PipelineShape volume_shape(SpirvVariant variant);
+    static PipelineShape image_shape(SpirvVariant variant);
 };
 
 } // namespace grass::vk

@@ -1,5 +1,8 @@
 // The SPIR-V of the Vulkan backend's graphics shaders, compiled at build time
-// (backend_vk/CMakeLists.txt) in up to four variants each:
+// (backend_vk/CMakeLists.txt) in up to eight variants each:
+// - multiview: compiled with GRASS_MULTIVIEW (stereo, blade_interface.glsl), for every
+//   pipeline of a context made with a view mask (grass_vk_multiview_desc.view_mask); mono contexts
+//   run the other variants, exactly the modules of before;
 // - responsive: compiled with GRASS_RESPONSIVE, for the pipelines of kBladeCurveFeatures
 //   (blade.vert, volume.frag and image.frag have it; the other shaders are the same);
 // - indexed blocks: compiled with GRASS_INDEXED_BLOCKS, the Frame and Field blocks read
@@ -31,6 +34,13 @@ struct Spirv {
     uint32_t size; // bytes
 };
 
-Spirv spirv(Shader shader, bool responsive, bool indexed_blocks);
+// Which module of a shader: the defines it was compiled with.
+struct SpirvVariant {
+    bool responsive = false;     // GRASS_RESPONSIVE (shaders without it: the plain module)
+    bool indexed_blocks = false; // GRASS_INDEXED_BLOCKS
+    bool multiview = false;      // GRASS_MULTIVIEW
+};
+
+Spirv spirv(Shader shader, SpirvVariant variant);
 
 } // namespace grass::vk

@@ -206,7 +206,7 @@ bool create_image(VkDevice device, const VkPhysicalDeviceMemoryProperties& memor
     info.format = desc.format;
     info.extent = {desc.extent.width, desc.extent.height, 1};
     info.mipLevels = 1;
-    info.arrayLayers = 1;
+    info.arrayLayers = desc.layers;
     info.samples = desc.samples;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = desc.usage;
@@ -221,9 +221,9 @@ bool create_image(VkDevice device, const VkPhysicalDeviceMemoryProperties& memor
     if (r == VK_SUCCESS) r = vkBindImageMemory(device, out->image, out->memory, 0);
     VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     view.image = out->image;
-    view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    view.viewType = desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
     view.format = desc.format;
-    view.subresourceRange = {desc.aspect, 0, 1, 0, 1};
+    view.subresourceRange = {desc.aspect, 0, 1, 0, desc.layers};
     if (r == VK_SUCCESS) r = vkCreateImageView(device, &view, nullptr, &out->view);
     if (r != VK_SUCCESS) *error = vk_error("creating a render target", r);
     return r == VK_SUCCESS;
@@ -344,6 +344,7 @@ bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* o
     subpass.pDepthStencilAttachment = &depth_ref;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    info.pNext = desc.next;
     info.attachmentCount = msaa ? 3 : 2;
     info.pAttachments = attachments;
     info.subpassCount = 1;

@@ -71,7 +71,8 @@ bool memory_type(const VkPhysicalDeviceMemoryProperties& memory, uint32_t bits, 
 VkResult allocate_memory(VkDevice device, const VkPhysicalDeviceMemoryProperties& memory,
                          const VkMemoryRequirements& requirements, VkMemoryPropertyFlags flags, VkDeviceMemory* out);
 
-// A 2D image (one level, one layer, optimal tiling) in device-local memory, with a view.
+// A 2D image (one level, optimal tiling) in device-local memory, with a view: of one layer,
+// or a 2D array view of `layers` (a multiview pass's attachments: one layer per view).
 struct VkImageParts {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
@@ -83,6 +84,7 @@ struct VkImageDesc {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     VkImageUsageFlags usage = 0;
     VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+    uint32_t layers = 1;
 };
 bool create_image(VkDevice device, const VkPhysicalDeviceMemoryProperties& memory, const VkImageDesc& desc,
                   VkImageParts* out, std::string* error);
@@ -122,6 +124,7 @@ struct VkPassDesc {
     bool keep_depth = false;
     VkImageLayout depth_final = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     VkSubpassDependency dependencies[2] = {}; // into and out of the pass
+    const void* next = nullptr;               // VkRenderPassCreateInfo::pNext (a multiview pass's view masks)
 };
 bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* out, std::string* error);
 

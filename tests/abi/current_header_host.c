@@ -29,6 +29,8 @@ int main(void) {
     CHECK(grass_default_vk_desc().type == GRASS_STRUCT_TYPE_VK_DESC);
     CHECK(grass_default_vk_host_objects_desc().type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC);
     CHECK(grass_default_vk_host_objects_desc().allocation_callbacks == NULL);
+    CHECK(grass_default_vk_multiview_desc().type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC);
+    CHECK(grass_default_vk_multiview_desc().view_mask == 0);
     CHECK(grass_default_vk_record_desc().type == GRASS_STRUCT_TYPE_VK_RECORD_DESC);
     CHECK_OK(grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx));
     if (!ctx) return 1;

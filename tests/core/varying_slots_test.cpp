@@ -68,13 +68,51 @@ Outputs located_outputs(const uint32_t* words, uint32_t bytes) {
 TEST(VaryingSlotsTest, BladeVertexShaderWritesFourSlots) {
     // Position and density, normal and opacity, albedo and the threshold's code, the shape and
     // the light: 14 values, four slots (blade.vert).
-    for (const bool responsive : {false, true}) {
-        for (const bool indexed_blocks : {false, true}) {
-            const grass::vk::Spirv code = grass::vk::spirv(grass::vk::Shader::blade_vert, responsive, indexed_blocks);
-            const Outputs out = located_outputs(code.code, code.size);
-            ASSERT_EQ(out.error, "");
-            EXPECT_EQ(out.slots, 4) << "blade.vert (responsive " << responsive << ", indexed blocks " << indexed_blocks
-                                    << "): pack its varyings four to a slot";
+    for (const bool multiview : {false, true}) {
+        for (const bool responsive : {false, true}) {
+            for (const bool indexed_blocks : {false, true}) {
+                const grass::vk::Spirv code =
+                    grass::vk::spirv(grass::vk::Shader::blade_vert, {responsive, indexed_blocks, multiview});
+                const Outputs out = located_outputs(code.code, code.size);
+                ASSERT_EQ(out.error, "");
+                EXPECT_EQ(out.slots, 4) << "blade.vert (responsive " << responsive << ", indexed blocks "
+                                        << indexed_blocks << ", multiview " << multiview
+                                        << "): pack its varyings four to a slot";
+            }
+        }
+    }
+}
+
+// The multiview variant (stereo, GRASS_MULTIVIEW) is what a stereo context's pipelines run,
+// and only theirs: its vertex shaders declare the MultiView capability (gl_ViewIndex picks
+// the eye; a fragment shader declares it only where it reads the eye), and none of the mono
+// modules does (a mono context runs exactly the shaders of before).
+TEST(VaryingSlotsTest, OnlyTheMultiviewModulesDeclareMultiView) {
+    constexpr uint32_t kOpCapability = 17, kCapabilityMultiView = 4439;
+    const auto declares_multiview = [&](const grass::vk::Spirv& code) {
+        const uint32_t count = code.size / 4;
+        for (uint32_t at = 5; at < count;) {
+            const uint32_t words = code.code[at] >> 16, op = code.code[at] & 0xffffu;
+            if (words == 0) return false;
+            if (op == kOpCapability && words >= 2 && code.code[at + 1] == kCapabilityMultiView) return true;
+            at += words;
+        }
+        return false;
+    };
+    for (int shader = 0; shader <= static_cast<int>(grass::vk::Shader::debug_frag); ++shader) {
+        for (const bool multiview : {false, true}) {
+            for (const bool responsive : {false, true}) {
+                for (const bool indexed_blocks : {false, true}) {
+                    const grass::vk::Spirv code = grass::vk::spirv(static_cast<grass::vk::Shader>(shader),
+                                                                   {responsive, indexed_blocks, multiview});
+                    const bool vertex = shader % 2 == 0; // Shader: each vertex shader, then its fragment shader
+                    if (!multiview || vertex) {
+                        EXPECT_EQ(declares_multiview(code), multiview)
+                            << "shader " << shader << " (responsive " << responsive << ", indexed blocks "
+                            << indexed_blocks << ", multiview " << multiview << ")";
+                    }
+                }
+            }
         }
     }
 }

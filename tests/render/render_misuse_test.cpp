@@ -2,6 +2,8 @@
 // still renders afterwards.
 #include "render_fixture.hpp"
 
+#include <cstring>
+
 namespace grass_test {
 namespace {
 
@@ -57,6 +59,34 @@ TEST_P(RenderMisuseTest, ObjectsCanBeDestroyedAndRecreatedBetweenFrames) {
     // A frame with no field draws nothing and is fine.
     const auto empty = render(view(eye, target));
     EXPECT_EQ(grass_share(empty, sky, 0, 0, empty.width, empty.height), 0.0);
+}
+
+// A stereo frame (grass_stereo_view_desc) where the context draws mono: GL has no multiview
+// path (GL_OVR_multiview: Mesa's llvmpipe has none); a Vulkan context made without a view mask
+// draws into a mono pass. Refused before anything is planned; the context still renders.
+TEST_P(RenderMisuseTest, AStereoFrameIsRefusedWhereTheContextDrawsMono) {
+    make_field(field_desc(4));
+    const double eye[3] = {0.5, 2.0, 0.5}, target[3] = {0.5, 0.0, 0.5001};
+    grass_view_desc v = view(eye, target);
+    grass_stereo_view_desc second = grass_default_stereo_view_desc();
+    std::memcpy(second.view, v.view, sizeof(second.view));
+    std::memcpy(second.projection, v.projection, sizeof(second.projection));
+    second.camera_position[0] = eye[0] + 0.06;
+    second.camera_position[1] = eye[1];
+    second.camera_position[2] = eye[2];
+    v.next = &second;
+    log.clear();
+    if (GetParam() == GRASS_BACKEND_GL) {
+        EXPECT_EQ(grass_begin_frame(ctx, &v), GRASS_ERROR_UNSUPPORTED);
+        EXPECT_NE(log.find("GL_OVR_multiview"), std::string::npos) << log;
+    } else {
+        EXPECT_EQ(grass_begin_frame(ctx, &v), GRASS_ERROR_INVALID_STATE);
+        EXPECT_NE(log.find("grass_vk_multiview_desc.view_mask 0"), std::string::npos) << log;
+    }
+    uint8_t sky[3];
+    expected_sky(host->target(), sky);
+    const auto image = render(view(eye, target));
+    EXPECT_GT(grass_share(image, sky, 0, 0, image.width, image.height), 0.1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, RenderMisuseTest, ::testing::ValuesIn(enabled_backends()),

@@ -204,14 +204,17 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202,
     GRASS_STRUCT_TYPE_VK_PREPARE_DESC = 0x67720203,      /* 0.5 */
     GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC = 0x67720204, /* 0.5 */
+    GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC = 0x67720205,    /* 0.5 */
     /* 0.5: responsive grass */
     GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
     GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
     GRASS_STRUCT_TYPE_WIND_MAP_DESC = 0x6772000B,
     GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C,
-    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,    /* 0.5 */
-    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E /* 0.5 */
+    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,     /* 0.5 */
+    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E, /* 0.5 */
+    GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,  /* 0.5: stereo */
+    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010    /* 0.5 */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -835,8 +838,10 @@ typedef enum grass_view_flags {
 
 /* The camera and lights of one frame. */
 typedef struct grass_view_desc {
-    grass_struct_type type;    /* GRASS_STRUCT_TYPE_VIEW_DESC */
-    const void* next;          /* NULL */
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VIEW_DESC */
+    /* NULL, or a chain of the view's extensions (0.5), each at most once, in any order:
+     * grass_stereo_view_desc (the second eye of a multiview pass) and grass_lod_origin_desc. */
+    const void* next;
     double camera_position[3]; /* world space, metres, within +-1e12 m each */
     /* World-to-eye matrix, column-major. Only its rotation is used: translation comes
      * from camera_position, so a host may pass a view built at the origin. */
@@ -874,6 +879,42 @@ typedef struct grass_view_desc {
 } grass_view_desc;
 
 GRASS_API grass_view_desc grass_default_view_desc(void);
+
+/* 0.5: Stereo (docs/integration.md, "Stereo: multiview"). Chained on grass_view_desc.next,
+ * it makes the frame a stereo frame: grass_view_desc is the first eye (view 0 of the host's
+ * multiview pass, layer 0 of its attachments) and this struct the second (view 1). Both eyes
+ * are drawn by one grass_vk_record into a pass whose view mask is 0b11 (grass_vk_multiview_desc's
+ * view_mask; the context must have been created for it). Both eyes share one plan: grass
+ * culls against the union of the two frusta and measures the lod distances (and sorts the
+ * blades) from one origin, the eyes' midpoint unless a grass_lod_origin_desc is chained too,
+ * so both eyes draw the same blades, tiers and transitions. The eyes share the viewport,
+ * sun, time and flags of grass_view_desc. A context without a backend plans it; GL
+ * contexts refuse it (GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED: the GL backend
+ * has no GL_OVR_multiview path, which Mesa's llvmpipe lacks). A Vulkan context made with a
+ * view mask refuses a frame without it, and one made without refuses a frame with it. */
+typedef struct grass_stereo_view_desc {
+    grass_struct_type type;    /* GRASS_STRUCT_TYPE_STEREO_VIEW_DESC */
+    const void* next;          /* the view's next extension, or NULL */
+    double camera_position[3]; /* the second eye, world space, metres, as grass_view_desc's */
+    float view[16];            /* its world-to-eye matrix, as grass_view_desc.view */
+    float projection[16];      /* its eye-to-clip matrix, as grass_view_desc.projection */
+} grass_stereo_view_desc;
+
+/* Default: the identity view and projection at the world origin (set all three). */
+GRASS_API grass_stereo_view_desc grass_default_stereo_view_desc(void);
+
+/* 0.5: Chained on grass_view_desc.next: the point the lod tests measure their distances
+ * from and the geometry tier sorts its instances by (front to back), instead of the camera
+ * (mono) or the eyes' midpoint (stereo). Positions and culling stay the camera's. A host
+ * draws a mono view with the plan of a stereo frame by giving it the stereo frame's lod
+ * origin (the tests do); a shadow or reflection view may give the main camera's. */
+typedef struct grass_lod_origin_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC */
+    const void* next;       /* the view's next extension, or NULL */
+    double position[3];     /* world space, metres, within +-1e12 m each; default 0 */
+} grass_lod_origin_desc;
+
+GRASS_API grass_lod_origin_desc grass_default_lod_origin_desc(void);
 
 /* Starts a frame: validates the view and plans what every field draws. Then draw with
  * grass_gl_render() or grass_vk_record(), and close with grass_end_frame(). */

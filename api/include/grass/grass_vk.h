@@ -79,7 +79,8 @@ typedef grass_vk_void_function(GRASS_VKAPI_PTR* grass_vk_get_instance_proc_addr_
 
 typedef struct grass_vk_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_DESC */
-    /* NULL, or a chain of extensions: a grass_vk_host_objects_desc (0.5) */
+    /* NULL, or a chain of extensions (0.5): a grass_vk_host_objects_desc, a
+     * grass_vk_multiview_desc, each at most once, in any order */
     const void* next;
     grass_vk_get_instance_proc_addr_fn get_instance_proc_addr; /* required */
     void* instance;                                            /* VkInstance, required */
@@ -123,6 +124,26 @@ typedef struct grass_vk_host_objects_desc {
 
 /* 0.5 */
 GRASS_API grass_vk_host_objects_desc grass_default_vk_host_objects_desc(void);
+
+/* 0.5: Stereo (grass_stereo_view_desc; docs/integration.md, "Stereo: multiview"), chained
+ * through grass_vk_desc.next. */
+typedef struct grass_vk_multiview_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC */
+    const void* next;       /* NULL, or a further extension of grass_vk_desc */
+    /* The view mask of the pass grass draws in. 0 (the default): a mono pass, as without
+     * this struct. 0x3: a multiview pass of two views, view 0 the first eye and view 1 the
+     * second, into 2-layer attachments; every frame of the context is then a stereo frame.
+     * Dynamic rendering: the host begins its rendering with VkRenderingInfo::viewMask 0x3; a
+     * render pass: its subpass has view mask 0x3 (VkRenderPassMultiviewCreateInfo). The host
+     * enabled the multiview feature (VkPhysicalDeviceMultiviewFeatures, or
+     * Vulkan11Features.multiview); a device without it is refused (GRASS_ERROR_UNSUPPORTED).
+     * Its pipelines run the multiview shader variant; a context without stereo has exactly
+     * the pipelines, shaders and memory of before. */
+    uint32_t view_mask;
+} grass_vk_multiview_desc;
+
+/* 0.5 */
+GRASS_API grass_vk_multiview_desc grass_default_vk_multiview_desc(void);
 
 GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const grass_context_desc* desc,
                                                const grass_vk_desc* vk_desc, grass_context** out_context);
@@ -180,7 +201,8 @@ GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);
 
 /* Records the draws of the begun frame. Binds its own pipeline and descriptor sets, may
  * set push constants of its own pipeline layout, and sets viewport and scissor from the
- * view; the host must rebind its own state after. */
+ * view; the host must rebind its own state after. A stereo context (grass_vk_multiview_desc.view_mask 0x3) records
+ * each draw once; the pass's multiview runs it for both eyes (one viewport for both). */
 GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc* record);
 
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */

@@ -45,6 +45,12 @@ GRASS_API grass_vk_host_objects_desc grass_default_vk_host_objects_desc(void) {
     d.type = GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC;
     return d;
 }
+GRASS_API grass_vk_multiview_desc grass_default_vk_multiview_desc(void) {
+    grass_vk_multiview_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC;
+    return d;
+}
 GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void) {
     grass_vk_record_desc d;
     std::memset(&d, 0, sizeof(d));

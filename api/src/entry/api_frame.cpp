@@ -7,39 +7,112 @@
 #include "plan/frame_planner.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace grass {
 namespace {
 
-grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_desc* view) {
-    GRASS_TRY(GRASS_CHECK_DESC(ctx, fn, view, GRASS_STRUCT_TYPE_VIEW_DESC));
-    const grass_view_desc& v = *view;
-    GRASS_TRY(check_finite_array(ctx, fn, "view->camera_position", v.camera_position, 3));
+// A world position within +-1e12 m (beyond, double itself loses the millimetre).
+grass_result check_position(grass_context* ctx, const char* fn, const char* name, const double p[3]) {
+    GRASS_TRY(check_finite_array(ctx, fn, name, p, 3));
     for (int c = 0; c < 3; ++c) {
-        // Beyond 1e12 m, double itself loses the millimetre.
-        if (std::fabs(v.camera_position[c]) > 1e12) {
+        if (std::fabs(p[c]) > 1e12) {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                             "%s: view->camera_position[%d] is %g; it must be within +-1e12 m", fn, c,
-                             v.camera_position[c]);
+                             "%s: %s[%d] is %g; it must be within +-1e12 m", fn, name, c, p[c]);
         }
     }
-    GRASS_TRY(check_finite_array(ctx, fn, "view->view", v.view, 16));
-    GRASS_TRY(check_finite_array(ctx, fn, "view->projection", v.projection, 16));
-    double det =
-        v.view[0] * (static_cast<double>(v.view[5]) * v.view[10] - static_cast<double>(v.view[9]) * v.view[6]) -
-        v.view[4] * (static_cast<double>(v.view[1]) * v.view[10] - static_cast<double>(v.view[9]) * v.view[2]) +
-        v.view[8] * (static_cast<double>(v.view[1]) * v.view[6] - static_cast<double>(v.view[5]) * v.view[2]);
+    return GRASS_SUCCESS;
+}
+
+// An eye: a position, a view with an invertible rotation and a projection (`who` names it).
+grass_result check_eye(grass_context* ctx, const char* fn, const char* who, const double position[3],
+                       const float view[16], const float projection[16]) {
+    char name[64];
+    std::snprintf(name, sizeof(name), "%s->camera_position", who);
+    GRASS_TRY(check_position(ctx, fn, name, position));
+    std::snprintf(name, sizeof(name), "%s->view", who);
+    GRASS_TRY(check_finite_array(ctx, fn, name, view, 16));
+    std::snprintf(name, sizeof(name), "%s->projection", who);
+    GRASS_TRY(check_finite_array(ctx, fn, name, projection, 16));
+    const float* m = view;
+    double det = m[0] * (static_cast<double>(m[5]) * m[10] - static_cast<double>(m[9]) * m[6]) -
+                 m[4] * (static_cast<double>(m[1]) * m[10] - static_cast<double>(m[9]) * m[2]) +
+                 m[8] * (static_cast<double>(m[1]) * m[6] - static_cast<double>(m[5]) * m[2]);
     if (!(std::fabs(det) > 1e-6)) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM,
-                         "%s: view->view has a singular rotation (determinant %g)", fn, det);
+                         "%s: %s->view has a singular rotation (determinant %g)", fn, who, det);
     }
     bool projection_zero = true;
-    for (float p : v.projection) projection_zero = projection_zero && p == 0.0f;
+    for (int k = 0; k < 16; ++k) projection_zero = projection_zero && projection[k] == 0.0f;
     if (projection_zero) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM, "%s: view->projection is all zeros",
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_TRANSFORM, "%s: %s->projection is all zeros", fn,
+                         who);
+    }
+    return GRASS_SUCCESS;
+}
+
+// The view's extension chain (grass_view_desc.next): each known struct at most once.
+grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_view_desc& v, ViewExtensions* out) {
+    *out = ViewExtensions{};
+    uint32_t position = 0;
+    for (const void* p = v.next; p; ++position) {
+        const auto* header = static_cast<const grass_view_desc*>(p); // every desc begins with type, next
+        const int64_t type = raw_enum(header->type);
+        if (type == GRASS_STRUCT_TYPE_STEREO_VIEW_DESC && !out->stereo) {
+            out->stereo = static_cast<const grass_stereo_view_desc*>(p);
+            GRASS_TRY(check_eye(ctx, fn, "grass_stereo_view_desc", out->stereo->camera_position, out->stereo->view,
+                                out->stereo->projection));
+            p = out->stereo->next;
+        } else if (type == GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC && !out->lod_origin) {
+            out->lod_origin = static_cast<const grass_lod_origin_desc*>(p);
+            GRASS_TRY(check_position(ctx, fn, "grass_lod_origin_desc->position", out->lod_origin->position));
+            p = out->lod_origin->next;
+        } else {
+            return ctx->fail(
+                GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                "%s: view->next chain element %u has type 0x%08x; expected "
+                "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC or GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC, each at most once",
+                fn, position, static_cast<unsigned>(type));
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
+// A stereo frame needs a target of two views, and a target of two views a stereo frame.
+grass_result check_views(grass_context* ctx, const char* fn, const ViewExtensions& ext) {
+    if (!ctx->backend || ctx->backend->kind() == GRASS_BACKEND_NONE) return GRASS_SUCCESS; // plans only
+    const uint32_t views = ctx->backend->render_target().views;
+    if (ext.stereo && views == 2) return GRASS_SUCCESS;
+    if (!ext.stereo && views == 1) return GRASS_SUCCESS;
+    if (ctx->backend->kind() == GRASS_BACKEND_GL) {
+        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: view->next chains a grass_stereo_view_desc, but the GL backend has no multiview path "
+                         "(GL_OVR_multiview is not implemented; Mesa's llvmpipe does not expose it): draw the eyes "
+                         "as two mono frames",
                          fn);
     }
+    if (ext.stereo) {
+        return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: view->next chains a grass_stereo_view_desc, but the context was created with "
+                         "grass_vk_multiview_desc.view_mask 0 (a mono pass); create it with view_mask 0x3",
+                         fn);
+    }
+    return ctx->fail(
+        GRASS_ERROR_INVALID_STATE, GRASS_MSG_DEVICE_UNSUPPORTED,
+        "%s: the context draws into a multiview pass (grass_vk_multiview_desc.view_mask 0x3) but view->next "
+        "chains no grass_stereo_view_desc (the second eye)",
+        fn);
+}
+
+grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_desc* view, ViewExtensions* ext) {
+    if (!view) return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: view is NULL", fn);
+    GRASS_TRY(check_desc_header(ctx, fn, "view", view, raw_enum(view->type), nullptr, GRASS_STRUCT_TYPE_VIEW_DESC,
+                                "GRASS_STRUCT_TYPE_VIEW_DESC"));
+    const grass_view_desc& v = *view;
+    GRASS_TRY(check_eye(ctx, fn, "view", v.camera_position, v.view, v.projection));
+    GRASS_TRY(parse_view_chain(ctx, fn, v, ext));
+    GRASS_TRY(check_views(ctx, fn, *ext));
     if (v.viewport[2] <= 0 || v.viewport[3] <= 0) {
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                          "%s: view->viewport is %d x %d pixels; width and height must be > 0", fn, v.viewport[2],
@@ -108,6 +181,22 @@ GRASS_API grass_view_desc grass_default_view_desc(void) {
     return d;
 }
 
+GRASS_API grass_stereo_view_desc grass_default_stereo_view_desc(void) {
+    grass_stereo_view_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_STEREO_VIEW_DESC;
+    d.view[0] = d.view[5] = d.view[10] = d.view[15] = 1.0f;
+    d.projection[0] = d.projection[5] = d.projection[10] = d.projection[15] = 1.0f;
+    return d;
+}
+
+GRASS_API grass_lod_origin_desc grass_default_lod_origin_desc(void) {
+    grass_lod_origin_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC;
+    return d;
+}
+
 GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_view_desc* view) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_begin_frame", [&] {
@@ -117,7 +206,8 @@ GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_vie
             return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_ALREADY_BEGUN,
                                  "%s: a frame has already begun; call grass_end_frame first", fn);
         }
-        GRASS_TRY(grass::validate_view(context, fn, view));
+        grass::ViewExtensions extensions;
+        GRASS_TRY(grass::validate_view(context, fn, view, &extensions));
         const grass::FramePlanning planning{context->fields,
                                             context->patches,
                                             context->maps,
@@ -129,7 +219,7 @@ GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_vie
                                             context->desc.depth_mode,
                                             context->backend ? context->backend->render_target()
                                                              : grass::RenderTarget{}};
-        GRASS_TRY(grass::build_frame_plan(planning, *view));
+        GRASS_TRY(grass::build_frame_plan(planning, *view, extensions));
         GRASS_TRY(grass::check_plan(context, fn));
         GRASS_TRY(grass::upload_blade_curves(context));
         GRASS_TRY(context->backend->begin_frame(context->plan));

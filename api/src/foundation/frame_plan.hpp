@@ -50,8 +50,10 @@ static_assert(sizeof(FrameUniforms) == 1312, "std140 Frame block");
 struct RenderTarget {
     uint32_t samples = 1;          // 1: not multisampled
     bool clip_zero_to_one = false; // clip z runs 0..1 (Vulkan, GL_ZERO_TO_ONE), else -1..1 (GL's default)
+    uint32_t views = 1;            // 2: a multiview pass of two eyes (grass_vk_multiview_desc.view_mask 0x3); a frame
+                                   // must then be stereo (grass_stereo_view_desc), and only then
     bool operator==(const RenderTarget& o) const {
-        return samples == o.samples && clip_zero_to_one == o.clip_zero_to_one;
+        return samples == o.samples && clip_zero_to_one == o.clip_zero_to_one && views == o.views;
     }
     bool operator!=(const RenderTarget& o) const { return !(*this == o); }
 };
@@ -62,6 +64,17 @@ inline void write_render_target(FrameUniforms* frame, const RenderTarget& target
     frame->params[3] = static_cast<float>(target.samples);
     frame->target[0] = target.clip_zero_to_one ? 1.0f : 0.0f;
 }
+
+// Stereo frames only (grass_stereo_view_desc): the eyes, as the multiview shader variant
+// (GRASS_MULTIVIEW, blade_interface.glsl) reads them at the end of its Frame block, right
+// after FrameUniforms (std140; a mono context's Frame block has none of it). Positions are
+// relative to the plan's origin, the point the instances are relative to (the eyes' midpoint
+// or the grass_lod_origin_desc).
+struct StereoUniforms {
+    float eye_view_projection[2][16]; // per eye: projection * view rotation: eye-relative world -> clip
+    float eye_position[2][4];         // per eye: xyz: the eye relative to the plan's origin (m); w = 0
+};
+static_assert(sizeof(StereoUniforms) == 160, "std140 Frame block's eyes");
 
 // std140 uniform block `Field` (binding 1).
 struct FieldUniforms {
@@ -189,6 +202,8 @@ struct FramePlan {
     explicit FramePlan(HostAllocator* host)
         : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host) {}
     FrameUniforms frame{};
+    bool stereo = false;   // a stereo frame: `eyes` follows `frame` in the Frame block (RenderTarget::views 2)
+    StereoUniforms eyes{}; // stereo frames only
     int32_t viewport[4] = {0, 0, 0, 0};
     uint32_t flags = 0;             // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
                                     // draw as debug boxes instead of its tier

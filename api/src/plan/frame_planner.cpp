@@ -32,28 +32,55 @@ uint64_t blades_passing(double density, uint32_t blade_count) {
     return static_cast<uint64_t>(std::min<double>(std::max(n, 0.0), blade_count));
 }
 
-// A field seen from the camera: its frame in camera-relative world space.
+// A field seen from the camera: its frame in camera-relative world space. The camera is
+// the plan's origin (the eyes' midpoint in a stereo frame); the lod origin is where the lod
+// distances are measured from (the camera unless grass_lod_origin_desc moves it).
 struct FieldFrame {
-    double cam_local[3];  // camera in field space, cells
+    double cam_local[3];  // the lod origin in field space, cells
     double origin_rel[3]; // field origin relative to the camera, metres
     double axis[3][3];    // one cell along field x, y, z, in world metres
     double cell_size;
 };
 
-FieldFrame field_frame(const Field& field, const double camera[3]) {
+FieldFrame field_frame(const Field& field, const double camera[3], const double lod_origin[3]) {
     FieldFrame f;
     const double* R = field.rotation;
     const double cs = field.desc.cell_size;
-    const double rel[3] = {camera[0] - field.translation[0], camera[1] - field.translation[1],
-                           camera[2] - field.translation[2]};
+    const double rel[3] = {lod_origin[0] - field.translation[0], lod_origin[1] - field.translation[1],
+                           lod_origin[2] - field.translation[2]};
     for (int c = 0; c < 3; ++c) {
         f.cam_local[c] = (R[3 * c] * rel[0] + R[3 * c + 1] * rel[1] + R[3 * c + 2] * rel[2]) / cs;
-        f.origin_rel[c] = -rel[c];
+        f.origin_rel[c] = field.translation[c] - camera[c];
         for (int a = 0; a < 3; ++a) f.axis[a][c] = R[3 * a + c] * cs;
     }
     f.cell_size = cs;
     return f;
 }
+
+// The frusta a node must meet one of: the camera's, or a stereo frame's two eyes', each
+// with the eye's position relative to the plan's origin (positions are tested relative to it).
+struct Frusta {
+    const ViewCulling* culling[2];
+    double eye[2][3];
+    uint32_t count;
+    bool sphere_may_be_visible(const double center[3], double radius) const {
+        for (uint32_t k = 0; k < count; ++k) {
+            const double c[3] = {center[0] - eye[k][0], center[1] - eye[k][1], center[2] - eye[k][2]};
+            if (culling[k]->sphere_may_be_visible(c, radius)) return true;
+        }
+        return false;
+    }
+    bool box_may_be_visible(const double corners[8][3]) const {
+        for (uint32_t k = 0; k < count; ++k) {
+            double c[8][3];
+            for (int i = 0; i < 8; ++i) {
+                for (int a = 0; a < 3; ++a) c[i][a] = corners[i][a] - eye[k][a];
+            }
+            if (culling[k]->box_may_be_visible(c)) return true;
+        }
+        return false;
+    }
+};
 
 // A point in field space (cells) relative to the camera (metres).
 void to_camera(const FieldFrame& f, double x, double y, double z, double out[3]) {
@@ -73,9 +100,11 @@ uint32_t patch_indices(const PatchData& pd) {
 class FieldPlanner {
 public:
     FieldPlanner(const FramePlanning& in, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
-                 const ViewCulling& culling, const DynamicsFrame& dynamics, uint32_t view_flags)
-        : in_(in), slot_(slot), field_(field), patch_(patch), culling_(culling), frame_(field_frame(field, camera)) {
+                 const double lod_origin[3], const Frusta& culling, const DynamicsFrame& dynamics, uint32_t view_flags)
+        : in_(in), slot_(slot), field_(field), patch_(patch), culling_(culling),
+          frame_(field_frame(field, camera, lod_origin)) {
         for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
+        for (int c = 0; c < 3; ++c) lod_rel_[c] = lod_origin[c] - camera[c];
         // Responsive grass: the shader variant of every draw of the field (still grass: the
         // maps' bits only).
         for (int c = 0; c < 3; ++c) field_up_[c] = frame_.axis[1][c] / frame_.cell_size;
@@ -352,6 +381,7 @@ private:
         to_camera(frame_, double(cells.x0), 0.0, double(cells.z0), origin);
         to_camera(frame_, double(cells.x0) + 0.5 * double(cells.count_x), 0.0,
                   double(cells.z0) + 0.5 * double(cells.count_z), centre);
+        for (int a = 0; a < 3; ++a) centre[a] -= lod_rel_[a]; // sorted by the distance to the lod origin
         c.distance2 = centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2];
         for (int a = 0; a < 3; ++a) c.instance.origin[a] = static_cast<float>(origin[a]);
         c.instance.reserved = 0.0f;
@@ -498,9 +528,10 @@ private:
     uint32_t slot_;
     const Field& field_;
     const Patch& patch_;
-    const ViewCulling& culling_;
+    const Frusta& culling_;
     FieldFrame frame_;
     double camera_[3];
+    double lod_rel_[3]; // the lod origin relative to the camera (metres)
     const DesignMap* density_map_ = nullptr;
     const DesignMap* height_map_ = nullptr;
     double field_up_[3] = {0, 1, 0}; // the field's up, world, unit
@@ -515,21 +546,56 @@ private:
 
 } // namespace
 
-grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& view) {
+// Camera-relative view-projection: the host's projection times its rotation only (the
+// translation is the camera position).
+void eye_view_projection(const float view[16], const float projection[16], double out[16]) {
+    double rotation[16] = {0};
+    for (int c = 0; c < 3; ++c) {
+        for (int r = 0; r < 3; ++r) rotation[4 * c + r] = view[4 * c + r];
+    }
+    rotation[15] = 1.0;
+    double p[16];
+    for (int k = 0; k < 16; ++k) p[k] = projection[k];
+    mul4(p, rotation, out);
+}
+
+grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& view, const ViewExtensions& ext) {
     const auto start = std::chrono::steady_clock::now();
     FramePlan& plan = in.plan;
     plan.clear();
 
-    // Camera-relative view: the host's rotation only; the translation is the camera position.
-    double rotation[16] = {0};
+    // The plan's origin (what every position is relative to) and the lod origin. Mono: the
+    // camera, and the lod origin where grass_lod_origin_desc puts it. Stereo: both at the lod
+    // origin, by default the eyes' midpoint, so both eyes draw one plan and neither is
+    // favoured; the shaders subtract each eye's position (plan.eyes).
+    const grass_stereo_view_desc* stereo = ext.stereo;
+    double lod_origin[3], camera[3];
     for (int c = 0; c < 3; ++c) {
-        for (int r = 0; r < 3; ++r) rotation[4 * c + r] = view.view[4 * c + r];
+        lod_origin[c] = ext.lod_origin ? ext.lod_origin->position[c]
+                        : stereo       ? 0.5 * (view.camera_position[c] + stereo->camera_position[c])
+                                       : view.camera_position[c];
+        camera[c] = stereo ? lod_origin[c] : view.camera_position[c];
     }
-    rotation[15] = 1.0;
-    double projection[16], view_projection[16];
-    for (int k = 0; k < 16; ++k) projection[k] = view.projection[k];
-    mul4(projection, rotation, view_projection);
+    double view_projection[16], second_view_projection[16];
+    eye_view_projection(view.view, view.projection, view_projection);
     for (int k = 0; k < 16; ++k) plan.frame.view_projection[k] = static_cast<float>(view_projection[k]);
+    plan.stereo = stereo != nullptr;
+    Frusta frusta{};
+    frusta.count = 1;
+    if (stereo) {
+        eye_view_projection(stereo->view, stereo->projection, second_view_projection);
+        frusta.count = 2;
+        const double* eyes[2] = {view.camera_position, stereo->camera_position};
+        const double* vps[2] = {view_projection, second_view_projection};
+        for (int e = 0; e < 2; ++e) {
+            for (int k = 0; k < 16; ++k) plan.eyes.eye_view_projection[e][k] = static_cast<float>(vps[e][k]);
+            for (int c = 0; c < 3; ++c) {
+                frusta.eye[e][c] = eyes[e][c] - camera[c];
+                plan.eyes.eye_position[e][c] = static_cast<float>(frusta.eye[e][c]);
+            }
+            plan.eyes.eye_position[e][3] = 0.0f;
+        }
+    }
 
     const double sun[3] = {view.sun_direction[0], view.sun_direction[1], view.sun_direction[2]};
     const double len = std::sqrt(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
@@ -547,14 +613,21 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     plan.frame.target[1] = plan.frame.target[2] = plan.frame.target[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;
-    const DynamicsFrame dynamics = plan_dynamics(&in.dynamics, &plan, &in.log, view);
+    // Responsive grass is planned around the plan's origin (the wind's phases, the
+    // interaction map's window): the eyes of a stereo frame share it.
+    grass_view_desc origin_view = view;
+    for (int c = 0; c < 3; ++c) origin_view.camera_position[c] = camera[c];
+    const DynamicsFrame dynamics = plan_dynamics(&in.dynamics, &plan, &in.log, origin_view);
 
     const ViewCulling culling(view_projection, in.depth_mode);
+    frusta.culling[0] = &culling;
+    const ViewCulling second_culling(stereo ? second_view_projection : view_projection, in.depth_mode);
+    frusta.culling[1] = &second_culling;
     for (uint32_t slot = 0; slot < in.fields.capacity(); ++slot) {
         const Field* field = in.fields.get(slot);
         if (!field) continue;
-        FieldPlanner planner(in, slot, *field, *in.patches.get(field->patch_slot), view.camera_position, culling,
-                             dynamics, view.flags);
+        FieldPlanner planner(in, slot, *field, *in.patches.get(field->patch_slot), camera, lod_origin, frusta, dynamics,
+                             view.flags);
         const grass_result r = planner.run();
         if (r != GRASS_SUCCESS) {
             plan.clear();

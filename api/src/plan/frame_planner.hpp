@@ -32,8 +32,18 @@ struct FramePlanning {
     RenderTarget target; // the target's samples and clip convention, as the backend reports them
 };
 
+// The validated extensions chained on grass_view_desc.next (each may be absent).
+struct ViewExtensions {
+    const grass_stereo_view_desc* stereo = nullptr;    // the second eye: a stereo frame
+    const grass_lod_origin_desc* lod_origin = nullptr; // where the lod distances are measured from
+};
+
 // Rebuilds in.plan from a validated view. Fails only when a host lod-test callback
 // answers something that is not a grass_lod_answer (the plan is then empty).
-grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& view);
+// A stereo frame plans once for both eyes: instances relative to the plan's origin (the lod
+// origin: the eyes' midpoint by default), culled against the union of the eyes' frusta, and
+// plan.eyes holds each eye's view-projection and position relative to that origin.
+grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& view,
+                              const ViewExtensions& extensions = ViewExtensions{});
 
 } // namespace grass

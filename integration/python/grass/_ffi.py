@@ -48,10 +48,12 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_QUALITY_DESC": 0x67720007, "GRASS_STRUCT_TYPE_GL_DESC": 0x67720101,
         "GRASS_STRUCT_TYPE_VK_DESC": 0x67720201, "GRASS_STRUCT_TYPE_VK_RECORD_DESC": 0x67720202,
         "GRASS_STRUCT_TYPE_VK_PREPARE_DESC": 0x67720203, "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC": 0x67720204,
+        "GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC": 0x67720205,
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
         "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_WIND_MAP_DESC": 0x6772000B,
         "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C, "GRASS_STRUCT_TYPE_PIPELINE_DESC": 0x6772000D,
         "GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC": 0x6772000E,
+        "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC": 0x6772000F, "GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC": 0x67720010,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -243,6 +245,15 @@ class grass_view_desc(Structure):
                 ("time", c_double), ("flags", c_uint32)]
 
 
+class grass_stereo_view_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("camera_position", c_double * 3),
+                ("view", c_float * 16), ("projection", c_float * 16)]
+
+
+class grass_lod_origin_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("position", c_double * 3)]
+
+
 _KINDS = DEFINES["GRASS_TIER_KIND_COUNT"]
 
 
@@ -329,6 +340,10 @@ class grass_vk_host_objects_desc(Structure):
                 ("pipeline_cache", c_uint64)]
 
 
+class grass_vk_multiview_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("view_mask", c_uint32)]
+
+
 class grass_vk_record_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("command_buffer", c_void_p)]
 
@@ -379,6 +394,8 @@ FUNCTIONS = {
     "grass_create_field": (grass_enum, [_ctx, _P(grass_field_desc), _P(grass_field_id)]),
     "grass_destroy_field": (grass_enum, [_ctx, grass_field_id]),
     "grass_default_view_desc": (grass_view_desc, []),
+    "grass_default_stereo_view_desc": (grass_stereo_view_desc, []),
+    "grass_default_lod_origin_desc": (grass_lod_origin_desc, []),
     "grass_begin_frame": (grass_enum, [_ctx, _P(grass_view_desc)]),
     "grass_end_frame": (grass_enum, [_ctx]),
     "grass_get_frame_stats": (grass_enum, [_ctx, _P(grass_frame_stats)]),
@@ -406,6 +423,7 @@ FUNCTIONS = {
     "grass_vk_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_vk_desc), _P(_ctx)]),
     "grass_default_vk_prepare_desc": (grass_vk_prepare_desc, []),
     "grass_default_vk_host_objects_desc": (grass_vk_host_objects_desc, []),
+    "grass_default_vk_multiview_desc": (grass_vk_multiview_desc, []),
     "grass_vk_prepare": (grass_enum, [_ctx, _P(grass_vk_prepare_desc)]),
     "grass_default_vk_record_desc": (grass_vk_record_desc, []),
     "grass_vk_record": (grass_enum, [_ctx, _P(grass_vk_record_desc)]),

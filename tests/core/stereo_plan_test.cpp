@@ -1,0 +1,155 @@
+// The plan of a stereo frame (grass_stereo_view_desc) and the lod origin
+// (grass_lod_origin_desc), without a GPU:
+// - a stereo frame culls against the union of the eyes' frusta: eyes looking apart plan
+//   more cells than either eye alone;
+// - its lod distances are measured from the eyes' midpoint, as a mono frame's from a
+//   grass_lod_origin_desc (the root node's distances, as a lod callback sees them);
+// - a bad extension chain or a bad extension is refused, naming it, and no frame begins.
+#include "core_fixture.hpp"
+#include "view_helpers.hpp"
+
+#include <cmath>
+#include <cstring>
+
+namespace {
+
+class StereoPlanTest : public CoreTest {
+protected:
+    // A 16 m x 16 m field of blades (cells of 1/4 m) drawn within 30 m, asking `test`.
+    void make_field(const grass_lod_test& test) {
+        patch = make_patch();
+        tier = grass_tier_desc{GRASS_TIER_GEOMETRY, 0};
+        lod = test;
+        grass_field_desc d = one_tier_field(patch, 64, &tier, &lod);
+        grass_field_id field{};
+        ASSERT_EQ(grass_create_field(ctx, &d, &field), GRASS_SUCCESS) << last_message();
+    }
+    grass_frame_stats frame(const grass_view_desc& view) {
+        grass_frame_stats stats{};
+        EXPECT_EQ(grass_begin_frame(ctx, &view), GRASS_SUCCESS) << last_message();
+        EXPECT_EQ(grass_get_frame_stats(ctx, &stats), GRASS_SUCCESS);
+        EXPECT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+        return stats;
+    }
+    static grass_stereo_view_desc second_eye(const grass_view_desc& eye) {
+        grass_stereo_view_desc s = grass_default_stereo_view_desc();
+        std::memcpy(s.camera_position, eye.camera_position, sizeof(s.camera_position));
+        std::memcpy(s.view, eye.view, sizeof(s.view));
+        std::memcpy(s.projection, eye.projection, sizeof(s.projection));
+        return s;
+    }
+    grass_patch_id patch{};
+    grass_tier_desc tier{};
+    grass_lod_test lod{};
+};
+
+grass_lod_test band(float end) {
+    grass_lod_test t{};
+    t.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+    t.end = end;
+    return t;
+}
+
+TEST_F(StereoPlanTest, AStereoFramePlansWhatEitherEyeSees) {
+    make_field(band(30.0f));
+    // Eyes in the middle of the field, looking apart along -x and +x with a narrow view.
+    const double left_eye[3] = {7.9, 1.5, 8.0}, right_eye[3] = {8.1, 1.5, 8.0};
+    const double left_look[3] = {0.0, 0.0, 8.0}, right_look[3] = {16.0, 0.0, 8.0};
+    const grass_view_desc left = test_view(left_eye, left_look, 30.0f), right = test_view(right_eye, right_look, 30.0f);
+    grass_view_desc stereo = left;
+    const grass_stereo_view_desc second = second_eye(right);
+    stereo.next = &second;
+    const uint64_t both = frame(stereo).cells_drawn, l = frame(left).cells_drawn, r = frame(right).cells_drawn;
+    EXPECT_GT(l, 100u);
+    EXPECT_GT(r, 100u);
+    // The frusta barely overlap: the stereo plan holds both eyes' cells.
+    EXPECT_GE(both + 16, l + r) << "left " << l << ", right " << r;
+    EXPECT_LE(both, l + r);
+}
+
+// The root node's distances, as the lod callback sees them (its first call of a frame).
+struct RootDistances {
+    bool seen = false;
+    double min = 0.0, max = 0.0;
+};
+
+grass_lod_answer record_root(void* user, const grass_lod_node* node) {
+    auto* root = static_cast<RootDistances*>(user);
+    if (!root->seen) {
+        root->seen = true;
+        root->min = node->distance_min;
+        root->max = node->distance_max;
+    }
+    return node->level == 0 ? GRASS_LOD_DRAW : GRASS_LOD_SPLIT;
+}
+
+TEST_F(StereoPlanTest, TheLodOfAStereoFrameIsMeasuredFromTheEyesMidpoint) {
+    RootDistances root;
+    grass_lod_test test{};
+    test.kind = GRASS_LOD_TEST_CALLBACK;
+    test.callback = &record_root;
+    test.user_data = &root;
+    make_field(test);
+    const double left_eye[3] = {-3.0, 2.0, -1.0}, right_eye[3] = {-1.0, 2.0, -1.0}, middle[3] = {-2.0, 2.0, -1.0};
+    const double look[3] = {8.0, 0.0, 8.0};
+    const grass_view_desc left = test_view(left_eye, look), right = test_view(right_eye, look);
+    const auto root_of = [&](const grass_view_desc& view) {
+        root = RootDistances{};
+        frame(view);
+        EXPECT_TRUE(root.seen);
+        return root;
+    };
+    grass_view_desc stereo = left;
+    const grass_stereo_view_desc second = second_eye(right);
+    stereo.next = &second;
+    const RootDistances from_stereo = root_of(stereo);
+    const RootDistances from_middle = root_of(test_view(middle, look));
+    const RootDistances from_left = root_of(left);
+    EXPECT_DOUBLE_EQ(from_stereo.min, from_middle.min);
+    EXPECT_DOUBLE_EQ(from_stereo.max, from_middle.max);
+    EXPECT_GT(std::fabs(from_left.min - from_middle.min), 0.1);
+    // A mono frame with a lod origin measures from it.
+    grass_lod_origin_desc origin = grass_default_lod_origin_desc();
+    std::memcpy(origin.position, middle, sizeof(origin.position));
+    grass_view_desc moved = left;
+    moved.next = &origin;
+    const RootDistances from_origin = root_of(moved);
+    EXPECT_DOUBLE_EQ(from_origin.min, from_middle.min);
+    EXPECT_DOUBLE_EQ(from_origin.max, from_middle.max);
+}
+
+TEST_F(StereoPlanTest, ABadExtensionIsRefusedByName) {
+    make_field(band(30.0f));
+    const double eye[3] = {8.0, 1.5, -1.0}, look[3] = {8.0, 0.0, 8.0};
+    grass_view_desc view = test_view(eye, look);
+    grass_stereo_view_desc second = second_eye(view);
+    grass_lod_origin_desc origin = grass_default_lod_origin_desc();
+
+    // A struct that is not a view extension.
+    grass_wind_desc wind = grass_default_wind_desc();
+    view.next = &wind;
+    EXPECT_EQ(grass_begin_frame(ctx, &view), GRASS_ERROR_WRONG_STRUCT_TYPE);
+    EXPECT_NE(last_message().find("view->next chain element 0"), std::string::npos) << last_message();
+    // Each extension once.
+    view.next = &origin;
+    origin.next = &second;
+    second.next = &origin;
+    EXPECT_EQ(grass_begin_frame(ctx, &view), GRASS_ERROR_WRONG_STRUCT_TYPE);
+    EXPECT_NE(last_message().find("view->next chain element 2"), std::string::npos) << last_message();
+    second.next = nullptr;
+    // Bad values, named.
+    origin.position[1] = 2e12;
+    EXPECT_EQ(grass_begin_frame(ctx, &view), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(last_message().find("grass_lod_origin_desc->position[1] is 2e+12"), std::string::npos) << last_message();
+    origin.position[1] = 0.0;
+    for (float& v : second.view) v = 0.0f;
+    EXPECT_EQ(grass_begin_frame(ctx, &view), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(last_message().find("grass_stereo_view_desc->view has a singular rotation"), std::string::npos)
+        << last_message();
+    // No frame began: ending one is refused, and a good frame begins.
+    EXPECT_EQ(grass_end_frame(ctx), GRASS_ERROR_INVALID_STATE);
+    std::memcpy(second.view, view.view, sizeof(second.view));
+    EXPECT_GT(frame(view).cells_drawn, 0u);
+}
+
+} // namespace
