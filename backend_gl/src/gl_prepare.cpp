@@ -14,7 +14,7 @@ grass_result GlBackend::make_interaction_program(const char* function) {
 }
 
 grass_result GlBackend::prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
-                                         bool interaction_pass) {
+                                         bool interaction_pass, bool /*no_depth_test: one program draws both ways*/) {
     for (uint32_t i = 0; i < count; ++i) {
         GLuint unused = 0;
         const grass_result result =

@@ -122,9 +122,10 @@ bool BladePipeline::create(const PipelineTarget& target, VkFailure* failure, con
     return true;
 }
 
-bool BladePipeline::create_variant(const ShaderVariant& variant, VkFailure* failure, const char** what) {
+bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure,
+                                   const char** what) {
     if (variant.features >= kFeatureMaskCount) return false;
-    if (has_variant(variant)) return true;
+    if (has_variant(variant, depth_test)) return true;
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
     // A multiview target (stereo) runs the GRASS_MULTIVIEW modules for every pipeline.
     SpirvVariant modules;
@@ -135,8 +136,8 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, VkFailure* fail
                                 : variant.program == kShaderVolume ? SlicePipelines::volume_shape(modules)
                                 : variant.program == kShaderImage  ? SlicePipelines::image_shape(modules)
                                                                    : DebugViewPipeline::shape(modules);
-    return create_pipeline_pair(fn_, device_, target_, layout_, shape, variant.features,
-                                pipelines_[variant.features][variant.program], failure, what);
+    return create_pipeline(fn_, device_, target_, layout_, shape, variant.features, depth_test,
+                           &pipelines_[variant.features][variant.program][depth_test ? 0 : 1], failure, what);
 }
 
 bool BladePipeline::create_variants(uint32_t features, VkFailure* failure, const char** what) {
@@ -145,14 +146,14 @@ bool BladePipeline::create_variants(uint32_t features, VkFailure* failure, const
                                       {kShaderImage, features},
                                       {kShaderDebugBoxes, features & kDebugBoxFeatures}};
     for (const ShaderVariant& v : variants) {
-        if (!create_variant(v, failure, what)) return false;
+        if (!create_variant(v, true, failure, what)) return false;
     }
     return true;
 }
 
 void BladePipeline::destroy_variants(uint32_t features) {
-    for (auto& pair : pipelines_[features]) {
-        for (VkPipeline& p : pair) {
+    for (auto& modes : pipelines_[features]) {
+        for (VkPipeline& p : modes) {
             if (p) fn_.vkDestroyPipeline(device_, p, fn_.callbacks());
             p = VK_NULL_HANDLE;
         }
@@ -258,10 +259,10 @@ bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const 
     return true;
 }
 
-bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
-                          const PipelineShape& shape, uint32_t features, VkPipeline out_pipelines[2],
-                          VkFailure* failure, const char** what) {
-    out_pipelines[0] = out_pipelines[1] = VK_NULL_HANDLE;
+bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
+                     const PipelineShape& shape, uint32_t features, bool depth_test, VkPipeline* out_pipeline,
+                     VkFailure* failure, const char** what) {
+    *out_pipeline = VK_NULL_HANDLE;
     VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     const uint32_t* code[2] = {shape.vertex_code, shape.fragment_code};
     const size_t code_size[2] = {shape.vertex_code_size, shape.fragment_code_size};
@@ -328,13 +329,10 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
         shape.alpha_to_coverage && target.samples != VK_SAMPLE_COUNT_1_BIT ? VK_TRUE : VK_FALSE;
 
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    depth.depthTestEnable = VK_TRUE;
-    depth.depthWriteEnable = VK_TRUE;
+    depth.depthTestEnable = depth_test ? VK_TRUE : VK_FALSE;
+    depth.depthWriteEnable = depth_test ? VK_TRUE : VK_FALSE;
     depth.depthCompareOp = target.depth_greater ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
     depth.maxDepthBounds = 1.0f;
-    VkPipelineDepthStencilStateCreateInfo depth_off = depth;
-    depth_off.depthTestEnable = VK_FALSE;
-    depth_off.depthWriteEnable = VK_FALSE;
 
     VkPipelineColorBlendAttachmentState attachment{};
     attachment.colorWriteMask =
@@ -357,37 +355,29 @@ bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTa
     rendering.depthAttachmentFormat = target.depth_format;
     if (format_has_stencil(target.depth_format)) rendering.stencilAttachmentFormat = target.depth_format;
 
-    VkGraphicsPipelineCreateInfo infos[2] = {{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO},
-                                             {VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO}};
-    for (int i = 0; i < 2; ++i) {
-        VkGraphicsPipelineCreateInfo& info = infos[i];
-        info.pNext = target.render_pass ? nullptr : &rendering;
-        info.stageCount = 2;
-        info.pStages = stages;
-        info.pVertexInputState = &vertex_input;
-        info.pInputAssemblyState = &input_assembly;
-        info.pViewportState = &viewport;
-        info.pRasterizationState = &raster;
-        info.pMultisampleState = &multisample;
-        info.pDepthStencilState = i == 0 ? &depth : &depth_off;
-        info.pColorBlendState = &blend;
-        info.pDynamicState = &dynamic;
-        info.layout = layout;
-        info.renderPass = target.render_pass;
-        info.subpass = target.subpass;
-    }
+    VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+    info.pNext = target.render_pass ? nullptr : &rendering;
+    info.stageCount = 2;
+    info.pStages = stages;
+    info.pVertexInputState = &vertex_input;
+    info.pInputAssemblyState = &input_assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &raster;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = layout;
+    info.renderPass = target.render_pass;
+    info.subpass = target.subpass;
     if (ok) {
         *what = shape.name;
-        ok = vk_ok(fn.vkCreateGraphicsPipelines(device, target.cache, 2, infos, fn.callbacks(), out_pipelines),
+        ok = vk_ok(fn.vkCreateGraphicsPipelines(device, target.cache, 1, &info, fn.callbacks(), out_pipeline),
                    "vkCreateGraphicsPipelines", failure);
-        if (ok) {
-            for (int i = 0; i < 2; ++i) name_object(fn, device, VK_OBJECT_TYPE_PIPELINE, out_pipelines[i], shape.name);
-        }
+        if (ok) name_object(fn, device, VK_OBJECT_TYPE_PIPELINE, *out_pipeline, shape.name);
         if (!ok) {
-            for (int i = 0; i < 2; ++i) {
-                if (out_pipelines[i]) fn.vkDestroyPipeline(device, out_pipelines[i], fn.callbacks());
-                out_pipelines[i] = VK_NULL_HANDLE;
-            }
+            if (*out_pipeline) fn.vkDestroyPipeline(device, *out_pipeline, fn.callbacks());
+            *out_pipeline = VK_NULL_HANDLE;
         }
     }
     for (VkShaderModule m : modules) {

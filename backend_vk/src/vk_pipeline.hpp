@@ -2,8 +2,9 @@
 // Field uniform blocks as dynamic uniform buffers, the design maps with an immutable linear
 // clamp sampler, the baked slices of the volume and image tiers with immutable trilinear /
 // nearest samplers), the pipeline layout, and the graphics pipelines of each kind (blades,
-// volume, image, debug view) per map feature mask, each with and without the depth test;
-// and the state every pipeline shares (create_pipeline_pair).
+// volume, image, debug view) per map feature mask, each with the depth test and, when
+// something will draw with it (GRASS_VIEW_FLAG_NO_DEPTH_TEST), without; and the state every
+// pipeline shares (create_pipeline).
 #pragma once
 
 #include "foundation/shader_interface.hpp"
@@ -108,12 +109,13 @@ bool create_set_and_pipeline_layout(const Functions& fn, VkDevice device, const 
                                     const char* layout_name, VkDescriptorSetLayout* set_layout,
                                     VkPipelineLayout* layout, VkFailure* failure, const char** what);
 
-// Index 0 of out_pipelines depth-tests and writes depth (the target's compare op), index 1
-// does neither; both vertex and fragment stages are specialised with `features` (constant
-// id 0, blade_interface.glsl). On failure both are VK_NULL_HANDLE.
-bool create_pipeline_pair(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
-                          const PipelineShape& shape, uint32_t features, VkPipeline out_pipelines[2],
-                          VkFailure* failure, const char** what);
+// One graphics pipeline of `shape`: with `depth_test` it depth-tests and writes depth (the
+// target's compare op), without it does neither (GRASS_VIEW_FLAG_NO_DEPTH_TEST); both vertex
+// and fragment stages are specialised with `features` (constant id 0, blade_interface.glsl).
+// Its shader modules live only as long as the call. On failure *out_pipeline is VK_NULL_HANDLE.
+bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget& target, VkPipelineLayout layout,
+                     const PipelineShape& shape, uint32_t features, bool depth_test, VkPipeline* out_pipeline,
+                     VkFailure* failure, const char** what);
 
 class BladePipeline {
 public:
@@ -122,23 +124,26 @@ public:
     BladePipeline(const BladePipeline&) = delete;
     BladePipeline& operator=(const BladePipeline&) = delete;
 
-    // The layouts and the pipelines of every kind without maps (features 0). *what names
-    // the object being made when it fails.
+    // The layouts and the depth-tested pipelines of every kind without maps (features 0).
+    // *what names the object being made when it fails.
     bool create(const PipelineTarget& target, VkFailure* failure, const char** what);
     void destroy();
 
-    // Makes the pipeline pair of `variant` (foundation/shader_variants.hpp) unless it
-    // exists. On failure neither exists.
-    bool create_variant(const ShaderVariant& variant, VkFailure* failure, const char** what);
-    // The pairs of every kind for `features` (a field's maps: upload_field).
+    // Makes the pipeline of `variant` (foundation/shader_variants.hpp) with the depth test
+    // or without it (`depth_test` false: GRASS_VIEW_FLAG_NO_DEPTH_TEST) unless it exists.
+    // Only grass_prepare_pipelines with the debug views and a frame that turns the depth
+    // test off ask for the latter. On failure it does not exist.
+    bool create_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure, const char** what);
+    // The depth-tested pipelines of every kind for `features` (a field's maps: upload_field).
     bool create_variants(uint32_t features, VkFailure* failure, const char** what);
-    bool has_variant(const ShaderVariant& v) const {
-        return v.features < kFeatureMaskCount && pipelines_[v.features][v.program][0] != VK_NULL_HANDLE;
+    bool has_variant(const ShaderVariant& v, bool depth_test) const {
+        return v.features < kFeatureMaskCount &&
+               pipelines_[v.features][v.program][depth_test ? 0 : 1] != VK_NULL_HANDLE;
     }
 
     VkDescriptorSetLayout set_layout() const { return set_layout_; }
     VkPipelineLayout layout() const { return layout_; }
-    // The pipeline of `kind` for `features` (has_variant(features)).
+    // The pipeline of `kind` for `features` (has_variant(features, depth_test)).
     VkPipeline pipeline(PipelineKind kind, uint32_t features, bool depth_test) const {
         return pipelines_[features][kind][depth_test ? 0 : 1];
     }
@@ -155,7 +160,7 @@ private:
     VkSampler slice_nearest_ = VK_NULL_HANDLE; // slice thresholds: never blended
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    // [features][kind][0 = depth tested, 1 = depth off]
+    // [features][kind][0 = depth tested, 1 = depth off]; VK_NULL_HANDLE: not made yet
     VkPipeline pipelines_[kFeatureMaskCount][kPipelineKindCount][2] = {};
 };
 

@@ -48,11 +48,15 @@ void VkBackend::destroy_pipeline_cache() {
 }
 
 grass_result VkBackend::prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
-                                         bool interaction_pass) {
+                                         bool interaction_pass, bool no_depth_test) {
     VkFailure failure;
     const char* what = "";
     for (uint32_t i = 0; i < count; ++i) {
-        if (!pipeline_.create_variant(variants[i], &failure, &what)) return fail(function, what, failure);
+        if (!pipeline_.create_variant(variants[i], true, &failure, &what)) return fail(function, what, failure);
+        // GRASS_VIEW_FLAG_NO_DEPTH_TEST draws with pipelines of their own, made only when the
+        // host declared the debug views (or by the first frame that sets the flag: record).
+        if (no_depth_test && !pipeline_.create_variant(variants[i], false, &failure, &what))
+            return fail(function, what, failure);
     }
     if (interaction_pass && !interaction_.ensure_pipeline(&failure, &what)) return fail(function, what, failure);
     return GRASS_SUCCESS;

@@ -218,6 +218,7 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
 grass_result VkBackend::record(VkCommandBuffer cmd) {
     const FramePlan& plan = ctx_->plan;
     const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
+    const bool depth_test = (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) == 0;
     // Refuse before recording anything, so that the command buffer is left untouched. The
     // plan itself was checked by grass_begin_frame (check_plan in context/invariants.hpp).
     uint32_t draw_count = 0, slice_draws = 0, own_sets = 0;
@@ -232,11 +233,12 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
                               d.field_slot, problem);
         }
         // upload_field made the variants of the field's maps, grass_prepare_pipelines those of
-        // the features the host declared; one the plan asks for besides is made here, before
-        // anything is recorded.
+        // the features the host declared (without the depth test too when it declared the
+        // debug views); one the plan asks for besides, or its depth-off pipeline in a frame
+        // with GRASS_VIEW_FLAG_NO_DEPTH_TEST, is made here, before anything is recorded.
         VkFailure failure;
         const char* what = "";
-        if (!pipeline_.create_variant(draw_variant(d, plan.flags), &failure, &what))
+        if (!pipeline_.create_variant(draw_variant(d, plan.flags), depth_test, &failure, &what))
             return fail("grass_vk_record", what, failure);
         draw_count += 1;
         if (!debug_view && d.kind != GRASS_TIER_GEOMETRY) slice_draws += 1;
@@ -269,7 +271,6 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
     scissor.offset = {static_cast<int32_t>(x0), static_cast<int32_t>(y0)};
     scissor.extent = {static_cast<uint32_t>(x1 > x0 ? x1 - x0 : 0), static_cast<uint32_t>(y1 > y0 ? y1 - y0 : 0)};
 
-    const bool depth_test = (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) == 0;
     const LabelScope draw_label(fn_, cmd, "grass draw"); // around everything recorded below
     fn_.vkCmdSetViewport(cmd, 0, 1, &viewport);
     fn_.vkCmdSetScissor(cmd, 0, 1, &scissor);

@@ -6,6 +6,9 @@
 //   colliders and their trail, per-blade culling, each debug view and the depth test off,
 //   on a field made before and one made after the call, create no pipeline or program;
 //   without the call the windy frame does create one (the hook sees frames).
+// - Vulkan: a context and a plain field make the depth-tested pipeline of each variant
+//   only; GRASS_VIEW_FLAG_NO_DEPTH_TEST's depth-off pipelines come with a preparation that
+//   declares the debug views, or else with the first frame that sets the flag.
 // - Vulkan: every pipeline goes through a pipeline cache: grass's own, or the host's when
 //   grass_vk_host_objects_desc.pipeline_cache gives one (grass's blob calls then refuse).
 // - The blob of grass_get_pipeline_cache_data seeds a new context's cache (Vulkan: the
@@ -207,6 +210,11 @@ void frames_of_every_feature(Scene& s, grass_field_id culled_field, bool culling
     before = made(s.backend);
     render(s, 0.6);
     expect_none_made("everything off again", before);
+    // Still grass without the depth test: the variants made at context creation and field
+    // upload, whose depth-off pipelines (Vulkan) only a preparation with the debug views made.
+    before = made(s.backend);
+    render(s, 0.7, GRASS_VIEW_FLAG_NO_DEPTH_TEST);
+    expect_none_made("the depth test off on still grass", before);
 }
 
 class PreparePipelines : public ::testing::TestWithParam<grass_backend> {};
@@ -283,6 +291,56 @@ TEST_P(PreparePipelines, BadInputIsRefusedNamingTheArgument) {
     EXPECT_EQ(grass_prepare_pipelines(s.ctx, &d), GRASS_ERROR_INVALID_STATE);
     EXPECT_EQ(grass_get_pipeline_cache_data(s.ctx, nullptr, &size), GRASS_ERROR_INVALID_STATE);
     EXPECT_EQ(grass_end_frame(s.ctx), GRASS_SUCCESS);
+}
+
+// ---- Vulkan: the depth-off pipelines --------------------------------------------------------
+
+// A context makes the variants of still grass without maps (feature mask 0): one program per
+// tier kind and the debug boxes'. A field without design maps and with the default tiers
+// needs no other. Each variant gets its depth-tested pipeline, not the depth-off one that
+// only GRASS_VIEW_FLAG_NO_DEPTH_TEST draws with (grass used to make both: twice this count).
+TEST(VkDepthPipelines, AContextWithAPlainFieldMakesOnlyTheDepthTestedPipelines) {
+    const int64_t before = vi::live().pipelines_made;
+    Scene s;
+    make_scene(&s, GRASS_BACKEND_VULKAN);
+    ASSERT_FALSE(HasFatalFailure());
+    const int64_t variants = GRASS_TIER_KIND_COUNT + 1;
+    EXPECT_EQ(vi::live().pipelines_made - before, variants)
+        << "the context and its plain field should make one pipeline per program (3 tier kinds and the debug "
+           "boxes): the depth-tested one";
+    // Drawn with the depth test, the field needs nothing more.
+    const int64_t frame = vi::live().pipelines_made;
+    render(s, 0.0);
+    EXPECT_EQ(vi::live().pipelines_made, frame) << "the frame of still grass made a pipeline";
+}
+
+// After a preparation without the debug views, the first frame that turns the depth test off
+// makes the depth-off pipeline of each variant it draws (one: the blades of still grass on a
+// field of one geometry tier), before recording anything; a second such frame makes none,
+// and neither does a frame with the depth test on. The picture of such a frame is checked by
+// DepthTest.ABoxDrawnByTheHostInFrontOfTheGrassHidesIt/vk.
+TEST(VkDepthPipelines, ANoDepthTestFrameAfterAPlainPreparationMakesItsDepthOffPipelines) {
+    Scene s;
+    make_scene(&s, GRASS_BACKEND_VULKAN, false, true);
+    ASSERT_FALSE(HasFatalFailure());
+    grass_pipeline_desc pipelines = grass_default_pipeline_desc();
+    pipelines.features = GRASS_PIPELINE_FEATURE_WIND;
+    ASSERT_EQ(grass_prepare_pipelines(s.ctx, &pipelines), GRASS_SUCCESS) << s.log;
+    render(s, 0.0);
+    int64_t before = vi::live().pipelines_made;
+    render(s, 0.1, GRASS_VIEW_FLAG_NO_DEPTH_TEST);
+    EXPECT_EQ(vi::live().pipelines_made - before, 1) << "the frame without the depth test: its blades' pipeline";
+    before = vi::live().pipelines_made;
+    render(s, 0.2, GRASS_VIEW_FLAG_NO_DEPTH_TEST);
+    render(s, 0.3);
+    EXPECT_EQ(vi::live().pipelines_made, before) << "the depth-off pipeline was made again, or a depth-tested one";
+    // Wind, prepared with the depth test: its depth-off pipeline too comes with its frame.
+    turn_on_wind(s.ctx);
+    before = vi::live().pipelines_made;
+    render(s, 0.4);
+    EXPECT_EQ(vi::live().pipelines_made, before) << "the prepared windy frame made a pipeline";
+    render(s, 0.5, GRASS_VIEW_FLAG_NO_DEPTH_TEST);
+    EXPECT_EQ(vi::live().pipelines_made - before, 1) << "the windy frame without the depth test";
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, PreparePipelines, ::testing::Values(GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN),

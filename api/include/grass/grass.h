@@ -809,7 +809,10 @@ GRASS_API grass_result grass_destroy_field(grass_context* context, grass_field_i
 
 typedef enum grass_view_flags {
     GRASS_VIEW_FLAG_NONE = 0,
-    /* Debugging: draw without the depth test (grass is drawn over the host's scene). */
+    /* Debugging: draw without the depth test (grass is drawn over the host's scene). Vulkan
+     * draws it with pipelines of their own: grass_prepare_pipelines compiles them with
+     * GRASS_PIPELINE_FEATURE_DEBUG_VIEWS; without that, the first frame that sets this flag
+     * compiles those it draws with. GL toggles the test: nothing to compile. */
     GRASS_VIEW_FLAG_NO_DEPTH_TEST = 1u << 0,
     /* Debugging: tint each tier's grass: red geometry, yellow volume, blue image
      * (boulanger2006 figure 12, lemme2012 figure 7.1); the transition zones show both.
@@ -1228,7 +1231,9 @@ typedef enum grass_pipeline_feature_bits {
     GRASS_PIPELINE_FEATURE_WIND_MAP = 0x2,      /* a field's wind map (grass_set_field_wind_map); brings WIND */
     GRASS_PIPELINE_FEATURE_INTERACTION = 0x4,   /* colliders or a trail (grass_set_interaction) */
     GRASS_PIPELINE_FEATURE_BLADE_CULLING = 0x8, /* per-blade culling (grass_set_blade_culling) */
-    GRASS_PIPELINE_FEATURE_DEBUG_VIEWS = 0x10,  /* GRASS_VIEW_FLAG_DEBUG_TIERS, _THRESHOLDS or _CELLS */
+    /* GRASS_VIEW_FLAG_DEBUG_TIERS, _THRESHOLDS or _CELLS, and NO_DEPTH_TEST: on Vulkan every
+     * variant prepared is also compiled without the depth test (twice the pipelines) */
+    GRASS_PIPELINE_FEATURE_DEBUG_VIEWS = 0x10,
     GRASS_PIPELINE_FEATURE_ALL = 0x1F
 } grass_pipeline_feature_bits;
 

@@ -70,9 +70,12 @@ public:
 
     // Pipelines before the first frame (grass_prepare_pipelines): makes every variant of
     // `variants` not made yet, and the interaction pass's when `interaction_pass`; outside
-    // a frame. `function` names the public call for messages.
+    // a frame. With `no_depth_test` (declares_no_depth_test) a backend whose pipelines fix
+    // the depth test (Vulkan) also makes each variant's pipeline for
+    // GRASS_VIEW_FLAG_NO_DEPTH_TEST; GL toggles the test and ignores it. `function` names the
+    // public call for messages.
     virtual grass_result prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
-                                          bool interaction_pass) = 0;
+                                          bool interaction_pass, bool no_depth_test) = 0;
     // Seeds the backend's own cache with a blob (grass_pipeline_desc.cache_data, size > 0):
     // one that does not fit is ignored with a GRASS_MSG_PIPELINE_CACHE warning.
     virtual grass_result seed_pipeline_cache(const char* function, const void* data, uint64_t size) = 0;
@@ -132,7 +135,9 @@ public:
     grass_result upload_field(uint32_t, const FieldMaps&) override { return GRASS_SUCCESS; }
     void release_field(uint32_t) override {}
     void set_field_wind_map(uint32_t, uint32_t) override {}
-    grass_result prepare_variants(const char*, const ShaderVariant*, uint32_t, bool) override { return GRASS_SUCCESS; }
+    grass_result prepare_variants(const char*, const ShaderVariant*, uint32_t, bool, bool) override {
+        return GRASS_SUCCESS;
+    }
     grass_result seed_pipeline_cache(const char*, const void*, uint64_t) override { return GRASS_SUCCESS; }
     grass_result pipeline_cache_data(const char*, void*, uint64_t* size) override { // no cache: 0 bytes
         *size = 0;

@@ -196,7 +196,8 @@ grass_result prepare_field_variants(grass_context* ctx, const char* function, ui
     for (uint32_t t = 0; t < field->lod.tier_count; ++t) tier_kinds |= 1u << field->lod.tiers[t].kind;
     ShaderVariant variants[kMaxFieldVariants];
     const uint32_t count = field_variants(ctx->prepared_features, field->maps.features, tier_kinds, variants);
-    return ctx->backend->prepare_variants(function, variants, count, false);
+    return ctx->backend->prepare_variants(function, variants, count, /*interaction_pass=*/false,
+                                          declares_no_depth_test(ctx->prepared_features));
 }
 
 namespace {

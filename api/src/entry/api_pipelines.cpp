@@ -53,7 +53,7 @@ GRASS_API grass_result grass_prepare_pipelines(grass_context* context, const gra
         // created later gets every variant declared so far.
         const uint32_t before = context->prepared_features;
         const bool interaction = (desc->features & GRASS_PIPELINE_FEATURE_INTERACTION) != 0;
-        if (interaction) GRASS_TRY(context->backend->prepare_variants(fn, nullptr, 0, true));
+        if (interaction) GRASS_TRY(context->backend->prepare_variants(fn, nullptr, 0, true, false));
         context->prepared_features = before | grass::declared_feature_bits(desc->features);
         for (uint32_t slot = 0; slot < context->fields.capacity(); ++slot) {
             const grass_result r = grass::prepare_field_variants(context, fn, slot);

@@ -37,6 +37,13 @@ ShaderVariant draw_variant(const TierDraw& draw, uint32_t view_flags);
 // The feature bits (kFeatureWind ...) a grass_pipeline_desc.features declares.
 uint32_t declared_feature_bits(uint32_t pipeline_features);
 
+// Whether the host that declared `declared` (declared_feature_bits) may draw frames with
+// GRASS_VIEW_FLAG_NO_DEPTH_TEST: a debugging flag, declared with the debug views
+// (GRASS_PIPELINE_FEATURE_DEBUG_VIEWS). A backend whose pipelines fix the depth test (Vulkan)
+// then makes each prepared variant without it too; otherwise the first frame that sets the
+// flag does.
+inline bool declares_no_depth_test(uint32_t declared) { return (declared & kFeatureDebugView) != 0; }
+
 // Every variant the draws of a field whose maps give `map_features` and whose tiers are of
 // the kinds in `tier_kinds` (bit = 1 << grass_tier_kind) may run while the host uses at most
 // `declared` (declared_feature_bits): each subset of the declared bits that a frame can plan
