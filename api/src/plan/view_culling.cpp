@@ -71,6 +71,13 @@ ViewCulling::ViewCulling(const double m[16], grass_depth_mode depth_mode) {
 
     double inv[16];
     if (!invert4(m, inv)) return; // degenerate projection: only the plane test
+    // An orthographic view (clip w does not depend on the position) is a box: no cone, whose
+    // apex at the camera would cut off the box's sides near it, but a sphere through the
+    // box's 8 corners.
+    if (m[3] == 0.0 && m[7] == 0.0 && m[11] == 0.0) {
+        orthographic_box(inv, depth_mode);
+        return;
+    }
     // Directions through the centre and the corners, from points inside the depth range of
     // both conventions; the far plane at depth 1 (or 0 for reversed depth).
     double centre[3], corner[4][3];
@@ -123,6 +130,35 @@ ViewCulling::ViewCulling(const double m[16], grass_depth_mode depth_mode) {
         const double d[3] = {q[0] - sphere_center_[0], q[1] - sphere_center_[1], q[2] - sphere_center_[2]};
         r2 = std::max(r2, dot(d, d));
     }
+    sphere_radius_ = std::sqrt(r2) * (1.0 + 1e-9);
+    has_sphere_ = std::isfinite(sphere_radius_);
+}
+
+void ViewCulling::orthographic_box(const double inv[16], grass_depth_mode depth_mode) {
+    // Corners at NDC z -1 and 1: the whole box in GL's depth range, and more in 0..1 (z -1
+    // lies behind the near plane, or beyond the far plane for reversed depth): conservative
+    // in every convention. The axis runs from the near face to the far face.
+    double corner[8][3], mean[3] = {0, 0, 0}, near_centre[3] = {0, 0, 0}, far_centre[3] = {0, 0, 0};
+    for (int k = 0; k < 8; ++k) {
+        const double x = (k & 1) ? 1.0 : -1.0, y = (k & 2) ? 1.0 : -1.0, z = (k & 4) ? 1.0 : -1.0;
+        if (!unproject(inv, x, y, z, corner[k])) return;
+        for (int c = 0; c < 3; ++c) {
+            mean[c] += corner[k][c] / 8.0;
+            ((k & 4) ? far_centre : near_centre)[c] += corner[k][c] / 4.0;
+        }
+    }
+    double d[3];
+    for (int c = 0; c < 3; ++c) d[c] = (far_centre[c] - near_centre[c]) * (depth_mode == GRASS_DEPTH_GREATER ? -1 : 1);
+    const double len = std::sqrt(dot(d, d));
+    if (len > 0.0 && std::isfinite(len)) {
+        for (int c = 0; c < 3; ++c) axis_[c] = d[c] / len;
+    }
+    double r2 = 0.0;
+    for (const auto& q : corner) {
+        const double e[3] = {q[0] - mean[0], q[1] - mean[1], q[2] - mean[2]};
+        r2 = std::max(r2, dot(e, e));
+    }
+    for (int c = 0; c < 3; ++c) sphere_center_[c] = mean[c];
     sphere_radius_ = std::sqrt(r2) * (1.0 + 1e-9);
     has_sphere_ = std::isfinite(sphere_radius_);
 }

@@ -2,7 +2,9 @@
 // the camera, in double.
 //   - Fast reject: the frustum is approximated by a sphere (centre half-way to the far
 //     plane, through the far corners) and a cone (apex at the camera, through the corners);
-//     a node's bounding sphere must meet both (sphere-cone test after Eberly 2002).
+//     a node's bounding sphere must meet both (sphere-cone test after Eberly 2002). An
+//     orthographic view's box (a shadow cascade's, a top-down map's) gets a sphere through
+//     its 8 corners and no cone.
 //   - Exact test before a node is drawn: its box against the six clip planes.
 #pragma once
 
@@ -23,6 +25,8 @@ public:
     const double* axis() const { return axis_; }
 
 private:
+    void orthographic_box(const double inverse_view_projection[16], grass_depth_mode depth_mode);
+
     double planes_[6][4];
     double axis_[3] = {0, 0, -1};
     bool has_cone_ = false;
