@@ -196,18 +196,22 @@ VKAPI_ATTR VkResult VKAPI_CALL wrap_vkAllocateDescriptorSets(VkDevice d, const V
     return real_vkAllocateDescriptorSets(d, info, out);
 }
 
+// Counts `n` pipelines made through `cache` (graphics and compute alike).
+void count_pipelines(VkResult r, VkPipelineCache cache, uint32_t n, VkPipeline* out) {
+    if (r != VK_SUCCESS) return;
+    counts.pipelines += n;
+    counts.pipelines_made += n;
+    if (cache == VK_NULL_HANDLE) counts.pipelines_without_cache += n;
+    counts.last_pipeline_cache = reinterpret_cast<uint64_t>(cache);
+    record_made(VK_OBJECT_TYPE_PIPELINE, out, n);
+}
+
 VKAPI_ATTR VkResult VKAPI_CALL wrap_vkCreateGraphicsPipelines(VkDevice d, VkPipelineCache cache, uint32_t n,
                                                               const VkGraphicsPipelineCreateInfo* infos,
                                                               const VkAllocationCallbacks* a, VkPipeline* out) {
     if (fails("vkCreateGraphicsPipelines")) return failure.result;
     const VkResult r = real_vkCreateGraphicsPipelines(d, cache, n, infos, a, out);
-    if (r == VK_SUCCESS) {
-        counts.pipelines += n;
-        counts.pipelines_made += n;
-        if (cache == VK_NULL_HANDLE) counts.pipelines_without_cache += n;
-        counts.last_pipeline_cache = reinterpret_cast<uint64_t>(cache);
-        record_made(VK_OBJECT_TYPE_PIPELINE, out, n);
-    }
+    count_pipelines(r, cache, n, out);
     return r;
 }
 
@@ -216,13 +220,7 @@ VKAPI_ATTR VkResult VKAPI_CALL wrap_vkCreateComputePipelines(VkDevice d, VkPipel
                                                              const VkAllocationCallbacks* a, VkPipeline* out) {
     if (fails("vkCreateComputePipelines")) return failure.result;
     const VkResult r = real_vkCreateComputePipelines(d, cache, n, infos, a, out);
-    if (r == VK_SUCCESS) {
-        counts.pipelines += n;
-        counts.pipelines_made += n;
-        if (cache == VK_NULL_HANDLE) counts.pipelines_without_cache += n;
-        counts.last_pipeline_cache = reinterpret_cast<uint64_t>(cache);
-        record_made(VK_OBJECT_TYPE_PIPELINE, out, n);
-    }
+    count_pipelines(r, cache, n, out);
     return r;
 }
 
