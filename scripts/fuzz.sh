@@ -13,6 +13,8 @@
 #       # the long runs: a million executions or an hour of the fuzzer's CPU time, whichever
 #       # comes first (wall time means little on a shared machine); FUZZ_KEEP keeps the new
 #       # inputs in build-fuzz/long/<target>, so that a later run goes on from them
+#   FUZZ_PARALLEL=2 bash scripts/fuzz.sh  # two targets at a time (a fuzzer runs on one core;
+#       # the default is 1, one after the other)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-20}
@@ -65,7 +67,9 @@ run_fuzzer() {
   return $rc
 }
 
-for t in "${targets[@]}"; do
+# Fuzzes target $1; prints its report and returns 1 when it found a failure.
+fuzz_target() {
+  local t=$1 scratch findings max_len label args status=0
   if [ -n "${FUZZ_KEEP:-}" ]; then
     scratch=$build/long/$t
     mkdir -p "$scratch"
@@ -99,5 +103,26 @@ for t in "${targets[@]}"; do
   grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)" \
     "$build/findings/$t.log" || true
   [ -n "${FUZZ_KEEP:-}" ] || rm -rf "$scratch"
+  return $status
+}
+
+parallel=${FUZZ_PARALLEL:-1}
+reports=$(mktemp -d)
+pids=()
+names=()
+# Waits for the oldest running target and prints its report.
+wait_oldest() {
+  wait "${pids[0]}" || status=1
+  cat "$reports/${names[0]}"
+  pids=("${pids[@]:1}")
+  names=("${names[@]:1}")
+}
+for t in "${targets[@]}"; do
+  (( ${#pids[@]} >= parallel )) && wait_oldest
+  fuzz_target "$t" >"$reports/$t" 2>&1 &
+  pids+=($!)
+  names+=("$t")
 done
+while (( ${#pids[@]} > 0 )); do wait_oldest; done
+rm -rf "$reports"
 exit $status

@@ -96,7 +96,9 @@ done
 # (clang, ASan + UBSan; with the GL and Vulkan backends, which fuzz_gpu_sequence draws with).
 # The long runs: docs/testing.md. One input may take 120 s: a hang still fails, while an input
 # of many draws on llvmpipe under ASan took 31 s alone (fuzz_gpu_sequence, seed 1), over the
-# 30 s default, and failed the run on a slow frame, not on a bug.
+# 30 s default, and failed the run on a slow frame, not on a bug. A fuzzer runs on one core:
+# as many targets at a time as there are cores (each then runs 70-85% of the inputs it runs
+# alone on this machine, in half the stage's time).
 stage "fuzz: build and runs"
-FUZZ_SEED=1 FUZZ_TIMEOUT=120 FUZZ_BUILD_DIR=build-fuzz-short bash scripts/fuzz.sh 20
+FUZZ_SEED=1 FUZZ_TIMEOUT=120 FUZZ_BUILD_DIR=build-fuzz-short FUZZ_PARALLEL="$jobs" bash scripts/fuzz.sh 20
 summary
