@@ -88,7 +88,7 @@ grass_result check_views(grass_context* ctx, const char* fn, const ViewExtension
     if (ctx->backend->kind() == GRASS_BACKEND_GL) {
         return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
                          "%s: view->next chains a grass_stereo_view_desc, but the GL backend has no multiview path "
-                         "(GL_OVR_multiview is not implemented; Mesa's llvmpipe does not expose it): draw the eyes "
+                         "(GL_OVR_multiview, which Mesa's llvmpipe does not expose): draw the eyes "
                          "as two mono frames",
                          fn);
     }
