@@ -144,6 +144,14 @@ public:
     std::function<void()> before_grass;
     std::function<void()> after_grass;
 
+    // Tests of frames and views (FrameViewsTest): when set, render() calls begin_grass_frame
+    // in place of grass_begin_frame(view), and draw_grass in place of grass_gl_render /
+    // grass_vk_record (Vulkan: inside the pass, with the command buffer; GL: nullptr);
+    // grass_vk_prepare and grass_end_frame as usual. `view` still draws the host's ground and
+    // meshes.
+    std::function<grass_result(grass_context*)> begin_grass_frame;
+    std::function<grass_result(grass_context*, void* command_buffer)> draw_grass;
+
 protected:
     explicit Host(const TargetDesc& target) : target_(target) {}
     // One validation message (a line, without its newline): counted and logged.

@@ -442,9 +442,9 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     }
 
     if (before_grass) before_grass();
-    grass_result result = grass_begin_frame(context, &view);
+    grass_result result = begin_grass_frame ? begin_grass_frame(context) : grass_begin_frame(context, &view);
     if (result == GRASS_SUCCESS) {
-        result = grass_gl_render(context);
+        result = draw_grass ? draw_grass(context, nullptr) : grass_gl_render(context);
         const grass_result end = grass_end_frame(context);
         if (result == GRASS_SUCCESS) result = end;
     }

@@ -658,7 +658,7 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     // grass plans the frame, then records its uploads outside the pass and its draws in it.
     // Once grass_vk_prepare has recorded, the command buffer is submitted even when a later
     // grass call fails: its uploads must run.
-    grass_result result = grass_begin_frame(context, &view);
+    grass_result result = begin_grass_frame ? begin_grass_frame(context) : grass_begin_frame(context, &view);
     const bool frame_begun = result == GRASS_SUCCESS;
     if (frame_begun) {
         grass_vk_prepare_desc prepare = grass_default_vk_prepare_desc();
@@ -672,7 +672,7 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     if (result == GRASS_SUCCESS) {
         grass_vk_record_desc record = grass_default_vk_record_desc();
         record.command_buffer = cmd_;
-        result = grass_vk_record(context, &record);
+        result = draw_grass ? draw_grass(context, cmd_) : grass_vk_record(context, &record);
     }
     end_pass(cmd_);
     copy_to_readback(cmd_);

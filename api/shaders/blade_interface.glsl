@@ -64,6 +64,7 @@ struct FrameData {
     vec4 map_axis_v;       // xyz: world direction of map texel y, w: camera height above the map's anchor (m)
     vec4 map_levels[2];    // xy: camera's map coordinate (texels, mod N), z: texels per metre, w: N
     vec4 wind_sources[64]; // 16 sources x 4 vec4 (frame_plan.hpp)
+    vec4 map_offset;       // xyz: this view's camera relative to the interaction map's (frame_plan.hpp)
 #ifdef GRASS_MULTIVIEW
     mat4 eye_view_projection[2]; // per eye: eye-relative world -> clip (StereoUniforms)
     vec4 eye_position[2];        // per eye: xyz relative to the plan's origin (m)

@@ -15,6 +15,7 @@ bool interaction_texel(vec3 p, out vec4 texel) {
 #ifdef GRASS_MULTIVIEW
     p += GRASS_EYE; // eye-relative -> relative to the plan's origin, the map's
 #endif
+    p += frame.map_offset.xyz; // relative to the camera the map's window follows (view 0's)
     texel = vec4(0.0, 0.0, 1e30, 1e30);
     int levels = int(frame.map_up.w + 0.5);
     vec2 uv = vec2(dot(p, frame.map_axis_u.xyz), dot(p, frame.map_axis_v.xyz));
@@ -42,7 +43,8 @@ bool interaction_press(vec3 p, float len, float depth, float recovery, out float
     dir = vec3(0.0);
     vec4 texel;
     if (!interaction_texel(p, texel) || texel.w >= 1e29) return false;
-    float ground = dot(p, frame.map_up.xyz) + frame.map_axis_v.w; // m above the anchor
+    // m above the anchor (map_axis_v.w: the map camera's height above it)
+    float ground = dot(p + frame.map_offset.xyz, frame.map_up.xyz) + frame.map_axis_v.w;
     float p0 = max(texel.z - ground, 0.0) * (1.0 - clamp(depth, 0.0, 1.0));
     if (p0 >= len) return false;
     cap = len - (len - p0) * exp(-texel.w / max(recovery, 1e-6));

@@ -37,6 +37,22 @@ grass_result gl_backend_factory(grass_context* ctx, void* user_data, grass::Back
     return grass::GlBackend::create(ctx, *gl_desc, out_backend);
 }
 
+grass_result render_view(grass_context* context, const char* function, uint32_t view) {
+    const grass_backend kind = context->backend ? context->backend->kind() : GRASS_BACKEND_NONE;
+    if (kind != GRASS_BACKEND_GL) {
+        return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+                             "%s: the context was made by %s, not grass_gl_create_context", function,
+                             grass::backend_creator(kind));
+    }
+    GRASS_TRY(grass::check_gpu_current(context, function));
+    if (!context->in_frame) {
+        return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
+                             "%s: no frame has begun; call grass_begin_frame first", function);
+    }
+    GRASS_TRY(grass::check_view_planned(context, function, view));
+    return static_cast<grass::GlBackend*>(context->backend)->render_checked(function, view);
+}
+
 } // namespace
 
 extern "C" {
@@ -55,20 +71,13 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
 
 GRASS_API grass_result grass_gl_render(grass_context* context) {
     if (context == nullptr) return GRASS_ERROR_INVALID_ARGUMENT;
-    return grass::guarded(context, "grass_gl_render", [&] {
-        const grass_backend kind = context->backend ? context->backend->kind() : GRASS_BACKEND_NONE;
-        if (kind != GRASS_BACKEND_GL) {
-            return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
-                                 "grass_gl_render: the context was made by %s, not grass_gl_create_context",
-                                 grass::backend_creator(kind));
-        }
-        GRASS_TRY(grass::check_gpu_current(context, "grass_gl_render"));
-        if (!context->in_frame) {
-            return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
-                                 "grass_gl_render: no frame has begun; call grass_begin_frame first");
-        }
-        return static_cast<grass::GlBackend*>(context->backend)->render_checked("grass_gl_render");
-    });
+    return grass::guarded(context, "grass_gl_render", [&] { return render_view(context, "grass_gl_render", 0); });
+}
+
+GRASS_API grass_result grass_gl_render_view(grass_context* context, uint32_t view) {
+    if (context == nullptr) return GRASS_ERROR_INVALID_ARGUMENT;
+    return grass::guarded(context, "grass_gl_render_view",
+                          [&] { return render_view(context, "grass_gl_render_view", view); });
 }
 
 } // extern "C"

@@ -237,8 +237,8 @@ grass_result GlBackend::check_errors(const char* function, const char* what) {
     return GRASS_SUCCESS;
 }
 
-grass_result GlBackend::render_checked(const char* function) {
-    if (!debug_context_) return render(function); // glGetError stalls: only where the host asked to debug
+grass_result GlBackend::render_checked(const char* function, uint32_t view) {
+    if (!debug_context_) return render(function, view); // glGetError stalls: only where the host asked to debug
     GLenum pending = gl_.GetError();
     if (pending != GL_NO_ERROR) {
         ctx_->warn(GRASS_MSG_BACKEND_CALL_FAILED,
@@ -246,7 +246,7 @@ grass_result GlBackend::render_checked(const char* function) {
                    gl_error_name(pending), pending);
         for (int i = 0; i < 32 && pending != GL_NO_ERROR; ++i) pending = gl_.GetError();
     }
-    const grass_result result = render(function);
+    const grass_result result = render(function, view);
     return result == GRASS_SUCCESS ? check_errors(function, "drawing (a debug context is checked after each call)")
                                    : result;
 }
@@ -494,13 +494,19 @@ void GlBackend::set_field_wind_map(uint32_t slot, uint32_t map_slot) {
     if (slot < fields_.size()) fields_[slot].wind_map = map_slot;
 }
 
-grass_result GlBackend::begin_frame(const FramePlan&) {
-    // The plan is uploaded by the first grass_gl_render of the frame, where the host's
-    // GL context is current by contract.
-    frame_uploaded_ = false;
+grass_result GlBackend::begin_host_frame(const char*, const HostFrame&, bool) {
+    // GL orders buffer reuse itself (a stream buffer is orphaned when rewritten): the host's
+    // finished frames change nothing here. Each view's plan is uploaded by the first
+    // grass_gl_render_view that draws it, where the host's GL context is current by contract.
+    uploaded_view_ = kNoView;
     interaction_ran_ = false;
     timer_ring_.close_frame(); // a frame's timer set is closed when it ends; this is a safeguard
     frame_timer_opened_ = false;
+    return GRASS_SUCCESS;
+}
+
+grass_result GlBackend::begin_view(const char*, uint32_t view, const FramePlan&) {
+    if (view == uploaded_view_) uploaded_view_ = kNoView; // cannot happen: a view is planned once a frame
     return GRASS_SUCCESS;
 }
 

@@ -44,7 +44,8 @@ public:
                                   bool interaction_pass, bool no_depth_test) override;
     grass_result seed_pipeline_cache(const char* function, const void* data, uint64_t size) override;
     grass_result pipeline_cache_data(const char* function, void* data, uint64_t* size) override;
-    grass_result begin_frame(const FramePlan& plan) override;
+    grass_result begin_host_frame(const char* function, const HostFrame& frame, bool implied) override;
+    grass_result begin_view(const char* function, uint32_t view, const FramePlan& plan) override;
     void end_frame() override;
     uint64_t gpu_bytes() const override;
     // The target of the last render (gl_draw.cpp): each grass_gl_render reads the host's.
@@ -56,11 +57,12 @@ public:
     // The host's GL context of this grass context is current (gl_current.cpp).
     grass_result check_current(const char* function) override;
 
-    // Draws the context's plan into the bound draw framebuffer (gl_draw.cpp). In a debug
+    // Draws view `view` of the begun frame (< context->views.count()) into the bound draw
+    // framebuffer (gl_draw.cpp). In a debug
     // context (GL_CONTEXT_FLAG_DEBUG_BIT) the GL error flags are checked after the draws:
     // an error there fails the call with GRASS_ERROR_BACKEND naming it (errors the host left
     // pending before the call are cleared first, with a warning, and not counted as grass's).
-    grass_result render_checked(const char* function);
+    grass_result render_checked(const char* function, uint32_t view);
 
 private:
     struct PatchGpu {
@@ -106,11 +108,13 @@ private:
     // The field's design maps, and its wind map for a draw with kFeatureWindMap.
     void bind_field_maps(const FieldGpu& field, uint32_t features) const;
     grass_result check_errors(const char* function, const char* what);
-    grass_result render(const char* function);
+    grass_result render(const char* function, uint32_t view);
     void delete_slices(SliceGpu& slices);
     const SliceGpu* find_slices(uint32_t patch_slot, uint32_t slices_per_axis) const;
     // gl_draw.cpp
-    void upload_frame(const RenderTarget& target);
+    // Uploads view `view`'s plan (its instances, Frame and Field blocks, and the interaction
+    // pass's blocks where it has the pass) for `target`.
+    void upload_frame(const RenderTarget& target, uint32_t view);
     void draw_blades(const FramePlan& plan) const;
     void draw_sliced(const FramePlan& plan, grass_tier_kind kind) const; // volume or image draws
     void draw_debug(const FramePlan& plan) const;                        // GRASS_VIEW_FLAG_DEBUG_CELLS
@@ -182,8 +186,9 @@ private:
     GlStreamBuffer uniforms_;
     Vector<unsigned char> uniform_staging_;
     Vector<GLintptr> field_uniform_offsets_; // per draw (all kinds), into uniforms_
-    bool frame_uploaded_ = false;
-    RenderTarget frame_target_; // the Frame block's target as last uploaded: the host's at the last render
+    static constexpr uint32_t kNoView = ~0u;
+    uint32_t uploaded_view_ = kNoView; // the view of the begun frame whose plan the buffers hold
+    RenderTarget frame_target_;        // the Frame block's target as last uploaded: the host's at the last render
     Vector<PatchGpu> patches_;
     Vector<SliceGpu> slices_; // every patch's sets, unordered
     Vector<FieldGpu> fields_;

@@ -22,8 +22,8 @@ size_t align_up(size_t value, size_t alignment) { return (value + alignment - 1)
 // (the debug view draws them all), each at GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, as the plan
 // holds them. The Frame block gets the host's target of this render (write_render_target):
 // the plan holds the one of the previous render, and a frame may draw into several.
-void GlBackend::upload_frame(const RenderTarget& target) {
-    const FramePlan& plan = ctx_->plan;
+void GlBackend::upload_frame(const RenderTarget& target, uint32_t view) {
+    const FramePlan& plan = ctx_->views.plan(view);
     const size_t alignment = static_cast<size_t>(uniform_alignment_);
 
     field_uniform_offsets_.resize(plan.draws.size());
@@ -32,7 +32,7 @@ void GlBackend::upload_frame(const RenderTarget& target) {
         field_uniform_offsets_[i] = static_cast<GLintptr>(align_up(size, alignment));
         size = static_cast<size_t>(field_uniform_offsets_[i]) + sizeof(FieldUniforms);
     }
-    size = stage_interaction_uniforms(plan, size);
+    size = stage_interaction_uniforms(plan, size); // the pass's blocks: view 0's plan only has them
     uniform_staging_.assign(size, 0);
     FrameUniforms frame = plan.frame;
     write_render_target(&frame, target);
@@ -47,7 +47,7 @@ void GlBackend::upload_frame(const RenderTarget& target) {
     }
     uniforms_.upload(gl_, uniform_staging_.data(), uniform_staging_.size());
     instances_.upload(gl_, plan.instances.data(), plan.instances.size() * sizeof(TierInstance));
-    frame_uploaded_ = true;
+    uploaded_view_ = view;
     frame_target_ = target;
 }
 
@@ -152,12 +152,14 @@ void GlBackend::draw_debug(const FramePlan& plan) const {
     }
 }
 
-grass_result GlBackend::render(const char* function) {
-    const FramePlan& plan = ctx_->plan;
+grass_result GlBackend::render(const char* function, uint32_t view) {
+    const FramePlan& plan = ctx_->views.plan(view);
+    const FramePlan& first = ctx_->views.plan(0); // the frame's interaction pass is view 0's
     // No map in the core (never made, or dropped by grass_set_interaction): nor here.
-    if (plan.interaction.levels == 0 && interaction_resolution_ != 0) release_interaction_map();
-    // The interaction pass runs once per frame even when nothing is drawn: trails age.
-    const bool pass_pending = plan.interaction.levels > 0 && !interaction_ran_;
+    if (first.interaction.levels == 0 && interaction_resolution_ != 0) release_interaction_map();
+    // The interaction pass runs once per frame, at its first render of any view, even when
+    // nothing is drawn: trails age.
+    const bool pass_pending = first.interaction.pass && !interaction_ran_;
     if (plan.draws.empty() && !pass_pending) return GRASS_SUCCESS;
     const bool debug = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
     // Responsive grass: draws that read the blade curves or the interaction map.
@@ -198,9 +200,8 @@ grass_result GlBackend::render(const char* function) {
     RenderTarget target;
     target.samples = sample_count;
     target.clip_zero_to_one = clip_depth_mode == GL_ZERO_TO_ONE;
-    // Once per frame; again if a later call of the frame draws into a target of another kind
-    // or with another clip convention.
-    if (!frame_uploaded_ || frame_target_ != target) upload_frame(target);
+    // The interaction pass reads its blocks from view 0's upload.
+    if (pass_pending && (uploaded_view_ != 0 || frame_target_ != target)) upload_frame(target, 0);
 
     GlDrawStateGuard guard(gl_, dynamics);                // also makes texture unit 0 active
     const DebugGroup render_group(*this, "grass render"); // popped before the guard restores
@@ -209,10 +210,13 @@ grass_result GlBackend::render(const char* function) {
         // binding 0 (the pass binds its level's block there).
         interaction_ran_ = true;
         const DebugGroup group(*this, "grass interaction pass");
-        const grass_result result = run_interaction_pass(plan, function);
+        const grass_result result = run_interaction_pass(first, function);
         if (result != GRASS_SUCCESS) return result;
     }
     if (plan.draws.empty()) return GRASS_SUCCESS;
+    // Once per view and frame; again if a later call of the frame draws into a target of
+    // another kind or with another clip convention.
+    if (uploaded_view_ != view || frame_target_ != target) upload_frame(target, view);
     if (reads_map && interaction_maps_[0] != 0) bind_interaction_maps();
     // Viewport 0 alone (glViewport would set every viewport): grass draws through it.
     gl_.ViewportIndexedf(0, static_cast<GLfloat>(plan.viewport[0]), static_cast<GLfloat>(plan.viewport[1]),

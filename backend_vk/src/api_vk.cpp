@@ -6,6 +6,7 @@
 #include "vk_device.hpp"
 
 #include "foundation/raw_enum.hpp"
+#include "foundation/validate.hpp"
 
 #include <grass/grass_vk.h>
 
@@ -57,6 +58,30 @@ grass_result check_frame_call(grass_context* ctx, const char* function, VkBacken
     }
     *out = static_cast<VkBackend*>(ctx->backend);
     return GRASS_SUCCESS;
+}
+
+// grass_vk_record and grass_vk_record_view (view 0 for the first).
+grass_result record_view(grass_context* ctx, const char* function, uint32_t view, const grass_vk_record_desc* record) {
+    VkBackend* backend = nullptr;
+    GRASS_TRY(check_frame_call(ctx, function, &backend));
+    if (!record)
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: record is NULL", function);
+    if (grass::raw_enum(record->type) != GRASS_STRUCT_TYPE_VK_RECORD_DESC) {
+        return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                         "%s: record->type is 0x%08x; expected GRASS_STRUCT_TYPE_VK_RECORD_DESC (0x%08x)", function,
+                         static_cast<unsigned>(grass::raw_enum(record->type)),
+                         static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_RECORD_DESC));
+    }
+    if (record->next) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: record->next must be NULL",
+                         function);
+    }
+    if (!record->command_buffer) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: record->command_buffer is NULL",
+                         function);
+    }
+    GRASS_TRY(grass::check_view_planned(ctx, function, view));
+    return backend->record(function, static_cast<VkCommandBuffer>(record->command_buffer), view);
 }
 
 } // namespace
@@ -128,28 +153,12 @@ grass_result grass_vk_prepare(grass_context* ctx, const grass_vk_prepare_desc* p
 }
 
 grass_result grass_vk_record(grass_context* ctx, const grass_vk_record_desc* record) {
-    const char* function = "grass_vk_record";
     if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
-    return grass::guarded(ctx, function, [&] {
-        VkBackend* backend = nullptr;
-        grass_result r = check_frame_call(ctx, function, &backend);
-        if (r != GRASS_SUCCESS) return r;
-        if (!record)
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: record is NULL", function);
-        if (grass::raw_enum(record->type) != GRASS_STRUCT_TYPE_VK_RECORD_DESC) {
-            return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
-                             "%s: record->type is 0x%08x; expected GRASS_STRUCT_TYPE_VK_RECORD_DESC (0x%08x)", function,
-                             static_cast<unsigned>(grass::raw_enum(record->type)),
-                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_RECORD_DESC));
-        }
-        if (record->next) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL, "%s: record->next must be NULL",
-                             function);
-        }
-        if (!record->command_buffer) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT,
-                             "%s: record->command_buffer is NULL", function);
-        }
-        return backend->record(static_cast<VkCommandBuffer>(record->command_buffer));
-    });
+    return grass::guarded(ctx, "grass_vk_record", [&] { return record_view(ctx, "grass_vk_record", 0, record); });
+}
+
+grass_result grass_vk_record_view(grass_context* ctx, uint32_t view, const grass_vk_record_desc* record) {
+    if (!ctx) return GRASS_ERROR_INVALID_ARGUMENT;
+    return grass::guarded(ctx, "grass_vk_record_view",
+                          [&] { return record_view(ctx, "grass_vk_record_view", view, record); });
 }

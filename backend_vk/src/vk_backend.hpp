@@ -58,7 +58,8 @@ public:
         target.views = device_.view_mask != 0 ? 2u : 1u; // view_mask is 0 or 0x3 (check_vk_desc)
         return target;
     }
-    grass_result begin_frame(const FramePlan& plan) override;
+    grass_result begin_host_frame(const char* function, const HostFrame& frame, bool implied) override;
+    grass_result begin_view(const char* function, uint32_t view, const FramePlan& plan) override;
     void end_frame() override {} // the host submits: a frame ends with nothing to do here
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
     uint64_t dynamics_gpu_bytes() const override;
@@ -69,7 +70,7 @@ public:
 
     // grass_vk_prepare and grass_vk_record (arguments already checked).
     grass_result prepare_frame(VkCommandBuffer cmd);
-    grass_result record(VkCommandBuffer cmd);
+    grass_result record(const char* function, VkCommandBuffer cmd, uint32_t view);
 
 private:
     // A patch on the GPU: device-local vertex and index buffers, and until the upload is
@@ -115,14 +116,14 @@ private:
         MapRegion update;
     };
     // A field on the GPU: the map slot of each role (kNoMap: the role's default image is
-    // bound), its feature mask, and one descriptor set per frame in flight (each points at
-    // its slot's uniform buffer).
+    // bound), its feature mask, and one descriptor set per view slot (each points at its
+    // slot's uniform buffer).
     struct FieldGpu {
         bool live = false;
         uint32_t features = 0;
         uint32_t map_slot[kMapRoleCount] = {kNoMap, kNoMap, kNoMap, kNoMap, kNoMap};
-        uint32_t wind_map = kNoMap; // responsive grass: bound by its draws with kFeatureWindMap
-        DescriptorSet sets[kMaxFramesInFlight];
+        uint32_t wind_map = kNoMap;        // responsive grass: bound by its draws with kFeatureWindMap
+        DescriptorSet sets[kMaxViewSlots]; // per view slot (view_slot()), made for the views made so far
     };
 
     // Timer queries (vk_timers.cpp): one timestamp query per stamp of the core's ring
@@ -184,6 +185,11 @@ private:
     // Retires the images of `slices` (frames in flight may sample them) and drops its staging.
     void release_slices(SliceGpu* slices);
     void destroy_field_now(FieldGpu* field);
+    // The descriptor sets of `field` for `view` in every frame slot (those not made yet).
+    bool make_field_sets(FieldGpu* field, uint32_t view, VkFailure* failure);
+    // The per-frame buffers and field sets of every view up to `view`, made on first use:
+    // a host that plans one view a frame holds view 0's only.
+    bool make_view_slots(uint32_t view, VkFailure* failure, const char** what);
     void destroy_map_now(MapGpu* map);
 
     grass_context* ctx_;
@@ -216,9 +222,11 @@ private:
     InteractionPass interaction_;      // responsive grass: the interaction map and its pass
     bool interaction_pending_ = false; // this frame's pass is planned, not recorded yet (prepare_frame)
     uint32_t pending_uploads_ = 0;     // patches, slice sets, maps, map updates and the default images not yet recorded
-    uint64_t frame_ = 0;               // frames begun; the current one while in a frame
-    uint32_t slot_ = 0;                // frame_ % frames_in_flight
-    VkQueryPool timer_pool_ = VK_NULL_HANDLE; // frames_in_flight x TierTimerRing::kStampsPerSet timestamps
+    uint64_t frame_ = 0;               // the host's index of the begun (or last) frame (grass_frame_desc)
+    uint32_t slot_ = 0;                // its frame slot: the one whose last frame finished longest ago
+    uint32_t views_made_ = 1;          // views whose view slots exist (make_view_slots)
+    uint64_t slot_frame_[kMaxFramesInFlight] = {}; // the last frame of each frame slot (0: none)
+    VkQueryPool timer_pool_ = VK_NULL_HANDLE;      // frames_in_flight x TierTimerRing::kStampsPerSet timestamps
     TierTimerRing timer_ring_;
     uint32_t timer_set_ = TierTimerRing::kUntimed; // the current frame's set
     bool timer_reset_ = false;                     // prepare_frame recorded the reset of its range this frame

@@ -91,9 +91,9 @@ void DeferredDeletion::destroy(Item* item) {
     descriptors_.free(&item->set);
 }
 
-void DeferredDeletion::collect(uint64_t frame) {
+void DeferredDeletion::collect(uint64_t completed_frame) {
     size_t done = 0;
-    while (done < items_.size() && items_[done].last_use_frame + frames_in_flight_ <= frame) {
+    while (done < items_.size() && items_[done].last_use_frame <= completed_frame) {
         destroy(&items_[done]);
         ++done;
     }

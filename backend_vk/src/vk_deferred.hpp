@@ -1,7 +1,8 @@
 // Deferred deletion: resources the GPU may still read (a destroyed patch or field, a
-// staging buffer whose copy was recorded, a per-frame buffer that grew) wait here until
-// frames_in_flight more frames have begun. The host promises that when frame N begins,
-// frame N - frames_in_flight has finished on the GPU.
+// staging buffer whose copy was recorded, a per-frame buffer that grew) wait here until the
+// host reports the last frame that may use them finished (grass_frame_desc's
+// completed_frame_index; grass_begin_frame's host promises that when frame N begins, frame
+// N - frames_in_flight has finished on the GPU). Frames are the host's frame indices.
 //
 // Retiring happens where errors cannot be reported (a release), so it must not allocate.
 // Every resource that may be retired is therefore made here: each creator reserves the
@@ -20,9 +21,8 @@ namespace grass::vk {
 
 class DeferredDeletion {
 public:
-    DeferredDeletion(Memory& memory, DescriptorAllocator& descriptors, HostAllocator* host, uint32_t frames_in_flight)
-        : memory_(memory), descriptors_(descriptors), frames_in_flight_(frames_in_flight),
-          items_(StlAllocator<Item>(host)) {}
+    DeferredDeletion(Memory& memory, DescriptorAllocator& descriptors, HostAllocator* host)
+        : memory_(memory), descriptors_(descriptors), items_(StlAllocator<Item>(host)) {}
     ~DeferredDeletion() { collect_all(); }
     DeferredDeletion(const DeferredDeletion&) = delete;
     DeferredDeletion& operator=(const DeferredDeletion&) = delete;
@@ -51,8 +51,9 @@ public:
     void destroy_now(Image* image);
     void destroy_now(DescriptorSet* set);
 
-    // Called when `frame` begins: destroys what frame - frames_in_flight was the last to use.
-    void collect(uint64_t frame);
+    // A frame begins and the host reports every frame up to `completed_frame` finished:
+    // destroys what those frames were the last to use.
+    void collect(uint64_t completed_frame);
     // The device is idle for grass work (context destruction): destroys everything.
     void collect_all();
 
@@ -72,7 +73,6 @@ private:
 
     Memory& memory_;
     DescriptorAllocator& descriptors_;
-    uint32_t frames_in_flight_;
     size_t places_ = 0;  // live handles made by the creators: items_'s capacity holds them all
     Vector<Item> items_; // in retirement order, so frames are non-decreasing
 };

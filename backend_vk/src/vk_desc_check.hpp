@@ -10,6 +10,10 @@ namespace grass::vk {
 
 // The most frames in flight a context keeps per-frame buffers for (grass_vk_desc).
 constexpr uint32_t kMaxFramesInFlight = 8;
+// A view slot: the per-frame buffers and descriptor sets of one view (grass.h, "Frames and
+// views") of one frame slot. View 0's slots are 0 .. frames_in_flight - 1.
+constexpr uint32_t kMaxViewSlots = kMaxFramesInFlight * GRASS_MAX_VIEWS_PER_FRAME;
+inline uint32_t view_slot(uint32_t frame_slot, uint32_t view) { return view * kMaxFramesInFlight + frame_slot; }
 
 // The extensions chained to grass_vk_desc.next, copied (their next NULL), or their defaults
 // where the chain has none.

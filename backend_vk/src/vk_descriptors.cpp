@@ -83,10 +83,7 @@ void DescriptorAllocator::free(DescriptorSet* set) {
 // ---- FrameDescriptors -----------------------------------------------------------------------
 
 FrameDescriptors::FrameDescriptors(const Functions& functions, VkDevice device, HostAllocator* host)
-    : fn_(functions), device_(device), slots_{Slot(host), Slot(host), Slot(host), Slot(host),
-                                              Slot(host), Slot(host), Slot(host), Slot(host)} {
-    static_assert(kMaxFramesInFlight == 8, "one initialiser per frame slot");
-}
+    : fn_(functions), device_(device), host_(host), slots_(StlAllocator<Slot>(host)) {}
 
 FrameDescriptors::~FrameDescriptors() {
     for (const Slot& s : slots_) {
@@ -95,6 +92,7 @@ FrameDescriptors::~FrameDescriptors() {
 }
 
 void FrameDescriptors::reset(uint32_t slot) {
+    if (slot >= slots_.size()) return; // never handed out a set
     Slot& s = slots_[slot];
     // Only the pools that handed out sets since the last reset need it.
     for (uint32_t i = 0; i < s.pools.size() && (i < s.current || (i == s.current && s.used > 0)); ++i) {
@@ -105,6 +103,7 @@ void FrameDescriptors::reset(uint32_t slot) {
 }
 
 bool FrameDescriptors::allocate(uint32_t slot, VkDescriptorSetLayout layout, VkDescriptorSet* out, VkFailure* failure) {
+    while (slots_.size() <= slot) slots_.emplace_back(host_); // may throw: nothing made yet
     Slot& s = slots_[slot];
     if (s.current < s.pools.size() && s.used == kFrameSetsPerPool) {
         s.current += 1;

@@ -61,11 +61,11 @@ public:
     FrameDescriptors(const FrameDescriptors&) = delete;
     FrameDescriptors& operator=(const FrameDescriptors&) = delete;
 
-    // Frame slot `slot` begins: its frame of frames_in_flight ago has finished, so every
+    // View slot `slot` (vk_desc_check.hpp) begins: its earlier frame has finished, so every
     // set allocated for it can go (the pools are reset, not destroyed).
     void reset(uint32_t slot);
     // A set of the blade layout `layout` that lives until slot `slot` is reset. May throw
-    // std::bad_alloc (before any Vulkan object is made).
+    // std::bad_alloc (before any Vulkan object is made); a slot gets its pools on first use.
     bool allocate(uint32_t slot, VkDescriptorSetLayout layout, VkDescriptorSet* out, VkFailure* failure);
 
 private:
@@ -77,7 +77,8 @@ private:
     };
     const Functions& fn_;
     VkDevice device_;
-    Slot slots_[kMaxFramesInFlight];
+    HostAllocator* host_;
+    Vector<Slot> slots_; // grown to the highest slot used
 };
 
 } // namespace grass::vk

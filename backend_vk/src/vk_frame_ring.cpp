@@ -36,12 +36,17 @@ FrameRing::~FrameRing() {
 
 bool FrameRing::create(VkFailure* failure, const char** what) {
     for (uint32_t i = 0; i < frames_in_flight_; ++i) {
-        *what = "a per-frame instance buffer";
-        if (!grow_instances(slots_[i], kInitialInstances, 0, failure)) return false;
-        *what = "a per-frame uniform buffer";
-        if (!grow_uniforms(slots_[i], kInitialDraws, 0, failure)) return false;
+        if (!create_slot(i, failure, what)) return false;
     }
     return true;
+}
+
+bool FrameRing::create_slot(uint32_t slot, VkFailure* failure, const char** what) {
+    Slot& s = slots_[slot];
+    *what = "a per-frame instance buffer";
+    if (s.instance_capacity == 0 && !grow_instances(s, kInitialInstances, 0, failure)) return false;
+    *what = "a per-frame uniform buffer";
+    return s.draw_capacity > 0 || grow_uniforms(s, kInitialDraws, 0, failure);
 }
 
 bool FrameRing::replace_buffer(Buffer* buffer, VkDeviceSize size, VkBufferUsageFlags usage, uint64_t frame,

@@ -1,4 +1,5 @@
-// Per-frame data, one copy per frame in flight: a persistently mapped instance buffer
+// Per-frame data, one copy per view slot (a view of a frame in flight, vk_desc_check.hpp): a
+// persistently mapped instance buffer
 // (the plan's tier instances) and a uniform buffer (the Frame block, then one Field
 // block per draw, each at a multiple of minUniformBufferOffsetAlignment). A copy is
 // rewritten when its slot comes round again, after the host has waited for its frame.
@@ -24,9 +25,11 @@ public:
     FrameRing(const FrameRing&) = delete;
     FrameRing& operator=(const FrameRing&) = delete;
 
-    // Makes every slot's buffers with a small starting capacity (descriptor sets always
-    // need a uniform buffer to point at).
+    // Makes view 0's slots' buffers (slots 0 .. frames_in_flight - 1) with a small starting
+    // capacity (descriptor sets always need a uniform buffer to point at).
     bool create(VkFailure* failure, const char** what);
+    // Makes slot `slot`'s buffers (another view's: view_slot()), unless it has them.
+    bool create_slot(uint32_t slot, VkFailure* failure, const char** what);
 
     // Writes `plan` into slot `slot` as it is (its blocks are complete), growing its
     // buffers first if needed.
@@ -61,7 +64,7 @@ private:
     VkDeviceSize frame_bytes_;
     VkDeviceSize frame_stride_;
     VkDeviceSize field_stride_;
-    Slot slots_[kMaxFramesInFlight];
+    Slot slots_[kMaxViewSlots];
 };
 
 } // namespace grass::vk

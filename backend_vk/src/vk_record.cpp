@@ -13,39 +13,63 @@ namespace grass::vk {
 
 // ---- Frames -----------------------------------------------------------------------------
 
-grass_result VkBackend::begin_frame(const FramePlan& plan) {
-    frame_ += 1;
-    slot_ = static_cast<uint32_t>(frame_ % desc_.frames_in_flight);
-    interaction_pending_ = false; // set below when this frame has a pass
+grass_result VkBackend::begin_host_frame(const char* function, const HostFrame& frame, bool implied) {
+    const uint32_t frames = desc_.frames_in_flight;
+    uint64_t completed = frame.completed;
+    // grass_begin_frame's promise: the frame frames_in_flight before this one has finished.
+    if (implied && frame.index > frames) completed = std::max<uint64_t>(completed, frame.index - frames);
+    // The frame slot whose last frame finished longest ago; it must have finished.
+    uint32_t slot = 0;
+    for (uint32_t s = 1; s < frames; ++s) {
+        if (slot_frame_[s] < slot_frame_[slot]) slot = s;
+    }
+    if (slot_frame_[slot] > completed) {
+        return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAMES_IN_FLIGHT,
+                          "%s: frame %llu needs a frame slot, but all %u (grass_vk_desc.frames_in_flight) hold "
+                          "unfinished frames: the oldest is frame %llu and the newest finished one is frame %llu "
+                          "(completed_frame_index); wait for frame %llu on the GPU first, or create the context "
+                          "with more frames in flight",
+                          function, static_cast<unsigned long long>(frame.index), frames,
+                          static_cast<unsigned long long>(slot_frame_[slot]),
+                          static_cast<unsigned long long>(completed),
+                          static_cast<unsigned long long>(slot_frame_[slot]));
+    }
+    frame_ = frame.index;
+    slot_ = slot;
+    slot_frame_[slot] = frame.index;
+    interaction_pending_ = false; // set by view 0 when this frame has a pass
     // The previous frame writes no more stamps (the host has submitted it). The set this
-    // frame takes was written by frame frame_ - frames_in_flight, which has finished: read
-    // it (and any older) now; open_frame drops it if it never ran.
+    // frame takes was written frames_in_flight frames ago, which has finished: read it (and
+    // any older) now; open_frame drops it if it never ran.
     timer_ring_.close_frame();
     collect_timers();
     timer_set_ = timer_pool_ != VK_NULL_HANDLE ? timer_ring_.open_frame() : TierTimerRing::kUntimed;
     timer_reset_ = false;
-    // Frame frame_ - frames_in_flight has finished: what it was the last to use can go,
-    // and the sets its volume and image draws used.
-    deferred_.collect(frame_);
-    frame_sets_.reset(slot_);
+    // What finished frames were the last to use can go.
+    deferred_.collect(completed);
+    return GRASS_SUCCESS;
+}
 
-    bool uniforms_replaced = false;
+grass_result VkBackend::begin_view(const char* function, uint32_t view, const FramePlan& plan) {
     VkFailure failure;
     const char* what = "";
-    if (!ring_.write(slot_, plan, frame_, &uniforms_replaced, &failure, &what)) {
-        return fail("grass_begin_frame", what, failure);
-    }
+    if (view >= views_made_ && !make_view_slots(view, &failure, &what)) return fail(function, what, failure);
+    // The view slot's last frame has finished (begin_host_frame chose its frame slot so).
+    const uint32_t vs = view_slot(slot_, view);
+    frame_sets_.reset(vs);
+    bool uniforms_replaced = false;
+    if (!ring_.write(vs, plan, frame_, &uniforms_replaced, &failure, &what)) return fail(function, what, failure);
     if (uniforms_replaced) {
-        // This slot's sets were last used by frame frame_ - frames_in_flight, which is done.
         for (const FieldGpu& f : fields_) {
-            if (f.live) write_set(f.sets[slot_].set, slot_, f, still_views());
+            if (f.live) write_set(f.sets[vs].set, vs, f, still_views());
         }
     }
-    // Responsive grass: the interaction map and this frame's pass (recorded by prepare_frame).
+    if (view > 0) return GRASS_SUCCESS;
+    // Responsive grass: the interaction map and this frame's pass (recorded by prepare_frame),
+    // view 0's (every view reads the map).
     if (plan.interaction.levels > 0) {
-        if (!interaction_.prepare(slot_, frame_, plan.interaction, &failure, &what)) {
-            return fail("grass_begin_frame", what, failure);
-        }
+        if (!interaction_.prepare(slot_, frame_, plan.interaction, &failure, &what))
+            return fail(function, what, failure);
         interaction_pending_ = true;
     } else if (interaction_.has_map()) {
         interaction_.release(frame_); // the core holds no map (frame_plan.hpp)
@@ -215,8 +239,9 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
     return true;
 }
 
-grass_result VkBackend::record(VkCommandBuffer cmd) {
-    const FramePlan& plan = ctx_->plan;
+grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32_t view) {
+    const FramePlan& plan = ctx_->views.plan(view);
+    const uint32_t vs = view_slot(slot_, view); // this view's buffers and sets in the frame's slot
     const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
     const bool depth_test = (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) == 0;
     // Refuse before recording anything, so that the command buffer is left untouched. The
@@ -227,10 +252,10 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         const char* problem = "";
         if (!draw_ready(d, debug_view, &problem)) {
             return ctx_->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_UPLOAD_NOT_RECORDED,
-                              "grass_vk_record: a field drawn this frame (slot %u) waits for %s; call "
+                              "%s: a field drawn this frame (slot %u) waits for %s; call "
                               "grass_vk_prepare() with a command buffer that runs before this one, after "
                               "grass_begin_frame() and outside the render pass",
-                              d.field_slot, problem);
+                              function, d.field_slot, problem);
         }
         // upload_field made the variants of the field's maps, grass_prepare_pipelines those of
         // the features the host declared (without the depth test too when it declared the
@@ -239,7 +264,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         VkFailure failure;
         const char* what = "";
         if (!pipeline_.create_variant(draw_variant(d, plan.flags), depth_test, &failure, &what))
-            return fail("grass_vk_record", what, failure);
+            return fail(function, what, failure);
         draw_count += 1;
         if (!debug_view && d.kind != GRASS_TIER_GEOMETRY) slice_draws += 1;
         if (!debug_view && own_set(d)) own_sets += 1;
@@ -255,10 +280,10 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
             const TierDraw& d = plan.draws[i];
             if (!drawn(d, false) || !own_set(d)) continue;
             VkFailure failure;
-            if (!frame_sets_.allocate(slot_, pipeline_.set_layout(), &draw_sets_[i], &failure)) {
-                return fail("grass_vk_record", "a descriptor set of a volume, image or responsive draw", failure);
+            if (!frame_sets_.allocate(vs, pipeline_.set_layout(), &draw_sets_[i], &failure)) {
+                return fail(function, "a descriptor set of a volume, image or responsive draw", failure);
             }
-            write_set(draw_sets_[i], slot_, fields_[d.field_slot], draw_views(d));
+            write_set(draw_sets_[i], vs, fields_[d.field_slot], draw_views(d));
         }
     }
 
@@ -281,7 +306,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
         fn_.vkCmdPushConstants(cmd, pipeline_.layout(), kBlockIndexStages, 0, kBlockIndexBytes, &block_index);
     }
 
-    const VkBuffer instances = ring_.instance_buffer(slot_);
+    const VkBuffer instances = ring_.instance_buffer(vs);
     const VkDeviceSize zero = 0;
     const auto bind_set = [&](uint32_t draw, VkDescriptorSet set) {
         // Every draw has its Field block, whatever its kind.
@@ -303,7 +328,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
                 fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
                 bound_pipeline = pipeline;
             }
-            bind_set(i, fields_[d.field_slot].sets[slot_].set);
+            bind_set(i, fields_[d.field_slot].sets[vs].set);
             fn_.vkCmdDraw(cmd, d.vertex_count, d.instance_count, 0, d.first_instance);
         }
         return GRASS_SUCCESS;
@@ -327,7 +352,7 @@ grass_result VkBackend::record(VkCommandBuffer cmd) {
             fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
             bound_pipeline = pipeline;
         }
-        bind_set(i, own_set(d) ? draw_sets_[i] : fields_[d.field_slot].sets[slot_].set);
+        bind_set(i, own_set(d) ? draw_sets_[i] : fields_[d.field_slot].sets[vs].set);
         const PatchGpu& p = patches_[d.patch_slot];
         if (bound_patch != d.patch_slot) {
             const VkBuffer buffers[2] = {p.vertices.buffer, instances};

@@ -412,18 +412,39 @@ grass_result VkBackend::upload_field(uint32_t slot, const FieldMaps& maps) {
     fresh.live = true;
     fresh.features = maps.features;
     for (uint32_t role = 0; role < kMapRoleCount; ++role) fresh.map_slot[role] = maps.map_slot[role];
-    bool ok = true;
-    for (uint32_t i = 0; ok && i < desc_.frames_in_flight; ++i) {
-        what = "a field descriptor set";
-        ok = deferred_.allocate_set(pipeline_.set_layout(), &fresh.sets[i], &failure);
+    for (uint32_t view = 0; view < views_made_; ++view) {
+        if (!make_field_sets(&fresh, view, &failure)) {
+            for (DescriptorSet& s : fresh.sets) deferred_.destroy_now(&s);
+            return fail(function, "a field descriptor set", failure);
+        }
     }
-    if (!ok) {
-        for (DescriptorSet& s : fresh.sets) deferred_.destroy_now(&s);
-        return fail(function, what, failure);
-    }
-    for (uint32_t i = 0; i < desc_.frames_in_flight; ++i) write_set(fresh.sets[i].set, i, fresh, still_views());
     fields_[slot] = fresh;
     return GRASS_SUCCESS;
+}
+
+bool VkBackend::make_field_sets(FieldGpu* field, uint32_t view, VkFailure* failure) {
+    for (uint32_t i = 0; i < desc_.frames_in_flight; ++i) {
+        const uint32_t vs = view_slot(i, view);
+        if (field->sets[vs].set != VK_NULL_HANDLE) continue; // made by an earlier, failed try
+        if (!deferred_.allocate_set(pipeline_.set_layout(), &field->sets[vs], failure)) return false;
+        write_set(field->sets[vs].set, vs, *field, still_views());
+    }
+    return true;
+}
+
+bool VkBackend::make_view_slots(uint32_t view, VkFailure* failure, const char** what) {
+    while (views_made_ <= view) {
+        const uint32_t v = views_made_;
+        for (uint32_t i = 0; i < desc_.frames_in_flight; ++i) {
+            if (!ring_.create_slot(view_slot(i, v), failure, what)) return false;
+        }
+        *what = "a field descriptor set";
+        for (FieldGpu& f : fields_) {
+            if (f.live && !make_field_sets(&f, v, failure)) return false;
+        }
+        views_made_ = v + 1;
+    }
+    return true;
 }
 
 void VkBackend::destroy_field_now(FieldGpu* f) {

@@ -23,7 +23,8 @@ public:
         curve_bytes += patch.blade_curves.size() * sizeof(float);
         return GRASS_SUCCESS;
     }
-    grass_result begin_frame(const grass::FramePlan& plan) override {
+    grass_result begin_view(const char*, uint32_t view, const grass::FramePlan& plan) override {
+        if (view > 0) return GRASS_SUCCESS; // the frame's map is view 0's
         const grass::InteractionPlan& ip = plan.interaction;
         map_bytes = uint64_t(ip.levels) * ip.resolution * ip.resolution * 16;
         return GRASS_SUCCESS;

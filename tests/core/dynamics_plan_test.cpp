@@ -241,6 +241,56 @@ TEST_F(DynamicsPlanTest, TheMapIsMadeAtTheFirstFrameWithCollidersAndFollowsTheCa
     EXPECT_EQ(plan().stats.interaction_texels, 64u * 64);
 }
 
+// grass.h "Frames and views": the frame steps once, at view 0, whose camera moves the map; a
+// later view (a shadow camera 20 m up and 5 m aside) reads view 0's map from its own camera
+// (FrameUniforms::map_offset) and plans no pass; the next frame's window moves from view 0's.
+TEST_F(DynamicsPlanTest, LaterViewsOfAFrameReadTheMapOfView0) {
+    const grass_collider c = sphere(2.0, 0.1, 3.0, 0.3f);
+    ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);
+    grass_wind_desc wind = grass_default_wind_desc();
+    wind.speed = 4.0f;
+    ASSERT_EQ(grass_set_wind(ctx, &wind), GRASS_SUCCESS) << last_message();
+    ASSERT_EQ(frame(1.0), GRASS_SUCCESS); // the map is made around (2, 3, 2)
+    const double main_eye[3] = {2.0, 3.0, 2.0}, shadow_eye[3] = {7.0, 23.0, 2.5};
+    grass_frame_desc f = grass_default_frame_desc();
+    f.frame_index = 10;
+    f.time = 1.5;
+    ASSERT_EQ(grass_begin_host_frame(ctx, &f), GRASS_SUCCESS) << last_message();
+    const grass_view_desc main_view = view_at(main_eye, 99.0); // the frame's time wins
+    const grass_view_desc shadow = view_at(shadow_eye, 99.0);
+    uint32_t i0 = 9, i1 = 9;
+    ASSERT_EQ(grass_plan_view(ctx, &main_view, &i0), GRASS_SUCCESS) << last_message();
+    ASSERT_EQ(grass_plan_view(ctx, &shadow, &i1), GRASS_SUCCESS) << last_message();
+    EXPECT_EQ(i0, 0u);
+    EXPECT_EQ(i1, 1u);
+    const grass::FramePlan& p0 = ctx->views.plan(0);
+    const grass::FramePlan& p1 = ctx->views.plan(1);
+    EXPECT_EQ(&p0, &plan());
+    EXPECT_DOUBLE_EQ(p0.stats.time_step, 0.5);
+    EXPECT_DOUBLE_EQ(p1.stats.time_step, 0.5);
+    EXPECT_FLOAT_EQ(p0.frame.params[0], 1.5f);
+    EXPECT_FLOAT_EQ(p1.frame.params[0], 1.5f);
+    EXPECT_TRUE(p0.interaction.pass);
+    EXPECT_FALSE(p1.interaction.pass);
+    EXPECT_TRUE(p1.interaction.colliders.empty());
+    EXPECT_EQ(p1.interaction.levels, p0.interaction.levels);
+    EXPECT_EQ(0, std::memcmp(p1.frame.map_levels, p0.frame.map_levels, sizeof p0.frame.map_levels));
+    EXPECT_EQ(0, std::memcmp(p1.frame.map_axis_v, p0.frame.map_axis_v, sizeof p0.frame.map_axis_v));
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(p0.frame.map_offset[k], 0.0f);
+        EXPECT_FLOAT_EQ(p1.frame.map_offset[k], float(shadow_eye[k] - main_eye[k])) << k;
+    }
+    // Both views draw the responsive variants; the wind is the frame's, from each camera.
+    for (const auto& d : p1.draws) EXPECT_EQ(d.features & grass::kFeatureInteraction, grass::kFeatureInteraction);
+    EXPECT_NE(0, std::memcmp(p0.frame.wind_phase, p1.frame.wind_phase, sizeof p0.frame.wind_phase));
+    ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+    // The shadow camera moved nothing: view 0 back at the main camera shifts no texel.
+    ASSERT_EQ(frame(2.0, main_eye), GRASS_SUCCESS);
+    EXPECT_EQ(plan().interaction.level[0].window[2], 0);
+    EXPECT_EQ(plan().interaction.level[0].window[3], 0);
+    EXPECT_DOUBLE_EQ(plan().stats.time_step, 0.5);
+}
+
 TEST_F(DynamicsPlanTest, FarAlongUpTheMapIsReanchoredAndCleared) {
     const grass_collider c = sphere(2.0, 0.1, 3.0, 0.3f);
     ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);

@@ -45,11 +45,11 @@ protected:
     // check_plan on the corrupted plan: refused as an internal error.
     void expect_plan_refused(const char* what) {
         log.clear();
-        EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_ERROR_INVALID_STATE) << what;
+        EXPECT_EQ(grass::check_plan(ctx, "test", ctx->plan), GRASS_ERROR_INVALID_STATE) << what;
         EXPECT_EQ(last_id(), GRASS_MSG_INTERNAL_ERROR) << what << ": " << last_message();
         ASSERT_EQ(grass_begin_frame(ctx, &view), GRASS_SUCCESS) << "a fresh plan is whole again";
         ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
-        EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS);
+        EXPECT_EQ(grass::check_plan(ctx, "test", ctx->plan), GRASS_SUCCESS);
     }
     grass_patch_id patch{};
     grass_field_id field{};
@@ -58,7 +58,9 @@ protected:
     grass_view_desc view{};
 };
 
-TEST_F(InvariantsTest, AWholePlanPasses) { EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message(); }
+TEST_F(InvariantsTest, AWholePlanPasses) {
+    EXPECT_EQ(grass::check_plan(ctx, "test", ctx->plan), GRASS_SUCCESS) << last_message();
+}
 
 TEST_F(InvariantsTest, AVolumeDrawWhoseSliceSetWasNeverUploadedIsAnInternalError) {
     ctx->plan.draws[0].kind = GRASS_TIER_VOLUME;
@@ -90,7 +92,7 @@ TEST_F(InvariantsTest, TheDebugViewVariantExactlyWhenTheFrameDrawsADebugView) {
     for (const uint32_t flags : {uint32_t(GRASS_VIEW_FLAG_DEBUG_THRESHOLDS), uint32_t(GRASS_VIEW_FLAG_DEBUG_TIERS)}) {
         ctx->plan.flags = flags;
         set_debug_bit(true);
-        EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
+        EXPECT_EQ(grass::check_plan(ctx, "test", ctx->plan), GRASS_SUCCESS) << last_message();
         set_debug_bit(false);
         expect_plan_refused("a debug view drawn by the variant without its code");
     }
@@ -122,7 +124,7 @@ TEST_F(InvariantsTest, ResponsiveBitsOnlyAsTheInteractionPlanAllows) {
         }
     };
     set_bits(grass::kFeatureWind);
-    EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
+    EXPECT_EQ(grass::check_plan(ctx, "test", ctx->plan), GRASS_SUCCESS) << last_message();
     set_bits(grass::kFeatureInteraction); // no map this frame
     expect_plan_refused("the interaction variant without the map");
     set_bits(grass::kFeatureMaskCount);
@@ -132,7 +134,7 @@ TEST_F(InvariantsTest, ResponsiveBitsOnlyAsTheInteractionPlanAllows) {
     // Per-blade culling: on geometry draws only.
     ASSERT_EQ(ctx->plan.draws[0].kind, GRASS_TIER_GEOMETRY);
     set_bits(grass::kFeatureBladeCulling);
-    EXPECT_EQ(grass::check_plan(ctx, "test"), GRASS_SUCCESS) << last_message();
+    EXPECT_EQ(grass::check_plan(ctx, "test", ctx->plan), GRASS_SUCCESS) << last_message();
     ctx->plan.draws[0].kind = GRASS_TIER_VOLUME;
     expect_plan_refused("the culling variant on a volume draw");
     EXPECT_NE(last_message().find("feature mask"), std::string::npos) << last_message();

@@ -33,7 +33,8 @@ public:
         return GRASS_SUCCESS;
     }
     grass::RenderTarget render_target() const override { return grass::RenderTarget{}; }
-    grass_result begin_frame(const grass::FramePlan&) override { return GRASS_SUCCESS; }
+    grass_result begin_host_frame(const char*, const grass::HostFrame&, bool) override { return GRASS_SUCCESS; }
+    grass_result begin_view(const char*, uint32_t, const grass::FramePlan&) override { return GRASS_SUCCESS; }
     void end_frame() override {}
     uint64_t gpu_bytes() const override { return 0; }
     uint64_t dynamics_gpu_bytes() const override { return 0; }

@@ -181,6 +181,56 @@ TEST_P(ResponsiveTest, NoBladeInsideRestingColliders) {
     }
 }
 
+// Frames and views (grass.h): view 0, a camera 0.6 m aside and 1.2 m up, moves the collider
+// map; view 1, the top view over the colliders, reads that map from its own camera
+// (FrameUniforms::map_offset) and shows the grass pressed under them, as view 0 of its own
+// frame does above. Without the offset it read the press 0.6 m off, and grass stood inside.
+TEST_P(ResponsiveTest, ALaterViewOfTheFrameReadsTheMapOfView0) {
+    set_fine_map();
+    make_field(field_desc(8)); // 2 m x 2 m
+    constexpr double kTolerance = 0.01; // metres
+    const grass_collider colliders[2] = {sphere(1.0, 0.25 + 0.03, 0.7, 0.25f),
+                                         capsule(0.6, 1.4, 0.1 + 0.05, 1.4, 0.1f)};
+    const double cx = 1.0, cz = 1.05, half = 0.65;
+    const std::vector<float> before = heights(top_view(cx, cz, half, 0.0));
+    ASSERT_EQ(grass_set_colliders(ctx, colliders, 2), GRASS_SUCCESS) << log;
+    const double main_eye[3] = {cx + 0.6, 1.2, cz - 0.3}, main_look[3] = {cx, 0.0, cz};
+    const grass_view_desc main_view = view(main_eye, main_look);
+    const grass_view_desc top = top_view(cx, cz, half, 0.0);
+    uint64_t next_frame = 100;
+    host->begin_grass_frame = [&](grass_context* c) {
+        grass_frame_desc frame = grass_default_frame_desc();
+        frame.frame_index = next_frame;
+        frame.completed_frame_index = next_frame - 1;
+        next_frame += 1;
+        uint32_t index = 0;
+        grass_result r = grass_begin_host_frame(c, &frame);
+        if (r == GRASS_SUCCESS) r = grass_plan_view(c, &main_view, &index); // planned, never drawn
+        if (r == GRASS_SUCCESS) r = grass_plan_view(c, &top, &index);
+        return r;
+    };
+    host->draw_grass = [&](grass_context* c, void* cmd) {
+        if (GetParam() == GRASS_BACKEND_GL) return grass_gl_render_view(c, 1);
+        grass_vk_record_desc record = grass_default_vk_record_desc();
+        record.command_buffer = cmd;
+        return grass_vk_record_view(c, 1, &record);
+    };
+    grass_host::Image image;
+    const std::vector<float> after = heights(top, &image);
+    host->begin_grass_frame = nullptr;
+    host->draw_grass = nullptr;
+    save(image, "pressed_view_1");
+    for (const grass_collider& c : colliders) {
+        const auto [footprint, above_before, grass_after, inside, worst] =
+            under(c, before, after, cx, cz, half, kTolerance);
+        const char* name = c.shape == GRASS_COLLIDER_SPHERE ? "sphere" : "capsule";
+        ASSERT_GT(footprint, 100u) << name;
+        EXPECT_GT(double(above_before) / footprint, 0.2) << name;
+        EXPECT_GT(double(grass_after) / footprint, 0.3) << name << ": the pressed grass must still be drawn";
+        EXPECT_EQ(inside, 0u) << name << ": grass up to " << worst << " m above the underside";
+    }
+}
+
 // A new passage replaces what an earlier one left (docs/responsive.md): a deep dent recovers
 // for 3 s, then a sphere without velocity comes to rest over it. A second later no grass
 // stands inside the new sphere. Before the fix a collider without velocity continued a

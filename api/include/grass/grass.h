@@ -214,7 +214,8 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,     /* 0.5 */
     GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E, /* 0.5 */
     GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,  /* 0.5: stereo */
-    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010    /* 0.5 */
+    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,   /* 0.5 */
+    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011         /* 0.5: frames and views */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -295,6 +296,9 @@ typedef enum grass_message_id {
     /* 0.5: warning: GRASS_DEBUG_LABELS_ON was asked for, and the API cannot label (Vulkan
      * without VK_EXT_debug_utils on the instance): the context works, unlabelled. */
     GRASS_MSG_DEBUG_LABELS_UNAVAILABLE = 410,
+    /* 0.5: a frame was refused because the context's per-frame resources are all held by
+     * unfinished frames (grass_frame_desc.completed_frame_index; Vulkan: frames_in_flight). */
+    GRASS_MSG_FRAMES_IN_FLIGHT = 411,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501
@@ -919,10 +923,65 @@ typedef struct grass_lod_origin_desc {
 
 GRASS_API grass_lod_origin_desc grass_default_lod_origin_desc(void);
 
-/* Starts a frame: validates the view and plans what every field draws. Then draw with
- * grass_gl_render() or grass_vk_record(), and close with grass_end_frame(). */
+/* Starts a frame of one view: validates the view and plans what every field draws. Then
+ * draw with grass_gl_render() or grass_vk_record(), and close with grass_end_frame().
+ * It is grass_begin_host_frame() with the next frame index and the promise that the frame
+ * frames_in_flight before it has finished (Vulkan; GL needs none), then grass_plan_view():
+ * the view is view 0 of the frame, and view->time is the frame's time. */
 GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_view_desc* view);
+/* Ends the frame begun by grass_begin_frame() or grass_begin_host_frame(). */
 GRASS_API grass_result grass_end_frame(grass_context* context);
+
+/* ---- 0.5: Frames and views (docs/integration.md, "Frames and views") ----------------- */
+/*
+ * An engine draws several views in one of its frames: the main camera, shadow cascades,
+ * reflections, split screen. grass_begin_host_frame() begins the host's frame once; each
+ * grass_plan_view() then plans one view of it, numbered 0, 1, ... in the order planned, up
+ * to GRASS_MAX_VIEWS_PER_FRAME; draw view k with grass_gl_render_view(context, k) or
+ * grass_vk_record_view(context, k, ...), in any order, as often as the host needs, until
+ * grass_end_frame(). Planning a view never changes another's plan or what was recorded for
+ * it, and each view keeps its GPU data until the host reports its frame finished.
+ *
+ * What a view shares with the others of its frame: the time (grass_frame_desc.time: the
+ * wind, and the responsive grass's one step per frame) and the interaction map, which view
+ * 0 moves with its camera and every view reads. What it has of its own: camera, projection
+ * (perspective or orthographic), viewport, sun, flags and extensions (a grass_lod_origin_desc
+ * makes a shadow view choose its blades and tiers as the main camera does).
+ * GPU timings (grass_get_tier_gpu_ms) add up the views of a frame; grass_get_frame_stats
+ * reports the last planned view.
+ *
+ * Resource reuse follows the host's frame indices: the GPU data of frame N is rewritten by a
+ * later frame only once the host reports N finished (completed_frame_index >= N). Vulkan: at
+ * most frames_in_flight (grass_vk_desc) frames may be unfinished, the one begun included; a
+ * frame that would need more is refused (GRASS_ERROR_INVALID_STATE) and nothing changes.
+ */
+#define GRASS_MAX_VIEWS_PER_FRAME 16
+
+typedef struct grass_frame_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_FRAME_DESC */
+    const void* next;       /* NULL */
+    /* The host's frame number: greater than every earlier frame's of this context (gaps are
+     * allowed), and at least 1. */
+    uint64_t frame_index;
+    /* The newest frame whose GPU work the host knows has finished (its fence signalled), or
+     * 0 when none has; less than frame_index, and never less than an earlier frame's value.
+     * GL: ignored beyond these checks (the GL driver orders its own buffer reuse). */
+    uint64_t completed_frame_index;
+    /* Seconds, any origin: as grass_view_desc.time (the wind; the responsive grass steps the
+     * difference to the previous frame's time). grass_plan_view ignores view->time. */
+    double time;
+} grass_frame_desc;
+
+/* Default: frame_index 1, completed_frame_index 0, time 0. */
+GRASS_API grass_frame_desc grass_default_frame_desc(void);
+
+/* Begins the host's frame (no view planned yet). Refused inside a frame. */
+GRASS_API grass_result grass_begin_host_frame(grass_context* context, const grass_frame_desc* frame);
+
+/* Plans one more view of the begun frame: validates it as grass_begin_frame does and plans
+ * what every field draws for it; *out_view is its index (0 for the first). On failure the
+ * frame's earlier views are untouched and *out_view is not written. */
+GRASS_API grass_result grass_plan_view(grass_context* context, const grass_view_desc* view, uint32_t* out_view);
 
 typedef struct grass_frame_stats {
     uint64_t fields_drawn;
@@ -953,7 +1012,7 @@ typedef struct grass_frame_stats {
     double time_step;            /* seconds the responsive grass stepped this frame */
 } grass_frame_stats;
 
-/* Stats of the last begun frame. */
+/* Stats of the last planned view (of the last begun frame). */
 GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass_frame_stats* out_stats);
 
 /* GPU time of each tier kind (grass_tier_kind index) in the most recent frame whose

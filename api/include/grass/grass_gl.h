@@ -106,6 +106,11 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  * names beginning "grass ". */
 GRASS_API grass_result grass_gl_render(grass_context* context);
 
+/* 0.5: Draws view `view` of the begun frame (grass_plan_view's index; grass_gl_render draws
+ * view 0), with everything grass_gl_render says: the host's current framebuffer, state
+ * restored. The frame's interaction pass runs at its first draw of any view. */
+GRASS_API grass_result grass_gl_render_view(grass_context* context, uint32_t view);
+
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */
 #if defined(GRASS_RENAMED)
 GRASS_RENAMED(grass_gl_default_desc, grass_default_gl_desc, 0.4)

@@ -205,6 +205,11 @@ GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void);
  * each draw once; the pass's multiview runs it for both eyes (one viewport for both). */
 GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_record_desc* record);
 
+/* 0.5: Records view `view` of the begun frame (grass_plan_view's index; grass_vk_record
+ * records view 0), as grass_vk_record does. Each view has its own per-frame buffers and
+ * descriptor sets: recording one never disturbs another's recorded commands. */
+GRASS_API grass_result grass_vk_record_view(grass_context* context, uint32_t view, const grass_vk_record_desc* record);
+
 /* ---- 0.3 names (begin): see grass.h's block of the same name ----------------------------- */
 #if defined(GRASS_RENAMED)
 GRASS_RENAMED(grass_vk_default_desc, grass_default_vk_desc, 0.4)

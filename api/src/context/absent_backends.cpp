@@ -28,6 +28,11 @@ GRASS_API grass_result grass_gl_render(grass_context* context) {
     return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
                          "grass_gl_render: the context is not a GL context (this build has no GL backend)");
 }
+GRASS_API grass_result grass_gl_render_view(grass_context* context, uint32_t) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+                         "grass_gl_render_view: the context is not a GL context (this build has no GL backend)");
+}
 #endif
 
 #ifndef GRASS_HAS_VULKAN
@@ -80,6 +85,12 @@ GRASS_API grass_result grass_vk_record(grass_context* context, const grass_vk_re
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
                          "grass_vk_record: the context is not a Vulkan context (this build has no Vulkan backend)");
+}
+GRASS_API grass_result grass_vk_record_view(grass_context* context, uint32_t, const grass_vk_record_desc*) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_WRONG_BACKEND,
+                         "grass_vk_record_view: the context is not a Vulkan context (this build has no Vulkan "
+                         "backend)");
 }
 #endif
 

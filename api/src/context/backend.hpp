@@ -11,6 +11,7 @@
 #pragma once
 
 #include "bake/baked_slices.hpp"
+#include "context/frame_views.hpp"
 #include "foundation/frame_plan.hpp"
 #include "foundation/shader_interface.hpp"
 #include "foundation/shader_variants.hpp"
@@ -90,8 +91,15 @@ public:
     // Frame block again with write_render_target when the host's current one differs.
     virtual RenderTarget render_target() const = 0;
 
-    // Called by grass_begin_frame after the plan is built, and by grass_end_frame.
-    virtual grass_result begin_frame(const FramePlan& plan) = 0;
+    // Frames and views (grass.h): the host's frame `frame` begins (grass_begin_host_frame,
+    // grass_begin_frame), and the host reports every frame up to frame.completed finished; with
+    // `implied` (grass_begin_frame) also every frame up to frames_in_flight before this one. A
+    // backend may refuse a frame whose resources are still in use (nothing changes then).
+    virtual grass_result begin_host_frame(const char* function, const HostFrame& frame, bool implied) = 0;
+    // View `view` of the begun frame is planned into `plan` (context->views.plan(view), kept
+    // unchanged until the frame ends): the backend takes what it needs of it (Vulkan writes it
+    // into the view's own per-frame buffers).
+    virtual grass_result begin_view(const char* function, uint32_t view, const FramePlan& plan) = 0;
     virtual void end_frame() = 0;
 
     virtual uint64_t gpu_bytes() const = 0;
@@ -144,7 +152,8 @@ public:
         return GRASS_SUCCESS;
     }
     RenderTarget render_target() const override { return RenderTarget{}; } // none: the defaults
-    grass_result begin_frame(const FramePlan&) override { return GRASS_SUCCESS; }
+    grass_result begin_host_frame(const char*, const HostFrame&, bool) override { return GRASS_SUCCESS; }
+    grass_result begin_view(const char*, uint32_t, const FramePlan&) override { return GRASS_SUCCESS; }
     void end_frame() override {}
     uint64_t gpu_bytes() const override { return 0; }
     uint64_t dynamics_gpu_bytes() const override { return 0; }

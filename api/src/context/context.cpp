@@ -12,7 +12,8 @@
 
 grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
     : grass::Log(d), host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), maps(&host),
-      plan(&host), plan_scratch(&host), dynamics(&host), cache_directory(grass::StlAllocator<char>(&host)) {
+      plan(&host), views(&host, &plan), plan_scratch(&host), dynamics(&host),
+      cache_directory(grass::StlAllocator<char>(&host)) {
     if (d.cache_directory && d.cache_directory[0]) {
         cache_directory.assign(d.cache_directory, d.cache_directory + std::strlen(d.cache_directory) + 1);
         desc.cache_directory = cache_directory.data();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "context/backend.hpp"
+#include "context/frame_views.hpp"
 #include "dynamics/dynamics_state.hpp"
 #include "foundation/allocator.hpp"
 #include "foundation/frame_plan.hpp"
@@ -40,7 +41,9 @@ struct grass_context : grass::Log {
     grass::HandlePool<grass::Patch> patches;
     grass::HandlePool<grass::Field> fields;
     grass::HandlePool<grass::DesignMap> maps;
-    grass::FramePlan plan;
+    grass::FramePlan plan;   // view 0 of the frame (the only one of grass_begin_frame)
+    grass::FrameViews views; // every planned view of the frame, plan first
+    grass::HostFrame host_frame;
     grass::PlanScratch plan_scratch;
     grass::DynamicsState dynamics; // wind, colliders, the interaction map's state, the clock
     bool in_frame = false;
@@ -84,6 +87,16 @@ inline grass_result check_entry(grass_context* ctx, const char* function) {
 // current. `GRASS_TRY(grass::check_gpu_current(ctx, fn));` before anything else.
 inline grass_result check_gpu_current(grass_context* ctx, const char* function) {
     return ctx->backend ? ctx->backend->check_current(function) : GRASS_SUCCESS;
+}
+
+// The view a draw call names (grass_gl_render_view, grass_vk_record_view; 0 for
+// grass_gl_render and grass_vk_record): one planned in the begun frame.
+inline grass_result check_view_planned(grass_context* ctx, const char* function, uint32_t view) {
+    if (view < ctx->views.count()) return GRASS_SUCCESS;
+    return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                     "%s: view is %u, but the begun frame has %u planned view(s) (grass_plan_view numbers them "
+                     "from 0)",
+                     function, view, ctx->views.count());
 }
 
 // Runs `body` and turns C++ exceptions into result codes (std::bad_alloc into

@@ -49,8 +49,7 @@ grass_result check_field_maps(grass_context* ctx, const char* fn, uint32_t field
     return GRASS_SUCCESS;
 }
 
-grass_result check_plan(grass_context* ctx, const char* fn) {
-    const FramePlan& plan = ctx->plan;
+grass_result check_plan(grass_context* ctx, const char* fn, const FramePlan& plan) {
     const bool drawing = ctx->backend->kind() != GRASS_BACKEND_NONE; // only a drawing backend gets baked slices
     for (const TierDraw& draw : plan.draws) {
         const Field* field = ctx->fields.get(draw.field_slot);
@@ -93,7 +92,7 @@ grass_result check_plan(grass_context* ctx, const char* fn) {
                              draw_slice_set(draw));
         }
     }
-    return check_interaction_plan(ctx, fn, plan.interaction);
+    return plan.interaction.pass ? check_interaction_plan(ctx, fn, plan.interaction) : GRASS_SUCCESS;
 }
 
 grass_result check_interaction_plan(grass_context* ctx, const char* fn, const InteractionPlan& ip) {

@@ -27,12 +27,12 @@ grass_result check_slice_set(grass_context* ctx, const char* fn, uint32_t patch_
 // exactly where role r has a map, each such map live with the channels of its role.
 grass_result check_field_maps(grass_context* ctx, const char* fn, uint32_t field_slot, const FieldMaps& maps);
 
-// The context's plan, just built: each draw of a known tier kind, of a live field and its
+// A view's plan, just built: each draw of a known tier kind, of a live field and its
 // patch, within the plan's instances, with the field's feature mask, and (volume and image
 // draws, on a backend that draws) of a slice set the core uploaded for the patch; the
 // responsive feature bits only past the map roles (kFeatureInteraction only while the map is
 // bound); and the interaction plan (check_interaction_plan).
-grass_result check_plan(grass_context* ctx, const char* fn);
+grass_result check_plan(grass_context* ctx, const char* fn, const FramePlan& plan);
 
 // Each level's tile lists: tiles^2 + 1 ascending offsets covering every entry, each entry a
 // collider of the plan, tiles x tile size = the resolution.

@@ -46,6 +46,37 @@ DynamicsFrame plan_dynamics(DynamicsState* state_out, FramePlan* plan_out, Log* 
     return out;
 }
 
+DynamicsFrame plan_view_dynamics(const DynamicsState& state, const FramePlan& first, FramePlan* plan_out,
+                                 const grass_view_desc& view) {
+    FramePlan& plan = *plan_out;
+    FrameUniforms& f = plan.frame;
+    const double dt = first.stats.time_step;
+    plan.stats.time_step = dt;
+    clear_responsive_uniforms(&f);
+    DynamicsFrame out;
+    out.wind = wind_is_active(state.wind);
+    const MapFrame axes = map_frame(state.interaction, view.camera_position, 0.0);
+    for (int c = 0; c < 3; ++c) out.map_up[c] = axes.up[c];
+    if (out.wind) pack_wind(state.wind, view.camera_position, view.time, axes.up, &f);
+    const InteractionPlan& map = first.interaction;
+    if (map.levels > 0) { // view 0's map, window and uniforms; this camera's offset from view 0's
+        std::memcpy(f.map_up, first.frame.map_up, sizeof(f.map_up));
+        std::memcpy(f.map_axis_u, first.frame.map_axis_u, sizeof(f.map_axis_u));
+        std::memcpy(f.map_axis_v, first.frame.map_axis_v, sizeof(f.map_axis_v));
+        std::memcpy(f.map_levels, first.frame.map_levels, sizeof(f.map_levels));
+        for (int c = 0; c < 3; ++c) {
+            f.map_offset[c] = static_cast<float>(view.camera_position[c] - first.origin[c]);
+            out.map_up[c] = first.frame.map_up[c];
+        }
+        plan.interaction.levels = map.levels;
+        plan.interaction.resolution = map.resolution;
+        for (int l = 0; l < 2; ++l) plan.interaction.level[l] = map.level[l];
+    }
+    out.map = map.levels > 0;
+    if (out.wind || out.map) f.wind_shape[3] = static_cast<float>(dt);
+    return out;
+}
+
 void commit_dynamics(DynamicsState* state_out) {
     DynamicsState& state = *state_out;
     state.has_time = true;

@@ -26,6 +26,12 @@ struct DynamicsFrame {
 // interaction_texels, time_step) for `view` and keeps what to commit in *state.
 DynamicsFrame plan_dynamics(DynamicsState* state, FramePlan* plan, Log* log, const grass_view_desc& view);
 
+// A later view of the frame whose view 0 is `first` (planned by plan_dynamics): the same
+// step and wind, from this view's camera, and view 0's interaction map read from here
+// (FrameUniforms::map_offset); no pass of its own (plan's interaction keeps no colliders).
+DynamicsFrame plan_view_dynamics(const DynamicsState& state, const FramePlan& first, FramePlan* plan,
+                                 const grass_view_desc& view);
+
 // After the frame has begun: the time and the map's state become the previous frame's.
 void commit_dynamics(DynamicsState* state);
 

@@ -84,6 +84,7 @@ void plan_interaction(const DynamicsState& state, const double camera[3], double
     plan->stats.colliders = state.colliders.size();
     if (!exists) return; // no map: levels 0, the uniforms stay zero
     const grass_interaction_desc& d = state.interaction;
+    ip.pass = true;
     ip.map_is_new = !state.map.exists;
     bool clear_all = ip.map_is_new || state.map.clear_pending;
     // The height anchor: at the camera when the map is (re)made, moved when the camera is

@@ -1,4 +1,5 @@
-// C entry points for frames: begin (validate the view, plan), end, stats.
+// C entry points for frames and their views (grass.h "Frames and views"): begin the host's
+// frame, validate and plan each view, end; stats.
 #include "context/context.hpp"
 #include "context/invariants.hpp"
 #include "dynamics/dynamics_plan.hpp"
@@ -147,8 +148,8 @@ grass_result validate_view(grass_context* ctx, const char* fn, const grass_view_
 
 // Before the backend's begin_frame: the blade curves of each patch a responsive draw uses,
 // once per patch.
-grass_result upload_blade_curves(grass_context* ctx) {
-    for (const TierDraw& draw : ctx->plan.draws) {
+grass_result upload_blade_curves(grass_context* ctx, const FramePlan& plan) {
+    for (const TierDraw& draw : plan.draws) {
         if ((draw.features & kBladeCurveFeatures) == 0) continue;
         Patch* patch = ctx->patches.get(draw.patch_slot);
         if (patch->blade_curves_uploaded) continue;
@@ -159,6 +160,78 @@ grass_result upload_blade_curves(grass_context* ctx) {
     return GRASS_SUCCESS;
 }
 
+grass_result refuse_in_frame(grass_context* ctx, const char* fn) {
+    if (!ctx->in_frame) return GRASS_SUCCESS;
+    return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_ALREADY_BEGUN,
+                     "%s: a frame has already begun; call grass_end_frame first", fn);
+}
+
+grass_result validate_frame(grass_context* ctx, const char* fn, const grass_frame_desc* frame) {
+    GRASS_TRY(GRASS_CHECK_DESC(ctx, fn, frame, GRASS_STRUCT_TYPE_FRAME_DESC));
+    const HostFrame& last = ctx->host_frame;
+    if (frame->frame_index == 0 || frame->frame_index <= last.index) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: frame->frame_index is %llu; it must be at least 1 and greater than the previous "
+                         "frame's %llu",
+                         fn, static_cast<unsigned long long>(frame->frame_index),
+                         static_cast<unsigned long long>(last.index));
+    }
+    if (frame->completed_frame_index >= frame->frame_index || frame->completed_frame_index < last.completed) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: frame->completed_frame_index is %llu; it must be less than frame_index %llu and not "
+                         "less than the previous frame's %llu",
+                         fn, static_cast<unsigned long long>(frame->completed_frame_index),
+                         static_cast<unsigned long long>(frame->frame_index),
+                         static_cast<unsigned long long>(last.completed));
+    }
+    return check_range(ctx, fn, "frame->time", frame->time, -1e9, 1e9);
+}
+
+// Begins a validated host frame; `implied`: grass_begin_frame's, whose host promises that the
+// frame frames_in_flight before has finished. The backend may refuse it: nothing changes then.
+grass_result begin_host_frame(grass_context* ctx, const char* fn, const grass_frame_desc& frame, bool implied) {
+    HostFrame next;
+    next.index = frame.frame_index;
+    next.completed = frame.completed_frame_index;
+    next.time = frame.time;
+    GRASS_TRY(ctx->backend->begin_host_frame(fn, next, implied));
+    ctx->host_frame = next;
+    ctx->views.begin();
+    ctx->in_frame = true;
+    ctx->frame_number += 1;
+    return GRASS_SUCCESS;
+}
+
+// Plans the next view of the begun frame from a validated view.
+grass_result plan_view(grass_context* ctx, const char* fn, const grass_view_desc& view,
+                       const ViewExtensions& extensions) {
+    const uint32_t index = ctx->views.count();
+    FramePlan& plan = ctx->views.next();
+    const FramePlanning planning{ctx->fields,
+                                 ctx->patches,
+                                 ctx->maps,
+                                 ctx->dynamics,
+                                 plan,
+                                 ctx->plan_scratch,
+                                 *ctx,
+                                 ctx->lod_callbacks_running,
+                                 ctx->desc.depth_mode,
+                                 ctx->backend ? ctx->backend->render_target() : RenderTarget{},
+                                 ctx->host_frame.time,
+                                 index > 0 ? &ctx->views.plan(0) : nullptr};
+    GRASS_TRY(build_frame_plan(planning, view, extensions));
+    GRASS_TRY(check_plan(ctx, fn, plan));
+    GRASS_TRY(upload_blade_curves(ctx, plan));
+    GRASS_TRY(ctx->backend->begin_view(fn, index, plan));
+    if (index == 0) commit_dynamics(&ctx->dynamics); // one step per frame
+    ctx->views.commit();
+    return GRASS_SUCCESS;
+}
+
+void end_frame(grass_context* ctx) {
+    ctx->backend->end_frame();
+    ctx->in_frame = false;
+}
 } // namespace
 } // namespace grass
 
@@ -197,35 +270,74 @@ GRASS_API grass_lod_origin_desc grass_default_lod_origin_desc(void) {
     return d;
 }
 
+GRASS_API grass_frame_desc grass_default_frame_desc(void) {
+    grass_frame_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_FRAME_DESC;
+    d.frame_index = 1;
+    return d;
+}
+
 GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_view_desc* view) {
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_begin_frame", [&] {
         const char* fn = "grass_begin_frame";
         GRASS_TRY(grass::check_gpu_current(context, fn)); // responsive grass uploads here
-        if (context->in_frame) {
-            return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_ALREADY_BEGUN,
-                                 "%s: a frame has already begun; call grass_end_frame first", fn);
+        GRASS_TRY(grass::refuse_in_frame(context, fn));
+        // The view first: a refused view begins no frame.
+        grass::ViewExtensions extensions;
+        GRASS_TRY(grass::validate_view(context, fn, view, &extensions));
+        grass_frame_desc frame = grass_default_frame_desc();
+        frame.frame_index = context->host_frame.index + 1;
+        frame.completed_frame_index = context->host_frame.completed;
+        frame.time = view->time;
+        GRASS_TRY(grass::begin_host_frame(context, fn, frame, true));
+        // A view that fails to plan (an error, or std::bad_alloc on its way to guarded) leaves
+        // no frame begun, as before grass_begin_host_frame existed.
+        struct EndUnlessPlanned {
+            grass_context* ctx;
+            bool planned = false;
+            ~EndUnlessPlanned() {
+                if (!planned) grass::end_frame(ctx);
+            }
+        } frame_guard{context};
+        GRASS_TRY(grass::plan_view(context, fn, *view, extensions));
+        frame_guard.planned = true;
+        return GRASS_SUCCESS;
+    });
+}
+
+GRASS_API grass_result grass_begin_host_frame(grass_context* context, const grass_frame_desc* frame) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    return guarded(context, "grass_begin_host_frame", [&] {
+        const char* fn = "grass_begin_host_frame";
+        GRASS_TRY(grass::check_gpu_current(context, fn));
+        GRASS_TRY(grass::refuse_in_frame(context, fn));
+        GRASS_TRY(grass::validate_frame(context, fn, frame));
+        return grass::begin_host_frame(context, fn, *frame, false);
+    });
+}
+
+GRASS_API grass_result grass_plan_view(grass_context* context, const grass_view_desc* view, uint32_t* out_view) {
+    if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
+    return guarded(context, "grass_plan_view", [&] {
+        const char* fn = "grass_plan_view";
+        GRASS_TRY(grass::check_gpu_current(context, fn)); // responsive grass uploads here
+        GRASS_TRY(grass::check_not_null(context, fn, "out_view", out_view));
+        if (!context->in_frame) {
+            return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
+                                 "%s: no frame has begun; call grass_begin_host_frame first", fn);
+        }
+        if (context->views.count() >= GRASS_MAX_VIEWS_PER_FRAME) {
+            return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_OUT_OF_RANGE,
+                                 "%s: the frame has %u views already, GRASS_MAX_VIEWS_PER_FRAME", fn,
+                                 context->views.count());
         }
         grass::ViewExtensions extensions;
         GRASS_TRY(grass::validate_view(context, fn, view, &extensions));
-        const grass::FramePlanning planning{context->fields,
-                                            context->patches,
-                                            context->maps,
-                                            context->dynamics,
-                                            context->plan,
-                                            context->plan_scratch,
-                                            *context,
-                                            context->lod_callbacks_running,
-                                            context->desc.depth_mode,
-                                            context->backend ? context->backend->render_target()
-                                                             : grass::RenderTarget{}};
-        GRASS_TRY(grass::build_frame_plan(planning, *view, extensions));
-        GRASS_TRY(grass::check_plan(context, fn));
-        GRASS_TRY(grass::upload_blade_curves(context));
-        GRASS_TRY(context->backend->begin_frame(context->plan));
-        grass::commit_dynamics(&context->dynamics);
-        context->in_frame = true;
-        context->frame_number += 1;
+        const uint32_t index = context->views.count();
+        GRASS_TRY(grass::plan_view(context, fn, *view, extensions));
+        *out_view = index;
         return GRASS_SUCCESS;
     });
 }
@@ -237,8 +349,7 @@ GRASS_API grass_result grass_end_frame(grass_context* context) {
         return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_NOT_BEGUN,
                              "grass_end_frame: no frame has begun; call grass_begin_frame first");
     }
-    context->backend->end_frame();
-    context->in_frame = false;
+    grass::end_frame(context);
     return GRASS_SUCCESS;
 }
 
@@ -248,7 +359,9 @@ GRASS_API grass_result grass_get_frame_stats(const grass_context* context, grass
     const char* fn = "grass_get_frame_stats";
     GRASS_TRY(grass::check_entry(ctx, fn));
     GRASS_TRY(grass::check_not_null(ctx, fn, "out_stats", out_stats));
-    grass::write_out_struct(context->header_minor, context->plan.stats, out_stats);
+    const uint32_t views = context->views.count(); // the last planned view's
+    const grass::FramePlan& last = views > 0 ? context->views.plan(views - 1) : context->plan;
+    grass::write_out_struct(context->header_minor, last.stats, out_stats);
     return GRASS_SUCCESS;
 }
 

@@ -40,8 +40,12 @@ struct FrameUniforms {
                                   // [2] x: speed (m/s), y: radius (m), z: seconds since start_time (BLAST),
                                   //     w: duration (s)
                                   // [3] x: front speed (m/s), yzw: unused
+    // xyz: this view's camera relative to the camera the interaction map's window follows (view 0
+    // of the frame, grass.h "Frames and views"): interaction.glsl adds it to a camera-relative point
+    // to read the map of view 0's uniforms above. Zero in view 0. w: unused.
+    float map_offset[4];
 };
-static_assert(sizeof(FrameUniforms) == 1312, "std140 Frame block");
+static_assert(sizeof(FrameUniforms) == 1328, "std140 Frame block");
 
 // The host's render target as the shaders must know it, which only a backend knows
 // (Backend::render_target): its samples per pixel (sample_count() of blade_interface.glsl)
@@ -182,6 +186,10 @@ struct InteractionPlan {
                          // (never made, or dropped by grass_set_interaction): a backend may
                          // release its textures. While the map exists every frame runs the pass.
     uint32_t resolution = 0;
+    // The frame's pass is this plan's (view 0's, grass.h "Frames and views"): its colliders and
+    // tile lists are here. A later view of the frame copies levels, resolution and level (it
+    // reads the map) and has no pass.
+    bool pass = false;
     bool map_is_new = false; // the backend makes (or remakes, at a new resolution) the map's textures
     InteractionLevelUniforms level[2]{};
     Vector<GpuCollider> colliders;
@@ -189,6 +197,7 @@ struct InteractionPlan {
     Vector<uint32_t> tile_colliders[2];
     void clear() {
         levels = 0;
+        pass = false;
         map_is_new = false;
         colliders.clear();
         for (int l = 0; l < 2; ++l) {
@@ -202,8 +211,9 @@ struct FramePlan {
     explicit FramePlan(HostAllocator* host)
         : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host) {}
     FrameUniforms frame{};
-    bool stereo = false;   // a stereo frame: `eyes` follows `frame` in the Frame block (RenderTarget::views 2)
-    StereoUniforms eyes{}; // stereo frames only
+    double origin[3] = {0, 0, 0}; // world position every position of the plan is relative to (the camera)
+    bool stereo = false;          // a stereo frame: `eyes` follows `frame` in the Frame block (RenderTarget::views 2)
+    StereoUniforms eyes{};        // stereo frames only
     int32_t viewport[4] = {0, 0, 0, 0};
     uint32_t flags = 0;             // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
                                     // draw as debug boxes instead of its tier

@@ -605,7 +605,7 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
         plan.frame.ambient_color[c] = view.ambient_color[c];
     }
     plan.frame.sun_direction[3] = plan.frame.sun_color[3] = plan.frame.ambient_color[3] = 0.0f;
-    plan.frame.params[0] = static_cast<float>(std::fmod(view.time, 86400.0));
+    plan.frame.params[0] = static_cast<float>(std::fmod(in.time, 86400.0));
     plan.frame.params[1] = static_cast<float>(view.flags);
     plan.frame.params[2] = in.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
     // The target's samples and clip convention, as the backend reports them.
@@ -616,8 +616,10 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     // Responsive grass is planned around the plan's origin (the wind's phases, the
     // interaction map's window): the eyes of a stereo frame share it.
     grass_view_desc origin_view = view;
-    for (int c = 0; c < 3; ++c) origin_view.camera_position[c] = camera[c];
-    const DynamicsFrame dynamics = plan_dynamics(&in.dynamics, &plan, &in.log, origin_view);
+    for (int c = 0; c < 3; ++c) origin_view.camera_position[c] = plan.origin[c] = camera[c];
+    origin_view.time = in.time;
+    const DynamicsFrame dynamics = in.first_view ? plan_view_dynamics(in.dynamics, *in.first_view, &plan, origin_view)
+                                                 : plan_dynamics(&in.dynamics, &plan, &in.log, origin_view);
 
     const ViewCulling culling(view_projection, in.depth_mode);
     frusta.culling[0] = &culling;

@@ -30,6 +30,10 @@ struct FramePlanning {
     uint32_t& lod_callbacks_running;
     grass_depth_mode depth_mode;
     RenderTarget target; // the target's samples and clip convention, as the backend reports them
+    double time;         // the frame's (grass_frame_desc.time; grass_begin_frame: the view's)
+    // The frame's view 0, when this plan is a later view of it: the responsive grass stepped
+    // there, and this view reads its interaction map (plan_view_dynamics). nullptr: view 0.
+    const FramePlan* first_view;
 };
 
 // The validated extensions chained on grass_view_desc.next (each may be absent).

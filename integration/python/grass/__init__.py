@@ -484,6 +484,26 @@ class Context:
         view = _copy(where, "view", view, grass_view_desc, " (grass.view_desc(...))")  # noqa: F405
         self._call(where, lib.grass_begin_frame, ctypes.byref(view))
 
+    def begin_host_frame(self, frame_index, completed_frame_index=0, time=0.0):
+        """grass_begin_host_frame: begins the host's frame `frame_index` (> every earlier one),
+        knowing frames up to `completed_frame_index` finished on the GPU; plan its views with
+        plan_view and draw them with render_gl_view / vk_record_view."""
+        where = "Context.begin_host_frame"
+        frame = lib.grass_default_frame_desc()
+        frame.frame_index = _checks.integer(where, "frame_index", frame_index, 1, 2 ** 64 - 1)
+        frame.completed_frame_index = _checks.integer(where, "completed_frame_index", completed_frame_index, 0,
+                                                      2 ** 64 - 1)
+        frame.time = _checks.real(where, "time", time, low=-1e9, high=1e9)
+        self._call(where, lib.grass_begin_host_frame, ctypes.byref(frame))
+
+    def plan_view(self, view):
+        """grass_plan_view(view): plans one more view of the begun frame; returns its index."""
+        where = "Context.plan_view"
+        view = _copy(where, "view", view, grass_view_desc, " (grass.view_desc(...))")  # noqa: F405
+        index = ctypes.c_uint32(0)
+        self._call(where, lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
+        return index.value
+
     def end_frame(self):
         self._call("Context.end_frame", lib.grass_end_frame)
 
@@ -501,6 +521,11 @@ class Context:
     def render_gl(self):
         """grass_gl_render: draws the begun frame into the bound GL draw framebuffer."""
         self._call("Context.render_gl", lib.grass_gl_render)
+
+    def render_gl_view(self, view):
+        """grass_gl_render_view: draws view `view` (plan_view's index) of the begun frame."""
+        where = "Context.render_gl_view"
+        self._call(where, lib.grass_gl_render_view, _checks.integer(where, "view", view, 0, 2 ** 32 - 1))
 
     def vk_prepare(self, command_buffer):
         """grass_vk_prepare into `command_buffer`, a raw VkCommandBuffer as an int, outside any
@@ -522,6 +547,14 @@ class Context:
         record = lib.grass_default_vk_record_desc()
         record.command_buffer = _checks.integer(where, "command_buffer", command_buffer, 0, 2 ** 64 - 1) or None
         self._call(where, lib.grass_vk_record, ctypes.byref(record))
+
+    def vk_record_view(self, view, command_buffer):
+        """grass_vk_record_view: records view `view` (plan_view's index) into `command_buffer`."""
+        where = "Context.vk_record_view"
+        index = _checks.integer(where, "view", view, 0, 2 ** 32 - 1)
+        record = lib.grass_default_vk_record_desc()
+        record.command_buffer = _checks.integer(where, "command_buffer", command_buffer, 0, 2 ** 64 - 1) or None
+        self._call(where, lib.grass_vk_record_view, index, ctypes.byref(record))
 
     # ---- stats
     def frame_stats(self):

@@ -72,6 +72,7 @@ ENUMS = {
         "GRASS_MSG_BAKE_CACHE": 405, "GRASS_MSG_DEVICE_LOST": 406, "GRASS_MSG_TIME_BACKWARDS": 407,
         "GRASS_MSG_GL_CONTEXT_NOT_CURRENT": 408, "GRASS_MSG_PIPELINE_CACHE": 409,
         "GRASS_MSG_DEBUG_LABELS_UNAVAILABLE": 410,
+        "GRASS_MSG_FRAMES_IN_FLIGHT": 411,
         "GRASS_MSG_CONTEXT_CREATED": 500, "GRASS_MSG_PATCH_GENERATED": 501,
     },
     "grass_depth_mode": {"GRASS_DEPTH_LESS": 0, "GRASS_DEPTH_GREATER": 1},
@@ -254,6 +255,11 @@ class grass_lod_origin_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("position", c_double * 3)]
 
 
+class grass_frame_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("frame_index", c_uint64),
+                ("completed_frame_index", c_uint64), ("time", c_double)]
+
+
 _KINDS = DEFINES["GRASS_TIER_KIND_COUNT"]
 
 
@@ -398,6 +404,9 @@ FUNCTIONS = {
     "grass_default_lod_origin_desc": (grass_lod_origin_desc, []),
     "grass_begin_frame": (grass_enum, [_ctx, _P(grass_view_desc)]),
     "grass_end_frame": (grass_enum, [_ctx]),
+    "grass_default_frame_desc": (grass_frame_desc, []),
+    "grass_begin_host_frame": (grass_enum, [_ctx, _P(grass_frame_desc)]),
+    "grass_plan_view": (grass_enum, [_ctx, _P(grass_view_desc), _P(c_uint32)]),
     "grass_get_frame_stats": (grass_enum, [_ctx, _P(grass_frame_stats)]),
     "grass_get_tier_gpu_ms": (grass_enum, [_ctx, _P(c_double), _P(grass_bool)]),
     "grass_default_blade_mechanics": (grass_blade_mechanics, []),
@@ -418,6 +427,7 @@ FUNCTIONS = {
     "grass_default_gl_desc": (grass_gl_desc, []),
     "grass_gl_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_gl_desc), _P(_ctx)]),
     "grass_gl_render": (grass_enum, [_ctx]),
+    "grass_gl_render_view": (grass_enum, [_ctx, c_uint32]),
     # grass_vk.h
     "grass_default_vk_desc": (grass_vk_desc, []),
     "grass_vk_create_context": (grass_enum, [c_uint32, _P(grass_context_desc), _P(grass_vk_desc), _P(_ctx)]),
@@ -427,6 +437,7 @@ FUNCTIONS = {
     "grass_vk_prepare": (grass_enum, [_ctx, _P(grass_vk_prepare_desc)]),
     "grass_default_vk_record_desc": (grass_vk_record_desc, []),
     "grass_vk_record": (grass_enum, [_ctx, _P(grass_vk_record_desc)]),
+    "grass_vk_record_view": (grass_enum, [_ctx, c_uint32, _P(grass_vk_record_desc)]),
 }
 
 

@@ -27,6 +27,23 @@ def test_a_cpu_context_plans_a_frame():
     assert ctx.handle is None
 
 
+def test_a_host_frame_plans_several_views():
+    with grass.Context() as ctx:
+        patch = ctx.create_patch(blade_count=256)
+        ctx.create_field(patch, cells_x=64, cells_z=64)
+        ctx.begin_host_frame(3, completed_frame_index=1, time=0.5)
+        assert ctx.plan_view(overhead_view()) == 0
+        assert ctx.plan_view(grass.view_desc(eye=(8.0, 30.0, 8.0), target=(8.0, 0.0, 8.1), size=(64, 64))) == 1
+        ctx.end_frame()
+        assert ctx.frame_stats().fields_drawn == 1
+        with pytest.raises(grass.GrassError) as refused:  # frame indices grow
+            ctx.begin_host_frame(3)
+        assert "frame->frame_index is 3" in str(refused.value)
+        with pytest.raises(grass.GrassError) as refused:  # checked in Python, before ctypes
+            ctx.begin_host_frame(0)
+        assert "frame_index" in str(refused.value)
+
+
 def test_errors_carry_the_result_and_the_message_id():
     messages = []
     with grass.Context(log=lambda level, mid, text: messages.append(mid)) as ctx:

@@ -2,7 +2,8 @@
  * a host's context, runs here on a CPU-only one (it plans frames and draws nothing). The
  * names the guides' fragments take as given: ctx, cd, patch, field, fd (the field's desc),
  * density (a 256 x 256 R16 density map, as the height map of design-maps.md), view, t, tests/test_count (the default lod setup),
- * the pixels heights, mown and draught, and the host's own helicopter and ball. Any message
+ * the pixels heights, mown and draught, the host's own helicopter and ball, and a host frame's
+ * engine_frame, engine_finished, seconds, main_camera and cascade_view[3]. Any message
  * grass logs at error level fails the block: a fragment must be right as written. */
 #include <grass/grass.h>
 
@@ -78,6 +79,14 @@ int main(void) {
     view.camera_position[2] = -2.0;
     view.viewport[2] = 640;
     view.viewport[3] = 360;
+    grass_view_desc main_camera = view, cascade_view[3];
+    uint64_t engine_frame = 1, engine_finished = 0;
+    double seconds = t;
+    for (k = 0; k < 3; ++k) cascade_view[k] = view;
+    (void)main_camera;
+    (void)engine_frame;
+    (void)engine_finished;
+    (void)seconds;
     if (errors) {
         fprintf(stderr, "doc-test prelude: the context's setup failed\n");
         return 1;
