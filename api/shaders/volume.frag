@@ -224,8 +224,7 @@ void main() {
     // this one is the line through the fragment along it, started outside the cuboid (a cell
     // before the sphere around it), and t counts from there. Only the fragment's position
     // across the axis counts: a face seen almost edge-on (exactly edge-on is a front face) is
-    // shaded at positions extrapolated far along it, which left its rays outside the blade
-    // layer (lines of the clear colour along the carriers' edges, seen from straight above).
+    // shaded at positions extrapolated along it, which may lie far from the cuboid.
     // What depends on the distance to the viewer does not use t: the lod distances measure
     // the hit from the lod origin, the mip levels take the pixel's footprint (below), the
     // depth the hit's position.
