@@ -15,7 +15,7 @@ layout(location = 0) out vec4 out_color;
 void main() {
     load_blocks();
     vec3 n = normalize(v_normal_opacity.xyz);
-    vec3 to_camera = -v_position_density.xyz;
+    vec3 to_camera = towards_viewer(v_position_density.xyz);
     if (dot(n, to_camera) < 0.0) n = -n; // two-sided: light the side that faces the camera
 
     float ao =
