@@ -77,6 +77,8 @@ protected:
 
     Under under(const grass_collider& c, const std::vector<float>& before, const std::vector<float>& after, double cx,
                 double cz, double half, double tolerance) const;
+    void expect_pressed(const grass_collider& c, const std::vector<float>& before, const std::vector<float>& after,
+                        double cx, double cz, double half, double tolerance) const;
 
     void set_mechanics() { ASSERT_EQ(grass_set_blade_mechanics(ctx, patch, &mechanics), GRASS_SUCCESS) << log; }
     void set_fine_map() {
@@ -153,6 +155,19 @@ Under ResponsiveTest::under(const grass_collider& c, const std::vector<float>& b
     return r;
 }
 
+// A collider pressed the grass: over its footprint the grass stood above its underside before
+// (not vacuous), is still drawn after, and nowhere stands above the underside + `tolerance`.
+void ResponsiveTest::expect_pressed(const grass_collider& c, const std::vector<float>& before,
+                                    const std::vector<float>& after, double cx, double cz, double half,
+                                    double tolerance) const {
+    const auto [footprint, above_before, grass_after, inside, worst] = under(c, before, after, cx, cz, half, tolerance);
+    const char* name = c.shape == GRASS_COLLIDER_SPHERE ? "sphere" : "capsule";
+    ASSERT_GT(footprint, 100u) << name;
+    EXPECT_GT(double(above_before) / footprint, 0.2) << name;
+    EXPECT_GT(double(grass_after) / footprint, 0.3) << name << ": the pressed grass must still be drawn";
+    EXPECT_EQ(inside, 0u) << name << ": grass up to " << worst << " m above the underside";
+}
+
 // A resting sphere and a level capsule: over each one's footprint the grass's top stays
 // below its underside (within the tolerance: a blade's width and the map's texels), where
 // before the collider came most of it stood above.
@@ -169,16 +184,7 @@ TEST_P(ResponsiveTest, NoBladeInsideRestingColliders) {
     grass_host::Image image;
     const std::vector<float> after = heights(top_view(cx, cz, half, 0.0), &image);
     save(image, "pressed");
-    for (const grass_collider& c : colliders) {
-        const auto [footprint, above_before, grass_after, inside, worst] =
-            under(c, before, after, cx, cz, half, kTolerance);
-        const char* name = c.shape == GRASS_COLLIDER_SPHERE ? "sphere" : "capsule";
-        ASSERT_GT(footprint, 100u) << name;
-        // Not vacuous: the grass stood above the underside before, and is still drawn.
-        EXPECT_GT(double(above_before) / footprint, 0.2) << name;
-        EXPECT_GT(double(grass_after) / footprint, 0.3) << name << ": the pressed grass must still be drawn";
-        EXPECT_EQ(inside, 0u) << name << ": grass up to " << worst << " m above the underside";
-    }
+    for (const grass_collider& c : colliders) expect_pressed(c, before, after, cx, cz, half, kTolerance);
 }
 
 // Frames and views (grass.h): view 0, a camera 0.6 m aside and 1.2 m up, moves the collider
@@ -220,15 +226,7 @@ TEST_P(ResponsiveTest, ALaterViewOfTheFrameReadsTheMapOfView0) {
     host->begin_grass_frame = nullptr;
     host->draw_grass = nullptr;
     save(image, "pressed_view_1");
-    for (const grass_collider& c : colliders) {
-        const auto [footprint, above_before, grass_after, inside, worst] =
-            under(c, before, after, cx, cz, half, kTolerance);
-        const char* name = c.shape == GRASS_COLLIDER_SPHERE ? "sphere" : "capsule";
-        ASSERT_GT(footprint, 100u) << name;
-        EXPECT_GT(double(above_before) / footprint, 0.2) << name;
-        EXPECT_GT(double(grass_after) / footprint, 0.3) << name << ": the pressed grass must still be drawn";
-        EXPECT_EQ(inside, 0u) << name << ": grass up to " << worst << " m above the underside";
-    }
+    for (const grass_collider& c : colliders) expect_pressed(c, before, after, cx, cz, half, kTolerance);
 }
 
 // A new passage replaces what an earlier one left (docs/responsive.md): a deep dent recovers
