@@ -5,6 +5,9 @@
 
 namespace grass_host {
 
+// The ground is drawn as kGroundTiles x kGroundTiles squares of 6 vertices (shaders/ground.vert).
+constexpr int kGroundTiles = 32;
+
 // std140 block `Ground`.
 struct GroundUniforms {
     float view_projection[16]; // projection * view rotation: camera-relative

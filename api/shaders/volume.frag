@@ -49,6 +49,8 @@ float g_alpha = 0.0;
 // (sample_coverage.glsl), the nearer blades win, not whichever carrier's back face is nearer.
 vec3 g_depth_at[5];            // the first hit, then where g_alpha first reached 1/16, 1/8, 1/4, 1/2
 int g_depth_reached = 0;       // how many of them are set
+vec2 g_plane_depth = vec2(0.0); // x: the window depth of the field's plane on the ray, y: its spread
+                                // over the pixel (0: a height map, or no plane below the ray)
 float g_depth_threshold = 0.0; // the threshold of the blade where the ray turns opaque
 
 // The opacity of a slice texel of coverage `alpha` drawn by this draw's tier: alpha
@@ -208,6 +210,30 @@ void composite_flat_ground(float t) {
     composite(g, g, t, 2, 1.0);
 }
 
+// The host's ground under a flat field. The ray's depth may lie at the horizontal slice, a
+// few centimetres above the field's plane, or on the plane itself (a view from above through
+// sparse vertical slices crosses them down to it), where the host drew its ground. With one
+// sample the ground tied with the grass at the pixel's centre, and the depth buffer's
+// rounding picked the winner (from 60 m up GL and Vulkan 9 levels apart); with several, the
+// ground has a depth per sample and the volume one per fragment, and the samples whose ground
+// lies nearer than the centre won (rows of ground through the grass, 3-28 levels darker than
+// one sample from 20 and 60 m up: MultisampleGroundTest). Half the plane's depth step to the
+// neighbouring pixels bounds how much nearer than at the centre it lies at a sample; the
+// written depth stays in front of that (in_front_of_plane). Derivatives: main() calls this
+// before the march, where they are defined; `on` keeps its lanes uniform.
+vec2 plane_depth(vec3 eye, vec3 dir, float plane_y, bool on) {
+    float t = dir.y < 0.0 ? (plane_y - eye.y) / dir.y : -1.0;
+    vec3 p = mat3(field.patch_to_world) * (eye + dir * max(t, 0.0) - v_camera_local);
+    float depth = window_depth(p);
+    float spread = 0.5 * (abs(dFdx(depth)) + abs(dFdy(depth)));
+    return on && t > 0.0 ? vec2(depth, spread) : vec2(0.0);
+}
+float in_front_of_plane(float depth) {
+    if (g_plane_depth.y <= 0.0) return depth;
+    float nearest = g_plane_depth.x - frame.params.z * g_plane_depth.y; // params.z: -1 reversed depth
+    return frame.params.z > 0.0 ? min(depth, nearest) : max(depth, nearest);
+}
+
 void main() {
     load_blocks();
     vec3 size = vec3(float(v_cell.z), field.blade_params.w, float(v_cell.w));
@@ -278,6 +304,7 @@ void main() {
     // neighbours across the rays, the same at every distance (cells).
     vec3 step_dx = dFdx(v_local), step_dy = dFdy(v_local);
     float pixel_size = max(length(step_dx - dir * dot(step_dx, dir)), length(step_dy - dir * dot(step_dy, dir)));
+    g_plane_depth = plane_depth(eye, dir, box_min.y, !displaced);
 
     // The slices across x sit at x = (j + 0.5) / n for every integer j (each cell repeats
     // its n slices), likewise across z. Walk both families in order (a 2D DDA).
@@ -417,5 +444,5 @@ void main() {
     for (int i = 1; i < g_depth_reached; ++i) {
         if (0.03125 * float(1 << i) <= (g_alpha >= 0.5 ? 0.5 : 0.5 * g_alpha)) level = i;
     }
-    gl_FragDepth = window_depth(g_to_world * g_depth_at[level] + g_origin);
+    gl_FragDepth = in_front_of_plane(window_depth(g_to_world * g_depth_at[level] + g_origin));
 }
