@@ -69,6 +69,7 @@ void main() {
     float coverage = 1.0 - pow(max(1.0 - albedo.a * share, 0.0), 1.0 / sin_elevation);
     float alpha = coverage * opacity;
     if (!write_coverage(alpha)) discard;
+    if (depth_pass()) return; // the coverage's depth alone: no lighting, no colour
 
     // The slice's colour and heights are what a grazing ray sees (slice_baker.cpp,
     // apply_grazing): the blades' upper parts, whose ambient occlusion the height gives. Its

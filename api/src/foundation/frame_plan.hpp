@@ -215,10 +215,14 @@ struct FramePlan {
     bool stereo = false;          // a stereo frame: `eyes` follows `frame` in the Frame block (RenderTarget::views 2)
     StereoUniforms eyes{};        // stereo frames only
     int32_t viewport[4] = {0, 0, 0, 0};
-    uint32_t flags = 0;             // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
-                                    // draw as debug boxes instead of its tier
-    Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
-    Vector<TierDraw> draws;         // per field, per tier that draws something
+    uint32_t flags = 0; // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
+                        // draw as debug boxes instead of its tier
+    // A depth pass (grass_view_pass_desc, GRASS_PASS_DEPTH): every draw has kFeatureDepthPass;
+    // the backend writes no colour and biases the depth by (constant, slope).
+    bool depth_pass = false;
+    float depth_bias[2] = {0.0f, 0.0f}; // constant, slope (glPolygonOffset's units, factor)
+    Vector<TierInstance> instances;     // geometry instances of a draw are ordered front to back
+    Vector<TierDraw> draws;             // per field, per tier that draws something
     grass_frame_stats stats{};
     InteractionPlan interaction; // responsive grass: the interaction pass (levels = 0: none)
     void clear() {

@@ -100,7 +100,8 @@ uint32_t patch_indices(const PatchData& pd) {
 class FieldPlanner {
 public:
     FieldPlanner(const FramePlanning& in, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
-                 const double lod_origin[3], const Frusta& culling, const DynamicsFrame& dynamics, uint32_t view_flags)
+                 const double lod_origin[3], const Frusta& culling, const DynamicsFrame& dynamics, uint32_t view_flags,
+                 bool depth_pass)
         : in_(in), slot_(slot), field_(field), patch_(patch), culling_(culling),
           frame_(field_frame(field, camera, lod_origin)) {
         for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
@@ -112,6 +113,7 @@ public:
         features_ = field.maps.features | (dynamics.wind ? kFeatureWind : 0u) | (reads_map_ ? kFeatureInteraction : 0u);
         if (field.wind_map.active()) features_ |= kFeatureWind | kFeatureWindMap;
         if (view_flags & kDebugViewFlags) features_ |= kFeatureDebugView;
+        if (depth_pass) features_ |= kFeatureDepthPass; // the depth pass's own variant of every tier
         debug_cells_ = (view_flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
         const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
         density_map_ = density_slot != kNoMap ? in.maps.get(density_slot) : nullptr;
@@ -613,6 +615,9 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     plan.frame.target[1] = plan.frame.target[2] = plan.frame.target[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;
+    plan.depth_pass = ext.pass && ext.pass->pass == GRASS_PASS_DEPTH;
+    plan.depth_bias[0] = plan.depth_pass ? ext.pass->depth_bias_constant : 0.0f;
+    plan.depth_bias[1] = plan.depth_pass ? ext.pass->depth_bias_slope : 0.0f;
     // Responsive grass is planned around the plan's origin (the wind's phases, the
     // interaction map's window): the eyes of a stereo frame share it.
     grass_view_desc origin_view = view;
@@ -629,7 +634,7 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
         const Field* field = in.fields.get(slot);
         if (!field) continue;
         FieldPlanner planner(in, slot, *field, *in.patches.get(field->patch_slot), camera, lod_origin, frusta, dynamics,
-                             view.flags);
+                             view.flags, plan.depth_pass);
         const grass_result r = planner.run();
         if (r != GRASS_SUCCESS) {
             plan.clear();
