@@ -35,7 +35,8 @@ protected:
     // Geometry near the main camera, a volume of 2 slices, the horizontal slice far
     // (frame_views_test.cpp's field).
     void make_tiered_field() {
-        static const grass_tier_desc tiers[3] = {{GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 2}, {GRASS_TIER_IMAGE, 0}};
+        static const grass_tier_desc tiers[3] = {
+            {GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 2}, {GRASS_TIER_IMAGE, 0}};
         const float bands[3][4] = {{0.0f, 3.0f, 0.0f, 1.0f}, {2.0f, 7.0f, 1.0f, 1.5f}, {5.5f, INFINITY, 1.5f, 0.0f}};
         for (uint32_t t = 0; t < 3; ++t) {
             grass_lod_test& b = tests_[t];
@@ -119,8 +120,7 @@ TEST_P(DepthPassTest, TheDepthPassWritesTheColourPassDepthAndNoColour) {
 
     // No colour: the target is as the host cleared it, byte for byte.
     ASSERT_EQ(depth.rgba.size(), clear.rgba.size());
-    EXPECT_EQ(std::memcmp(depth.rgba.data(), clear.rgba.data(), clear.rgba.size()), 0)
-        << "the depth pass wrote colour";
+    EXPECT_EQ(std::memcmp(depth.rgba.data(), clear.rgba.data(), clear.rgba.size()), 0) << "the depth pass wrote colour";
 
     // Grass depth where the colour pass has grass, and the colour pass's depth.
     size_t colour_grass = 0, disagree = 0, compared = 0, far_off = 0;

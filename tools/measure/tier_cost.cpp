@@ -213,6 +213,10 @@ Subcommand add_tier_cost(CLI::App& measure) {
         ->check(CLI::IsMember({"geometry", "volume", "image"}))
         ->excludes(maps)
         ->excludes(features);
+    app->add_flag("--depth-pass", o->depth_pass,
+                  "each row of the plain table also as a depth pass of the same view (docs/records/depth-pass.md)")
+        ->excludes(maps)
+        ->excludes(features);
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));
