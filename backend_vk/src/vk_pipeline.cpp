@@ -124,7 +124,7 @@ bool BladePipeline::create(const PipelineTarget& target, VkFailure* failure, con
 
 bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure,
                                    const char** what) {
-    if (variant.features >= kFeatureMaskCount) return false;
+    if (variant.features >= kColourFeatureMasks) return false;
     if (has_variant(variant, depth_test)) return true;
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
     // A multiview target (stereo) runs the GRASS_MULTIVIEW modules for every pipeline.
@@ -161,7 +161,7 @@ void BladePipeline::destroy_variants(uint32_t features) {
 }
 
 void BladePipeline::destroy() {
-    for (uint32_t f = 0; f < kFeatureMaskCount; ++f) destroy_variants(f);
+    for (uint32_t f = 0; f < kColourFeatureMasks; ++f) destroy_variants(f);
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
     if (sampler_) fn_.vkDestroySampler(device_, sampler_, fn_.callbacks());

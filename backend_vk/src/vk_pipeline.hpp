@@ -63,6 +63,9 @@ static_assert(kPipelineBlade == static_cast<uint32_t>(kShaderBlades) &&
               "the programs of foundation/shader_variants.hpp");
 // Feature masks are 10 bits (kFeatureMaskCount, backend.hpp): one per MapRole, then
 // kFeatureWind, kFeatureInteraction, kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView.
+// The 11th, kFeatureDepthPass, never reaches this backend (no depth-only pipelines yet: the
+// core refuses a depth view on Vulkan), so its table holds the colour masks alone.
+constexpr uint32_t kColourFeatureMasks = kFeatureDepthPass;
 
 struct PipelineTarget {
     VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats
@@ -137,7 +140,7 @@ public:
     // The depth-tested pipelines of every kind for `features` (a field's maps: upload_field).
     bool create_variants(uint32_t features, VkFailure* failure, const char** what);
     bool has_variant(const ShaderVariant& v, bool depth_test) const {
-        return v.features < kFeatureMaskCount &&
+        return v.features < kColourFeatureMasks &&
                pipelines_[v.features][v.program][depth_test ? 0 : 1] != VK_NULL_HANDLE;
     }
 
@@ -161,7 +164,7 @@ private:
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     // [features][kind][0 = depth tested, 1 = depth off]; VK_NULL_HANDLE: not made yet
-    VkPipeline pipelines_[kFeatureMaskCount][kPipelineKindCount][2] = {};
+    VkPipeline pipelines_[kColourFeatureMasks][kPipelineKindCount][2] = {};
 };
 
 } // namespace grass::vk
