@@ -933,7 +933,8 @@ typedef enum grass_pass_kind {
      * (the blades as they are, the volume tier's ray to the depth the colour pass gives it,
      * the image tier's slice where its coverage passes) with a shader variant of its own that
      * does no lighting, and writes no colour (GL: every draw buffer's colour mask is off while
-     * grass draws it). Vulkan: the context needs a depth-only pass; see grass_vk.h. */
+     * grass draws it). GL only for now: a Vulkan context refuses a depth view
+     * (GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED: no depth-only pipelines yet). */
     GRASS_PASS_DEPTH = 1
 } grass_pass_kind;
 
@@ -947,11 +948,11 @@ typedef struct grass_view_pass_desc {
     grass_pass_kind pass;   /* default GRASS_PASS_COLOR */
     /* The depth bias of a depth pass, as the host's own shadow casters take it: GL
      * glPolygonOffset(depth_bias_slope, depth_bias_constant) while grass draws (restored
-     * after), Vulkan vkCmdSetDepthBias's constant and slope factors. Added to the depth in
-     * the host's convention: positive pushes grass away from a GRASS_DEPTH_LESS light,
-     * negative from a GRASS_DEPTH_GREATER (reversed) one. constant within +-65536 units of
-     * the depth's resolution, slope within +-64; 0 and 0 (the default) bias nothing. Ignored
-     * by a colour pass. */
+     * after; the volume tier, which writes its own depth, adds the bias its carrier box
+     * got). Added to the depth in the host's convention: positive pushes grass away from a
+     * GRASS_DEPTH_LESS light, negative from a GRASS_DEPTH_GREATER (reversed) one. constant
+     * within +-65536 units of the depth's resolution, slope within +-64; 0 and 0 (the
+     * default) bias nothing. Ignored by a colour pass. */
     float depth_bias_constant;
     float depth_bias_slope;
 } grass_view_pass_desc;
