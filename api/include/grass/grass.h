@@ -933,8 +933,7 @@ typedef enum grass_pass_kind {
      * (the blades as they are, the volume tier's ray to the depth the colour pass gives it,
      * the image tier's slice where its coverage passes) with a shader variant of its own that
      * does no lighting, and writes no colour (GL: every draw buffer's colour mask is off while
-     * grass draws it). GL only for now: a Vulkan context refuses a depth view
-     * (GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED: no depth-only pipelines yet). */
+     * grass draws it). GL only for now: Vulkan refuses a depth view (GRASS_ERROR_UNSUPPORTED). */
     GRASS_PASS_DEPTH = 1
 } grass_pass_kind;
 
