@@ -28,7 +28,15 @@ foreach(input IN LISTS INPUTS)
   get_filename_component(name "${input}" NAME)
   string(REPLACE "." "_" name "${name}")
   inline_includes("${input}" source 0)
-  string(APPEND body "extern const char* const ${name};\nconst char* const ${name} = R\"glsl(${source})glsl\";\n")
+  # As bytes, not a string literal: C++ compilers need only accept literals up to 65536
+  # characters (clang warns past it, MSVC stops at 16380 a piece), and volume.frag with its
+  # includes is longer.
+  file(WRITE "${OUTPUT}.${name}.glsl" "${source}")
+  file(READ "${OUTPUT}.${name}.glsl" hex HEX)
+  file(REMOVE "${OUTPUT}.${name}.glsl")
+  string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")
+  string(APPEND body "extern const char* const ${name};\nstatic const unsigned char ${name}_bytes[] = {\n${bytes}0x00};\n"
+                     "const char* const ${name} = reinterpret_cast<const char*>(${name}_bytes);\n")
 endforeach()
 string(APPEND body "} // namespace ${NAMESPACE}\n")
 file(WRITE "${OUTPUT}.tmp" "${body}")

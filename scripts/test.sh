@@ -59,7 +59,7 @@ stage "asan: tests"
 # 5 to 11 times their plain time (each instance of a draw gets a 160-170 KB vertex buffer,
 # which ASan's allocator maps and unmaps afresh), and the grass code they run is what their
 # GL variants (run here) and the other Vulkan render tests (run here) run.
-asan_skip='^Backends/(MoireTest|TierDensityTest|FarTiersTest|TierTimingTest)\..*/vk'
+asan_skip='^Backends/(MoireTest|TierDensityTest|FarTiersTest|TierTimingTest|OrthographicTest)\..*/vk'
 asan_skip+='|^Backends/OutputEncodingTest\.AUnormTargetWithEncodeSrgbMatchesAnSrgbTarget/vk'
 ctest --test-dir build-asan --output-on-failure -j "$jobs" -LE static -E "$asan_skip"
 

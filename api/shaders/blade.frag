@@ -16,7 +16,7 @@ void main() {
     load_blocks();
     if (depth_pass()) return; // the geometry's depth alone: no colour, no alpha to coverage
     vec3 n = normalize(v_normal_opacity.xyz);
-    vec3 to_camera = -v_position_density.xyz;
+    vec3 to_camera = towards_viewer(v_position_density.xyz);
     if (dot(n, to_camera) < 0.0) n = -n; // two-sided: light the side that faces the camera
 
     float ao =

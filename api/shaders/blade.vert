@@ -55,7 +55,7 @@ void main() {
     float density = local_density(cell_point);
     float ground = terrain_height(cell_point);
     vec3 root_position = mat3(field.patch_to_world) * vec3(root.x, ground, root.y) + GRASS_INSTANCE_ORIGIN(i_origin.xyz);
-    float opacity = tier_blade_opacity(length(root_position), a_threshold, density + kThresholdEpsilon);
+    float opacity = tier_blade_opacity(lod_distance(root_position), a_threshold, density + kThresholdEpsilon);
 
     vec3 position = mat3(field.patch_to_world) * vec3(p.x, p.y + ground, p.z) + GRASS_INSTANCE_ORIGIN(i_origin.xyz);
     vec3 normal = mat3(field.patch_to_world) * n;

@@ -38,12 +38,15 @@ bool blade_culled(uint blade, vec3 v0, vec3 v1, vec3 v2, vec3 side, vec3 up, flo
 #endif
     vec4 c = field.culling;
     // Orientation (eq. 17): seen nearly edge-on, the blade is thinner than a pixel and aliases.
-    if (c.x <= 1.0 && abs(dot(normalize(v0), normalize(side))) > c.x) return true;
+    // An orthographic view sees every blade along its axis.
+    if (c.x <= 1.0 && abs(dot(normalize(towards_viewer(v0)), normalize(side))) > c.x) return true;
     // View frustum (eq. 18): root, the curve's midpoint (eq. 14) and tip all outside.
     if (c.y >= 0.0 && !blade_in_frustum(v0, v0 + 0.5 * v1 + 0.25 * v2, v0 + v2, c.y)) return true;
-    // Distance (eq. 19-20): thinning with the distance across the field's up.
+    // Distance (eq. 19-20): thinning with the distance across the field's up, from the lod
+    // origin (the plan's origin in a stereo frame, where v0 now measures from).
     if (c.z > 0.0) {
-        float keep = 1.0 - length(v0 - up * dot(v0, up)) / c.z; // share of the blades kept
+        vec3 d = v0 - frame.lod_origin.xyz;
+        float keep = 1.0 - length(d - up * dot(d, up)) / c.z; // share of the blades kept
         if (c.w >= 1.0) {
             uint n = uint(c.w + 0.5);
             if (float(blade % n) >= ceil(float(n) * keep)) return true; // eq. 20, by index

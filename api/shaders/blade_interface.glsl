@@ -56,7 +56,9 @@ struct FrameData {
     vec4 params;           // x: time in seconds, y: view flags, z: +1 depth 0 near, -1 reversed depth,
                            // w: the target's samples per pixel (as the backend reports it: write_render_target)
     vec4 target;           // x: 1 when the host's clip z runs 0..1 (Vulkan, GL_ZERO_TO_ONE clip control),
-                           // 0 for GL's default -1..1 (as the backend reports it)
+                           // 0 for GL's default -1..1 (as the backend reports it); yzw: an orthographic
+                           // view's axis (world, unit, the way it looks), zero for perspective (view_axis())
+    vec4 lod_origin;       // xyz: the lod origin relative to the plan's origin (m) (lod_distance())
     // Responsive grass (api/src/foundation/frame_plan.hpp FrameUniforms): read only by variants with
     // GRASS_WIND / GRASS_INTERACTION.
     vec4 wind;             // xyz: mean wind velocity (world m/s), w: gust strength
@@ -132,6 +134,35 @@ FieldData g_field;
 #define GRASS_VIEW_PROJECTION frame.view_projection
 #define GRASS_INSTANCE_ORIGIN(o) o
 #endif
+
+// Orthographic views (a shadow cascade, a top-down map): the view axis, the world direction
+// the view looks along, which every ray of the view is parallel to; zero for a perspective
+// view (and the eyes of a stereo frame). The same for every invocation of a draw: code that
+// branches on it runs one side, and a perspective view computes what it did before.
+vec3 view_axis() {
+    return frame.target.yzw;
+}
+bool orthographic_view() {
+    return frame.target.y != 0.0 || frame.target.z != 0.0 || frame.target.w != 0.0;
+}
+// The direction from a point (relative to the view's eye, as every position in the shaders)
+// towards the viewer, not unit: the eye's in a perspective view, against the axis in an
+// orthographic one (whose eye point is only where its box was put).
+vec3 towards_viewer(vec3 p) {
+    return orthographic_view() ? -view_axis() : -p;
+}
+// The distance the tiers and their transitions are chosen by, of a point relative to the
+// view's eye: from the lod origin (the camera unless grass_lod_origin_desc moves it; a
+// stereo frame's eyes' midpoint, which is the plan's origin there), as the planner measures
+// it (api/src/plan/frame_planner.cpp). Metres.
+#ifdef GRASS_MULTIVIEW
+#define GRASS_LOD_ORIGIN (frame.lod_origin.xyz - GRASS_EYE)
+#else
+#define GRASS_LOD_ORIGIN frame.lod_origin.xyz
+#endif
+float lod_distance(vec3 p) {
+    return length(p - GRASS_LOD_ORIGIN);
+}
 
 // Design maps (lemme 6.4), 16-bit unorm, bilinear, clamped; sample only those in GRASS_FEATURES.
 layout(binding = 2) uniform sampler2D density_map;  // r: density multiplier

@@ -60,12 +60,13 @@ void main() {
     // The threshold view partitions whole texels by their threshold; the picture draws the
     // share of each texel's blades the density and the tier select.
     bool exact = debug_thresholds();
-    float share = exact ? 1.0 : tier_texel_share(length(v_position), thresholds, density);
-    float opacity = exact ? tier_blade_opacity(length(v_position), threshold, density) : 1.0;
+    float share = exact ? 1.0 : tier_texel_share(lod_distance(v_position), thresholds, density);
+    float opacity = exact ? tier_blade_opacity(lod_distance(v_position), threshold, density) : 1.0;
     // The horizontal slice holds the coverage of the grass seen from above. Seen at an
     // elevation theta the view crosses the blade layer 1 / sin(theta) times as long, so the
     // layer is more opaque (Beer-Lambert along the slanted path): 1 - (1 - a)^(1 / sin).
-    float sin_elevation = max(abs(dot(normalize(-v_position), normalize(mat3(field.patch_to_world)[1]))), 0.05);
+    vec3 to_viewer = normalize(towards_viewer(v_position));
+    float sin_elevation = max(abs(dot(to_viewer, normalize(mat3(field.patch_to_world)[1]))), 0.05);
     float coverage = 1.0 - pow(max(1.0 - albedo.a * share, 0.0), 1.0 / sin_elevation);
     float alpha = coverage * opacity;
     if (!write_coverage(alpha)) discard;
@@ -80,7 +81,7 @@ void main() {
     // sin(elevation) (from an elevation one sees more of the blades' sides; their spread, the
     // mean's length, kept). The four sign lobes of the two horizontal components light the
     // blades that face the camera from every side (lighting.glsl).
-    vec3 to_camera = world_to_patch_direction(normalize(-v_position));
+    vec3 to_camera = world_to_patch_direction(to_viewer);
     vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
     float height = normal_height.w * field.blade_params.w; // the grazing view's (slice_baker.cpp)
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);

@@ -35,6 +35,8 @@ vec3 g_origin;     // the instance corner relative to the camera
 vec2 g_field_cells;
 float g_n;         // slices per axis
 float g_pixel_angle;
+float g_pixel_size;   // orthographic views: a pixel's footprint across the rays (cells), the same at every t
+vec3 g_eye;           // where the ray starts, cuboid cells (main())
 float g_descent_lod = 0.0; // the level of the height the ray descends between two crossings (composite())
 float g_taps = 1.0;     // taps down a slab's share (main(): steep rays through sparse slices)
 float g_tap_span = 0.0; // the share's height span, in slice heights
@@ -124,7 +126,8 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     else coord = vec3(m.x, m.y, 2.0 * g_n);
     // Texels are 3-4x denser across a slice than up it (256 x 64 over 1 x ~0.85 cells);
     // the level follows the coarser, vertical density so blades keep their height.
-    float lod = log2(max(t * g_pixel_angle * g_texels.y / g_size.y, 1.0)); // t: distance in cells
+    float footprint = orthographic_view() ? g_pixel_size : t * g_pixel_angle; // cells; t: distance in cells
+    float lod = log2(max(footprint * g_texels.y / g_size.y, 1.0));
     // What the ray sees (colour, coverage, normal), though, need be no coarser up a vertical
     // slice than the height the ray descends from one crossing to the next (g_descent_lod,
     // main()): the crossings composited in turn gather the heights the ray passes. At the
@@ -169,8 +172,8 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     // The threshold view partitions whole texels by their threshold (each is one tier's);
     // the picture draws the share of each texel's blades the density and the tier select.
     bool field_edge = v_field_edge > 0.5;
-    float a = debug_thresholds() ? albedo.a * tier_blade_opacity(length(world), threshold, density, field_edge)
-                                 : tier_texel_alpha(length(world), thresholds, density, field_edge, albedo.a);
+    float a = debug_thresholds() ? albedo.a * tier_blade_opacity(lod_distance(world), threshold, density, field_edge)
+                                 : tier_texel_alpha(lod_distance(world), thresholds, density, field_edge, albedo.a);
     if (a <= 0.0) return;
     // Every blade is baked into one slice of each family (across x and across z), so a ray
     // that crosses both would meet it twice and cover about 1 - (1 - c)^2 where the blades
@@ -217,22 +220,12 @@ bool depth_pass_done() { return depth_pass() && sample_count() <= 1 && g_alpha >
 
 // The horizontal slice near the ground of a flat field, met at t (kind 2 above).
 void composite_flat_ground(float t) {
-    vec3 g = v_camera_local + g_dir * t;
+    vec3 g = g_eye + g_dir * t;
     composite(g, g, t, 2, 1.0);
 }
 
 void main() {
     load_blocks();
-    vec3 ray = v_local - v_camera_local;
-    // The back face ends the ray; a front face leaves the work to the back face behind it.
-    // (Decided geometrically: no dependence on the host's winding or clip conventions.)
-    // A discarded front face also gets an empty march and no ground hit below: on lavapipe
-    // its lanes go on through the code after `discard` (masked), and marched every ray a
-    // second time (docs/records/tier-cost.md).
-    bool front = dot(v_face_normal, ray) <= 0.0;
-    if (front) discard;
-    float t_out = length(ray);
-    vec3 dir = ray / t_out;
     vec3 size = vec3(float(v_cell.z), field.blade_params.w, float(v_cell.w));
     // The carrier: the slices' height over a flat field; on a height map from the lowest
     // terrain under the instance to the slices' height above the highest (eq. 6.14).
@@ -242,13 +235,54 @@ void main() {
         box_min.y = v_terrain.x;
         box_max.y = v_terrain.y + size.y;
     }
+    // The ray through the fragment, in the cuboid's frame. Perspective: from the camera.
+    // Orthographic (a shadow cascade, a top-down map): every ray is parallel to the view axis;
+    // this one is the line through the fragment along it, started outside the cuboid (a cell
+    // before the sphere around it), and t counts from there. Only the fragment's position
+    // across the axis counts: a face seen almost edge-on (exactly edge-on is a front face) is
+    // shaded at positions extrapolated along it, which may lie far from the cuboid.
+    // What depends on the distance to the viewer does not use t: the lod distances measure
+    // the hit from the lod origin, the mip levels take the pixel's footprint (below), the
+    // depth the hit's position.
+    vec3 eye = v_camera_local;
+    vec3 ray;
+    if (orthographic_view()) {
+        vec3 axis = world_to_patch_direction(view_axis());
+        float reach = 0.5 * length(box_max - box_min) + 1.0;
+        float along = dot(v_local - 0.5 * (box_min + box_max), axis);
+        eye = v_local - axis * (along + reach);
+        ray = axis * (clamp(along, 1.0 - reach, reach - 1.0) + reach); // to the fragment, within the sphere
+    } else {
+        ray = v_local - eye;
+    }
+    // The back face ends the ray; a front face leaves the work to the back face behind it.
+    // (Decided geometrically: no dependence on the host's winding or clip conventions.)
+    // A discarded front face also gets an empty march and no ground hit below: on lavapipe
+    // its lanes go on through the code after `discard` (masked), and marched every ray a
+    // second time (docs/records/tier-cost.md).
+    bool front = dot(v_face_normal, ray) <= 0.0;
+    if (front) discard;
+    float t_out = length(ray);
+    vec3 dir = ray / t_out;
 
     // Where the ray enters the cuboid (slab test), or the camera if it is inside.
     vec3 inv = vec3(dir.x != 0.0 ? 1.0 / dir.x : kHuge, dir.y != 0.0 ? 1.0 / dir.y : kHuge,
                     dir.z != 0.0 ? 1.0 / dir.z : kHuge);
-    vec3 t0 = (box_min - v_camera_local) * inv, t1 = (box_max - v_camera_local) * inv;
+    vec3 t0 = (box_min - eye) * inv, t1 = (box_max - eye) * inv;
     vec3 t_near = min(t0, t1);
     float t_in = max(max(max(t_near.x, t_near.y), t_near.z), 0.0);
+    // Orthographic: from where the ray enters the blade layer (the carrier's height range),
+    // at most the cuboid's diameter and 4 cells before the fragment, as it goes on up to 4
+    // cells past it (below). A fragment is shaded at the pixel's centre, which for a pixel
+    // that the face covers only in part (multisampling) may lie off the face, beside the
+    // carrier: a ray parallel to its sides from there misses it, and left those samples empty
+    // (a line of the clear colour along the carriers' edges, seen from straight above). Both
+    // carriers of such a pixel now composite the same ray, whole, as the nearest carrier of
+    // a ray does.
+    if (orthographic_view()) {
+        float before = 2.0 * length(box_max - box_min) + 4.0 / max(length(dir.xz), 1e-3);
+        t_in = max(max(t_near.y, t_out - before), 0.0);
+    }
 
     // Mip level per hit from the pixel's angular size times the hit's distance: the slices
     // are seen at every angle, so the carrier's own footprint (stretched at grazing angles)
@@ -256,6 +290,10 @@ void main() {
     float n = float(field.tiling.z);
     vec2 texels = vec2(textureSize(slice_color, 0).xy);
     float pixel_angle = max(length(dFdx(dir)), length(dFdy(dir)));  // radians per pixel
+    // Orthographic: the rays do not spread; a pixel's footprint is the fragment's step to its
+    // neighbours across the rays, the same at every distance (cells).
+    vec3 step_dx = dFdx(v_local), step_dy = dFdy(v_local);
+    float pixel_size = max(length(step_dx - dir * dot(step_dx, dir)), length(step_dy - dir * dot(step_dy, dir)));
 
     // The slices across x sit at x = (j + 0.5) / n for every integer j (each cell repeats
     // its n slices), likewise across z. Walk both families in order (a 2D DDA).
@@ -264,25 +302,27 @@ void main() {
     // A downward ray over a flat field that enters through the carrier's top: each family
     // starts half its slab before the entry, so that a crossing just above the blades, whose
     // slab reaches into them, counts in part (below).
-    float t_top = !displaced && dir.y < 0.0 ? (box_max.y - v_camera_local.y) / dir.y : -kHuge;
+    float t_top = !displaced && dir.y < 0.0 ? (box_max.y - eye.y) / dir.y : -kHuge;
     bool from_top = t_in > 0.0 && t_in <= t_top * (1.0 + 1e-5);
-    vec3 start_x = v_camera_local + dir * (from_top ? max(t_in - 0.5 * step_x, 0.0) : t_in);
-    vec3 start_z = v_camera_local + dir * (from_top ? max(t_in - 0.5 * step_z, 0.0) : t_in);
-    vec3 start = v_camera_local + dir * t_in;
+    vec3 start_x = eye + dir * (from_top ? max(t_in - 0.5 * step_x, 0.0) : t_in);
+    vec3 start_z = eye + dir * (from_top ? max(t_in - 0.5 * step_z, 0.0) : t_in);
+    vec3 start = eye + dir * t_in;
     float jx = dir.x > 0.0 ? floor(start_x.x * n - 0.5) + 1.0 : ceil(start_x.x * n - 0.5) - 1.0;
     float jz = dir.z > 0.0 ? floor(start_z.z * n - 0.5) + 1.0 : ceil(start_z.z * n - 0.5) - 1.0;
-    float tx = dir.x != 0.0 ? ((jx + 0.5) / n - v_camera_local.x) / dir.x : kHuge;
-    float tz = dir.z != 0.0 ? ((jz + 0.5) / n - v_camera_local.z) / dir.z : kHuge;
+    float tx = dir.x != 0.0 ? ((jx + 0.5) / n - eye.x) / dir.x : kHuge;
+    float tz = dir.z != 0.0 ? ((jz + 0.5) / n - eye.z) / dir.z : kHuge;
 
     g_dir = dir;
     g_abs_dir = abs(dir.xz);
     g_sun = world_to_patch_direction(frame.sun_direction.xyz);
     g_size = size;
     g_to_world = mat3(field.patch_to_world);
-    g_origin = g_to_world * (-v_camera_local);
+    g_origin = g_to_world * (-v_camera_local); // the instance's corner relative to the camera, in either view
     g_n = n;
     g_texels = texels;
     g_pixel_angle = pixel_angle;
+    g_pixel_size = pixel_size;
+    g_eye = eye;
     g_descent_lod = log2(max(abs(dir.y) / (n * (g_abs_dir.x + g_abs_dir.y)) * texels.y / size.y, 1.0));
     g_depth_at[0] = v_local;
     // The ray goes on past this carrier into the neighbouring cells (the same patch, mirrored
@@ -290,8 +330,8 @@ void main() {
     // carriers is then composited whole by the nearest of them, and no seam shows where each
     // carrier alone would see too little grass. It stops at the field's edges.
     g_field_cells = field.map_params.zw;
-    float t_layer = dir.y < 0.0 ? (box_min.y - v_camera_local.y) / dir.y
-                  : dir.y > 0.0 ? (box_max.y - v_camera_local.y) / dir.y : kHuge;
+    float t_layer = dir.y < 0.0 ? (box_min.y - eye.y) / dir.y
+                  : dir.y > 0.0 ? (box_max.y - eye.y) / dir.y : kHuge;
     float t_reach = t_out + 4.0 / max(length(dir.xz), 1e-3);
     // On a height map the neighbours' terrain may lie below or above this carrier's box: the
     // ray goes on over them by the 4 cells and stops where it meets the ground (below).
@@ -302,8 +342,8 @@ void main() {
     // met where the ray's height above the layer turns negative between two slice
     // crossings (`above`, sampled at each crossing), found by the secant.
     float layer_y = 0.1 * size.y;
-    float t_ground = !displaced && dir.y < 0.0 ? (layer_y - v_camera_local.y) / dir.y : kHuge;
-    float t_floor = !displaced && dir.y < 0.0 ? (box_min.y - v_camera_local.y) / dir.y : kHuge; // the ground
+    float t_ground = !displaced && dir.y < 0.0 ? (layer_y - eye.y) / dir.y : kHuge;
+    float t_floor = !displaced && dir.y < 0.0 ? (box_min.y - eye.y) / dir.y : kHuge; // the ground
     bool ground_pending = !front && (displaced || (t_ground >= t_in && t_ground <= t_end));
     float prev_t = t_in, prev_above = -1.0;
     if (displaced) prev_above = start.y - terrain_height(vec2(v_cell.xy) + start.xz) - layer_y;
@@ -317,7 +357,7 @@ void main() {
         float half_slab = 0.5 * (across_x ? step_x : step_z); // in t
         if (t > t_end + (displaced ? 0.0 : half_slab)) break;
         if (across_x) tx += step_x; else tz += step_z;
-        vec3 h = v_camera_local + dir * t;
+        vec3 h = eye + dir * t;
         float ground = terrain_height(vec2(v_cell.xy) + h.xz); // eq. 6.16 (0 on a flat field)
         // On a flat field each crossing stands for its slab (the 1/n around it), of which a
         // downward ray crosses the share [lo, hi] in the blades: below their tips (when it came
@@ -345,7 +385,7 @@ void main() {
             float above = h.y - ground - layer_y;
             if (ground_pending && prev_above >= 0.0 && above < 0.0) {
                 float tg = mix(prev_t, t, prev_above / (prev_above - above));
-                vec3 g = v_camera_local + dir * tg;
+                vec3 g = eye + dir * tg;
                 composite(vec3(g.x, layer_y, g.z), g, tg, 2, 1.0);
                 ground_pending = false;
                 if (g_alpha >= kOpaqueAlpha || depth_pass_done()) break;
@@ -364,7 +404,7 @@ void main() {
         if (displaced && y < 0.0 && t > t_out) break; // under a neighbour's ground: hidden by it
         if (!displaced) y = clamp(y, 0.0, from_top ? size.y : y);
         if ((t < t_in && !from_top) || y < 0.0 || y > size.y || slab <= 0.0) continue;
-        vec3 hq = v_camera_local + dir * tq;
+        vec3 hq = eye + dir * tq;
         g_taps = steps;
         g_tap_span = -dir.y * (hi - lo) / size.y;
         composite(steps > 1.0 ? (across_x ? vec3(h.x, hq.y, hq.z) : vec3(hq.x, hq.y, h.z)) : vec3(h.x, y, h.z),
@@ -374,11 +414,11 @@ void main() {
     }
     if (ground_pending && g_alpha < kOpaqueAlpha && !depth_pass_done()) {
         if (displaced) {
-            vec3 e = v_camera_local + dir * t_end;
+            vec3 e = eye + dir * t_end;
             float above = e.y - terrain_height(vec2(v_cell.xy) + e.xz) - layer_y;
             if (prev_above >= 0.0 && above < 0.0) {
                 float tg = mix(prev_t, t_end, prev_above / (prev_above - above));
-                vec3 g = v_camera_local + dir * tg;
+                vec3 g = eye + dir * tg;
                 composite(vec3(g.x, layer_y, g.z), g, tg, 2, 1.0);
             }
         } else {

@@ -11,7 +11,7 @@ layout(location = 7) in vec4 i_terrain; // x: lowest, y: highest terrain height 
                                         // z: 1 for a field-edge instance (tier_interval)
 
 layout(location = 0) out vec3 v_local;              // position in the cuboid, cells
-layout(location = 1) flat out vec3 v_camera_local;  // the camera in the same frame
+layout(location = 1) flat out vec3 v_camera_local;  // the camera in the same frame (perspective rays start there)
 layout(location = 2) flat out vec3 v_face_normal;   // outward normal of this face
 layout(location = 3) flat out uvec4 v_cell;
 layout(location = 4) flat out vec2 v_terrain;       // i_terrain.xy (0, 0 without a height map)

@@ -516,10 +516,8 @@ grass_result GlBackend::begin_host_frame(const char*, const HostFrame&, bool) {
     return GRASS_SUCCESS;
 }
 
-grass_result GlBackend::begin_view(const char*, uint32_t view, const FramePlan&) {
-    if (view == uploaded_view_) uploaded_view_ = kNoView; // cannot happen: a view is planned once a frame
-    return GRASS_SUCCESS;
-}
+// A view's plan stays in the context until the frame ends; render() uploads it.
+grass_result GlBackend::begin_view(const char*, uint32_t, const FramePlan&) { return GRASS_SUCCESS; }
 
 void GlBackend::end_frame() { timer_ring_.close_frame(); }
 

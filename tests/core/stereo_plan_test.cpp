@@ -4,9 +4,13 @@
 //   more cells than either eye alone;
 // - its lod distances are measured from the eyes' midpoint, as a mono frame's from a
 //   grass_lod_origin_desc (the root node's distances, as a lod callback sees them);
-// - a bad extension chain or a bad extension is refused, naming it, and no frame begins.
+// - a bad extension chain or a bad extension is refused, naming it, and no frame begins;
+// - the Frame block tells the shaders the lod origin (relative to the plan's origin) and an
+//   orthographic view's axis (zero for perspective views and stereo frames).
 #include "core_fixture.hpp"
 #include "view_helpers.hpp"
+
+#include "context/context.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -150,6 +154,50 @@ TEST_F(StereoPlanTest, ABadExtensionIsRefusedByName) {
     EXPECT_EQ(grass_end_frame(ctx), GRASS_ERROR_INVALID_STATE);
     std::memcpy(second.view, view.view, sizeof(second.view));
     EXPECT_GT(frame(view).cells_drawn, 0u);
+}
+
+// What the shaders measure the tiers' distances from, and which way an orthographic view's
+// parallel rays run (frame_plan.hpp FrameUniforms target.yzw, lod_origin).
+TEST_F(StereoPlanTest, TheFrameBlockCarriesTheLodOriginAndAnOrthographicViewsAxis) {
+    make_field(band(30.0f));
+    const double eye[3] = {8.0, 30.0, -2.0}, look[3] = {8.0, 0.0, 8.0};
+    const double d[3] = {0.0, -30.0, 10.0}, len = std::sqrt(1000.0);
+    const auto frame_block = [&](const grass_view_desc& view) {
+        EXPECT_EQ(grass_begin_frame(ctx, &view), GRASS_SUCCESS) << last_message();
+        const grass::FrameUniforms f = ctx->plan.frame;
+        EXPECT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+        return f;
+    };
+    // Perspective: no axis, the lod origin at the camera.
+    grass::FrameUniforms f = frame_block(test_view(eye, look));
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(f.target[1 + c], 0.0f);
+        EXPECT_EQ(f.lod_origin[c], 0.0f);
+    }
+    // Orthographic (a box 10 m high starting 5 m behind the eye): the unit direction it looks along.
+    grass_view_desc ortho = test_ortho_view(eye, look, 10.0f, 1.0f, -5.0f, 60.0f);
+    f = frame_block(ortho);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(f.target[1 + c], d[c] / len, 1e-6) << c;
+    // A lod origin: relative to the camera.
+    grass_lod_origin_desc origin = grass_default_lod_origin_desc();
+    std::memcpy(origin.position, look, sizeof(origin.position));
+    ortho.next = &origin;
+    f = frame_block(ortho);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(f.target[1 + c], d[c] / len, 1e-6) << c;
+        EXPECT_EQ(f.lod_origin[c], float(look[c] - eye[c])) << c;
+    }
+    // A stereo frame is drawn as perspective (a headset's eyes are), even with orthographic eyes, and
+    // its plan's origin is its lod origin.
+    const double right_eye[3] = {8.2, 30.0, -2.0};
+    grass_view_desc stereo = ortho;
+    const grass_stereo_view_desc second = second_eye(test_ortho_view(right_eye, look, 10.0f, 1.0f, -5.0f, 60.0f));
+    stereo.next = &second;
+    f = frame_block(stereo);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(f.target[1 + c], 0.0f);
+        EXPECT_EQ(f.lod_origin[c], 0.0f);
+    }
 }
 
 } // namespace

@@ -46,7 +46,8 @@ protected:
 
     // Geometry near, a volume of 2 slices, the horizontal slice far: all three within the field.
     grass_field_id make_tiered_field() {
-        static const grass_tier_desc tiers[3] = {{GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 2}, {GRASS_TIER_IMAGE, 0}};
+        static const grass_tier_desc tiers[3] = {
+            {GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 2}, {GRASS_TIER_IMAGE, 0}};
         const float bands[3][4] = {{0.0f, 3.0f, 0.0f, 1.0f}, {2.0f, 7.0f, 1.0f, 1.5f}, {5.5f, INFINITY, 1.5f, 0.0f}};
         for (uint32_t t = 0; t < 3; ++t) {
             grass_lod_test& b = tests_[t];

@@ -187,7 +187,7 @@ TEST_P(ResponsiveTest, NoBladeInsideRestingColliders) {
 // frame does above. Without the offset it read the press 0.6 m off, and grass stood inside.
 TEST_P(ResponsiveTest, ALaterViewOfTheFrameReadsTheMapOfView0) {
     set_fine_map();
-    make_field(field_desc(8)); // 2 m x 2 m
+    make_field(field_desc(8));          // 2 m x 2 m
     constexpr double kTolerance = 0.01; // metres
     const grass_collider colliders[2] = {sphere(1.0, 0.25 + 0.03, 0.7, 0.25f),
                                          capsule(0.6, 1.4, 0.1 + 0.05, 1.4, 0.1f)};

@@ -913,10 +913,13 @@ typedef struct grass_stereo_view_desc {
 GRASS_API grass_stereo_view_desc grass_default_stereo_view_desc(void);
 
 /* 0.5: Chained on grass_view_desc.next: the point the lod tests measure their distances
- * from and the geometry tier sorts its instances by (front to back), instead of the camera
- * (mono) or the eyes' midpoint (stereo). Positions and culling stay the camera's. A host
- * draws a mono view with the plan of a stereo frame by giving it the stereo frame's lod
- * origin (the tests do); a shadow or reflection view may give the main camera's. */
+ * from, the tiers' transitions and per-blade distance culling fade by, and the geometry
+ * tier sorts its instances by (front to back), instead of the camera (mono) or the eyes'
+ * midpoint (stereo). Positions and culling stay the camera's. A host draws a mono view with
+ * the plan of a stereo frame by giving it the stereo frame's lod origin (the tests do); a
+ * shadow or reflection view may give the main camera's. An orthographic view (projection[3],
+ * [7] and [11] zero: a shadow cascade, a top-down map) has no eye to measure from: give it
+ * the main camera's position or the point where its axis meets the ground. */
 typedef struct grass_lod_origin_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC */
     const void* next;       /* the view's next extension, or NULL */

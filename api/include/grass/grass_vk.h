@@ -150,7 +150,8 @@ GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const gr
 
 /* Records pending uploads (patches, maps) and the barriers that make them visible to the
  * vertex and fragment stages, and the responsive grass's interaction pass. Call between
- * grass_begin_frame() and the render pass that grass_vk_record() draws in, every frame; it
+ * grass_begin_frame() and the render pass that grass_vk_record() draws in, every frame (a
+ * frame of several views: once, after grass_plan_view of view 0, before any view's pass); it
  * records nothing when nothing is pending and the frame has no pass (still grass, or no
  * colliders and no trail to age). grass_vk_record() refuses a frame whose pass was not
  * recorded (GRASS_MSG_UPLOAD_NOT_RECORDED).

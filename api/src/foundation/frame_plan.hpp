@@ -20,7 +20,12 @@ struct FrameUniforms {
     float params[4];           // x = time (s), y = flags, z = +1 (depth 0 is near) or -1 (reversed depth),
                                // w = the target's samples per pixel (RenderTarget, write_render_target)
     float target[4];           // x = 1 when the host's clip z runs 0..1 (Vulkan; GL with glClipControl's
-                               // GL_ZERO_TO_ONE), 0 for GL's default -1..1 (RenderTarget); yzw = 0
+                               // GL_ZERO_TO_ONE), 0 for GL's default -1..1 (RenderTarget); yzw = the view
+                               // axis of an orthographic view (world, unit, the direction it looks along:
+                               // its rays are parallel to it), zero for a perspective view (and stereo)
+    float lod_origin[4];       // xyz = the lod origin relative to the plan's origin (m; zero unless
+                               // grass_lod_origin_desc moves it off the camera), w = 0: the tiers'
+                               // distances are measured from it (lod_distance(), blade_interface.glsl)
     // Responsive grass (docs/responsive.md, api/shaders/wind.glsl, interaction.glsl). Read only by
     // shader variants with kFeatureWind / kFeatureInteraction; zero otherwise.
     float wind[4];          // xyz: mean wind velocity, world m/s (zero: none); w: gust strength (fraction of speed)
@@ -45,7 +50,7 @@ struct FrameUniforms {
     // to read the map of view 0's uniforms above. Zero in view 0. w: unused.
     float map_offset[4];
 };
-static_assert(sizeof(FrameUniforms) == 1328, "std140 Frame block");
+static_assert(sizeof(FrameUniforms) == 1344, "std140 Frame block");
 
 // The host's render target as the shaders must know it, which only a backend knows
 // (Backend::render_target): its samples per pixel (sample_count() of blade_interface.glsl)

@@ -612,7 +612,10 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     plan.frame.params[2] = in.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
     // The target's samples and clip convention, as the backend reports them.
     write_render_target(&plan.frame, in.target);
-    plan.frame.target[1] = plan.frame.target[2] = plan.frame.target[3] = 0.0f;
+    // The lod origin relative to the plan's origin (zero but for a mono view with
+    // grass_lod_origin_desc): the shaders measure the tiers' distances from it.
+    for (int c = 0; c < 3; ++c) plan.frame.lod_origin[c] = static_cast<float>(lod_origin[c] - camera[c]);
+    plan.frame.lod_origin[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;
     plan.depth_pass = ext.pass && ext.pass->pass == GRASS_PASS_DEPTH;
@@ -628,6 +631,12 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
 
     const ViewCulling culling(view_projection, in.depth_mode);
     frusta.culling[0] = &culling;
+    // An orthographic view's axis (a shadow cascade's, a top-down map's): its rays are parallel
+    // to it, and it is the direction towards the viewer in the lighting. Zero: perspective
+    // (a stereo frame's eyes are).
+    for (int c = 0; c < 3; ++c) {
+        plan.frame.target[1 + c] = culling.orthographic() && !stereo ? static_cast<float>(culling.axis()[c]) : 0.0f;
+    }
     const ViewCulling second_culling(stereo ? second_view_projection : view_projection, in.depth_mode);
     frusta.culling[1] = &second_culling;
     for (uint32_t slot = 0; slot < in.fields.capacity(); ++slot) {

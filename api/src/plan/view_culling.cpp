@@ -152,6 +152,7 @@ void ViewCulling::orthographic_box(const double inv[16], grass_depth_mode depth_
     const double len = std::sqrt(dot(d, d));
     if (len > 0.0 && std::isfinite(len)) {
         for (int c = 0; c < 3; ++c) axis_[c] = d[c] / len;
+        orthographic_ = true;
     }
     double r2 = 0.0;
     for (const auto& q : corner) {

@@ -23,12 +23,16 @@ public:
     bool box_may_be_visible(const double corners[8][3]) const;
 
     const double* axis() const { return axis_; }
+    // An orthographic view (m[3] = m[7] = m[11] = 0: clip w does not depend on the position)
+    // whose box has a depth; axis() is then its view axis, from the near face to the far face.
+    bool orthographic() const { return orthographic_; }
 
 private:
     void orthographic_box(const double inverse_view_projection[16], grass_depth_mode depth_mode);
 
     double planes_[6][4];
     double axis_[3] = {0, 0, -1};
+    bool orthographic_ = false;
     bool has_cone_ = false;
     double sin_angle_ = 1.0, cos_angle_ = 0.0;
     bool has_sphere_ = false;
