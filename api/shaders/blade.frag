@@ -10,7 +10,11 @@ layout(location = 1) in vec4 v_normal_opacity;
 layout(location = 2) in vec4 v_albedo_code;
 layout(location = 3) centroid in vec4 v_shape_light;
 
+#ifdef GRASS_DEPTH_TARGET
+vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachment, no output
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 void main() {
     load_blocks();

@@ -16,7 +16,11 @@ layout(location = 0) in vec3 v_position;
 layout(location = 1) in vec2 v_local;
 layout(location = 2) flat in uvec2 v_first_cell;
 
+#ifdef GRASS_DEPTH_TARGET
+vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachment, no output
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 void main() {
     load_blocks();

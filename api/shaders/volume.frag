@@ -21,7 +21,11 @@ layout(location = 3) flat in uvec4 v_cell;
 layout(location = 4) flat in vec2 v_terrain; // lowest, highest terrain under the instance (patch units)
 layout(location = 5) flat in float v_field_edge; // 1: a field-edge instance (tier_interval)
 
+#ifdef GRASS_DEPTH_TARGET
+vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachment, no output
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 const float kHuge = 1e30;
 

@@ -6,8 +6,11 @@
 //   of the pixels, at edges) and the colour pass's depth there (within a small tolerance);
 // - it writes no colour: the cleared colour target is byte for byte as the host cleared it;
 // - its bias (glPolygonOffset) pushes the grass's depth away from the light;
-// - bad pass descs are refused naming the argument and the value; the Vulkan backend, which
-//   has no depth-only pipelines yet, refuses a depth view and nothing is begun.
+// - bad pass descs are refused naming the argument and the value; a Vulkan context created
+//   without a grass_vk_depth_pass_desc refuses a depth view and nothing is begun.
+// Vulkan draws the depth pass into the host's depth-only render pass (no colour attachment:
+// TargetDesc::vk_depth_pass, Host::depth_only) with the validation layers silent; GL into the
+// colour and depth framebuffer with the colour masks off.
 #include "render_fixture.hpp"
 
 #include <cmath>
@@ -26,10 +29,24 @@ class DepthPassTest : public RenderTest {
 protected:
     void SetUp() override {
         RenderTest::SetUp();
+        start(target(true));
+    }
+
+    // Vulkan: with a depth-only pass given to grass (grass_vk_depth_pass_desc) or without.
+    static grass_host::TargetDesc target(bool vk_depth_pass) {
         grass_host::TargetDesc t;
         t.width = t.height = kSize;
         t.read_depth = true;
-        start(t);
+        t.vk_depth_pass = vk_depth_pass;
+        return t;
+    }
+
+    // A depth view's frame: on Vulkan in the host's depth-only pass.
+    grass_host::Image render_depth(const grass_view_desc& v) {
+        host->depth_only = true;
+        grass_host::Image image = render(v);
+        host->depth_only = false;
+        return image;
     }
 
     // Geometry near the main camera, a volume of 2 slices, the horizontal slice far
@@ -99,7 +116,6 @@ protected:
 };
 
 TEST_P(DepthPassTest, TheDepthPassWritesTheColourPassDepthAndNoColour) {
-    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan has no depth-only pipelines yet";
     make_tiered_field();
     const grass_host::Image colour = render(light_view(nullptr));
     grass_frame_stats stats{};
@@ -108,7 +124,7 @@ TEST_P(DepthPassTest, TheDepthPassWritesTheColourPassDepthAndNoColour) {
 
     const grass_view_pass_desc pass = depth_pass();
     const grass_view_desc v = light_view(&pass);
-    const grass_host::Image depth = render(v);
+    const grass_host::Image depth = render_depth(v);
     ASSERT_EQ(grass_get_frame_stats(ctx, &stats), GRASS_SUCCESS);
     for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) {
         EXPECT_GT(stats.instances[k], 0u) << "the depth pass draws tier kind " << k;
@@ -141,11 +157,10 @@ TEST_P(DepthPassTest, TheDepthPassWritesTheColourPassDepthAndNoColour) {
 }
 
 TEST_P(DepthPassTest, TheBiasPushesTheDepthAwayFromTheLight) {
-    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan has no depth-only pipelines yet";
     make_tiered_field();
     const grass_view_pass_desc plain = depth_pass(), biased = depth_pass(4096.0f, 2.0f);
-    const grass_host::Image a = render(light_view(&plain));
-    const grass_host::Image b = render(light_view(&biased));
+    const grass_host::Image a = render_depth(light_view(&plain));
+    const grass_host::Image b = render_depth(light_view(&biased));
     size_t both = 0, deeper = 0;
     for (size_t i = 0; i < a.depth.size(); ++i) {
         if (!has_depth(a.depth[i]) || !has_depth(b.depth[i])) continue;
@@ -156,7 +171,8 @@ TEST_P(DepthPassTest, TheBiasPushesTheDepthAwayFromTheLight) {
     EXPECT_GT(deeper, both * 95 / 100) << "of " << both << " pixels with grass in both";
 }
 
-TEST_P(DepthPassTest, BadPassDescsAreRefusedAndVulkanRefusesADepthView) {
+TEST_P(DepthPassTest, BadPassDescsAreRefusedAndVulkanWithoutADepthTargetRefusesADepthView) {
+    if (GetParam() == GRASS_BACKEND_VULKAN) start(target(false)); // no grass_vk_depth_pass_desc
     make_tiered_field();
     grass_view_pass_desc pass = grass_default_view_pass_desc();
     EXPECT_EQ(pass.type, GRASS_STRUCT_TYPE_VIEW_PASS_DESC);
@@ -183,7 +199,8 @@ TEST_P(DepthPassTest, BadPassDescsAreRefusedAndVulkanRefusesADepthView) {
     refused(light_view(&pass), GRASS_ERROR_WRONG_STRUCT_TYPE, "GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most once");
     pass.next = nullptr;
     if (GetParam() == GRASS_BACKEND_VULKAN) {
-        refused(light_view(&pass), GRASS_ERROR_UNSUPPORTED, "the Vulkan backend has no depth-only pipelines yet");
+        refused(light_view(&pass), GRASS_ERROR_INVALID_STATE,
+                "created without a grass_vk_depth_pass_desc (chained on grass_vk_desc.next)");
     }
     // A colour pass desc draws what a view without one draws.
     const grass_host::Image plain = render(light_view(nullptr));

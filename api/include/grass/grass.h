@@ -205,6 +205,7 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_VK_PREPARE_DESC = 0x67720203,      /* 0.5 */
     GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC = 0x67720204, /* 0.5 */
     GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC = 0x67720205,    /* 0.5 */
+    GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC = 0x67720206,   /* 0.5: depth-only passes on Vulkan */
     /* 0.5: responsive grass */
     GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
@@ -936,7 +937,8 @@ typedef enum grass_pass_kind {
      * (the blades as they are, the volume tier's ray to the depth the colour pass gives it,
      * the image tier's slice where its coverage passes) with a shader variant of its own that
      * does no lighting, and writes no colour (GL: every draw buffer's colour mask is off while
-     * grass draws it). GL only for now: Vulkan refuses a depth view (GRASS_ERROR_UNSUPPORTED). */
+     * grass draws it; Vulkan: into the depth-only target of grass_vk_depth_pass_desc, which a
+     * Vulkan context needs for it: without one it refuses a depth view, GRASS_ERROR_INVALID_STATE). */
     GRASS_PASS_DEPTH = 1
 } grass_pass_kind;
 
@@ -951,7 +953,8 @@ typedef struct grass_view_pass_desc {
     /* The depth bias of a depth pass, as the host's own shadow casters take it: GL
      * glPolygonOffset(depth_bias_slope, depth_bias_constant) while grass draws (restored
      * after; the volume tier, which writes its own depth, adds the bias its carrier box
-     * got). Added to the depth in the host's convention: positive pushes grass away from a
+     * got; Vulkan: vkCmdSetDepthBias(constant, 0, slope), dynamic state of grass's depth-only
+     * pipelines). Added to the depth in the host's convention: positive pushes grass away from a
      * GRASS_DEPTH_LESS light, negative from a GRASS_DEPTH_GREATER (reversed) one. constant
      * within +-65536 units of the depth's resolution, slope within +-64; 0 and 0 (the
      * default) bias nothing. Ignored by a colour pass. */

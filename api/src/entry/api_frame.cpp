@@ -108,16 +108,18 @@ grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_vi
 }
 
 // A stereo frame needs a target of two views, and a target of two views a stereo frame.
-// A depth pass needs a backend that draws one (GL; Vulkan does not yet).
+// A depth pass needs a target to draw in (Vulkan: grass_vk_depth_pass_desc).
 grass_result check_views(grass_context* ctx, const char* fn, const ViewExtensions& ext) {
     if (!ctx->backend || ctx->backend->kind() == GRASS_BACKEND_NONE) return GRASS_SUCCESS; // plans only
-    if (ext.pass && ext.pass->pass == GRASS_PASS_DEPTH && ctx->backend->kind() == GRASS_BACKEND_VULKAN) {
-        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
-                         "%s: view->next chains a grass_view_pass_desc with GRASS_PASS_DEPTH, but the Vulkan backend "
-                         "has no depth-only pipelines yet (GL draws depth passes)",
+    const RenderTarget target = ctx->backend->render_target();
+    if (ext.pass && ext.pass->pass == GRASS_PASS_DEPTH && !target.depth_pass) {
+        return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: view->next chains a grass_view_pass_desc with GRASS_PASS_DEPTH, but the context was "
+                         "created without a grass_vk_depth_pass_desc (chained on grass_vk_desc.next): the depth-only "
+                         "target grass makes its depth pipelines for",
                          fn);
     }
-    const uint32_t views = ctx->backend->render_target().views;
+    const uint32_t views = target.views;
     if (ext.stereo && views == 2) return GRASS_SUCCESS;
     if (!ext.stereo && views == 1) return GRASS_SUCCESS;
     if (ctx->backend->kind() == GRASS_BACKEND_GL) {

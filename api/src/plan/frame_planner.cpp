@@ -611,14 +611,18 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     plan.frame.params[1] = static_cast<float>(view.flags);
     plan.frame.params[2] = in.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
     // The target's samples and clip convention, as the backend reports them.
-    write_render_target(&plan.frame, in.target);
+    // (A depth view's: the depth-only target's samples, where the backend has one of its own.)
+    const bool depth_view = ext.pass && ext.pass->pass == GRASS_PASS_DEPTH;
+    RenderTarget target = in.target;
+    if (depth_view && target.depth_pass_samples != 0) target.samples = target.depth_pass_samples;
+    write_render_target(&plan.frame, target);
     // The lod origin relative to the plan's origin (zero but for a mono view with
     // grass_lod_origin_desc): the shaders measure the tiers' distances from it.
     for (int c = 0; c < 3; ++c) plan.frame.lod_origin[c] = static_cast<float>(lod_origin[c] - camera[c]);
     plan.frame.lod_origin[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;
-    plan.depth_pass = ext.pass && ext.pass->pass == GRASS_PASS_DEPTH;
+    plan.depth_pass = depth_view;
     plan.depth_bias[0] = plan.depth_pass ? ext.pass->depth_bias_constant : 0.0f;
     plan.depth_bias[1] = plan.depth_pass ? ext.pass->depth_bias_slope : 0.0f;
     // Responsive grass is planned around the plan's origin (the wind's phases, the
