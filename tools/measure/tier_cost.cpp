@@ -36,6 +36,8 @@ Rig::Rig(const Options& options) : options_(options) {
     grass_host::TargetDesc target;
     target.width = options.width;
     target.height = options.height;
+    // --depth-pass on Vulkan: the host's depth-only pass, given to grass (grass_vk_depth_pass_desc).
+    target.vk_depth_pass = target.read_depth = options.depth_pass && options.backend == GRASS_BACKEND_VULKAN;
     std::string error;
     host_ = grass_host::Host::create(options.backend, target, &error);
     if (!host_) throw grass_sample::Failure("cannot create the headless host: " + error);

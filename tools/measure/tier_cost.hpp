@@ -112,8 +112,12 @@ public:
     // Advances grass_view_desc.time by `seconds` before each frame from now on (0, the
     // default: every frame at time 0, so the responsive grass steps 0).
     void set_time_step(double seconds) { time_step_ = seconds; }
-    // Chains `pass` on the view (nullptr: none, a colour pass) for the frames from now on.
-    void set_pass(const grass_view_pass_desc* pass) { view_.next = pass; }
+    // Chains `pass` on the view (nullptr: none, a colour pass) for the frames from now on;
+    // Vulkan draws a depth pass in the host's depth-only pass (Host::depth_only).
+    void set_pass(const grass_view_pass_desc* pass) {
+        view_.next = pass;
+        host_->depth_only = pass != nullptr && pass->pass == GRASS_PASS_DEPTH;
+    }
     grass_frame_stats frame_stats();
     grass_memory_stats memory_stats();
 
