@@ -49,6 +49,9 @@ struct TargetDesc {
     // Reads the depth buffer back too (Image::depth); single-sampled targets only (Vulkan:
     // with a render pass, not dynamic rendering). For tests that measure heights.
     bool read_depth = false;
+    // Vulkan: a depth-only render pass over the depth image besides (single-sampled, with
+    // read_depth), given to grass as its grass_vk_depth_pass_desc; Host::depth_only draws in it.
+    bool vk_depth_pass = false;
     // Vulkan: the vkGetInstanceProcAddr the host hands grass (grass_vk_desc's
     // get_instance_proc_addr); nullptr: the loader's own. Tests pass a wrapper that counts
     // handles or makes a call fail, for grass's dispatch table only.
@@ -151,6 +154,11 @@ public:
     // meshes.
     std::function<grass_result(grass_context*)> begin_grass_frame;
     std::function<grass_result(grass_context*, void* command_buffer)> draw_grass;
+    // Vulkan hosts with TargetDesc::vk_depth_pass: render() draws grass in the depth-only pass
+    // (no colour attachment, no ground or meshes; the colour image is cleared outside it, so
+    // it reads back as cleared). GL hosts ignore it: a GL depth pass draws into the colour and
+    // depth framebuffer with its colour masks off.
+    bool depth_only = false;
 
 protected:
     explicit Host(const TargetDesc& target) : target_(target) {}

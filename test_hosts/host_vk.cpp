@@ -68,6 +68,7 @@ private:
     bool create_attachment(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                            VkImageAspectFlags aspect, Attachment* out, std::string* error);
     void begin_pass(VkCommandBuffer cmd);
+    void begin_depth_pass(VkCommandBuffer cmd); // Host::depth_only
     void end_pass(VkCommandBuffer cmd);
     void clear_occluder(VkCommandBuffer cmd, const grass_view_desc& view, const Occluder& occluder);
     void copy_to_readback(VkCommandBuffer cmd);
@@ -94,6 +95,8 @@ private:
     Attachment resolve_;                        // only when samples_ > 1
     VkRenderPass render_pass_ = VK_NULL_HANDLE; // null with dynamic rendering
     VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
+    VkRenderPass depth_pass_ = VK_NULL_HANDLE; // target.vk_depth_pass: depth alone
+    VkFramebuffer depth_framebuffer_ = VK_NULL_HANDLE;
     grass_bootstrap::VkBufferParts readback_; // host-visible, mapped
     bool readback_coherent_ = true;
 
@@ -280,8 +283,9 @@ bool VkHost::create_attachment(VkFormat format, VkSampleCountFlagBits samples, V
 
 bool VkHost::create_target(std::string* error) {
     const bool msaa = samples_ != VK_SAMPLE_COUNT_1_BIT;
-    const VkImageUsageFlags color_usage =
-        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (msaa ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    const VkImageUsageFlags color_usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                          (msaa ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT) |
+                                          (target_.vk_depth_pass ? VK_IMAGE_USAGE_TRANSFER_DST_BIT : 0);
     if (!create_attachment(color_format_, samples_, color_usage, VK_IMAGE_ASPECT_COLOR_BIT, &color_, error) ||
         !create_attachment(kDepthFormat, samples_,
                            VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
@@ -297,6 +301,10 @@ bool VkHost::create_target(std::string* error) {
 
     if (target_.read_depth && (msaa || target_.vk_dynamic_rendering)) {
         *error = "read_depth needs a single-sampled target drawn with a render pass";
+        return false;
+    }
+    if (target_.vk_depth_pass && !target_.read_depth) {
+        *error = "vk_depth_pass needs read_depth";
         return false;
     }
     // Read-back buffer: host-visible, cached when possible. Colour, then (read_depth) depth.
@@ -357,7 +365,15 @@ bool VkHost::create_render_pass(std::string* error) {
     fb.width = target_.width;
     fb.height = target_.height;
     fb.layers = 1;
-    const VkResult r = vkCreateFramebuffer(device_, &fb, nullptr, &framebuffer_);
+    VkResult r = vkCreateFramebuffer(device_, &fb, nullptr, &framebuffer_);
+    if (r == VK_SUCCESS && target_.vk_depth_pass) { // the same pass and dependencies, depth alone
+        pass.color_format = VK_FORMAT_UNDEFINED;
+        if (!grass_bootstrap::create_render_pass(device_, pass, &depth_pass_, error)) return false;
+        fb.renderPass = depth_pass_;
+        fb.attachmentCount = 1;
+        fb.pAttachments = &depth_.view;
+        r = vkCreateFramebuffer(device_, &fb, nullptr, &depth_framebuffer_);
+    }
     if (r != VK_SUCCESS) {
         *error = vk_error("vkCreateFramebuffer", r);
         return false;
@@ -394,6 +410,8 @@ VkHost::~VkHost() {
         grass_bootstrap::destroy_buffer(device_, &ground_buffer_);
         if (fence_) vkDestroyFence(device_, fence_, nullptr);
         if (command_pool_) vkDestroyCommandPool(device_, command_pool_, nullptr); // frees cmd_
+        if (depth_framebuffer_) vkDestroyFramebuffer(device_, depth_framebuffer_, nullptr);
+        if (depth_pass_) vkDestroyRenderPass(device_, depth_pass_, nullptr);
         if (framebuffer_) vkDestroyFramebuffer(device_, framebuffer_, nullptr);
         if (render_pass_) vkDestroyRenderPass(device_, render_pass_, nullptr);
         grass_bootstrap::destroy_buffer(device_, &readback_);
@@ -486,6 +504,11 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     lent.allocation_callbacks = target_.vk_allocation_callbacks;
     lent.pipeline_cache = reinterpret_cast<uint64_t>(pipeline_cache_);
     if (lent.allocation_callbacks || lent.pipeline_cache) vk.next = &lent;
+    grass_vk_depth_pass_desc depth = grass_default_vk_depth_pass_desc(); // target.vk_depth_pass
+    depth.render_pass = reinterpret_cast<uint64_t>(depth_pass_);
+    depth.depth_format = kDepthFormat;
+    depth.next = vk.next;
+    if (depth_pass_) vk.next = &depth;
     return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
 }
 
@@ -578,6 +601,41 @@ void VkHost::begin_pass(VkCommandBuffer cmd) {
     begin_rendering_(cmd, &info);
 }
 
+// Host::depth_only: the colour image cleared outside any pass (it reads back as the colour
+// pass's clear), then the depth-only pass over the depth image.
+void VkHost::begin_depth_pass(VkCommandBuffer cmd) {
+    VkClearColorValue colour{};
+    for (int c = 0; c < 4; ++c) colour.float32[c] = target_.clear_color[c];
+    if (target_.unorm_color) {
+        for (int c = 0; c < 3; ++c) colour.float32[c] = linear_to_srgb(target_.clear_color[c]);
+    }
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = color_.image;
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,
+                         1, &b);
+    vkCmdClearColorImage(cmd, color_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1, &b.subresourceRange);
+    b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    b.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    b.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL; // as the colour pass leaves it: read back
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,
+                         1, &b);
+    VkClearValue clear{};
+    clear.depthStencil = {target_.reversed_z ? 0.0f : 1.0f, 0};
+    VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    info.renderPass = depth_pass_;
+    info.framebuffer = depth_framebuffer_;
+    info.renderArea = {{0, 0}, {target_.width, target_.height}};
+    info.clearValueCount = 1;
+    info.pClearValues = &clear;
+    vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
+}
+
 void VkHost::end_pass(VkCommandBuffer cmd) {
     if (render_pass_) {
         vkCmdEndRenderPass(cmd); // leaves the read-back image in TRANSFER_SRC_OPTIMAL
@@ -665,16 +723,25 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
         prepare.command_buffer = cmd_;
         result = grass_vk_prepare(context, &prepare);
     }
-    begin_pass(cmd_);
-    if (target_.ground) draw_ground(cmd_, view);
-    if (meshes_) meshes_->record(cmd_, view, target_.width, target_.height);
-    if (occluder) clear_occluder(cmd_, view, *occluder);
+    const bool depth_pass = depth_only && depth_pass_;
+    if (depth_pass) {
+        begin_depth_pass(cmd_);
+    } else {
+        begin_pass(cmd_);
+        if (target_.ground) draw_ground(cmd_, view);
+        if (meshes_) meshes_->record(cmd_, view, target_.width, target_.height);
+        if (occluder) clear_occluder(cmd_, view, *occluder);
+    }
     if (result == GRASS_SUCCESS) {
         grass_vk_record_desc record = grass_default_vk_record_desc();
         record.command_buffer = cmd_;
         result = draw_grass ? draw_grass(context, cmd_) : grass_vk_record(context, &record);
     }
-    end_pass(cmd_);
+    if (depth_pass) {
+        vkCmdEndRenderPass(cmd_); // the depth image ends in TRANSFER_SRC_OPTIMAL (read_depth)
+    } else {
+        end_pass(cmd_);
+    }
     copy_to_readback(cmd_);
     r = vkEndCommandBuffer(cmd_);
     if (r != VK_SUCCESS) {

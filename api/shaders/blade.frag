@@ -10,10 +10,15 @@ layout(location = 1) in vec4 v_normal_opacity;
 layout(location = 2) in vec4 v_albedo_code;
 layout(location = 3) centroid in vec4 v_shape_light;
 
+#ifdef GRASS_DEPTH_TARGET
+vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachment, no output
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 void main() {
     load_blocks();
+    if (depth_pass()) return; // the geometry's depth alone: no colour, no alpha to coverage
     vec3 n = normalize(v_normal_opacity.xyz);
     vec3 to_camera = towards_viewer(v_position_density.xyz);
     if (dot(n, to_camera) < 0.0) n = -n; // two-sided: light the side that faces the camera

@@ -30,6 +30,7 @@
 #define GRASS_WIND_MAP 128u   // responsive grass: the field's wind map is bound (wind.glsl; with GRASS_WIND)
 #define GRASS_BLADE_CULLING 256u // per-blade culling, geometry draws (blade_culling.glsl)
 #define GRASS_DEBUG_VIEW 512u    // the frame draws the tier tint or the threshold view (lighting.glsl)
+#define GRASS_DEPTH_PASS 1024u   // a depth-only pass (shadow maps): no lighting, no colour (depth_pass())
 // Responsive grass's code (and its bindings 10-13) is compiled only where GRASS_RESPONSIVE
 // is defined (so is per-blade culling's, which reads the blades' control points too): the
 // shaders of still grass are exactly what they were, and declare no binding
@@ -43,6 +44,9 @@ layout(constant_id = 0) const uint GRASS_FEATURES = 0u;
 #error "the GL backend must define GRASS_FEATURES (the draw's map feature mask)"
 #endif
 bool has_map(uint role_bit) { return (GRASS_FEATURES & role_bit) != 0u; }
+// The depth pass's variant: the fragment shaders keep their coverage test and depth, and
+// return before any lighting or colour (a constant: the other variants hold none of it).
+bool depth_pass() { return (GRASS_FEATURES & GRASS_DEPTH_PASS) != 0u; }
 
 struct FrameData {
     mat4 view_projection;  // camera-relative world -> clip (the host's projection)

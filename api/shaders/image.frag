@@ -16,7 +16,11 @@ layout(location = 0) in vec3 v_position;
 layout(location = 1) in vec2 v_local;
 layout(location = 2) flat in uvec2 v_first_cell;
 
+#ifdef GRASS_DEPTH_TARGET
+vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachment, no output
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 void main() {
     load_blocks();
@@ -70,6 +74,7 @@ void main() {
     float coverage = 1.0 - pow(max(1.0 - albedo.a * share, 0.0), 1.0 / sin_elevation);
     float alpha = coverage * opacity;
     if (!write_coverage(alpha)) discard;
+    if (depth_pass()) return; // the coverage's depth alone: no lighting, no colour
 
     // The slice's colour and heights are what a grazing ray sees (slice_baker.cpp,
     // apply_grazing): the blades' upper parts, whose ambient occlusion the height gives. Its

@@ -21,7 +21,11 @@ layout(location = 3) flat in uvec4 v_cell;
 layout(location = 4) flat in vec2 v_terrain; // lowest, highest terrain under the instance (patch units)
 layout(location = 5) flat in float v_field_edge; // 1: a field-edge instance (tier_interval)
 
+#ifdef GRASS_DEPTH_TARGET
+vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachment, no output
+#else
 layout(location = 0) out vec4 out_color;
+#endif
 
 const float kHuge = 1e30;
 
@@ -72,6 +76,17 @@ float tier_texel_alpha(float d, vec4 t, float density, bool field_edge, float al
     if (!(share > 0.0)) return 0.0;
     if (!(full > 0.0) || share >= full) return alpha * share;
     return 1.0 - pow(max(1.0 - alpha * full, 0.0), share / full);
+}
+
+// Gathers the opacity `a` of the hit at `hit` into the ray's alpha and notes the depths
+// where it reaches each level (g_depth_at).
+void gather(float a, vec3 hit, float threshold) {
+    g_alpha += (1.0 - g_alpha) * a;
+    while (g_depth_reached < 5 && g_alpha >= (g_depth_reached == 0 ? 0.0 : 0.03125 * float(1 << g_depth_reached))) {
+        g_depth_at[g_depth_reached] = hit;
+        if (g_depth_reached == 4) g_depth_threshold = threshold;
+        ++g_depth_reached;
+    }
 }
 
 // Composites the hit of the ray at `hit` (cuboid cells, distance t) with a slice: across x
@@ -184,6 +199,10 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
         a = a >= 1.0 ? 1.0 : 1.0 - pow(1.0 - a, w);
     }
     if (a <= 0.0) return;
+    if (depth_pass()) { // the depth pass gathers coverage alone
+        gather(a, hit, threshold);
+        return;
+    }
     // The design maps at the hit (lemme 6.4.2-6.4.3).
     vec3 color = modulate_color(albedo.rgb, cell_point) * shade;
     vec2 light = light_maps(cell_point);
@@ -196,13 +215,14 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     vec3 folded = kind == 0 ? vec3(0.0, 1.0, 1.0) : kind == 1 ? vec3(1.0, 1.0, 0.0) : vec3(1.0, 0.0, 1.0);
     vec3 lit = grass_lighting_lobes_bent(color, nrm, folded, -g_dir, g_sun, ao, light, bend_dir, turn);
     g_color += (1.0 - g_alpha) * a * lit;
-    g_alpha += (1.0 - g_alpha) * a;
-    while (g_depth_reached < 5 && g_alpha >= (g_depth_reached == 0 ? 0.0 : 0.03125 * float(1 << g_depth_reached))) {
-        g_depth_at[g_depth_reached] = hit;
-        if (g_depth_reached == 4) g_depth_threshold = threshold;
-        ++g_depth_reached;
-    }
+    gather(a, hit, threshold);
 }
+
+// The depth pass (depth_pass()) of a single-sampled target stops where the ray has gathered
+// half its alpha: its coverage test passes from there on and its depth is fixed (main()), so
+// what lies behind changes nothing it writes. Multisampled, it marches on: its sample mask
+// is the colour pass's.
+bool depth_pass_done() { return depth_pass() && sample_count() <= 1 && g_alpha >= 0.5; }
 
 // The horizontal slice near the ground of a flat field, met at t (kind 2 above).
 void composite_flat_ground(float t) {
@@ -399,14 +419,14 @@ void main() {
                 vec3 g = eye + dir * tg;
                 composite(vec3(g.x, layer_y, g.z), g, tg, 2, 1.0);
                 ground_pending = false;
-                if (g_alpha >= kOpaqueAlpha) break;
+                if (g_alpha >= kOpaqueAlpha || depth_pass_done()) break;
             }
             prev_t = t;
             prev_above = above;
         } else if (ground_pending && t_ground <= tq) {
             composite_flat_ground(t_ground);
             ground_pending = false;
-            if (g_alpha >= kOpaqueAlpha) break;
+            if (g_alpha >= kOpaqueAlpha || depth_pass_done()) break;
         }
         // The slice is looked up at the hit's height above the terrain (eq. 6.17-6.18); a
         // hit below the terrain or above the blades there meets nothing. On a flat field a
@@ -421,9 +441,9 @@ void main() {
         composite(steps > 1.0 ? (across_x ? vec3(h.x, hq.y, hq.z) : vec3(hq.x, hq.y, h.z)) : vec3(h.x, y, h.z),
                   hq, tq, across_x ? 0 : 1, slab);
         g_taps = 1.0;
-        if (g_alpha >= kOpaqueAlpha) break;
+        if (g_alpha >= kOpaqueAlpha || depth_pass_done()) break;
     }
-    if (ground_pending && g_alpha < kOpaqueAlpha) {
+    if (ground_pending && g_alpha < kOpaqueAlpha && !depth_pass_done()) {
         if (displaced) {
             vec3 e = eye + dir * t_end;
             float above = e.y - terrain_height(vec2(v_cell.xy) + e.xz) - layer_y;
@@ -437,12 +457,19 @@ void main() {
         }
     }
     if (!write_coverage(g_alpha)) discard;
-    out_color = debug_thresholds() ? threshold_code(g_depth_threshold)
-                                   : output_color(vec4(debug_tint(g_color / g_alpha), g_alpha));
+    if (!depth_pass()) { // the depth pass writes the depth alone
+        out_color = debug_thresholds() ? threshold_code(g_depth_threshold)
+                                       : output_color(vec4(debug_tint(g_color / g_alpha), g_alpha));
+    }
     // The last level at or below half the ray's alpha (1/2 for an opaque ray).
     int level = 0;
     for (int i = 1; i < g_depth_reached; ++i) {
         if (0.03125 * float(1 << i) <= (g_alpha >= 0.5 ? 0.5 : 0.5 * g_alpha)) level = i;
     }
-    gl_FragDepth = in_front_of_plane(window_depth(g_to_world * g_depth_at[level] + g_origin));
+    float depth = in_front_of_plane(window_depth(g_to_world * g_depth_at[level] + g_origin));
+    // The depth pass's bias (glPolygonOffset, Vulkan's depth bias) moves the rasterised depth,
+    // which gl_FragDepth replaces: the carrier's biased depth minus its own is added instead
+    // (the slope term is the carrier face's, not the blades').
+    if (depth_pass()) depth += gl_FragCoord.z - window_depth(g_to_world * v_local + g_origin);
+    gl_FragDepth = depth;
 }

@@ -60,7 +60,8 @@ const char* gl_error_name(GLenum error) {
 } // namespace
 
 GlBackend::GlBackend(grass_context* ctx)
-    : ctx_(ctx), program_cache_(ctx), uniform_staging_(StlAllocator<unsigned char>(&ctx->host)),
+    : ctx_(ctx), depth_programs_(StlAllocator<GLuint>(&ctx->host)), program_cache_(ctx),
+      uniform_staging_(StlAllocator<unsigned char>(&ctx->host)),
       field_uniform_offsets_(StlAllocator<GLintptr>(&ctx->host)), patches_(StlAllocator<PatchGpu>(&ctx->host)),
       slices_(StlAllocator<SliceGpu>(&ctx->host)), fields_(StlAllocator<FieldGpu>(&ctx->host)),
       maps_(StlAllocator<MapGpu>(&ctx->host)) {}
@@ -194,12 +195,22 @@ GlBackend::~GlBackend() {
             if (program != 0) gl_.DeleteProgram(program);
         }
     }
+    for (GLuint program : depth_programs_) {
+        if (program != 0) gl_.DeleteProgram(program);
+    }
+}
+
+GLuint* GlBackend::program_slot(GlProgramKind kind, uint32_t features) {
+    features &= kFeatureVariants - 1;
+    if ((features & kFeatureDepthPass) == 0) return &programs_[kind][features];
+    if (depth_programs_.empty()) depth_programs_.assign(size_t(kProgramKindCount) * kColourVariants, 0u);
+    return &depth_programs_[kind * kColourVariants + (features - kFeatureDepthPass)];
 }
 
 grass_result GlBackend::program(GlProgramKind kind, uint32_t features, const char* function, GLuint* out_program) {
     features &= kFeatureVariants - 1;
     if (kind == kProgramDebugTiers) features &= kDebugBoxFeatures; // the boxes sample the height map only
-    GLuint& cached = programs_[kind][features];
+    GLuint& cached = *program_slot(kind, features);
     if (cached == 0) {
         cached = program_cache_.load(gl_, function, kind, features);
         if (cached != 0) set_sampler_units(gl_, cached);

@@ -141,16 +141,22 @@ private:
     // Reads the finished sets without waiting (TierTimerRing::collect).
     void collect_timers();
     GLuint program_of(GlProgramKind kind, uint32_t features) const {
-        return programs_[kind][features & (kFeatureVariants - 1)];
+        features &= kFeatureVariants - 1;
+        if ((features & kFeatureDepthPass) == 0) return programs_[kind][features];
+        return depth_programs_.empty() ? 0u : depth_programs_[kind * kColourVariants + (features - kFeatureDepthPass)];
     }
+    // Where the program of `kind` and `features` is kept (0: not made yet); the depth pass's
+    // table is allocated on the first depth pass (may throw std::bad_alloc).
+    GLuint* program_slot(GlProgramKind kind, uint32_t features);
 
     grass_context* ctx_;
     bool loaded_ = false; // gl_ holds every entry point
     GlFunctions gl_;
-    GLuint programs_[kProgramKindCount][kFeatureVariants] = {}; // 0: not compiled yet
-    GlProgramCache program_cache_;                              // program binaries: seeded by grass_prepare_pipelines
-    GLuint tier_vertex_array_ = 0; // instances only: the volume and image tiers, debug boxes
-    char context_label_[48] = {};  // tier_vertex_array_'s label (label_context)
+    GLuint programs_[kProgramKindCount][kColourVariants] = {}; // 0: not compiled yet
+    Vector<GLuint> depth_programs_; // [kind * kColourVariants + mask]: empty until a depth pass
+    GlProgramCache program_cache_;  // program binaries: seeded by grass_prepare_pipelines
+    GLuint tier_vertex_array_ = 0;  // instances only: the volume and image tiers, debug boxes
+    char context_label_[48] = {};   // tier_vertex_array_'s label (label_context)
     GLsizei context_label_length_ = 0;
     GLuint white_texture_ = 0;
     GLuint sampler_ = 0;           // design maps: linear, clamped

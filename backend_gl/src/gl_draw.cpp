@@ -231,12 +231,14 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
     gl_.Disable(GL_CULL_FACE); // blades are two-sided; the volume shader picks its faces itself
     gl_.Disablei(GL_BLEND, 0); // draw buffer 0's: the others are masked off (GlDrawStateGuard)
     gl_.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    if (multisampled) {
-        gl_.Enable(GL_MULTISAMPLE);
+    if (multisampled) gl_.Enable(GL_MULTISAMPLE);
+    if (multisampled && !plan.depth_pass) { // a depth pass's blades write no alpha
         gl_.Enable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     } else {
         gl_.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     }
+    // A depth pass writes no colour (every draw buffer masked off) and biases its depth.
+    if (plan.depth_pass) guard.begin_depth_pass(plan.depth_bias[0], plan.depth_bias[1]);
     gl_.BindBufferRange(GL_UNIFORM_BUFFER, 0, uniforms_.name(), 0, sizeof(FrameUniforms));
 
     if (debug) {

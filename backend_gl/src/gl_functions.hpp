@@ -28,6 +28,8 @@
     X(PFNGLDEPTHFUNCPROC, DepthFunc)                                                 \
     X(PFNGLDEPTHMASKPROC, DepthMask)                                                 \
     X(PFNGLPOLYGONMODEPROC, PolygonMode)                                             \
+    X(PFNGLPOLYGONOFFSETPROC, PolygonOffset)                                         \
+    X(PFNGLGETFLOATVPROC, GetFloatv)                                                 \
     X(PFNGLPIXELSTOREIPROC, PixelStorei)                                             \
     /* shaders and programs */                                                       \
     X(PFNGLCREATESHADERPROC, CreateShader)                                           \

@@ -37,7 +37,8 @@ grass_result GlBackend::pipeline_cache_data(const char* function, void* data, ui
     Vector<GlProgramRecord> records(StlAllocator<GlProgramRecord>(&ctx_->host));
     for (uint32_t kind = 0; kind < kProgramKindCount; ++kind) {
         for (uint32_t features = 0; features < kFeatureVariants; ++features) {
-            if (programs_[kind][features] != 0) records.push_back({kind, features, programs_[kind][features]});
+            const GLuint program = program_of(static_cast<GlProgramKind>(kind), features);
+            if (program != 0) records.push_back({kind, features, program});
         }
     }
     if (interaction_program_ != 0) records.push_back({kInteractionProgramKind, 0, interaction_program_});

@@ -40,6 +40,9 @@ static_assert(kProgramBlades == static_cast<uint32_t>(kShaderBlades) &&
 // Every feature mask: the design maps' bits, then kFeatureWind, kFeatureInteraction,
 // kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView (backend.hpp).
 constexpr uint32_t kFeatureVariants = kFeatureMaskCount;
+// The masks without kFeatureDepthPass (a depth pass's programs are kept apart, made on the
+// first depth pass: GlBackend::program_slot).
+constexpr uint32_t kColourVariants = kFeatureDepthPass;
 static_assert(kFeatureWind == 1u << kMapRoleCount && kFeatureInteraction == kFeatureWind << 1 &&
                   kFeatureWindMap == kFeatureInteraction << 1 && kFeatureBladeCulling == kFeatureWindMap << 1 &&
                   kFeatureDebugView == kFeatureBladeCulling << 1,

@@ -166,8 +166,24 @@ GlDrawStateGuard::GlDrawStateGuard(const GlFunctions& gl, bool dynamics) : gl_(g
     }
 }
 
+void GlDrawStateGuard::begin_depth_pass(GLfloat constant, GLfloat slope) {
+    const GlFunctions& gl = gl_;
+    if (!depth_pass_) {
+        depth_pass_ = true;
+        gl.GetFloatv(GL_POLYGON_OFFSET_FACTOR, &polygon_offset_[0]);
+        gl.GetFloatv(GL_POLYGON_OFFSET_UNITS, &polygon_offset_[1]);
+    }
+    gl.ColorMaski(0, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE); // the others are off already
+    gl.Enable(GL_POLYGON_OFFSET_FILL);
+    gl.PolygonOffset(slope, constant);
+}
+
 GlDrawStateGuard::~GlDrawStateGuard() {
     const GlFunctions& gl = gl_;
+    if (depth_pass_) {
+        gl.PolygonOffset(polygon_offset_[0], polygon_offset_[1]);
+        gl.Disable(GL_POLYGON_OFFSET_FILL); // enabled again below where the host had it
+    }
     if (dynamics_) restore_dynamics(); // before the active texture is restored
     gl.UseProgram(static_cast<GLuint>(program_));
     gl.BindVertexArray(static_cast<GLuint>(vertex_array_)); // brings back its element buffer

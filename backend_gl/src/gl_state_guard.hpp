@@ -24,6 +24,10 @@ class GlDrawStateGuard {
 public:
     GlDrawStateGuard(const GlFunctions& gl, bool dynamics);
     ~GlDrawStateGuard();
+    // A depth pass (FramePlan::depth_pass): every draw buffer's colour mask off and the
+    // depth biased by glPolygonOffset(slope, constant) with GL_POLYGON_OFFSET_FILL, the
+    // host's polygon offset saved first and restored with the rest.
+    void begin_depth_pass(GLfloat constant, GLfloat slope);
     GlDrawStateGuard(const GlDrawStateGuard&) = delete;
     GlDrawStateGuard& operator=(const GlDrawStateGuard&) = delete;
 
@@ -85,6 +89,9 @@ private:
     static constexpr GLuint kMaxDrawBuffers = 32;
     uint32_t other_buffers_ = 0;
     GLboolean other_masks_[kMaxDrawBuffers][4] = {};
+    // A depth pass: the host's polygon offset factor and units.
+    bool depth_pass_ = false;
+    GLfloat polygon_offset_[2] = {0.0f, 0.0f};
 };
 
 // Around texture uploads from client memory: the unpack pixel-store state and the pixel

@@ -106,6 +106,13 @@ grass_vk_multiview_desc grass_default_vk_multiview_desc(void) {
     return d;
 }
 
+grass_vk_depth_pass_desc grass_default_vk_depth_pass_desc(void) {
+    grass_vk_depth_pass_desc d{};
+    d.type = GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC;
+    d.sample_count = 1;
+    return d;
+}
+
 grass_vk_record_desc grass_default_vk_record_desc(void) {
     grass_vk_record_desc d{};
     d.type = GRASS_STRUCT_TYPE_VK_RECORD_DESC;

@@ -31,7 +31,7 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
     : ctx_(context), desc_(vk_desc), device_(device), fn_(device_.fn),
       memory_(fn_, device_.device, device_.memory, device_.properties.limits, &context->host),
       descriptors_(fn_, device_.device, &context->host), frame_sets_(fn_, device_.device, &context->host),
-      deferred_(memory_, descriptors_, &context->host), pipeline_(fn_, device_.device),
+      deferred_(memory_, descriptors_, &context->host), pipeline_(fn_, device_.device, &context->host),
       ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment,
             device_.view_mask != 0),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
@@ -72,6 +72,16 @@ grass_result VkBackend::init(const char* function) {
     interaction_.use_cache(cache_);
     PipelineTarget target = pipeline_target(ctx_, desc_, device_);
     target.cache = cache_;
+    if (device_.has_depth_pass) { // depth views' pipelines: made on the first (record)
+        PipelineTarget depth = target;
+        depth.render_pass = reinterpret_cast<VkRenderPass>(device_.depth_pass.render_pass);
+        depth.subpass = device_.depth_pass.subpass;
+        depth.color_format = VK_FORMAT_UNDEFINED;
+        depth.depth_format = static_cast<VkFormat>(device_.depth_pass.depth_format);
+        depth.samples = static_cast<VkSampleCountFlagBits>(device_.depth_pass.sample_count);
+        depth.depth_only = true;
+        pipeline_.set_depth_target(depth);
+    }
     if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);
     create_timers();

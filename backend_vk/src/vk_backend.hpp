@@ -50,12 +50,15 @@ public:
                                   bool interaction_pass, bool no_depth_test) override;
     grass_result seed_pipeline_cache(const char* function, const void* data, uint64_t size) override;
     grass_result pipeline_cache_data(const char* function, void* data, uint64_t* size) override;
-    // The render pass's sample count (grass_vk_desc) and Vulkan's one clip convention, 0..1.
+    // The render pass's sample count (grass_vk_desc) and Vulkan's one clip convention, 0..1;
+    // the depth-only target, when the host gave one (grass_vk_depth_pass_desc).
     RenderTarget render_target() const override {
         RenderTarget target;
         target.samples = desc_.sample_count;
         target.clip_zero_to_one = true;
         target.views = device_.view_mask != 0 ? 2u : 1u; // view_mask is 0 or 0x3 (check_vk_desc)
+        target.depth_pass = device_.has_depth_pass;      // grass_vk_depth_pass_desc: depth views draw
+        target.depth_pass_samples = device_.has_depth_pass ? device_.depth_pass.sample_count : 0;
         return target;
     }
     grass_result begin_host_frame(const char* function, const HostFrame& frame, bool implied) override;

@@ -51,10 +51,38 @@ grass_result check_multiview(grass_context* ctx, const char* function, const gra
     return GRASS_SUCCESS;
 }
 
+// The checks of a chained grass_vk_depth_pass_desc (what the device supports: load_device).
+grass_result check_depth_pass(grass_context* ctx, const char* function, const grass_vk_depth_pass_desc& d) {
+    if (d.depth_format == 0) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                         "%s: grass_vk_depth_pass_desc.depth_format is 0 (VK_FORMAT_UNDEFINED); the depth-only "
+                         "target's depth attachment needs its VkFormat",
+                         function);
+    }
+    const uint32_t s = d.sample_count;
+    if (s == 0 || s > 64 || (s & (s - 1)) != 0) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: grass_vk_depth_pass_desc.sample_count is %u; it must be a VkSampleCountFlagBits value "
+                         "(1, 2, 4, 8, 16, 32 or 64)",
+                         function, s);
+    }
+    if (d.render_pass == 0 && d.subpass != 0) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: grass_vk_depth_pass_desc.subpass is %u with render_pass 0 (dynamic rendering, which has "
+                         "no subpasses); give 0",
+                         function, d.subpass);
+    }
+    return GRASS_SUCCESS;
+}
+
 // Walks the extensions chained to vk_desc->next: each a known type, each once.
 grass_result read_chain(grass_context* ctx, const char* function, const void* next, VkDescExtensions* out) {
     *out = VkDescExtensions{};
     bool has_host_objects = false, has_multiview = false;
+    const auto known = [](uint32_t type) {
+        return type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC || type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC ||
+               type == GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC;
+    };
     while (next) {
         struct Header {
             grass_struct_type type;
@@ -74,20 +102,29 @@ grass_result read_chain(grass_context* ctx, const char* function, const void* ne
             next = out->multiview.next;
             out->multiview.next = nullptr;
             r = check_multiview(ctx, function, out->multiview);
+        } else if (type == GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC && !out->has_depth_pass) {
+            out->depth_pass = *static_cast<const grass_vk_depth_pass_desc*>(next);
+            out->has_depth_pass = true;
+            next = out->depth_pass.next;
+            out->depth_pass.next = nullptr;
+            r = check_depth_pass(ctx, function, out->depth_pass);
         } else {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL,
                              "%s: vk_desc->next chain holds a struct of type 0x%08x%s; it may hold "
-                             "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC (0x%08x) and GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC "
-                             "(0x%08x), each once",
-                             function, static_cast<unsigned>(type),
-                             type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC ||
-                                     type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC
-                                 ? " a second time"
-                                 : "",
+                             "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC (0x%08x), GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC "
+                             "(0x%08x) and GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC (0x%08x), each once",
+                             function, static_cast<unsigned>(type), known(type) ? " a second time" : "",
                              static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC),
-                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC));
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC),
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC));
         }
         if (r != GRASS_SUCCESS) return r;
+    }
+    if (out->has_depth_pass && out->multiview.view_mask != 0) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: vk_desc->next chains a grass_vk_depth_pass_desc and a grass_vk_multiview_desc with "
+                         "view_mask 0x%x; depth passes are drawn by mono contexts only",
+                         function, out->multiview.view_mask);
     }
     return GRASS_SUCCESS;
 }

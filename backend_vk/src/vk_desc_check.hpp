@@ -20,6 +20,8 @@ inline uint32_t view_slot(uint32_t frame_slot, uint32_t view) { return view * kM
 struct VkDescExtensions {
     grass_vk_host_objects_desc host_objects = grass_default_vk_host_objects_desc();
     grass_vk_multiview_desc multiview = grass_default_vk_multiview_desc();
+    bool has_depth_pass = false; // a grass_vk_depth_pass_desc is chained: the context draws depth views
+    grass_vk_depth_pass_desc depth_pass = grass_default_vk_depth_pass_desc();
 };
 
 // Logs the first problem through `context` (named after `function`) and returns its code.

@@ -70,6 +70,14 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
                            "has neither Vulkan 1.3 nor VK_KHR_dynamic_rendering, which vk_desc->render_pass 0 "
                            "(dynamic rendering) needs");
     }
+    d.has_depth_pass = extensions.has_depth_pass;
+    d.depth_pass = extensions.depth_pass;
+    if (d.has_depth_pass && d.depth_pass.render_pass == 0 && d.properties.apiVersion < VK_API_VERSION_1_3 &&
+        !has_device_extension(d, &ctx->host, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME)) {
+        return unsupported(ctx, function, d,
+                           "has neither Vulkan 1.3 nor VK_KHR_dynamic_rendering, which "
+                           "grass_vk_depth_pass_desc.render_pass 0 (dynamic rendering) needs");
+    }
 
     d.view_mask = extensions.multiview.view_mask;
     if (d.view_mask != 0) { // stereo: multiview is core in 1.1, but optional
@@ -116,6 +124,23 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
                          "%s: vk_desc->depth_format is %u, which the device \"%s\" cannot use as a depth attachment",
                          function, vk_desc.depth_format, d.properties.deviceName);
+    }
+    if (d.has_depth_pass) {
+        if (!(d.properties.limits.framebufferDepthSampleCounts & d.depth_pass.sample_count)) {
+            return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                             "%s: grass_vk_depth_pass_desc.sample_count is %u; the device \"%s\" supports the sample "
+                             "counts 0x%x for depth",
+                             function, d.depth_pass.sample_count, d.properties.deviceName,
+                             static_cast<unsigned>(d.properties.limits.framebufferDepthSampleCounts));
+        }
+        d.fn.vkGetPhysicalDeviceFormatProperties(d.physical_device, static_cast<VkFormat>(d.depth_pass.depth_format),
+                                                 &format);
+        if (!(format.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT)) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                             "%s: grass_vk_depth_pass_desc.depth_format is %u, which the device \"%s\" cannot use as "
+                             "a depth attachment",
+                             function, d.depth_pass.depth_format, d.properties.deviceName);
+        }
     }
     if (vk_desc.render_pass == 0) {
         d.fn.vkGetPhysicalDeviceFormatProperties(d.physical_device, static_cast<VkFormat>(vk_desc.color_format),

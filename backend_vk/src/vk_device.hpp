@@ -29,6 +29,10 @@ struct Device {
     // The view mask of the host's pass (grass_vk_multiview_desc): 0 mono, 0x3 stereo (the
     // device has the multiview feature).
     uint32_t view_mask = 0;
+    // The host's depth-only target (grass_vk_depth_pass_desc), when chained: depth views
+    // draw with pipelines made against it. Absent: the context refuses depth views.
+    bool has_depth_pass = false;
+    grass_vk_depth_pass_desc depth_pass{};
 };
 
 // The format of single-channel design maps (density, ambient, diffuse, height): 16-bit

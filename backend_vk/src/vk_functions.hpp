@@ -67,6 +67,7 @@ namespace grass::vk {
     X(vkCmdBindIndexBuffer)          \
     X(vkCmdSetViewport)              \
     X(vkCmdSetScissor)               \
+    X(vkCmdSetDepthBias)             \
     X(vkCmdDraw)                     \
     X(vkCmdDrawIndexed)              \
     X(vkCmdDispatch)                 \

@@ -124,18 +124,37 @@ bool BladePipeline::create(const PipelineTarget& target, VkFailure* failure, con
 
 bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure,
                                    const char** what) {
-    if (variant.features >= kFeatureMaskCount) return false;
     if (has_variant(variant, depth_test)) return true;
+    const bool depth_pass = (variant.features & kFeatureDepthPass) != 0;
+    if (depth_pass) {
+        // The core refuses a depth view without the host's depth target, and a depth view
+        // with debug views or without the depth test (check_pass).
+        if (!depth_target_.depth_only || !depth_test || variant.program >= kDepthPipelineKinds ||
+            (variant.features & ~kFeatureDepthPass) >= kColourFeatureMasks) {
+            *what = "a depth-only pipeline (no grass_vk_depth_pass_desc)";
+            return false;
+        }
+        if (depth_pipelines_.empty())
+            depth_pipelines_.assign(kColourFeatureMasks * kDepthPipelineKinds, VK_NULL_HANDLE);
+    } else if (variant.features >= kColourFeatureMasks) {
+        return false;
+    }
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
     // A multiview target (stereo) runs the GRASS_MULTIVIEW modules for every pipeline.
     SpirvVariant modules;
     modules.responsive = (variant.features & kBladeCurveFeatures) != 0;
     modules.indexed_blocks = target_.indexed_blocks;
     modules.multiview = target_.view_mask != 0;
+    modules.depth_target = depth_pass; // no colour output: the depth-only target has no attachment for it
     const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(modules)
                                 : variant.program == kShaderVolume ? SlicePipelines::volume_shape(modules)
                                 : variant.program == kShaderImage  ? SlicePipelines::image_shape(modules)
                                                                    : DebugViewPipeline::shape(modules);
+    if (depth_pass) {
+        const uint32_t colour = variant.features & ~kFeatureDepthPass;
+        return create_pipeline(fn_, device_, depth_target_, layout_, shape, variant.features, true,
+                               &depth_pipelines_[colour * kDepthPipelineKinds + variant.program], failure, what);
+    }
     return create_pipeline(fn_, device_, target_, layout_, shape, variant.features, depth_test,
                            &pipelines_[variant.features][variant.program][depth_test ? 0 : 1], failure, what);
 }
@@ -161,7 +180,11 @@ void BladePipeline::destroy_variants(uint32_t features) {
 }
 
 void BladePipeline::destroy() {
-    for (uint32_t f = 0; f < kFeatureMaskCount; ++f) destroy_variants(f);
+    for (uint32_t f = 0; f < kColourFeatureMasks; ++f) destroy_variants(f);
+    for (VkPipeline& p : depth_pipelines_) {
+        if (p) fn_.vkDestroyPipeline(device_, p, fn_.callbacks());
+    }
+    depth_pipelines_.clear();
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
     if (sampler_) fn_.vkDestroySampler(device_, sampler_, fn_.callbacks());
@@ -322,11 +345,12 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
     raster.cullMode = VK_CULL_MODE_NONE;
     raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     raster.lineWidth = 1.0f;
+    raster.depthBiasEnable = target.depth_only ? VK_TRUE : VK_FALSE; // a depth pass's bias: vkCmdSetDepthBias
 
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = target.samples;
     multisample.alphaToCoverageEnable =
-        shape.alpha_to_coverage && target.samples != VK_SAMPLE_COUNT_1_BIT ? VK_TRUE : VK_FALSE;
+        shape.alpha_to_coverage && target.samples != VK_SAMPLE_COUNT_1_BIT && !target.depth_only ? VK_TRUE : VK_FALSE;
 
     VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
     depth.depthTestEnable = depth_test ? VK_TRUE : VK_FALSE;
@@ -338,20 +362,21 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
     attachment.colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = 1;
-    blend.pAttachments = &attachment;
+    blend.attachmentCount = target.depth_only ? 0 : 1; // a depth-only target has no colour attachment
+    blend.pAttachments = target.depth_only ? nullptr : &attachment;
 
-    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                             VK_DYNAMIC_STATE_DEPTH_BIAS};
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dynamic.dynamicStateCount = 2;
+    dynamic.dynamicStateCount = target.depth_only ? 3 : 2;
     dynamic.pDynamicStates = dynamic_states;
 
     // Dynamic rendering (Vulkan 1.3 or VK_KHR_dynamic_rendering): the formats stand in
     // for the render pass.
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
     rendering.viewMask = target.view_mask; // stereo: both eyes in one pass (0: mono)
-    rendering.colorAttachmentCount = 1;
-    rendering.pColorAttachmentFormats = &target.color_format;
+    rendering.colorAttachmentCount = target.depth_only ? 0 : 1;
+    rendering.pColorAttachmentFormats = target.depth_only ? nullptr : &target.color_format;
     rendering.depthAttachmentFormat = target.depth_format;
     if (format_has_stencil(target.depth_format)) rendering.stencilAttachmentFormat = target.depth_format;
 

@@ -7,6 +7,7 @@
 // pipeline shares (create_pipeline).
 #pragma once
 
+#include "foundation/allocator.hpp"
 #include "foundation/shader_interface.hpp"
 #include "foundation/shader_variants.hpp"
 #include "vk_functions.hpp"
@@ -63,6 +64,11 @@ static_assert(kPipelineBlade == static_cast<uint32_t>(kShaderBlades) &&
               "the programs of foundation/shader_variants.hpp");
 // Feature masks are 10 bits (kFeatureMaskCount, backend.hpp): one per MapRole, then
 // kFeatureWind, kFeatureInteraction, kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView.
+// The 11th, kFeatureDepthPass, marks a depth view's draws: their pipelines (blades, volume,
+// image; depth-tested) live in a table of their own, made on the first depth pass, so the
+// colour table holds the colour masks alone.
+constexpr uint32_t kColourFeatureMasks = kFeatureDepthPass;
+constexpr uint32_t kDepthPipelineKinds = 3; // blades, volume, image: a depth pass draws no debug view
 
 struct PipelineTarget {
     VkRenderPass render_pass = VK_NULL_HANDLE; // VK_NULL_HANDLE: dynamic rendering with the formats
@@ -76,6 +82,9 @@ struct PipelineTarget {
     // Multiview (grass_vk_multiview_desc.view_mask): 0x3 for a stereo pass (the GRASS_MULTIVIEW
     // modules; dynamic rendering's viewMask; a render pass's subpass carries its own), 0 for mono.
     uint32_t view_mask = 0;
+    // A depth pass's target (grass_vk_depth_pass_desc): no colour attachment (color_format
+    // unused), no colour writes, no alpha to coverage, the depth bias dynamic (vkCmdSetDepthBias).
+    bool depth_only = false;
 };
 
 // The descriptor type of the Frame and Field blocks (dynamic offsets: one per draw).
@@ -119,7 +128,8 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
 
 class BladePipeline {
 public:
-    BladePipeline(const Functions& functions, VkDevice device) : fn_(functions), device_(device) {}
+    BladePipeline(const Functions& functions, VkDevice device, HostAllocator* host)
+        : fn_(functions), device_(device), depth_pipelines_(StlAllocator<VkPipeline>(host)) {}
     ~BladePipeline() { destroy(); }
     BladePipeline(const BladePipeline&) = delete;
     BladePipeline& operator=(const BladePipeline&) = delete;
@@ -127,17 +137,23 @@ public:
     // The layouts and the depth-tested pipelines of every kind without maps (features 0).
     // *what names the object being made when it fails.
     bool create(const PipelineTarget& target, VkFailure* failure, const char** what);
+    // The depth-only target of depth views (grass_vk_depth_pass_desc; target.depth_only),
+    // before any depth variant is made. Without it create_variant refuses kFeatureDepthPass.
+    void set_depth_target(const PipelineTarget& target) { depth_target_ = target; }
     void destroy();
 
     // Makes the pipeline of `variant` (foundation/shader_variants.hpp) with the depth test
     // or without it (`depth_test` false: GRASS_VIEW_FLAG_NO_DEPTH_TEST) unless it exists.
     // Only grass_prepare_pipelines with the debug views and a frame that turns the depth
-    // test off ask for the latter. On failure it does not exist.
+    // test off ask for the latter. A variant with kFeatureDepthPass (depth-tested, not a
+    // debug view) is made against the depth target, in the depth table (made by the first:
+    // may throw std::bad_alloc). On failure it does not exist.
     bool create_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure, const char** what);
     // The depth-tested pipelines of every kind for `features` (a field's maps: upload_field).
     bool create_variants(uint32_t features, VkFailure* failure, const char** what);
     bool has_variant(const ShaderVariant& v, bool depth_test) const {
-        return v.features < kFeatureMaskCount &&
+        if (v.features & kFeatureDepthPass) return depth_test && depth_slot(v.program, v.features) != nullptr;
+        return v.features < kColourFeatureMasks &&
                pipelines_[v.features][v.program][depth_test ? 0 : 1] != VK_NULL_HANDLE;
     }
 
@@ -145,12 +161,22 @@ public:
     VkPipelineLayout layout() const { return layout_; }
     // The pipeline of `kind` for `features` (has_variant(features, depth_test)).
     VkPipeline pipeline(PipelineKind kind, uint32_t features, bool depth_test) const {
+        if (features & kFeatureDepthPass) return *depth_slot(kind, features);
         return pipelines_[features][kind][depth_test ? 0 : 1];
     }
 
 private:
     bool create_layouts(VkFailure* failure, const char** what);
     void destroy_variants(uint32_t features);
+    // The depth table's entry of `program` for `features` (with kFeatureDepthPass), or
+    // nullptr where it has none (no table yet, a debug view); the entry may be VK_NULL_HANDLE.
+    const VkPipeline* depth_slot(uint32_t program, uint32_t features) const {
+        if (depth_pipelines_.empty() || program >= kDepthPipelineKinds) return nullptr;
+        const uint32_t colour = features & ~kFeatureDepthPass;
+        if (colour >= kColourFeatureMasks) return nullptr;
+        const VkPipeline* p = &depth_pipelines_[colour * kDepthPipelineKinds + program];
+        return *p != VK_NULL_HANDLE ? p : nullptr;
+    }
 
     const Functions& fn_;
     VkDevice device_;
@@ -161,7 +187,11 @@ private:
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     // [features][kind][0 = depth tested, 1 = depth off]; VK_NULL_HANDLE: not made yet
-    VkPipeline pipelines_[kFeatureMaskCount][kPipelineKindCount][2] = {};
+    VkPipeline pipelines_[kColourFeatureMasks][kPipelineKindCount][2] = {};
+    // Depth views: [colour features][kind] (kColourFeatureMasks x kDepthPipelineKinds), empty
+    // until the first depth variant; depth_target_.depth_only: the host gave a depth target.
+    PipelineTarget depth_target_;
+    Vector<VkPipeline> depth_pipelines_;
 };
 
 } // namespace grass::vk

@@ -299,6 +299,8 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
     const LabelScope draw_label(fn_, cmd, "grass draw"); // around everything recorded below
     fn_.vkCmdSetViewport(cmd, 0, 1, &viewport);
     fn_.vkCmdSetScissor(cmd, 0, 1, &scissor);
+    // A depth pass: the view's bias (its pipelines take it as dynamic state).
+    if (plan.depth_pass) fn_.vkCmdSetDepthBias(cmd, plan.depth_bias[0], 0.0f, plan.depth_bias[1]);
     if (device_.indexed_blocks) {
         // The index the shaders read the Frame and Field blocks at (vk_spirv.hpp); it holds
         // for every pipeline of the layout, whatever is bound after it.

@@ -89,6 +89,26 @@ extern const uint32_t debug_tiers_frag_grass_multiview[];
 extern const uint32_t debug_tiers_frag_grass_multiview_size; // bytes
 extern const uint32_t debug_tiers_frag_grass_multiview_grass_indexed_blocks[];
 extern const uint32_t debug_tiers_frag_grass_multiview_grass_indexed_blocks_size; // bytes
+extern const uint32_t blade_frag_grass_depth_target[];
+extern const uint32_t blade_frag_grass_depth_target_size; // bytes
+extern const uint32_t blade_frag_grass_depth_target_grass_indexed_blocks[];
+extern const uint32_t blade_frag_grass_depth_target_grass_indexed_blocks_size; // bytes
+extern const uint32_t volume_frag_grass_depth_target[];
+extern const uint32_t volume_frag_grass_depth_target_size; // bytes
+extern const uint32_t volume_frag_grass_depth_target_grass_indexed_blocks[];
+extern const uint32_t volume_frag_grass_depth_target_grass_indexed_blocks_size; // bytes
+extern const uint32_t volume_frag_grass_depth_target_grass_responsive[];
+extern const uint32_t volume_frag_grass_depth_target_grass_responsive_size; // bytes
+extern const uint32_t volume_frag_grass_depth_target_grass_responsive_grass_indexed_blocks[];
+extern const uint32_t volume_frag_grass_depth_target_grass_responsive_grass_indexed_blocks_size; // bytes
+extern const uint32_t image_frag_grass_depth_target[];
+extern const uint32_t image_frag_grass_depth_target_size; // bytes
+extern const uint32_t image_frag_grass_depth_target_grass_indexed_blocks[];
+extern const uint32_t image_frag_grass_depth_target_grass_indexed_blocks_size; // bytes
+extern const uint32_t image_frag_grass_depth_target_grass_responsive[];
+extern const uint32_t image_frag_grass_depth_target_grass_responsive_size; // bytes
+extern const uint32_t image_frag_grass_depth_target_grass_responsive_grass_indexed_blocks[];
+extern const uint32_t image_frag_grass_depth_target_grass_responsive_grass_indexed_blocks_size; // bytes
 } // namespace grass_vk_spirv
 
 namespace grass::vk {
@@ -160,9 +180,34 @@ const Spirv kModules[][2][2][2] = {
        {debug_tiers_frag_grass_multiview_grass_indexed_blocks,
         debug_tiers_frag_grass_multiview_grass_indexed_blocks_size}}}},
 };
+
+// The depth-only target's fragment shaders (GRASS_DEPTH_TARGET): [blade, volume, image][responsive]
+// [indexed blocks] (blade.frag has no responsive variant).
+const Spirv kDepthTargetModules[3][2][2] = {
+    {{{blade_frag_grass_depth_target, blade_frag_grass_depth_target_size},
+      {blade_frag_grass_depth_target_grass_indexed_blocks, blade_frag_grass_depth_target_grass_indexed_blocks_size}},
+     {{blade_frag_grass_depth_target, blade_frag_grass_depth_target_size},
+      {blade_frag_grass_depth_target_grass_indexed_blocks, blade_frag_grass_depth_target_grass_indexed_blocks_size}}},
+    {{{volume_frag_grass_depth_target, volume_frag_grass_depth_target_size},
+      {volume_frag_grass_depth_target_grass_indexed_blocks, volume_frag_grass_depth_target_grass_indexed_blocks_size}},
+     {{volume_frag_grass_depth_target_grass_responsive, volume_frag_grass_depth_target_grass_responsive_size},
+      {volume_frag_grass_depth_target_grass_responsive_grass_indexed_blocks,
+       volume_frag_grass_depth_target_grass_responsive_grass_indexed_blocks_size}}},
+    {{{image_frag_grass_depth_target, image_frag_grass_depth_target_size},
+      {image_frag_grass_depth_target_grass_indexed_blocks, image_frag_grass_depth_target_grass_indexed_blocks_size}},
+     {{image_frag_grass_depth_target_grass_responsive, image_frag_grass_depth_target_grass_responsive_size},
+      {image_frag_grass_depth_target_grass_responsive_grass_indexed_blocks,
+       image_frag_grass_depth_target_grass_responsive_grass_indexed_blocks_size}}},
+};
 } // namespace
 
 Spirv spirv(Shader shader, SpirvVariant variant) {
+    if (variant.depth_target) {
+        const int program = shader == Shader::blade_frag ? 0 : shader == Shader::volume_frag ? 1 : 2;
+        if (shader == Shader::blade_frag || shader == Shader::volume_frag || shader == Shader::image_frag) {
+            return kDepthTargetModules[program][variant.responsive ? 1 : 0][variant.indexed_blocks ? 1 : 0];
+        }
+    }
     return kModules[static_cast<int>(shader)][variant.multiview ? 1 : 0][variant.responsive ? 1 : 0]
                    [variant.indexed_blocks ? 1 : 0];
 }

@@ -8,6 +8,10 @@
 // - indexed blocks: compiled with GRASS_INDEXED_BLOCKS, the Frame and Field blocks read
 //   at an index from a push constant (always 0) instead of the literal 0; the pipeline
 //   layout then has a 4-byte push-constant range, which vk_record sets to 0.
+// - depth target: the fragment shaders (blade, volume, image) compiled with GRASS_DEPTH_TARGET,
+//   without the colour output, for a depth pass's pipelines (grass_vk_depth_pass_desc: the
+//   host's depth-only pass has no colour attachment, which the validation layers would warn
+//   of); mono, plain or responsive, indexed or not.
 //
 // Why indexed blocks: lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3) specialises a
 // shader whose branches or loop bounds read uniform-buffer values at constant offsets on
@@ -39,6 +43,9 @@ struct SpirvVariant {
     bool responsive = false;     // GRASS_RESPONSIVE (shaders without it: the plain module)
     bool indexed_blocks = false; // GRASS_INDEXED_BLOCKS
     bool multiview = false;      // GRASS_MULTIVIEW
+    // GRASS_DEPTH_TARGET: the fragment shaders of a depth pass's pipelines (blade, volume and
+    // image), made for the host's depth-only target: no colour output. Mono only.
+    bool depth_target = false;
 };
 
 Spirv spirv(Shader shader, SpirvVariant variant);

@@ -311,6 +311,7 @@ void write_uniform_descriptor(VkDevice device, VkDescriptorSet set, VkBuffer buf
 
 bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* out, std::string* error) {
     const bool msaa = desc.samples != VK_SAMPLE_COUNT_1_BIT;
+    const bool depth_only = desc.color_format == VK_FORMAT_UNDEFINED; // a shadow map's pass: depth alone
     VkAttachmentDescription attachments[3] = {};
     // 0: colour (multisampled or not). Single-sample: the image the pass ends in.
     attachments[0].format = desc.color_format;
@@ -334,19 +335,19 @@ bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* o
     attachments[2].finalLayout = desc.color_final;
 
     const VkAttachmentReference color_ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference depth_ref{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+    const VkAttachmentReference depth_ref{depth_only ? 0u : 1u, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     const VkAttachmentReference resolve_ref{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &color_ref;
-    subpass.pResolveAttachments = msaa ? &resolve_ref : nullptr;
+    subpass.colorAttachmentCount = depth_only ? 0 : 1;
+    subpass.pColorAttachments = depth_only ? nullptr : &color_ref;
+    subpass.pResolveAttachments = msaa && !depth_only ? &resolve_ref : nullptr;
     subpass.pDepthStencilAttachment = &depth_ref;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
     info.pNext = desc.next;
-    info.attachmentCount = msaa ? 3 : 2;
-    info.pAttachments = attachments;
+    info.attachmentCount = depth_only ? 1 : msaa ? 3 : 2;
+    info.pAttachments = depth_only ? &attachments[1] : attachments;
     info.subpassCount = 1;
     info.pSubpasses = &subpass;
     info.dependencyCount = 2;

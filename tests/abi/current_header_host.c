@@ -31,6 +31,8 @@ int main(void) {
     CHECK(grass_default_vk_host_objects_desc().allocation_callbacks == NULL);
     CHECK(grass_default_vk_multiview_desc().type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC);
     CHECK(grass_default_vk_multiview_desc().view_mask == 0);
+    CHECK(grass_default_vk_depth_pass_desc().type == GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC);
+    CHECK(grass_default_vk_depth_pass_desc().render_pass == 0 && grass_default_vk_depth_pass_desc().sample_count == 1);
     CHECK(grass_default_vk_record_desc().type == GRASS_STRUCT_TYPE_VK_RECORD_DESC);
     CHECK_OK(grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx));
     if (!ctx) return 1;

@@ -411,6 +411,56 @@ TEST_P(GlStateTest, AHostsUnusualDrawStateChangesNeitherTheGrassNorItself) {
     }
 }
 
+// A depth pass (grass_view_pass_desc) masks every colour off and sets its polygon offset:
+// the host's masks and offset (enabled with its values, or disabled at 0) are back after it.
+TEST_P(GlStateTest, ADepthPassRestoresTheHostsColourMasksAndPolygonOffset) {
+    StateGl gl{};
+    load(*host, &gl.GetIntegerv, "glGetIntegerv");
+    load(*host, &gl.GetIntegeri_v, "glGetIntegeri_v");
+    load(*host, &gl.GetBooleani_v, "glGetBooleani_v");
+    load(*host, &gl.GetFloatv, "glGetFloatv");
+    load(*host, &gl.IsEnabled, "glIsEnabled");
+    load(*host, &gl.Enable, "glEnable");
+    load(*host, &gl.Disable, "glDisable");
+    load(*host, &gl.ColorMask, "glColorMask");
+    load(*host, &gl.StencilFunc, "glStencilFunc");
+    load(*host, &gl.Scissor, "glScissor");
+    load(*host, &gl.PolygonOffset, "glPolygonOffset");
+    load(*host, &gl.SampleMaski, "glSampleMaski");
+    load(*host, &gl.MinSampleShading, "glMinSampleShading");
+    load(*host, &gl.SampleCoverage, "glSampleCoverage");
+    load(*host, &gl.PrimitiveRestartIndex, "glPrimitiveRestartIndex");
+    load(*host, &gl.LogicOp, "glLogicOp");
+    load(*host, &gl.FrontFace, "glFrontFace");
+    make_field(field_desc(16));
+    const double eye[3] = {2.0, 1.5, -1.0}, target[3] = {2.0, 0.0, 2.0};
+    grass_view_desc v = view(eye, target);
+    grass_view_pass_desc pass = grass_default_view_pass_desc();
+    pass.pass = GRASS_PASS_DEPTH;
+    pass.depth_bias_constant = 4.0f;
+    pass.depth_bias_slope = 1.5f;
+    v.next = &pass;
+    for (const bool unusual : {false, true}) {
+        SCOPED_TRACE(unusual ? "the host's unusual state" : "the default state");
+        DrawState before{}, after{};
+        host->before_grass = [&] {
+            if (unusual) set_unusual_state(gl);
+            before = draw_state(gl);
+        };
+        host->after_grass = [&] {
+            after = draw_state(gl);
+            set_default_state(gl);
+        };
+        render(v);
+        host->before_grass = nullptr;
+        host->after_grass = nullptr;
+        EXPECT_TRUE(before == after) << "the depth pass left the host's draw state changed";
+        EXPECT_EQ(after.offset_fill, unusual ? GL_TRUE : GL_FALSE);
+        EXPECT_EQ(after.offset_units, unusual ? 1e7f : 0.0f);
+        EXPECT_EQ(after.color_mask[1], GL_TRUE);
+    }
+}
+
 // Responsive grass touches more (grass_gl.h): shader storage bindings 0-3 and the generic
 // one, image unit 0, texture units 10-11 and their samplers. With wind and a collider (the
 // interaction pass runs and the draws read the map and the blade curves), every one of

@@ -64,9 +64,10 @@ void (*gl_filter(const char* name, void (*real)(void)))(void) {
 
 // ---- The scene ------------------------------------------------------------------------------
 
-grass_host::TargetDesc counted_target(grass_backend backend, bool host_cache = false) {
+grass_host::TargetDesc counted_target(grass_backend backend, bool host_cache = false, bool depth_target = false) {
     grass_host::TargetDesc t;
     t.width = t.height = 64;
+    t.vk_depth_pass = t.read_depth = depth_target; // Vulkan: a depth-only pass given to grass
     if (backend == GRASS_BACKEND_VULKAN) t.vk_get_instance_proc_addr = vi::get_instance_proc_addr();
     if (backend == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_filter;
     t.vk_host_pipeline_cache = host_cache;
@@ -116,11 +117,12 @@ grass_result make_field(Scene* s, grass_field_id* field) {
     return grass_create_field(s->ctx, &fd, field);
 }
 
-void make_scene(Scene* s, grass_backend backend, bool host_cache = false, bool blade_only = false) {
+void make_scene(Scene* s, grass_backend backend, bool host_cache = false, bool blade_only = false,
+                bool depth_target = false) {
     s->backend = backend;
     s->blade_only = blade_only;
     std::string error;
-    s->host = grass_host::Host::create(backend, counted_target(backend, host_cache), &error);
+    s->host = grass_host::Host::create(backend, counted_target(backend, host_cache, depth_target), &error);
     ASSERT_TRUE(s->host) << error;
     ASSERT_EQ(make_context(s, &s->ctx), GRASS_SUCCESS) << s->log;
     grass_patch_desc pd = grass_default_patch_desc();
@@ -312,6 +314,41 @@ TEST(VkDepthPipelines, AContextWithAPlainFieldMakesOnlyTheDepthTestedPipelines) 
     const int64_t frame = vi::live().pipelines_made;
     render(s, 0.0);
     EXPECT_EQ(vi::live().pipelines_made, frame) << "the frame of still grass made a pipeline";
+}
+
+// A context given a depth-only target (grass_vk_depth_pass_desc) makes nothing for it until a
+// depth view draws: the pipelines of a context without one. The first depth frame makes the
+// depth-only pipeline of each tier kind it draws (the scene's view sees two), before
+// recording; a second makes none, and neither does a colour frame after them.
+TEST(VkDepthPipelines, ADepthTargetMakesNothingUntilADepthViewDrawsThenOnePipelinePerTier) {
+    const int64_t before = vi::live().pipelines_made;
+    Scene s;
+    make_scene(&s, GRASS_BACKEND_VULKAN, false, false, true);
+    ASSERT_FALSE(HasFatalFailure());
+    EXPECT_EQ(vi::live().pipelines_made - before, GRASS_TIER_KIND_COUNT + 1)
+        << "a context with a depth target should make what one without makes (3 tier kinds and the debug boxes)";
+    render(s, 0.0);
+    grass_view_pass_desc pass = grass_default_view_pass_desc();
+    pass.pass = GRASS_PASS_DEPTH;
+    grass_view_desc v = scene_view(s);
+    v.next = &pass;
+    grass_host::Image image;
+    std::string error;
+    for (int frame = 0; frame < 2; ++frame) {
+        const int64_t depth_before = vi::live().pipelines_made;
+        s.host->depth_only = true;
+        ASSERT_EQ(s.host->render(s.ctx, v, nullptr, &image, &error), GRASS_SUCCESS) << error << s.log;
+        s.host->depth_only = false;
+        grass_frame_stats stats{};
+        ASSERT_EQ(grass_get_frame_stats(s.ctx, &stats), GRASS_SUCCESS);
+        int64_t kinds = 0;
+        for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) kinds += stats.instances[k] > 0 ? 1 : 0;
+        EXPECT_GE(kinds, 2) << "the depth view should see two tier kinds or more";
+        EXPECT_EQ(vi::live().pipelines_made - depth_before, frame == 0 ? kinds : 0) << "depth frame " << frame;
+    }
+    const int64_t colour_before = vi::live().pipelines_made;
+    render(s, 0.1);
+    EXPECT_EQ(vi::live().pipelines_made, colour_before) << "the colour frame after the depth frames made a pipeline";
 }
 
 // After a preparation without the debug views, the first frame that turns the depth test off

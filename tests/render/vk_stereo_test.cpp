@@ -562,5 +562,45 @@ TEST_F(VkStereo, AFrameWhoseEyesDoNotMatchTheContextsPassIsRefused) {
     grass_destroy_context(ctx);
 }
 
+// A grass_vk_depth_pass_desc (depth-only passes, grass_view_pass_desc) is checked as
+// grass_vk_desc is: its depth format (required, and one the device can attach), sample count,
+// a subpass without a render pass, chained twice, and with a stereo pass (depth views are
+// mono) are refused naming the field and its value, and no context is made.
+TEST_F(VkStereo, ABadDepthPassDescIsRefusedNamingTheField) {
+    grass_context_desc cd = contexts.desc();
+    grass_context* ctx = nullptr;
+    const auto refused = [&](const grass_vk_depth_pass_desc& depth, uint32_t view_mask, const char* message) {
+        grass_vk_desc d = host.vk_desc(view_mask);
+        grass_vk_depth_pass_desc chained = depth;
+        if (!chained.next) chained.next = d.next;
+        d.next = &chained;
+        contexts.log.clear();
+        EXPECT_EQ(grass_vk_create_context(GRASS_HEADER_VERSION, &cd, &d, &ctx), GRASS_ERROR_INVALID_ARGUMENT)
+            << message;
+        EXPECT_EQ(ctx, nullptr);
+        EXPECT_NE(contexts.log.find(message), std::string::npos) << contexts.log;
+        if (ctx) grass_destroy_context(ctx); // made by mistake
+        ctx = nullptr;
+    };
+    grass_vk_depth_pass_desc depth = grass_default_vk_depth_pass_desc();
+    EXPECT_EQ(depth.type, GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC);
+    EXPECT_EQ(depth.sample_count, 1u);
+    refused(depth, 0, "grass_vk_depth_pass_desc.depth_format is 0 (VK_FORMAT_UNDEFINED)");
+    depth.depth_format = kDepthFormat;
+    depth.sample_count = 3;
+    refused(depth, 0, "grass_vk_depth_pass_desc.sample_count is 3");
+    depth.sample_count = 1;
+    depth.subpass = 1;
+    refused(depth, 0, "grass_vk_depth_pass_desc.subpass is 1 with render_pass 0");
+    depth.subpass = 0;
+    depth.depth_format = VK_FORMAT_R8G8B8A8_UNORM;
+    refused(depth, 0, "grass_vk_depth_pass_desc.depth_format is 37, which the device");
+    depth.depth_format = kDepthFormat;
+    refused(depth, 0x3, "grass_vk_multiview_desc with view_mask 0x3; depth passes are drawn by mono contexts only");
+    grass_vk_depth_pass_desc again = depth;
+    depth.next = &again;
+    refused(depth, 0, "type 0x67720206 a second time");
+}
+
 } // namespace
 } // namespace grass_test

@@ -36,6 +36,8 @@ Rig::Rig(const Options& options) : options_(options) {
     grass_host::TargetDesc target;
     target.width = options.width;
     target.height = options.height;
+    // --depth-pass on Vulkan: the host's depth-only pass, given to grass (grass_vk_depth_pass_desc).
+    target.vk_depth_pass = target.read_depth = options.depth_pass && options.backend == GRASS_BACKEND_VULKAN;
     std::string error;
     host_ = grass_host::Host::create(options.backend, target, &error);
     if (!host_) throw grass_sample::Failure("cannot create the headless host: " + error);
@@ -211,6 +213,10 @@ Subcommand add_tier_cost(CLI::App& measure) {
         ->check(CLI::ExistingFile);
     app->add_option("--tier", o->tier, "only the rows of this tier (to profile one)")
         ->check(CLI::IsMember({"geometry", "volume", "image"}))
+        ->excludes(maps)
+        ->excludes(features);
+    app->add_flag("--depth-pass", o->depth_pass,
+                  "each row of the plain table also as a depth pass of the same view (docs/records/depth-pass.md)")
         ->excludes(maps)
         ->excludes(features);
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")

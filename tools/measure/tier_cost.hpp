@@ -36,9 +36,12 @@
 // machine that others load, wall time grows with their load and CPU time far less, so the
 // CPU column is the one to compare between backends there.
 // --single: only the three tiers alone in single cells (geometry, volume 8 slices, image).
+// --depth-pass: each row of the plain table also as a depth pass of the same view
+// (grass_view_pass_desc, GRASS_PASS_DEPTH; docs/records/depth-pass.md), the rows' frames
+// alternating colour and depth; per basic cell each, and the ratio depth / colour.
 // --frames N: frames measured per row (after one that uploads); default 5 (median).
 // Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features | --single] [--frames N]
-//        [--rounds N]
+//        [--rounds N] [--depth-pass]
 #pragma once
 
 #include <grass/grass.h>
@@ -57,7 +60,8 @@ struct Options {
     grass_backend backend = GRASS_BACKEND_GL;
     uint32_t width = 320, height = 240;
     bool maps = false, features = false;
-    bool single = false; // only the tiers alone in single cells (kSingleTiers)
+    bool single = false;     // only the tiers alone in single cells (kSingleTiers)
+    bool depth_pass = false; // --depth-pass: each plain row also as a depth pass
     int frames = 5;
     int rounds = 3;          // --maps and --features only
     std::string patch_scene; // --patch-of: the patch of this scene file instead of the default patch
@@ -108,6 +112,12 @@ public:
     // Advances grass_view_desc.time by `seconds` before each frame from now on (0, the
     // default: every frame at time 0, so the responsive grass steps 0).
     void set_time_step(double seconds) { time_step_ = seconds; }
+    // Chains `pass` on the view (nullptr: none, a colour pass) for the frames from now on;
+    // Vulkan draws a depth pass in the host's depth-only pass (Host::depth_only).
+    void set_pass(const grass_view_pass_desc* pass) {
+        view_.next = pass;
+        host_->depth_only = pass != nullptr && pass->pass == GRASS_PASS_DEPTH;
+    }
     grass_frame_stats frame_stats();
     grass_memory_stats memory_stats();
 

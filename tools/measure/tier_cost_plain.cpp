@@ -2,6 +2,7 @@
 // then by the volume (8 slices) and image tiers in macro-cells of up to 2, 4, 8 and 16 cells a
 // side; the median frame, and per basic cell the frame minus the empty one, in wall and in CPU
 // time. --single: the first, third and fifth rows only (kSingleTiers); --tier: one tier's rows.
+// --depth-pass: run_depth_pass below instead.
 #include "tier_cost.hpp"
 
 #include "cli.hpp"
@@ -15,6 +16,52 @@
 
 namespace grass_measure {
 namespace tier_cost {
+
+namespace {
+
+// The rows as colour and as depth passes of the same view: `rounds` rounds of `frames`
+// frames each, colour then depth, pooled per pass (a load that comes and goes falls on both);
+// per basic cell, the median frame minus the empty one, in wall and CPU time, and the ratios.
+int run_depth_pass(Rig& rig, const std::vector<Setup>& rows) {
+    const Options& o = rig.options();
+    grass_context* ctx = rig.ctx();
+    grass_view_pass_desc depth = grass_default_view_pass_desc();
+    depth.pass = GRASS_PASS_DEPTH;
+    std::printf("grass-tier-cost --depth-pass: %s (%s), %ux%u, 1024 cells of 0.25 m, frame with no grass %.2f ms (CPU "
+                "%.2f ms)\n\n",
+                grass_sample::backend_name(o.backend), rig.host().device_name().c_str(), o.width, o.height,
+                rig.empty_ms(), rig.empty_cpu_ms());
+    std::printf("| tier | colour per basic cell (us) | depth per basic cell (us) | depth / colour | CPU: colour (us) | "
+                "CPU: depth (us) | CPU: depth / colour |\n|---|---|---|---|---|---|---|\n");
+    for (const Setup& s : rows) {
+        if (!o.tier.empty() && std::strncmp(s.name, o.tier.c_str(), o.tier.size()) != 0) continue;
+        const TierField tf(s, rig.patch());
+        grass_field_id field{};
+        grass_sample::check(grass_create_field(ctx, &tf.desc, &field), "grass_create_field", ctx);
+        std::vector<double> wall[2], cpu[2];
+        for (int round = 0; round < 3; ++round) {
+            for (int pass = 0; pass < 2; ++pass) {
+                rig.set_pass(pass == 1 ? &depth : nullptr);
+                std::vector<double> c;
+                const std::vector<double> w = rig.frame_times(o.frames, nullptr, &c);
+                wall[pass].insert(wall[pass].end(), w.begin(), w.end());
+                cpu[pass].insert(cpu[pass].end(), c.begin(), c.end());
+            }
+        }
+        rig.set_pass(nullptr);
+        double us[2], cpu_us[2];
+        for (int pass = 0; pass < 2; ++pass) {
+            us[pass] = 1000.0 * (grass_sample::median_high(wall[pass]) - rig.empty_ms()) / 1024.0;
+            cpu_us[pass] = 1000.0 * (grass_sample::median_high(cpu[pass]) - rig.empty_cpu_ms()) / 1024.0;
+        }
+        std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", s.name, us[0], us[1], us[1] / us[0],
+                    cpu_us[0], cpu_us[1], cpu_us[1] / cpu_us[0]);
+        grass_sample::check(grass_destroy_field(ctx, field), "grass_destroy_field", ctx);
+    }
+    return rig.finish();
+}
+
+} // namespace
 
 int run_plain(Rig& rig) {
     const Setup setups[] = {
@@ -35,6 +82,7 @@ int run_plain(Rig& rig) {
     const Options& o = rig.options();
     const std::vector<Setup> rows = o.single ? std::vector<Setup>(std::begin(kSingleTiers), std::end(kSingleTiers))
                                              : std::vector<Setup>(std::begin(setups), std::end(setups));
+    if (o.depth_pass) return run_depth_pass(rig, rows);
     grass_context* ctx = rig.ctx();
     std::printf("grass-tier-cost: %s (%s), %ux%u, 1024 cells of 0.25 m, frame with no grass %.2f ms (CPU %.2f ms)\n\n",
                 grass_sample::backend_name(o.backend), rig.host().device_name().c_str(), o.width, o.height,

@@ -205,6 +205,7 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_VK_PREPARE_DESC = 0x67720203,      /* 0.5 */
     GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC = 0x67720204, /* 0.5 */
     GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC = 0x67720205,    /* 0.5 */
+    GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC = 0x67720206,   /* 0.5: depth-only passes on Vulkan */
     /* 0.5: responsive grass */
     GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
@@ -215,7 +216,8 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E, /* 0.5 */
     GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,  /* 0.5: stereo */
     GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,   /* 0.5 */
-    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011         /* 0.5: frames and views */
+    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,        /* 0.5: frames and views */
+    GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012     /* 0.5: depth-only passes (shadows) */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -847,7 +849,8 @@ typedef enum grass_view_flags {
 typedef struct grass_view_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VIEW_DESC */
     /* NULL, or a chain of the view's extensions (0.5), each at most once, in any order:
-     * grass_stereo_view_desc (the second eye of a multiview pass) and grass_lod_origin_desc. */
+     * grass_stereo_view_desc (the second eye of a multiview pass), grass_lod_origin_desc and
+     * grass_view_pass_desc. */
     const void* next;
     double camera_position[3]; /* world space, metres, within +-1e12 m each */
     /* World-to-eye matrix, column-major. Only its rotation is used: translation comes
@@ -925,6 +928,42 @@ typedef struct grass_lod_origin_desc {
 } grass_lod_origin_desc;
 
 GRASS_API grass_lod_origin_desc grass_default_lod_origin_desc(void);
+
+/* 0.5: What a view's pass writes (docs/integration.md, "Shadows: grass in the host's shadow
+ * maps"). */
+typedef enum grass_pass_kind {
+    GRASS_PASS_COLOR = 0, /* colour and depth, lit (the default) */
+    /* Depth alone, for the host's shadow maps: every tier draws its alpha-tested coverage
+     * (the blades as they are, the volume tier's ray to the depth the colour pass gives it,
+     * the image tier's slice where its coverage passes) with a shader variant of its own that
+     * does no lighting, and writes no colour (GL: every draw buffer's colour mask is off while
+     * grass draws it; Vulkan: into the depth-only target of grass_vk_depth_pass_desc, which a
+     * Vulkan context needs for it: without one it refuses a depth view, GRASS_ERROR_INVALID_STATE). */
+    GRASS_PASS_DEPTH = 1
+} grass_pass_kind;
+
+/* 0.5: Chained on grass_view_desc.next: the pass the view draws. Without it a view is a
+ * GRASS_PASS_COLOR view. A depth pass takes none of the debug view flags or
+ * GRASS_VIEW_FLAG_NO_DEPTH_TEST (GRASS_ERROR_INVALID_ARGUMENT). A frame without a depth view
+ * compiles, creates and holds nothing for it. */
+typedef struct grass_view_pass_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VIEW_PASS_DESC */
+    const void* next;       /* the view's next extension, or NULL */
+    grass_pass_kind pass;   /* default GRASS_PASS_COLOR */
+    /* The depth bias of a depth pass, as the host's own shadow casters take it: GL
+     * glPolygonOffset(depth_bias_slope, depth_bias_constant) while grass draws (restored
+     * after; the volume tier, which writes its own depth, adds the bias its carrier box
+     * got; Vulkan: vkCmdSetDepthBias(constant, 0, slope), dynamic state of grass's depth-only
+     * pipelines). Added to the depth in the host's convention: positive pushes grass away from a
+     * GRASS_DEPTH_LESS light, negative from a GRASS_DEPTH_GREATER (reversed) one. constant
+     * within +-65536 units of the depth's resolution, slope within +-64; 0 and 0 (the
+     * default) bias nothing. Ignored by a colour pass. */
+    float depth_bias_constant;
+    float depth_bias_slope;
+} grass_view_pass_desc;
+
+/* Default: GRASS_PASS_COLOR, no bias. */
+GRASS_API grass_view_pass_desc grass_default_view_pass_desc(void);
 
 /* Starts a frame of one view: validates the view and plans what every field draws. Then
  * draw with grass_gl_render() or grass_vk_record(), and close with grass_end_frame().

@@ -88,6 +88,11 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     distances 0-7, rasterizer discard, sample mask, sample shading, sample coverage,
  *     alpha-to-one, depth clamp, primitive restart (both kinds), colour logic op. Their
  *     values (stencil func, scissor box, offsets, masks, restart index...) are not touched.
+ *   - 0.5: a depth pass (grass_view_pass_desc, GRASS_PASS_DEPTH) also turns draw buffer 0's
+ *     colour mask off (every draw buffer's is then off: no colour is written), turns
+ *     alpha-to-coverage off, and turns polygon offset (fill) on with
+ *     glPolygonOffset(depth_bias_slope, depth_bias_constant); the host's polygon offset
+ *     factor and units, and its enable, are restored afterwards.
  *
  * Read as the host's conventions and honoured, never changed:
  *   - the bound draw framebuffer, its draw buffers and its sample count;

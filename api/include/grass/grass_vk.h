@@ -80,7 +80,7 @@ typedef grass_vk_void_function(GRASS_VKAPI_PTR* grass_vk_get_instance_proc_addr_
 typedef struct grass_vk_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_DESC */
     /* NULL, or a chain of extensions (0.5): a grass_vk_host_objects_desc, a
-     * grass_vk_multiview_desc, each at most once, in any order */
+     * grass_vk_multiview_desc, a grass_vk_depth_pass_desc, each at most once, in any order */
     const void* next;
     grass_vk_get_instance_proc_addr_fn get_instance_proc_addr; /* required */
     void* instance;                                            /* VkInstance, required */
@@ -144,6 +144,30 @@ typedef struct grass_vk_multiview_desc {
 
 /* 0.5 */
 GRASS_API grass_vk_multiview_desc grass_default_vk_multiview_desc(void);
+
+/* 0.5: Depth-only passes (grass_view_pass_desc, GRASS_PASS_DEPTH; docs/integration.md,
+ * "Shadows: grass in the host's shadow maps"), chained through grass_vk_desc.next: the
+ * host's depth-only target that grass draws its depth views in (a shadow map's pass, which
+ * has no colour attachment). Its fields follow grass_vk_desc's. grass makes depth-only
+ * pipelines against it on the first depth view that draws each tier and feature mask: no
+ * colour attachment, no colour writes, no alpha to coverage, the view's depth bias as
+ * dynamic state (vkCmdSetDepthBias). Without this struct a context refuses a depth view
+ * (GRASS_ERROR_INVALID_STATE); a context that never draws one holds nothing for it. Not with
+ * grass_vk_multiview_desc.view_mask 0x3 (GRASS_ERROR_INVALID_ARGUMENT). */
+typedef struct grass_vk_depth_pass_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC */
+    const void* next;       /* NULL, or a further extension of grass_vk_desc */
+    /* Either a render pass whose subpass `subpass` has a depth attachment and no colour
+     * attachment ... */
+    uint64_t render_pass; /* VkRenderPass, or 0 (the default) for dynamic rendering */
+    uint32_t subpass;     /* default 0 */
+    /* ... or dynamic rendering (render_pass = 0): a depth attachment alone. */
+    uint32_t depth_format; /* VkFormat of the depth attachment, required */
+    uint32_t sample_count; /* VkSampleCountFlagBits of the pass: 1, 2, 4...; default 1 */
+} grass_vk_depth_pass_desc;
+
+/* 0.5 */
+GRASS_API grass_vk_depth_pass_desc grass_default_vk_depth_pass_desc(void);
 
 GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const grass_context_desc* desc,
                                                const grass_vk_desc* vk_desc, grass_context** out_context);

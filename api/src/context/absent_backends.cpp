@@ -56,6 +56,13 @@ GRASS_API grass_vk_multiview_desc grass_default_vk_multiview_desc(void) {
     d.type = GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC;
     return d;
 }
+GRASS_API grass_vk_depth_pass_desc grass_default_vk_depth_pass_desc(void) {
+    grass_vk_depth_pass_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC;
+    d.sample_count = 1;
+    return d;
+}
 GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void) {
     grass_vk_record_desc d;
     std::memset(&d, 0, sizeof(d));

@@ -53,6 +53,29 @@ grass_result check_eye(grass_context* ctx, const char* fn, const char* who, cons
     return GRASS_SUCCESS;
 }
 
+// A grass_view_pass_desc: a known pass, finite biases within range; a depth pass draws no
+// debug view and keeps the depth test (it is all it writes).
+grass_result check_pass(grass_context* ctx, const char* fn, const grass_view_pass_desc& pass, uint32_t view_flags) {
+    const int64_t kind = raw_enum(pass.pass);
+    if (kind != GRASS_PASS_COLOR && kind != GRASS_PASS_DEPTH) {
+        return ctx->fail(
+            GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+            "%s: grass_view_pass_desc->pass is %lld; expected GRASS_PASS_COLOR (0) or GRASS_PASS_DEPTH (1)", fn,
+            static_cast<long long>(kind));
+    }
+    GRASS_TRY(
+        check_range(ctx, fn, "grass_view_pass_desc->depth_bias_constant", pass.depth_bias_constant, -65536.0, 65536.0));
+    GRASS_TRY(check_range(ctx, fn, "grass_view_pass_desc->depth_bias_slope", pass.depth_bias_slope, -64.0, 64.0));
+    const uint32_t refused = kDebugViewFlags | GRASS_VIEW_FLAG_DEBUG_CELLS | GRASS_VIEW_FLAG_NO_DEPTH_TEST;
+    if (kind == GRASS_PASS_DEPTH && (view_flags & refused) != 0) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                         "%s: view->flags is 0x%x with grass_view_pass_desc->pass GRASS_PASS_DEPTH; a depth pass takes "
+                         "no debug view flag and no GRASS_VIEW_FLAG_NO_DEPTH_TEST",
+                         fn, view_flags);
+    }
+    return GRASS_SUCCESS;
+}
+
 // The view's extension chain (grass_view_desc.next): each known struct at most once.
 grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_view_desc& v, ViewExtensions* out) {
     *out = ViewExtensions{};
@@ -69,21 +92,34 @@ grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_vi
             out->lod_origin = static_cast<const grass_lod_origin_desc*>(p);
             GRASS_TRY(check_position(ctx, fn, "grass_lod_origin_desc->position", out->lod_origin->position));
             p = out->lod_origin->next;
+        } else if (type == GRASS_STRUCT_TYPE_VIEW_PASS_DESC && !out->pass) {
+            out->pass = static_cast<const grass_view_pass_desc*>(p);
+            GRASS_TRY(check_pass(ctx, fn, *out->pass, v.flags));
+            p = out->pass->next;
         } else {
-            return ctx->fail(
-                GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
-                "%s: view->next chain element %u has type 0x%08x; expected "
-                "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC or GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC, each at most once",
-                fn, position, static_cast<unsigned>(type));
+            return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                             "%s: view->next chain element %u has type 0x%08x; expected "
+                             "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC, GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC or "
+                             "GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most once",
+                             fn, position, static_cast<unsigned>(type));
         }
     }
     return GRASS_SUCCESS;
 }
 
 // A stereo frame needs a target of two views, and a target of two views a stereo frame.
+// A depth pass needs a target to draw in (Vulkan: grass_vk_depth_pass_desc).
 grass_result check_views(grass_context* ctx, const char* fn, const ViewExtensions& ext) {
     if (!ctx->backend || ctx->backend->kind() == GRASS_BACKEND_NONE) return GRASS_SUCCESS; // plans only
-    const uint32_t views = ctx->backend->render_target().views;
+    const RenderTarget target = ctx->backend->render_target();
+    if (ext.pass && ext.pass->pass == GRASS_PASS_DEPTH && !target.depth_pass) {
+        return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: view->next chains a grass_view_pass_desc with GRASS_PASS_DEPTH, but the context was "
+                         "created without a grass_vk_depth_pass_desc (chained on grass_vk_desc.next): the depth-only "
+                         "target grass makes its depth pipelines for",
+                         fn);
+    }
+    const uint32_t views = target.views;
     if (ext.stereo && views == 2) return GRASS_SUCCESS;
     if (!ext.stereo && views == 1) return GRASS_SUCCESS;
     if (ctx->backend->kind() == GRASS_BACKEND_GL) {
@@ -267,6 +303,14 @@ GRASS_API grass_lod_origin_desc grass_default_lod_origin_desc(void) {
     grass_lod_origin_desc d;
     std::memset(&d, 0, sizeof(d));
     d.type = GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC;
+    return d;
+}
+
+GRASS_API grass_view_pass_desc grass_default_view_pass_desc(void) {
+    grass_view_pass_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_VIEW_PASS_DESC;
+    d.pass = GRASS_PASS_COLOR;
     return d;
 }
 

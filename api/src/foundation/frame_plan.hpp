@@ -61,6 +61,11 @@ struct RenderTarget {
     bool clip_zero_to_one = false; // clip z runs 0..1 (Vulkan, GL_ZERO_TO_ONE), else -1..1 (GL's default)
     uint32_t views = 1;            // 2: a multiview pass of two eyes (grass_vk_multiview_desc.view_mask 0x3); a frame
                                    // must then be stereo (grass_stereo_view_desc), and only then
+    // Depth views (grass_view_pass_desc, GRASS_PASS_DEPTH): whether the backend has a target to
+    // draw them in (Vulkan: grass_vk_depth_pass_desc was chained; GL: the bound framebuffer),
+    // and that target's samples per pixel (0: `samples`), which a depth view's Frame block gets.
+    bool depth_pass = true;
+    uint32_t depth_pass_samples = 0;
     bool operator==(const RenderTarget& o) const {
         return samples == o.samples && clip_zero_to_one == o.clip_zero_to_one && views == o.views;
     }
@@ -220,10 +225,14 @@ struct FramePlan {
     bool stereo = false;          // a stereo frame: `eyes` follows `frame` in the Frame block (RenderTarget::views 2)
     StereoUniforms eyes{};        // stereo frames only
     int32_t viewport[4] = {0, 0, 0, 0};
-    uint32_t flags = 0;             // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
-                                    // draw as debug boxes instead of its tier
-    Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
-    Vector<TierDraw> draws;         // per field, per tier that draws something
+    uint32_t flags = 0; // grass_view_flags: GRASS_VIEW_FLAG_DEBUG_CELLS draws every
+                        // draw as debug boxes instead of its tier
+    // A depth pass (grass_view_pass_desc, GRASS_PASS_DEPTH): every draw has kFeatureDepthPass;
+    // the backend writes no colour and biases the depth by (constant, slope).
+    bool depth_pass = false;
+    float depth_bias[2] = {0.0f, 0.0f}; // constant, slope (glPolygonOffset's units, factor)
+    Vector<TierInstance> instances;     // geometry instances of a draw are ordered front to back
+    Vector<TierDraw> draws;             // per field, per tier that draws something
     grass_frame_stats stats{};
     InteractionPlan interaction; // responsive grass: the interaction pass (levels = 0: none)
     void clear() {

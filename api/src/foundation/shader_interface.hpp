@@ -47,8 +47,12 @@ constexpr uint32_t kBladeCurveFeatures = kFeatureWind | kFeatureInteraction | kF
 // cost every volume hit a second transition interval (docs/records/tier-cost.md).
 constexpr uint32_t kFeatureDebugView = 1u << 9;
 constexpr uint32_t kDebugViewFlags = GRASS_VIEW_FLAG_DEBUG_TIERS | GRASS_VIEW_FLAG_DEBUG_THRESHOLDS;
+// A depth-only pass (GRASS_PASS_DEPTH, GRASS_DEPTH_PASS in the shaders): the shaders skip
+// lighting and colour and keep the coverage test and depth of the colour pass. Set on every
+// draw of a depth view's plan and no other, so a host without depth views never compiles it.
+constexpr uint32_t kFeatureDepthPass = 1u << 10;
 // Every feature mask is below this (the variants a backend may compile).
-constexpr uint32_t kFeatureMaskCount = kFeatureDebugView << 1;
+constexpr uint32_t kFeatureMaskCount = kFeatureDepthPass << 1;
 // The debug boxes (GRASS_VIEW_FLAG_DEBUG_CELLS, debug_tiers.*) sample the height map alone.
 constexpr uint32_t kDebugBoxFeatures = 1u << kMapHeight;
 // Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's

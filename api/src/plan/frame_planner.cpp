@@ -100,7 +100,8 @@ uint32_t patch_indices(const PatchData& pd) {
 class FieldPlanner {
 public:
     FieldPlanner(const FramePlanning& in, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
-                 const double lod_origin[3], const Frusta& culling, const DynamicsFrame& dynamics, uint32_t view_flags)
+                 const double lod_origin[3], const Frusta& culling, const DynamicsFrame& dynamics, uint32_t view_flags,
+                 bool depth_pass)
         : in_(in), slot_(slot), field_(field), patch_(patch), culling_(culling),
           frame_(field_frame(field, camera, lod_origin)) {
         for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
@@ -112,6 +113,7 @@ public:
         features_ = field.maps.features | (dynamics.wind ? kFeatureWind : 0u) | (reads_map_ ? kFeatureInteraction : 0u);
         if (field.wind_map.active()) features_ |= kFeatureWind | kFeatureWindMap;
         if (view_flags & kDebugViewFlags) features_ |= kFeatureDebugView;
+        if (depth_pass) features_ |= kFeatureDepthPass; // the depth pass's own variant of every tier
         debug_cells_ = (view_flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
         const uint32_t density_slot = field.maps.map_slot[kMapDensity], height_slot = field.maps.map_slot[kMapHeight];
         density_map_ = density_slot != kNoMap ? in.maps.get(density_slot) : nullptr;
@@ -609,13 +611,20 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     plan.frame.params[1] = static_cast<float>(view.flags);
     plan.frame.params[2] = in.depth_mode == GRASS_DEPTH_GREATER ? -1.0f : 1.0f;
     // The target's samples and clip convention, as the backend reports them.
-    write_render_target(&plan.frame, in.target);
+    // (A depth view's: the depth-only target's samples, where the backend has one of its own.)
+    const bool depth_view = ext.pass && ext.pass->pass == GRASS_PASS_DEPTH;
+    RenderTarget target = in.target;
+    if (depth_view && target.depth_pass_samples != 0) target.samples = target.depth_pass_samples;
+    write_render_target(&plan.frame, target);
     // The lod origin relative to the plan's origin (zero but for a mono view with
     // grass_lod_origin_desc): the shaders measure the tiers' distances from it.
     for (int c = 0; c < 3; ++c) plan.frame.lod_origin[c] = static_cast<float>(lod_origin[c] - camera[c]);
     plan.frame.lod_origin[3] = 0.0f;
     for (int k = 0; k < 4; ++k) plan.viewport[k] = view.viewport[k];
     plan.flags = view.flags;
+    plan.depth_pass = depth_view;
+    plan.depth_bias[0] = plan.depth_pass ? ext.pass->depth_bias_constant : 0.0f;
+    plan.depth_bias[1] = plan.depth_pass ? ext.pass->depth_bias_slope : 0.0f;
     // Responsive grass is planned around the plan's origin (the wind's phases, the
     // interaction map's window): the eyes of a stereo frame share it.
     grass_view_desc origin_view = view;
@@ -638,7 +647,7 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
         const Field* field = in.fields.get(slot);
         if (!field) continue;
         FieldPlanner planner(in, slot, *field, *in.patches.get(field->patch_slot), camera, lod_origin, frusta, dynamics,
-                             view.flags);
+                             view.flags, plan.depth_pass);
         const grass_result r = planner.run();
         if (r != GRASS_SUCCESS) {
             plan.clear();

@@ -50,12 +50,13 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_VK_DESC": 0x67720201, "GRASS_STRUCT_TYPE_VK_RECORD_DESC": 0x67720202,
         "GRASS_STRUCT_TYPE_VK_PREPARE_DESC": 0x67720203, "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC": 0x67720204,
         "GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC": 0x67720205,
+        "GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC": 0x67720206,
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
         "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_WIND_MAP_DESC": 0x6772000B,
         "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C, "GRASS_STRUCT_TYPE_PIPELINE_DESC": 0x6772000D,
         "GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC": 0x6772000E,
         "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC": 0x6772000F, "GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC": 0x67720010,
-        "GRASS_STRUCT_TYPE_FRAME_DESC": 0x67720011,
+        "GRASS_STRUCT_TYPE_FRAME_DESC": 0x67720011, "GRASS_STRUCT_TYPE_VIEW_PASS_DESC": 0x67720012,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -86,6 +87,7 @@ ENUMS = {
         "GRASS_MAP_FORMAT_RGBA8_UNORM": 4, "GRASS_MAP_FORMAT_RGBA16_UNORM": 5, "GRASS_MAP_FORMAT_RGBA32_FLOAT": 6,
     },
     "grass_tier_kind": {"GRASS_TIER_GEOMETRY": 0, "GRASS_TIER_VOLUME": 1, "GRASS_TIER_IMAGE": 2},
+    "grass_pass_kind": {"GRASS_PASS_COLOR": 0, "GRASS_PASS_DEPTH": 1},
     "grass_lod_answer": {"GRASS_LOD_DISCARD": 0, "GRASS_LOD_SPLIT": 1, "GRASS_LOD_DRAW": 2},
     "grass_lod_test_kind": {
         "GRASS_LOD_TEST_DISTANCE_BAND": 1, "GRASS_LOD_TEST_MACRO_CELL": 2, "GRASS_LOD_TEST_CALLBACK": 3,
@@ -257,6 +259,11 @@ class grass_lod_origin_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("position", c_double * 3)]
 
 
+class grass_view_pass_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("pass", grass_enum), ("depth_bias_constant", c_float),
+                ("depth_bias_slope", c_float)]
+
+
 class grass_frame_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("frame_index", c_uint64),
                 ("completed_frame_index", c_uint64), ("time", c_double)]
@@ -352,6 +359,11 @@ class grass_vk_multiview_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("view_mask", c_uint32)]
 
 
+class grass_vk_depth_pass_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("render_pass", c_uint64), ("subpass", c_uint32),
+                ("depth_format", c_uint32), ("sample_count", c_uint32)]
+
+
 class grass_vk_record_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("command_buffer", c_void_p)]
 
@@ -406,6 +418,7 @@ FUNCTIONS = {
     "grass_default_lod_origin_desc": (grass_lod_origin_desc, []),
     "grass_begin_frame": (grass_enum, [_ctx, _P(grass_view_desc)]),
     "grass_end_frame": (grass_enum, [_ctx]),
+    "grass_default_view_pass_desc": (grass_view_pass_desc, []),
     "grass_default_frame_desc": (grass_frame_desc, []),
     "grass_begin_host_frame": (grass_enum, [_ctx, _P(grass_frame_desc)]),
     "grass_plan_view": (grass_enum, [_ctx, _P(grass_view_desc), _P(c_uint32)]),
@@ -436,6 +449,7 @@ FUNCTIONS = {
     "grass_default_vk_prepare_desc": (grass_vk_prepare_desc, []),
     "grass_default_vk_host_objects_desc": (grass_vk_host_objects_desc, []),
     "grass_default_vk_multiview_desc": (grass_vk_multiview_desc, []),
+    "grass_default_vk_depth_pass_desc": (grass_vk_depth_pass_desc, []),
     "grass_vk_prepare": (grass_enum, [_ctx, _P(grass_vk_prepare_desc)]),
     "grass_default_vk_record_desc": (grass_vk_record_desc, []),
     "grass_vk_record": (grass_enum, [_ctx, _P(grass_vk_record_desc)]),

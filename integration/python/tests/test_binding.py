@@ -44,6 +44,29 @@ def test_a_host_frame_plans_several_views():
         assert "frame_index" in str(refused.value)
 
 
+def test_a_depth_pass_view_through_the_raw_binding():
+    with grass.Context() as ctx:
+        patch = ctx.create_patch(blade_count=256)
+        ctx.create_field(patch, cells_x=64, cells_z=64)
+        shadow = grass.lib.grass_default_view_pass_desc()
+        # `pass` is a Python keyword: the field is reached with getattr / setattr.
+        assert shadow.type == grass.GRASS_STRUCT_TYPE_VIEW_PASS_DESC
+        assert getattr(shadow, "pass") == grass.GRASS_PASS_COLOR
+        setattr(shadow, "pass", grass.GRASS_PASS_DEPTH)
+        shadow.depth_bias_constant, shadow.depth_bias_slope = 2.0, 1.5
+        view = overhead_view()
+        view.next = ctypes.addressof(shadow)  # the Pythonic plan_view takes no chain: ctx.call does
+        index = ctypes.c_uint32(99)
+        ctx.begin_host_frame(1)
+        ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
+        assert index.value == 0
+        shadow.depth_bias_slope = 100.0
+        with pytest.raises(grass.GrassError) as refused:
+            ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
+        assert "grass_view_pass_desc->depth_bias_slope is 100" in str(refused.value)
+        ctx.end_frame()
+
+
 def test_errors_carry_the_result_and_the_message_id():
     messages = []
     with grass.Context(log=lambda level, mid, text: messages.append(mid)) as ctx:
