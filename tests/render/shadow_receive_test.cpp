@@ -24,13 +24,13 @@
 namespace grass_test {
 namespace {
 
-constexpr uint32_t kSize = 128;          // the target, pixels
-constexpr uint32_t kCells = 48;          // 12 m x 12 m
+constexpr uint32_t kSize = 128;         // the target, pixels
+constexpr uint32_t kCells = 48;         // 12 m x 12 m
 const double kEye[3] = {6.0, 1.0, 2.0}; // the lod origin: the tiers by distance from it
-constexpr double kHalf = 7.0;            // the camera's half extent, metres
+constexpr double kHalf = 7.0;           // the camera's half extent, metres
 constexpr double kNear = 1.0, kFar = 40.0;
 const double kCamera[3] = {6.0, 10.0, -4.0}, kAt[3] = {6.0, 0.0, 6.0}; // 45 degrees down, looking +z
-constexpr int kMapTexels = 64;           // the shadow map's layers, texels a side (0.1875 m each)
+constexpr int kMapTexels = 64; // the shadow map's layers, texels a side (0.1875 m each)
 
 // The programs grass binds (glUseProgram) and creates, through the host's GL loader.
 struct GlSeen {
@@ -205,8 +205,8 @@ protected:
         for (uint32_t i = 0; i < cascades; ++i) {
             float* m = d.world_to_shadow[i];
             std::memset(m, 0, sizeof(float) * 16);
-            m[0] = 1.0f / 12.0f;                                                   // u from x
-            m[9] = 1.0f / 12.0f;                                                   // v from z
+            m[0] = 1.0f / 12.0f;                                                // u from x
+            m[9] = 1.0f / 12.0f;                                                // v from z
             m[6] = compare == GRASS_SHADOW_COMPARE_LESS_EQUAL ? -0.01f : 0.01f; // depth from y
             m[14] = 0.5f;
             m[15] = 1.0f;
@@ -239,7 +239,8 @@ protected:
                 if (region == kNone || s < 0) continue;
                 const grass_host::Image& expected = s ? dark : lit;
                 int worst = 0;
-                for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(image.pixel(x, y)[c]) - int(expected.pixel(x, y)[c])));
+                for (int c = 0; c < 3; ++c)
+                    worst = std::max(worst, std::abs(int(image.pixel(x, y)[c]) - int(expected.pixel(x, y)[c])));
                 (s ? t.shadowed : t.lit)[region] += 1;
                 (s ? t.wrong_shadowed : t.wrong_lit)[region] += worst > 1;
             }
@@ -252,10 +253,10 @@ protected:
         for (int r = 0; r < 3; ++r) {
             EXPECT_GT(t.shadowed[r], 30u) << what << ": shadowed " << kRegionNames[r] << " pixels";
             EXPECT_GT(t.lit[r], 30u) << what << ": lit " << kRegionNames[r] << " pixels";
-            EXPECT_LE(t.wrong_shadowed[r], t.shadowed[r] / 50) << what << ": shadowed " << kRegionNames[r]
-                                                               << " pixels unlike the sun-off picture";
-            EXPECT_LE(t.wrong_lit[r], t.lit[r] / 50) << what << ": lit " << kRegionNames[r]
-                                                     << " pixels unlike the picture without receiving";
+            EXPECT_LE(t.wrong_shadowed[r], t.shadowed[r] / 50)
+                << what << ": shadowed " << kRegionNames[r] << " pixels unlike the sun-off picture";
+            EXPECT_LE(t.wrong_lit[r], t.lit[r] / 50)
+                << what << ": lit " << kRegionNames[r] << " pixels unlike the picture without receiving";
         }
     }
 
@@ -333,7 +334,9 @@ TEST_P(ShadowReceiveTest, TheCascadeIsChosenByItsEnd) {
     d.cascade_end[1] = 1000.0f;
     const grass_host::Image image = render(camera(&d));
     save(image, "shadow_receive_cascades");
-    const auto beyond = [end](const double*, double along) { return along > end + 0.3 ? 1 : along < end - 0.3 ? 0 : -1; };
+    const auto beyond = [end](const double*, double along) {
+        return along > end + 0.3 ? 1 : along < end - 0.3 ? 0 : -1;
+    };
     const Tally t = tally(image, lit, dark, beyond);
     // The geometry tier lies before the end, the image tier beyond it: the volume has both.
     EXPECT_GT(t.lit[kGeometry], 30u);
