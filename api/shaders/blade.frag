@@ -3,6 +3,9 @@
 // give alpha for alpha-to-coverage when the host's target is multisampled.
 #include "blade_interface.glsl"
 #include "lighting.glsl"
+#ifdef GRASS_HOST_SHADOWS
+#include "host_shadows.glsl"
+#endif
 
 // The blade's varyings, packed four to a slot (blade.vert says why).
 layout(location = 0) in vec4 v_position_density;
@@ -28,6 +31,9 @@ void main() {
     // The light maps at the root, read only by a variant that has them (else zw go
     // unread and the products with 1 fold away).
     vec2 light = has_map(GRASS_MAP_AMBIENT | GRASS_MAP_DIFFUSE) ? v_shape_light.zw : vec2(1.0);
+#ifdef GRASS_HOST_SHADOWS
+    light.y *= host_sun_visibility(v_position_density.xyz); // the host's shadow at the fragment
+#endif
     vec3 color = grass_lighting(v_albedo_code.rgb, n, ao, light);
 
     // Distance to the nearest blade edge in pixels -> coverage. Without multisampling the

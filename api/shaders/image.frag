@@ -4,6 +4,9 @@
 // the slice's normal with the lighting of every tier.
 #include "blade_interface.glsl"
 #include "lighting.glsl"
+#ifdef GRASS_HOST_SHADOWS
+#include "host_shadows.glsl"
+#endif
 #include "tier_transitions.glsl"
 #include "sample_coverage.glsl"
 #ifdef GRASS_RESPONSIVE // responsive grass variants only (blade_interface.glsl)
@@ -92,6 +95,9 @@ void main() {
     // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
     vec3 base = modulate_color(albedo.rgb, cell_point) * shade;
     vec2 light = light_maps(cell_point);
+#ifdef GRASS_HOST_SHADOWS
+    light.y *= host_sun_visibility(v_position); // the host's shadow at the quad's point
+#endif
     const vec3 folded = vec3(1.0, 0.0, 1.0);
     vec3 n_above = normal_height.xyz * 2.0 - 1.0;
     {

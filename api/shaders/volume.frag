@@ -6,6 +6,9 @@
 // and every hit looks its slice up at its height above the terrain under it.
 #include "blade_interface.glsl"
 #include "lighting.glsl"
+#ifdef GRASS_HOST_SHADOWS
+#include "host_shadows.glsl"
+#endif
 #include "tier_transitions.glsl"
 #include "sample_coverage.glsl"
 #ifdef GRASS_RESPONSIVE // responsive grass variants only (blade_interface.glsl)
@@ -206,6 +209,9 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     // The design maps at the hit (lemme 6.4.2-6.4.3).
     vec3 color = modulate_color(albedo.rgb, cell_point) * shade;
     vec2 light = light_maps(cell_point);
+#ifdef GRASS_HOST_SHADOWS
+    light.y *= host_sun_visibility(world); // the host's shadow at each point the ray composites
+#endif
     vec4 normal_height = textureLod(slice_normal, coord, color_lod);
     vec3 nrm = normal_height.xyz * 2.0 - 1.0;
     nrm.xz *= s;

@@ -189,6 +189,7 @@ GlBackend::~GlBackend() {
     if (sampler_ != 0) gl_.DeleteSamplers(1, &sampler_);
     if (slice_sampler_ != 0) gl_.DeleteSamplers(1, &slice_sampler_);
     if (threshold_sampler_ != 0) gl_.DeleteSamplers(1, &threshold_sampler_);
+    if (shadow_sampler_ != 0) gl_.DeleteSamplers(1, &shadow_sampler_);
     if (white_texture_ != 0) gl_.DeleteTextures(1, &white_texture_);
     for (auto& variants : programs_) {
         for (GLuint program : variants) {
@@ -202,9 +203,9 @@ GlBackend::~GlBackend() {
 
 GLuint* GlBackend::program_slot(GlProgramKind kind, uint32_t features) {
     features &= kFeatureVariants - 1;
-    if ((features & kFeatureDepthPass) == 0) return &programs_[kind][features];
-    if (depth_programs_.empty()) depth_programs_.assign(size_t(kProgramKindCount) * kColourVariants, 0u);
-    return &depth_programs_[kind * kColourVariants + (features - kFeatureDepthPass)];
+    if (features < kColourVariants) return &programs_[kind][features];
+    if (depth_programs_.empty()) depth_programs_.assign(size_t(kProgramKindCount) * kPassVariants, 0u);
+    return &depth_programs_[kind * kPassVariants + (features - kColourVariants)];
 }
 
 grass_result GlBackend::program(GlProgramKind kind, uint32_t features, const char* function, GLuint* out_program) {

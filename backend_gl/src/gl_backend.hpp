@@ -142,26 +142,33 @@ private:
     void collect_timers();
     GLuint program_of(GlProgramKind kind, uint32_t features) const {
         features &= kFeatureVariants - 1;
-        if ((features & kFeatureDepthPass) == 0) return programs_[kind][features];
-        return depth_programs_.empty() ? 0u : depth_programs_[kind * kColourVariants + (features - kFeatureDepthPass)];
+        if (features < kColourVariants) return programs_[kind][features];
+        return depth_programs_.empty() ? 0u : depth_programs_[kind * kPassVariants + (features - kColourVariants)];
     }
-    // Where the program of `kind` and `features` is kept (0: not made yet); the depth pass's
-    // table is allocated on the first depth pass (may throw std::bad_alloc).
+    // Where the program of `kind` and `features` is kept (0: not made yet); the table of the
+    // depth pass's and the shadow receivers' variants is allocated on the first such view
+    // (may throw std::bad_alloc).
     GLuint* program_slot(GlProgramKind kind, uint32_t features);
 
     grass_context* ctx_;
     bool loaded_ = false; // gl_ holds every entry point
     GlFunctions gl_;
     GLuint programs_[kProgramKindCount][kColourVariants] = {}; // 0: not compiled yet
-    Vector<GLuint> depth_programs_; // [kind * kColourVariants + mask]: empty until a depth pass
-    GlProgramCache program_cache_;  // program binaries: seeded by grass_prepare_pipelines
-    GLuint tier_vertex_array_ = 0;  // instances only: the volume and image tiers, debug boxes
-    char context_label_[48] = {};   // tier_vertex_array_'s label (label_context)
+    // [kind * kPassVariants + mask - kColourVariants]: empty until a depth pass or a view
+    // that receives shadows.
+    Vector<GLuint> depth_programs_;
+    GlProgramCache program_cache_; // program binaries: seeded by grass_prepare_pipelines
+    GLuint tier_vertex_array_ = 0; // instances only: the volume and image tiers, debug boxes
+    char context_label_[48] = {};  // tier_vertex_array_'s label (label_context)
     GLsizei context_label_length_ = 0;
     GLuint white_texture_ = 0;
     GLuint sampler_ = 0;           // design maps: linear, clamped
     GLuint slice_sampler_ = 0;     // slice colour and normal: trilinear, clamped
     GLuint threshold_sampler_ = 0; // slice thresholds: nearest, never blended
+    GLuint shadow_sampler_ = 0;    // the host's shadow map: linear, depth compare; made on the first receiving view
+    GLintptr shadow_uniform_offset_ = 0; // a receiving view's GrassShadow block, into uniforms_
+    // A receiving view's map and block at kShadowMapUnit and uniform binding 2 (gl_draw.cpp).
+    void bind_host_shadows(const FramePlan& plan);
     GLint uniform_alignment_ = 256;
     GLint max_texture_size_ = 0;
     GLint max_array_layers_ = 0;

@@ -32,6 +32,10 @@ void GlBackend::upload_frame(const RenderTarget& target, uint32_t view) {
         field_uniform_offsets_[i] = static_cast<GLintptr>(align_up(size, alignment));
         size = static_cast<size_t>(field_uniform_offsets_[i]) + sizeof(FieldUniforms);
     }
+    if (plan.shadow_receive) { // a receiving view's GrassShadow block: no other view has one
+        shadow_uniform_offset_ = static_cast<GLintptr>(align_up(size, alignment));
+        size = static_cast<size_t>(shadow_uniform_offset_) + sizeof(ShadowUniforms);
+    }
     size = stage_interaction_uniforms(plan, size); // the pass's blocks: view 0's plan only has them
     uniform_staging_.assign(size, 0);
     FrameUniforms frame = plan.frame;
@@ -40,6 +44,9 @@ void GlBackend::upload_frame(const RenderTarget& target, uint32_t view) {
     for (size_t i = 0; i < plan.draws.size(); ++i) {
         std::memcpy(uniform_staging_.data() + field_uniform_offsets_[i], &plan.draws[i].uniforms,
                     sizeof(FieldUniforms));
+    }
+    if (plan.shadow_receive) {
+        std::memcpy(uniform_staging_.data() + shadow_uniform_offset_, &plan.shadow, sizeof(ShadowUniforms));
     }
     for (uint32_t l = 0; l < plan.interaction.levels && l < 2; ++l) {
         std::memcpy(uniform_staging_.data() + interaction_uniform_offsets_[l], &plan.interaction.level[l],
@@ -63,6 +70,31 @@ void GlBackend::bind_field_maps(const FieldGpu& field, uint32_t features) const 
         gl_.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kMapUnit[role]));
         gl_.BindTexture(GL_TEXTURE_2D, map != kNoMap ? maps_[map].texture : white_texture_);
     }
+}
+
+// A receiving view (grass_shadow_receive_desc): the host's map with grass's depth-compare
+// sampler at kShadowMapUnit and the GrassShadow block at kShadowUniformBinding, for every
+// draw of the view (GlDrawStateGuard::begin_shadow_receive saved the host's). The sampler is
+// made on the first receiving view; its comparison is the view's. Leaves unit 0 active.
+void GlBackend::bind_host_shadows(const FramePlan& plan) {
+    if (shadow_sampler_ == 0) {
+        gl_.CreateSamplers(1, &shadow_sampler_);
+        gl_.SamplerParameteri(shadow_sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        gl_.SamplerParameteri(shadow_sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        gl_.SamplerParameteri(shadow_sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl_.SamplerParameteri(shadow_sampler_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        gl_.SamplerParameteri(shadow_sampler_, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        label(GL_SAMPLER, shadow_sampler_, "grass host shadow sampler");
+    }
+    // Lit where the point's depth compares with the stored one as the host's convention says.
+    gl_.SamplerParameteri(shadow_sampler_, GL_TEXTURE_COMPARE_FUNC,
+                          plan.shadow.params[0] > 0.0f ? GL_LEQUAL : GL_GEQUAL);
+    gl_.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kShadowMapUnit));
+    gl_.BindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(plan.shadow_map));
+    gl_.BindSampler(static_cast<GLuint>(kShadowMapUnit), shadow_sampler_);
+    gl_.ActiveTexture(GL_TEXTURE0);
+    gl_.BindBufferRange(GL_UNIFORM_BUFFER, kShadowUniformBinding, uniforms_.name(), shadow_uniform_offset_,
+                        sizeof(ShadowUniforms));
 }
 
 // Geometry draws: the patch's blades, instances front to back.
@@ -240,6 +272,10 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
     // A depth pass writes no colour (every draw buffer masked off) and biases its depth.
     if (plan.depth_pass) guard.begin_depth_pass(plan.depth_bias[0], plan.depth_bias[1]);
     gl_.BindBufferRange(GL_UNIFORM_BUFFER, 0, uniforms_.name(), 0, sizeof(FrameUniforms));
+    if (plan.shadow_receive && !debug) {
+        guard.begin_shadow_receive();
+        bind_host_shadows(plan);
+    }
 
     if (debug) {
         const DebugGroup group(*this, "grass debug cells");

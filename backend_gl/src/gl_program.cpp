@@ -41,6 +41,7 @@ constexpr SamplerUnit kSamplerUnits[] = {
     {"interaction_level0", kInteractionMapUnit[0]},
     {"interaction_level1", kInteractionMapUnit[1]},
     {"wind_map", kWindMapUnit},
+    {"host_shadow_map", kShadowMapUnit},
 };
 
 // Reads a shader or program info log through the context's allocator.
@@ -62,10 +63,11 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
                          "%s: %s does not start with a #version line (internal error)", function, stage_name);
     }
-    char define[96];
+    char define[128];
     const bool responsive = (features & kBladeCurveFeatures) != 0;
-    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s", features,
-                  responsive ? "#define GRASS_RESPONSIVE 1\n" : "");
+    const bool shadows = (features & kFeatureShadowReceive) != 0;
+    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s%s", features,
+                  responsive ? "#define GRASS_RESPONSIVE 1\n" : "", shadows ? "#define GRASS_HOST_SHADOWS 1\n" : "");
     const GLchar* strings[3] = {source, define, newline + 1};
     const GLint lengths[3] = {static_cast<GLint>(newline + 1 - source), -1, -1};
 

@@ -40,9 +40,16 @@ static_assert(kProgramBlades == static_cast<uint32_t>(kShaderBlades) &&
 // Every feature mask: the design maps' bits, then kFeatureWind, kFeatureInteraction,
 // kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView (backend.hpp).
 constexpr uint32_t kFeatureVariants = kFeatureMaskCount;
-// The masks without kFeatureDepthPass (a depth pass's programs are kept apart, made on the
-// first depth pass: GlBackend::program_slot).
+// The masks without kFeatureDepthPass and kFeatureShadowReceive (a depth pass's and a
+// receiving view's programs are kept apart, made on the first such view:
+// GlBackend::program_slot), and the masks with either.
 constexpr uint32_t kColourVariants = kFeatureDepthPass;
+constexpr uint32_t kPassVariants = kFeatureVariants - kColourVariants;
+static_assert(kFeatureShadowReceive == kFeatureDepthPass << 1, "the pass bits are the last two");
+// A receiving view's shadow map (host_shadows.glsl: a GL_TEXTURE_2D_ARRAY with a depth-compare
+// sampler) at texture unit 14, its GrassShadow block at uniform binding 2.
+constexpr GLint kShadowMapUnit = 14;
+constexpr GLuint kShadowUniformBinding = 2;
 static_assert(kFeatureWind == 1u << kMapRoleCount && kFeatureInteraction == kFeatureWind << 1 &&
                   kFeatureWindMap == kFeatureInteraction << 1 && kFeatureBladeCulling == kFeatureWindMap << 1 &&
                   kFeatureDebugView == kFeatureBladeCulling << 1,
@@ -67,7 +74,7 @@ constexpr GLuint kInteractionImageUnit = 0;
 // Compiles and links the program of `kind` for the feature mask `features` (<
 // kFeatureVariants): the shaders get `#define GRASS_FEATURES <features>u` after their
 // #version line (and `#define GRASS_RESPONSIVE 1` when the mask has one of
-// kBladeCurveFeatures). On failure the driver's log is in the context's error message
+// kBladeCurveFeatures, `#define GRASS_HOST_SHADOWS 1` when it has kFeatureShadowReceive). On failure the driver's log is in the context's error message
 // (named after `function`) and nothing is left behind.
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
                             uint32_t features, GLuint* out_program);

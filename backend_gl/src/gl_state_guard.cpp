@@ -178,8 +178,36 @@ void GlDrawStateGuard::begin_depth_pass(GLfloat constant, GLfloat slope) {
     gl.PolygonOffset(slope, constant);
 }
 
+void GlDrawStateGuard::begin_shadow_receive() {
+    const GlFunctions& gl = gl_;
+    if (shadow_receive_) return;
+    shadow_receive_ = true;
+    GLint active = 0;
+    gl.GetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kShadowMapUnit));
+    gl.GetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &shadow_unit_.texture_2d_array);
+    gl.GetIntegerv(GL_SAMPLER_BINDING, &shadow_unit_.sampler);
+    gl.ActiveTexture(static_cast<GLenum>(active));
+    gl.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, kShadowUniformBinding, &shadow_binding_.buffer);
+    gl.GetInteger64i_v(GL_UNIFORM_BUFFER_START, kShadowUniformBinding, &shadow_binding_.start);
+    gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, kShadowUniformBinding, &shadow_binding_.size);
+}
+
 GlDrawStateGuard::~GlDrawStateGuard() {
     const GlFunctions& gl = gl_;
+    if (shadow_receive_) { // before the generic uniform binding and the active unit are restored
+        gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kShadowMapUnit));
+        gl.BindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(shadow_unit_.texture_2d_array));
+        gl.BindSampler(static_cast<GLuint>(kShadowMapUnit), static_cast<GLuint>(shadow_unit_.sampler));
+        gl.ActiveTexture(GL_TEXTURE0);
+        const UniformBinding& b = shadow_binding_;
+        if (b.buffer != 0 && b.size > 0) {
+            gl.BindBufferRange(GL_UNIFORM_BUFFER, kShadowUniformBinding, static_cast<GLuint>(b.buffer),
+                               static_cast<GLintptr>(b.start), static_cast<GLsizeiptr>(b.size));
+        } else {
+            gl.BindBufferBase(GL_UNIFORM_BUFFER, kShadowUniformBinding, static_cast<GLuint>(b.buffer));
+        }
+    }
     if (depth_pass_) {
         gl.PolygonOffset(polygon_offset_[0], polygon_offset_[1]);
         gl.Disable(GL_POLYGON_OFFSET_FILL); // enabled again below where the host had it

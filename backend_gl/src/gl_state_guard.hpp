@@ -28,6 +28,10 @@ public:
     // depth biased by glPolygonOffset(slope, constant) with GL_POLYGON_OFFSET_FILL, the
     // host's polygon offset saved first and restored with the rest.
     void begin_depth_pass(GLfloat constant, GLfloat slope);
+    // A view that receives the host's shadows (FramePlan::shadow_receive): the host's
+    // GL_TEXTURE_2D_ARRAY and sampler of texture unit 14 and its uniform binding 2 saved
+    // first and restored with the rest.
+    void begin_shadow_receive();
     GlDrawStateGuard(const GlDrawStateGuard&) = delete;
     GlDrawStateGuard& operator=(const GlDrawStateGuard&) = delete;
 
@@ -92,6 +96,10 @@ private:
     // A depth pass: the host's polygon offset factor and units.
     bool depth_pass_ = false;
     GLfloat polygon_offset_[2] = {0.0f, 0.0f};
+    // A receiving view: the host's unit 14 and uniform binding 2.
+    bool shadow_receive_ = false;
+    SliceUnit shadow_unit_ = {};
+    UniformBinding shadow_binding_ = {};
 };
 
 // Around texture uploads from client memory: the unpack pixel-store state and the pixel

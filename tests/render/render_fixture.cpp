@@ -75,6 +75,26 @@ grass_field_desc RenderTest::field_desc(uint32_t cells) const {
     return d;
 }
 
+grass_field_desc RenderTest::three_tier_field(uint32_t cells) {
+    const float bands[3][4] = {{0.0f, 3.0f, 0.0f, 1.0f}, {2.0f, 7.0f, 1.0f, 1.5f}, {5.5f, INFINITY, 1.5f, 0.0f}};
+    for (uint32_t t = 0; t < 3; ++t) {
+        grass_lod_test& b = three_tier_bands[t];
+        b = grass_lod_test{};
+        b.kind = GRASS_LOD_TEST_DISTANCE_BAND;
+        b.tier = t;
+        b.begin = bands[t][0];
+        b.end = bands[t][1];
+        b.transition_in = bands[t][2];
+        b.transition_out = bands[t][3];
+    }
+    grass_field_desc d = field_desc(cells);
+    d.tiers = three_tiers;
+    d.tier_count = 3;
+    d.lod_tests = three_tier_bands;
+    d.lod_test_count = 3;
+    return d;
+}
+
 grass_field_desc RenderTest::solo_tier_field(uint32_t cells, grass_tier_kind kind, uint32_t slices,
                                              uint32_t max_macro_cells) {
     solo_tier = grass_tier_desc{kind, slices};

@@ -36,6 +36,10 @@ protected:
     // A square field drawn by one tier alone at every distance, in macro-cells of up to
     // `max_macro_cells` (volume and image tiers).
     grass_field_desc solo_tier_field(uint32_t cells, grass_tier_kind kind, uint32_t slices, uint32_t max_macro_cells);
+    // A square field of three tiers by distance from the lod origin: geometry 0-3 m (fading
+    // out over its last metre), a volume of 2 slices 2-7 m (fading in over 1 m, out over
+    // 1.5 m), the horizontal slice from 5.5 m (fading in over 1.5 m).
+    grass_field_desc three_tier_field(uint32_t cells);
     grass_view_desc view(const double eye[3], const double target[3], float fovy_degrees = 50.0f) const;
     grass_host::Image render(const grass_view_desc& v, const grass_host::Occluder* occluder = nullptr);
     void save(const grass_host::Image& image, const std::string& tag) const;
@@ -62,6 +66,8 @@ protected:
     grass_lod_test blade_band{};
     grass_tier_desc solo_tier{GRASS_TIER_GEOMETRY, 0};
     grass_lod_test solo_tests[2] = {};
+    grass_tier_desc three_tiers[3] = {{GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 2}, {GRASS_TIER_IMAGE, 0}};
+    grass_lod_test three_tier_bands[3] = {};
 };
 
 // A 128 x 128 target with 4 samples, cleared to black or to white and nothing else: the

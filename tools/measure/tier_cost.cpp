@@ -219,6 +219,10 @@ Subcommand add_tier_cost(CLI::App& measure) {
                   "each row of the plain table also as a depth pass of the same view (docs/records/depth-pass.md)")
         ->excludes(maps)
         ->excludes(features);
+    auto* receive = app->add_flag("--receive", o->receive,
+                                  "each row of the plain table also receiving a shadow map over half the field, GL "
+                                  "(docs/records/shadow-receiving.md)");
+    receive->excludes(maps)->excludes(features)->excludes("--depth-pass");
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));

@@ -39,9 +39,12 @@
 // --depth-pass: each row of the plain table also as a depth pass of the same view
 // (grass_view_pass_desc, GRASS_PASS_DEPTH; docs/records/depth-pass.md), the rows' frames
 // alternating colour and depth; per basic cell each, and the ratio depth / colour.
+// --receive: each row of the plain table also receiving a shadow map (grass_shadow_receive_desc;
+// GL; docs/records/shadow-receiving.md) that shades half the field, with filter_radius 0
+// and 1.5, rounds alternating; per basic cell each, and the ratios to the plain frame.
 // --frames N: frames measured per row (after one that uploads); default 5 (median).
 // Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features | --single] [--frames N]
-//        [--rounds N] [--depth-pass]
+//        [--rounds N] [--depth-pass | --receive]
 #pragma once
 
 #include <grass/grass.h>
@@ -62,6 +65,7 @@ struct Options {
     bool maps = false, features = false;
     bool single = false;     // only the tiers alone in single cells (kSingleTiers)
     bool depth_pass = false; // --depth-pass: each plain row also as a depth pass
+    bool receive = false;    // --receive: each plain row also receiving a shadow map (GL)
     int frames = 5;
     int rounds = 3;          // --maps and --features only
     std::string patch_scene; // --patch-of: the patch of this scene file instead of the default patch
@@ -117,6 +121,11 @@ public:
     void set_pass(const grass_view_pass_desc* pass) {
         view_.next = pass;
         host_->depth_only = pass != nullptr && pass->pass == GRASS_PASS_DEPTH;
+    }
+    // Chains `shadow` on the view (nullptr: none) for the frames from now on.
+    void set_shadow(const grass_shadow_receive_desc* shadow) {
+        view_.next = shadow;
+        host_->depth_only = false;
     }
     grass_frame_stats frame_stats();
     grass_memory_stats memory_stats();

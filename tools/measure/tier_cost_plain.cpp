@@ -2,12 +2,14 @@
 // then by the volume (8 slices) and image tiers in macro-cells of up to 2, 4, 8 and 16 cells a
 // side; the median frame, and per basic cell the frame minus the empty one, in wall and in CPU
 // time. --single: the first, third and fifth rows only (kSingleTiers); --tier: one tier's rows.
-// --depth-pass: run_depth_pass below instead.
+// --depth-pass: run_depth_pass below instead; --receive: run_receive.
 #include "tier_cost.hpp"
 
 #include "cli.hpp"
 #include "stats.hpp"
 #include "tool.hpp"
+
+#include <GL/glcorearb.h>
 
 #include <cstdio>
 #include <cstring>
@@ -61,6 +63,78 @@ int run_depth_pass(Rig& rig, const std::vector<Setup>& rows) {
     return rig.finish();
 }
 
+// The rows plain and receiving a shadow map (GL): a GL_TEXTURE_2D_ARRAY of 2 layers of
+// 1024^2 depths whose occluder covers the field's half x < 4 m (the rig's 32 x 32 cells of
+// 0.25 m), read top-down; filter_radius 0 and 1.5. `rounds` rounds of `frames` frames each,
+// the three in turn, pooled per variant; per basic cell, the median frame minus the empty one.
+int run_receive(Rig& rig, const std::vector<Setup>& rows) {
+    const Options& o = rig.options();
+    grass_context* ctx = rig.ctx();
+    if (o.backend != GRASS_BACKEND_GL) {
+        std::fprintf(stderr, "grass-tier-cost --receive: GL only (Vulkan refuses grass_shadow_receive_desc)\n");
+        return 1;
+    }
+    const auto create = reinterpret_cast<PFNGLCREATETEXTURESPROC>(rig.host().gl_proc_address("glCreateTextures"));
+    const auto storage = reinterpret_cast<PFNGLTEXTURESTORAGE3DPROC>(rig.host().gl_proc_address("glTextureStorage3D"));
+    const auto upload = reinterpret_cast<PFNGLTEXTURESUBIMAGE3DPROC>(rig.host().gl_proc_address("glTextureSubImage3D"));
+    const auto destroy = reinterpret_cast<PFNGLDELETETEXTURESPROC>(rig.host().gl_proc_address("glDeleteTextures"));
+    constexpr int kTexels = 1024, kLayers = 2;
+    GLuint map = 0;
+    create(GL_TEXTURE_2D_ARRAY, 1, &map);
+    storage(map, 1, GL_DEPTH_COMPONENT32F, kTexels, kTexels, kLayers);
+    std::vector<float> depths(size_t(kTexels) * kTexels * kLayers);
+    for (size_t k = 0; k < depths.size(); ++k) depths[k] = (k % kTexels) < kTexels / 2 ? 0.0f : 1.0f;
+    upload(map, 0, 0, 0, 0, kTexels, kTexels, kLayers, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+    grass_shadow_receive_desc shadow[2] = {grass_default_shadow_receive_desc(), grass_default_shadow_receive_desc()};
+    for (int k = 0; k < 2; ++k) {
+        shadow[k].shadow_map = map;
+        shadow[k].cascade_count = kLayers;
+        shadow[k].cascade_end[0] = 6.0f;
+        shadow[k].cascade_end[1] = 1000.0f;
+        shadow[k].filter_radius = k == 0 ? 0.0f : 1.5f;
+        for (int c = 0; c < kLayers; ++c) {
+            float* m = shadow[k].world_to_shadow[c];
+            std::memset(m, 0, sizeof(float) * 16);
+            m[0] = m[9] = 1.0f / 8.0f; // u from x, v from z
+            m[14] = 0.5f;              // depth
+            m[15] = 1.0f;
+        }
+    }
+    std::printf("grass-tier-cost --receive: %s (%s), %ux%u, 1024 cells of 0.25 m, half in shadow, frame with no grass "
+                "%.2f ms (CPU %.2f ms)\n\n",
+                grass_sample::backend_name(o.backend), rig.host().device_name().c_str(), o.width, o.height,
+                rig.empty_ms(), rig.empty_cpu_ms());
+    std::printf("| tier | plain per basic cell (us) | receiving, radius 0 | receiving, radius 1.5 | CPU: plain (us) | "
+                "CPU: radius 0 / plain | CPU: radius 1.5 / plain |\n|---|---|---|---|---|---|---|\n");
+    for (const Setup& s : rows) {
+        if (!o.tier.empty() && std::strncmp(s.name, o.tier.c_str(), o.tier.size()) != 0) continue;
+        const TierField tf(s, rig.patch());
+        grass_field_id field{};
+        grass_sample::check(grass_create_field(ctx, &tf.desc, &field), "grass_create_field", ctx);
+        std::vector<double> wall[3], cpu[3];
+        for (int round = 0; round < 3; ++round) {
+            for (int variant = 0; variant < 3; ++variant) {
+                rig.set_shadow(variant == 0 ? nullptr : &shadow[variant - 1]);
+                std::vector<double> c;
+                const std::vector<double> w = rig.frame_times(o.frames, nullptr, &c);
+                wall[variant].insert(wall[variant].end(), w.begin(), w.end());
+                cpu[variant].insert(cpu[variant].end(), c.begin(), c.end());
+            }
+        }
+        rig.set_shadow(nullptr);
+        double us[3], cpu_us[3];
+        for (int v = 0; v < 3; ++v) {
+            us[v] = 1000.0 * (grass_sample::median_high(wall[v]) - rig.empty_ms()) / 1024.0;
+            cpu_us[v] = 1000.0 * (grass_sample::median_high(cpu[v]) - rig.empty_cpu_ms()) / 1024.0;
+        }
+        std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", s.name, us[0], us[1], us[2], cpu_us[0],
+                    cpu_us[1] / cpu_us[0], cpu_us[2] / cpu_us[0]);
+        grass_sample::check(grass_destroy_field(ctx, field), "grass_destroy_field", ctx);
+    }
+    destroy(1, &map);
+    return rig.finish();
+}
+
 } // namespace
 
 int run_plain(Rig& rig) {
@@ -83,6 +157,7 @@ int run_plain(Rig& rig) {
     const std::vector<Setup> rows = o.single ? std::vector<Setup>(std::begin(kSingleTiers), std::end(kSingleTiers))
                                              : std::vector<Setup>(std::begin(setups), std::end(setups));
     if (o.depth_pass) return run_depth_pass(rig, rows);
+    if (o.receive) return run_receive(rig, rows);
     grass_context* ctx = rig.ctx();
     std::printf("grass-tier-cost: %s (%s), %ux%u, 1024 cells of 0.25 m, frame with no grass %.2f ms (CPU %.2f ms)\n\n",
                 grass_sample::backend_name(o.backend), rig.host().device_name().c_str(), o.width, o.height,

@@ -212,12 +212,13 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
     GRASS_STRUCT_TYPE_WIND_MAP_DESC = 0x6772000B,
     GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C,
-    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,     /* 0.5 */
-    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E, /* 0.5 */
-    GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,  /* 0.5: stereo */
-    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,   /* 0.5 */
-    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,        /* 0.5: frames and views */
-    GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012     /* 0.5: depth-only passes (shadows) */
+    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,      /* 0.5 */
+    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E,  /* 0.5 */
+    GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,   /* 0.5: stereo */
+    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,    /* 0.5 */
+    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,         /* 0.5: frames and views */
+    GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012,     /* 0.5: depth-only passes (shadows) */
+    GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC = 0x67720013 /* 0.5: the host's shadow maps, received */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -849,8 +850,8 @@ typedef enum grass_view_flags {
 typedef struct grass_view_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VIEW_DESC */
     /* NULL, or a chain of the view's extensions (0.5), each at most once, in any order:
-     * grass_stereo_view_desc (the second eye of a multiview pass), grass_lod_origin_desc and
-     * grass_view_pass_desc. */
+     * grass_stereo_view_desc (the second eye of a multiview pass), grass_lod_origin_desc,
+     * grass_view_pass_desc and grass_shadow_receive_desc. */
     const void* next;
     double camera_position[3]; /* world space, metres, within +-1e12 m each */
     /* World-to-eye matrix, column-major. Only its rotation is used: translation comes
@@ -964,6 +965,63 @@ typedef struct grass_view_pass_desc {
 
 /* Default: GRASS_PASS_COLOR, no bias. */
 GRASS_API grass_view_pass_desc grass_default_view_pass_desc(void);
+
+/* 0.5: How a shadow map's stored depth compares with a point's (grass_shadow_receive_desc). */
+typedef enum grass_shadow_compare {
+    /* Lit where the point's depth <= the stored depth (standard depth: 0 near the light). */
+    GRASS_SHADOW_COMPARE_LESS_EQUAL = 0,
+    /* Lit where the point's depth >= the stored depth (reversed Z: 1 near the light). */
+    GRASS_SHADOW_COMPARE_GREATER_EQUAL = 1
+} grass_shadow_compare;
+
+#define GRASS_MAX_SHADOW_CASCADES 4
+
+/* 0.5: Chained on grass_view_desc.next: the view receives the host's sun shadows
+ * (docs/integration.md, "Receiving the host's shadows"). Every tier darkens the sun term of
+ * its lighting (grass_view_desc.sun_color) by the share of the sun the map says reaches the
+ * point (the blades at each fragment, the volume tier at each point its ray composites, the
+ * image tier at its point); the ambient term stays. A view without it draws with the same
+ * programs and memory as before. A depth pass (GRASS_PASS_DEPTH) ignores it (it writes no
+ * lighting). GL only for now: Vulkan refuses it (GRASS_ERROR_UNSUPPORTED). The host keeps the
+ * map alive and unchanged (GL: its name valid, its contents as drawn) until grass has drawn
+ * the view. */
+typedef struct grass_shadow_receive_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC */
+    const void* next;       /* the view's next extension, or NULL */
+    /* GL: the name of a GL_TEXTURE_2D_ARRAY depth texture (GL_DEPTH_COMPONENT*), layer i the
+     * map of cascade i; grass reads its level 0 through a sampler of its own (linear, depth
+     * compare), whatever the texture's own parameters. Not 0. */
+    uint64_t shadow_map;
+    /* Vulkan (reserved: Vulkan refuses the struct today): the VkImageLayout the map's view is
+     * in. GL: ignored. Default 0. */
+    uint32_t vk_image_layout;
+    /* Cascades in shadow_map and the arrays below: 1 to GRASS_MAX_SHADOW_CASCADES. Default 1. */
+    uint32_t cascade_count;
+    /* Per cascade, column-major: a world position (metres, as camera_position) to (u, v,
+     * depth as stored in the map) in x, y, z of the product (w divides: 1 for an orthographic
+     * cascade), u and v in 0..1 over the cascade's layer. The host bakes its clip-to-texture
+     * bias (and an atlas rectangle if it has one) into it, as Unity's WorldToShadow is. A
+     * point outside 0..1 in u or v is lit. Default: identity. */
+    float world_to_shadow[GRASS_MAX_SHADOW_CASCADES][16];
+    /* Where cascade i ends: metres along the camera's view axis from the camera, ascending,
+     * > 0; a point closer than cascade_end[i] and not closer than cascade_end[i-1] reads
+     * cascade i, a point beyond cascade_end[cascade_count - 1] is lit. Entries past
+     * cascade_count are ignored. Default 1e30 for each. */
+    float cascade_end[GRASS_MAX_SHADOW_CASCADES];
+    grass_shadow_compare compare; /* default GRASS_SHADOW_COMPARE_LESS_EQUAL */
+    /* Moved towards the light before the comparison, in the units of the stored depth (0..1
+     * for a normalised depth texture): against self-shadowing (acne) where grass also casts
+     * into the map. 0 to 1; 0 biases nothing. Default 0.0005. */
+    float depth_bias;
+    /* The filter's radius in texels of the map: 0 reads one hardware-filtered tap (2x2 PCF);
+     * above 0 a 3x3 grid of such taps that far apart, a soft edge about 2 x radius texels
+     * wide. 0 to 16. Default 1. */
+    float filter_radius;
+} grass_shadow_receive_desc;
+
+/* Default: as each field says (the identity matrices and no map: set shadow_map, the
+ * matrices and the cascades). */
+GRASS_API grass_shadow_receive_desc grass_default_shadow_receive_desc(void);
 
 /* Starts a frame of one view: validates the view and plans what every field draws. Then
  * draw with grass_gl_render() or grass_vk_record(), and close with grass_end_frame().

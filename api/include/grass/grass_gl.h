@@ -93,6 +93,11 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     alpha-to-coverage off, and turns polygon offset (fill) on with
  *     glPolygonOffset(depth_bias_slope, depth_bias_constant); the host's polygon offset
  *     factor and units, and its enable, are restored afterwards.
+ *   - 0.5: a view that receives the host's shadows (grass_shadow_receive_desc): texture
+ *     unit 14 (its 2D array texture: the host's shadow map, read through grass's own
+ *     depth-compare sampler) and its sampler, and uniform buffer binding 2 (grass's block
+ *     of the cascades' matrices). The host's map itself (its parameters, contents) is not
+ *     touched.
  *
  * Read as the host's conventions and honoured, never changed:
  *   - the bound draw framebuffer, its draw buffers and its sample count;

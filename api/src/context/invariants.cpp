@@ -66,17 +66,19 @@ grass_result check_plan(grass_context* ctx, const char* fn, const FramePlan& pla
         }
         // The maps' bits are the field's; past them only the responsive bits, the interaction
         // one only while the map is bound, the culling one on geometry draws only, the debug
-        // view's exactly when the frame draws one, the depth pass's exactly on a depth view.
+        // view's exactly when the frame draws one, the depth pass's exactly on a depth view, the shadow
+        // receiver's exactly on a receiving view.
         const uint32_t map_bits = (1u << kMapRoleCount) - 1u;
         const uint32_t dynamics_bits = draw.features & ~map_bits;
         const bool debug_ok = ((draw.features & kFeatureDebugView) != 0) == ((plan.flags & kDebugViewFlags) != 0) &&
-                              ((draw.features & kFeatureDepthPass) != 0) == plan.depth_pass;
-        const bool dynamics_ok =
-            (dynamics_bits & ~(kBladeCurveFeatures | kFeatureWindMap | kFeatureDebugView | kFeatureDepthPass)) == 0 &&
-            ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0) &&
-            ((dynamics_bits & kFeatureWindMap) != 0) == field->wind_map.active() &&
-            ((dynamics_bits & kFeatureWindMap) == 0 || (dynamics_bits & kFeatureWind) != 0) &&
-            ((dynamics_bits & kFeatureBladeCulling) == 0 || draw.kind == GRASS_TIER_GEOMETRY);
+                              ((draw.features & kFeatureDepthPass) != 0) == plan.depth_pass &&
+                              ((draw.features & kFeatureShadowReceive) != 0) == plan.shadow_receive;
+        const bool dynamics_ok = (dynamics_bits & ~(kBladeCurveFeatures | kFeatureWindMap | kFeatureDebugView |
+                                                    kFeatureDepthPass | kFeatureShadowReceive)) == 0 &&
+                                 ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0) &&
+                                 ((dynamics_bits & kFeatureWindMap) != 0) == field->wind_map.active() &&
+                                 ((dynamics_bits & kFeatureWindMap) == 0 || (dynamics_bits & kFeatureWind) != 0) &&
+                                 ((dynamics_bits & kFeatureBladeCulling) == 0 || draw.kind == GRASS_TIER_GEOMETRY);
         if ((draw.features & map_bits) != field->maps.features || !dynamics_ok || !debug_ok ||
             draw.features != draw.uniforms.tiling[3]) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,

@@ -76,6 +76,46 @@ grass_result check_pass(grass_context* ctx, const char* fn, const grass_view_pas
     return GRASS_SUCCESS;
 }
 
+// A grass_shadow_receive_desc: a map, 1-4 cascades with finite matrices and ascending
+// positive ends, a known comparison, bias and radius in range.
+grass_result check_shadow(grass_context* ctx, const char* fn, const grass_shadow_receive_desc& d) {
+    if (d.shadow_map == 0) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_HANDLE,
+                         "%s: grass_shadow_receive_desc->shadow_map is 0; expected the host's shadow map "
+                         "(GL: a GL_TEXTURE_2D_ARRAY depth texture's name)",
+                         fn);
+    }
+    if (d.cascade_count < 1 || d.cascade_count > GRASS_MAX_SHADOW_CASCADES) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: grass_shadow_receive_desc->cascade_count is %u; expected 1 to %d", fn, d.cascade_count,
+                         GRASS_MAX_SHADOW_CASCADES);
+    }
+    char name[80];
+    for (uint32_t i = 0; i < d.cascade_count; ++i) {
+        std::snprintf(name, sizeof(name), "grass_shadow_receive_desc->world_to_shadow[%u]", i);
+        GRASS_TRY(check_finite_array(ctx, fn, name, d.world_to_shadow[i], 16));
+        std::snprintf(name, sizeof(name), "grass_shadow_receive_desc->cascade_end[%u]", i);
+        GRASS_TRY(check_finite_array(ctx, fn, name, &d.cascade_end[i], 1));
+        const float before = i == 0 ? 0.0f : d.cascade_end[i - 1];
+        if (!(d.cascade_end[i] > before)) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_RANGE_INVERTED,
+                             "%s: grass_shadow_receive_desc->cascade_end[%u] is %g; it must be greater than %g (%s)",
+                             fn, i, static_cast<double>(d.cascade_end[i]), static_cast<double>(before),
+                             i == 0 ? "positive" : "the ends ascend");
+        }
+    }
+    const int64_t compare = raw_enum(d.compare);
+    if (compare != GRASS_SHADOW_COMPARE_LESS_EQUAL && compare != GRASS_SHADOW_COMPARE_GREATER_EQUAL) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                         "%s: grass_shadow_receive_desc->compare is %lld; expected GRASS_SHADOW_COMPARE_LESS_EQUAL (0) "
+                         "or GRASS_SHADOW_COMPARE_GREATER_EQUAL (1)",
+                         fn, static_cast<long long>(compare));
+    }
+    GRASS_TRY(check_range(ctx, fn, "grass_shadow_receive_desc->depth_bias", d.depth_bias, 0.0, 1.0));
+    GRASS_TRY(check_range(ctx, fn, "grass_shadow_receive_desc->filter_radius", d.filter_radius, 0.0, 16.0));
+    return GRASS_SUCCESS;
+}
+
 // The view's extension chain (grass_view_desc.next): each known struct at most once.
 grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_view_desc& v, ViewExtensions* out) {
     *out = ViewExtensions{};
@@ -96,11 +136,16 @@ grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_vi
             out->pass = static_cast<const grass_view_pass_desc*>(p);
             GRASS_TRY(check_pass(ctx, fn, *out->pass, v.flags));
             p = out->pass->next;
+        } else if (type == GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC && !out->shadow) {
+            out->shadow = static_cast<const grass_shadow_receive_desc*>(p);
+            GRASS_TRY(check_shadow(ctx, fn, *out->shadow));
+            p = out->shadow->next;
         } else {
             return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                              "%s: view->next chain element %u has type 0x%08x; expected "
-                             "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC, GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC or "
-                             "GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most once",
+                             "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC, GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC, "
+                             "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC or GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most "
+                             "once",
                              fn, position, static_cast<unsigned>(type));
         }
     }
@@ -117,6 +162,12 @@ grass_result check_views(grass_context* ctx, const char* fn, const ViewExtension
                          "%s: view->next chains a grass_view_pass_desc with GRASS_PASS_DEPTH, but the context was "
                          "created without a grass_vk_depth_pass_desc (chained on grass_vk_desc.next): the depth-only "
                          "target grass makes its depth pipelines for",
+                         fn);
+    }
+    if (ext.shadow && ctx->backend->kind() == GRASS_BACKEND_VULKAN) {
+        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: view->next chains a grass_shadow_receive_desc, but the Vulkan backend does not receive "
+                         "the host's shadow maps yet (GL does)",
                          fn);
     }
     const uint32_t views = target.views;
@@ -311,6 +362,21 @@ GRASS_API grass_view_pass_desc grass_default_view_pass_desc(void) {
     std::memset(&d, 0, sizeof(d));
     d.type = GRASS_STRUCT_TYPE_VIEW_PASS_DESC;
     d.pass = GRASS_PASS_COLOR;
+    return d;
+}
+
+GRASS_API grass_shadow_receive_desc grass_default_shadow_receive_desc(void) {
+    grass_shadow_receive_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC;
+    d.cascade_count = 1;
+    for (int i = 0; i < GRASS_MAX_SHADOW_CASCADES; ++i) {
+        for (int k = 0; k < 4; ++k) d.world_to_shadow[i][k * 5] = 1.0f;
+        d.cascade_end[i] = 1e30f;
+    }
+    d.compare = GRASS_SHADOW_COMPARE_LESS_EQUAL;
+    d.depth_bias = 0.0005f;
+    d.filter_radius = 1.0f;
     return d;
 }
 

@@ -217,6 +217,16 @@ struct InteractionPlan {
     }
 };
 
+// std140 uniform block `GrassShadow` (host_shadows.glsl; GL binding 2): the host's shadow
+// map of a receiving view (grass_shadow_receive_desc), only in such a view's upload.
+struct ShadowUniforms {
+    float world_to_shadow[4][16]; // per cascade: camera-relative world -> (u, v, stored depth), column-major
+    float cascade_end[4];         // metres along the camera's view axis (unused cascades: 0)
+    float axis[4];                // xyz: the camera's view axis (world, unit), w: cascade count
+    float params[4];              // x: +1 lit where depth <= stored, -1 >=; y: depth bias; z: filter radius (texels)
+};
+static_assert(sizeof(ShadowUniforms) == 304, "std140 GrassShadow block");
+
 struct FramePlan {
     explicit FramePlan(HostAllocator* host)
         : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host) {}
@@ -231,8 +241,14 @@ struct FramePlan {
     // the backend writes no colour and biases the depth by (constant, slope).
     bool depth_pass = false;
     float depth_bias[2] = {0.0f, 0.0f}; // constant, slope (glPolygonOffset's units, factor)
-    Vector<TierInstance> instances;     // geometry instances of a draw are ordered front to back
-    Vector<TierDraw> draws;             // per field, per tier that draws something
+    // A view that receives the host's shadows (grass_shadow_receive_desc): every draw has
+    // kFeatureShadowReceive; the backend binds `shadow_map` with `shadow` (compare in params.x).
+    bool shadow_receive = false;
+    uint64_t shadow_map = 0;    // GL: texture name
+    uint32_t shadow_layout = 0; // Vulkan: VkImageLayout
+    ShadowUniforms shadow{};
+    Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
+    Vector<TierDraw> draws;         // per field, per tier that draws something
     grass_frame_stats stats{};
     InteractionPlan interaction; // responsive grass: the interaction pass (levels = 0: none)
     void clear() {

@@ -51,8 +51,13 @@ constexpr uint32_t kDebugViewFlags = GRASS_VIEW_FLAG_DEBUG_TIERS | GRASS_VIEW_FL
 // lighting and colour and keep the coverage test and depth of the colour pass. Set on every
 // draw of a depth view's plan and no other, so a host without depth views never compiles it.
 constexpr uint32_t kFeatureDepthPass = 1u << 10;
+// A view that receives the host's shadow map (grass_shadow_receive_desc, GRASS_SHADOW_RECEIVE
+// in the shaders): its variants declare the map and its block (host_shadows.glsl, behind
+// the GRASS_HOST_SHADOWS define) and darken the sun term. Set on every draw of a receiving
+// colour view's plan and no other.
+constexpr uint32_t kFeatureShadowReceive = 1u << 11;
 // Every feature mask is below this (the variants a backend may compile).
-constexpr uint32_t kFeatureMaskCount = kFeatureDepthPass << 1;
+constexpr uint32_t kFeatureMaskCount = kFeatureShadowReceive << 1;
 // The debug boxes (GRASS_VIEW_FLAG_DEBUG_CELLS, debug_tiers.*) sample the height map alone.
 constexpr uint32_t kDebugBoxFeatures = 1u << kMapHeight;
 // Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's

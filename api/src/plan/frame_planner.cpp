@@ -561,6 +561,41 @@ void eye_view_projection(const float view[16], const float projection[16], doubl
     mul4(p, rotation, out);
 }
 
+// A colour view with a grass_shadow_receive_desc (a depth pass ignores it): every draw
+// gets kFeatureShadowReceive, and the plan the map and its block. The matrices are made
+// camera-relative in double (the shaders' positions are), the view axis is the camera's.
+static void plan_shadow_receive(const grass_view_desc& view, const ViewExtensions& ext, const double camera[3],
+                                FramePlan* plan) {
+    plan->shadow_receive = ext.shadow != nullptr && !plan->depth_pass;
+    plan->shadow = ShadowUniforms{};
+    plan->shadow_map = plan->shadow_receive ? ext.shadow->shadow_map : 0u;
+    plan->shadow_layout = plan->shadow_receive ? ext.shadow->vk_image_layout : 0u;
+    if (!plan->shadow_receive) return;
+    const grass_shadow_receive_desc& d = *ext.shadow;
+    ShadowUniforms& u = plan->shadow;
+    for (uint32_t i = 0; i < d.cascade_count && i < GRASS_MAX_SHADOW_CASCADES; ++i) {
+        const float* m = d.world_to_shadow[i];
+        for (int k = 0; k < 12; ++k) u.world_to_shadow[i][k] = m[k];
+        for (int r = 0; r < 4; ++r) { // column 3 of M * T(camera)
+            const double t = m[12 + r] + m[r] * camera[0] + m[4 + r] * camera[1] + m[8 + r] * camera[2];
+            u.world_to_shadow[i][12 + r] = static_cast<float>(t);
+        }
+        u.cascade_end[i] = d.cascade_end[i];
+    }
+    // The view matrix's third row is the eye's +z in world space; the camera looks along -z.
+    double axis[3] = {-view.view[2], -view.view[6], -view.view[10]};
+    const double len = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+    for (int c = 0; c < 3; ++c) u.axis[c] = static_cast<float>(axis[c] / len);
+    u.axis[3] = static_cast<float>(d.cascade_count);
+    u.params[0] = d.compare == GRASS_SHADOW_COMPARE_GREATER_EQUAL ? -1.0f : 1.0f;
+    u.params[1] = d.depth_bias;
+    u.params[2] = d.filter_radius;
+    for (TierDraw& draw : plan->draws) {
+        draw.features |= kFeatureShadowReceive;
+        draw.uniforms.tiling[3] = draw.features;
+    }
+}
+
 grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& view, const ViewExtensions& ext) {
     const auto start = std::chrono::steady_clock::now();
     FramePlan& plan = in.plan;
@@ -654,6 +689,7 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
             return r;
         }
     }
+    plan_shadow_receive(view, ext, camera, &plan);
     plan.stats.draws = plan.draws.size();
     plan.stats.plan_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return GRASS_SUCCESS;

@@ -41,6 +41,7 @@ struct ViewExtensions {
     const grass_stereo_view_desc* stereo = nullptr;    // the second eye: a stereo frame
     const grass_lod_origin_desc* lod_origin = nullptr; // where the lod distances are measured from
     const grass_view_pass_desc* pass = nullptr;        // the pass (none: GRASS_PASS_COLOR)
+    const grass_shadow_receive_desc* shadow = nullptr; // the host's shadow map, received (colour views)
 };
 
 // Rebuilds in.plan from a validated view. Fails only when a host lod-test callback

@@ -23,6 +23,7 @@ DEFINES = {
     "GRASS_MAX_GRASS_TYPES": 8,
     "GRASS_MAX_WIND_SOURCES": 16,
     "GRASS_MAX_VIEWS_PER_FRAME": 16,
+    "GRASS_MAX_SHADOW_CASCADES": 4,
     "GRASS_MAX_COLLIDERS": 65536,
     "GRASS_MAX_MEMORY_HEAPS": 16,
 }
@@ -57,6 +58,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC": 0x6772000E,
         "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC": 0x6772000F, "GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC": 0x67720010,
         "GRASS_STRUCT_TYPE_FRAME_DESC": 0x67720011, "GRASS_STRUCT_TYPE_VIEW_PASS_DESC": 0x67720012,
+        "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC": 0x67720013,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -88,6 +90,7 @@ ENUMS = {
     },
     "grass_tier_kind": {"GRASS_TIER_GEOMETRY": 0, "GRASS_TIER_VOLUME": 1, "GRASS_TIER_IMAGE": 2},
     "grass_pass_kind": {"GRASS_PASS_COLOR": 0, "GRASS_PASS_DEPTH": 1},
+    "grass_shadow_compare": {"GRASS_SHADOW_COMPARE_LESS_EQUAL": 0, "GRASS_SHADOW_COMPARE_GREATER_EQUAL": 1},
     "grass_lod_answer": {"GRASS_LOD_DISCARD": 0, "GRASS_LOD_SPLIT": 1, "GRASS_LOD_DRAW": 2},
     "grass_lod_test_kind": {
         "GRASS_LOD_TEST_DISTANCE_BAND": 1, "GRASS_LOD_TEST_MACRO_CELL": 2, "GRASS_LOD_TEST_CALLBACK": 3,
@@ -264,6 +267,12 @@ class grass_view_pass_desc(Structure):
                 ("depth_bias_slope", c_float)]
 
 
+class grass_shadow_receive_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("shadow_map", c_uint64), ("vk_image_layout", c_uint32),
+                ("cascade_count", c_uint32), ("world_to_shadow", (c_float * 16) * 4), ("cascade_end", c_float * 4),
+                ("compare", grass_enum), ("depth_bias", c_float), ("filter_radius", c_float)]
+
+
 class grass_frame_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("frame_index", c_uint64),
                 ("completed_frame_index", c_uint64), ("time", c_double)]
@@ -419,6 +428,7 @@ FUNCTIONS = {
     "grass_begin_frame": (grass_enum, [_ctx, _P(grass_view_desc)]),
     "grass_end_frame": (grass_enum, [_ctx]),
     "grass_default_view_pass_desc": (grass_view_pass_desc, []),
+    "grass_default_shadow_receive_desc": (grass_shadow_receive_desc, []),
     "grass_default_frame_desc": (grass_frame_desc, []),
     "grass_begin_host_frame": (grass_enum, [_ctx, _P(grass_frame_desc)]),
     "grass_plan_view": (grass_enum, [_ctx, _P(grass_view_desc), _P(c_uint32)]),

@@ -67,6 +67,30 @@ def test_a_depth_pass_view_through_the_raw_binding():
         ctx.end_frame()
 
 
+def test_a_receiving_view_through_the_raw_binding():
+    with grass.Context() as ctx:
+        patch = ctx.create_patch(blade_count=256)
+        ctx.create_field(patch, cells_x=64, cells_z=64)
+        receive = grass.lib.grass_default_shadow_receive_desc()
+        assert receive.type == grass.GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC
+        assert receive.cascade_count == 1 and receive.compare == grass.GRASS_SHADOW_COMPARE_LESS_EQUAL
+        assert receive.world_to_shadow[3][15] == 1.0  # every cascade's identity
+        receive.shadow_map = 5
+        receive.cascade_count = 2
+        receive.cascade_end[0], receive.cascade_end[1] = 10.0, 40.0
+        view = overhead_view()
+        view.next = ctypes.addressof(receive)
+        index = ctypes.c_uint32(99)
+        ctx.begin_host_frame(1)
+        ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
+        assert index.value == 0
+        receive.cascade_end[1] = 5.0
+        with pytest.raises(grass.GrassError) as refused:
+            ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
+        assert "grass_shadow_receive_desc->cascade_end[1] is 5" in str(refused.value)
+        ctx.end_frame()
+
+
 def test_errors_carry_the_result_and_the_message_id():
     messages = []
     with grass.Context(log=lambda level, mid, text: messages.append(mid)) as ctx:

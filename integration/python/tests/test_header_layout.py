@@ -50,7 +50,7 @@ def parse_structs():
                 fields.append(fn.group(1))
                 continue
             first, *rest = [p.strip() for p in decl.split(",")]
-            fields.append(re.search(r"(\w+)\s*(\[[^\]]*\])?$", first).group(1))
+            fields.append(re.search(r"(\w+)\s*(?:\[[^\]]*\])*$", first).group(1))  # [n] or [m][n]
             fields += [re.match(r"\**\s*(\w+)", r).group(1) for r in rest]
         structs[name] = fields
     return structs
