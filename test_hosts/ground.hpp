@@ -5,8 +5,10 @@
 
 namespace grass_host {
 
-// The ground is drawn as kGroundTiles x kGroundTiles squares of 6 vertices (shaders/ground.vert).
+// The ground is drawn as kGroundTiles x kGroundTiles squares of 6 vertices (shaders/ground.vert):
+// draw kGroundVertexCount vertices, no vertex buffer.
 constexpr int kGroundTiles = 32;
+constexpr unsigned kGroundVertexCount = 6u * kGroundTiles * kGroundTiles;
 
 // std140 block `Ground`.
 struct GroundUniforms {

@@ -395,7 +395,7 @@ void GlHost::draw_ground(const grass_view_desc& view) {
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, 0, ground_buffer_);
     gl_.Enable(GL_DEPTH_TEST);
     gl_.DepthFunc(target_.reversed_z ? GL_GREATER : GL_LESS);
-    gl_.DrawArrays(GL_TRIANGLES, 0, 6 * kGroundTiles * kGroundTiles);
+    gl_.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(kGroundVertexCount));
     gl_.Disable(GL_DEPTH_TEST);
     gl_.BindVertexArray(0);
     gl_.UseProgram(0);

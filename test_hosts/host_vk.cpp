@@ -475,7 +475,7 @@ void VkHost::draw_ground(VkCommandBuffer cmd, const grass_view_desc& view) {
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_layout_, 0, 1, &ground_set_, 0, nullptr);
-    vkCmdDraw(cmd, 6 * kGroundTiles * kGroundTiles, 1, 0, 0);
+    vkCmdDraw(cmd, kGroundVertexCount, 1, 0, 0);
 }
 
 // ---- The grass context --------------------------------------------------------------------

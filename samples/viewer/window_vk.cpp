@@ -660,7 +660,7 @@ grass_result VkWindow::draw_frame(grass_context* ctx, const grass_view_desc& vie
         vkCmdSetScissor(f.cmd, 0, 1, &scissor);
         vkCmdBindDescriptorSets(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_layout_, 0, 1, &f.ground_set, 0,
                                 nullptr);
-        vkCmdDraw(f.cmd, 6, 1, 0, 0);
+        vkCmdDraw(f.cmd, grass_host::kGroundVertexCount, 1, 0, 0);
     }
     if (meshes_) meshes_->record(f.cmd, view, extent_.width, extent_.height); // into the depth grass shares
     if (result == GRASS_SUCCESS) {
