@@ -49,29 +49,8 @@ protected:
         return image;
     }
 
-    // Geometry near the main camera, a volume of 2 slices, the horizontal slice far
-    // (frame_views_test.cpp's field).
-    void make_tiered_field() {
-        static const grass_tier_desc tiers[3] = {
-            {GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 2}, {GRASS_TIER_IMAGE, 0}};
-        const float bands[3][4] = {{0.0f, 3.0f, 0.0f, 1.0f}, {2.0f, 7.0f, 1.0f, 1.5f}, {5.5f, INFINITY, 1.5f, 0.0f}};
-        for (uint32_t t = 0; t < 3; ++t) {
-            grass_lod_test& b = tests_[t];
-            b = grass_lod_test{};
-            b.kind = GRASS_LOD_TEST_DISTANCE_BAND;
-            b.tier = t;
-            b.begin = bands[t][0];
-            b.end = bands[t][1];
-            b.transition_in = bands[t][2];
-            b.transition_out = bands[t][3];
-        }
-        grass_field_desc d = field_desc(kCells);
-        d.tiers = tiers;
-        d.tier_count = 3;
-        d.lod_tests = tests_;
-        d.lod_test_count = 3;
-        make_field(d);
-    }
+    // Geometry near, a volume of 2 slices, the horizontal slice far (RenderTest::three_tier_field).
+    void make_tiered_field() { make_field(three_tier_field(kCells)); }
 
     // An orthographic light view, slanted (the sun 50 degrees up), over the field's centre;
     // its lod origin is the main camera. `pass` is chained when given.
@@ -111,7 +90,6 @@ protected:
 
     static bool has_depth(float d) { return d < 1.0f - 1e-6f; } // cleared to 1 (GRASS_DEPTH_LESS)
 
-    grass_lod_test tests_[3] = {};
     grass_lod_origin_desc lod_origin_{};
 };
 
