@@ -68,6 +68,8 @@ struct TargetDesc {
 
 // Linear to sRGB-encoded, 0..1 (clamped).
 float linear_to_srgb(float linear);
+// The target's clear colour as its colour image stores it (encoded where unorm_color).
+void stored_clear_color(const TargetDesc& target, float out[4]);
 
 // An opaque camera-facing rectangle the host draws into its own colour and depth before
 // grass draws: a box face `distance` metres in front of the camera. Pixel rectangle with

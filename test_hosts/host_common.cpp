@@ -66,6 +66,11 @@ float linear_to_srgb(float v) {
     return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
+void stored_clear_color(const TargetDesc& target, float out[4]) {
+    for (int c = 0; c < 4; ++c)
+        out[c] = c < 3 && target.unorm_color ? linear_to_srgb(target.clear_color[c]) : target.clear_color[c];
+}
+
 void encode_float_image(Image* image) {
     const size_t n = image->rgba_f32.size();
     image->rgba.resize(n);

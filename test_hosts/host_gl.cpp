@@ -411,11 +411,8 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     if (target_.gl_clip_zero_to_one) gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     const int32_t whole[4] = {0, 0, w, h};
-    float clear_color[4] = {target_.clear_color[0], target_.clear_color[1], target_.clear_color[2],
-                            target_.clear_color[3]};
-    if (target_.unorm_color) {
-        for (int c = 0; c < 3; ++c) clear_color[c] = linear_to_srgb(clear_color[c]);
-    }
+    float clear_color[4];
+    stored_clear_color(target_, clear_color);
     clear_rect(clear_color, target_.reversed_z ? 0.0f : 1.0f, whole);
 
     if (target_.ground) draw_ground(view);

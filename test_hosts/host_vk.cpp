@@ -532,10 +532,7 @@ void VkHost::projection(float fovy_radians, float aspect, float near_m, float fa
 
 void VkHost::begin_pass(VkCommandBuffer cmd) {
     VkClearValue clears[2] = {};
-    for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = target_.clear_color[c];
-    if (target_.unorm_color) {
-        for (int c = 0; c < 3; ++c) clears[0].color.float32[c] = linear_to_srgb(target_.clear_color[c]);
-    }
+    stored_clear_color(target_, clears[0].color.float32);
     clears[1].depthStencil = {target_.reversed_z ? 0.0f : 1.0f, 0};
     const VkRect2D area{{0, 0}, {target_.width, target_.height}};
     if (render_pass_) {
@@ -605,10 +602,7 @@ void VkHost::begin_pass(VkCommandBuffer cmd) {
 // pass's clear), then the depth-only pass over the depth image.
 void VkHost::begin_depth_pass(VkCommandBuffer cmd) {
     VkClearColorValue colour{};
-    for (int c = 0; c < 4; ++c) colour.float32[c] = target_.clear_color[c];
-    if (target_.unorm_color) {
-        for (int c = 0; c < 3; ++c) colour.float32[c] = linear_to_srgb(target_.clear_color[c]);
-    }
+    stored_clear_color(target_, colour.float32);
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
