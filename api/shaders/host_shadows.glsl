@@ -26,14 +26,21 @@ layout(set = 1, binding = 1) uniform sampler2DArrayShadow host_shadow_map;
 layout(std140, binding = 2) uniform GrassShadow { GrassShadowData shadow_at[1]; };
 uniform sampler2DArrayShadow host_shadow_map;
 #endif
-
-// `p` relative to the camera (world axes, metres), as the tiers' positions are.
-float host_sun_visibility(vec3 p) {
+// Read at the pushed index, the block is copied once per invocation with the others
+// (load_blocks(), blade_interface.glsl), not at every point the volume's ray composites.
 #ifdef GRASS_INDEXED_BLOCKS
-    GrassShadowData grass_shadow = shadow_at[grass_push.block_index]; // read once (lavapipe)
+GrassShadowData g_shadow;
+#undef load_blocks
+#define load_blocks()                                                                                  \
+    g_frame = frame_at[grass_push.block_index], g_field = field_at[grass_push.block_index],           \
+    g_shadow = shadow_at[grass_push.block_index]
+#define grass_shadow g_shadow
 #else
 #define grass_shadow shadow_at[0]
 #endif
+
+// `p` relative to the camera (world axes, metres), as the tiers' positions are.
+float host_sun_visibility(vec3 p) {
     float along = dot(p, grass_shadow.axis.xyz);
     int count = int(grass_shadow.axis.w + 0.5);
     int c = 0;
@@ -53,6 +60,3 @@ float host_sun_visibility(vec3 p) {
     }
     return lit / 9.0;
 }
-#ifndef GRASS_INDEXED_BLOCKS
-#undef grass_shadow
-#endif
