@@ -108,12 +108,15 @@ protected:
         RenderTest::SetUp();
         start_on(GetParam());
     }
-    // The host and context of `backend` (the test's, or GL for the agreement test).
-    void start_on(grass_backend backend) {
+    // The host and context of `backend` (the test's, or GL for the agreement test); `samples`
+    // above 1 or `dynamic_rendering` (Vulkan) read back no depth.
+    void start_on(grass_backend backend, uint32_t samples = 1, bool dynamic_rendering = false) {
         backend_ = backend;
         grass_host::TargetDesc t;
         t.width = t.height = kSize;
-        t.read_depth = true;
+        t.samples = samples;
+        t.vk_dynamic_rendering = dynamic_rendering;
+        t.read_depth = samples == 1 && !dynamic_rendering;
         if (backend == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_filter;
 #ifdef GRASS_HOST_HAS_VULKAN
         if (backend == GRASS_BACKEND_VULKAN) t.vk_get_instance_proc_addr = vk_intercept::get_instance_proc_addr();
@@ -498,6 +501,32 @@ TEST_P(ShadowReceiveTest, AViewWithoutItKeepsItsProgramsAndTheHostsBindings) {
     EXPECT_EQ(again.rgba, lit.rgba);
     gl.DeleteTextures(1, &host_texture);
     gl.DeleteBuffers(1, &host_buffer);
+}
+
+// Vulkan: the receiving pipelines of a multisampled target drawn with dynamic rendering (the
+// tests above draw single-sampled in a render pass): the map darkens the picture, and the
+// validation layers stay silent (TearDown).
+TEST_P(ShadowReceiveTest, AMultisampledDynamicRenderingTargetReceives) {
+    if (GetParam() != GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan targets";
+    start_on(GRASS_BACKEND_VULKAN, 4, true);
+    make_tiered_field();
+    const grass_host::Image lit = render(camera(nullptr));
+    make_map(1, [](int, double u, double) { return u < 0.5 ? 0.0f : 1.0f; });
+    const grass_shadow_receive_desc d = receive(GRASS_SHADOW_COMPARE_LESS_EQUAL, 1);
+    const grass_host::Image image = render(camera(&d));
+    save(image, "shadow_receive_msaa_dynamic");
+    // The camera's right is world -x: the shadowed half (x < 6 m) is the image's right half,
+    // darker; the left half as lit. Green levels lost per pixel, the edge's band left out.
+    double darker[2] = {0.0, 0.0}; // left, right
+    for (uint32_t y = kSize / 4; y < kSize * 3 / 4; ++y) {
+        for (uint32_t x = 0; x < kSize; ++x) {
+            if (x + 8 > kSize / 2 && x < kSize / 2 + 8) continue;
+            darker[x < kSize / 2 ? 0 : 1] += double(lit.pixel(x, y)[1]) - double(image.pixel(x, y)[1]);
+        }
+    }
+    const double per_half = double(kSize / 2 - 8) * (kSize / 2);
+    EXPECT_GT(darker[1] / per_half, 3.0) << "the shadowed half darkens";
+    EXPECT_LT(std::fabs(darker[0] / per_half), 0.5) << "the lit half stays";
 }
 
 #if defined(GRASS_HOST_HAS_VULKAN) && defined(GRASS_HOST_HAS_GL)
