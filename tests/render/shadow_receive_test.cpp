@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <set>
 #include <string>
@@ -105,6 +106,9 @@ const char* const kRegionNames[3] = {"geometry", "volume", "image"};
 class ShadowReceiveTest : public RenderTest {
 protected:
     void SetUp() override {
+        // Vulkan: the synchronization validation too (the host's map, written by a copy, read
+        // by grass's fragment shaders; read when the host makes its instance).
+        setenv("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT", 1);
         RenderTest::SetUp();
         start_on(GetParam());
     }
