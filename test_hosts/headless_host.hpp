@@ -143,6 +143,16 @@ public:
         return nullptr;
     }
 
+    // Vulkan hosts: a cascaded shadow map for grass_shadow_receive_desc (shadow_map_vk.hpp): a
+    // D32_SFLOAT 2D array of `layers` layers of `size` x `size` depths, depths[(layer * size
+    // + row) * size + column], left in `vk_layout` (a VkImageLayout). Its VkImageView, or 0
+    // with *error set; it replaces the host's previous map. GL hosts return 0.
+    virtual uint64_t make_vk_shadow_map(uint32_t size, uint32_t layers, const float* depths, uint32_t vk_layout,
+                                        std::string* error) {
+        (void)size, (void)layers, (void)depths, (void)vk_layout, (void)error;
+        return 0;
+    }
+
     // GL hosts: called in render() right before grass_begin_frame (after the clear, the
     // ground and the occluder) and right after grass_end_frame (before the read-back), for
     // tests of the GL state grass draws under and leaves. Vulkan hosts do not call them.

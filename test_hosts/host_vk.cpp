@@ -10,6 +10,7 @@
 #include "host_factories.hpp"
 #include "host_shaders.hpp"
 #include "mesh_drawer_vk.hpp"
+#include "shadow_map_vk.hpp"
 #include "vk_bootstrap.hpp"
 
 #include <grass/grass_vk.h>
@@ -53,6 +54,11 @@ public:
     void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const override;
     grass_result render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
                         std::string* error) override;
+    uint64_t make_vk_shadow_map(uint32_t size, uint32_t layers, const float* depths, uint32_t vk_layout,
+                                std::string* error) override {
+        return shadow_map_.make({device_, &memory_properties_, queue_, cmd_, fence_}, size, layers, depths,
+                                static_cast<VkImageLayout>(vk_layout), error);
+    }
 
 private:
     bool create_instance(std::string* error);
@@ -113,6 +119,7 @@ private:
     VkCommandPool command_pool_ = VK_NULL_HANDLE;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
+    VkShadowMap shadow_map_; // make_vk_shadow_map
 };
 
 void VkHost::on_message(void* user, const std::string& line) {
@@ -123,12 +130,9 @@ void VkHost::on_message(void* user, const std::string& line) {
 
 bool VkHost::init(std::string* error) {
     samples_ = static_cast<VkSampleCountFlagBits>(target_.samples);
-    if (target_.samples == 0 || (target_.samples & (target_.samples - 1)) != 0 || target_.samples > 64) {
-        *error = "target.samples must be 1, 2, 4, 8, 16, 32 or 64";
-        return false;
-    }
-    if (target_.width == 0 || target_.height == 0) {
-        *error = "target width and height must be at least 1";
+    if (target_.samples == 0 || (target_.samples & (target_.samples - 1)) != 0 || target_.samples > 64 ||
+        target_.width == 0 || target_.height == 0) {
+        *error = "target.samples must be 1, 2, 4, 8, 16, 32 or 64, and its width and height at least 1";
         return false;
     }
     return create_instance(error) && pick_device(error) && create_device(error) && create_target(error) &&
@@ -384,17 +388,10 @@ bool VkHost::create_render_pass(std::string* error) {
 bool VkHost::create_commands(std::string* error) {
     if (!grass_bootstrap::create_command_pool(device_, queue_family_, &command_pool_, error)) return false;
     VkResult r = grass_bootstrap::allocate_command_buffer(device_, command_pool_, &cmd_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkAllocateCommandBuffers", r);
-        return false;
-    }
-    VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    r = vkCreateFence(device_, &fence, nullptr, &fence_);
-    if (r != VK_SUCCESS) {
-        *error = vk_error("vkCreateFence", r);
-        return false;
-    }
-    return true;
+    const VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    if (r == VK_SUCCESS) r = vkCreateFence(device_, &fence, nullptr, &fence_);
+    if (r != VK_SUCCESS) *error = vk_error(cmd_ ? "vkCreateFence" : "vkAllocateCommandBuffers", r);
+    return r == VK_SUCCESS;
 }
 
 VkHost::~VkHost() {
@@ -402,6 +399,7 @@ VkHost::~VkHost() {
         vkDeviceWaitIdle(device_);
         movable_meshes_ = nullptr;
         meshes_.reset();
+        shadow_map_.destroy();
         if (ground_pipeline_) vkDestroyPipeline(device_, ground_pipeline_, nullptr);
         if (pipeline_cache_) vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
         if (ground_layout_) vkDestroyPipelineLayout(device_, ground_layout_, nullptr);

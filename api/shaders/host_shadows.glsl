@@ -1,22 +1,43 @@
 // The host's sun shadows (grass_shadow_receive_desc): the share of the sun that reaches a
 // point, 0..1, read from the host's cascaded shadow map. Included only where
 // GRASS_HOST_SHADOWS is defined (the GRASS_SHADOW_RECEIVE variants: GL defines it with
-// GRASS_FEATURES), so every other variant declares neither the map nor its block and its
+// GRASS_FEATURES, Vulkan compiles SPIR-V modules with it, vk_spirv.hpp), so every other variant declares neither the map nor its block and its
 // preprocessed text is what it was. The tiers multiply their sun term by it (light.y).
-#ifdef VULKAN
-#error "the Vulkan backend does not receive the host's shadow maps yet (the core refuses such a view)"
-#endif
 
-// The GrassShadow block (api/src/foundation/frame_plan.hpp ShadowUniforms), GL binding 2.
-layout(std140, binding = 2) uniform GrassShadow {
+// The GrassShadow block (api/src/foundation/frame_plan.hpp ShadowUniforms): GL binding 2;
+// Vulkan set 1 (the receiving pipelines' layout alone has it, backend_vk/src/
+// vk_receive_pipelines.hpp), binding 0, the map at binding 1. The block holds its struct as
+// the one element of an array read at the Frame block's index (blade_interface.glsl says why).
+#if defined(VULKAN) && defined(GRASS_MULTIVIEW)
+#error "a stereo (multiview) view does not receive the host's shadow maps (the core refuses such a view)"
+#endif
+struct GrassShadowData {
     mat4 world_to_shadow[4]; // per cascade: camera-relative world -> (u, v, stored depth)
     vec4 cascade_end;        // metres along the camera's view axis
     vec4 axis;               // xyz: the camera's view axis (world, unit), w: cascade count
     vec4 params;             // x: +1 lit where depth <= stored, -1 >=; y: depth bias; z: filter radius (texels)
-} grass_shadow;
+};
 // The host's map (a 2D array, one layer per cascade) through grass's sampler: linear with
-// depth compare, so each tap is the hardware's 2x2 percentage-closer filter. Texture unit 14.
+// depth compare, so each tap is the hardware's 2x2 percentage-closer filter. GL: texture unit 14.
+#ifdef VULKAN
+layout(std140, set = 1, binding = 0) uniform GrassShadow { GrassShadowData shadow_at[1]; };
+layout(set = 1, binding = 1) uniform sampler2DArrayShadow host_shadow_map;
+#else
+layout(std140, binding = 2) uniform GrassShadow { GrassShadowData shadow_at[1]; };
 uniform sampler2DArrayShadow host_shadow_map;
+#endif
+// Read at the pushed index, the block is copied once per invocation with the others
+// (load_blocks(), blade_interface.glsl), not at every point the volume's ray composites.
+#ifdef GRASS_INDEXED_BLOCKS
+GrassShadowData g_shadow;
+#undef load_blocks
+#define load_blocks()                                                                                  \
+    g_frame = frame_at[grass_push.block_index], g_field = field_at[grass_push.block_index],           \
+    g_shadow = shadow_at[grass_push.block_index]
+#define grass_shadow g_shadow
+#else
+#define grass_shadow shadow_at[0]
+#endif
 
 // `p` relative to the camera (world axes, metres), as the tiers' positions are.
 float host_sun_visibility(vec3 p) {

@@ -32,6 +32,7 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       memory_(fn_, device_.device, device_.memory, device_.properties.limits, &context->host),
       descriptors_(fn_, device_.device, &context->host), frame_sets_(fn_, device_.device, &context->host),
       deferred_(memory_, descriptors_, &context->host), pipeline_(fn_, device_.device, &context->host),
+      shadows_(fn_, device_.device, memory_),
       ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment,
             device_.view_mask != 0),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),

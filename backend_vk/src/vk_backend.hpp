@@ -12,6 +12,7 @@
 #include "vk_descriptors.hpp"
 #include "vk_device.hpp"
 #include "vk_frame_ring.hpp"
+#include "vk_host_shadows.hpp"
 #include "vk_interaction.hpp"
 #include "vk_memory.hpp"
 #include "vk_pipeline.hpp"
@@ -206,6 +207,7 @@ private:
     VkPipelineCache cache_ = VK_NULL_HANDLE;     // the host's (grass_vk_host_objects_desc.pipeline_cache) or own_cache_
     VkPipelineCache own_cache_ = VK_NULL_HANDLE; // grass's own, when the host gave none
     BladePipeline pipeline_;
+    HostShadowSets shadows_; // receiving views: the host's shadow map and its block per view slot (set 1)
     FrameRing ring_;
     UploadBatch batch_;
     Vector<PatchGpu> patches_;

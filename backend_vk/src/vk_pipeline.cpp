@@ -126,7 +126,14 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
                                    const char** what) {
     if (has_variant(variant, depth_test)) return true;
     const bool depth_pass = (variant.features & kFeatureDepthPass) != 0;
-    if (depth_pass) {
+    const bool receive = (variant.features & kFeatureShadowReceive) != 0;
+    if (receive) {
+        // The core refuses a receiving stereo view and gives a depth pass no receiving draw.
+        if (depth_pass || target_.view_mask != 0 || variant.program >= kReceivePipelineKinds) {
+            *what = "a pipeline that receives the host's shadows (a depth pass, stereo or a debug view)";
+            return false;
+        }
+    } else if (depth_pass) {
         // The core refuses a depth view without the host's depth target, and a depth view
         // with debug views or without the depth test (check_pass).
         if (!depth_target_.depth_only || !depth_test || variant.program >= kDepthPipelineKinds ||
@@ -146,10 +153,12 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
     modules.indexed_blocks = target_.indexed_blocks;
     modules.multiview = target_.view_mask != 0;
     modules.depth_target = depth_pass; // no colour output: the depth-only target has no attachment for it
+    modules.host_shadows = receive;    // the map and its block in set 1
     const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(modules)
                                 : variant.program == kShaderVolume ? SlicePipelines::volume_shape(modules)
                                 : variant.program == kShaderImage  ? SlicePipelines::image_shape(modules)
                                                                    : DebugViewPipeline::shape(modules);
+    if (receive) return receivers_.create_variant(target_, set_layout_, variant, shape, depth_test, failure, what);
     if (depth_pass) {
         const uint32_t colour = variant.features & ~kFeatureDepthPass;
         return create_pipeline(fn_, device_, depth_target_, layout_, shape, variant.features, true,
@@ -185,6 +194,7 @@ void BladePipeline::destroy() {
         if (p) fn_.vkDestroyPipeline(device_, p, fn_.callbacks());
     }
     depth_pipelines_.clear();
+    receivers_.destroy();
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
     if (sampler_) fn_.vkDestroySampler(device_, sampler_, fn_.callbacks());

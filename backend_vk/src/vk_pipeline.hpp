@@ -11,6 +11,7 @@
 #include "foundation/shader_interface.hpp"
 #include "foundation/shader_variants.hpp"
 #include "vk_functions.hpp"
+#include "vk_receive_pipelines.hpp"
 #include "vk_result.hpp"
 
 #include <cstddef>
@@ -66,7 +67,8 @@ static_assert(kPipelineBlade == static_cast<uint32_t>(kShaderBlades) &&
 // kFeatureWind, kFeatureInteraction, kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView.
 // The 11th, kFeatureDepthPass, marks a depth view's draws: their pipelines (blades, volume,
 // image; depth-tested) live in a table of their own, made on the first depth pass, so the
-// colour table holds the colour masks alone.
+// colour table holds the colour masks alone; the 12th, kFeatureShadowReceive, a receiving
+// view's draws (ReceivePipelines, vk_receive_pipelines.hpp).
 constexpr uint32_t kColourFeatureMasks = kFeatureDepthPass;
 constexpr uint32_t kDepthPipelineKinds = 3; // blades, volume, image: a depth pass draws no debug view
 
@@ -129,7 +131,8 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
 class BladePipeline {
 public:
     BladePipeline(const Functions& functions, VkDevice device, HostAllocator* host)
-        : fn_(functions), device_(device), depth_pipelines_(StlAllocator<VkPipeline>(host)) {}
+        : fn_(functions), device_(device), depth_pipelines_(StlAllocator<VkPipeline>(host)),
+          receivers_(functions, device, host) {}
     ~BladePipeline() { destroy(); }
     BladePipeline(const BladePipeline&) = delete;
     BladePipeline& operator=(const BladePipeline&) = delete;
@@ -147,11 +150,13 @@ public:
     // Only grass_prepare_pipelines with the debug views and a frame that turns the depth
     // test off ask for the latter. A variant with kFeatureDepthPass (depth-tested, not a
     // debug view) is made against the depth target, in the depth table (made by the first:
-    // may throw std::bad_alloc). On failure it does not exist.
+    // may throw std::bad_alloc); one with kFeatureShadowReceive by receivers() (mono only).
+    // On failure it does not exist.
     bool create_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure, const char** what);
     // The depth-tested pipelines of every kind for `features` (a field's maps: upload_field).
     bool create_variants(uint32_t features, VkFailure* failure, const char** what);
     bool has_variant(const ShaderVariant& v, bool depth_test) const {
+        if (v.features & kFeatureShadowReceive) return receivers_.has_variant(v, depth_test);
         if (v.features & kFeatureDepthPass) return depth_test && depth_slot(v.program, v.features) != nullptr;
         return v.features < kColourFeatureMasks &&
                pipelines_[v.features][v.program][depth_test ? 0 : 1] != VK_NULL_HANDLE;
@@ -159,8 +164,11 @@ public:
 
     VkDescriptorSetLayout set_layout() const { return set_layout_; }
     VkPipelineLayout layout() const { return layout_; }
+    // The receiving views' pipelines, samplers and layout (set 1: the host's shadow map).
+    const ReceivePipelines& receivers() const { return receivers_; }
     // The pipeline of `kind` for `features` (has_variant(features, depth_test)).
     VkPipeline pipeline(PipelineKind kind, uint32_t features, bool depth_test) const {
+        if (features & kFeatureShadowReceive) return receivers_.pipeline(kind, features, depth_test);
         if (features & kFeatureDepthPass) return *depth_slot(kind, features);
         return pipelines_[features][kind][depth_test ? 0 : 1];
     }
@@ -192,6 +200,7 @@ private:
     // until the first depth variant; depth_target_.depth_only: the host gave a depth target.
     PipelineTarget depth_target_;
     Vector<VkPipeline> depth_pipelines_;
+    ReceivePipelines receivers_; // empty until the first receiving view
 };
 
 } // namespace grass::vk

@@ -202,6 +202,10 @@ const Spirv kDepthTargetModules[3][2][2] = {
 } // namespace
 
 Spirv spirv(Shader shader, SpirvVariant variant) {
+    if (variant.host_shadows &&
+        (shader == Shader::blade_frag || shader == Shader::volume_frag || shader == Shader::image_frag)) {
+        return host_shadow_spirv(shader, variant);
+    }
     if (variant.depth_target) {
         const int program = shader == Shader::blade_frag ? 0 : shader == Shader::volume_frag ? 1 : 2;
         if (shader == Shader::blade_frag || shader == Shader::volume_frag || shader == Shader::image_frag) {

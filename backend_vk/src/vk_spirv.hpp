@@ -12,6 +12,9 @@
 //   without the colour output, for a depth pass's pipelines (grass_vk_depth_pass_desc: the
 //   host's depth-only pass has no colour attachment, which the validation layers would warn
 //   of); mono, plain or responsive, indexed or not.
+// - host shadows: the same fragment shaders compiled with GRASS_HOST_SHADOWS, for the pipelines
+//   of a view that receives the host's shadow maps (grass_shadow_receive_desc); mono, plain or
+//   responsive, indexed or not.
 //
 // Why indexed blocks: lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3) specialises a
 // shader whose branches or loop bounds read uniform-buffer values at constant offsets on
@@ -46,8 +49,13 @@ struct SpirvVariant {
     // GRASS_DEPTH_TARGET: the fragment shaders of a depth pass's pipelines (blade, volume and
     // image), made for the host's depth-only target: no colour output. Mono only.
     bool depth_target = false;
+    // GRASS_HOST_SHADOWS: the fragment shaders (blade, volume and image) of a view that receives
+    // the host's shadow maps (the map and its block in set 1). Mono only.
+    bool host_shadows = false;
 };
 
 Spirv spirv(Shader shader, SpirvVariant variant);
+// The GRASS_HOST_SHADOWS module of blade.frag, volume.frag or image.frag (vk_spirv_shadows.cpp).
+Spirv host_shadow_spirv(Shader shader, SpirvVariant variant);
 
 } // namespace grass::vk

@@ -33,13 +33,14 @@ void RenderTest::SetUp() {
     start(t);
 }
 
-void RenderTest::start(const grass_host::TargetDesc& target) {
+void RenderTest::start(const grass_host::TargetDesc& target, grass_backend backend) {
     if (ctx) grass_destroy_context(ctx);
     ctx = nullptr;
     host.reset();
     std::string error;
-    host = grass_host::Host::create(GetParam(), target, &error);
-    ASSERT_TRUE(host) << "cannot create the " << backend_name(GetParam()) << " host: " << error;
+    if (backend == GRASS_BACKEND_NONE) backend = GetParam();
+    host = grass_host::Host::create(backend, target, &error);
+    ASSERT_TRUE(host) << "cannot create the " << backend_name(backend) << " host: " << error;
     grass_context_desc d = grass_default_context_desc();
     d.log_fn = [](void* user, grass_log_level level, grass_message_id id, const char* message) {
         // Errors and warnings carry a stable message id (grass.h), whatever the path.

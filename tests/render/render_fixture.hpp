@@ -27,8 +27,9 @@ protected:
     void SetUp() override;
     void TearDown() override;
 
-    // Makes the host, the context and the default patch (call again to change the target).
-    void start(const grass_host::TargetDesc& target);
+    // Makes the host, the context and the default patch (call again to change the target), on
+    // `backend` (GRASS_BACKEND_NONE: the test's parameter).
+    void start(const grass_host::TargetDesc& target, grass_backend backend = GRASS_BACKEND_NONE);
     grass_field_id make_field(grass_field_desc d);
     // A square field of the default patch drawn by one geometry tier (blades) out to 60 m:
     // the tests of the blade tier's behaviour. Tests of the other tiers set their own.

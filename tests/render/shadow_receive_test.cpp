@@ -1,22 +1,30 @@
 // Receiving the host's shadows (grass_shadow_receive_desc; docs/integration.md "Receiving the
 // host's shadows"): a field of geometry, volume and image tiers seen by an orthographic
-// camera 45 degrees down, and a shadow map the test makes itself (a GL_TEXTURE_2D_ARRAY of
-// depth, top-down: u = x / 12 m, v = z / 12 m). Each grass pixel's world point comes back
+// camera 45 degrees down, and a shadow map the test makes itself (GL: a GL_TEXTURE_2D_ARRAY of
+// depth; Vulkan: a D32_SFLOAT 2D array the host fills and leaves in a read-only layout,
+// Host::make_vk_shadow_map; top-down: u = x / 12 m, v = z / 12 m). Each grass pixel's world point comes back
 // from the depth buffer. Where the map shadows a point, the picture is the one drawn with
 // the sun off (the sun term gone, the ambient kept); where it lights it, the one drawn
 // without receiving; in every tier:
 // - a half-plane occluder (x < 6 m), in both comparison conventions; with a filter radius
 //   the edge has intermediate values;
 // - two cascades, chosen by cascade_end along the view axis (the second shadows all);
-// - refusals (bad count, NaN matrix, descending ends, zero map) begin no frame; Vulkan
-//   refuses the struct (GRASS_ERROR_UNSUPPORTED);
-// - a view without it draws with programs that declare no GrassShadow block, and a
-//   receiving view compiles its own and leaves the host's unit 14 and uniform binding 2.
+// - refusals (bad count, NaN matrix, descending ends, zero map; Vulkan: a layout grass does
+//   not sample a depth map in) begin no frame;
+// - GL: a view without it draws with programs that declare no GrassShadow block, and a
+//   receiving view compiles its own and leaves the host's unit 14 and uniform binding 2
+//   (Vulkan's pipelines: vk_shadow_receive_test.cpp).
 #include "render_fixture.hpp"
+#ifdef GRASS_HOST_HAS_VULKAN
+#    include "vk_intercept.hpp"
+#endif
 
 #include <GL/glcorearb.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <set>
 #include <string>
@@ -31,6 +39,10 @@ constexpr double kHalf = 7.0;           // the camera's half extent, metres
 constexpr double kNear = 1.0, kFar = 40.0;
 const double kCamera[3] = {6.0, 10.0, -4.0}, kAt[3] = {6.0, 0.0, 6.0}; // 45 degrees down, looking +z
 constexpr int kMapTexels = 64; // the shadow map's layers, texels a side (0.1875 m each)
+// VkImageLayout values (the render tests include no Vulkan header).
+constexpr uint32_t kVkDepthStencilReadOnly = 4; // VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
+constexpr uint32_t kVkShaderReadOnly = 5;       // VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
+constexpr uint32_t kVkTransferDst = 7;          // VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL: refused
 
 // The programs grass binds (glUseProgram) and creates, through the host's GL loader.
 struct GlSeen {
@@ -94,13 +106,29 @@ const char* const kRegionNames[3] = {"geometry", "volume", "image"};
 class ShadowReceiveTest : public RenderTest {
 protected:
     void SetUp() override {
+        // Vulkan: the synchronization validation too (the host's map, written by a copy, read
+        // by grass's fragment shaders; read when the host makes its instance).
+        setenv("VK_LAYER_ENABLES", "VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT", 1);
         RenderTest::SetUp();
+        start_on(GetParam());
+    }
+    // The host and context of `backend` (the test's, or GL for the agreement test); `samples`
+    // above 1 or `dynamic_rendering` (Vulkan) read back no depth.
+    void start_on(grass_backend backend, uint32_t samples = 1, bool dynamic_rendering = false) {
+        backend_ = backend;
         grass_host::TargetDesc t;
         t.width = t.height = kSize;
-        t.read_depth = true;
-        if (GetParam() == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_filter;
-        start(t);
-        if (GetParam() == GRASS_BACKEND_GL) {
+        t.samples = samples;
+        t.vk_dynamic_rendering = dynamic_rendering;
+        t.read_depth = samples == 1 && !dynamic_rendering;
+        if (backend == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_filter;
+#ifdef GRASS_HOST_HAS_VULKAN
+        if (backend == GRASS_BACKEND_VULKAN) t.vk_get_instance_proc_addr = vk_intercept::get_instance_proc_addr();
+#endif
+        map_ = 0;
+        vk_map_ = 0;
+        start(t, backend);
+        if (backend == GRASS_BACKEND_GL) {
             load(*host, &gl.CreateTextures, "glCreateTextures");
             load(*host, &gl.TextureStorage3D, "glTextureStorage3D");
             load(*host, &gl.TextureSubImage3D, "glTextureSubImage3D");
@@ -117,22 +145,23 @@ protected:
         }
     }
     void TearDown() override {
-        if (map_ != 0) gl.DeleteTextures(1, &map_);
+        if (map_ != 0 && gl.DeleteTextures) gl.DeleteTextures(1, &map_);
         RenderTest::TearDown();
     }
 
     // Geometry near the lod origin, a volume of 2 slices, the horizontal slice far.
     void make_tiered_field() { make_field(three_tier_field(kCells)); }
 
-    // The orthographic camera (GL's clip convention), its lod origin kEye; `shadow` chained
-    // when given.
+    // The orthographic camera (the host's clip convention: GL y up and z -1..1, Vulkan y down
+    // and z 0..1), its lod origin kEye; `shadow` chained when given.
     grass_view_desc camera(const grass_shadow_receive_desc* shadow) {
         grass_view_desc v = view(kCamera, kAt);
+        const bool vulkan = backend_ == GRASS_BACKEND_VULKAN;
         std::memset(v.projection, 0, sizeof v.projection);
         v.projection[0] = float(1.0 / kHalf);
-        v.projection[5] = float(1.0 / kHalf);
-        v.projection[10] = float(-2.0 / (kFar - kNear));
-        v.projection[14] = float(-(kFar + kNear) / (kFar - kNear));
+        v.projection[5] = float((vulkan ? -1.0 : 1.0) / kHalf);
+        v.projection[10] = float(vulkan ? -1.0 / (kFar - kNear) : -2.0 / (kFar - kNear));
+        v.projection[14] = float(vulkan ? -kNear / (kFar - kNear) : -(kFar + kNear) / (kFar - kNear));
         v.projection[15] = 1.0f;
         lod_origin_ = grass_default_lod_origin_desc();
         std::memcpy(lod_origin_.position, kEye, sizeof kEye);
@@ -147,18 +176,17 @@ protected:
         double f[3], r[3], u[3];
         look_at_basis(kCamera, kAt, f, r, u);
         const double nx = (x + 0.5) / kSize * 2.0 - 1.0, ny = 1.0 - (y + 0.5) / kSize * 2.0;
-        const double nz = 2.0 * depth - 1.0;
-        const double ze = (nz + (kFar + kNear) / (kFar - kNear)) / (-2.0 / (kFar - kNear)); // eye z (negative)
+        const double ze = backend_ == GRASS_BACKEND_VULKAN // eye z (negative)
+                              ? -(depth * (kFar - kNear) + kNear)
+                              : (2.0 * depth - 1.0 + (kFar + kNear) / (kFar - kNear)) / (-2.0 / (kFar - kNear));
         *along = -ze;
         for (int c = 0; c < 3; ++c) out[c] = kCamera[c] + r[c] * nx * kHalf + u[c] * ny * kHalf + f[c] * *along;
     }
 
     // The map: `layers` layers of kMapTexels^2 depths, value(layer, u, v).
+    // Vulkan: the host's image in vk_layout_, its view in vk_map_.
     template <class Value>
     void make_map(int layers, Value value) {
-        if (map_ != 0) gl.DeleteTextures(1, &map_);
-        gl.CreateTextures(GL_TEXTURE_2D_ARRAY, 1, &map_);
-        gl.TextureStorage3D(map_, 1, GL_DEPTH_COMPONENT32F, kMapTexels, kMapTexels, layers);
         std::vector<float> texels(size_t(kMapTexels) * kMapTexels * layers);
         for (int l = 0; l < layers; ++l) {
             for (int j = 0; j < kMapTexels; ++j) {
@@ -168,6 +196,15 @@ protected:
                 }
             }
         }
+        if (backend_ == GRASS_BACKEND_VULKAN) {
+            std::string error;
+            vk_map_ = host->make_vk_shadow_map(kMapTexels, uint32_t(layers), texels.data(), vk_layout_, &error);
+            ASSERT_NE(vk_map_, 0u) << error;
+            return;
+        }
+        if (map_ != 0) gl.DeleteTextures(1, &map_);
+        gl.CreateTextures(GL_TEXTURE_2D_ARRAY, 1, &map_);
+        gl.TextureStorage3D(map_, 1, GL_DEPTH_COMPONENT32F, kMapTexels, kMapTexels, layers);
         gl.TextureSubImage3D(map_, 0, 0, 0, 0, kMapTexels, kMapTexels, layers, GL_DEPTH_COMPONENT, GL_FLOAT,
                              texels.data());
     }
@@ -176,7 +213,8 @@ protected:
     // point's depth 0.5 -+ 0.01 y (nearer the light higher up).
     grass_shadow_receive_desc receive(grass_shadow_compare compare, uint32_t cascades) const {
         grass_shadow_receive_desc d = grass_default_shadow_receive_desc();
-        d.shadow_map = map_;
+        d.shadow_map = backend_ == GRASS_BACKEND_VULKAN ? vk_map_ : map_;
+        d.vk_image_layout = vk_layout_;
         d.cascade_count = cascades;
         d.compare = compare;
         d.depth_bias = 0.0f;
@@ -246,13 +284,15 @@ protected:
         return render(v);
     }
 
+    grass_backend backend_ = GRASS_BACKEND_NONE; // the host's (start_on)
     Gl gl{};
     GLuint map_ = 0;
+    uint64_t vk_map_ = 0;                          // Vulkan: the host's VkImageView
+    uint32_t vk_layout_ = kVkDepthStencilReadOnly; // Vulkan: the layout the host leaves it in
     grass_lod_origin_desc lod_origin_{};
 };
 
 TEST_P(ShadowReceiveTest, AHalfPlaneShadowsEveryTierInBothConventions) {
-    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan does not receive shadows yet";
     make_tiered_field();
     const grass_host::Image lit = render(camera(nullptr));
     grass_frame_stats stats{};
@@ -299,7 +339,7 @@ TEST_P(ShadowReceiveTest, AHalfPlaneShadowsEveryTierInBothConventions) {
 }
 
 TEST_P(ShadowReceiveTest, TheCascadeIsChosenByItsEnd) {
-    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan does not receive shadows yet";
+    vk_layout_ = kVkShaderReadOnly; // Vulkan: another layout a host may sample its map in
     make_tiered_field();
     const grass_host::Image lit = render(camera(nullptr));
     const grass_host::Image dark = sun_off();
@@ -332,7 +372,7 @@ TEST_P(ShadowReceiveTest, TheCascadeIsChosenByItsEnd) {
     EXPECT_GT(shadowed_total, 200u);
 }
 
-TEST_P(ShadowReceiveTest, BadDescsAreRefusedAndVulkanRefusesIt) {
+TEST_P(ShadowReceiveTest, BadDescsAreRefused) {
     make_tiered_field();
     grass_shadow_receive_desc d = grass_default_shadow_receive_desc();
     EXPECT_EQ(d.type, GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC);
@@ -379,8 +419,12 @@ TEST_P(ShadowReceiveTest, BadDescsAreRefusedAndVulkanRefusesIt) {
     bad = d;
     bad.next = &second;
     refused(bad, GRASS_ERROR_WRONG_STRUCT_TYPE, "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC");
-    if (GetParam() == GRASS_BACKEND_VULKAN) {
-        refused(d, GRASS_ERROR_UNSUPPORTED, "the Vulkan backend does not receive the host's shadow maps yet");
+    if (GetParam() == GRASS_BACKEND_VULKAN) { // GL ignores the layout
+        bad = d;
+        bad.vk_image_layout = kVkTransferDst;
+        refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_shadow_receive_desc->vk_image_layout is 7");
+        bad.vk_image_layout = 0; // the default: VK_IMAGE_LAYOUT_UNDEFINED
+        refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_shadow_receive_desc->vk_image_layout is 0");
     }
     // A refused later view of a frame leaves the frame and its first view as they were.
     grass_frame_desc frame = grass_default_frame_desc();
@@ -395,6 +439,13 @@ TEST_P(ShadowReceiveTest, BadDescsAreRefusedAndVulkanRefusesIt) {
     uint32_t untouched = 99;
     EXPECT_EQ(grass_plan_view(ctx, &refused_view, &untouched), GRASS_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(untouched, 99u);
+    if (GetParam() == GRASS_BACKEND_VULKAN) {
+        bad = d;
+        bad.vk_image_layout = kVkTransferDst;
+        const grass_view_desc bad_layout = camera(&bad);
+        EXPECT_EQ(grass_plan_view(ctx, &bad_layout, &untouched), GRASS_ERROR_INVALID_ARGUMENT);
+        EXPECT_EQ(untouched, 99u);
+    }
     const grass_view_desc plain_again = camera(nullptr); // the lod origin desc is shared
     ASSERT_EQ(grass_plan_view(ctx, &plain_again, &index), GRASS_SUCCESS);
     EXPECT_EQ(index, 1u) << "the refused view took no index";
@@ -402,7 +453,8 @@ TEST_P(ShadowReceiveTest, BadDescsAreRefusedAndVulkanRefusesIt) {
 }
 
 TEST_P(ShadowReceiveTest, AViewWithoutItKeepsItsProgramsAndTheHostsBindings) {
-    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "GL programs and state";
+    if (GetParam() == GRASS_BACKEND_VULKAN)
+        GTEST_SKIP() << "GL programs and state (Vulkan: AVulkanViewWithoutItKeepsItsPipelines)";
     make_tiered_field();
     gl_seen.used.clear();
     gl_seen.created = 0;
@@ -454,6 +506,118 @@ TEST_P(ShadowReceiveTest, AViewWithoutItKeepsItsProgramsAndTheHostsBindings) {
     gl.DeleteTextures(1, &host_texture);
     gl.DeleteBuffers(1, &host_buffer);
 }
+
+// Vulkan: the receiving pipelines of a multisampled target drawn with dynamic rendering (the
+// tests above draw single-sampled in a render pass): the map darkens the picture, and the
+// validation layers stay silent (TearDown).
+TEST_P(ShadowReceiveTest, AMultisampledDynamicRenderingTargetReceives) {
+    if (GetParam() != GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan targets";
+    start_on(GRASS_BACKEND_VULKAN, 4, true);
+    make_tiered_field();
+    const grass_host::Image lit = render(camera(nullptr));
+    make_map(1, [](int, double u, double) { return u < 0.5 ? 0.0f : 1.0f; });
+    const grass_shadow_receive_desc d = receive(GRASS_SHADOW_COMPARE_LESS_EQUAL, 1);
+    const grass_host::Image image = render(camera(&d));
+    save(image, "shadow_receive_msaa_dynamic");
+    // The camera's right is world -x: the shadowed half (x < 6 m) is the image's right half,
+    // darker; the left half as lit. Green levels lost per pixel, the edge's band left out.
+    double darker[2] = {0.0, 0.0}; // left, right
+    for (uint32_t y = kSize / 4; y < kSize * 3 / 4; ++y) {
+        for (uint32_t x = 0; x < kSize; ++x) {
+            if (x + 8 > kSize / 2 && x < kSize / 2 + 8) continue;
+            darker[x < kSize / 2 ? 0 : 1] += double(lit.pixel(x, y)[1]) - double(image.pixel(x, y)[1]);
+        }
+    }
+    const double per_half = double(kSize / 2 - 8) * (kSize / 2);
+    EXPECT_GT(darker[1] / per_half, 3.0) << "the shadowed half darkens";
+    EXPECT_LT(std::fabs(darker[0] / per_half), 0.5) << "the lit half stays";
+}
+
+#if defined(GRASS_HOST_HAS_VULKAN) && defined(GRASS_HOST_HAS_GL)
+// GL and Vulkan draw the same receiving picture (a filtered half-plane edge over every tier),
+// within the single-sampled tolerance of BackendAgreement (0.05 levels a pixel on average,
+// 0.05% of pixels more than 32 levels apart).
+TEST_P(ShadowReceiveTest, GlAndVulkanDrawTheSameReceivingPicture) {
+    if (GetParam() != GRASS_BACKEND_VULKAN) GTEST_SKIP() << "runs once, from the Vulkan instance";
+    grass_host::Image images[2], lit;
+    const grass_backend backends[2] = {GRASS_BACKEND_VULKAN, GRASS_BACKEND_GL};
+    for (int b = 0; b < 2; ++b) {
+        if (b == 1) start_on(GRASS_BACKEND_GL);
+        make_tiered_field();
+        if (b == 0) lit = render(camera(nullptr));
+        make_map(1, [](int, double u, double) { return u < 0.5 ? 0.0f : 1.0f; });
+        const grass_shadow_receive_desc d = receive(GRASS_SHADOW_COMPARE_LESS_EQUAL, 1);
+        images[b] = render(camera(&d));
+        save(images[b], std::string("shadow_receive_agreement_") + backend_name(backends[b]));
+        ASSERT_EQ(images[b].rgba.size(), size_t(kSize) * kSize * 4);
+        EXPECT_EQ(host->validation_messages(), 0u) << host->validation_log(); // the Vulkan host goes next
+    }
+    // Not a comparison of two skies: grass covers the image and the map darkens it.
+    size_t grass = 0;
+    for (const float depth : lit.depth) grass += depth < 1.0f - 1e-6f;
+    EXPECT_GT(grass, size_t(kSize) * kSize / 4) << "grass pixels";
+    EXPECT_GT(mean_difference(lit, images[0]), 2.0) << "the map shadows the Vulkan picture";
+    double sum = 0.0;
+    size_t apart = 0;
+    for (size_t p = 0; p < size_t(kSize) * kSize; ++p) {
+        int worst = 0;
+        for (int c = 0; c < 3; ++c) {
+            const int d = std::abs(int(images[0].rgba[p * 4 + c]) - int(images[1].rgba[p * 4 + c]));
+            sum += d;
+            worst = std::max(worst, d);
+        }
+        apart += worst > 32;
+    }
+    const double mean = sum / (3.0 * kSize * kSize), share = double(apart) / (double(kSize) * kSize);
+    std::printf("[ measured ] receiving: mean |gl - vk| %.4f levels, %.4f%% of pixels > 32 apart\n", mean,
+                100.0 * share);
+    EXPECT_LE(mean, 0.05);
+    EXPECT_LE(share, 0.0005);
+}
+#endif
+
+#ifdef GRASS_HOST_HAS_VULKAN
+// Vulkan: a view without it makes and holds nothing for it (no pipeline, layout, sampler or
+// descriptor pool); the first receiving view makes its own pipelines (blades, volume, image),
+// one pipeline layout (sets 0 and 1), one set layout and two compare samplers; a plain view
+// afterwards makes nothing and draws the same picture as before.
+TEST_P(ShadowReceiveTest, AVulkanViewWithoutItKeepsItsPipelines) {
+    if (GetParam() != GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan pipelines";
+    namespace vi = vk_intercept;
+    const auto count = [](int32_t type) {
+        int n = 0;
+        for (const vi::Handle& h : vi::made()) n += h.type == type;
+        return n;
+    };
+    constexpr int32_t kPipelineLayout = 17, kSetLayout = 20, kSampler = 21, kPool = 22; // VkObjectType
+    make_tiered_field();
+    grass_host::Image lit;
+    for (int frame = 0; frame < 3; ++frame) lit = render(camera(nullptr)); // every frame slot's objects made
+    const vi::Live plain = vi::live();
+    vi::clear_debug_records();
+    const grass_host::Image lit_again = render(camera(nullptr));
+    EXPECT_EQ(vi::live().pipelines_made, plain.pipelines_made) << "a second plain frame made pipelines";
+    EXPECT_TRUE(vi::made().empty()) << vi::made().size() << " objects made by a second plain frame";
+    EXPECT_EQ(lit_again.rgba, lit.rgba);
+
+    make_map(1, [](int, double u, double) { return u < 0.5 ? 0.0f : 1.0f; });
+    const grass_shadow_receive_desc d = receive(GRASS_SHADOW_COMPARE_LESS_EQUAL, 1);
+    const grass_host::Image image = render(camera(&d));
+    EXPECT_NE(image.rgba, lit.rgba) << "the receiving view drew the same picture";
+    const vi::Live receiving = vi::live();
+    EXPECT_GE(receiving.pipelines_made - plain.pipelines_made, 3) << "its own blade, volume and image pipelines";
+    EXPECT_EQ(count(kPipelineLayout), 1) << "the receiving pipeline layout";
+    EXPECT_EQ(count(kSetLayout), 1) << "set 1's layout";
+    EXPECT_EQ(count(kSampler), 2) << "the LESS_OR_EQUAL and GREATER_OR_EQUAL compare samplers";
+    EXPECT_EQ(count(kPool), 1) << "the pool of the views' shadow sets";
+
+    vi::clear_debug_records();
+    const grass_host::Image plain_after = render(camera(nullptr));
+    EXPECT_EQ(vi::live().pipelines_made, receiving.pipelines_made) << "a plain view after a receiving one";
+    EXPECT_TRUE(vi::made().empty());
+    EXPECT_EQ(plain_after.rgba, lit.rgba);
+}
+#endif
 
 INSTANTIATE_TEST_SUITE_P(Backends, ShadowReceiveTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });

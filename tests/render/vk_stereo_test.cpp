@@ -527,6 +527,14 @@ TEST_F(VkStereo, AFrameWhoseEyesDoNotMatchTheContextsPassIsRefused) {
     contexts.log.clear();
     EXPECT_EQ(grass_begin_frame(contexts.stereo, &left), GRASS_ERROR_INVALID_STATE);
     EXPECT_NE(contexts.log.find("chains no grass_stereo_view_desc"), std::string::npos) << contexts.log;
+    // The host's shadow maps: a multiview pass receives none (grass_shadow_receive_desc).
+    grass_shadow_receive_desc shadow = grass_default_shadow_receive_desc();
+    shadow.shadow_map = 7;      // never drawn: the view is refused
+    shadow.vk_image_layout = 4; // VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
+    second.next = &shadow;
+    contexts.log.clear();
+    EXPECT_EQ(grass_begin_frame(contexts.stereo, &stereo), GRASS_ERROR_UNSUPPORTED);
+    EXPECT_NE(contexts.log.find("do not receive the host's shadow maps"), std::string::npos) << contexts.log;
     // A bad chain: the same extension twice.
     second.next = &second;
     contexts.log.clear();

@@ -220,7 +220,7 @@ Subcommand add_tier_cost(CLI::App& measure) {
         ->excludes(maps)
         ->excludes(features);
     auto* receive = app->add_flag("--receive", o->receive,
-                                  "each row of the plain table also receiving a shadow map over half the field, GL "
+                                  "each row of the plain table also receiving a shadow map over half the field "
                                   "(docs/records/shadow-receiving.md)");
     receive->excludes(maps)->excludes(features)->excludes("--depth-pass");
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")

@@ -40,7 +40,7 @@
 // (grass_view_pass_desc, GRASS_PASS_DEPTH; docs/records/depth-pass.md), the rows' frames
 // alternating colour and depth; per basic cell each, and the ratio depth / colour.
 // --receive: each row of the plain table also receiving a shadow map (grass_shadow_receive_desc;
-// GL; docs/records/shadow-receiving.md) that shades half the field, with filter_radius 0
+// GL or Vulkan; docs/records/shadow-receiving.md) that shades half the field, with filter_radius 0
 // and 1.5, rounds alternating; per basic cell each, and the ratios to the plain frame.
 // --frames N: frames measured per row (after one that uploads); default 5 (median).
 // Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features | --single] [--frames N]

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iterator>
+#include <string>
 #include <vector>
 
 namespace grass_measure {
@@ -63,31 +64,44 @@ int run_depth_pass(Rig& rig, const std::vector<Setup>& rows) {
     return rig.finish();
 }
 
-// The rows plain and receiving a shadow map (GL): a GL_TEXTURE_2D_ARRAY of 2 layers of
-// 1024^2 depths whose occluder covers the field's half x < 4 m (the rig's 32 x 32 cells of
-// 0.25 m), read top-down; filter_radius 0 and 1.5. `rounds` rounds of `frames` frames each,
+// The rows plain and receiving a shadow map: 2 layers of 1024^2 depths whose occluder covers
+// the field's half x < 4 m (the rig's 32 x 32 cells of 0.25 m), read top-down (GL: a
+// GL_TEXTURE_2D_ARRAY; Vulkan: the host's D32 2D array in DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+// Host::make_vk_shadow_map); filter_radius 0 and 1.5. `rounds` rounds of `frames` frames each,
 // the three in turn, pooled per variant; per basic cell, the median frame minus the empty one.
 int run_receive(Rig& rig, const std::vector<Setup>& rows) {
     const Options& o = rig.options();
     grass_context* ctx = rig.ctx();
-    if (o.backend != GRASS_BACKEND_GL) {
-        std::fprintf(stderr, "grass-tier-cost --receive: GL only (Vulkan refuses grass_shadow_receive_desc)\n");
-        return 1;
-    }
-    const auto create = reinterpret_cast<PFNGLCREATETEXTURESPROC>(rig.host().gl_proc_address("glCreateTextures"));
-    const auto storage = reinterpret_cast<PFNGLTEXTURESTORAGE3DPROC>(rig.host().gl_proc_address("glTextureStorage3D"));
-    const auto upload = reinterpret_cast<PFNGLTEXTURESUBIMAGE3DPROC>(rig.host().gl_proc_address("glTextureSubImage3D"));
-    const auto destroy = reinterpret_cast<PFNGLDELETETEXTURESPROC>(rig.host().gl_proc_address("glDeleteTextures"));
     constexpr int kTexels = 1024, kLayers = 2;
-    GLuint map = 0;
-    create(GL_TEXTURE_2D_ARRAY, 1, &map);
-    storage(map, 1, GL_DEPTH_COMPONENT32F, kTexels, kTexels, kLayers);
     std::vector<float> depths(size_t(kTexels) * kTexels * kLayers);
     for (size_t k = 0; k < depths.size(); ++k) depths[k] = (k % kTexels) < kTexels / 2 ? 0.0f : 1.0f;
-    upload(map, 0, 0, 0, 0, kTexels, kTexels, kLayers, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+    GLuint map = 0;
+    PFNGLDELETETEXTURESPROC destroy = nullptr;
+    uint64_t handle = 0;
+    if (o.backend == GRASS_BACKEND_VULKAN) {
+        std::string error;
+        const uint32_t kDepthStencilReadOnly = 4; // VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
+        handle = rig.host().make_vk_shadow_map(kTexels, kLayers, depths.data(), kDepthStencilReadOnly, &error);
+        if (handle == 0) {
+            std::fprintf(stderr, "grass-tier-cost --receive: the shadow map: %s\n", error.c_str());
+            return 1;
+        }
+    } else {
+        const auto create = reinterpret_cast<PFNGLCREATETEXTURESPROC>(rig.host().gl_proc_address("glCreateTextures"));
+        const auto storage =
+            reinterpret_cast<PFNGLTEXTURESTORAGE3DPROC>(rig.host().gl_proc_address("glTextureStorage3D"));
+        const auto upload =
+            reinterpret_cast<PFNGLTEXTURESUBIMAGE3DPROC>(rig.host().gl_proc_address("glTextureSubImage3D"));
+        destroy = reinterpret_cast<PFNGLDELETETEXTURESPROC>(rig.host().gl_proc_address("glDeleteTextures"));
+        create(GL_TEXTURE_2D_ARRAY, 1, &map);
+        storage(map, 1, GL_DEPTH_COMPONENT32F, kTexels, kTexels, kLayers);
+        upload(map, 0, 0, 0, 0, kTexels, kTexels, kLayers, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+        handle = map;
+    }
     grass_shadow_receive_desc shadow[2] = {grass_default_shadow_receive_desc(), grass_default_shadow_receive_desc()};
     for (int k = 0; k < 2; ++k) {
-        shadow[k].shadow_map = map;
+        shadow[k].shadow_map = handle;
+        shadow[k].vk_image_layout = 4; // Vulkan: the layout the map was left in (GL ignores it)
         shadow[k].cascade_count = kLayers;
         shadow[k].cascade_end[0] = 6.0f;
         shadow[k].cascade_end[1] = 1000.0f;
@@ -131,7 +145,7 @@ int run_receive(Rig& rig, const std::vector<Setup>& rows) {
                     cpu_us[1] / cpu_us[0], cpu_us[2] / cpu_us[0]);
         grass_sample::check(grass_destroy_field(ctx, field), "grass_destroy_field", ctx);
     }
-    destroy(1, &map);
+    if (destroy) destroy(1, &map);
     return rig.finish();
 }
 

@@ -982,18 +982,25 @@ typedef enum grass_shadow_compare {
  * point (the blades at each fragment, the volume tier at each point its ray composites, the
  * image tier at its point); the ambient term stays. A view without it draws with the same
  * programs and memory as before. A depth pass (GRASS_PASS_DEPTH) ignores it (it writes no
- * lighting). GL only for now: Vulkan refuses it (GRASS_ERROR_UNSUPPORTED). The host keeps the
- * map alive and unchanged (GL: its name valid, its contents as drawn) until grass has drawn
- * the view. */
+ * lighting). Vulkan: mono contexts only (a multiview context refuses it,
+ * GRASS_ERROR_UNSUPPORTED). The host keeps the map alive and unchanged (GL: its name valid,
+ * its contents as drawn; Vulkan: the image and view, until the frame has finished on the
+ * GPU) until grass has drawn the view. */
 typedef struct grass_shadow_receive_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC */
     const void* next;       /* the view's next extension, or NULL */
     /* GL: the name of a GL_TEXTURE_2D_ARRAY depth texture (GL_DEPTH_COMPONENT*), layer i the
      * map of cascade i; grass reads its level 0 through a sampler of its own (linear, depth
-     * compare), whatever the texture's own parameters. Not 0. */
+     * compare), whatever the texture's own parameters. Vulkan: a VkImageView, of type
+     * VK_IMAGE_VIEW_TYPE_2D_ARRAY, of the depth aspect of a depth image (D16, D32, D24S8 or
+     * D32S8; sampled, with linear filtering), layer i the map of cascade i, read through
+     * grass's own compare sampler. Not 0. */
     uint64_t shadow_map;
-    /* Vulkan (reserved: Vulkan refuses the struct today): the VkImageLayout the map's view is
-     * in. GL: ignored. Default 0. */
+    /* Vulkan: the VkImageLayout the map is in while grass's pass runs:
+     * VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, DEPTH_READ_ONLY_OPTIMAL,
+     * SHADER_READ_ONLY_OPTIMAL, READ_ONLY_OPTIMAL or GENERAL (any other is refused). The host
+     * has finished writing the map and made it visible to fragment-shader reads in that
+     * layout before the pass grass records in. GL: ignored. Default 0 (refused on Vulkan). */
     uint32_t vk_image_layout;
     /* Cascades in shadow_map and the arrays below: 1 to GRASS_MAX_SHADOW_CASCADES. Default 1. */
     uint32_t cascade_count;

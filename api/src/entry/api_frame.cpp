@@ -152,6 +152,39 @@ grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_vi
     return GRASS_SUCCESS;
 }
 
+// Vulkan: the layout the host's map is in while grass's pass runs is one grass samples a
+// depth image in (VkImageLayout values: the core includes no Vulkan header); a multiview
+// (stereo) pass receives no shadows.
+grass_result check_vk_shadow(grass_context* ctx, const char* fn, const grass_shadow_receive_desc& d,
+                             const RenderTarget& target) {
+    static const struct {
+        uint32_t value;
+        const char* name;
+    } kLayouts[] = {{4, "VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL"},
+                    {1000241001, "VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL"},
+                    {5, "VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL"},
+                    {1000314000, "VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL"},
+                    {1, "VK_IMAGE_LAYOUT_GENERAL"}};
+    bool known = false;
+    for (const auto& l : kLayouts) known = known || l.value == d.vk_image_layout;
+    if (!known) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                         "%s: grass_shadow_receive_desc->vk_image_layout is %u; expected the VkImageLayout the map is "
+                         "in while grass's pass runs: %s (%u), %s (%u), %s (%u), %s (%u) or %s (%u)",
+                         fn, d.vk_image_layout, kLayouts[0].name, kLayouts[0].value, kLayouts[1].name,
+                         kLayouts[1].value, kLayouts[2].name, kLayouts[2].value, kLayouts[3].name, kLayouts[3].value,
+                         kLayouts[4].name, kLayouts[4].value);
+    }
+    if (target.views != 1) {
+        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: view->next chains a grass_shadow_receive_desc, but the context draws into a multiview "
+                         "pass (grass_vk_multiview_desc.view_mask 0x3), whose views do not receive the host's shadow "
+                         "maps; draw the eyes as two mono frames to receive them",
+                         fn);
+    }
+    return GRASS_SUCCESS;
+}
+
 // A stereo frame needs a target of two views, and a target of two views a stereo frame.
 // A depth pass needs a target to draw in (Vulkan: grass_vk_depth_pass_desc).
 grass_result check_views(grass_context* ctx, const char* fn, const ViewExtensions& ext) {
@@ -164,12 +197,8 @@ grass_result check_views(grass_context* ctx, const char* fn, const ViewExtension
                          "target grass makes its depth pipelines for",
                          fn);
     }
-    if (ext.shadow && ctx->backend->kind() == GRASS_BACKEND_VULKAN) {
-        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
-                         "%s: view->next chains a grass_shadow_receive_desc, but the Vulkan backend does not receive "
-                         "the host's shadow maps yet (GL does)",
-                         fn);
-    }
+    if (ext.shadow && ctx->backend->kind() == GRASS_BACKEND_VULKAN)
+        GRASS_TRY(check_vk_shadow(ctx, fn, *ext.shadow, target));
     const uint32_t views = target.views;
     if (ext.stereo && views == 2) return GRASS_SUCCESS;
     if (!ext.stereo && views == 1) return GRASS_SUCCESS;
