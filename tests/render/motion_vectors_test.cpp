@@ -4,9 +4,10 @@
 // - A camera pan (static grass, both projections jittered): on every tier's pixels the
 //   velocity is the reprojection of the pixel's world point (from the depth buffer) by the
 //   two frames' unjittered matrices, within 1e-3 viewport units (0.13 px) at 97% of them.
-// - A gust (still camera, top-down): per tier, the mean velocity over the grass equals the
-//   shift of the grass's centroid between the frames at the two times (a finite difference),
-//   within 20% and 0.3 px; with previous_time = time it is zero.
+// - A gust (still orthographic camera, soft blades): per tier, a finite difference of the
+//   frames at the two times: frame t1's grass compared with frame t0 where its velocity says
+//   it was differs less than unmoved and than moved the other way (the colour of the volume
+//   and image tiers, the coverage of sparse blades); with previous_time = time it is zero.
 // - The other draw buffer stays byte-identical, the velocity's .ba and its pixels without
 //   grass keep their clear, and the host's draw buffers, masks, blend and binding 3 come back.
 // - A view without the struct draws with programs that declare no GrassMotion block and the

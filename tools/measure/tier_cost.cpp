@@ -223,6 +223,13 @@ Subcommand add_tier_cost(CLI::App& measure) {
                                   "each row of the plain table also receiving a shadow map over half the field, GL "
                                   "(docs/records/shadow-receiving.md)");
     receive->excludes(maps)->excludes(features)->excludes("--depth-pass");
+    app->add_flag("--motion", o->motion,
+                  "each row of the plain table also writing motion vectors, still and in wind, GL "
+                  "(docs/records/motion-vectors.md)")
+        ->excludes(maps)
+        ->excludes(features)
+        ->excludes("--depth-pass")
+        ->excludes(receive);
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));

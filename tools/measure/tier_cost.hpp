@@ -42,9 +42,13 @@
 // --receive: each row of the plain table also receiving a shadow map (grass_shadow_receive_desc;
 // GL; docs/records/shadow-receiving.md) that shades half the field, with filter_radius 0
 // and 1.5, rounds alternating; per basic cell each, and the ratios to the plain frame.
+// --motion: each row of the plain table also writing motion vectors (grass_view_motion_desc;
+// GL; docs/records/motion-vectors.md) into an RG16F target the tool adds to the host's
+// framebuffer, without wind and in wind (the pose computed twice); per basic cell each, and
+// the ratios to the plain frame of the same wind.
 // --frames N: frames measured per row (after one that uploads); default 5 (median).
 // Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features | --single] [--frames N]
-//        [--rounds N] [--depth-pass | --receive]
+//        [--rounds N] [--depth-pass | --receive | --motion]
 #pragma once
 
 #include <grass/grass.h>
@@ -66,6 +70,7 @@ struct Options {
     bool single = false;     // only the tiers alone in single cells (kSingleTiers)
     bool depth_pass = false; // --depth-pass: each plain row also as a depth pass
     bool receive = false;    // --receive: each plain row also receiving a shadow map (GL)
+    bool motion = false;     // --motion: each plain row also writing motion vectors (GL)
     int frames = 5;
     int rounds = 3;          // --maps and --features only
     std::string patch_scene; // --patch-of: the patch of this scene file instead of the default patch
@@ -127,6 +132,12 @@ public:
         view_.next = shadow;
         host_->depth_only = false;
     }
+    // Chains `motion` on the view (nullptr: none) for the frames from now on.
+    void set_motion(const grass_view_motion_desc* motion) {
+        view_.next = motion;
+        host_->depth_only = false;
+    }
+    const grass_view_desc& view() const { return view_; }
     grass_frame_stats frame_stats();
     grass_memory_stats memory_stats();
 
@@ -168,7 +179,9 @@ struct Cost {
 };
 Cost cost(const std::vector<double>& times, const std::vector<double>& empties);
 
-int run_plain(Rig& rig);    // tier_cost_plain.cpp
+int run_plain(Rig& rig); // tier_cost_plain.cpp
+// --motion: the plain rows without and with motion vectors, still and in wind (tier_cost_motion.cpp).
+int run_motion(Rig& rig, const std::vector<Setup>& rows);
 int run_maps(Rig& rig);     // tier_cost_maps.cpp
 int run_features(Rig& rig); // tier_cost_features.cpp
 
