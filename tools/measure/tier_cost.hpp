@@ -56,6 +56,7 @@
 #include "headless_host.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -116,6 +117,11 @@ public:
     // The wall times of `count` frames after one that uploads (and compiles); with plan_ms,
     // also each measured frame's plan time (grass_frame_stats.plan_ms); with cpu_ms, the
     // CPU time the process spent on each (every thread: the software rasteriser's too).
+    // Per basic cell, for `variants` variants of the drawn row (set_variant(v) before each
+    // one's frames): 3 rounds of --frames frames each, the variants in turn (a load that comes
+    // and goes falls on all), pooled per variant; the median frame minus the empty one, in
+    // wall (us[v]) and in CPU time (cpu_us[v]).
+    void per_cell_variants(int variants, const std::function<void(int)>& set_variant, double* us, double* cpu_us);
     std::vector<double> frame_times(int count, std::vector<double>* plan_ms = nullptr,
                                     std::vector<double>* cpu_ms = nullptr);
     // Advances grass_view_desc.time by `seconds` before each frame from now on (0, the

@@ -77,24 +77,16 @@ int run_motion(Rig& rig, const std::vector<Setup>& rows) {
         const TierField tf(s, rig.patch());
         grass_field_id field{};
         grass_sample::check(grass_create_field(ctx, &tf.desc, &field), "grass_create_field", ctx);
-        std::vector<double> wall[4], cpu[4];
-        for (int round = 0; round < 3; ++round) {
-            for (int variant = 0; variant < 4; ++variant) { // plain, motion, wind, wind with motion
+        double us[4], cpu_us[4];
+        rig.per_cell_variants( // plain, motion, wind, wind with motion
+            4,
+            [&](int variant) {
                 grass_sample::check(grass_set_wind(ctx, variant < 2 ? &calm : &wind), "grass_set_wind", ctx);
                 rig.set_motion(variant % 2 == 1 ? &motion : nullptr);
-                std::vector<double> c;
-                const std::vector<double> w = rig.frame_times(o.frames, nullptr, &c);
-                wall[variant].insert(wall[variant].end(), w.begin(), w.end());
-                cpu[variant].insert(cpu[variant].end(), c.begin(), c.end());
-            }
-        }
+            },
+            us, cpu_us);
         rig.set_motion(nullptr);
         grass_sample::check(grass_set_wind(ctx, &calm), "grass_set_wind", ctx);
-        double us[4], cpu_us[4];
-        for (int v = 0; v < 4; ++v) {
-            us[v] = 1000.0 * (grass_sample::median_high(wall[v]) - rig.empty_ms()) / 1024.0;
-            cpu_us[v] = 1000.0 * (grass_sample::median_high(cpu[v]) - rig.empty_cpu_ms()) / 1024.0;
-        }
         std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", s.name, us[0], us[1], us[2],
                     us[3], cpu_us[0], cpu_us[1] / cpu_us[0], cpu_us[2], cpu_us[3] / cpu_us[2]);
         grass_sample::check(grass_destroy_field(ctx, field), "grass_destroy_field", ctx);
