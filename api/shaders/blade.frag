@@ -6,12 +6,20 @@
 #ifdef GRASS_HOST_SHADOWS
 #include "host_shadows.glsl"
 #endif
+#ifdef GRASS_VELOCITY
+#define GRASS_MOTION_FRAGMENT
+#include "motion.glsl"
+#endif
 
 // The blade's varyings, packed four to a slot (blade.vert says why).
 layout(location = 0) in vec4 v_position_density;
 layout(location = 1) in vec4 v_normal_opacity;
 layout(location = 2) in vec4 v_albedo_code;
 layout(location = 3) centroid in vec4 v_shape_light;
+#ifdef GRASS_VELOCITY
+layout(location = 4) in vec4 v_clip_now;
+layout(location = 5) in vec4 v_clip_before;
+#endif
 
 #ifdef GRASS_DEPTH_TARGET
 vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachment, no output
@@ -44,4 +52,7 @@ void main() {
     float alpha = clamp(edge * max(1.0 / max(fwidth(v_shape_light.x), 1e-6), 2.0) + 0.5, 0.0, 1.0);
     out_color = debug_thresholds() ? threshold_color(uint(v_albedo_code.a + 0.5))
                                    : output_color(vec4(debug_tint(color), alpha * v_normal_opacity.w));
+#ifdef GRASS_VELOCITY
+    write_velocity(clip_velocity(v_clip_now, v_clip_before));
+#endif
 }

@@ -3,6 +3,9 @@
 #include "blade_interface.glsl"
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
+#ifdef GRASS_VELOCITY // motion vectors' variants only
+#include "motion.glsl"
+#endif
 #ifdef GRASS_RESPONSIVE // responsive grass variants only (blade_interface.glsl)
 #include "wind.glsl"
 #include "interaction.glsl"
@@ -31,6 +34,10 @@ layout(location = 2) out vec4 v_albedo_code;      // rgb: albedo, a: threshold_i
 // taken inside the covered samples or the edge alpha would discard them.
 layout(location = 3) centroid out vec4 v_shape_light; // x: u across the blade, y: height in patch units,
                                                       // zw: light_maps() at the root
+#ifdef GRASS_VELOCITY
+layout(location = 4) out vec4 v_clip_now;    // motion vectors: the clip position without jitter
+layout(location = 5) out vec4 v_clip_before; // ... and the previous frame's
+#endif
 
 // A threshold of exactly 1 must pass a density of exactly 1 after bilinear filtering;
 // the smallest threshold (1 / 65536) must still fail a density of 0.
@@ -60,6 +67,9 @@ void main() {
     vec3 position = mat3(field.patch_to_world) * vec3(p.x, p.y + ground, p.z) + GRASS_INSTANCE_ORIGIN(i_origin.xyz);
     vec3 normal = mat3(field.patch_to_world) * n;
     vec3 albedo = modulate_color(a_color.rgb, cell_point);
+#ifdef GRASS_VELOCITY
+    vec3 previous = position; // where the vertex was at the previous frame's time (motion vectors)
+#endif
 #ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION | GRASS_BLADE_CULLING)) {
 #ifdef VULKAN
@@ -83,7 +93,14 @@ void main() {
             v2 = pose.v2;
             float t = a_root_shape.w;
             vec3 rest = root_position + bezier(i1, i2, t);
-            position = bezier(pose.v1, pose.v2, t) + root_position + (position - rest);
+            vec3 offset = position - rest; // across the blade
+            position = bezier(pose.v1, pose.v2, t) + root_position + offset;
+#ifdef GRASS_VELOCITY
+            g_previous_time = true; // the pose at the previous frame's time (motion.glsl)
+            BladePose before = blade_pose(blade, i_cell.xy, to_world, root_position, segments, cell_point, ground);
+            g_previous_time = false;
+            previous = bezier(before.v1, before.v2, t) + root_position + offset;
+#endif
             // The normal turns with the tangent: cross(side, tangent) of the deformed curve,
             // applied as the change from the rest curve's, so a still blade keeps its normal.
             vec3 rest_n = cross(side, bezier_tangent(i1, i2, t));
@@ -105,6 +122,10 @@ void main() {
     v_albedo_code = vec4(albedo, float(threshold_index(a_threshold)));
     v_shape_light = vec4(a_root_shape.z, p.y, light_maps(cell_point));
     gl_Position = GRASS_VIEW_PROJECTION * vec4(position, 1.0);
+#ifdef GRASS_VELOCITY
+    v_clip_now = clip_now(position);
+    v_clip_before = clip_before(previous);
+#endif
     // Without multisampling a blade is all or nothing (tier_blade_opacity: drawn by the tier
     // where its opacity is at least one half, exactly one tier). With it, alpha-to-coverage
     // fades it.

@@ -32,6 +32,7 @@
 #define GRASS_DEBUG_VIEW 512u    // the frame draws the tier tint or the threshold view (lighting.glsl)
 #define GRASS_DEPTH_PASS 1024u   // a depth-only pass (shadow maps): no lighting, no colour (depth_pass())
 #define GRASS_SHADOW_RECEIVE 2048u // the view receives the host's shadow map (host_shadows.glsl, GRASS_HOST_SHADOWS)
+#define GRASS_MOTION 4096u         // the view writes motion vectors (motion.glsl, GRASS_VELOCITY)
 // Responsive grass's code (and its bindings 10-13) is compiled only where GRASS_RESPONSIVE
 // is defined (so is per-blade culling's, which reads the blades' control points too): the
 // shaders of still grass are exactly what they were, and declare no binding

@@ -9,6 +9,10 @@
 #endif
 #include "tier_transitions.glsl"
 #include "sample_coverage.glsl"
+#ifdef GRASS_VELOCITY // motion vectors' variants only
+#define GRASS_MOTION_FRAGMENT
+#include "motion.glsl"
+#endif
 #ifdef GRASS_RESPONSIVE // responsive grass variants only (blade_interface.glsl)
 #include "wind.glsl"
 #include "interaction.glsl"
@@ -25,8 +29,25 @@ vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachme
 layout(location = 0) out vec4 out_color;
 #endif
 
+#ifdef GRASS_RESPONSIVE
+// The bend of the grass the quad stands for (its point is at half the grass's height), and
+// how far back along it the slice is read there (`back`, patch units): the bend moves the
+// grass by x(1/2) along its direction.
+ShellBend image_bend(out float back) {
+    vec3 up = normalize(field.field_up.xyz);
+    float height_m = field.blade_params.w * field.field_up.w;
+    ShellBend bend = shell_bend(v_position - up * (0.5 * height_m), up, height_m, vec2(v_first_cell) + v_local);
+    float a = 0.5 * bend.angle;
+    back = a < 1e-4 ? 0.0 : field.blade_params.w * (1.0 - cos(a)) / bend.angle;
+    return bend;
+}
+#endif
+
 void main() {
     load_blocks();
+#ifdef GRASS_VELOCITY
+    vec3 before = v_position; // where the grass seen here was at the previous frame's time
+#endif
     vec2 local = v_local;
     float shade = 1.0;
     float turn = 0.0; // the bent tangent's angle at half height (grass_lighting_lobes_bent)
@@ -36,11 +57,16 @@ void main() {
         // Responsive grass (shell_bend.glsl): the quad stands for the grass at half its
         // height, which a bend moves by x(1/2) along its direction: the slice is read that
         // far back. Pressed grass darkens.
-        vec3 up = normalize(field.field_up.xyz);
-        float height_m = field.blade_params.w * field.field_up.w;
-        ShellBend bend = shell_bend(v_position - up * (0.5 * height_m), up, height_m, vec2(v_first_cell) + v_local);
+        float back;
+        ShellBend bend = image_bend(back);
         float a = 0.5 * bend.angle;
-        float back = a < 1e-4 ? 0.0 : field.blade_params.w * (1.0 - cos(a)) / bend.angle;
+#ifdef GRASS_VELOCITY
+        g_previous_time = true; // the same grass bent as at the previous time (motion.glsl)
+        float back_before;
+        ShellBend bent_before = image_bend(back_before);
+        g_previous_time = false;
+        before += (bent_before.dir * back_before - bend.dir * back) * field.field_up.w;
+#endif
         vec3 d = transpose(mat3(field.patch_to_world)) * bend.dir / max(field.field_up.w, 1e-30);
         local -= d.xz * back;
         turn = a;
@@ -119,4 +145,7 @@ void main() {
                     steep);
     }
     out_color = debug_thresholds() ? threshold_code(threshold) : output_color(vec4(debug_tint(color), alpha));
+#ifdef GRASS_VELOCITY
+    write_velocity(clip_velocity(clip_now(v_position), clip_before(before)));
+#endif
 }

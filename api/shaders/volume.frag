@@ -11,6 +11,10 @@
 #endif
 #include "tier_transitions.glsl"
 #include "sample_coverage.glsl"
+#ifdef GRASS_VELOCITY // motion vectors' variants only
+#define GRASS_MOTION_FRAGMENT
+#include "motion.glsl"
+#endif
 #ifdef GRASS_RESPONSIVE // responsive grass variants only (blade_interface.glsl)
 #include "wind.glsl"
 #include "interaction.glsl"
@@ -59,6 +63,13 @@ int g_depth_reached = 0;       // how many of them are set
 vec2 g_plane_depth = vec2(0.0); // x: the window depth of the field's plane on the ray, y: its spread
                                 // over the pixel (0: a height map, or no plane below the ray)
 float g_depth_threshold = 0.0; // the threshold of the blade where the ray turns opaque
+#ifdef GRASS_VELOCITY
+// Motion vectors: how far the grass at the hit being composited was moved by the bend since
+// the previous frame's time (world metres, this frame minus that), and its value at each of
+// g_depth_at: the written depth's point moves by it.
+vec3 g_shift = vec3(0.0);
+vec3 g_shift_at[5];
+#endif
 
 // The opacity of a slice texel of coverage `alpha` drawn by this draw's tier: alpha
 // times what the density keeps of it (full = curve(density)), and in a transition zone the
@@ -87,6 +98,9 @@ void gather(float a, vec3 hit, float threshold) {
     g_alpha += (1.0 - g_alpha) * a;
     while (g_depth_reached < 5 && g_alpha >= (g_depth_reached == 0 ? 0.0 : 0.03125 * float(1 << g_depth_reached))) {
         g_depth_at[g_depth_reached] = hit;
+#ifdef GRASS_VELOCITY
+        g_shift_at[g_depth_reached] = g_shift;
+#endif
         if (g_depth_reached == 4) g_depth_threshold = threshold;
         ++g_depth_reached;
     }
@@ -116,6 +130,19 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
         float rest_y, back;
         if (!shell_unbend(bend.angle, h.y, g_size.y, rest_y, back)) return;
         vec3 d = transpose(g_to_world) * bend.dir / max(field.field_up.w, 1e-30); // unit, patch frame
+#ifdef GRASS_VELOCITY
+        // The same grass (its column's root, its rest height) bent as at the previous time.
+        g_previous_time = true;
+        ShellBend before = shell_bend(g_to_world * vec3(h.x, ground_y, h.z) + g_origin, up,
+                                      g_size.y * field.field_up.w, vec2(v_cell.xy) + h.xz);
+        g_previous_time = false;
+        vec3 d_before = transpose(g_to_world) * before.dir / max(field.field_up.w, 1e-30);
+        float a_u = before.angle * rest_y / g_size.y;
+        vec2 xy = before.angle < 1e-4 ? vec2(0.0, rest_y)
+                                      : g_size.y * vec2(1.0 - cos(a_u), sin(a_u)) / before.angle;
+        vec3 then = vec3(h.x - d.x * back + d_before.x * xy.x, xy.y, h.z - d.z * back + d_before.z * xy.x);
+        g_shift = g_to_world * (h - then);
+#endif
         h = vec3(h.x - d.x * back, rest_y, h.z - d.z * back);
         shade = bend.shade;
         turn = bend.angle * rest_y / g_size.y;
@@ -473,6 +500,10 @@ void main() {
         if (0.03125 * float(1 << i) <= (g_alpha >= 0.5 ? 0.5 : 0.5 * g_alpha)) level = i;
     }
     float depth = in_front_of_plane(window_depth(g_to_world * g_depth_at[level] + g_origin));
+#ifdef GRASS_VELOCITY
+    vec3 now = g_to_world * g_depth_at[level] + g_origin;
+    write_velocity(clip_velocity(clip_now(now), clip_before(now - g_shift_at[level])));
+#endif
     // The depth pass's bias (glPolygonOffset, Vulkan's depth bias) moves the rasterised depth,
     // which gl_FragDepth replaces: the carrier's biased depth minus its own is added instead
     // (the slope term is the carrier face's, not the blades').

@@ -13,6 +13,14 @@
 // and of direction across the wind, at most turbulence x S. Local sources add their own
 // wind (frame.wind_sources), and so does the field's wind map (wind_of_map).
 
+// The gust phases at the camera: the frame's, or the previous frame's while a motion
+// variant poses the grass at the previous time (motion.glsl).
+#ifdef GRASS_VELOCITY
+#define GRASS_WIND_PHASE (g_previous_time ? grass_motion.previous_wind_phase : frame.wind_phase)
+#else
+#define GRASS_WIND_PHASE frame.wind_phase
+#endif
+
 const float kWindTwoPi = 6.283185307179586;
 const vec3 kGustWavelength = vec3(1.0, 0.618034, 0.381966); // x gust_length
 const float kGustAttack = 0.15; // share of a gust's cycle spent rising
@@ -97,7 +105,7 @@ vec3 wind_at(vec3 p, vec3 up, vec2 cell_point) {
     if (speed > 0.0) {
         vec3 dir = mean / speed;
         vec3 inv_lambda = frame.wind_shape.x / kGustWavelength;
-        vec3 phase = frame.wind_phase.xyz + dot(p, dir) * inv_lambda;
+        vec3 phase = GRASS_WIND_PHASE.xyz + dot(p, dir) * inv_lambda;
         float gust = (gust_profile(phase.x) + gust_profile(phase.y) + gust_profile(phase.z)) / 3.0;
         // Turbulence: integer multiples of the phases (continuous across their wrap at 1),
         // along the wind and across it (wind_phase.w: the cross-wind coordinate at the
@@ -105,7 +113,7 @@ vec3 wind_at(vec3 p, vec3 up, vec2 cell_point) {
         vec3 cross_dir = cross(up, dir);
         float cross_len = length(cross_dir);
         cross_dir = cross_len > 1e-6 ? cross_dir / cross_len : vec3(0.0);
-        float across = frame.wind_phase.w + dot(p, cross_dir) * 2.0 * frame.wind_shape.x;
+        float across = GRASS_WIND_PHASE.w + dot(p, cross_dir) * 2.0 * frame.wind_shape.x;
         float t_speed = 0.5 * sin(kWindTwoPi * (3.0 * phase.y + 2.0 * across)) +
                         0.5 * sin(kWindTwoPi * (5.0 * phase.z - 3.0 * across));
         float t_dir = sin(kWindTwoPi * (2.0 * phase.x - 5.0 * across));

@@ -169,6 +169,12 @@ private:
     GLintptr shadow_uniform_offset_ = 0; // a receiving view's GrassShadow block, into uniforms_
     // A receiving view's map and block at kShadowMapUnit and uniform binding 2 (gl_draw.cpp).
     void bind_host_shadows(const FramePlan& plan);
+    GLintptr motion_uniform_offset_ = 0; // a motion view's GrassMotion block, into uniforms_
+    // A motion view (gl_motion.cpp): the bound draw framebuffer has a draw buffer at the
+    // velocity attachment (else GRASS_MSG_VELOCITY_TARGET), checked before anything is drawn.
+    grass_result check_velocity_target(const FramePlan& plan, const char* function) const;
+    // Its block at kMotionUniformBinding.
+    void bind_motion(const FramePlan& plan) const;
     GLint uniform_alignment_ = 256;
     GLint max_texture_size_ = 0;
     GLint max_array_layers_ = 0;

@@ -36,6 +36,10 @@ void GlBackend::upload_frame(const RenderTarget& target, uint32_t view) {
         shadow_uniform_offset_ = static_cast<GLintptr>(align_up(size, alignment));
         size = static_cast<size_t>(shadow_uniform_offset_) + sizeof(ShadowUniforms);
     }
+    if (plan.motion) { // a motion view's GrassMotion block: no other view has one
+        motion_uniform_offset_ = static_cast<GLintptr>(align_up(size, alignment));
+        size = static_cast<size_t>(motion_uniform_offset_) + sizeof(MotionUniforms);
+    }
     size = stage_interaction_uniforms(plan, size); // the pass's blocks: view 0's plan only has them
     uniform_staging_.assign(size, 0);
     FrameUniforms frame = plan.frame;
@@ -47,6 +51,9 @@ void GlBackend::upload_frame(const RenderTarget& target, uint32_t view) {
     }
     if (plan.shadow_receive) {
         std::memcpy(uniform_staging_.data() + shadow_uniform_offset_, &plan.shadow, sizeof(ShadowUniforms));
+    }
+    if (plan.motion) {
+        std::memcpy(uniform_staging_.data() + motion_uniform_offset_, &plan.motion_uniforms, sizeof(MotionUniforms));
     }
     for (uint32_t l = 0; l < plan.interaction.levels && l < 2; ++l) {
         std::memcpy(uniform_staging_.data() + interaction_uniform_offsets_[l], &plan.interaction.level[l],
@@ -220,6 +227,11 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
             program(static_cast<GlProgramKind>(variant.program), variant.features, function, &unused);
         if (result != GRASS_SUCCESS) return result;
     }
+    const bool motion = plan.motion && !debug; // the debug boxes write no velocity
+    if (motion) {
+        const grass_result result = check_velocity_target(plan, function);
+        if (result != GRASS_SUCCESS) return result;
+    }
     GLint sample_buffers = 0, samples = 0;
     gl_.GetIntegerv(GL_SAMPLE_BUFFERS, &sample_buffers); // of the bound draw framebuffer
     gl_.GetIntegerv(GL_SAMPLES, &samples);
@@ -275,6 +287,10 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
     if (plan.shadow_receive && !debug) {
         guard.begin_shadow_receive();
         bind_host_shadows(plan);
+    }
+    if (motion) {
+        guard.begin_motion(plan.velocity_attachment);
+        bind_motion(plan);
     }
 
     if (debug) {

@@ -17,6 +17,7 @@
     X(PFNGLGETBOOLEANVPROC, GetBooleanv)                                             \
     X(PFNGLGETBOOLEANI_VPROC, GetBooleani_v)                                         \
     X(PFNGLCOLORMASKIPROC, ColorMaski)                                               \
+    X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                                             \
     X(PFNGLISENABLEDPROC, IsEnabled)                                                 \
     X(PFNGLENABLEPROC, Enable)                                                       \
     X(PFNGLDISABLEPROC, Disable)                                                     \

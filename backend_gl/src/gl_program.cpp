@@ -66,8 +66,10 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
     char define[128];
     const bool responsive = (features & kBladeCurveFeatures) != 0;
     const bool shadows = (features & kFeatureShadowReceive) != 0;
-    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s%s", features,
-                  responsive ? "#define GRASS_RESPONSIVE 1\n" : "", shadows ? "#define GRASS_HOST_SHADOWS 1\n" : "");
+    const bool motion = (features & kFeatureMotion) != 0;
+    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s%s%s", features,
+                  responsive ? "#define GRASS_RESPONSIVE 1\n" : "", shadows ? "#define GRASS_HOST_SHADOWS 1\n" : "",
+                  motion ? "#define GRASS_VELOCITY 1\n" : "");
     const GLchar* strings[3] = {source, define, newline + 1};
     const GLint lengths[3] = {static_cast<GLint>(newline + 1 - source), -1, -1};
 

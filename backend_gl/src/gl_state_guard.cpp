@@ -193,9 +193,53 @@ void GlDrawStateGuard::begin_shadow_receive() {
     gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, kShadowUniformBinding, &shadow_binding_.size);
 }
 
+void GlDrawStateGuard::begin_motion(uint32_t velocity) {
+    const GlFunctions& gl = gl_;
+    if (motion_) return;
+    motion_ = true;
+    GLint max_draw_buffers = 1;
+    gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &max_draw_buffers);
+    draw_buffer_count_ = static_cast<GLsizei>(std::min(static_cast<GLuint>(max_draw_buffers), kMaxDrawBuffers));
+    for (GLsizei i = 0; i < draw_buffer_count_; ++i) {
+        GLint buffer = GL_NONE;
+        gl.GetIntegerv(static_cast<GLenum>(GL_DRAW_BUFFER0 + i), &buffer);
+        draw_buffers_[i] = static_cast<GLenum>(buffer);
+    }
+    gl.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, kMotionUniformBinding, &motion_binding_.buffer);
+    gl.GetInteger64i_v(GL_UNIFORM_BUFFER_START, kMotionUniformBinding, &motion_binding_.start);
+    gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, kMotionUniformBinding, &motion_binding_.size);
+    gl.GetBooleani_v(GL_COLOR_WRITEMASK, kVelocityOutput, velocity_mask_);
+    velocity_blend_ = gl.IsEnabledi(GL_BLEND, kVelocityOutput);
+    const GLenum routed[2] = {draw_buffers_[0], draw_buffers_[velocity]}; // check_velocity_target: not GL_NONE
+    gl.DrawBuffers(2, routed);
+    gl.ColorMaski(kVelocityOutput, GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE);
+    gl.Disablei(GL_BLEND, kVelocityOutput);
+}
+
+// Before the other draw buffers' masks are restored (draw buffer 1's, if the host had one
+// there, is among them: the constructor had masked it off before begin_motion saved it).
+void GlDrawStateGuard::restore_motion() const {
+    const GlFunctions& gl = gl_;
+    gl.DrawBuffers(draw_buffer_count_, draw_buffers_);
+    gl.ColorMaski(kVelocityOutput, velocity_mask_[0], velocity_mask_[1], velocity_mask_[2], velocity_mask_[3]);
+    if (velocity_blend_) {
+        gl.Enablei(GL_BLEND, kVelocityOutput);
+    } else {
+        gl.Disablei(GL_BLEND, kVelocityOutput);
+    }
+    const UniformBinding& b = motion_binding_;
+    if (b.buffer != 0 && b.size > 0) {
+        gl.BindBufferRange(GL_UNIFORM_BUFFER, kMotionUniformBinding, static_cast<GLuint>(b.buffer),
+                           static_cast<GLintptr>(b.start), static_cast<GLsizeiptr>(b.size));
+    } else {
+        gl.BindBufferBase(GL_UNIFORM_BUFFER, kMotionUniformBinding, static_cast<GLuint>(b.buffer));
+    }
+}
+
 GlDrawStateGuard::~GlDrawStateGuard() {
     const GlFunctions& gl = gl_;
-    if (shadow_receive_) { // before the generic uniform binding and the active unit are restored
+    if (motion_) restore_motion(); // before the generic uniform binding and the masks are restored
+    if (shadow_receive_) {         // before the generic uniform binding and the active unit are restored
         gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kShadowMapUnit));
         gl.BindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(shadow_unit_.texture_2d_array));
         gl.BindSampler(static_cast<GLuint>(kShadowMapUnit), static_cast<GLuint>(shadow_unit_.sampler));

@@ -32,6 +32,12 @@ public:
     // GL_TEXTURE_2D_ARRAY and sampler of texture unit 14 and its uniform binding 2 saved
     // first and restored with the rest.
     void begin_shadow_receive();
+    // A view with motion vectors (FramePlan::motion): the framebuffer's draw buffers are
+    // routed so that draw buffer 0 stays the host's and draw buffer 1 (the shaders' velocity
+    // output) is the host's draw buffer `velocity`, every other GL_NONE; draw buffer 1 writes
+    // red and green alone, unblended. The host's draw buffer list, uniform binding 3 and
+    // draw buffer 1's colour mask and blend enable are saved first and restored with the rest.
+    void begin_motion(uint32_t velocity);
     GlDrawStateGuard(const GlDrawStateGuard&) = delete;
     GlDrawStateGuard& operator=(const GlDrawStateGuard&) = delete;
 
@@ -100,6 +106,15 @@ private:
     bool shadow_receive_ = false;
     SliceUnit shadow_unit_ = {};
     UniformBinding shadow_binding_ = {};
+    // A motion view: the host's draw buffer list (its length: draw_buffer_count_), uniform
+    // binding 3, draw buffer 1's colour mask and blend enable.
+    bool motion_ = false;
+    GLsizei draw_buffer_count_ = 0;
+    GLenum draw_buffers_[kMaxDrawBuffers] = {};
+    UniformBinding motion_binding_ = {};
+    GLboolean velocity_mask_[4] = {};
+    GLboolean velocity_blend_ = GL_FALSE;
+    void restore_motion() const;
 };
 
 // Around texture uploads from client memory: the unpack pixel-store state and the pixel

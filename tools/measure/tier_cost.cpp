@@ -77,6 +77,23 @@ std::vector<double> Rig::frame_times(int count, std::vector<double>* plan_ms, st
     return times;
 }
 
+void Rig::per_cell_variants(int variants, const std::function<void(int)>& set_variant, double* us, double* cpu_us) {
+    std::vector<std::vector<double>> wall(static_cast<size_t>(variants)), cpu(static_cast<size_t>(variants));
+    for (int round = 0; round < 3; ++round) {
+        for (int v = 0; v < variants; ++v) {
+            set_variant(v);
+            std::vector<double> c;
+            const std::vector<double> w = frame_times(options_.frames, nullptr, &c);
+            wall[size_t(v)].insert(wall[size_t(v)].end(), w.begin(), w.end());
+            cpu[size_t(v)].insert(cpu[size_t(v)].end(), c.begin(), c.end());
+        }
+    }
+    for (int v = 0; v < variants; ++v) {
+        us[v] = 1000.0 * (grass_sample::median_high(wall[size_t(v)]) - empty_ms_) / 1024.0;
+        cpu_us[v] = 1000.0 * (grass_sample::median_high(cpu[size_t(v)]) - empty_cpu_ms_) / 1024.0;
+    }
+}
+
 grass_frame_stats Rig::frame_stats() {
     grass_frame_stats stats{};
     grass_sample::check(grass_get_frame_stats(ctx_, &stats), "grass_get_frame_stats", ctx_);
@@ -223,6 +240,13 @@ Subcommand add_tier_cost(CLI::App& measure) {
                                   "each row of the plain table also receiving a shadow map over half the field "
                                   "(docs/records/shadow-receiving.md)");
     receive->excludes(maps)->excludes(features)->excludes("--depth-pass");
+    app->add_flag("--motion", o->motion,
+                  "each row of the plain table also writing motion vectors, still and in wind, GL "
+                  "(docs/records/motion-vectors.md)")
+        ->excludes(maps)
+        ->excludes(features)
+        ->excludes("--depth-pass")
+        ->excludes(receive);
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));

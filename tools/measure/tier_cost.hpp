@@ -42,9 +42,13 @@
 // --receive: each row of the plain table also receiving a shadow map (grass_shadow_receive_desc;
 // GL or Vulkan; docs/records/shadow-receiving.md) that shades half the field, with filter_radius 0
 // and 1.5, rounds alternating; per basic cell each, and the ratios to the plain frame.
+// --motion: each row of the plain table also writing motion vectors (grass_view_motion_desc;
+// GL; docs/records/motion-vectors.md) into an RG16F target the tool adds to the host's
+// framebuffer, without wind and in wind (the pose computed twice); per basic cell each, and
+// the ratios to the plain frame of the same wind.
 // --frames N: frames measured per row (after one that uploads); default 5 (median).
 // Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features | --single] [--frames N]
-//        [--rounds N] [--depth-pass | --receive]
+//        [--rounds N] [--depth-pass | --receive | --motion]
 #pragma once
 
 #include <grass/grass.h>
@@ -52,6 +56,7 @@
 #include "headless_host.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -66,6 +71,7 @@ struct Options {
     bool single = false;     // only the tiers alone in single cells (kSingleTiers)
     bool depth_pass = false; // --depth-pass: each plain row also as a depth pass
     bool receive = false;    // --receive: each plain row also receiving a shadow map (GL)
+    bool motion = false;     // --motion: each plain row also writing motion vectors (GL)
     int frames = 5;
     int rounds = 3;          // --maps and --features only
     std::string patch_scene; // --patch-of: the patch of this scene file instead of the default patch
@@ -111,6 +117,11 @@ public:
     // The wall times of `count` frames after one that uploads (and compiles); with plan_ms,
     // also each measured frame's plan time (grass_frame_stats.plan_ms); with cpu_ms, the
     // CPU time the process spent on each (every thread: the software rasteriser's too).
+    // Per basic cell, for `variants` variants of the drawn row (set_variant(v) before each
+    // one's frames): 3 rounds of --frames frames each, the variants in turn (a load that comes
+    // and goes falls on all), pooled per variant; the median frame minus the empty one, in
+    // wall (us[v]) and in CPU time (cpu_us[v]).
+    void per_cell_variants(int variants, const std::function<void(int)>& set_variant, double* us, double* cpu_us);
     std::vector<double> frame_times(int count, std::vector<double>* plan_ms = nullptr,
                                     std::vector<double>* cpu_ms = nullptr);
     // Advances grass_view_desc.time by `seconds` before each frame from now on (0, the
@@ -127,6 +138,12 @@ public:
         view_.next = shadow;
         host_->depth_only = false;
     }
+    // Chains `motion` on the view (nullptr: none) for the frames from now on.
+    void set_motion(const grass_view_motion_desc* motion) {
+        view_.next = motion;
+        host_->depth_only = false;
+    }
+    const grass_view_desc& view() const { return view_; }
     grass_frame_stats frame_stats();
     grass_memory_stats memory_stats();
 
@@ -168,7 +185,9 @@ struct Cost {
 };
 Cost cost(const std::vector<double>& times, const std::vector<double>& empties);
 
-int run_plain(Rig& rig);    // tier_cost_plain.cpp
+int run_plain(Rig& rig); // tier_cost_plain.cpp
+// --motion: the plain rows without and with motion vectors, still and in wind (tier_cost_motion.cpp).
+int run_motion(Rig& rig, const std::vector<Setup>& rows);
 int run_maps(Rig& rig);     // tier_cost_maps.cpp
 int run_features(Rig& rig); // tier_cost_features.cpp
 

@@ -212,13 +212,14 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
     GRASS_STRUCT_TYPE_WIND_MAP_DESC = 0x6772000B,
     GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C,
-    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,      /* 0.5 */
-    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E,  /* 0.5 */
-    GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,   /* 0.5: stereo */
-    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,    /* 0.5 */
-    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,         /* 0.5: frames and views */
-    GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012,     /* 0.5: depth-only passes (shadows) */
-    GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC = 0x67720013 /* 0.5: the host's shadow maps, received */
+    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,       /* 0.5 */
+    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E,   /* 0.5 */
+    GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,    /* 0.5: stereo */
+    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,     /* 0.5 */
+    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,          /* 0.5: frames and views */
+    GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012,      /* 0.5: depth-only passes (shadows) */
+    GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC = 0x67720013, /* 0.5: the host's shadow maps, received */
+    GRASS_STRUCT_TYPE_VIEW_MOTION_DESC = 0x67720014     /* 0.5: motion vectors */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -302,6 +303,10 @@ typedef enum grass_message_id {
     /* 0.5: a frame was refused because the context's per-frame resources are all held by
      * unfinished frames (grass_frame_desc.completed_frame_index; Vulkan: frames_in_flight). */
     GRASS_MSG_FRAMES_IN_FLIGHT = 411,
+    /* 0.5: a view with a grass_view_motion_desc was drawn where its velocity cannot go (GL: the
+     * bound draw framebuffer is the default one, or its draw buffer velocity_attachment is
+     * GL_NONE), refused with GRASS_ERROR_INVALID_STATE before anything is drawn. */
+    GRASS_MSG_VELOCITY_TARGET = 412,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501
@@ -851,7 +856,7 @@ typedef struct grass_view_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VIEW_DESC */
     /* NULL, or a chain of the view's extensions (0.5), each at most once, in any order:
      * grass_stereo_view_desc (the second eye of a multiview pass), grass_lod_origin_desc,
-     * grass_view_pass_desc and grass_shadow_receive_desc. */
+     * grass_view_pass_desc, grass_shadow_receive_desc and grass_view_motion_desc. */
     const void* next;
     double camera_position[3]; /* world space, metres, within +-1e12 m each */
     /* World-to-eye matrix, column-major. Only its rotation is used: translation comes
@@ -1029,6 +1034,52 @@ typedef struct grass_shadow_receive_desc {
 /* Default: as each field says (the identity matrices and no map: set shadow_map, the
  * matrices and the cascades). */
 GRASS_API grass_shadow_receive_desc grass_default_shadow_receive_desc(void);
+
+/* 0.5: Chained on grass_view_desc.next: every tier also writes the screen-space velocity of
+ * its grass to an extra colour target (docs/integration.md, "Motion vectors"), for temporal
+ * antialiasing, motion blur and upscalers. The velocity covers the camera's motion (the
+ * previous camera and matrices below) and the wind's motion of the blades and of the
+ * volume and image tiers' bend (their pose at `time` minus their pose at previous_time).
+ * The colliders' motion (the interaction map) is not in it: pressed grass moves only with
+ * the camera and the wind. A view without it draws with the same programs and memory as
+ * before. A depth pass (GRASS_PASS_DEPTH) ignores it. GL only for now: Vulkan refuses it
+ * (GRASS_ERROR_UNSUPPORTED).
+ *
+ * Encoding: per pixel, the grass's position in this frame minus its position in the
+ * previous frame, both without their jitter, in viewport units: NDC x 0.5 (a whole
+ * viewport's width is 1), x to the right, y up in NDC (GL's window y; the host flips it
+ * where its convention is y down). Written to .r and .g of the velocity attachment as
+ * floats (a GL_RG16F or GL_RGBA16F target); .b and .a are masked off, untouched. Where no
+ * grass covers a pixel nothing is written (the host clears it or draws its own first).
+ * Subtracting it from a pixel's viewport coordinate (window xy / viewport size) gives
+ * where that grass was in the previous frame. */
+typedef struct grass_view_motion_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VIEW_MOTION_DESC */
+    const void* next;       /* the view's next extension, or NULL */
+    /* The previous frame's camera, as its grass_view_desc had them: camera_position (world
+     * metres, within +-1e12 m), view (only its rotation is used, as grass_view_desc.view)
+     * and projection (with its jitter). Default: the identity and the origin. */
+    double previous_camera_position[3];
+    float previous_view[16];
+    float previous_projection[16];
+    /* The jitter (NDC offsets, x and y) that this view's projection and the previous one
+     * contain, taken out of the velocity: a projection jittered by (jx, jy) moves every point
+     * by (jx, jy) in NDC (a perspective projection has them in its third column, an
+     * orthographic one in its fourth). Each within +-2. Default 0. */
+    float jitter[2];
+    float previous_jitter[2];
+    /* The previous frame's time (s; grass_view_desc.time, or grass_frame_desc.time of a
+     * frame of views): the wind's motion is the pose at this frame's time minus the pose at
+     * previous_time. Finite; equal to this frame's time: no wind motion. Default 0. */
+    double previous_time;
+    /* Where the velocity goes. GL: the index of the draw buffer (glDrawBuffers' list of the
+     * bound framebuffer) that holds the velocity target, 1 to 7 (0 is the lit colour).
+     * Default 1. */
+    uint32_t velocity_attachment;
+} grass_view_motion_desc;
+
+/* Default: as each field says (set the previous camera, matrices and time). */
+GRASS_API grass_view_motion_desc grass_default_view_motion_desc(void);
 
 /* Starts a frame of one view: validates the view and plans what every field draws. Then
  * draw with grass_gl_render() or grass_vk_record(), and close with grass_end_frame().

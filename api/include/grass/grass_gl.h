@@ -98,9 +98,15 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     depth-compare sampler) and its sampler, and uniform buffer binding 2 (grass's block
  *     of the cascades' matrices). The host's map itself (its parameters, contents) is not
  *     touched.
+ *   - 0.5: a view with motion vectors (grass_view_motion_desc): the bound framebuffer's
+ *     draw buffer list (routed to {the host's draw buffer 0, the host's draw buffer
+ *     velocity_attachment} while grass draws, every other one GL_NONE), draw buffer 1's
+ *     colour mask (red and green) and blend enable (off), and uniform buffer binding 3
+ *     (grass's block of the two frames' matrices).
  *
  * Read as the host's conventions and honoured, never changed:
- *   - the bound draw framebuffer, its draw buffers and its sample count;
+ *   - the bound draw framebuffer, its draw buffers (but for a motion view, above) and its
+ *     sample count;
  *   - glClipControl's depth mode (GL_CLIP_DEPTH_MODE) and viewport 0's glDepthRange: the
  *     volume tier writes gl_FragDepth with them. glClipControl's origin: grass draws
  *     through the host's projection as its scene does, upside down in memory under

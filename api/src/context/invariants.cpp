@@ -72,9 +72,10 @@ grass_result check_plan(grass_context* ctx, const char* fn, const FramePlan& pla
         const uint32_t dynamics_bits = draw.features & ~map_bits;
         const bool debug_ok = ((draw.features & kFeatureDebugView) != 0) == ((plan.flags & kDebugViewFlags) != 0) &&
                               ((draw.features & kFeatureDepthPass) != 0) == plan.depth_pass &&
-                              ((draw.features & kFeatureShadowReceive) != 0) == plan.shadow_receive;
+                              ((draw.features & kFeatureShadowReceive) != 0) == plan.shadow_receive &&
+                              ((draw.features & kFeatureMotion) != 0) == plan.motion;
         const bool dynamics_ok = (dynamics_bits & ~(kBladeCurveFeatures | kFeatureWindMap | kFeatureDebugView |
-                                                    kFeatureDepthPass | kFeatureShadowReceive)) == 0 &&
+                                                    kFeatureDepthPass | kFeatureShadowReceive | kFeatureMotion)) == 0 &&
                                  ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0) &&
                                  ((dynamics_bits & kFeatureWindMap) != 0) == field->wind_map.active() &&
                                  ((dynamics_bits & kFeatureWindMap) == 0 || (dynamics_bits & kFeatureWind) != 0) &&

@@ -3,6 +3,7 @@
 #include "context/context.hpp"
 #include "context/invariants.hpp"
 #include "dynamics/dynamics_plan.hpp"
+#include "entry/api_motion.hpp"
 #include "foundation/abi_sizes.hpp"
 #include "foundation/validate.hpp"
 #include "plan/frame_planner.hpp"
@@ -140,12 +141,16 @@ grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_vi
             out->shadow = static_cast<const grass_shadow_receive_desc*>(p);
             GRASS_TRY(check_shadow(ctx, fn, *out->shadow));
             p = out->shadow->next;
+        } else if (type == GRASS_STRUCT_TYPE_VIEW_MOTION_DESC && !out->motion) {
+            out->motion = static_cast<const grass_view_motion_desc*>(p);
+            GRASS_TRY(check_view_motion(ctx, fn, *out->motion));
+            p = out->motion->next;
         } else {
             return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
                              "%s: view->next chain element %u has type 0x%08x; expected "
                              "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC, GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC, "
-                             "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC or GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most "
-                             "once",
+                             "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC, GRASS_STRUCT_TYPE_VIEW_MOTION_DESC or "
+                             "GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most once",
                              fn, position, static_cast<unsigned>(type));
         }
     }
@@ -199,6 +204,12 @@ grass_result check_views(grass_context* ctx, const char* fn, const ViewExtension
     }
     if (ext.shadow && ctx->backend->kind() == GRASS_BACKEND_VULKAN)
         GRASS_TRY(check_vk_shadow(ctx, fn, *ext.shadow, target));
+    if (ext.motion && ctx->backend->kind() == GRASS_BACKEND_VULKAN) {
+        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: view->next chains a grass_view_motion_desc, but the Vulkan backend does not write "
+                         "motion vectors yet (GL does)",
+                         fn);
+    }
     const uint32_t views = target.views;
     if (ext.stereo && views == 2) return GRASS_SUCCESS;
     if (!ext.stereo && views == 1) return GRASS_SUCCESS;

@@ -227,6 +227,17 @@ struct ShadowUniforms {
 };
 static_assert(sizeof(ShadowUniforms) == 304, "std140 GrassShadow block");
 
+// std140 uniform block `GrassMotion` (motion.glsl; GL binding 3): a view's motion vectors
+// (grass_view_motion_desc), only in such a view's upload.
+struct MotionUniforms {
+    float view_projection[16]; // this view's camera-relative world -> clip, without its jitter
+    // This view's camera-relative world -> the previous frame's clip, without its jitter:
+    // previous projection x previous view rotation x translation by (camera - previous camera).
+    float previous_view_projection[16];
+    float previous_wind_phase[4]; // FrameUniforms::wind_phase at the previous time, at this camera
+};
+static_assert(sizeof(MotionUniforms) == 144, "std140 GrassMotion block");
+
 struct FramePlan {
     explicit FramePlan(HostAllocator* host)
         : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host) {}
@@ -247,6 +258,12 @@ struct FramePlan {
     uint64_t shadow_map = 0;    // GL: texture name
     uint32_t shadow_layout = 0; // Vulkan: VkImageLayout
     ShadowUniforms shadow{};
+    // A view with motion vectors (grass_view_motion_desc): every draw has kFeatureMotion; the
+    // backend binds `motion` and routes the velocity output to the host's draw buffer
+    // `velocity_attachment`.
+    bool motion = false;
+    uint32_t velocity_attachment = 0;
+    MotionUniforms motion_uniforms{};
     Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
     Vector<TierDraw> draws;         // per field, per tier that draws something
     grass_frame_stats stats{};

@@ -56,8 +56,13 @@ constexpr uint32_t kFeatureDepthPass = 1u << 10;
 // the GRASS_HOST_SHADOWS define) and darken the sun term. Set on every draw of a receiving
 // colour view's plan and no other.
 constexpr uint32_t kFeatureShadowReceive = 1u << 11;
+// A view that writes motion vectors (grass_view_motion_desc, GRASS_MOTION in the shaders):
+// its variants declare the GrassMotion block and the velocity output (motion.glsl, behind
+// the GRASS_VELOCITY define) and also pose the grass at the previous time. Set on every draw
+// of such a colour view's plan and no other.
+constexpr uint32_t kFeatureMotion = 1u << 12;
 // Every feature mask is below this (the variants a backend may compile).
-constexpr uint32_t kFeatureMaskCount = kFeatureShadowReceive << 1;
+constexpr uint32_t kFeatureMaskCount = kFeatureMotion << 1;
 // The debug boxes (GRASS_VIEW_FLAG_DEBUG_CELLS, debug_tiers.*) sample the height map alone.
 constexpr uint32_t kDebugBoxFeatures = 1u << kMapHeight;
 // Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's

@@ -59,6 +59,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC": 0x6772000F, "GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC": 0x67720010,
         "GRASS_STRUCT_TYPE_FRAME_DESC": 0x67720011, "GRASS_STRUCT_TYPE_VIEW_PASS_DESC": 0x67720012,
         "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC": 0x67720013,
+        "GRASS_STRUCT_TYPE_VIEW_MOTION_DESC": 0x67720014,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -78,6 +79,7 @@ ENUMS = {
         "GRASS_MSG_GL_CONTEXT_NOT_CURRENT": 408, "GRASS_MSG_PIPELINE_CACHE": 409,
         "GRASS_MSG_DEBUG_LABELS_UNAVAILABLE": 410,
         "GRASS_MSG_FRAMES_IN_FLIGHT": 411,
+        "GRASS_MSG_VELOCITY_TARGET": 412,
         "GRASS_MSG_CONTEXT_CREATED": 500, "GRASS_MSG_PATCH_GENERATED": 501,
     },
     "grass_depth_mode": {"GRASS_DEPTH_LESS": 0, "GRASS_DEPTH_GREATER": 1},
@@ -273,6 +275,12 @@ class grass_shadow_receive_desc(Structure):
                 ("compare", grass_enum), ("depth_bias", c_float), ("filter_radius", c_float)]
 
 
+class grass_view_motion_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("previous_camera_position", c_double * 3),
+                ("previous_view", c_float * 16), ("previous_projection", c_float * 16), ("jitter", c_float * 2),
+                ("previous_jitter", c_float * 2), ("previous_time", c_double), ("velocity_attachment", c_uint32)]
+
+
 class grass_frame_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("frame_index", c_uint64),
                 ("completed_frame_index", c_uint64), ("time", c_double)]
@@ -429,6 +437,7 @@ FUNCTIONS = {
     "grass_end_frame": (grass_enum, [_ctx]),
     "grass_default_view_pass_desc": (grass_view_pass_desc, []),
     "grass_default_shadow_receive_desc": (grass_shadow_receive_desc, []),
+    "grass_default_view_motion_desc": (grass_view_motion_desc, []),
     "grass_default_frame_desc": (grass_frame_desc, []),
     "grass_begin_host_frame": (grass_enum, [_ctx, _P(grass_frame_desc)]),
     "grass_plan_view": (grass_enum, [_ctx, _P(grass_view_desc), _P(c_uint32)]),

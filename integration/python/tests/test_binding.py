@@ -1,4 +1,5 @@
 """The Pythonic layer on a CPU context: objects, errors with message ids, frames, stats, maps."""
+import contextlib
 import ctypes
 
 import pytest
@@ -44,33 +45,45 @@ def test_a_host_frame_plans_several_views():
         assert "frame_index" in str(refused.value)
 
 
-def test_a_depth_pass_view_through_the_raw_binding():
+@contextlib.contextmanager
+def a_field():
+    """A context with a 64 x 64 field of a 256-blade patch."""
     with grass.Context() as ctx:
         patch = ctx.create_patch(blade_count=256)
         ctx.create_field(patch, cells_x=64, cells_z=64)
+        yield ctx
+
+
+def plans_then_refuses(ctx, view, extension, change, message):
+    """Chains `extension` on `view` (the Pythonic plan_view takes no chain: ctx.call does),
+    plans it as view 0 of a host frame, then after change() expects the same view refused
+    with `message`."""
+    view.next = ctypes.addressof(extension)
+    index = ctypes.c_uint32(99)
+    ctx.begin_host_frame(1)
+    ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
+    assert index.value == 0
+    change()
+    with pytest.raises(grass.GrassError) as refused:
+        ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
+    assert message in str(refused.value)
+    ctx.end_frame()
+
+
+def test_a_depth_pass_view_through_the_raw_binding():
+    with a_field() as ctx:
         shadow = grass.lib.grass_default_view_pass_desc()
         # `pass` is a Python keyword: the field is reached with getattr / setattr.
         assert shadow.type == grass.GRASS_STRUCT_TYPE_VIEW_PASS_DESC
         assert getattr(shadow, "pass") == grass.GRASS_PASS_COLOR
         setattr(shadow, "pass", grass.GRASS_PASS_DEPTH)
         shadow.depth_bias_constant, shadow.depth_bias_slope = 2.0, 1.5
-        view = overhead_view()
-        view.next = ctypes.addressof(shadow)  # the Pythonic plan_view takes no chain: ctx.call does
-        index = ctypes.c_uint32(99)
-        ctx.begin_host_frame(1)
-        ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
-        assert index.value == 0
-        shadow.depth_bias_slope = 100.0
-        with pytest.raises(grass.GrassError) as refused:
-            ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
-        assert "grass_view_pass_desc->depth_bias_slope is 100" in str(refused.value)
-        ctx.end_frame()
+        plans_then_refuses(ctx, overhead_view(), shadow, lambda: setattr(shadow, "depth_bias_slope", 100.0),
+                           "grass_view_pass_desc->depth_bias_slope is 100")
 
 
 def test_a_receiving_view_through_the_raw_binding():
-    with grass.Context() as ctx:
-        patch = ctx.create_patch(blade_count=256)
-        ctx.create_field(patch, cells_x=64, cells_z=64)
+    with a_field() as ctx:
         receive = grass.lib.grass_default_shadow_receive_desc()
         assert receive.type == grass.GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC
         assert receive.cascade_count == 1 and receive.compare == grass.GRASS_SHADOW_COMPARE_LESS_EQUAL
@@ -78,17 +91,21 @@ def test_a_receiving_view_through_the_raw_binding():
         receive.shadow_map = 5
         receive.cascade_count = 2
         receive.cascade_end[0], receive.cascade_end[1] = 10.0, 40.0
+        plans_then_refuses(ctx, overhead_view(), receive, lambda: receive.cascade_end.__setitem__(1, 5.0),
+                           "grass_shadow_receive_desc->cascade_end[1] is 5")
+
+
+def test_a_motion_view_through_the_raw_binding():
+    with a_field() as ctx:
+        motion = grass.lib.grass_default_view_motion_desc()
+        assert motion.type == grass.GRASS_STRUCT_TYPE_VIEW_MOTION_DESC
+        assert motion.velocity_attachment == 1 and motion.previous_projection[15] == 1.0
         view = overhead_view()
-        view.next = ctypes.addressof(receive)
-        index = ctypes.c_uint32(99)
-        ctx.begin_host_frame(1)
-        ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
-        assert index.value == 0
-        receive.cascade_end[1] = 5.0
-        with pytest.raises(grass.GrassError) as refused:
-            ctx.call(grass.lib.grass_plan_view, ctypes.byref(view), ctypes.byref(index))
-        assert "grass_shadow_receive_desc->cascade_end[1] is 5" in str(refused.value)
-        ctx.end_frame()
+        ctypes.memmove(motion.previous_view, view.view, ctypes.sizeof(motion.previous_view))
+        ctypes.memmove(motion.previous_projection, view.projection, ctypes.sizeof(motion.previous_projection))
+        motion.previous_camera_position[0] = 0.5
+        plans_then_refuses(ctx, view, motion, lambda: setattr(motion, "velocity_attachment", 9),
+                           "grass_view_motion_desc->velocity_attachment is 9")
 
 
 def test_errors_carry_the_result_and_the_message_id():

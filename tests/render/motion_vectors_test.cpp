@@ -1,0 +1,594 @@
+// Motion vectors (grass_view_motion_desc; docs/integration.md "Motion vectors"), drawn into
+// a framebuffer the test makes: draw buffers {colour, a G-buffer-like target filled with a
+// pattern, velocity (RGBA32F)}, so the velocity goes to draw buffer 2.
+// - A camera pan (static grass, both projections jittered): on every tier's pixels the
+//   velocity is the reprojection of the pixel's world point (from the depth buffer) by the
+//   two frames' unjittered matrices, within 1e-3 viewport units (0.13 px) at 97% of them.
+// - A gust (still orthographic camera, soft blades): per tier, a finite difference of the
+//   frames at the two times: frame t1's grass compared with frame t0 where its velocity says
+//   it was differs less than unmoved and than moved the other way (the colour of the volume
+//   and image tiers, the coverage of sparse blades); with previous_time = time it is zero.
+// - The other draw buffer stays byte-identical, the velocity's .ba and its pixels without
+//   grass keep their clear, and the host's draw buffers, masks, blend and binding 3 come back.
+// - A view without the struct draws with programs that declare no GrassMotion block and the
+//   same picture; bad descs are refused naming the field; Vulkan refuses the struct.
+#include "render_fixture.hpp"
+
+#include <GL/glcorearb.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace grass_test {
+namespace {
+
+constexpr int kSize = 128;
+
+// The programs grass binds and creates, through the host's GL loader.
+struct GlSeen {
+    std::set<GLuint> used;
+    int64_t created = 0;
+    PFNGLUSEPROGRAMPROC use_program = nullptr;
+    PFNGLCREATEPROGRAMPROC create_program = nullptr;
+} gl_seen;
+
+void APIENTRY seen_use_program(GLuint program) {
+    if (program != 0) gl_seen.used.insert(program);
+    gl_seen.use_program(program);
+}
+GLuint APIENTRY seen_create_program() {
+    gl_seen.created += 1;
+    return gl_seen.create_program();
+}
+void (*gl_filter(const char* name, void (*real)(void)))(void) {
+    if (std::strcmp(name, "glUseProgram") == 0) {
+        gl_seen.use_program = reinterpret_cast<PFNGLUSEPROGRAMPROC>(real);
+        return reinterpret_cast<void (*)(void)>(&seen_use_program);
+    }
+    if (std::strcmp(name, "glCreateProgram") == 0) {
+        gl_seen.create_program = reinterpret_cast<PFNGLCREATEPROGRAMPROC>(real);
+        return reinterpret_cast<void (*)(void)>(&seen_create_program);
+    }
+    return real;
+}
+
+struct Gl {
+    PFNGLCREATEFRAMEBUFFERSPROC CreateFramebuffers;
+    PFNGLDELETEFRAMEBUFFERSPROC DeleteFramebuffers;
+    PFNGLNAMEDFRAMEBUFFERTEXTUREPROC NamedFramebufferTexture;
+    PFNGLNAMEDFRAMEBUFFERDRAWBUFFERSPROC NamedFramebufferDrawBuffers;
+    PFNGLBINDFRAMEBUFFERPROC BindFramebuffer;
+    PFNGLCLEARNAMEDFRAMEBUFFERFVPROC ClearNamedFramebufferfv;
+    PFNGLCREATETEXTURESPROC CreateTextures;
+    PFNGLTEXTURESTORAGE2DPROC TextureStorage2D;
+    PFNGLDELETETEXTURESPROC DeleteTextures;
+    PFNGLGETTEXTUREIMAGEPROC GetTextureImage;
+    PFNGLGETINTEGERVPROC GetIntegerv;
+    PFNGLGETINTEGERI_VPROC GetIntegeri_v;
+    PFNGLGETBOOLEANI_VPROC GetBooleani_v;
+    PFNGLISENABLEDIPROC IsEnabledi;
+    PFNGLENABLEIPROC Enablei;
+    PFNGLDISABLEIPROC Disablei;
+    PFNGLCOLORMASKIPROC ColorMaski;
+    PFNGLCREATEBUFFERSPROC CreateBuffers;
+    PFNGLNAMEDBUFFERDATAPROC NamedBufferData;
+    PFNGLBINDBUFFERRANGEPROC BindBufferRange;
+    PFNGLDELETEBUFFERSPROC DeleteBuffers;
+    PFNGLGETUNIFORMBLOCKINDEXPROC GetUniformBlockIndex;
+};
+
+template <class T>
+void load(const grass_host::Host& host, T* fn, const char* name) {
+    *fn = reinterpret_cast<T>(host.gl_proc_address(name));
+    ASSERT_NE(*fn, nullptr) << name;
+}
+
+// c = a * b, column-major 4x4, double.
+void mul4(const double a[16], const double b[16], double c[16]) {
+    for (int col = 0; col < 4; ++col) {
+        for (int row = 0; row < 4; ++row) {
+            double s = 0.0;
+            for (int k = 0; k < 4; ++k) s += a[4 * k + row] * b[4 * col + k];
+            c[4 * col + row] = s;
+        }
+    }
+}
+
+// The inverse of a 4x4 matrix (Gauss-Jordan with partial pivoting), column-major.
+void invert4(const double m[16], double out[16]) {
+    double a[4][8];
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) {
+            a[r][c] = m[4 * c + r];
+            a[r][4 + c] = r == c ? 1.0 : 0.0;
+        }
+    }
+    for (int c = 0; c < 4; ++c) {
+        int p = c;
+        for (int r = c + 1; r < 4; ++r) p = std::fabs(a[r][c]) > std::fabs(a[p][c]) ? r : p;
+        for (int k = 0; k < 8; ++k) std::swap(a[c][k], a[p][k]);
+        const double d = a[c][c];
+        for (int k = 0; k < 8; ++k) a[c][k] /= d;
+        for (int r = 0; r < 4; ++r) {
+            if (r == c) continue;
+            const double f = a[r][c];
+            for (int k = 0; k < 8; ++k) a[r][k] -= f * a[c][k];
+        }
+    }
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) out[4 * c + r] = a[r][4 + c];
+    }
+}
+
+// projection x the view's rotation (camera-relative world -> clip), in double.
+void camera_relative_vp(const float view[16], const float projection[16], double out[16]) {
+    double r[16] = {0}, p[16];
+    for (int c = 0; c < 3; ++c) {
+        for (int k = 0; k < 3; ++k) r[4 * c + k] = view[4 * c + k];
+    }
+    r[15] = 1.0;
+    for (int k = 0; k < 16; ++k) p[k] = projection[k];
+    mul4(p, r, out);
+}
+
+// Jitters a projection by `j` in NDC: clip.xy += j clip.w.
+void jitter(float projection[16], const float j[2]) {
+    for (int c = 0; c < 4; ++c) {
+        projection[4 * c + 0] += j[0] * projection[4 * c + 3];
+        projection[4 * c + 1] += j[1] * projection[4 * c + 3];
+    }
+}
+
+// What a frame left in the test's framebuffer; rows bottom first (GL's).
+struct Frame {
+    std::vector<uint8_t> color, extra;
+    std::vector<float> velocity, depth;
+    bool grass(int x, int y) const { return depth[size_t(y) * kSize + x] < 1.0f; }
+    const float* v(int x, int y) const { return &velocity[(size_t(y) * kSize + x) * 4]; }
+};
+
+const float kExtraClear[4] = {0.2f, 0.4f, 0.6f, 0.8f};
+const float kVelocityClear[4] = {9.0f, -9.0f, 7.0f, 5.0f};
+
+class MotionVectorsTest : public RenderTest {
+protected:
+    void SetUp() override {
+        RenderTest::SetUp();
+        grass_host::TargetDesc t;
+        t.width = t.height = kSize;
+        if (GetParam() == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_filter;
+        start(t);
+        if (GetParam() != GRASS_BACKEND_GL) return;
+        load(*host, &gl.CreateFramebuffers, "glCreateFramebuffers");
+        load(*host, &gl.DeleteFramebuffers, "glDeleteFramebuffers");
+        load(*host, &gl.NamedFramebufferTexture, "glNamedFramebufferTexture");
+        load(*host, &gl.NamedFramebufferDrawBuffers, "glNamedFramebufferDrawBuffers");
+        load(*host, &gl.BindFramebuffer, "glBindFramebuffer");
+        load(*host, &gl.ClearNamedFramebufferfv, "glClearNamedFramebufferfv");
+        load(*host, &gl.CreateTextures, "glCreateTextures");
+        load(*host, &gl.TextureStorage2D, "glTextureStorage2D");
+        load(*host, &gl.DeleteTextures, "glDeleteTextures");
+        load(*host, &gl.GetTextureImage, "glGetTextureImage");
+        load(*host, &gl.GetIntegerv, "glGetIntegerv");
+        load(*host, &gl.GetIntegeri_v, "glGetIntegeri_v");
+        load(*host, &gl.GetBooleani_v, "glGetBooleani_v");
+        load(*host, &gl.IsEnabledi, "glIsEnabledi");
+        load(*host, &gl.Enablei, "glEnablei");
+        load(*host, &gl.Disablei, "glDisablei");
+        load(*host, &gl.ColorMaski, "glColorMaski");
+        load(*host, &gl.CreateBuffers, "glCreateBuffers");
+        load(*host, &gl.NamedBufferData, "glNamedBufferData");
+        load(*host, &gl.BindBufferRange, "glBindBufferRange");
+        load(*host, &gl.DeleteBuffers, "glDeleteBuffers");
+        load(*host, &gl.GetUniformBlockIndex, "glGetUniformBlockIndex");
+        const GLenum formats[4] = {GL_RGBA8, GL_RGBA32F, GL_RGBA8, GL_DEPTH_COMPONENT32F};
+        gl.CreateTextures(GL_TEXTURE_2D, 4, textures_);
+        for (int i = 0; i < 4; ++i) gl.TextureStorage2D(textures_[i], 1, formats[i], kSize, kSize);
+        gl.CreateFramebuffers(1, &fbo_);
+        for (int i = 0; i < 3; ++i) gl.NamedFramebufferTexture(fbo_, GL_COLOR_ATTACHMENT0 + i, textures_[i], 0);
+        gl.NamedFramebufferTexture(fbo_, GL_DEPTH_ATTACHMENT, textures_[3], 0);
+        // Draw buffer 1: the pattern (attachment 2); draw buffer 2: the velocity (attachment 1).
+        const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT1};
+        gl.NamedFramebufferDrawBuffers(fbo_, 3, buffers);
+    }
+    void TearDown() override {
+        if (fbo_ != 0) {
+            gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+            gl.DeleteFramebuffers(1, &fbo_);
+            gl.DeleteTextures(4, textures_);
+        }
+        RenderTest::TearDown();
+    }
+
+    // A motion desc of the previous camera `v` (its matrices, position, time), velocity at
+    // draw buffer 2.
+    static grass_view_motion_desc motion_of(const grass_view_desc& v, const float previous_jitter[2]) {
+        grass_view_motion_desc m = grass_default_view_motion_desc();
+        std::memcpy(m.previous_camera_position, v.camera_position, sizeof m.previous_camera_position);
+        std::memcpy(m.previous_view, v.view, sizeof m.previous_view);
+        std::memcpy(m.previous_projection, v.projection, sizeof m.previous_projection);
+        m.previous_jitter[0] = previous_jitter[0];
+        m.previous_jitter[1] = previous_jitter[1];
+        m.previous_time = v.time;
+        m.velocity_attachment = 2;
+        return m;
+    }
+
+    // Draws `v` into the test's framebuffer, cleared first, and reads it back.
+    Frame draw(const grass_view_desc& v) {
+        Frame f;
+        gl.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+        const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f}, far = 1.0f;
+        gl.ClearNamedFramebufferfv(fbo_, GL_COLOR, 0, black);
+        gl.ClearNamedFramebufferfv(fbo_, GL_COLOR, 1, kExtraClear);
+        gl.ClearNamedFramebufferfv(fbo_, GL_COLOR, 2, kVelocityClear);
+        gl.ClearNamedFramebufferfv(fbo_, GL_DEPTH, 0, &far);
+        grass_view_desc d = v;
+        d.viewport[0] = d.viewport[1] = 0;
+        d.viewport[2] = d.viewport[3] = kSize;
+        EXPECT_EQ(grass_begin_frame(ctx, &d), GRASS_SUCCESS) << log;
+        EXPECT_EQ(grass_gl_render(ctx), GRASS_SUCCESS) << log;
+        EXPECT_EQ(grass_end_frame(ctx), GRASS_SUCCESS) << log;
+        const size_t n = size_t(kSize) * kSize;
+        f.color.resize(n * 4);
+        f.extra.resize(n * 4);
+        f.velocity.resize(n * 4);
+        f.depth.resize(n);
+        gl.GetTextureImage(textures_[0], 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(n * 4), f.color.data());
+        gl.GetTextureImage(textures_[1], 0, GL_RGBA, GL_FLOAT, GLsizei(n * 16), f.velocity.data());
+        gl.GetTextureImage(textures_[2], 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(n * 4), f.extra.data());
+        gl.GetTextureImage(textures_[3], 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(n * 4), f.depth.data());
+        return f;
+    }
+
+    // An orthographic camera over (0.5, 0, 0.5), 0.4 m half extent: from above, or
+    // (`oblique`) 45 degrees down looking +z; depth 1..10 m.
+    grass_view_desc top_down(double time, bool oblique = false) {
+        const double eye[3] = {0.5, 5.0, oblique ? -4.5 : 0.5}, at[3] = {0.5, 0.0, 0.5};
+        grass_view_desc v = view(eye, at);
+        std::memset(v.projection, 0, sizeof v.projection);
+        v.projection[0] = v.projection[5] = float(1.0 / 0.4);
+        v.projection[10] = float(-2.0 / 9.0);
+        v.projection[14] = float(-11.0 / 9.0);
+        v.projection[15] = 1.0f;
+        v.time = time;
+        return v;
+    }
+
+    Gl gl{};
+    GLuint fbo_ = 0;
+    GLuint textures_[4] = {};
+};
+
+TEST_P(MotionVectorsTest, ACameraPanGivesEachGrassPixelsReprojection) {
+    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan does not write motion vectors yet";
+    make_field(three_tier_field(48));
+    const double before_eye[3] = {5.7, 0.75, 0.3}, before_at[3] = {6.2, 0.0, 8.0};
+    const double eye[3] = {6.0, 0.8, 0.5}, at[3] = {6.9, 0.0, 8.0};
+    const float before_jitter[2] = {-0.006f, 0.004f}, now_jitter[2] = {0.005f, -0.007f};
+    grass_view_desc before = view(before_eye, before_at);
+    grass_view_desc now = view(eye, at);
+    // The unjittered camera-relative matrices the expectation uses.
+    double vp_now[16], vp_before[16], inv_now[16];
+    camera_relative_vp(now.view, now.projection, vp_now);
+    camera_relative_vp(before.view, before.projection, vp_before);
+    invert4(vp_now, inv_now);
+    jitter(before.projection, before_jitter);
+    jitter(now.projection, now_jitter);
+    grass_view_motion_desc motion = motion_of(before, before_jitter);
+    motion.jitter[0] = now_jitter[0];
+    motion.jitter[1] = now_jitter[1];
+    now.next = &motion;
+    const Frame f = draw(now);
+
+    // Per tier, by distance from the camera (three_tier_field's bands, no transition).
+    size_t count[3] = {}, within[3] = {};
+    double worst[3] = {};
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            if (!f.grass(x, y)) continue;
+            const double ndc[4] = {(x + 0.5) / kSize * 2.0 - 1.0 - now_jitter[0],
+                                   (y + 0.5) / kSize * 2.0 - 1.0 - now_jitter[1],
+                                   2.0 * f.depth[size_t(y) * kSize + x] - 1.0, 1.0};
+            double rel[4] = {};
+            for (int r = 0; r < 4; ++r) {
+                for (int k = 0; k < 4; ++k) rel[r] += inv_now[4 * k + r] * ndc[k];
+            }
+            double world[3], d2 = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                world[c] = eye[c] + rel[c] / rel[3];
+                d2 += (rel[c] / rel[3]) * (rel[c] / rel[3]);
+            }
+            const double dist = std::sqrt(d2);
+            const int tier = dist < 1.9 ? 0 : dist > 3.2 && dist < 4.8 ? 1 : dist > 7.5 ? 2 : -1;
+            if (tier < 0) continue;
+            const double p[4] = {world[0] - before_eye[0], world[1] - before_eye[1], world[2] - before_eye[2], 1.0};
+            double clip[4] = {};
+            for (int r = 0; r < 4; ++r) {
+                for (int k = 0; k < 4; ++k) clip[r] += vp_before[4 * k + r] * p[k];
+            }
+            const double expected[2] = {0.5 * (ndc[0] - clip[0] / clip[3]), 0.5 * (ndc[1] - clip[1] / clip[3])};
+            const float* v = f.v(x, y);
+            const double error = std::max(std::fabs(v[0] - expected[0]), std::fabs(v[1] - expected[1]));
+            ++count[tier];
+            within[tier] += error <= 1e-3;
+            worst[tier] = std::max(worst[tier], error);
+        }
+    }
+    const char* const names[3] = {"geometry", "volume", "image"};
+    for (int t = 0; t < 3; ++t) {
+        EXPECT_GT(count[t], 100u) << names[t] << " pixels";
+        EXPECT_GE(within[t] * 100, count[t] * 97)
+            << names[t] << ": " << within[t] << " of " << count[t] << " within 1e-3, worst " << worst[t];
+    }
+    // The camera moved: the velocities are not all alike nor zero (the test is not vacuous).
+    double lo = 1e9, hi = -1e9;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            if (!f.grass(x, y)) continue;
+            lo = std::min(lo, double(f.v(x, y)[0]));
+            hi = std::max(hi, double(f.v(x, y)[0]));
+        }
+    }
+    EXPECT_GT(hi - lo, 0.02) << "the velocity's x across the grass";
+}
+
+TEST_P(MotionVectorsTest, AGustMovesTheGrassAsTwoFramesDo) {
+    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan does not write motion vectors yet";
+    grass_wind_desc wind = grass_default_wind_desc();
+    wind.direction[0] = 1.0f;
+    wind.direction[2] = 0.4f;
+    wind.speed = 2.0f;
+    wind.gust_strength = 4.0f;
+    wind.gust_length = 10.0f;
+    wind.turbulence = 0.0f;
+    ASSERT_EQ(grass_set_wind(ctx, &wind), GRASS_SUCCESS) << log;
+    grass_blade_mechanics soft = grass_default_blade_mechanics();
+    soft.stiffness = 10.0f; // blades that the gusts bend far
+    ASSERT_EQ(grass_set_blade_mechanics(ctx, patch, &soft), GRASS_SUCCESS) << log;
+    const double t0 = 22.0, t1 = 23.0; // the gust passing changes the bend
+    const float none[2] = {0.0f, 0.0f};
+    const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
+    const char* const names[3] = {"geometry", "volume", "image"};
+    for (int k = 0; k < 3; ++k) {
+        // Sparse blades seen from above (their coverage moves over the dark ground); the
+        // volume from 45 degrees (seen from above, the rays meet the grass near its roots,
+        // which hardly move); the image tier from above.
+        grass_field_desc d = k == 0 ? field_desc(4) : solo_tier_field(4, kinds[k], k == 1 ? 2u : 0u, 4);
+        if (k == 0) d.density = 0.15f;
+        const grass_field_id field = make_field(d);
+        const grass_view_desc first = top_down(t0, k == 1);
+        grass_view_motion_desc still = motion_of(first, none); // previous_time = t0: no motion
+        grass_view_desc v0 = first;
+        v0.next = &still;
+        const Frame a = draw(v0);
+        grass_view_desc v1 = top_down(t1, k == 1);
+        grass_view_motion_desc motion = motion_of(first, none);
+        v1.next = &motion;
+        const Frame b = draw(v1);
+        // The finite difference: each of frame b's grass pixels against frame a where its
+        // velocity says that grass was (bilinear), against frame a at the same pixel and at
+        // the opposite displacement. The velocity must explain most of what changed: the
+        // colour (volume, image: a carpet) or the coverage (sparse blades).
+        double err_v = 0.0, err_0 = 0.0, err_neg = 0.0, still_v = 0.0, moved = 0.0;
+        size_t n = 0;
+        const auto sample = [&a, k](double fx, double fy, int c) {
+            const double x = std::min(std::max(fx - 0.5, 0.0), kSize - 1.001);
+            const double y = std::min(std::max(fy - 0.5, 0.0), kSize - 1.001);
+            const int x0 = int(x), y0 = int(y);
+            const double tx = x - x0, ty = y - y0;
+            const auto at = [&a, c, k](int px, int py) {
+                return k == 0 ? (a.grass(px, py) ? 255.0 : 0.0) : double(a.color[(size_t(py) * kSize + px) * 4 + c]);
+            };
+            return (1 - ty) * ((1 - tx) * at(x0, y0) + tx * at(x0 + 1, y0)) +
+                   ty * ((1 - tx) * at(x0, y0 + 1) + tx * at(x0 + 1, y0 + 1));
+        };
+        for (int y = 8; y < kSize - 8; ++y) {
+            for (int x = 8; x < kSize - 8; ++x) {
+                if (a.grass(x, y)) {
+                    still_v = std::max(still_v, double(std::fabs(a.v(x, y)[0]) + std::fabs(a.v(x, y)[1])));
+                }
+                if (!b.grass(x, y)) continue;
+                const double dx = b.v(x, y)[0] * kSize, dy = b.v(x, y)[1] * kSize;
+                for (int c = 0; c < (k == 0 ? 1 : 3); ++c) {
+                    const double now = k == 0 ? 255.0 : b.color[(size_t(y) * kSize + x) * 4 + c];
+                    err_v += std::fabs(now - sample(x + 0.5 - dx, y + 0.5 - dy, c));
+                    err_0 += std::fabs(now - sample(x + 0.5, y + 0.5, c));
+                    err_neg += std::fabs(now - sample(x + 0.5 + dx, y + 0.5 + dy, c));
+                }
+                moved += std::sqrt(dx * dx + dy * dy);
+                ++n;
+            }
+        }
+        ASSERT_GT(n, 1000u) << names[k] << ": grass pixels";
+        moved /= double(n);
+        EXPECT_GT(moved, 0.5) << names[k] << ": the mean displacement (px)";
+        // Blades bend and turn as they move, and the volume's velocity is its depth point's
+        // (the tips in front of it move more): they are held to less than the image tier.
+        const double bound = k == 2 ? 0.5 : 0.85;
+        EXPECT_LT(err_v, bound * err_0) << names[k] << ": frame b against frame a moved by the velocity, and unmoved"
+                                        << " (mean displacement " << moved << " px)";
+        EXPECT_LT(err_v, bound * err_neg) << names[k] << ": ... and moved the other way";
+        EXPECT_LT(still_v * kSize, 0.01) << names[k] << ": previous_time = time moves nothing (px)";
+        EXPECT_EQ(grass_destroy_field(ctx, field), GRASS_SUCCESS);
+    }
+}
+
+TEST_P(MotionVectorsTest, OtherTargetsAndTheHostsStateStay) {
+    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "GL state";
+    make_field(three_tier_field(48));
+    const double eye[3] = {6.0, 0.8, 0.5}, at[3] = {6.9, 0.0, 8.0};
+    const float none[2] = {0.0f, 0.0f};
+    grass_view_desc v = view(eye, at);
+    grass_view_desc before = v;
+    before.camera_position[0] -= 0.2;
+    grass_view_motion_desc motion = motion_of(before, none);
+    v.next = &motion;
+    // The host's own state of draw buffer 2's output slot (1 for grass), binding 3, blend.
+    GLuint host_buffer = 0;
+    gl.CreateBuffers(1, &host_buffer);
+    gl.NamedBufferData(host_buffer, 1024, nullptr, GL_STATIC_DRAW);
+    gl.BindBufferRange(GL_UNIFORM_BUFFER, 3, host_buffer, 256, 512);
+    gl.Enablei(GL_BLEND, 1);
+    gl.ColorMaski(1, GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+    gl.ColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl.Disablei(GL_BLEND, 2);
+    // Blending off for the clears (they respect masks, not blending); the masks as above.
+    const Frame f = draw(v);
+    size_t grass = 0, moved = 0, extra_changed = 0, ba_changed = 0, sky_changed = 0;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const size_t i = size_t(y) * kSize + x;
+            const uint8_t* e = &f.extra[i * 4];
+            // Draw buffer 1's pattern, under the host's mask (r and b cleared, g and a kept at 0).
+            extra_changed += e[0] != 51 || e[2] != 153;
+            const float* vel = f.v(x, y);
+            ba_changed += vel[2] != kVelocityClear[2] || vel[3] != kVelocityClear[3];
+            if (f.grass(x, y)) {
+                ++grass;
+                moved += vel[0] != kVelocityClear[0] && std::fabs(vel[0]) < 1.0f;
+            } else {
+                sky_changed += vel[0] != kVelocityClear[0] || vel[1] != kVelocityClear[1];
+            }
+        }
+    }
+    EXPECT_GT(grass, 1000u);
+    EXPECT_EQ(moved, grass) << "grass pixels with a velocity written";
+    EXPECT_EQ(extra_changed, 0u) << "pixels of the other draw buffer grass wrote";
+    EXPECT_EQ(ba_changed, 0u) << "velocity pixels whose .ba grass wrote";
+    EXPECT_EQ(sky_changed, 0u) << "velocity pixels without grass that grass wrote";
+    GLint buffers[3] = {}, binding = 0;
+    for (int i = 0; i < 3; ++i) gl.GetIntegerv(GL_DRAW_BUFFER0 + i, &buffers[i]);
+    EXPECT_EQ(buffers[0], GL_COLOR_ATTACHMENT0);
+    EXPECT_EQ(buffers[1], GL_COLOR_ATTACHMENT2);
+    EXPECT_EQ(buffers[2], GL_COLOR_ATTACHMENT1);
+    gl.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 3, &binding);
+    EXPECT_EQ(GLuint(binding), host_buffer) << "uniform binding 3";
+    GLboolean mask[4] = {};
+    gl.GetBooleani_v(GL_COLOR_WRITEMASK, 1, mask);
+    EXPECT_TRUE(mask[0] == GL_TRUE && mask[1] == GL_FALSE && mask[2] == GL_TRUE && mask[3] == GL_FALSE)
+        << "draw buffer 1's colour mask";
+    EXPECT_TRUE(gl.IsEnabledi(GL_BLEND, 1)) << "draw buffer 1's blend";
+    gl.Disablei(GL_BLEND, 1);
+    gl.ColorMaski(1, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl.DeleteBuffers(1, &host_buffer);
+}
+
+TEST_P(MotionVectorsTest, AViewWithoutItKeepsItsProgramsAndPicture) {
+    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "GL programs";
+    make_field(three_tier_field(48));
+    const double eye[3] = {6.0, 0.8, 0.5}, at[3] = {6.9, 0.0, 8.0};
+    const float none[2] = {0.0f, 0.0f};
+    const grass_view_desc plain = view(eye, at);
+    gl_seen.used.clear();
+    gl_seen.created = 0;
+    const Frame a = draw(plain);
+    const std::set<GLuint> plain_programs = gl_seen.used;
+    ASSERT_GE(plain_programs.size(), 3u) << "a program per tier kind";
+    for (const GLuint program : plain_programs) {
+        EXPECT_EQ(gl.GetUniformBlockIndex(program, "GrassMotion"), GL_INVALID_INDEX)
+            << "program " << program << " of a view without motion vectors declares the GrassMotion block";
+    }
+    const int64_t plain_created = gl_seen.created;
+    grass_view_desc before = plain;
+    before.camera_position[2] -= 0.3;
+    grass_view_motion_desc motion = motion_of(before, none);
+    grass_view_desc moving = plain;
+    moving.next = &motion;
+    gl_seen.used.clear();
+    const Frame b = draw(moving);
+    EXPECT_GE(gl_seen.created - plain_created, 3) << "a motion view compiles its own variants";
+    for (const GLuint program : gl_seen.used) {
+        EXPECT_EQ(plain_programs.count(program), 0u) << "the motion view drew with a plain view's program";
+        EXPECT_NE(gl.GetUniformBlockIndex(program, "GrassMotion"), GL_INVALID_INDEX);
+    }
+    EXPECT_EQ(a.color, b.color) << "the motion view's colour differs";
+    EXPECT_EQ(a.depth, b.depth) << "the motion view's depth differs";
+    const int64_t created = gl_seen.created;
+    gl_seen.used.clear();
+    const Frame c = draw(plain);
+    EXPECT_EQ(gl_seen.created, created) << "a plain view after a motion view made programs";
+    EXPECT_EQ(gl_seen.used, plain_programs);
+    EXPECT_EQ(c.color, a.color);
+}
+
+TEST_P(MotionVectorsTest, BadDescsAreRefusedAndVulkanRefusesIt) {
+    make_field(field_desc(8));
+    const double eye[3] = {1.0, 1.0, -1.0}, at[3] = {1.0, 0.0, 1.0};
+    const float none[2] = {0.0f, 0.0f};
+    const grass_view_desc plain = view(eye, at);
+    const grass_view_motion_desc d = motion_of(plain, none);
+    EXPECT_EQ(grass_default_view_motion_desc().type, GRASS_STRUCT_TYPE_VIEW_MOTION_DESC);
+    EXPECT_EQ(grass_default_view_motion_desc().velocity_attachment, 1u);
+    const auto refused = [&](const grass_view_motion_desc& m, grass_result expected, const std::string& message) {
+        log.clear();
+        grass_view_desc v = plain;
+        v.next = &m;
+        EXPECT_EQ(grass_begin_frame(ctx, &v), expected) << message;
+        EXPECT_NE(log.find(message), std::string::npos) << log;
+        EXPECT_EQ(grass_end_frame(ctx), GRASS_ERROR_INVALID_STATE) << "a refused view begins no frame";
+    };
+    grass_view_motion_desc bad = d;
+    bad.previous_camera_position[1] = NAN;
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->previous_camera_position");
+    bad = d;
+    bad.previous_camera_position[2] = 2e12;
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->previous_camera_position[2] is 2e+12");
+    bad = d;
+    bad.previous_view[5] = INFINITY;
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->previous_view");
+    bad = d;
+    std::memset(bad.previous_view, 0, sizeof bad.previous_view);
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->previous_view has a singular rotation");
+    bad = d;
+    std::memset(bad.previous_projection, 0, sizeof bad.previous_projection);
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->previous_projection is all zero");
+    bad = d;
+    bad.jitter[1] = 3.0f;
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->jitter[1]");
+    bad = d;
+    bad.previous_jitter[0] = -2.5f;
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->previous_jitter[0]");
+    bad = d;
+    bad.previous_time = NAN;
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->previous_time");
+    bad = d;
+    bad.velocity_attachment = 0;
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->velocity_attachment is 0");
+    bad.velocity_attachment = 8;
+    refused(bad, GRASS_ERROR_INVALID_ARGUMENT, "grass_view_motion_desc->velocity_attachment is 8");
+    grass_view_motion_desc second = d;
+    bad = d;
+    bad.next = &second;
+    refused(bad, GRASS_ERROR_WRONG_STRUCT_TYPE, "GRASS_STRUCT_TYPE_VIEW_MOTION_DESC");
+    if (GetParam() == GRASS_BACKEND_VULKAN) {
+        refused(d, GRASS_ERROR_UNSUPPORTED, "the Vulkan backend does not write motion vectors yet");
+        return;
+    }
+    // GL: a framebuffer without a draw buffer at velocity_attachment draws nothing.
+    for (const uint32_t attachment : {3u, 0u}) {
+        grass_view_motion_desc m = d;
+        m.velocity_attachment = attachment == 0 ? 1u : attachment;
+        grass_view_desc v = plain;
+        v.next = &m;
+        gl.BindFramebuffer(GL_FRAMEBUFFER, attachment == 0 ? 0u : fbo_); // 0: the default framebuffer
+        log.clear();
+        ASSERT_EQ(grass_begin_frame(ctx, &v), GRASS_SUCCESS) << log;
+        EXPECT_EQ(grass_gl_render(ctx), GRASS_ERROR_INVALID_STATE);
+        EXPECT_NE(log.find("grass_view_motion_desc->velocity_attachment is " + std::to_string(m.velocity_attachment)),
+                  std::string::npos)
+            << log;
+        EXPECT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, MotionVectorsTest, ::testing::ValuesIn(enabled_backends()),
+                         [](const auto& p) { return backend_name(p.param); });
+
+} // namespace
+} // namespace grass_test

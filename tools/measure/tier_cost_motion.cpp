@@ -1,0 +1,101 @@
+// grass-measure tier-cost --motion: the plain table's rows drawn without and with motion
+// vectors (grass_view_motion_desc), without wind and in wind, into the host's framebuffer
+// with an RG16F velocity target added at draw buffer 1 (GL only: Vulkan refuses the struct).
+#include "tier_cost.hpp"
+
+#include "cli.hpp"
+#include "stats.hpp"
+#include "tool.hpp"
+
+#include <GL/glcorearb.h>
+
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+namespace grass_measure {
+namespace tier_cost {
+
+namespace {
+
+// Adds an RG16F renderbuffer of the host's size and samples to the framebuffer the host
+// left bound, as its draw buffer 1; returns the renderbuffer (0: none could be added).
+GLuint add_velocity_target(grass_host::Host& host, uint32_t width, uint32_t height) {
+    const auto get = reinterpret_cast<PFNGLGETINTEGERVPROC>(host.gl_proc_address("glGetIntegerv"));
+    const auto create = reinterpret_cast<PFNGLCREATERENDERBUFFERSPROC>(host.gl_proc_address("glCreateRenderbuffers"));
+    const auto storage = reinterpret_cast<PFNGLNAMEDRENDERBUFFERSTORAGEMULTISAMPLEPROC>(
+        host.gl_proc_address("glNamedRenderbufferStorageMultisample"));
+    const auto attach =
+        reinterpret_cast<PFNGLNAMEDFRAMEBUFFERRENDERBUFFERPROC>(host.gl_proc_address("glNamedFramebufferRenderbuffer"));
+    const auto buffers =
+        reinterpret_cast<PFNGLNAMEDFRAMEBUFFERDRAWBUFFERSPROC>(host.gl_proc_address("glNamedFramebufferDrawBuffers"));
+    GLint framebuffer = 0, samples = 0;
+    get(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    get(GL_SAMPLES, &samples);
+    if (framebuffer == 0) return 0;
+    GLuint velocity = 0;
+    create(1, &velocity);
+    storage(velocity, samples, GL_RG16F, GLsizei(width), GLsizei(height));
+    attach(GLuint(framebuffer), GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, velocity);
+    const GLenum list[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    buffers(GLuint(framebuffer), 2, list);
+    return velocity;
+}
+
+} // namespace
+
+int run_motion(Rig& rig, const std::vector<Setup>& rows) {
+    const Options& o = rig.options();
+    grass_context* ctx = rig.ctx();
+    if (o.backend != GRASS_BACKEND_GL) {
+        std::fprintf(stderr, "grass-tier-cost --motion: GL only (Vulkan refuses grass_view_motion_desc)\n");
+        return 1;
+    }
+    rig.frame_times(1); // the host binds its framebuffer and leaves it bound
+    const GLuint velocity = add_velocity_target(rig.host(), o.width, o.height);
+    if (velocity == 0) {
+        std::fprintf(stderr, "grass-tier-cost --motion: the host left no framebuffer bound\n");
+        return 1;
+    }
+    // The previous frame: the camera 5 cm to the side, a frame (1/60 s) earlier.
+    grass_view_motion_desc motion = grass_default_view_motion_desc();
+    const grass_view_desc& view = rig.view();
+    for (int c = 0; c < 3; ++c) motion.previous_camera_position[c] = view.camera_position[c] + (c == 0 ? 0.05 : 0.0);
+    std::memcpy(motion.previous_view, view.view, sizeof motion.previous_view);
+    std::memcpy(motion.previous_projection, view.projection, sizeof motion.previous_projection);
+    motion.previous_time = view.time - 1.0 / 60.0;
+    grass_wind_desc calm = grass_default_wind_desc(), wind = grass_default_wind_desc();
+    wind.speed = 4.0f;
+    std::printf("grass-tier-cost --motion: %s (%s), %ux%u, 1024 cells of 0.25 m, frame with no grass %.2f ms (CPU "
+                "%.2f ms)\n\n",
+                grass_sample::backend_name(o.backend), rig.host().device_name().c_str(), o.width, o.height,
+                rig.empty_ms(), rig.empty_cpu_ms());
+    std::printf("| tier | plain per basic cell (us) | motion | wind | wind, motion | CPU: plain (us) | CPU: motion / "
+                "plain | CPU: wind (us) | CPU: wind, motion / wind |\n|---|---|---|---|---|---|---|---|---|\n");
+    for (const Setup& s : rows) {
+        if (!o.tier.empty() && std::strncmp(s.name, o.tier.c_str(), o.tier.size()) != 0) continue;
+        const TierField tf(s, rig.patch());
+        grass_field_id field{};
+        grass_sample::check(grass_create_field(ctx, &tf.desc, &field), "grass_create_field", ctx);
+        double us[4], cpu_us[4];
+        rig.per_cell_variants( // plain, motion, wind, wind with motion
+            4,
+            [&](int variant) {
+                grass_sample::check(grass_set_wind(ctx, variant < 2 ? &calm : &wind), "grass_set_wind", ctx);
+                rig.set_motion(variant % 2 == 1 ? &motion : nullptr);
+            },
+            us, cpu_us);
+        rig.set_motion(nullptr);
+        grass_sample::check(grass_set_wind(ctx, &calm), "grass_set_wind", ctx);
+        std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", s.name, us[0], us[1], us[2],
+                    us[3], cpu_us[0], cpu_us[1] / cpu_us[0], cpu_us[2], cpu_us[3] / cpu_us[2]);
+        grass_sample::check(grass_destroy_field(ctx, field), "grass_destroy_field", ctx);
+    }
+    const auto destroy =
+        reinterpret_cast<PFNGLDELETERENDERBUFFERSPROC>(rig.host().gl_proc_address("glDeleteRenderbuffers"));
+    destroy(1, &velocity);
+    return rig.finish();
+}
+
+} // namespace tier_cost
+} // namespace grass_measure
