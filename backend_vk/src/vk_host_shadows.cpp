@@ -51,7 +51,7 @@ bool HostShadowSets::write(uint32_t slot, uint64_t frame, const FramePlan& plan,
     // The host's view of its map, in the layout it said the map is in during the pass.
     const VkDescriptorBufferInfo block{s.block.buffer, 0, sizeof(ShadowUniforms)};
     VkDescriptorImageInfo map{};
-    map.sampler = pipelines.sampler(plan.shadow.params[0] < 0.0f); // params.x -1: GREATER_EQUAL
+    map.sampler = pipelines.sampler(plan.shadow.params[0] < 0.0f);  // params.x -1: GREATER_EQUAL
     map.imageView = reinterpret_cast<VkImageView>(plan.shadow_map); // non-dispatchable handles are 64-bit
     map.imageLayout = static_cast<VkImageLayout>(plan.shadow_layout);
     VkWriteDescriptorSet writes[2] = {{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET},

@@ -32,7 +32,8 @@ int main(void) {
     /* clang-format on */
     if (receive.shadow_map != (uint64_t)(uintptr_t)engine_shadow_array_view ||
         receive.vk_image_layout != (uint32_t)recorded.newLayout || recorded.image != engine_shadow_image ||
-        !(recorded.dstAccessMask & VK_ACCESS_SHADER_READ_BIT) || !(recorded_stage & VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT)) {
+        !(recorded.dstAccessMask & VK_ACCESS_SHADER_READ_BIT) ||
+        !(recorded_stage & VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT)) {
         fprintf(stderr, "doc-test: the map's barrier and grass_shadow_receive_desc disagree\n");
         return 1;
     }
