@@ -281,6 +281,37 @@ TEST_F(DynamicsApiTest, RangesEnumsNullsAndZeroVectorsAreRefused) {
     EXPECT_EQ(planned_state(), before);
 }
 
+// docs/responsive.md's ranges as a host writes them in C: each bound of grass_blade_mechanics
+// as a float literal is accepted (recovery_time = 0.01f is 0.0099999998, below 0.01: it was
+// refused), and the float next beyond it is refused by name with its value.
+TEST_F(DynamicsApiTest, MechanicsBoundsAsWrittenInCAreAccepted) {
+    struct Bound {
+        const char* name;
+        float grass_blade_mechanics::*field;
+        float lo, hi;
+    };
+    const Bound bounds[] = {{"mechanics->stiffness", &grass_blade_mechanics::stiffness, 0.1f, 1e5f},
+                            {"mechanics->mass", &grass_blade_mechanics::mass, 0.0f, 100.0f},
+                            {"mechanics->wind_response", &grass_blade_mechanics::wind_response, 0.0f, 100.0f},
+                            {"mechanics->trample_depth", &grass_blade_mechanics::trample_depth, 0.0f, 1.0f},
+                            {"mechanics->recovery_time", &grass_blade_mechanics::recovery_time, 0.01f, 1e5f},
+                            {"mechanics->variation", &grass_blade_mechanics::variation, 0.0f, 0.9f}};
+    for (const Bound& b : bounds) {
+        for (int side = 0; side < 2; ++side) {
+            const float at = side == 0 ? b.lo : b.hi;
+            grass_blade_mechanics m = grass_default_blade_mechanics();
+            m.*b.field = at;
+            EXPECT_EQ(grass_set_blade_mechanics(ctx, patch, &m), GRASS_SUCCESS)
+                << b.name << " = " << at << ": " << last_message();
+            m.*b.field = std::nextafter(at, side == 0 ? -1e30f : 1e30f);
+            log.clear();
+            EXPECT_EQ(grass_set_blade_mechanics(ctx, patch, &m), GRASS_ERROR_INVALID_ARGUMENT) << b.name;
+            EXPECT_EQ(last_id(), GRASS_MSG_OUT_OF_RANGE) << b.name;
+            EXPECT_NE(last_message().find(b.name), std::string::npos) << last_message();
+        }
+    }
+}
+
 TEST_F(DynamicsApiTest, TimeIsBoundedAndGoingBackwardsStepsZeroAndWarnsOnce) {
     const double eye[3] = {2, 3, 2};
     grass_view_desc v = view_at(eye, 1.5e9);

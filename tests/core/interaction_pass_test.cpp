@@ -336,7 +336,8 @@ bool all_finite(const float* v, size_t n) {
 
 TEST_F(InteractionPassTest, ExtremesGiveNoNaNAndBoundedWork) {
     // The strongest wind and sources, steps of 10 s, radii 0 and 1e6 m, colliders 1e7 m away
-    // moving at 1e5 m/s, a capsule 2e7 m long; then the camera 1e11 m from the origin.
+    // moving at 1e5 m/s (1e6 m a step: the longest sweep), a capsule 2e7 m long; then the
+    // camera 1e11 m from the origin.
     grass_wind_desc w = grass_default_wind_desc();
     w.speed = 1e3f;
     w.gust_strength = 4.0f;
@@ -351,7 +352,7 @@ TEST_F(InteractionPassTest, ExtremesGiveNoNaNAndBoundedWork) {
     w.sources = &src;
     w.source_count = 1;
     ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << last_message();
-    std::vector<grass_collider> c = {sphere(2, 0, 2, 0.0f), sphere(2, 0, 2, 1e6f, 1e5f, -1e5f, 1e5f),
+    std::vector<grass_collider> c = {sphere(2, 0, 2, 0.0f), sphere(2, 0, 2, 1e6f, 5e4f, -5e4f, 5e4f),
                                      sphere(1e7, 0, 2, 3.0f, 1e5f), sphere(-1e7, 1e7, -1e7, 1e6f),
                                      sphere(3, 0.1, 3, 0.3f, 2.0f)};
     grass_collider capsule = sphere(-1e7, 0.2, 2, 0.5f, 0.0f, 0.0f, 1e5f);
@@ -432,6 +433,157 @@ TEST_F(InteractionPassTest, ACrowdOf10000CollidersIsBinnedCheaply) {
                 "texel-collider tests\n",
                 begin_ms / frames, plan_ms / frames, still_ms / frames, frames, ip.tile_colliders[0].size(),
                 ip.tile_colliders[1].size(), pass_ms, tests);
+}
+
+// What the pass visits (the frame time's proxy): per texel, its tile's colliders.
+size_t pass_visits(const grass::InteractionPlan& ip) {
+    size_t visits = 0;
+    for (uint32_t l = 0; l < ip.levels; ++l) {
+        const uint32_t tiles = ip.level[l].counts[2], texels = ip.level[l].counts[1] * ip.level[l].counts[1];
+        for (uint32_t t = 0; t < tiles * tiles; ++t) {
+            visits += size_t(ip.tile_offsets[l][t + 1] - ip.tile_offsets[l][t]) * texels;
+        }
+    }
+    return visits;
+}
+
+size_t most_in_a_tile(const grass::InteractionPlan& ip, uint32_t l) {
+    size_t most = 0;
+    for (size_t t = 0; t + 1 < ip.tile_offsets[l].size(); ++t) {
+        most = std::max<size_t>(most, ip.tile_offsets[l][t + 1] - ip.tile_offsets[l][t]);
+    }
+    return most;
+}
+
+// docs/responsive.md "Colliders per tile": spheres stacked over one spot, at shuffled heights.
+// Beyond GRASS_MAX_COLLIDERS_PER_TILE a tile lists the cap's lowest-reaching ones (in index
+// order), the pass's visits are bounded by the cap and the map is what every collider would
+// press (the deepest wins a texel); GRASS_MSG_COLLIDER_TILE_CAP is said once over the frames.
+// At the cap itself nothing is cut and nothing said. Without the cap the visits grew with the
+// stack: 65,536 spheres over one spot took 39.7 s a frame on llvmpipe (issue 35).
+TEST_F(InteractionPassTest, StackedCollidersBeyondTheCapAreBoundedAndSaidOnce) {
+    const uint32_t cap = GRASS_MAX_COLLIDERS_PER_TILE;
+    for (const uint32_t count : {cap, cap + 300}) {
+        SCOPED_TRACE(count);
+        remake_with<RecordingBackend>(&ctx);
+        patch = make_patch();
+        grass_field_desc d = one_tier_field(patch, 16, &tier, &band);
+        ASSERT_EQ(grass_create_field(ctx, &d, &field), GRASS_SUCCESS) << last_message();
+        std::vector<grass_collider> stack(count);
+        std::vector<double> height(count);
+        for (uint32_t k = 0; k < count; ++k) {
+            height[k] = 0.1 + 0.0004 * double((k * 7919u) % count); // every height once, shuffled
+            stack[k] = sphere(2.3, height[k], 2.4, 0.3f);
+        }
+        ASSERT_EQ(grass_set_colliders(ctx, stack.data(), count), GRASS_SUCCESS);
+        log.clear();
+        for (int f = 0; f < 3; ++f) ASSERT_EQ(frame(1.0 + f / 30.0), GRASS_SUCCESS) << last_message();
+        int said = 0;
+        for (const LogRecord& r : log) said += r.id == GRASS_MSG_COLLIDER_TILE_CAP ? 1 : 0;
+        const grass::InteractionPlan& ip = plan().interaction;
+        EXPECT_EQ(plan().stats.colliders_in_map, count);
+        // The footprint (0.6 m) reaches at most 2 x 2 tiles of a level.
+        size_t tiles_reached = 0;
+        for (uint32_t l = 0; l < 2; ++l) {
+            for (size_t t = 0; t + 1 < ip.tile_offsets[l].size(); ++t) {
+                tiles_reached += ip.tile_offsets[l][t + 1] > ip.tile_offsets[l][t] ? 1 : 0;
+            }
+        }
+        ASSERT_GE(tiles_reached, 2u);
+        ASSERT_LE(tiles_reached, 8u);
+        const size_t visits = pass_visits(ip), uncapped = tiles_reached * size_t(count) * 256;
+        std::printf("[ cap      ] %u stacked colliders: %zu tiles reached, %zu collider visits of the pass (%zu "
+                    "without the cap)\n",
+                    count, tiles_reached, visits, uncapped);
+        if (count <= cap) {
+            EXPECT_EQ(said, 0) << last_message();
+            EXPECT_EQ(visits, uncapped); // nothing cut
+            for (uint32_t l = 0; l < 2; ++l) EXPECT_EQ(most_in_a_tile(ip, l), count) << l;
+            continue;
+        }
+        EXPECT_EQ(said, 1);
+        EXPECT_LE(visits, tiles_reached * size_t(cap) * 256);
+        EXPECT_LT(visits, uncapped);
+        // Each tile: the cap's lowest-reaching colliders, in index order.
+        std::vector<uint32_t> by_height(count);
+        for (uint32_t k = 0; k < count; ++k) by_height[k] = k;
+        std::sort(by_height.begin(), by_height.end(), [&](uint32_t a, uint32_t b) { return height[a] < height[b]; });
+        std::vector<uint32_t> lowest(by_height.begin(), by_height.begin() + cap);
+        std::sort(lowest.begin(), lowest.end());
+        for (uint32_t l = 0; l < 2; ++l) {
+            EXPECT_EQ(most_in_a_tile(ip, l), cap) << l;
+            for (size_t t = 0; t + 1 < ip.tile_offsets[l].size(); ++t) {
+                const auto first = ip.tile_colliders[l].begin() + ip.tile_offsets[l][t];
+                const auto last = ip.tile_colliders[l].begin() + ip.tile_offsets[l][t + 1];
+                if (first == last) continue;
+                EXPECT_TRUE(std::equal(first, last, lowest.begin(), lowest.end())) << "level " << l << " tile " << t;
+            }
+        }
+        // The map as every collider would press it: the same, bit for bit.
+        grass::InteractionPlan every = ip;
+        std::vector<InteractionTexel> kept[2], all[2];
+        for (uint32_t l = 0; l < 2; ++l) {
+            const uint32_t tiles = ip.level[l].counts[2] * ip.level[l].counts[2];
+            every.tile_colliders[l].clear();
+            for (uint32_t t = 0; t < tiles; ++t) {
+                every.tile_offsets[l][t] = uint32_t(every.tile_colliders[l].size());
+                if (ip.tile_offsets[l][t + 1] == ip.tile_offsets[l][t]) continue;
+                for (uint32_t i = 0; i < count; ++i) every.tile_colliders[l].push_back(i);
+            }
+            every.tile_offsets[l][tiles] = uint32_t(every.tile_colliders[l].size());
+            kept[l] = all[l] = map[l];
+            grass::run_interaction_pass(ip, l, kept[l].data());
+            grass::run_interaction_pass(every, l, all[l].data());
+            int contacts = 0;
+            for (const auto& t : kept[l]) contacts += t.age == 0.0f ? 1 : 0;
+            EXPECT_GT(contacts, l == 0 ? 100 : 0) << l;
+            EXPECT_EQ(std::memcmp(kept[l].data(), all[l].data(), kept[l].size() * sizeof(InteractionTexel)), 0) << l;
+        }
+        EXPECT_NE(last_message().find("GRASS_MAX_COLLIDERS_PER_TILE"), std::string::npos) << last_message();
+        EXPECT_NE(last_message().find(std::to_string(count)), std::string::npos) << last_message();
+    }
+}
+
+// docs/responsive.md: a sweep of at most 1e6 m a step keeps its path (a sphere at 1e5 m/s
+// over 10 s presses every texel of the row under its path across the fine level's window);
+// a longer one is refused by grass_begin_frame and grass_begin_host_frame, naming the
+// collider, its velocity and the sweep, and the clock and map stay as they were. Sweeps near
+// 1e7 m collapsed to their end point in the float pass (issue 35).
+TEST_F(InteractionPassTest, ASweepLongerThan1e6MetresIsRefusedByName) {
+    const double eye[3] = {2.0, 3.0, 2.0};
+    grass_collider fast = sphere(2.0, 0.1, 2.5, 0.3f, 1e5f, 0.0f, 0.0f);
+    ASSERT_EQ(grass_set_colliders(ctx, &fast, 1), GRASS_SUCCESS);
+    ASSERT_EQ(frame(0.0, eye), GRASS_SUCCESS);
+    ASSERT_EQ(frame(10.0, eye), GRASS_SUCCESS) << last_message(); // 1e6 m: the bound itself
+    int row = 0, pressed_row = 0;
+    for (double x = -4.0; x <= 2.0; x += 0.05) {
+        const double p[3] = {x, 0.0, 2.5};
+        const InteractionTexel* t = read(plan(), map[0], 0, eye, p);
+        ASSERT_NE(t, nullptr);
+        row += 1;
+        pressed_row += pressed(*t) ? 1 : 0;
+    }
+    EXPECT_GT(row, 100);
+    EXPECT_EQ(pressed_row, row) << "the path of a 1e6 m sweep has gaps";
+    const std::vector<InteractionTexel> before = map[0];
+    log.clear();
+    EXPECT_EQ(frame(20.5, eye), GRASS_ERROR_INVALID_ARGUMENT); // 1.05e6 m
+    EXPECT_EQ(last_id(), GRASS_MSG_OUT_OF_RANGE);
+    EXPECT_NE(last_message().find("grass_begin_frame: colliders[0].velocity is (100000, 0, 0)"), std::string::npos)
+        << last_message();
+    EXPECT_NE(last_message().find("sweeps 1.05e+06 m"), std::string::npos) << last_message();
+    grass_frame_desc host = grass_default_frame_desc();
+    host.frame_index = 1000;
+    host.time = 20.5;
+    EXPECT_EQ(grass_begin_host_frame(ctx, &host), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(last_message().find("grass_begin_host_frame: colliders[0].velocity"), std::string::npos)
+        << last_message();
+    EXPECT_EQ(std::memcmp(before.data(), map[0].data(), before.size() * sizeof(InteractionTexel)), 0);
+    // The host says the collider jumped: the frame steps from the last begun one.
+    fast.velocity[0] = 0.0f;
+    ASSERT_EQ(grass_set_colliders(ctx, &fast, 1), GRASS_SUCCESS);
+    ASSERT_EQ(frame(20.5, eye), GRASS_SUCCESS) << last_message();
+    EXPECT_EQ(plan().stats.time_step, 10.5);
 }
 
 } // namespace

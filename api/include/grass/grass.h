@@ -307,6 +307,10 @@ typedef enum grass_message_id {
      * bound draw framebuffer is the default one, or its draw buffer velocity_attachment is
      * GL_NONE), refused with GRASS_ERROR_INVALID_STATE before anything is drawn. */
     GRASS_MSG_VELOCITY_TARGET = 412,
+    /* 0.5: warning: more colliders than GRASS_MAX_COLLIDERS_PER_TILE (1024) reached one tile of the
+     * interaction map (docs/responsive.md): the tile keeps those reaching lowest, the others
+     * press nothing there. Said once per context; the frame goes on. */
+    GRASS_MSG_COLLIDER_TILE_CAP = 413,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501
@@ -1348,10 +1352,15 @@ typedef struct grass_collider {
 } grass_collider;
 
 #define GRASS_MAX_COLLIDERS 65536
+/* 0.5: the most colliders one tile of the interaction map (16 x 16 texels) tests: a texel of
+ * the pass tests at most this many. Of more, the tile keeps those whose lowest point over the
+ * step is lowest (they press deepest), and warns GRASS_MSG_COLLIDER_TILE_CAP once. */
+#define GRASS_MAX_COLLIDERS_PER_TILE 1024
 
 /* Sets the colliders of the next frames (copied): they press the grass at each following
  * grass_begin_frame until replaced; count 0 clears them (trails recover). The work is
- * binned by the map's tiles: it grows with the area colliders touch, not with the field.
+ * binned by the map's tiles: it grows with the area colliders touch, not with the field,
+ * and a tile tests at most GRASS_MAX_COLLIDERS_PER_TILE of them.
  * 0 .. GRASS_MAX_COLLIDERS. */
 GRASS_API grass_result grass_set_colliders(grass_context* context, const grass_collider* colliders, uint32_t count);
 

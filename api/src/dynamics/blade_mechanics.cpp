@@ -31,7 +31,7 @@ grass_result validate_blade_mechanics(Log* log, const char* fn, const char* name
     for (const Rule& r : rules) {
         char arg[96];
         std::snprintf(arg, sizeof arg, "%s->%s", name, r.field);
-        GRASS_TRY(check_range(log, fn, arg, r.value, r.lo, r.hi));
+        GRASS_TRY(check_float_range(log, fn, arg, r.value, r.lo, r.hi)); // 0.01f is in range
     }
     return GRASS_SUCCESS;
 }

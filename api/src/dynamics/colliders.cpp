@@ -51,6 +51,43 @@ TileRect tiles_of(const InteractionLevelUniforms& level, const double lo[2], con
 
 bool empty(const TileRect& r) { return r.x0 > r.x1 || r.z0 > r.z1; }
 
+// Cuts every tile list of one level to kMaxCollidersPerTile: the colliders reaching lowest
+// (`low`, ties: the lower index) stay, in index order, and the lists are packed again.
+// Below the cap nothing moves. Updates scratch's overflow counts.
+void cap_tiles(uint32_t level, const Vector<float>& low, Vector<uint32_t>* offsets_io, Vector<uint32_t>* list_io,
+               DynamicsState* scratch) {
+    Vector<uint32_t>& offsets = *offsets_io;
+    Vector<uint32_t>& list = *list_io;
+    bool over = false;
+    for (size_t t = 0; t + 1 < offsets.size(); ++t) {
+        const uint32_t count = offsets[t + 1] - offsets[t];
+        if (count > scratch->most_in_tile) {
+            scratch->most_in_tile = count;
+            scratch->most_level = level;
+        }
+        over = over || count > kMaxCollidersPerTile;
+    }
+    if (!over) return;
+    const auto lower = [&low](uint32_t a, uint32_t b) { return low[a] < low[b] || (low[a] == low[b] && a < b); };
+    uint32_t write = 0, begin = offsets[0];
+    for (size_t t = 0; t + 1 < offsets.size(); ++t) {
+        const uint32_t end = offsets[t + 1];
+        uint32_t keep = end - begin;
+        if (keep > kMaxCollidersPerTile) {
+            keep = kMaxCollidersPerTile;
+            std::nth_element(list.begin() + begin, list.begin() + begin + keep, list.begin() + end, lower);
+            std::sort(list.begin() + begin, list.begin() + begin + keep);
+            scratch->full_tiles += 1;
+        }
+        offsets[t] = write;
+        std::copy(list.begin() + begin, list.begin() + begin + keep, list.begin() + write); // write <= begin
+        write += keep;
+        begin = end;
+    }
+    offsets.back() = write;
+    list.resize(write);
+}
+
 // bin_colliders: whether `c` was at `before` (the last frame) where its sweep starts now.
 bool continues_passage(const grass_collider& c, const grass_collider* before, double dt) {
     if (before == nullptr || before->shape != c.shape) return false;
@@ -102,11 +139,29 @@ grass_result validate_colliders(Log* log, const char* fn, const grass_collider* 
     return GRASS_SUCCESS;
 }
 
+grass_result check_collider_sweeps(Log* log, const char* fn, const DynamicsState& state, double time) {
+    const double dt = state.has_time ? time - state.previous_time : 0.0; // as plan_dynamics steps
+    if (!(dt > 0.0)) return GRASS_SUCCESS;
+    for (size_t i = 0; i < state.colliders.size(); ++i) {
+        const float* v = state.colliders[i].velocity;
+        const double speed = std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]);
+        if (speed * dt <= kMaxColliderSweep) continue;
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: colliders[%zu].velocity is (%g, %g, %g) m/s: over the time step of %.9g s it sweeps %g "
+                         "m; a sweep must be at most %g m a step (set the colliders again: a collider that jumped "
+                         "has velocity 0)",
+                         fn, i, double(v[0]), double(v[1]), double(v[2]), dt, speed * dt, kMaxColliderSweep);
+    }
+    return GRASS_SUCCESS;
+}
+
 uint64_t bin_colliders(const Vector<grass_collider>& colliders, const Vector<grass_collider>& previous,
                        const MapFrame& frame, double dt, DynamicsState* scratch, InteractionPlan* plan) {
     const uint32_t levels = plan->levels;
     Vector<TileRect>& rects = scratch->tile_rects;
     rects.clear();
+    scratch->collider_low.clear();
+    scratch->full_tiles = scratch->most_in_tile = scratch->most_level = 0;
     plan->colliders.clear();
     for (size_t i = 0; i < colliders.size(); ++i) {
         const grass_collider& c = colliders[i];
@@ -138,6 +193,9 @@ uint64_t bin_colliders(const Vector<grass_collider>& colliders, const Vector<gra
         }
         if (!in_map) continue;
         plan->colliders.push_back(g);
+        const double lower_end = std::min(g.a[2], g.b[2]); // the lower end now, then a step ago
+        const double low = std::min(double(lower_end), lower_end - double(g.velocity[2]) * dt);
+        scratch->collider_low.push_back(static_cast<float>(low - c.radius));
         rects.push_back(r[0]);
         rects.push_back(r[1]);
     }
@@ -163,6 +221,7 @@ uint64_t bin_colliders(const Vector<grass_collider>& colliders, const Vector<gra
                 for (int32_t x = r.x0; x <= r.x1; ++x) plan->tile_colliders[l][fill[size_t(z) * tiles + x]++] = i;
             }
         }
+        cap_tiles(l, scratch->collider_low, &offsets, &plan->tile_colliders[l], scratch);
     }
     return n;
 }

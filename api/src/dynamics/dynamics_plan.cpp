@@ -1,5 +1,6 @@
 #include "dynamics/dynamics_plan.hpp"
 
+#include "dynamics/colliders.hpp"
 #include "dynamics/interaction_map.hpp"
 #include "dynamics/wind.hpp"
 
@@ -41,6 +42,14 @@ DynamicsFrame plan_dynamics(DynamicsState* state_out, FramePlan* plan_out, Log* 
     for (int c = 0; c < 3; ++c) out.map_up[c] = axes.up[c];
     if (out.wind) pack_wind(state.wind, view.camera_position, view.time, axes.up, &plan.frame);
     plan_interaction(state, view.camera_position, dt, &state, &plan, &state.pending_map);
+    if (state.full_tiles > 0 && !state.tile_cap_said) {
+        state.tile_cap_said = true;
+        log->warn(GRASS_MSG_COLLIDER_TILE_CAP,
+                  "grass_begin_frame: %u colliders reach one tile of the interaction map's level %u (%u tiles over the "
+                  "cap this frame); a tile tests at most GRASS_MAX_COLLIDERS_PER_TILE (%u): it keeps those reaching "
+                  "lowest, the others press nothing there (said once per context)",
+                  state.most_in_tile, state.most_level, state.full_tiles, kMaxCollidersPerTile);
+    }
     out.map = plan.interaction.levels > 0;
     if (out.wind || out.map) plan.frame.wind_shape[3] = static_cast<float>(dt);
     return out;

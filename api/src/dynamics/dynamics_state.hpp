@@ -46,6 +46,14 @@ struct DynamicsState {
     // rectangles of the colliders in the map, two per collider, and per-tile write cursors.
     Vector<TileRect> tile_rects;
     Vector<uint32_t> tile_fill;
+    // Per collider in the map: its lowest point over the step (the cap's key, colliders.hpp).
+    Vector<float> collider_low;
+    // The binning's overflow at this frame (kMaxCollidersPerTile): tiles over the cap, the
+    // most colliders that reached one tile and its level; and whether it was said.
+    uint32_t full_tiles = 0;
+    uint32_t most_in_tile = 0;
+    uint32_t most_level = 0;
+    bool tile_cap_said = false; // GRASS_MSG_COLLIDER_TILE_CAP: once per context
 };
 
 } // namespace grass

@@ -2,6 +2,7 @@
 // frame, validate and plan each view, end; stats.
 #include "context/context.hpp"
 #include "context/invariants.hpp"
+#include "dynamics/colliders.hpp"
 #include "dynamics/dynamics_plan.hpp"
 #include "entry/api_motion.hpp"
 #include "foundation/abi_sizes.hpp"
@@ -441,6 +442,7 @@ GRASS_API grass_result grass_begin_frame(grass_context* context, const grass_vie
         frame.frame_index = context->host_frame.index + 1;
         frame.completed_frame_index = context->host_frame.completed;
         frame.time = view->time;
+        GRASS_TRY(grass::check_collider_sweeps(context, fn, context->dynamics, frame.time));
         GRASS_TRY(grass::begin_host_frame(context, fn, frame, true));
         // A view that fails to plan (an error, or std::bad_alloc on its way to guarded) leaves
         // no frame begun, as before grass_begin_host_frame existed.
@@ -464,6 +466,7 @@ GRASS_API grass_result grass_begin_host_frame(grass_context* context, const gras
         GRASS_TRY(grass::check_gpu_current(context, fn));
         GRASS_TRY(grass::refuse_in_frame(context, fn));
         GRASS_TRY(grass::validate_frame(context, fn, frame));
+        GRASS_TRY(grass::check_collider_sweeps(context, fn, context->dynamics, frame->time));
         return grass::begin_host_frame(context, fn, *frame, false);
     });
 }

@@ -35,6 +35,13 @@ grass_result check_range(Log* log, const char* function, const char* name, doubl
                      function, name, value, lo, hi);
 }
 
+grass_result check_float_range(Log* log, const char* function, const char* name, float value, double lo, double hi) {
+    GRASS_TRY(check_finite(log, function, name, value));
+    if (value >= static_cast<float>(lo) && value <= static_cast<float>(hi)) return GRASS_SUCCESS;
+    return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE, "%s: %s is %.9g; it must be in [%g, %g]",
+                     function, name, static_cast<double>(value), lo, hi); // all digits: 0.00999999884 is not 0.01
+}
+
 grass_result check_range_above(Log* log, const char* function, const char* name, double value, double lo, double hi) {
     GRASS_TRY(check_finite(log, function, name, value));
     if (value > lo && value <= hi) return GRASS_SUCCESS;

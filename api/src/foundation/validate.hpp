@@ -25,6 +25,10 @@ grass_result check_not_null(Log* log, const char* function, const char* name, co
 grass_result check_finite(Log* log, const char* function, const char* name, double value);
 // lo <= value <= hi, and finite.
 grass_result check_range(Log* log, const char* function, const char* name, double value, double lo, double hi);
+// A float field against a range documented in decimals: float(lo) <= value <= float(hi), and
+// finite. The bounds are rounded to the nearest float as C rounds the literal `0.01f`, so the
+// documented value as written in C is accepted (0.01f is 0.0099999998, below 0.01).
+grass_result check_float_range(Log* log, const char* function, const char* name, float value, double lo, double hi);
 // 0 <= lo <= hi <= limit for a min/max pair.
 grass_result check_min_max(Log* log, const char* function, const char* name_min, const char* name_max, double lo,
                            double hi, double limit);
