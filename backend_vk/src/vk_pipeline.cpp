@@ -37,6 +37,8 @@ static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_
 static_assert(offsetof(TierInstance, cell) == 16 && offsetof(TierInstance, terrain) == 32 && sizeof(TierInstance) == 48,
               "instance layout of blade.vert");
 
+} // namespace
+
 PipelineShape blade_shape(SpirvVariant variant) {
     VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertex_input.vertexBindingDescriptionCount = 2;
@@ -48,6 +50,8 @@ PipelineShape blade_shape(SpirvVariant variant) {
     const Spirv frag = spirv(Shader::blade_frag, variant);
     return PipelineShape{vert.code, vert.size, frag.code, frag.size, vertex_input, true, "the blade pipelines"};
 }
+
+namespace {
 
 // The locations of the vertex shader's inputs (bit l: location l), read from its SPIR-V:
 // the Input variables of its entry point with a Location decoration. A pipeline supplies
@@ -126,6 +130,18 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
                                    const char** what) {
     if (has_variant(variant, depth_test)) return true;
     const bool depth_pass = (variant.features & kFeatureDepthPass) != 0;
+    if (variant.features & kFeatureMotion) {
+        // The core refuses a motion view without the host's velocity target and gives a
+        // depth pass no motion draw.
+        if (depth_pass || velocity_target_.velocity_attachment == 0) {
+            *what = "a pipeline that writes motion vectors (a depth pass, or no grass_vk_velocity_target_desc)";
+            return false;
+        }
+        SpirvVariant modules;
+        modules.responsive = (variant.features & kBladeCurveFeatures) != 0;
+        modules.indexed_blocks = target_.indexed_blocks;
+        return motion_.create_variant(velocity_target_, set_layout_, variant, modules, depth_test, failure, what);
+    }
     if (depth_pass) {
         // The core refuses a depth view without the host's depth target, and a depth view
         // with debug views or without the depth test (check_pass).
@@ -185,6 +201,7 @@ void BladePipeline::destroy() {
         if (p) fn_.vkDestroyPipeline(device_, p, fn_.callbacks());
     }
     depth_pipelines_.clear();
+    motion_.destroy();
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
     if (sampler_) fn_.vkDestroySampler(device_, sampler_, fn_.callbacks());
@@ -358,12 +375,19 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
     depth.depthCompareOp = target.depth_greater ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
     depth.maxDepthBounds = 1.0f;
 
-    VkPipelineColorBlendAttachmentState attachment{};
-    attachment.colorWriteMask =
+    // The lit colour at attachment 0, opaque; a velocity target's .rg (unblended), any other
+    // colour attachment of its pass untouched (write mask 0).
+    const uint32_t color_count = target.depth_only ? 0 : target.color_count < 8 ? target.color_count : 8;
+    VkPipelineColorBlendAttachmentState attachments[8] = {};
+    attachments[0].colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    if (target.velocity_attachment != 0 && target.velocity_attachment < color_count)
+        attachments[target.velocity_attachment].colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT;
+    VkFormat formats[8] = {target.color_format};
+    for (uint32_t i = 1; i < color_count; ++i) formats[i] = target.other_formats[i - 1];
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = target.depth_only ? 0 : 1; // a depth-only target has no colour attachment
-    blend.pAttachments = target.depth_only ? nullptr : &attachment;
+    blend.attachmentCount = color_count; // a depth-only target has no colour attachment
+    blend.pAttachments = color_count ? attachments : nullptr;
 
     const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
                                              VK_DYNAMIC_STATE_DEPTH_BIAS};
@@ -375,8 +399,8 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
     // for the render pass.
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
     rendering.viewMask = target.view_mask; // stereo: both eyes in one pass (0: mono)
-    rendering.colorAttachmentCount = target.depth_only ? 0 : 1;
-    rendering.pColorAttachmentFormats = target.depth_only ? nullptr : &target.color_format;
+    rendering.colorAttachmentCount = color_count;
+    rendering.pColorAttachmentFormats = color_count ? formats : nullptr;
     rendering.depthAttachmentFormat = target.depth_format;
     if (format_has_stencil(target.depth_format)) rendering.stencilAttachmentFormat = target.depth_format;
 

@@ -11,7 +11,9 @@
 #include "foundation/shader_interface.hpp"
 #include "foundation/shader_variants.hpp"
 #include "vk_functions.hpp"
+#include "vk_motion_pipelines.hpp"
 #include "vk_result.hpp"
+#include "vk_spirv.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -66,7 +68,8 @@ static_assert(kPipelineBlade == static_cast<uint32_t>(kShaderBlades) &&
 // kFeatureWind, kFeatureInteraction, kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView.
 // The 11th, kFeatureDepthPass, marks a depth view's draws: their pipelines (blades, volume,
 // image; depth-tested) live in a table of their own, made on the first depth pass, so the
-// colour table holds the colour masks alone.
+// colour table holds the colour masks alone; the 13th, kFeatureMotion, a motion view's draws
+// (MotionPipelines, vk_motion_pipelines.hpp).
 constexpr uint32_t kColourFeatureMasks = kFeatureDepthPass;
 constexpr uint32_t kDepthPipelineKinds = 3; // blades, volume, image: a depth pass draws no debug view
 
@@ -85,6 +88,13 @@ struct PipelineTarget {
     // A depth pass's target (grass_vk_depth_pass_desc): no colour attachment (color_format
     // unused), no colour writes, no alpha to coverage, the depth bias dynamic (vkCmdSetDepthBias).
     bool depth_only = false;
+    // A pass with a velocity target (grass_vk_velocity_target_desc): `color_count` colour
+    // attachments (attachment 0 color_format, attachment i other_formats[i - 1] under dynamic
+    // rendering), the velocity at `velocity_attachment` (written .rg unblended), every other
+    // but 0 with write mask 0. 1 and 0: the plain target.
+    uint32_t color_count = 1;
+    uint32_t velocity_attachment = 0;
+    VkFormat other_formats[7] = {};
 };
 
 // The descriptor type of the Frame and Field blocks (dynamic offsets: one per draw).
@@ -104,6 +114,9 @@ struct PipelineShape {
     bool alpha_to_coverage;                            // only with multisampling
     const char* name;                                  // for *what: "the blade pipelines"
 };
+
+// The blade pipelines' shape of the modules `variant` (vertex input: patch vertices and instances).
+PipelineShape blade_shape(SpirvVariant variant);
 
 // The vertex input of the shaders that read instances only (locations 5, 6 and 7 on
 // binding 0: debug_tiers, volume and image): its arrays live as long as the program.
@@ -129,7 +142,8 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
 class BladePipeline {
 public:
     BladePipeline(const Functions& functions, VkDevice device, HostAllocator* host)
-        : fn_(functions), device_(device), depth_pipelines_(StlAllocator<VkPipeline>(host)) {}
+        : fn_(functions), device_(device), depth_pipelines_(StlAllocator<VkPipeline>(host)),
+          motion_(functions, device, host) {}
     ~BladePipeline() { destroy(); }
     BladePipeline(const BladePipeline&) = delete;
     BladePipeline& operator=(const BladePipeline&) = delete;
@@ -140,6 +154,10 @@ public:
     // The depth-only target of depth views (grass_vk_depth_pass_desc; target.depth_only),
     // before any depth variant is made. Without it create_variant refuses kFeatureDepthPass.
     void set_depth_target(const PipelineTarget& target) { depth_target_ = target; }
+    // The colour attachments of motion views (grass_vk_velocity_target_desc; its
+    // velocity_attachment not 0), before any motion variant is made. Without it
+    // create_variant refuses kFeatureMotion.
+    void set_velocity_target(const PipelineTarget& target) { velocity_target_ = target; }
     void destroy();
 
     // Makes the pipeline of `variant` (foundation/shader_variants.hpp) with the depth test
@@ -152,6 +170,7 @@ public:
     // The depth-tested pipelines of every kind for `features` (a field's maps: upload_field).
     bool create_variants(uint32_t features, VkFailure* failure, const char** what);
     bool has_variant(const ShaderVariant& v, bool depth_test) const {
+        if (v.features & kFeatureMotion) return motion_.has_variant(v, depth_test);
         if (v.features & kFeatureDepthPass) return depth_test && depth_slot(v.program, v.features) != nullptr;
         return v.features < kColourFeatureMasks &&
                pipelines_[v.features][v.program][depth_test ? 0 : 1] != VK_NULL_HANDLE;
@@ -159,8 +178,11 @@ public:
 
     VkDescriptorSetLayout set_layout() const { return set_layout_; }
     VkPipelineLayout layout() const { return layout_; }
+    // The motion views' pipelines and layout (set 1: the GrassMotion block).
+    const MotionPipelines& motion() const { return motion_; }
     // The pipeline of `kind` for `features` (has_variant(features, depth_test)).
     VkPipeline pipeline(PipelineKind kind, uint32_t features, bool depth_test) const {
+        if (features & kFeatureMotion) return motion_.pipeline(kind, features, depth_test);
         if (features & kFeatureDepthPass) return *depth_slot(kind, features);
         return pipelines_[features][kind][depth_test ? 0 : 1];
     }
@@ -192,6 +214,8 @@ private:
     // until the first depth variant; depth_target_.depth_only: the host gave a depth target.
     PipelineTarget depth_target_;
     Vector<VkPipeline> depth_pipelines_;
+    PipelineTarget velocity_target_; // velocity_attachment 0: the host gave no velocity target
+    MotionPipelines motion_;         // empty until the first motion view
 };
 
 } // namespace grass::vk

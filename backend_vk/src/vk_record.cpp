@@ -270,6 +270,16 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
         if (!debug_view && own_set(d)) own_sets += 1;
     }
     if (draw_count == 0) return GRASS_SUCCESS;
+    // A motion view (its draws' pipelines made above): this view's GrassMotion block in set 1
+    // of the motion layout.
+    const bool motion = plan.motion && !debug_view;
+    if (motion) {
+        VkFailure failure;
+        const char* what = "";
+        if (!motion_blocks_.write(vs, frame_, plan, pipeline_.motion().set_layout(), &failure, &what))
+            return fail(function, what, failure);
+    }
+    const VkPipelineLayout layout = motion ? pipeline_.motion().layout() : pipeline_.layout();
 
     // The volume and image draws pair the field's design maps with the patch's slices, and
     // responsive draws with the patch's blade curves and the interaction map: a fresh set
@@ -305,7 +315,11 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
         // The index the shaders read the Frame and Field blocks at (vk_spirv.hpp); it holds
         // for every pipeline of the layout, whatever is bound after it.
         const uint32_t block_index = 0;
-        fn_.vkCmdPushConstants(cmd, pipeline_.layout(), kBlockIndexStages, 0, kBlockIndexBytes, &block_index);
+        fn_.vkCmdPushConstants(cmd, layout, kBlockIndexStages, 0, kBlockIndexBytes, &block_index);
+    }
+    if (motion) {
+        const VkDescriptorSet set = motion_blocks_.set(vs);
+        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kMotionSet, 1, &set, 0, nullptr);
     }
 
     const VkBuffer instances = ring_.instance_buffer(vs);
@@ -313,7 +327,7 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
     const auto bind_set = [&](uint32_t draw, VkDescriptorSet set) {
         // Every draw has its Field block, whatever its kind.
         const uint32_t offsets[2] = {ring_.frame_offset(), ring_.field_offset(draw)};
-        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), 0, 1, &set, 2, offsets);
+        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 2, offsets);
     };
 
     if (debug_view) {
