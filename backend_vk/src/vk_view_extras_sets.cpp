@@ -88,9 +88,10 @@ bool ViewExtrasSets::write(uint32_t slot, uint64_t frame, const FramePlan& plan,
         std::memcpy(s.motion.mapped, &plan.motion_uniforms, sizeof(MotionUniforms));
         if (!memory_.flush(s.motion, 0, sizeof(MotionUniforms), failure)) return false;
     }
-    // Both bindings of set 1, always: lavapipe (Mesa 22.3) reads every descriptor of a set it
-    // binds, and crashed on one left unwritten. The block the view's pipelines do not use
-    // points at the other (its range within that buffer; never read).
+    // Both bindings of set 1, always, so that no set grass binds holds a descriptor left
+    // unwritten (lavapipe, Mesa 22.3, crashed on a set whose unused map binding was: see
+    // vk_view_extras.hpp). The block the view's pipelines do not use points at the other
+    // (its range within that buffer; never read).
     const Buffer& shadow = plan.shadow_receive ? s.shadow : s.motion;
     const Buffer& motion = plan.motion ? s.motion : s.shadow;
     const VkDescriptorBufferInfo shadow_block{shadow.buffer, 0,

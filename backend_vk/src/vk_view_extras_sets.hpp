@@ -4,8 +4,8 @@
 // (ShadowUniforms) of a view that receives the host's shadow maps and the GrassMotion block
 // (MotionUniforms) of a view that writes motion vectors; and for a receiving view a set of
 // the host's image view with the compare sampler of the host's convention (set 2). Both
-// bindings of set 1 are written (the block a view does not use points at the other: lavapipe
-// reads them all); set 2 only by a receiving view, which alone binds it.
+// bindings of set 1 are written (the block a view does not use points at the other, so no
+// bound set holds an unwritten descriptor); set 2 only by a receiving view, which alone binds it.
 // Each block and the map's set are made on their slot's first view with that feature, set 1
 // on the slot's first view with either, the pool on the first of all; written when the view
 // is recorded (the slot's previous frame has finished, so neither its buffers nor its sets
