@@ -52,6 +52,14 @@ struct TargetDesc {
     // Vulkan: a depth-only render pass over the depth image besides (single-sampled, with
     // read_depth), given to grass as its grass_vk_depth_pass_desc; Host::depth_only draws in it.
     bool vk_depth_pass = false;
+    // Vulkan: motion vectors' target (velocity_target_vk.hpp): 0 none; 1 or 2 an RGBA32F
+    // velocity image at that colour attachment of the pass (2: an RGBA8 image at attachment 1
+    // besides), cleared to velocity_clear and other_clear, read back into Image::velocity and
+    // Image::other, given to grass as its grass_vk_velocity_target_desc. Single-sampled, with
+    // a render pass; no ground nor meshes (their pipelines have one colour attachment).
+    uint32_t vk_velocity_attachment = 0;
+    float velocity_clear[4] = {};
+    float other_clear[4] = {};
     // Vulkan: the vkGetInstanceProcAddr the host hands grass (grass_vk_desc's
     // get_instance_proc_addr); nullptr: the loader's own. Tests pass a wrapper that counts
     // handles or makes a call fail, for grass's dispatch table only.
@@ -65,6 +73,10 @@ struct TargetDesc {
     // one), returns the one grass gets; nullptr: the real ones. For fault-injection tests.
     void (*(*gl_proc_filter)(const char* name, void (*real)(void)))(void) = nullptr;
 };
+
+// A Vulkan host's perspective projection (clip y down, z 0..1, or 1..0 with `reversed_z`),
+// column-major.
+void vk_projection(float fovy_radians, float aspect, float near_m, float far_m, bool reversed_z, float out[16]);
 
 // Linear to sRGB-encoded, 0..1 (clamped).
 float linear_to_srgb(float linear);
@@ -90,6 +102,10 @@ struct Image {
     // TargetDesc::read_depth: the window depth (0..1 as the host's convention stores it) of
     // each pixel, top row first; empty otherwise.
     std::vector<float> depth;
+    // TargetDesc::vk_velocity_attachment: the velocity image's RGBA floats, and the other
+    // colour image's RGBA8 (attachment 2 only), top row first; empty otherwise.
+    std::vector<float> velocity;
+    std::vector<uint8_t> other;
     const uint8_t* pixel(uint32_t x, uint32_t y) const { return &rgba[(size_t(y) * width + x) * 4]; }
     const float* pixel_f32(uint32_t x, uint32_t y) const { return &rgba_f32[(size_t(y) * width + x) * 4]; }
 };

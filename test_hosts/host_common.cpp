@@ -66,6 +66,20 @@ float linear_to_srgb(float v) {
     return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
+void vk_projection(float fovy_radians, float aspect, float near_m, float far_m, bool reversed_z, float out[16]) {
+    const float f = 1.0f / std::tan(0.5f * fovy_radians);
+    for (int i = 0; i < 16; ++i) out[i] = 0.0f;
+    out[0] = f / aspect;
+    out[5] = -f;
+    out[10] = far_m / (near_m - far_m);
+    out[11] = -1.0f;
+    out[14] = far_m * near_m / (near_m - far_m);
+    if (reversed_z) { // z' = w - z: depth 1 - d
+        out[10] = -1.0f - out[10];
+        out[14] = -out[14];
+    }
+}
+
 void stored_clear_color(const TargetDesc& target, float out[4]) {
     for (int c = 0; c < 4; ++c)
         out[c] = c < 3 && target.unorm_color ? linear_to_srgb(target.clear_color[c]) : target.clear_color[c];

@@ -11,6 +11,7 @@
 #include "host_shaders.hpp"
 #include "mesh_drawer_vk.hpp"
 #include "shadow_map_vk.hpp"
+#include "velocity_target_vk.hpp"
 #include "vk_bootstrap.hpp"
 
 #include <grass/grass_vk.h>
@@ -114,6 +115,7 @@ private:
     VkPipelineLayout ground_layout_ = VK_NULL_HANDLE;
     VkPipeline ground_pipeline_ = VK_NULL_HANDLE;
     std::unique_ptr<VkMeshDrawer> meshes_; // target.meshes
+    VkVelocityTarget velocity_;            // target.vk_velocity_attachment
     VkPassTarget pass_target() const;
 
     VkCommandPool command_pool_ = VK_NULL_HANDLE;
@@ -255,6 +257,7 @@ bool VkHost::create_device(std::string* error) {
         enable = &enable_khr;
         extension_names.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
     }
+    enable = velocity_.enable_features(target_, enable);
     if (!grass_bootstrap::create_device(physical_device_, queue_family_, extension_names, enable, &device_, &queue_,
                                         error)) {
         return false;
@@ -328,8 +331,9 @@ bool VkHost::create_target(std::string* error) {
 }
 
 bool VkHost::create_render_pass(std::string* error) {
-    if (target_.vk_dynamic_rendering) return true;
     grass_bootstrap::VkPassDesc pass;
+    if (!velocity_.create(device_, memory_properties_, target_, &pass, error)) return false;
+    if (target_.vk_dynamic_rendering) return true;
     pass.color_format = color_format_;
     pass.depth_format = kDepthFormat;
     pass.samples = samples_;
@@ -361,10 +365,11 @@ bool VkHost::create_render_pass(std::string* error) {
 
     if (!grass_bootstrap::create_render_pass(device_, pass, &render_pass_, error)) return false;
 
-    const VkImageView views[3] = {color_.view, depth_.view, resolve_.view};
+    VkImageView views[4] = {color_.view, depth_.view, resolve_.view};
+    for (uint32_t i = 0; i < velocity_.count(); ++i) views[2 + i] = velocity_.views()[i];
     VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     fb.renderPass = render_pass_;
-    fb.attachmentCount = samples_ != VK_SAMPLE_COUNT_1_BIT ? 3 : 2;
+    fb.attachmentCount = samples_ != VK_SAMPLE_COUNT_1_BIT ? 3 : 2 + velocity_.count();
     fb.pAttachments = views;
     fb.width = target_.width;
     fb.height = target_.height;
@@ -416,6 +421,7 @@ VkHost::~VkHost() {
         grass_bootstrap::destroy_image(device_, &resolve_);
         grass_bootstrap::destroy_image(device_, &depth_);
         grass_bootstrap::destroy_image(device_, &color_);
+        velocity_.destroy(device_);
         vkDestroyDevice(device_, nullptr);
     }
     instance_.destroy(); // while the validation log is still there
@@ -507,38 +513,30 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     depth.depth_format = kDepthFormat;
     depth.next = vk.next;
     if (depth_pass_) vk.next = &depth;
+    vk.next = velocity_.chain(vk.next); // target.vk_velocity_attachment
     return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
 }
 
 // Right-handed view looking down -z; clip y points down and z runs 0 (near) .. 1 (far), or 1 .. 0
 // with reversed_z.
 void VkHost::projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const {
-    const float f = 1.0f / std::tan(0.5f * fovy_radians);
-    for (int i = 0; i < 16; ++i) out[i] = 0.0f;
-    out[0] = f / aspect;
-    out[5] = -f;
-    out[10] = far_m / (near_m - far_m);
-    out[11] = -1.0f;
-    out[14] = far_m * near_m / (near_m - far_m);
-    if (target_.reversed_z) { // z' = w - z: depth 1 - d
-        out[10] = -1.0f - out[10];
-        out[14] = -out[14];
-    }
+    vk_projection(fovy_radians, aspect, near_m, far_m, target_.reversed_z, out);
 }
 
 // ---- A frame ------------------------------------------------------------------------------
 
 void VkHost::begin_pass(VkCommandBuffer cmd) {
-    VkClearValue clears[2] = {};
+    VkClearValue clears[4] = {};
     stored_clear_color(target_, clears[0].color.float32);
     clears[1].depthStencil = {target_.reversed_z ? 0.0f : 1.0f, 0};
+    velocity_.clear_values(clears + 2);
     const VkRect2D area{{0, 0}, {target_.width, target_.height}};
     if (render_pass_) {
         VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         info.renderPass = render_pass_;
         info.framebuffer = framebuffer_;
         info.renderArea = area;
-        info.clearValueCount = 2;
+        info.clearValueCount = 2 + velocity_.count();
         info.pClearValues = clears;
         vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
         return;
@@ -690,6 +688,7 @@ void VkHost::copy_to_readback(VkCommandBuffer cmd) {
     const VkBufferMemoryBarrier b = grass_bootstrap::host_read_barrier(readback_.buffer);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0,
                          nullptr);
+    if (velocity_.count()) velocity_.copy(cmd);
 }
 
 grass_result VkHost::render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
@@ -780,6 +779,7 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
                         size_t(target_.width) * target_.height * texel_bytes_,
                     out->depth.size() * sizeof(float));
     }
+    if (velocity_.count()) velocity_.read(device_, out);
     if (messages_ != 0 && error) *error = log_;
     return GRASS_SUCCESS;
 }

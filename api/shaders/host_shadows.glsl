@@ -5,8 +5,9 @@
 // preprocessed text is what it was. The tiers multiply their sun term by it (light.y).
 
 // The GrassShadow block (api/src/foundation/frame_plan.hpp ShadowUniforms): GL binding 2;
-// Vulkan set 1 (the receiving pipelines' layout alone has it, backend_vk/src/
-// vk_receive_pipelines.hpp), binding 0, the map at binding 1. The block holds its struct as
+// Vulkan set 1 (the view extras' blocks, which the layout of receiving and motion pipelines
+// alone has, backend_vk/src/vk_view_extras.hpp), binding 1; the map in set 2, binding 0, which
+// only a receiving view binds. The block holds its struct as
 // the one element of an array read at the Frame block's index (blade_interface.glsl says why).
 #if defined(VULKAN) && defined(GRASS_MULTIVIEW)
 #error "a stereo (multiview) view does not receive the host's shadow maps (the core refuses such a view)"
@@ -20,8 +21,8 @@ struct GrassShadowData {
 // The host's map (a 2D array, one layer per cascade) through grass's sampler: linear with
 // depth compare, so each tap is the hardware's 2x2 percentage-closer filter. GL: texture unit 14.
 #ifdef VULKAN
-layout(std140, set = 1, binding = 0) uniform GrassShadow { GrassShadowData shadow_at[1]; };
-layout(set = 1, binding = 1) uniform sampler2DArrayShadow host_shadow_map;
+layout(std140, set = 1, binding = 1) uniform GrassShadow { GrassShadowData shadow_at[1]; };
+layout(set = 2, binding = 0) uniform sampler2DArrayShadow host_shadow_map;
 #else
 layout(std140, binding = 2) uniform GrassShadow { GrassShadowData shadow_at[1]; };
 uniform sampler2DArrayShadow host_shadow_map;

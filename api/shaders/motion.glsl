@@ -5,12 +5,19 @@
 // neither the block nor the output and its preprocessed text is what it was. The grass's
 // own motion comes from its pose at the previous time: wind_at() reads the previous gust
 // phases while g_previous_time is set.
-#ifdef VULKAN
-#error "the Vulkan backend does not write motion vectors yet (the core refuses such a view)"
+#if defined(VULKAN) && defined(GRASS_MULTIVIEW)
+#error "a stereo (multiview) context does not write motion vectors (grass_vk_velocity_target_desc is mono only)"
 #endif
 
-// The GrassMotion block (api/src/foundation/frame_plan.hpp MotionUniforms), GL binding 3.
+// The GrassMotion block (api/src/foundation/frame_plan.hpp MotionUniforms): GL binding 3;
+// Vulkan set 1, binding 0 (the view extras' blocks, which the layout of receiving and motion
+// pipelines alone has, beside host_shadows.glsl's block at binding 1:
+// backend_vk/src/vk_view_extras.hpp).
+#ifdef VULKAN
+layout(std140, set = 1, binding = 0) uniform GrassMotion {
+#else
 layout(std140, binding = 3) uniform GrassMotion {
+#endif
     mat4 view_projection;          // camera-relative world -> clip, without jitter
     mat4 previous_view_projection; // camera-relative world -> the previous frame's clip, without jitter
     vec4 previous_wind_phase;      // the gust phases (Frame's wind_phase) at the previous time
@@ -18,7 +25,9 @@ layout(std140, binding = 3) uniform GrassMotion {
 
 // Fragment shaders (they define GRASS_MOTION_FRAGMENT first): the velocity goes to output
 // location 1; the backend routes it to the host's draw buffer
-// (grass_view_motion_desc.velocity_attachment) and masks its .ba off.
+// (grass_view_motion_desc.velocity_attachment) and masks its .ba off. Vulkan: the backend
+// rewrites the location to the velocity attachment's index in the module it makes the
+// pipeline of (vk_view_extras.cpp); the velocity is Vulkan's clip y, down.
 #ifdef GRASS_MOTION_FRAGMENT
 layout(location = 1) out vec4 out_velocity;
 void write_velocity(vec2 velocity) {

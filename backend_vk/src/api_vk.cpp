@@ -113,6 +113,14 @@ grass_vk_depth_pass_desc grass_default_vk_depth_pass_desc(void) {
     return d;
 }
 
+grass_vk_velocity_target_desc grass_default_vk_velocity_target_desc(void) {
+    grass_vk_velocity_target_desc d{};
+    d.type = GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC;
+    d.color_attachment_count = 2;
+    d.velocity_attachment = 1;
+    return d;
+}
+
 grass_vk_record_desc grass_default_vk_record_desc(void) {
     grass_vk_record_desc d{};
     d.type = GRASS_STRUCT_TYPE_VK_RECORD_DESC;

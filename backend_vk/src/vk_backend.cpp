@@ -32,7 +32,7 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       memory_(fn_, device_.device, device_.memory, device_.properties.limits, &context->host),
       descriptors_(fn_, device_.device, &context->host), frame_sets_(fn_, device_.device, &context->host),
       deferred_(memory_, descriptors_, &context->host), pipeline_(fn_, device_.device, &context->host),
-      shadows_(fn_, device_.device, memory_),
+      extras_(fn_, device_.device, memory_),
       ring_(memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits.minUniformBufferOffsetAlignment,
             device_.view_mask != 0),
       batch_(&context->host), patches_(StlAllocator<PatchGpu>(&context->host)),
@@ -57,6 +57,7 @@ VkBackend::~VkBackend() {
     memory_.destroy_image(&default_slices_); // never retired
     deferred_.destroy_now(&default_curves_);
     if (timer_pool_ != VK_NULL_HANDLE) fn_.vkDestroyQueryPool(device_.device, timer_pool_, fn_.callbacks());
+    extras_.destroy();
     pipeline_.destroy();
     destroy_pipeline_cache();
     // The frame ring, interaction pass and descriptor pools go with their members.
@@ -82,6 +83,17 @@ grass_result VkBackend::init(const char* function) {
         depth.samples = static_cast<VkSampleCountFlagBits>(device_.depth_pass.sample_count);
         depth.depth_only = true;
         pipeline_.set_depth_target(depth);
+    }
+    if (device_.has_velocity) {
+        // The pass has the host's colour attachments: every pipeline has a blend state for
+        // each (the plain ones write attachment 0 alone); the motion views' pipelines, made on
+        // the first (record), write the velocity attachment too.
+        target.color_count = device_.velocity.color_attachment_count;
+        for (uint32_t i = 0; i < 7; ++i)
+            target.other_formats[i] = static_cast<VkFormat>(device_.velocity.color_formats[i]);
+        PipelineTarget velocity = target;
+        velocity.velocity_attachment = device_.velocity.velocity_attachment;
+        pipeline_.set_velocity_target(velocity);
     }
     if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);

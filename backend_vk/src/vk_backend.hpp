@@ -12,12 +12,12 @@
 #include "vk_descriptors.hpp"
 #include "vk_device.hpp"
 #include "vk_frame_ring.hpp"
-#include "vk_host_shadows.hpp"
 #include "vk_interaction.hpp"
 #include "vk_memory.hpp"
 #include "vk_pipeline.hpp"
 #include "vk_slice_pipelines.hpp"
 #include "vk_uploads.hpp"
+#include "vk_view_extras_sets.hpp"
 
 #include <grass/grass_vk.h>
 
@@ -60,6 +60,7 @@ public:
         target.views = device_.view_mask != 0 ? 2u : 1u; // view_mask is 0 or 0x3 (check_vk_desc)
         target.depth_pass = device_.has_depth_pass;      // grass_vk_depth_pass_desc: depth views draw
         target.depth_pass_samples = device_.has_depth_pass ? device_.depth_pass.sample_count : 0;
+        target.velocity_attachment = device_.has_velocity ? device_.velocity.velocity_attachment : 0;
         return target;
     }
     grass_result begin_host_frame(const char* function, const HostFrame& frame, bool implied) override;
@@ -207,7 +208,7 @@ private:
     VkPipelineCache cache_ = VK_NULL_HANDLE;     // the host's (grass_vk_host_objects_desc.pipeline_cache) or own_cache_
     VkPipelineCache own_cache_ = VK_NULL_HANDLE; // grass's own, when the host gave none
     BladePipeline pipeline_;
-    HostShadowSets shadows_; // receiving views: the host's shadow map and its block per view slot (set 1)
+    ViewExtrasSets extras_; // views that receive shadows or write motion vectors: set 1 per view slot
     FrameRing ring_;
     UploadBatch batch_;
     Vector<PatchGpu> patches_;

@@ -75,13 +75,40 @@ grass_result check_depth_pass(grass_context* ctx, const char* function, const gr
     return GRASS_SUCCESS;
 }
 
+// The checks of a chained grass_vk_velocity_target_desc (`dynamic`: grass_vk_desc.render_pass 0).
+grass_result check_velocity_target(grass_context* ctx, const char* function, const grass_vk_velocity_target_desc& v,
+                                   bool dynamic) {
+    if (v.color_attachment_count < 2 || v.color_attachment_count > 8) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: grass_vk_velocity_target_desc.color_attachment_count is %u; it must be 2 to 8 (the lit "
+                         "colour at attachment 0 and the velocity target among the others)",
+                         function, v.color_attachment_count);
+    }
+    if (v.velocity_attachment < 1 || v.velocity_attachment >= v.color_attachment_count) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: grass_vk_velocity_target_desc.velocity_attachment is %u; it must be 1 to %u "
+                         "(color_attachment_count - 1; attachment 0 is the lit colour)",
+                         function, v.velocity_attachment, v.color_attachment_count - 1);
+    }
+    for (uint32_t i = 1; dynamic && i < v.color_attachment_count; ++i) {
+        if (v.color_formats[i - 1] == 0) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                             "%s: grass_vk_velocity_target_desc.color_formats[%u] is 0 (VK_FORMAT_UNDEFINED); dynamic "
+                             "rendering (render_pass 0) needs the VkFormat of colour attachment %u",
+                             function, i - 1, i);
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
 // Walks the extensions chained to vk_desc->next: each a known type, each once.
-grass_result read_chain(grass_context* ctx, const char* function, const void* next, VkDescExtensions* out) {
+grass_result read_chain(grass_context* ctx, const char* function, const void* next, bool dynamic,
+                        VkDescExtensions* out) {
     *out = VkDescExtensions{};
     bool has_host_objects = false, has_multiview = false;
     const auto known = [](uint32_t type) {
         return type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC || type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC ||
-               type == GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC;
+               type == GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC || type == GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC;
     };
     while (next) {
         struct Header {
@@ -108,15 +135,23 @@ grass_result read_chain(grass_context* ctx, const char* function, const void* ne
             next = out->depth_pass.next;
             out->depth_pass.next = nullptr;
             r = check_depth_pass(ctx, function, out->depth_pass);
+        } else if (type == GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC && !out->has_velocity) {
+            out->velocity = *static_cast<const grass_vk_velocity_target_desc*>(next);
+            out->has_velocity = true;
+            next = out->velocity.next;
+            out->velocity.next = nullptr;
+            r = check_velocity_target(ctx, function, out->velocity, dynamic);
         } else {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL,
                              "%s: vk_desc->next chain holds a struct of type 0x%08x%s; it may hold "
                              "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC (0x%08x), GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC "
-                             "(0x%08x) and GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC (0x%08x), each once",
+                             "(0x%08x), GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC (0x%08x) and "
+                             "GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC (0x%08x), each once",
                              function, static_cast<unsigned>(type), known(type) ? " a second time" : "",
                              static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC),
                              static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC),
-                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC));
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC),
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC));
         }
         if (r != GRASS_SUCCESS) return r;
     }
@@ -124,6 +159,12 @@ grass_result read_chain(grass_context* ctx, const char* function, const void* ne
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
                          "%s: vk_desc->next chains a grass_vk_depth_pass_desc and a grass_vk_multiview_desc with "
                          "view_mask 0x%x; depth passes are drawn by mono contexts only",
+                         function, out->multiview.view_mask);
+    }
+    if (out->has_velocity && out->multiview.view_mask != 0) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: vk_desc->next chains a grass_vk_velocity_target_desc and a grass_vk_multiview_desc with "
+                         "view_mask 0x%x; motion vectors are drawn by mono contexts only",
                          function, out->multiview.view_mask);
     }
     return GRASS_SUCCESS;
@@ -140,7 +181,7 @@ grass_result check_vk_desc(grass_context* ctx, const char* function, const grass
                          static_cast<unsigned>(grass::raw_enum(d->type)),
                          static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DESC));
     }
-    const grass_result chain = read_chain(ctx, function, d->next, extensions);
+    const grass_result chain = read_chain(ctx, function, d->next, d->render_pass == 0, extensions);
     if (chain != GRASS_SUCCESS) return chain;
     const struct {
         bool missing;

@@ -33,6 +33,11 @@ struct Device {
     // draw with pipelines made against it. Absent: the context refuses depth views.
     bool has_depth_pass = false;
     grass_vk_depth_pass_desc depth_pass{};
+    // The colour attachments of the host's pass when it holds a velocity target
+    // (grass_vk_velocity_target_desc): motion views draw with pipelines made against them.
+    // Absent: the context refuses motion views.
+    bool has_velocity = false;
+    grass_vk_velocity_target_desc velocity{};
 };
 
 // The format of single-channel design maps (density, ambient, diffuse, height): 16-bit

@@ -79,8 +79,8 @@ namespace grass::vk {
     X(vkCmdWriteTimestamp)
 
 // Vulkan 1.1 functions grass does without (NULL where the host's instance is Vulkan 1.0):
-// the heap budget (VK_EXT_memory_budget), the multiview feature query (stereo contexts only)
-// and the driver's wish for dedicated allocations.
+// the heap budget (VK_EXT_memory_budget), the multiview and independentBlend feature queries
+// (stereo contexts, velocity targets) and the driver's wish for dedicated allocations.
 #define GRASS_VK_OPTIONAL_INSTANCE_FUNCTIONS(X) \
     X(vkGetPhysicalDeviceMemoryProperties2)     \
     X(vkGetPhysicalDeviceFeatures2)

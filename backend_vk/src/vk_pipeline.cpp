@@ -37,6 +37,8 @@ static_assert(offsetof(BladeVertex, normal) == 12 && offsetof(BladeVertex, root_
 static_assert(offsetof(TierInstance, cell) == 16 && offsetof(TierInstance, terrain) == 32 && sizeof(TierInstance) == 48,
               "instance layout of blade.vert");
 
+} // namespace
+
 PipelineShape blade_shape(SpirvVariant variant) {
     VkPipelineVertexInputStateCreateInfo vertex_input{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     vertex_input.vertexBindingDescriptionCount = 2;
@@ -48,6 +50,8 @@ PipelineShape blade_shape(SpirvVariant variant) {
     const Spirv frag = spirv(Shader::blade_frag, variant);
     return PipelineShape{vert.code, vert.size, frag.code, frag.size, vertex_input, true, "the blade pipelines"};
 }
+
+namespace {
 
 // The locations of the vertex shader's inputs (bit l: location l), read from its SPIR-V:
 // the Input variables of its entry point with a Location decoration. A pipeline supplies
@@ -126,11 +130,15 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
                                    const char** what) {
     if (has_variant(variant, depth_test)) return true;
     const bool depth_pass = (variant.features & kFeatureDepthPass) != 0;
-    const bool receive = (variant.features & kFeatureShadowReceive) != 0;
-    if (receive) {
-        // The core refuses a receiving stereo view and gives a depth pass no receiving draw.
-        if (depth_pass || target_.view_mask != 0 || variant.program >= kReceivePipelineKinds) {
-            *what = "a pipeline that receives the host's shadows (a depth pass, stereo or a debug view)";
+    const uint32_t extras = variant.features & kViewExtras;
+    if (extras) {
+        // The core refuses a receiving or motion stereo view and a motion view without the
+        // host's velocity target, and gives a depth pass and a debug view neither.
+        const bool motion = (extras & kFeatureMotion) != 0;
+        if (depth_pass || target_.view_mask != 0 || variant.program >= kExtrasPipelineKinds ||
+            (motion && velocity_target_.velocity_attachment == 0)) {
+            *what = "a pipeline that receives the host's shadows or writes motion vectors (a depth pass, stereo, a "
+                    "debug view, or motion without a grass_vk_velocity_target_desc)";
             return false;
         }
     } else if (depth_pass) {
@@ -153,12 +161,16 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
     modules.indexed_blocks = target_.indexed_blocks;
     modules.multiview = target_.view_mask != 0;
     modules.depth_target = depth_pass; // no colour output: the depth-only target has no attachment for it
-    modules.host_shadows = receive;    // the map and its block in set 1
+    modules.host_shadows = (extras & kFeatureShadowReceive) != 0; // the map and its block in set 1
+    modules.velocity = (extras & kFeatureMotion) != 0;            // the GrassMotion block in set 1
     const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(modules)
                                 : variant.program == kShaderVolume ? SlicePipelines::volume_shape(modules)
                                 : variant.program == kShaderImage  ? SlicePipelines::image_shape(modules)
                                                                    : DebugViewPipeline::shape(modules);
-    if (receive) return receivers_.create_variant(target_, set_layout_, variant, shape, depth_test, failure, what);
+    if (extras) {
+        const PipelineTarget& target = modules.velocity ? velocity_target_ : target_;
+        return extras_.create_variant(target, set_layout_, variant, shape, depth_test, failure, what);
+    }
     if (depth_pass) {
         const uint32_t colour = variant.features & ~kFeatureDepthPass;
         return create_pipeline(fn_, device_, depth_target_, layout_, shape, variant.features, true,
@@ -194,7 +206,7 @@ void BladePipeline::destroy() {
         if (p) fn_.vkDestroyPipeline(device_, p, fn_.callbacks());
     }
     depth_pipelines_.clear();
-    receivers_.destroy();
+    extras_.destroy();
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
     if (sampler_) fn_.vkDestroySampler(device_, sampler_, fn_.callbacks());
@@ -206,8 +218,7 @@ void BladePipeline::destroy() {
     sampler_ = VK_NULL_HANDLE;
 }
 
-bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
-    // Design maps: bilinear, clamped to the edge, one mip.
+VkSamplerCreateInfo linear_clamped_sampler_info() {
     VkSamplerCreateInfo sampler{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     sampler.magFilter = VK_FILTER_LINEAR;
     sampler.minFilter = VK_FILTER_LINEAR;
@@ -217,6 +228,12 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
     sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     sampler.minLod = 0.0f;
     sampler.maxLod = 0.0f;
+    return sampler;
+}
+
+bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
+    // Design maps: bilinear, clamped to the edge, one mip.
+    VkSamplerCreateInfo sampler = linear_clamped_sampler_info();
     *what = "the design map sampler";
     if (!vk_ok(fn_.vkCreateSampler(device_, &sampler, fn_.callbacks(), &sampler_), "vkCreateSampler", failure))
         return false;
@@ -368,12 +385,19 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
     depth.depthCompareOp = target.depth_greater ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
     depth.maxDepthBounds = 1.0f;
 
-    VkPipelineColorBlendAttachmentState attachment{};
-    attachment.colorWriteMask =
+    // The lit colour at attachment 0, opaque; a velocity target's .rg (unblended), any other
+    // colour attachment of its pass untouched (write mask 0).
+    const uint32_t color_count = target.depth_only ? 0 : target.color_count < 8 ? target.color_count : 8;
+    VkPipelineColorBlendAttachmentState attachments[8] = {};
+    attachments[0].colorWriteMask =
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+    if (target.velocity_attachment != 0 && target.velocity_attachment < color_count)
+        attachments[target.velocity_attachment].colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT;
+    VkFormat formats[8] = {target.color_format};
+    for (uint32_t i = 1; i < color_count; ++i) formats[i] = target.other_formats[i - 1];
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = target.depth_only ? 0 : 1; // a depth-only target has no colour attachment
-    blend.pAttachments = target.depth_only ? nullptr : &attachment;
+    blend.attachmentCount = color_count; // a depth-only target has no colour attachment
+    blend.pAttachments = color_count ? attachments : nullptr;
 
     const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
                                              VK_DYNAMIC_STATE_DEPTH_BIAS};
@@ -385,8 +409,8 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
     // for the render pass.
     VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
     rendering.viewMask = target.view_mask; // stereo: both eyes in one pass (0: mono)
-    rendering.colorAttachmentCount = target.depth_only ? 0 : 1;
-    rendering.pColorAttachmentFormats = target.depth_only ? nullptr : &target.color_format;
+    rendering.colorAttachmentCount = color_count;
+    rendering.pColorAttachmentFormats = color_count ? formats : nullptr;
     rendering.depthAttachmentFormat = target.depth_format;
     if (format_has_stencil(target.depth_format)) rendering.stencilAttachmentFormat = target.depth_format;
 

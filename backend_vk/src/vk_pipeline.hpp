@@ -11,8 +11,9 @@
 #include "foundation/shader_interface.hpp"
 #include "foundation/shader_variants.hpp"
 #include "vk_functions.hpp"
-#include "vk_receive_pipelines.hpp"
 #include "vk_result.hpp"
+#include "vk_spirv.hpp"
+#include "vk_view_extras.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -68,7 +69,8 @@ static_assert(kPipelineBlade == static_cast<uint32_t>(kShaderBlades) &&
 // The 11th, kFeatureDepthPass, marks a depth view's draws: their pipelines (blades, volume,
 // image; depth-tested) live in a table of their own, made on the first depth pass, so the
 // colour table holds the colour masks alone; the 12th, kFeatureShadowReceive, a receiving
-// view's draws (ReceivePipelines, vk_receive_pipelines.hpp).
+// view's draws, and the 13th, kFeatureMotion, a motion view's, alone or together
+// (ViewExtrasPipelines, vk_view_extras.hpp).
 constexpr uint32_t kColourFeatureMasks = kFeatureDepthPass;
 constexpr uint32_t kDepthPipelineKinds = 3; // blades, volume, image: a depth pass draws no debug view
 
@@ -87,6 +89,13 @@ struct PipelineTarget {
     // A depth pass's target (grass_vk_depth_pass_desc): no colour attachment (color_format
     // unused), no colour writes, no alpha to coverage, the depth bias dynamic (vkCmdSetDepthBias).
     bool depth_only = false;
+    // A pass with a velocity target (grass_vk_velocity_target_desc): `color_count` colour
+    // attachments (attachment 0 color_format, attachment i other_formats[i - 1] under dynamic
+    // rendering), the velocity at `velocity_attachment` (written .rg unblended), every other
+    // but 0 with write mask 0. 1 and 0: the plain target.
+    uint32_t color_count = 1;
+    uint32_t velocity_attachment = 0;
+    VkFormat other_formats[7] = {};
 };
 
 // The descriptor type of the Frame and Field blocks (dynamic offsets: one per draw).
@@ -106,6 +115,12 @@ struct PipelineShape {
     bool alpha_to_coverage;                            // only with multisampling
     const char* name;                                  // for *what: "the blade pipelines"
 };
+
+// A sampler's state: bilinear, one level (the nearest mip), clamped to the edge.
+VkSamplerCreateInfo linear_clamped_sampler_info();
+
+// The blade pipelines' shape of the modules `variant` (vertex input: patch vertices and instances).
+PipelineShape blade_shape(SpirvVariant variant);
 
 // The vertex input of the shaders that read instances only (locations 5, 6 and 7 on
 // binding 0: debug_tiers, volume and image): its arrays live as long as the program.
@@ -132,7 +147,7 @@ class BladePipeline {
 public:
     BladePipeline(const Functions& functions, VkDevice device, HostAllocator* host)
         : fn_(functions), device_(device), depth_pipelines_(StlAllocator<VkPipeline>(host)),
-          receivers_(functions, device, host) {}
+          extras_(functions, device, host) {}
     ~BladePipeline() { destroy(); }
     BladePipeline(const BladePipeline&) = delete;
     BladePipeline& operator=(const BladePipeline&) = delete;
@@ -143,6 +158,10 @@ public:
     // The depth-only target of depth views (grass_vk_depth_pass_desc; target.depth_only),
     // before any depth variant is made. Without it create_variant refuses kFeatureDepthPass.
     void set_depth_target(const PipelineTarget& target) { depth_target_ = target; }
+    // The colour attachments of motion views (grass_vk_velocity_target_desc; its
+    // velocity_attachment not 0), before any motion variant is made. Without it
+    // create_variant refuses kFeatureMotion.
+    void set_velocity_target(const PipelineTarget& target) { velocity_target_ = target; }
     void destroy();
 
     // Makes the pipeline of `variant` (foundation/shader_variants.hpp) with the depth test
@@ -150,13 +169,14 @@ public:
     // Only grass_prepare_pipelines with the debug views and a frame that turns the depth
     // test off ask for the latter. A variant with kFeatureDepthPass (depth-tested, not a
     // debug view) is made against the depth target, in the depth table (made by the first:
-    // may throw std::bad_alloc); one with kFeatureShadowReceive by receivers() (mono only).
+    // may throw std::bad_alloc); one with kFeatureShadowReceive or kFeatureMotion (or both) by
+    // extras() (mono only; motion against the velocity target).
     // On failure it does not exist.
     bool create_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure, const char** what);
     // The depth-tested pipelines of every kind for `features` (a field's maps: upload_field).
     bool create_variants(uint32_t features, VkFailure* failure, const char** what);
     bool has_variant(const ShaderVariant& v, bool depth_test) const {
-        if (v.features & kFeatureShadowReceive) return receivers_.has_variant(v, depth_test);
+        if (v.features & kViewExtras) return extras_.has_variant(v, depth_test);
         if (v.features & kFeatureDepthPass) return depth_test && depth_slot(v.program, v.features) != nullptr;
         return v.features < kColourFeatureMasks &&
                pipelines_[v.features][v.program][depth_test ? 0 : 1] != VK_NULL_HANDLE;
@@ -164,11 +184,12 @@ public:
 
     VkDescriptorSetLayout set_layout() const { return set_layout_; }
     VkPipelineLayout layout() const { return layout_; }
-    // The receiving views' pipelines, samplers and layout (set 1: the host's shadow map).
-    const ReceivePipelines& receivers() const { return receivers_; }
+    // The pipelines, samplers and layout of views that receive shadows or write motion vectors
+    // (set 1: the view extras, vk_view_extras.hpp).
+    const ViewExtrasPipelines& extras() const { return extras_; }
     // The pipeline of `kind` for `features` (has_variant(features, depth_test)).
     VkPipeline pipeline(PipelineKind kind, uint32_t features, bool depth_test) const {
-        if (features & kFeatureShadowReceive) return receivers_.pipeline(kind, features, depth_test);
+        if (features & kViewExtras) return extras_.pipeline(kind, features, depth_test);
         if (features & kFeatureDepthPass) return *depth_slot(kind, features);
         return pipelines_[features][kind][depth_test ? 0 : 1];
     }
@@ -200,7 +221,8 @@ private:
     // until the first depth variant; depth_target_.depth_only: the host gave a depth target.
     PipelineTarget depth_target_;
     Vector<VkPipeline> depth_pipelines_;
-    ReceivePipelines receivers_; // empty until the first receiving view
+    PipelineTarget velocity_target_; // velocity_attachment 0: the host gave no velocity target
+    ViewExtrasPipelines extras_;     // empty until the first receiving or motion view
 };
 
 } // namespace grass::vk

@@ -270,16 +270,16 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
         if (!debug_view && own_set(d)) own_sets += 1;
     }
     if (draw_count == 0) return GRASS_SUCCESS;
-    // A receiving view (its draws' pipelines made above): the host's map and this view's
-    // GrassShadow block in set 1 of the receiving layout.
-    const bool receive = plan.shadow_receive && !debug_view;
-    if (receive) {
+    // A view that receives shadows or writes motion vectors (its draws' pipelines made above):
+    // this view's GrassShadow and GrassMotion blocks, as it uses them, in set 1 of the view
+    // extras' layout, and a receiving view's map in set 2.
+    const bool extras = (plan.shadow_receive || plan.motion) && !debug_view;
+    if (extras) {
         VkFailure failure;
         const char* what = "";
-        if (!shadows_.write(vs, frame_, plan, pipeline_.receivers(), &failure, &what))
-            return fail(function, what, failure);
+        if (!extras_.write(vs, frame_, plan, pipeline_.extras(), &failure, &what)) return fail(function, what, failure);
     }
-    const VkPipelineLayout layout = receive ? pipeline_.receivers().layout() : pipeline_.layout();
+    const VkPipelineLayout layout = extras ? pipeline_.extras().layout() : pipeline_.layout();
 
     // The volume and image draws pair the field's design maps with the patch's slices, and
     // responsive draws with the patch's blade curves and the interaction map: a fresh set
@@ -317,9 +317,11 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
         const uint32_t block_index = 0;
         fn_.vkCmdPushConstants(cmd, layout, kBlockIndexStages, 0, kBlockIndexBytes, &block_index);
     }
-    if (receive) {
-        const VkDescriptorSet set = shadows_.set(vs);
-        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kShadowSet, 1, &set, 0, nullptr);
+    if (extras) {
+        // Set 1, and set 2 (the host's map) for a receiving view alone.
+        const VkDescriptorSet sets[2] = {extras_.set(vs), extras_.map_set(vs)};
+        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kExtrasSet,
+                                    plan.shadow_receive ? 2 : 1, sets, 0, nullptr);
     }
 
     const VkBuffer instances = ring_.instance_buffer(vs);

@@ -1,20 +1,25 @@
-// The SPIR-V of the Vulkan backend's graphics shaders, compiled at build time
-// (backend_vk/CMakeLists.txt) in up to eight variants each:
-// - multiview: compiled with GRASS_MULTIVIEW (stereo, blade_interface.glsl), for every
-//   pipeline of a context made with a view mask (grass_vk_multiview_desc.view_mask); mono contexts
-//   run the other variants, exactly the modules of before;
-// - responsive: compiled with GRASS_RESPONSIVE, for the pipelines of kBladeCurveFeatures
-//   (blade.vert, volume.frag and image.frag have it; the other shaders are the same);
-// - indexed blocks: compiled with GRASS_INDEXED_BLOCKS, the Frame and Field blocks read
-//   at an index from a push constant (always 0) instead of the literal 0; the pipeline
-//   layout then has a 4-byte push-constant range, which vk_record sets to 0.
-// - depth target: the fragment shaders (blade, volume, image) compiled with GRASS_DEPTH_TARGET,
-//   without the colour output, for a depth pass's pipelines (grass_vk_depth_pass_desc: the
-//   host's depth-only pass has no colour attachment, which the validation layers would warn
-//   of); mono, plain or responsive, indexed or not.
-// - host shadows: the same fragment shaders compiled with GRASS_HOST_SHADOWS, for the pipelines
-//   of a view that receives the host's shadow maps (grass_shadow_receive_desc); mono, plain or
-//   responsive, indexed or not.
+// The SPIR-V of the Vulkan backend's graphics shaders, compiled at build time in one scheme
+// (backend_vk/CMakeLists.txt): each optional feature is a define, each shader lists the
+// features it has, and every usable combination of them is compiled once; spirv() finds a
+// shader's module for a feature set in the table CMake writes (spirv/vk_spirv_table.cpp).
+// The features (SpirvFeature; a shader without one runs its module without it):
+// - multiview: GRASS_MULTIVIEW (stereo, blade_interface.glsl), for every pipeline of a context
+//   made with a view mask (grass_vk_multiview_desc.view_mask); mono contexts run the others;
+// - depth target: the fragment shaders (blade, volume, image) with GRASS_DEPTH_TARGET, without
+//   the colour output, for a depth pass's pipelines (grass_vk_depth_pass_desc: the host's
+//   depth-only pass has no colour attachment, which the validation layers would warn of);
+// - host shadows: the same fragment shaders with GRASS_HOST_SHADOWS, for a view that receives
+//   the host's shadow maps (grass_shadow_receive_desc; the map and its block in set 1);
+// - velocity: blade.vert and the same fragment shaders with GRASS_VELOCITY, for a view that
+//   writes motion vectors (grass_view_motion_desc; the GrassMotion block in set 1), alone or
+//   with host shadows (set 1 is one layout for both, vk_view_extras.hpp);
+// - responsive: GRASS_RESPONSIVE, for the pipelines of kBladeCurveFeatures (blade.vert,
+//   volume.frag and image.frag have it);
+// - indexed blocks: GRASS_INDEXED_BLOCKS, the Frame and Field blocks read at an index from a
+//   push constant (always 0) instead of the literal 0; the pipeline layout then has a 4-byte
+//   push-constant range, which vk_record sets to 0.
+// Multiview never combines with depth target, host shadows or velocity (those are mono),
+// nor depth target with either of a view's extras: those combinations are not compiled.
 //
 // Why indexed blocks: lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3) specialises a
 // shader whose branches or loop bounds read uniform-buffer values at constant offsets on
@@ -35,27 +40,52 @@
 namespace grass::vk {
 
 enum class Shader { blade_vert, blade_frag, volume_vert, volume_frag, image_vert, image_frag, debug_vert, debug_frag };
+constexpr uint32_t kSpirvShaderCount = 8;
+
+// The features' bits, in the order of backend_vk/CMakeLists.txt's GRASS_VK_SPIRV_FEATURES.
+enum SpirvFeature : uint32_t {
+    kSpirvMultiview = 1u << 0,     // GRASS_MULTIVIEW
+    kSpirvDepthTarget = 1u << 1,   // GRASS_DEPTH_TARGET
+    kSpirvHostShadows = 1u << 2,   // GRASS_HOST_SHADOWS
+    kSpirvVelocity = 1u << 3,      // GRASS_VELOCITY
+    kSpirvResponsive = 1u << 4,    // GRASS_RESPONSIVE
+    kSpirvIndexedBlocks = 1u << 5, // GRASS_INDEXED_BLOCKS
+};
 
 struct Spirv {
-    const uint32_t* code;
-    uint32_t size; // bytes
+    const uint32_t* code; // nullptr: no such module
+    uint32_t size;        // bytes
 };
 
 // Which module of a shader: the defines it was compiled with.
 struct SpirvVariant {
-    bool responsive = false;     // GRASS_RESPONSIVE (shaders without it: the plain module)
+    bool responsive = false;     // GRASS_RESPONSIVE
     bool indexed_blocks = false; // GRASS_INDEXED_BLOCKS
     bool multiview = false;      // GRASS_MULTIVIEW
-    // GRASS_DEPTH_TARGET: the fragment shaders of a depth pass's pipelines (blade, volume and
-    // image), made for the host's depth-only target: no colour output. Mono only.
-    bool depth_target = false;
-    // GRASS_HOST_SHADOWS: the fragment shaders (blade, volume and image) of a view that receives
-    // the host's shadow maps (the map and its block in set 1). Mono only.
-    bool host_shadows = false;
+    bool depth_target = false;   // GRASS_DEPTH_TARGET: a depth pass's fragment shaders. Mono only.
+    bool host_shadows = false;   // GRASS_HOST_SHADOWS: a receiving view's fragment shaders. Mono only.
+    bool velocity = false;       // GRASS_VELOCITY: a motion view's blade.vert and fragment shaders. Mono only.
+    uint32_t features() const {
+        return (multiview ? kSpirvMultiview : 0u) | (depth_target ? kSpirvDepthTarget : 0u) |
+               (host_shadows ? kSpirvHostShadows : 0u) | (velocity ? kSpirvVelocity : 0u) |
+               (responsive ? kSpirvResponsive : 0u) | (indexed_blocks ? kSpirvIndexedBlocks : 0u);
+    }
 };
 
+// One compiled module (the generated table's row).
+struct SpirvModule {
+    uint32_t shader;   // Shader
+    uint32_t features; // SpirvFeature bits it was compiled with
+    const uint32_t* code;
+    const uint32_t* size; // bytes
+};
+extern const uint32_t kSpirvShaderFeatures[kSpirvShaderCount]; // the features each shader has
+extern const SpirvModule kSpirvModules[];
+extern const uint32_t kSpirvModuleCount;
+
+// The module of `shader` compiled with the features of `variant` it has; code nullptr where
+// that combination is not compiled (multiview with a mono-only feature, a depth target with
+// a view's extras).
 Spirv spirv(Shader shader, SpirvVariant variant);
-// The GRASS_HOST_SHADOWS module of blade.frag, volume.frag or image.frag (vk_spirv_shadows.cpp).
-Spirv host_shadow_spirv(Shader shader, SpirvVariant variant);
 
 } // namespace grass::vk

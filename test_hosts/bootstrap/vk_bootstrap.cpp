@@ -312,7 +312,7 @@ void write_uniform_descriptor(VkDevice device, VkDescriptorSet set, VkBuffer buf
 bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* out, std::string* error) {
     const bool msaa = desc.samples != VK_SAMPLE_COUNT_1_BIT;
     const bool depth_only = desc.color_format == VK_FORMAT_UNDEFINED; // a shadow map's pass: depth alone
-    VkAttachmentDescription attachments[3] = {};
+    VkAttachmentDescription attachments[9] = {};
     // 0: colour (multisampled or not). Single-sample: the image the pass ends in.
     attachments[0].format = desc.color_format;
     attachments[0].samples = desc.samples;
@@ -334,19 +334,25 @@ bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* o
     attachments[2].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     attachments[2].finalLayout = desc.color_final;
 
-    const VkAttachmentReference color_ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkAttachmentReference color_refs[8] = {{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
+    const uint32_t more = msaa || depth_only ? 0 : desc.more_color_count < 7 ? desc.more_color_count : 7;
+    for (uint32_t i = 0; i < more; ++i) { // single-sampled: attachment 2 is no resolve target
+        attachments[2 + i] = attachments[0];
+        attachments[2 + i].format = desc.more_colors[i];
+        color_refs[1 + i] = {2 + i, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    }
     const VkAttachmentReference depth_ref{depth_only ? 0u : 1u, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     const VkAttachmentReference resolve_ref{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = depth_only ? 0 : 1;
-    subpass.pColorAttachments = depth_only ? nullptr : &color_ref;
+    subpass.colorAttachmentCount = depth_only ? 0 : 1 + more;
+    subpass.pColorAttachments = depth_only ? nullptr : color_refs;
     subpass.pResolveAttachments = msaa && !depth_only ? &resolve_ref : nullptr;
     subpass.pDepthStencilAttachment = &depth_ref;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
     info.pNext = desc.next;
-    info.attachmentCount = depth_only ? 1 : msaa ? 3 : 2;
+    info.attachmentCount = depth_only ? 1 : msaa ? 3 : 2 + more;
     info.pAttachments = depth_only ? &attachments[1] : attachments;
     info.subpassCount = 1;
     info.pSubpasses = &subpass;

@@ -125,6 +125,10 @@ struct VkPassDesc {
     VkImageLayout depth_final = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     VkSubpassDependency dependencies[2] = {}; // into and out of the pass
     const void* next = nullptr;               // VkRenderPassCreateInfo::pNext (a multiview pass's view masks)
+    // Single-sampled passes: further colour attachments (colour attachments 1.., the pass's
+    // attachments 2..), cleared, stored and ending in color_final (a velocity target's pass).
+    const VkFormat* more_colors = nullptr;
+    uint32_t more_color_count = 0; // at most 7
 };
 bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* out, std::string* error);
 

@@ -1,6 +1,10 @@
 // Motion vectors (grass_view_motion_desc; docs/integration.md "Motion vectors"), drawn into
 // a framebuffer the test makes: draw buffers {colour, a G-buffer-like target filled with a
-// pattern, velocity (RGBA32F)}, so the velocity goes to draw buffer 2.
+// pattern, velocity (RGBA32F)}, so the velocity goes to draw buffer 2. Vulkan: the host's
+// pass of colour attachments {colour, an RGBA8 target, velocity (RGBA32F)}
+// (TargetDesc::vk_velocity_attachment 2, grass_vk_velocity_target_desc); rows top first and
+// the velocity's y down there, which the checks below take as they come (each backend's
+// own NDC), the window depth 0..1.
 // - A camera pan (static grass, both projections jittered): on every tier's pixels the
 //   velocity is the reprojection of the pixel's world point (from the depth buffer) by the
 //   two frames' unjittered matrices, within 1e-3 viewport units (0.13 px) at 97% of them.
@@ -11,8 +15,10 @@
 // - The other draw buffer stays byte-identical, the velocity's .ba and its pixels without
 //   grass keep their clear, and the host's draw buffers, masks, blend and binding 3 come back.
 // - A view without the struct draws with programs that declare no GrassMotion block and the
-//   same picture; bad descs are refused naming the field; Vulkan refuses the struct.
+//   same picture; bad descs are refused naming the field; a Vulkan context without
+//   grass_vk_velocity_target_desc, or with another velocity attachment, refuses the view.
 #include "render_fixture.hpp"
+#include "vk_intercept.hpp"
 
 #include <GL/glcorearb.h>
 
@@ -162,6 +168,16 @@ protected:
         grass_host::TargetDesc t;
         t.width = t.height = kSize;
         if (GetParam() == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_filter;
+        if (GetParam() == GRASS_BACKEND_VULKAN) {
+            t.vk_velocity_attachment = 2;
+            t.vk_get_instance_proc_addr = vk_intercept::get_instance_proc_addr(); // counts grass's objects
+            t.read_depth = true;
+            for (int c = 0; c < 4; ++c) {
+                t.clear_color[c] = c == 3 ? 1.0f : 0.0f;
+                t.velocity_clear[c] = kVelocityClear[c];
+                t.other_clear[c] = kExtraClear[c];
+            }
+        }
         start(t);
         if (GetParam() != GRASS_BACKEND_GL) return;
         load(*host, &gl.CreateFramebuffers, "glCreateFramebuffers");
@@ -222,6 +238,18 @@ protected:
     // Draws `v` into the test's framebuffer, cleared first, and reads it back.
     Frame draw(const grass_view_desc& v) {
         Frame f;
+        if (GetParam() == GRASS_BACKEND_VULKAN) {
+            grass_host::Image image;
+            grass_view_desc d = v;
+            d.viewport[0] = d.viewport[1] = 0;
+            d.viewport[2] = d.viewport[3] = kSize;
+            EXPECT_EQ(host->render(ctx, d, nullptr, &image, nullptr), GRASS_SUCCESS) << log;
+            f.color = image.rgba;
+            f.extra = image.other;
+            f.velocity = image.velocity;
+            f.depth = image.depth;
+            return f;
+        }
         gl.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
         const float black[4] = {0.0f, 0.0f, 0.0f, 1.0f}, far = 1.0f;
         gl.ClearNamedFramebufferfv(fbo_, GL_COLOR, 0, black);
@@ -253,8 +281,9 @@ protected:
         grass_view_desc v = view(eye, at);
         std::memset(v.projection, 0, sizeof v.projection);
         v.projection[0] = v.projection[5] = float(1.0 / 0.4);
-        v.projection[10] = float(-2.0 / 9.0);
-        v.projection[14] = float(-11.0 / 9.0);
+        const bool vk = GetParam() == GRASS_BACKEND_VULKAN; // clip z 0..1
+        v.projection[10] = float(vk ? -1.0 / 9.0 : -2.0 / 9.0);
+        v.projection[14] = float(vk ? -1.0 / 9.0 : -11.0 / 9.0);
         v.projection[15] = 1.0f;
         v.time = time;
         return v;
@@ -266,7 +295,7 @@ protected:
 };
 
 TEST_P(MotionVectorsTest, ACameraPanGivesEachGrassPixelsReprojection) {
-    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan does not write motion vectors yet";
+    const bool vk = GetParam() == GRASS_BACKEND_VULKAN; // window depth is NDC z
     make_field(three_tier_field(48));
     const double before_eye[3] = {5.7, 0.75, 0.3}, before_at[3] = {6.2, 0.0, 8.0};
     const double eye[3] = {6.0, 0.8, 0.5}, at[3] = {6.9, 0.0, 8.0};
@@ -292,9 +321,9 @@ TEST_P(MotionVectorsTest, ACameraPanGivesEachGrassPixelsReprojection) {
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
             if (!f.grass(x, y)) continue;
-            const double ndc[4] = {(x + 0.5) / kSize * 2.0 - 1.0 - now_jitter[0],
-                                   (y + 0.5) / kSize * 2.0 - 1.0 - now_jitter[1],
-                                   2.0 * f.depth[size_t(y) * kSize + x] - 1.0, 1.0};
+            const double ndc[4] = {
+                (x + 0.5) / kSize * 2.0 - 1.0 - now_jitter[0], (y + 0.5) / kSize * 2.0 - 1.0 - now_jitter[1],
+                vk ? f.depth[size_t(y) * kSize + x] : 2.0 * f.depth[size_t(y) * kSize + x] - 1.0, 1.0};
             double rel[4] = {};
             for (int r = 0; r < 4; ++r) {
                 for (int k = 0; k < 4; ++k) rel[r] += inv_now[4 * k + r] * ndc[k];
@@ -339,7 +368,6 @@ TEST_P(MotionVectorsTest, ACameraPanGivesEachGrassPixelsReprojection) {
 }
 
 TEST_P(MotionVectorsTest, AGustMovesTheGrassAsTwoFramesDo) {
-    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan does not write motion vectors yet";
     grass_wind_desc wind = grass_default_wind_desc();
     wind.direction[0] = 1.0f;
     wind.direction[2] = 0.4f;
@@ -419,8 +447,9 @@ TEST_P(MotionVectorsTest, AGustMovesTheGrassAsTwoFramesDo) {
     }
 }
 
+// Vulkan: the targets alone (the pass's attachment 1, write mask 0; the velocity's .ba).
 TEST_P(MotionVectorsTest, OtherTargetsAndTheHostsStateStay) {
-    if (GetParam() == GRASS_BACKEND_VULKAN) GTEST_SKIP() << "GL state";
+    const bool gl_host = GetParam() == GRASS_BACKEND_GL;
     make_field(three_tier_field(48));
     const double eye[3] = {6.0, 0.8, 0.5}, at[3] = {6.9, 0.0, 8.0};
     const float none[2] = {0.0f, 0.0f};
@@ -431,13 +460,15 @@ TEST_P(MotionVectorsTest, OtherTargetsAndTheHostsStateStay) {
     v.next = &motion;
     // The host's own state of draw buffer 2's output slot (1 for grass), binding 3, blend.
     GLuint host_buffer = 0;
-    gl.CreateBuffers(1, &host_buffer);
-    gl.NamedBufferData(host_buffer, 1024, nullptr, GL_STATIC_DRAW);
-    gl.BindBufferRange(GL_UNIFORM_BUFFER, 3, host_buffer, 256, 512);
-    gl.Enablei(GL_BLEND, 1);
-    gl.ColorMaski(1, GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
-    gl.ColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    gl.Disablei(GL_BLEND, 2);
+    if (gl_host) {
+        gl.CreateBuffers(1, &host_buffer);
+        gl.NamedBufferData(host_buffer, 1024, nullptr, GL_STATIC_DRAW);
+        gl.BindBufferRange(GL_UNIFORM_BUFFER, 3, host_buffer, 256, 512);
+        gl.Enablei(GL_BLEND, 1);
+        gl.ColorMaski(1, GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+        gl.ColorMaski(2, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        gl.Disablei(GL_BLEND, 2);
+    }
     // Blending off for the clears (they respect masks, not blending); the masks as above.
     const Frame f = draw(v);
     size_t grass = 0, moved = 0, extra_changed = 0, ba_changed = 0, sky_changed = 0;
@@ -445,8 +476,9 @@ TEST_P(MotionVectorsTest, OtherTargetsAndTheHostsStateStay) {
         for (int x = 0; x < kSize; ++x) {
             const size_t i = size_t(y) * kSize + x;
             const uint8_t* e = &f.extra[i * 4];
-            // Draw buffer 1's pattern, under the host's mask (r and b cleared, g and a kept at 0).
-            extra_changed += e[0] != 51 || e[2] != 153;
+            // Draw buffer 1's pattern, under the host's mask (r and b cleared, g and a kept at 0);
+            // Vulkan: all four as cleared.
+            extra_changed += e[0] != 51 || e[2] != 153 || (!gl_host && (e[1] != 102 || e[3] != 204));
             const float* vel = f.v(x, y);
             ba_changed += vel[2] != kVelocityClear[2] || vel[3] != kVelocityClear[3];
             if (f.grass(x, y)) {
@@ -462,6 +494,7 @@ TEST_P(MotionVectorsTest, OtherTargetsAndTheHostsStateStay) {
     EXPECT_EQ(extra_changed, 0u) << "pixels of the other draw buffer grass wrote";
     EXPECT_EQ(ba_changed, 0u) << "velocity pixels whose .ba grass wrote";
     EXPECT_EQ(sky_changed, 0u) << "velocity pixels without grass that grass wrote";
+    if (!gl_host) return;
     GLint buffers[3] = {}, binding = 0;
     for (int i = 0; i < 3; ++i) gl.GetIntegerv(GL_DRAW_BUFFER0 + i, &buffers[i]);
     EXPECT_EQ(buffers[0], GL_COLOR_ATTACHMENT0);
@@ -517,7 +550,56 @@ TEST_P(MotionVectorsTest, AViewWithoutItKeepsItsProgramsAndPicture) {
     EXPECT_EQ(c.color, a.color);
 }
 
-TEST_P(MotionVectorsTest, BadDescsAreRefusedAndVulkanRefusesIt) {
+// Vulkan: plain views make nothing for motion vectors, even in a context with a velocity
+// target (no pipeline, no object grass names "motion"); the first motion view makes its
+// pipelines (blades, volume, image), layouts, the GrassMotion block's buffer and its pool;
+// the motion view's colour and depth are the plain view's.
+TEST_P(MotionVectorsTest, AVulkanViewWithoutItMakesNothingForIt) {
+    if (GetParam() != GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan objects";
+    vk_intercept::clear_debug_records(); // what earlier tests of the process made
+    const grass_host::TargetDesc target = host->target();
+    start(target); // a context made since
+    make_field(three_tier_field(48));
+    const double eye[3] = {6.0, 0.8, 0.5}, at[3] = {6.9, 0.0, 8.0};
+    const float none[2] = {0.0f, 0.0f};
+    const grass_view_desc plain = view(eye, at);
+    // The objects grass made and named since the context began whose name says `what` and `kind`.
+    const auto named = [](const char* what, const char* kind) {
+        size_t n = 0;
+        for (const auto& name : vk_intercept::names())
+            n += name.second.find(what) != std::string::npos && name.second.find(kind) != std::string::npos;
+        return n;
+    };
+    const auto motion_objects = [&](const char* kind) { return named("motion", kind); };
+    draw(plain); // the plain pipelines and per-frame buffers of both frame slots
+    const Frame a = draw(plain);
+    const vk_intercept::Live plain_live = vk_intercept::live();
+    draw(plain);
+    const vk_intercept::Live again = vk_intercept::live();
+    EXPECT_EQ(again.pipelines_made, plain_live.pipelines_made) << "plain frames made pipelines";
+    EXPECT_EQ(motion_objects(""), 0u) << "objects for motion vectors before any motion view";
+    EXPECT_EQ(named("view extras", ""), 0u) << "the view extras' objects before any motion view";
+    grass_view_desc before = plain;
+    before.camera_position[2] -= 0.3;
+    grass_view_motion_desc motion = motion_of(before, none);
+    grass_view_desc moving = plain;
+    moving.next = &motion;
+    const Frame b = draw(moving);
+    const vk_intercept::Live motion_live = vk_intercept::live();
+    EXPECT_GE(motion_live.pipelines_made - again.pipelines_made, 3) << "the motion pipelines";
+    EXPECT_EQ(motion_objects("pipelines"), 3u) << "the blade, volume and image tier motion pipelines";
+    EXPECT_EQ(motion_objects("block"), 1u) << "the GrassMotion block of the view slot";
+    EXPECT_EQ(named("view extras", "pool"), 1u) << "the view extras' descriptor pool";
+    EXPECT_EQ(named("view extras", "layout"), 3u) << "the view extras' two set layouts and pipeline layout";
+    EXPECT_EQ(named("shadow", ""), 0u) << "a motion view made objects for receiving shadows";
+    EXPECT_EQ(a.color, b.color) << "the motion view's colour differs";
+    EXPECT_EQ(a.depth, b.depth) << "the motion view's depth differs";
+    const Frame c = draw(plain);
+    EXPECT_EQ(vk_intercept::live().pipelines_made, motion_live.pipelines_made) << "a plain view after a motion view";
+    EXPECT_EQ(c.color, a.color);
+}
+
+TEST_P(MotionVectorsTest, BadDescsAreRefused) {
     make_field(field_desc(8));
     const double eye[3] = {1.0, 1.0, -1.0}, at[3] = {1.0, 0.0, 1.0};
     const float none[2] = {0.0f, 0.0f};
@@ -567,7 +649,18 @@ TEST_P(MotionVectorsTest, BadDescsAreRefusedAndVulkanRefusesIt) {
     bad.next = &second;
     refused(bad, GRASS_ERROR_WRONG_STRUCT_TYPE, "GRASS_STRUCT_TYPE_VIEW_MOTION_DESC");
     if (GetParam() == GRASS_BACKEND_VULKAN) {
-        refused(d, GRASS_ERROR_UNSUPPORTED, "the Vulkan backend does not write motion vectors yet");
+        // The context's velocity target is colour attachment 2: another is refused, and a
+        // context made without grass_vk_velocity_target_desc refuses every motion view.
+        bad = d;
+        bad.velocity_attachment = 1;
+        refused(bad, GRASS_ERROR_INVALID_ARGUMENT,
+                "grass_view_motion_desc->velocity_attachment is 1, but the context's "
+                "grass_vk_velocity_target_desc.velocity_attachment is 2");
+        grass_host::TargetDesc t;
+        t.width = t.height = kSize;
+        start(t);
+        make_field(field_desc(8));
+        refused(d, GRASS_ERROR_INVALID_STATE, "the context was made without a grass_vk_velocity_target_desc");
         return;
     }
     // GL: a framebuffer without a draw buffer at velocity_attachment draws nothing.

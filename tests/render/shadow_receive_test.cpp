@@ -114,10 +114,13 @@ protected:
     }
     // The host and context of `backend` (the test's, or GL for the agreement test); `samples`
     // above 1 or `dynamic_rendering` (Vulkan) read back no depth.
-    void start_on(grass_backend backend, uint32_t samples = 1, bool dynamic_rendering = false) {
+    // `velocity_attachment` (Vulkan): the pass's velocity target there (TargetDesc).
+    void start_on(grass_backend backend, uint32_t samples = 1, bool dynamic_rendering = false,
+                  uint32_t velocity_attachment = 0) {
         backend_ = backend;
         grass_host::TargetDesc t;
         t.width = t.height = kSize;
+        t.vk_velocity_attachment = velocity_attachment;
         t.samples = samples;
         t.vk_dynamic_rendering = dynamic_rendering;
         t.read_depth = samples == 1 && !dynamic_rendering;
@@ -606,8 +609,8 @@ TEST_P(ShadowReceiveTest, AVulkanViewWithoutItKeepsItsPipelines) {
     EXPECT_NE(image.rgba, lit.rgba) << "the receiving view drew the same picture";
     const vi::Live receiving = vi::live();
     EXPECT_GE(receiving.pipelines_made - plain.pipelines_made, 3) << "its own blade, volume and image pipelines";
-    EXPECT_EQ(count(kPipelineLayout), 1) << "the receiving pipeline layout";
-    EXPECT_EQ(count(kSetLayout), 1) << "set 1's layout";
+    EXPECT_EQ(count(kPipelineLayout), 1) << "the view extras' pipeline layout";
+    EXPECT_EQ(count(kSetLayout), 2) << "set 1's and set 2's layouts";
     EXPECT_EQ(count(kSampler), 2) << "the LESS_OR_EQUAL and GREATER_OR_EQUAL compare samplers";
     EXPECT_EQ(count(kPool), 1) << "the pool of the views' shadow sets";
 
@@ -618,6 +621,60 @@ TEST_P(ShadowReceiveTest, AVulkanViewWithoutItKeepsItsPipelines) {
     EXPECT_EQ(plain_after.rgba, lit.rgba);
 }
 #endif
+
+// The main view of a host with shadows and temporal anti-aliasing: a Vulkan view that receives
+// the host's shadow map and writes motion vectors at once (one set 1 of both blocks and the
+// map, its own pipelines) draws the receiving view's colour and the motion view's velocity.
+TEST_P(ShadowReceiveTest, AVulkanViewReceivesAndWritesMotionVectorsAtOnce) {
+    if (GetParam() != GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan's view extras";
+    start_on(GRASS_BACKEND_VULKAN, 1, false, 2); // velocity at colour attachment 2
+    make_tiered_field();
+    make_map(1, [](int, double u, double) { return u < 0.5 ? 0.0f : 1.0f; });
+    const grass_host::Image lit = render(camera(nullptr));
+    grass_shadow_receive_desc d = receive(GRASS_SHADOW_COMPARE_LESS_EQUAL, 1);
+    const grass_host::Image received = render(camera(&d));
+
+    // The previous frame's camera 0.3 m west and 0.2 m lower: every grass pixel moved.
+    const grass_view_desc before = camera(nullptr);
+    grass_view_motion_desc m = grass_default_view_motion_desc();
+    std::memcpy(m.previous_camera_position, before.camera_position, sizeof m.previous_camera_position);
+    m.previous_camera_position[0] -= 0.3;
+    m.previous_camera_position[1] -= 0.2;
+    std::memcpy(m.previous_view, before.view, sizeof m.previous_view);
+    std::memcpy(m.previous_projection, before.projection, sizeof m.previous_projection);
+    m.previous_time = before.time;
+    m.velocity_attachment = 2;
+    // Both first: no earlier motion view's block can stand in for its own.
+    d.next = &m;
+    const grass_host::Image both = render(camera(&d));
+    save(both, "shadow_receive_with_motion");
+    grass_view_desc moving = camera(nullptr);
+    lod_origin_.next = &m;
+    const grass_host::Image moved = render(moving);
+
+    size_t grass = 0, shadowed = 0, moving_pixels = 0, colour_off = 0, velocity_off = 0;
+    for (size_t i = 0; i < size_t(kSize) * kSize; ++i) {
+        if (received.depth[i] >= 1.0f - 1e-6f) continue;
+        ++grass;
+        int worst = 0, dark = 0;
+        for (int c = 0; c < 3; ++c) {
+            worst = std::max(worst, std::abs(int(both.rgba[4 * i + c]) - int(received.rgba[4 * i + c])));
+            dark = std::max(dark, int(lit.rgba[4 * i + c]) - int(received.rgba[4 * i + c]));
+        }
+        colour_off += worst > 1;
+        shadowed += dark > 8;
+        const float* v = &moved.velocity[4 * i];
+        const float* w = &both.velocity[4 * i];
+        moving_pixels += std::fabs(v[0]) + std::fabs(v[1]) > 1e-3f;
+        velocity_off += !(std::fabs(v[0] - w[0]) + std::fabs(v[1] - w[1]) <= 1e-5f); // NaN: off
+    }
+    EXPECT_GT(grass, size_t(kSize) * kSize / 4) << "grass pixels";
+    EXPECT_GT(shadowed, grass / 5) << "pixels the map shadows";
+    EXPECT_GT(moving_pixels, grass * 9 / 10) << "grass pixels with a velocity";
+    EXPECT_EQ(colour_off, 0u) << "pixels whose colour is not the receiving view's (over 1 level)";
+    EXPECT_EQ(velocity_off, 0u) << "pixels whose velocity is not the motion view's (over 1e-5)";
+    EXPECT_EQ(both.depth, received.depth);
+}
 
 INSTANTIATE_TEST_SUITE_P(Backends, ShadowReceiveTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });

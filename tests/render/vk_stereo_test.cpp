@@ -425,6 +425,25 @@ size_t differing_pixels(const std::vector<uint8_t>& a, const std::vector<uint8_t
 // pass) for the suite: creating a context compiles its pipelines, seconds on lavapipe.
 class VkStereo : public ::testing::Test {
 protected:
+    // grass_vk_create_context with a copy of the extension `ext` chained in front of the
+    // (view_mask) desc's chain (its next that chain when NULL) is refused
+    // (GRASS_ERROR_INVALID_ARGUMENT) logging `message`, and makes no context.
+    template <class Extension>
+    void expect_refused(const Extension& ext, uint32_t view_mask, const char* message) {
+        grass_context_desc cd = contexts.desc();
+        grass_context* ctx = nullptr;
+        grass_vk_desc d = host.vk_desc(view_mask);
+        Extension chained = ext;
+        if (!chained.next) chained.next = d.next;
+        d.next = &chained;
+        contexts.log.clear();
+        EXPECT_EQ(grass_vk_create_context(GRASS_HEADER_VERSION, &cd, &d, &ctx), GRASS_ERROR_INVALID_ARGUMENT)
+            << message;
+        EXPECT_EQ(ctx, nullptr);
+        EXPECT_NE(contexts.log.find(message), std::string::npos) << contexts.log;
+        if (ctx) grass_destroy_context(ctx); // made by mistake
+    }
+
     static void SetUpTestSuite() {
         shared_host = new StereoHost;
         shared_contexts = new Contexts;
@@ -575,20 +594,8 @@ TEST_F(VkStereo, AFrameWhoseEyesDoNotMatchTheContextsPassIsRefused) {
 // a subpass without a render pass, chained twice, and with a stereo pass (depth views are
 // mono) are refused naming the field and its value, and no context is made.
 TEST_F(VkStereo, ABadDepthPassDescIsRefusedNamingTheField) {
-    grass_context_desc cd = contexts.desc();
-    grass_context* ctx = nullptr;
-    const auto refused = [&](const grass_vk_depth_pass_desc& depth, uint32_t view_mask, const char* message) {
-        grass_vk_desc d = host.vk_desc(view_mask);
-        grass_vk_depth_pass_desc chained = depth;
-        if (!chained.next) chained.next = d.next;
-        d.next = &chained;
-        contexts.log.clear();
-        EXPECT_EQ(grass_vk_create_context(GRASS_HEADER_VERSION, &cd, &d, &ctx), GRASS_ERROR_INVALID_ARGUMENT)
-            << message;
-        EXPECT_EQ(ctx, nullptr);
-        EXPECT_NE(contexts.log.find(message), std::string::npos) << contexts.log;
-        if (ctx) grass_destroy_context(ctx); // made by mistake
-        ctx = nullptr;
+    const auto refused = [this](const grass_vk_depth_pass_desc& depth, uint32_t view_mask, const char* message) {
+        expect_refused(depth, view_mask, message);
     };
     grass_vk_depth_pass_desc depth = grass_default_vk_depth_pass_desc();
     EXPECT_EQ(depth.type, GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC);
@@ -608,6 +615,38 @@ TEST_F(VkStereo, ABadDepthPassDescIsRefusedNamingTheField) {
     grass_vk_depth_pass_desc again = depth;
     depth.next = &again;
     refused(depth, 0, "type 0x67720206 a second time");
+}
+
+// A grass_vk_velocity_target_desc (motion vectors, grass_view_motion_desc) is checked as
+// grass_vk_desc is: its attachment count, the velocity attachment among them, the formats of
+// a dynamic-rendering pass, chained twice, and with a stereo pass (motion views are mono)
+// are refused naming the field and its value, and no context is made.
+TEST_F(VkStereo, ABadVelocityTargetDescIsRefusedNamingTheField) {
+    const auto refused = [this](const grass_vk_velocity_target_desc& velocity, uint32_t view_mask,
+                                const char* message) {
+        expect_refused(velocity, view_mask, message); // host.vk_desc: dynamic rendering
+    };
+    grass_vk_velocity_target_desc velocity = grass_default_vk_velocity_target_desc();
+    EXPECT_EQ(velocity.type, GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC);
+    EXPECT_EQ(velocity.color_attachment_count, 2u);
+    EXPECT_EQ(velocity.velocity_attachment, 1u);
+    refused(velocity, 0, "grass_vk_velocity_target_desc.color_formats[0] is 0 (VK_FORMAT_UNDEFINED)");
+    velocity.color_formats[0] = VK_FORMAT_R16G16_SFLOAT;
+    velocity.color_attachment_count = 1;
+    refused(velocity, 0, "grass_vk_velocity_target_desc.color_attachment_count is 1");
+    velocity.color_attachment_count = 9;
+    refused(velocity, 0, "grass_vk_velocity_target_desc.color_attachment_count is 9");
+    velocity.color_attachment_count = 2;
+    velocity.velocity_attachment = 2;
+    refused(velocity, 0, "grass_vk_velocity_target_desc.velocity_attachment is 2; it must be 1 to 1");
+    velocity.velocity_attachment = 0;
+    refused(velocity, 0, "grass_vk_velocity_target_desc.velocity_attachment is 0");
+    velocity.velocity_attachment = 1;
+    refused(velocity, 0x3,
+            "grass_vk_multiview_desc with view_mask 0x3; motion vectors are drawn by mono contexts only");
+    grass_vk_velocity_target_desc again = velocity;
+    velocity.next = &again;
+    refused(velocity, 0, "type 0x67720207 a second time");
 }
 
 } // namespace

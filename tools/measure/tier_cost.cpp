@@ -38,6 +38,9 @@ Rig::Rig(const Options& options) : options_(options) {
     target.height = options.height;
     // --depth-pass on Vulkan: the host's depth-only pass, given to grass (grass_vk_depth_pass_desc).
     target.vk_depth_pass = target.read_depth = options.depth_pass && options.backend == GRASS_BACKEND_VULKAN;
+    // --motion on Vulkan: the host's pass with an RGBA32F velocity target at colour attachment 1,
+    // given to grass (grass_vk_velocity_target_desc).
+    if (options.motion && options.backend == GRASS_BACKEND_VULKAN) target.vk_velocity_attachment = 1;
     std::string error;
     host_ = grass_host::Host::create(options.backend, target, &error);
     if (!host_) throw grass_sample::Failure("cannot create the headless host: " + error);
@@ -241,7 +244,7 @@ Subcommand add_tier_cost(CLI::App& measure) {
                                   "(docs/records/shadow-receiving.md)");
     receive->excludes(maps)->excludes(features)->excludes("--depth-pass");
     app->add_flag("--motion", o->motion,
-                  "each row of the plain table also writing motion vectors, still and in wind, GL "
+                  "each row of the plain table also writing motion vectors, still and in wind "
                   "(docs/records/motion-vectors.md)")
         ->excludes(maps)
         ->excludes(features)

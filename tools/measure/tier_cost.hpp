@@ -43,8 +43,8 @@
 // GL or Vulkan; docs/records/shadow-receiving.md) that shades half the field, with filter_radius 0
 // and 1.5, rounds alternating; per basic cell each, and the ratios to the plain frame.
 // --motion: each row of the plain table also writing motion vectors (grass_view_motion_desc;
-// GL; docs/records/motion-vectors.md) into an RG16F target the tool adds to the host's
-// framebuffer, without wind and in wind (the pose computed twice); per basic cell each, and
+// docs/records/motion-vectors.md) into a velocity target (GL: an RG16F target the tool adds to
+// the host's framebuffer; Vulkan: the host's RGBA32F colour attachment 1), without wind and in wind (the pose computed twice); per basic cell each, and
 // the ratios to the plain frame of the same wind.
 // --frames N: frames measured per row (after one that uploads); default 5 (median).
 // Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features | --single] [--frames N]
@@ -71,7 +71,7 @@ struct Options {
     bool single = false;     // only the tiers alone in single cells (kSingleTiers)
     bool depth_pass = false; // --depth-pass: each plain row also as a depth pass
     bool receive = false;    // --receive: each plain row also receiving a shadow map (GL)
-    bool motion = false;     // --motion: each plain row also writing motion vectors (GL)
+    bool motion = false;     // --motion: each plain row also writing motion vectors
     int frames = 5;
     int rounds = 3;          // --maps and --features only
     std::string patch_scene; // --patch-of: the patch of this scene file instead of the default patch

@@ -202,10 +202,11 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_GL_DESC = 0x67720101,
     GRASS_STRUCT_TYPE_VK_DESC = 0x67720201,
     GRASS_STRUCT_TYPE_VK_RECORD_DESC = 0x67720202,
-    GRASS_STRUCT_TYPE_VK_PREPARE_DESC = 0x67720203,      /* 0.5 */
-    GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC = 0x67720204, /* 0.5 */
-    GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC = 0x67720205,    /* 0.5 */
-    GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC = 0x67720206,   /* 0.5: depth-only passes on Vulkan */
+    GRASS_STRUCT_TYPE_VK_PREPARE_DESC = 0x67720203,         /* 0.5 */
+    GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC = 0x67720204,    /* 0.5 */
+    GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC = 0x67720205,       /* 0.5 */
+    GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC = 0x67720206,      /* 0.5: depth-only passes on Vulkan */
+    GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC = 0x67720207, /* 0.5: motion vectors on Vulkan */
     /* 0.5: responsive grass */
     GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
@@ -1046,14 +1047,15 @@ GRASS_API grass_shadow_receive_desc grass_default_shadow_receive_desc(void);
  * volume and image tiers' bend (their pose at `time` minus their pose at previous_time).
  * The colliders' motion (the interaction map) is not in it: pressed grass moves only with
  * the camera and the wind. A view without it draws with the same programs and memory as
- * before. A depth pass (GRASS_PASS_DEPTH) ignores it. GL only for now: Vulkan refuses it
- * (GRASS_ERROR_UNSUPPORTED).
+ * before. A depth pass (GRASS_PASS_DEPTH) ignores it. Vulkan: the context was made with a
+ * grass_vk_velocity_target_desc (else GRASS_ERROR_INVALID_STATE).
  *
  * Encoding: per pixel, the grass's position in this frame minus its position in the
  * previous frame, both without their jitter, in viewport units: NDC x 0.5 (a whole
- * viewport's width is 1), x to the right, y up in NDC (GL's window y; the host flips it
- * where its convention is y down). Written to .r and .g of the velocity attachment as
- * floats (a GL_RG16F or GL_RGBA16F target); .b and .a are masked off, untouched. Where no
+ * viewport's width is 1), x to the right, y up in NDC on GL (GL's window y; the host flips
+ * it where its convention is y down), y down on Vulkan (Vulkan's clip y). Written to .r and .g of the velocity attachment as
+ * floats (a GL_RG16F or GL_RGBA16F target, a VK_FORMAT_R16G16_SFLOAT one...); .b and .a are
+ * masked off, untouched. Where no
  * grass covers a pixel nothing is written (the host clears it or draws its own first).
  * Subtracting it from a pixel's viewport coordinate (window xy / viewport size) gives
  * where that grass was in the previous frame. */
@@ -1078,7 +1080,8 @@ typedef struct grass_view_motion_desc {
     double previous_time;
     /* Where the velocity goes. GL: the index of the draw buffer (glDrawBuffers' list of the
      * bound framebuffer) that holds the velocity target, 1 to 7 (0 is the lit colour).
-     * Default 1. */
+     * Vulkan: the colour attachment's index in the pass, equal to the context's
+     * grass_vk_velocity_target_desc.velocity_attachment. Default 1. */
     uint32_t velocity_attachment;
 } grass_view_motion_desc;
 

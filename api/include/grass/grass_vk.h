@@ -80,7 +80,8 @@ typedef grass_vk_void_function(GRASS_VKAPI_PTR* grass_vk_get_instance_proc_addr_
 typedef struct grass_vk_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_DESC */
     /* NULL, or a chain of extensions (0.5): a grass_vk_host_objects_desc, a
-     * grass_vk_multiview_desc, a grass_vk_depth_pass_desc, each at most once, in any order */
+     * grass_vk_multiview_desc, a grass_vk_depth_pass_desc, a grass_vk_velocity_target_desc,
+     * each at most once, in any order */
     const void* next;
     grass_vk_get_instance_proc_addr_fn get_instance_proc_addr; /* required */
     void* instance;                                            /* VkInstance, required */
@@ -168,6 +169,38 @@ typedef struct grass_vk_depth_pass_desc {
 
 /* 0.5 */
 GRASS_API grass_vk_depth_pass_desc grass_default_vk_depth_pass_desc(void);
+
+/* 0.5: Motion vectors (grass_view_motion_desc; docs/integration.md, "Motion vectors"),
+ * chained through grass_vk_desc.next: the colour attachments of the pass grass draws in
+ * (grass_vk_desc's render pass subpass, or its dynamic rendering) when that pass also holds
+ * a velocity target. grass makes its motion pipelines against it on the first motion view
+ * that draws each tier and feature mask: colour attachment 0 the lit colour as without it,
+ * attachment velocity_attachment written .rg unblended (.ba masked off), every other colour
+ * attachment's write mask 0; the GrassMotion block per view slot in the view's descriptor
+ * set of grass's own (shared with a receiving view's shadow map, so one view may both
+ * receive shadows and write motion vectors). A motion view's
+ * grass_view_motion_desc.velocity_attachment must equal
+ * velocity_attachment. Without this struct a context refuses a motion view
+ * (GRASS_ERROR_INVALID_STATE); a context that never draws one holds nothing for it. Not with
+ * grass_vk_multiview_desc.view_mask 0x3 (GRASS_ERROR_INVALID_ARGUMENT). The velocity is in
+ * viewport units with Vulkan's clip y: +y is down the framebuffer (GL's encoding is y up). */
+typedef struct grass_vk_velocity_target_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC */
+    const void* next;       /* NULL, or a further extension of grass_vk_desc */
+    /* How many colour attachments the pass has: 2 to 8 (attachment 0 is the lit colour,
+     * grass_vk_desc.color_format under dynamic rendering). Default 2. */
+    uint32_t color_attachment_count;
+    /* The index of the velocity target among them: 1 to color_attachment_count - 1. Default 1. */
+    uint32_t velocity_attachment;
+    /* Dynamic rendering (grass_vk_desc.render_pass 0): the VkFormat of every colour
+     * attachment other than 0, in order (index i - 1 for attachment i; the velocity's a
+     * float format with R and G, e.g. VK_FORMAT_R16G16_SFLOAT), each not
+     * VK_FORMAT_UNDEFINED. A render pass: ignored. */
+    uint32_t color_formats[7];
+} grass_vk_velocity_target_desc;
+
+/* 0.5 */
+GRASS_API grass_vk_velocity_target_desc grass_default_vk_velocity_target_desc(void);
 
 GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const grass_context_desc* desc,
                                                const grass_vk_desc* vk_desc, grass_context** out_context);

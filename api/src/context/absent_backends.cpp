@@ -63,6 +63,14 @@ GRASS_API grass_vk_depth_pass_desc grass_default_vk_depth_pass_desc(void) {
     d.sample_count = 1;
     return d;
 }
+GRASS_API grass_vk_velocity_target_desc grass_default_vk_velocity_target_desc(void) {
+    grass_vk_velocity_target_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC;
+    d.color_attachment_count = 2;
+    d.velocity_attachment = 1;
+    return d;
+}
 GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void) {
     grass_vk_record_desc d;
     std::memset(&d, 0, sizeof(d));

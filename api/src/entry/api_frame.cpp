@@ -205,11 +205,22 @@ grass_result check_views(grass_context* ctx, const char* fn, const ViewExtension
     }
     if (ext.shadow && ctx->backend->kind() == GRASS_BACKEND_VULKAN)
         GRASS_TRY(check_vk_shadow(ctx, fn, *ext.shadow, target));
-    if (ext.motion && ctx->backend->kind() == GRASS_BACKEND_VULKAN) {
-        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
-                         "%s: view->next chains a grass_view_motion_desc, but the Vulkan backend does not write "
-                         "motion vectors yet (GL does)",
-                         fn);
+    if (ext.motion && ctx->backend->kind() == GRASS_BACKEND_VULKAN &&
+        !(ext.pass && ext.pass->pass == GRASS_PASS_DEPTH)) {
+        if (target.velocity_attachment == 0) {
+            return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_VELOCITY_TARGET,
+                             "%s: view->next chains a grass_view_motion_desc, but the context was made without a "
+                             "grass_vk_velocity_target_desc on grass_vk_desc.next, which names the pass's colour "
+                             "attachments that grass makes its motion pipelines for",
+                             fn);
+        }
+        if (ext.motion->velocity_attachment != target.velocity_attachment) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_VELOCITY_TARGET,
+                             "%s: grass_view_motion_desc->velocity_attachment is %u, but the context's "
+                             "grass_vk_velocity_target_desc.velocity_attachment is %u (its motion pipelines write "
+                             "that colour attachment)",
+                             fn, ext.motion->velocity_attachment, target.velocity_attachment);
+        }
     }
     const uint32_t views = target.views;
     if (ext.stereo && views == 2) return GRASS_SUCCESS;

@@ -66,6 +66,10 @@ struct RenderTarget {
     // and that target's samples per pixel (0: `samples`), which a depth view's Frame block gets.
     bool depth_pass = true;
     uint32_t depth_pass_samples = 0;
+    // Motion views (grass_view_motion_desc) on Vulkan: the index of the velocity attachment
+    // the backend's motion pipelines write (grass_vk_velocity_target_desc), 0 where it has
+    // none and refuses them. GL: 0 (it routes the bound framebuffer's draw buffers per view).
+    uint32_t velocity_attachment = 0;
     bool operator==(const RenderTarget& o) const {
         return samples == o.samples && clip_zero_to_one == o.clip_zero_to_one && views == o.views;
     }

@@ -1,0 +1,92 @@
+#include "velocity_target_vk.hpp"
+
+#include <cstring>
+
+namespace grass_host {
+
+const void* VkVelocityTarget::enable_features(const TargetDesc& target, const void* chain) {
+    if (target.vk_velocity_attachment == 0) return chain;
+    features_.features.independentBlend = VK_TRUE;
+    features_.pNext = const_cast<void*>(chain);
+    return &features_;
+}
+
+bool VkVelocityTarget::create(VkDevice device, const VkPhysicalDeviceMemoryProperties& memory, const TargetDesc& target,
+                              grass_bootstrap::VkPassDesc* pass, std::string* error) {
+    target_ = target;
+    if (target.vk_velocity_attachment == 0) return true;
+    if (target.vk_velocity_attachment < 1 || target.vk_velocity_attachment > 2 || target.samples != 1 ||
+        target.vk_dynamic_rendering || target.ground || !target.meshes.empty()) {
+        *error = "vk_velocity_attachment needs 1 or 2 and a single-sampled target drawn with a render pass, without "
+                 "ground or meshes";
+        return false;
+    }
+    count_ = target.vk_velocity_attachment;
+    formats_[0] = count_ == 2 ? kOtherFormat : kVelocityFormat;
+    formats_[1] = kVelocityFormat;
+    for (uint32_t i = 0; i < count_; ++i) {
+        grass_bootstrap::VkImageDesc desc;
+        desc.extent = {target.width, target.height};
+        desc.format = formats_[i];
+        desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        if (!grass_bootstrap::create_image(device, memory, desc, &images_[i], error)) return false;
+        views_[i] = images_[i].view;
+    }
+    pass->more_colors = formats_;
+    pass->more_color_count = count_;
+    const VkDeviceSize size = VkDeviceSize(target.width) * target.height * (16 + 4);
+    return grass_bootstrap::create_buffer(device, memory, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                          VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
+                                          &readback_, error);
+}
+
+void VkVelocityTarget::destroy(VkDevice device) {
+    for (grass_bootstrap::VkImageParts& image : images_) grass_bootstrap::destroy_image(device, &image);
+    grass_bootstrap::destroy_buffer(device, &readback_);
+    count_ = 0;
+}
+
+void VkVelocityTarget::clear_values(VkClearValue* out) const {
+    for (uint32_t i = 0; i < count_; ++i) {
+        const float* c = i + 1 == count_ ? target_.velocity_clear : target_.other_clear;
+        std::memcpy(out[i].color.float32, c, 4 * sizeof(float));
+    }
+}
+
+const void* VkVelocityTarget::chain(const void* next) {
+    if (count_ == 0) return next;
+    desc_.color_attachment_count = 1 + count_;
+    desc_.velocity_attachment = count_;
+    for (uint32_t i = 0; i < count_; ++i) desc_.color_formats[i] = formats_[i];
+    desc_.next = next;
+    return &desc_;
+}
+
+void VkVelocityTarget::copy(VkCommandBuffer cmd) const {
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {target_.width, target_.height, 1};
+    vkCmdCopyImageToBuffer(cmd, images_[count_ - 1].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1,
+                           &region);
+    if (count_ == 2) {
+        region.bufferOffset = VkDeviceSize(target_.width) * target_.height * 16;
+        vkCmdCopyImageToBuffer(cmd, images_[0].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1,
+                               &region);
+    }
+    const VkBufferMemoryBarrier b = grass_bootstrap::host_read_barrier(readback_.buffer);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0,
+                         nullptr);
+}
+
+void VkVelocityTarget::read(VkDevice, Image* out) const {
+    const size_t n = size_t(target_.width) * target_.height;
+    out->velocity.resize(n * 4);
+    std::memcpy(out->velocity.data(), readback_.mapped, n * 16);
+    out->other.clear();
+    if (count_ == 2) {
+        out->other.resize(n * 4);
+        std::memcpy(out->other.data(), static_cast<const uint8_t*>(readback_.mapped) + n * 16, n * 4);
+    }
+}
+
+} // namespace grass_host
