@@ -417,8 +417,7 @@ bool GlHost::create_shadows(std::string* error) {
 grass_result GlHost::draw_shadow_cascades(grass_context* context, const ShadowFrameViews& views,
                                           const LightCascades& cascades) {
     const HostShadows& hs = target_.host_shadows;
-    uint32_t index = 0;
-    grass_result result = grass_begin_frame(context, &views.main);
+    grass_result result = plan_shadow_frame(context, views, cascades.count, shadow_parts.grass_casts);
     for (uint32_t i = 0; i < cascades.count && result == GRASS_SUCCESS; ++i) {
         shadows_->begin_cascade(i);
         if (meshes_ && shadow_parts.host_casts) {
@@ -426,10 +425,7 @@ grass_result GlHost::draw_shadow_cascades(grass_context* context, const ShadowFr
             meshes_->draw(cascades.light_view[i], false, false);
             shadows_->polygon_offset(false, 0.0f, 0.0f);
         }
-        if (shadow_parts.grass_casts) {
-            result = grass_plan_view(context, &views.cascade[i], &index);
-            if (result == GRASS_SUCCESS) result = grass_gl_render_view(context, index);
-        }
+        if (shadow_parts.grass_casts) result = grass_gl_render_view(context, 1 + i);
     }
     gl_.Disable(GL_DEPTH_TEST);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, fb_.draw_fbo);

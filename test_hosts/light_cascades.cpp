@@ -165,6 +165,16 @@ void make_shadow_frame_views(const grass_view_desc& main, const LightCascades& c
     }
 }
 
+grass_result plan_shadow_frame(grass_context* context, const ShadowFrameViews& views, uint32_t cascades,
+                               bool grass_casts) {
+    grass_result result = grass_begin_frame(context, &views.main);
+    uint32_t index = 0;
+    for (uint32_t i = 0; grass_casts && i < cascades && result == GRASS_SUCCESS; ++i) {
+        result = grass_plan_view(context, &views.cascade[i], &index);
+    }
+    return result;
+}
+
 bool check_host_shadows(const TargetDesc& target, std::string* error) {
     const HostShadows& s = target.host_shadows;
     const auto fail = [&](const std::string& what) {
@@ -189,6 +199,9 @@ bool check_host_shadows(const TargetDesc& target, std::string* error) {
         return fail("grass_receive_bias is " + text(s.grass_receive_bias) + "; expected 0 to 1");
     if (!(s.filter_radius >= 0.0f && s.filter_radius <= 16.0f))
         return fail("filter_radius is " + text(s.filter_radius) + "; expected 0 to 16");
+    if (target.vk_depth_pass)
+        return fail("cascades is " + std::to_string(s.cascades) +
+                    " with vk_depth_pass: the cascades' pass is grass's depth-only pass");
     if (target.reversed_z || target.gl_clip_zero_to_one)
         return fail("cascades is " + std::to_string(s.cascades) +
                     " with reversed_z or gl_clip_zero_to_one; the host's shadows use standard depth");

@@ -46,6 +46,11 @@ struct ShadowFrameViews {
 void make_shadow_frame_views(const grass_view_desc& main, const LightCascades& cascades, const HostShadows& shadows,
                              uint64_t shadow_map, uint32_t vk_image_layout, bool receive, ShadowFrameViews* out);
 
+// Begins grass's frame of `views`: grass_begin_frame(main) (view 0), then, when
+// `grass_casts`, grass_plan_view of each cascade (cascade i is view 1 + i).
+grass_result plan_shadow_frame(grass_context* context, const ShadowFrameViews& views, uint32_t cascades,
+                               bool grass_casts);
+
 // Checks TargetDesc::host_shadows: false and *error naming the field and its value.
 bool check_host_shadows(const TargetDesc& target, std::string* error);
 

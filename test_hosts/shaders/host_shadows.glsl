@@ -1,9 +1,9 @@
 // The host's cascaded sun shadows (TargetDesc::host_shadows), read by the host's ground and
 // meshes when built with HOST_SHADOWS: the share of the sun that reaches a camera-relative
 // point, from a 2D-array depth map with a 3x3 grid of hardware 2x2 PCF taps. The block is
-// light_cascades.hpp's HostShadowUniforms.
+// light_cascades.hpp's HostShadowUniforms. Vulkan: descriptor set 1 (the ground's block is set 0).
 #ifdef VULKAN
-layout(std140, set = 0, binding = 0) uniform HostShadowBlock {
+layout(std140, set = 1, binding = 0) uniform HostShadowBlock {
 #else
 layout(std140, binding = 3) uniform HostShadowBlock {
 #endif
@@ -13,7 +13,7 @@ layout(std140, binding = 3) uniform HostShadowBlock {
     vec4 params;                // x: cascades, y: 1 / map size, z: filter radius (texels)
 } host_shadow;
 #ifdef VULKAN
-layout(set = 0, binding = 1) uniform sampler2DArrayShadow host_shadow_map;
+layout(set = 1, binding = 1) uniform sampler2DArrayShadow host_shadow_map;
 #else
 layout(binding = 1) uniform sampler2DArrayShadow host_shadow_map;
 #endif

@@ -110,7 +110,6 @@ protected:
         t.host_shadows.map_size = 512;
         t.host_shadows.splits[0] = 6.0f, t.host_shadows.splits[1] = 12.0f, t.host_shadows.splits[2] = 30.0f;
         t.host_shadows.grass_receive_bias = receive_bias;
-        t.vk_depth_pass = true;
         return t;
     }
 
@@ -206,8 +205,35 @@ TEST_P(CascadedShadowsTest, WithoutTheReceiveBiasGrassShadesItselfAsASlab) {
         << "grass casting into the map does not reach the grass that receives it";
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, CascadedShadowsTest, ::testing::Values(GRASS_BACKEND_GL),
+INSTANTIATE_TEST_SUITE_P(Backends, CascadedShadowsTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });
+
+#if defined(GRASS_HOST_HAS_GL) && defined(GRASS_HOST_HAS_VULKAN)
+// GL and Vulkan draw the shadowed scene alike (their cascades are fitted in their own clip
+// conventions, and grass's depth views and receiving run in each backend's shaders).
+class CascadedShadowsAgreementTest : public CascadedShadowsTest {};
+
+TEST_P(CascadedShadowsAgreementTest, GlAndVulkanAgree) {
+    const float bias = grass_host::HostShadows{}.grass_receive_bias;
+    const grass_host::Image gl = scene(GRASS_BACKEND_GL, bias, grass_host::Host::ShadowParts{});
+    const grass_host::Image vk = scene(GRASS_BACKEND_VULKAN, bias, grass_host::Host::ShadowParts{});
+    ASSERT_FALSE(HasFailure()) << log;
+    save(gl, "gl");
+    save(vk, "vk");
+    expect_grass(vk, host->target(), 0.3, "the Vulkan picture");
+    const Pixels shaded = pixels_of(0.5, 11.5, 0.5, 5.8, [](double x, double z) { return surely(x, z, true, 0.5); });
+    const Pixels strip = pixels_of(1.0, 11.0, -0.3, -0.1, [](double, double) { return true; });
+    const double whole = mean_difference(gl, vk);
+    std::printf("GL against Vulkan: mean difference %.2f levels; shaded grass %.2f / %.2f, ground strip %.2f / %.2f\n",
+                whole, mean_level(gl, shaded), mean_level(vk, shaded), mean_level(gl, strip), mean_level(vk, strip));
+    EXPECT_LT(whole, 3.0);
+    EXPECT_NEAR(mean_level(gl, shaded), mean_level(vk, shaded), 2.0) << "the building's shadow on grass differs";
+    EXPECT_NEAR(mean_level(gl, strip), mean_level(vk, strip), 3.0) << "grass's shadow on the ground differs";
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, CascadedShadowsAgreementTest, ::testing::Values(GRASS_BACKEND_GL),
+                         [](const auto& p) { return backend_name(p.param); });
+#endif
 
 } // namespace
 } // namespace grass_test
