@@ -226,7 +226,7 @@ TEST_P(CascadedShadowsAgreementTest, GlAndVulkanAgree) {
     const double whole = mean_difference(gl, vk);
     std::printf("GL against Vulkan: mean difference %.2f levels; shaded grass %.2f / %.2f, ground strip %.2f / %.2f\n",
                 whole, mean_level(gl, shaded), mean_level(vk, shaded), mean_level(gl, strip), mean_level(vk, strip));
-    EXPECT_LT(whole, 3.0);
+    EXPECT_LT(whole, 0.2) << "the pictures differ (a broken part in one backend moves the mean by about 0.5)";
     EXPECT_NEAR(mean_level(gl, shaded), mean_level(vk, shaded), 2.0) << "the building's shadow on grass differs";
     EXPECT_NEAR(mean_level(gl, strip), mean_level(vk, strip), 3.0) << "grass's shadow on the ground differs";
 }
