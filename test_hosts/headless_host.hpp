@@ -36,7 +36,7 @@ struct HostShadows {
     // The host's meshes cast with this offset (constant, slope) too.
     float mesh_bias_constant = 2.0f;
     float mesh_bias_slope = 1.5f;
-    float grass_receive_bias = 0.004f; // grass_shadow_receive_desc.depth_bias (depth units)
+    float grass_receive_bias = 0.008f; // grass_shadow_receive_desc.depth_bias (depth units)
     float host_receive_bias = 0.0005f; // the ground's and meshes' bias (depth units)
     float filter_radius = 1.0f;        // texels: grass's and the host's PCF
 };

@@ -1,14 +1,14 @@
 // The host's cascaded sun shadows, the part both backends share (TargetDesc::host_shadows):
 // the cascades' orthographic light views fitted around slices of the main camera's frustum,
 // grass's depth views and receive desc for them, and the uniform block the host's own
-// shaders (shaders/host_shadows.glsl) read the map through.
+// shaders (shaders/cascade_shadows.glsl) read the map through.
 #pragma once
 
 #include "headless_host.hpp"
 
 namespace grass_host {
 
-// std140 block `HostShadowBlock` (shaders/host_shadows.glsl).
+// std140 block `HostShadowBlock` (shaders/cascade_shadows.glsl).
 struct HostShadowUniforms {
     float relative_to_shadow[GRASS_MAX_SHADOW_CASCADES][16]; // camera-relative position -> (u, v, depth)
     float cascade_end[4];                                    // metres along the view axis

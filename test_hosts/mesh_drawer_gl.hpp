@@ -35,7 +35,7 @@ public:
     // Compiles the shaders and uploads the meshes; false and *error when GL refuses.
     bool init(ProcLoader loader, void* user_data, const std::vector<HostMesh>& meshes, std::string* error);
 
-    // Compiles the program that receives the host's shadows (shaders/host_shadows.glsl,
+    // Compiles the program that receives the host's shadows (shaders/cascade_shadows.glsl,
     // TargetDesc::host_shadows); false and *error when GL refuses. After init.
     bool init_receiving(std::string* error);
 

@@ -70,7 +70,7 @@ public:
                 VkDescriptorSet shadow_set = VK_NULL_HANDLE) const;
 
     // TargetDesc::host_shadows: a pipeline that casts into `cascade` (a depth-only pass) and
-    // one that receives through a set of `shadow_set_layout` (shaders/host_shadows.glsl).
+    // one that receives through a set of `shadow_set_layout` (shaders/cascade_shadows.glsl).
     bool init_shadows(const VkPassTarget& cascade, VkDescriptorSetLayout shadow_set_layout, std::string* error);
     // Records every mesh's depth into a cascade's pass (its viewport set by the caller).
     void record_caster(VkCommandBuffer cmd, const grass_view_desc& light_view) const;

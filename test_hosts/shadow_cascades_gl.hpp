@@ -31,7 +31,7 @@ public:
     // glPolygonOffset(slope, constant) with GL_POLYGON_OFFSET_FILL on; off with on = false.
     void polygon_offset(bool on, float constant, float slope);
     // Binds the map and its compare sampler at unit 1 and `uniforms` at uniform binding 3
-    // (shaders/host_shadows.glsl) for the ground's and meshes' receiving programs.
+    // (shaders/cascade_shadows.glsl) for the ground's and meshes' receiving programs.
     void bind_for_receiving(const HostShadowUniforms& uniforms);
     // Unbinds what bind_for_receiving bound.
     void unbind();

@@ -5,7 +5,7 @@ layout(location = 0) in vec3 v_normal;
 layout(location = 1) in vec3 v_relative;
 layout(location = 0) out vec4 out_color;
 #ifdef HOST_SHADOWS
-#include "host_shadows.glsl"
+#include "cascade_shadows.glsl"
 #endif
 
 void main() {
@@ -14,7 +14,7 @@ void main() {
     vec3 ambient = vec3(draw.offset.w, draw.albedo.w, draw.sun_direction.w);
     float n_dot_l = max(dot(n, draw.sun_direction.xyz), 0.0);
 #ifdef HOST_SHADOWS
-    n_dot_l *= host_sun_visibility(v_relative);
+    n_dot_l *= cascade_sun_visibility(v_relative);
 #endif
     vec3 c = draw.albedo.rgb * (ambient + draw.sun_color.rgb * n_dot_l);
     if (draw.sun_color.w > 0.5) { // the target stores what is written: encode

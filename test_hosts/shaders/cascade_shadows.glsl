@@ -18,7 +18,7 @@ layout(set = 1, binding = 1) uniform sampler2DArrayShadow host_shadow_map;
 layout(binding = 1) uniform sampler2DArrayShadow host_shadow_map;
 #endif
 
-float host_sun_visibility(vec3 relative) {
+float cascade_sun_visibility(vec3 relative) {
     float along = dot(relative, host_shadow.forward.xyz);
     int count = int(host_shadow.params.x);
     int cascade = count;
