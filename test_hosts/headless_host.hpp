@@ -18,6 +18,29 @@
 
 namespace grass_host {
 
+// The host's own cascaded sun shadows (light_cascades.hpp): each frame the host fits
+// `cascades` orthographic views of the sun around slices of the main camera's frustum, draws
+// its meshes' depth and grass's depth views (GRASS_PASS_DEPTH, their lod origin the main
+// camera) into a 2D-array depth map, then draws the main view with its ground and meshes
+// sampling the map and grass receiving it (grass_shadow_receive_desc). One grass frame:
+// grass_begin_frame(main view), grass_plan_view of each cascade. Standard depth only (not
+// with reversed_z or gl_clip_zero_to_one); single-sampled or multisampled targets alike.
+struct HostShadows {
+    uint32_t cascades = 0;                          // 0: off; 1 to GRASS_MAX_SHADOW_CASCADES
+    uint32_t map_size = 512;                        // texels a side of each cascade's layer
+    float splits[4] = {6.0f, 15.0f, 40.0f, 100.0f}; // where cascade i ends, metres along the view axis
+    float caster_reach = 30.0f;                     // metres the light's near plane lies beyond a slice (tall casters)
+    // Grass's depth views: glPolygonOffset / vkCmdSetDepthBias (grass_view_pass_desc).
+    float grass_bias_constant = 2.0f;
+    float grass_bias_slope = 1.5f;
+    // The host's meshes cast with this offset (constant, slope) too.
+    float mesh_bias_constant = 2.0f;
+    float mesh_bias_slope = 1.5f;
+    float grass_receive_bias = 0.008f; // grass_shadow_receive_desc.depth_bias (depth units)
+    float host_receive_bias = 0.0005f; // the ground's and meshes' bias (depth units)
+    float filter_radius = 1.0f;        // texels: grass's and the host's PCF
+};
+
 struct TargetDesc {
     uint32_t width = 256;
     uint32_t height = 256;
@@ -60,6 +83,8 @@ struct TargetDesc {
     uint32_t vk_velocity_attachment = 0;
     float velocity_clear[4] = {};
     float other_clear[4] = {};
+    // The host's cascaded sun shadows (off by default).
+    HostShadows host_shadows;
     // Vulkan: the vkGetInstanceProcAddr the host hands grass (grass_vk_desc's
     // get_instance_proc_addr); nullptr: the loader's own. Tests pass a wrapper that counts
     // handles or makes a call fail, for grass's dispatch table only.
@@ -187,6 +212,15 @@ public:
     // it reads back as cleared). GL hosts ignore it: a GL depth pass draws into the colour and
     // depth framebuffer with its colour masks off.
     bool depth_only = false;
+    // TargetDesc::host_shadows: what takes part, for tests that compare with a part left out.
+    // grass_casts: grass's depth views are drawn into the cascades; grass_receives: the main
+    // view chains grass_shadow_receive_desc; host_casts: the meshes draw into the cascades;
+    // host_receives: the ground and meshes sample the map. All off: the frame of a host
+    // without shadows (grass_begin_frame(view) alone).
+    struct ShadowParts {
+        bool grass_casts = true, grass_receives = true, host_casts = true, host_receives = true;
+        bool any() const { return grass_casts || grass_receives || host_casts || host_receives; }
+    } shadow_parts;
 
 protected:
     explicit Host(const TargetDesc& target) : target_(target) {}

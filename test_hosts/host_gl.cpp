@@ -11,6 +11,7 @@
 #include "host_factories.hpp"
 #include "host_shaders.hpp"
 #include "mesh_drawer_gl.hpp"
+#include "shadow_cascades_gl.hpp"
 
 #include <grass/grass_gl.h>
 
@@ -83,9 +84,15 @@ private:
     bool create_target(std::string* error);
     void clear_rect(const float color[4], float depth, const int32_t rect[4]);
     bool create_ground(std::string* error);
-    void draw_ground(const grass_view_desc& view);
-    GLuint ground_program_ = 0, ground_buffer_ = 0, ground_vao_ = 0;
-    std::unique_ptr<GlMeshDrawer> meshes_; // target.meshes
+    void draw_ground(const grass_view_desc& view, bool receive_shadows);
+    bool create_shadows(std::string* error);
+    // TargetDesc::host_shadows: the frame's grass views planned (main, then the cascades'),
+    // the cascades drawn (the meshes' depth, grass's depth views), the main framebuffer bound.
+    grass_result draw_shadow_cascades(grass_context* context, const ShadowFrameViews& views,
+                                      const LightCascades& cascades);
+    GLuint ground_program_ = 0, ground_receiving_program_ = 0, ground_buffer_ = 0, ground_vao_ = 0;
+    std::unique_ptr<GlMeshDrawer> meshes_;      // target.meshes
+    std::unique_ptr<GlShadowCascades> shadows_; // target.host_shadows
     uint32_t count_gl_errors(const char* where);
     static void APIENTRY debug_callback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length,
                                         const GLchar* message, const void* user_param);
@@ -143,6 +150,7 @@ bool GlHost::init(std::string* error) {
     gl_.Enable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     debug_output_ = true;
 
+    if (!check_host_shadows(target_, error)) return false;
     if (!create_target(error)) return false;
     if (target_.ground && !create_ground(error)) return false;
     if (!target_.meshes.empty()) {
@@ -151,6 +159,7 @@ bool GlHost::init(std::string* error) {
         auto loader = [](void* self, const char* name) { return static_cast<GlHost*>(self)->gl_proc_address(name); };
         if (!meshes_->init(loader, this, target_.meshes, error)) return false;
     }
+    if (target_.host_shadows.cascades > 0 && !create_shadows(error)) return false;
     count_gl_errors("host initialisation");
     return true;
 }
@@ -310,6 +319,8 @@ GlHost::~GlHost() {
     if (gl_loaded_) {
         grass_bootstrap::destroy_render_target(gl_, &fb_);
         if (ground_program_) gl_.DeleteProgram(ground_program_);
+        if (ground_receiving_program_) gl_.DeleteProgram(ground_receiving_program_);
+        shadows_.reset();
         if (ground_buffer_) gl_.DeleteBuffers(1, &ground_buffer_);
         if (ground_vao_) gl_.DeleteVertexArrays(1, &ground_vao_);
         movable_meshes_ = nullptr;
@@ -387,10 +398,45 @@ bool GlHost::create_ground(std::string* error) {
     return true;
 }
 
-void GlHost::draw_ground(const grass_view_desc& view) {
+// The cascades' map and framebuffers, and the ground's and meshes' programs that read it.
+bool GlHost::create_shadows(std::string* error) {
+    shadows_ = std::make_unique<GlShadowCascades>();
+    auto loader = [](void* self, const char* name) { return static_cast<GlHost*>(self)->gl_proc_address(name); };
+    if (!shadows_->init(loader, this, target_.host_shadows, error)) return false;
+    if (meshes_ && !meshes_->init_receiving(error)) return false;
+    if (target_.ground) {
+        const std::string vert = with_define(grass_host_shaders::ground_vert, "HOST_SHADOWS");
+        const std::string frag = with_define(grass_host_shaders::ground_frag, "HOST_SHADOWS");
+        ground_receiving_program_ =
+            grass_bootstrap::compile_program(gl_, vert.c_str(), frag.c_str(), "ground (shadows)", error);
+        if (!ground_receiving_program_) return false;
+    }
+    return true;
+}
+
+grass_result GlHost::draw_shadow_cascades(grass_context* context, const ShadowFrameViews& views,
+                                          const LightCascades& cascades) {
+    const HostShadows& hs = target_.host_shadows;
+    grass_result result = plan_shadow_frame(context, views, cascades.count, shadow_parts.grass_casts);
+    for (uint32_t i = 0; i < cascades.count && result == GRASS_SUCCESS; ++i) {
+        shadows_->begin_cascade(i);
+        if (meshes_ && shadow_parts.host_casts) {
+            shadows_->polygon_offset(true, hs.mesh_bias_constant, hs.mesh_bias_slope);
+            meshes_->draw(cascades.light_view[i], false, false);
+            shadows_->polygon_offset(false, 0.0f, 0.0f);
+        }
+        if (shadow_parts.grass_casts) result = grass_gl_render_view(context, 1 + i);
+    }
+    gl_.Disable(GL_DEPTH_TEST);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, fb_.draw_fbo);
+    gl_.Viewport(0, 0, GLsizei(target_.width), GLsizei(target_.height));
+    return result;
+}
+
+void GlHost::draw_ground(const grass_view_desc& view, bool receive_shadows) {
     const GroundUniforms u = make_ground_uniforms(view, target_);
     gl_.NamedBufferData(ground_buffer_, sizeof(u), &u, GL_DYNAMIC_DRAW);
-    gl_.UseProgram(ground_program_);
+    gl_.UseProgram(receive_shadows ? ground_receiving_program_ : ground_program_);
     gl_.BindVertexArray(ground_vao_);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, 0, ground_buffer_);
     gl_.Enable(GL_DEPTH_TEST);
@@ -404,6 +450,19 @@ void GlHost::draw_ground(const grass_view_desc& view) {
 grass_result GlHost::render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
                             std::string* error) {
     const int32_t w = int32_t(target_.width), h = int32_t(target_.height);
+    // TargetDesc::host_shadows: grass's frame begins first (the main view receiving, the
+    // cascades' depth views) and the cascades are drawn before the main view's scene.
+    const bool shadowed = shadows_ && shadow_parts.any();
+    LightCascades cascades;
+    ShadowFrameViews shadow_views;
+    grass_result shadow_result = GRASS_SUCCESS;
+    if (shadowed) {
+        cascades = fit_light_cascades(view, target_.host_shadows, false);
+        make_shadow_frame_views(view, cascades, target_.host_shadows, shadows_->texture(), 0,
+                                shadow_parts.grass_receives, &shadow_views);
+        shadow_result = draw_shadow_cascades(context, shadow_views, cascades);
+    }
+    const bool host_receives = shadowed && shadow_parts.host_receives;
     gl_.BindFramebuffer(GL_FRAMEBUFFER, fb_.draw_fbo);
     gl_.Enable(GL_FRAMEBUFFER_SRGB); // linear shader output and clear colours are sRGB-encoded
     gl_.Viewport(0, 0, w, h);
@@ -415,8 +474,10 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     stored_clear_color(target_, clear_color);
     clear_rect(clear_color, target_.reversed_z ? 0.0f : 1.0f, whole);
 
-    if (target_.ground) draw_ground(view);
-    if (meshes_) meshes_->draw(view, target_.reversed_z, target_.unorm_color);
+    if (host_receives) shadows_->bind_for_receiving(cascades.uniforms);
+    if (target_.ground) draw_ground(view, host_receives);
+    if (meshes_) meshes_->draw(view, target_.reversed_z, target_.unorm_color, host_receives);
+    if (host_receives) shadows_->unbind();
 
     if (occluder) {
         // The window depth of a camera-facing plane at view-space z = -distance.
@@ -439,11 +500,19 @@ grass_result GlHost::render(grass_context* context, const grass_view_desc& view,
     }
 
     if (before_grass) before_grass();
-    grass_result result = begin_grass_frame ? begin_grass_frame(context) : grass_begin_frame(context, &view);
-    if (result == GRASS_SUCCESS) {
-        result = draw_grass ? draw_grass(context, nullptr) : grass_gl_render(context);
+    grass_result result = GRASS_SUCCESS;
+    if (shadowed) { // the frame began in draw_shadow_cascades; view 0 is the main view
+        result = shadow_result;
+        if (result == GRASS_SUCCESS) result = grass_gl_render_view(context, 0);
         const grass_result end = grass_end_frame(context);
         if (result == GRASS_SUCCESS) result = end;
+    } else {
+        result = begin_grass_frame ? begin_grass_frame(context) : grass_begin_frame(context, &view);
+        if (result == GRASS_SUCCESS) {
+            result = draw_grass ? draw_grass(context, nullptr) : grass_gl_render(context);
+            const grass_result end = grass_end_frame(context);
+            if (result == GRASS_SUCCESS) result = end;
+        }
     }
     if (after_grass) after_grass();
     if (target_.gl_clip_zero_to_one) gl_.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);

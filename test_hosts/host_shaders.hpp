@@ -21,4 +21,11 @@ extern const uint32_t mesh_vert[];
 extern const uint32_t mesh_vert_size;
 extern const uint32_t mesh_frag[];
 extern const uint32_t mesh_frag_size;
+// TargetDesc::host_shadows: the ground and meshes that sample the host's shadow map.
+extern const uint32_t ground_vert_host_shadows[];
+extern const uint32_t ground_vert_host_shadows_size;
+extern const uint32_t ground_frag_host_shadows[];
+extern const uint32_t ground_frag_host_shadows_size;
+extern const uint32_t mesh_frag_host_shadows[];
+extern const uint32_t mesh_frag_host_shadows_size;
 } // namespace grass_host_spirv

@@ -10,9 +10,11 @@
 #include "host_factories.hpp"
 #include "host_shaders.hpp"
 #include "mesh_drawer_vk.hpp"
+#include "shadow_cascades_vk.hpp"
 #include "shadow_map_vk.hpp"
 #include "velocity_target_vk.hpp"
 #include "vk_bootstrap.hpp"
+#include "vk_occluder.hpp"
 
 #include <grass/grass_vk.h>
 
@@ -71,13 +73,12 @@ private:
     bool create_ground(std::string* error);
     bool create_ground_pipeline(std::string* error);
     bool create_meshes(std::string* error);
-    void draw_ground(VkCommandBuffer cmd, const grass_view_desc& view);
+    void draw_ground(VkCommandBuffer cmd, const grass_view_desc& view, bool receive_shadows);
     bool create_attachment(VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                            VkImageAspectFlags aspect, Attachment* out, std::string* error);
     void begin_pass(VkCommandBuffer cmd);
     void begin_depth_pass(VkCommandBuffer cmd); // Host::depth_only
     void end_pass(VkCommandBuffer cmd);
-    void clear_occluder(VkCommandBuffer cmd, const grass_view_desc& view, const Occluder& occluder);
     void copy_to_readback(VkCommandBuffer cmd);
     static void on_message(void* user, const std::string& line);
 
@@ -114,8 +115,9 @@ private:
     VkDescriptorSet ground_set_ = VK_NULL_HANDLE;
     VkPipelineLayout ground_layout_ = VK_NULL_HANDLE;
     VkPipeline ground_pipeline_ = VK_NULL_HANDLE;
-    std::unique_ptr<VkMeshDrawer> meshes_; // target.meshes
-    VkVelocityTarget velocity_;            // target.vk_velocity_attachment
+    std::unique_ptr<VkMeshDrawer> meshes_;      // target.meshes
+    VkVelocityTarget velocity_;                 // target.vk_velocity_attachment
+    std::unique_ptr<VkShadowCascades> shadows_; // target.host_shadows
     VkPassTarget pass_target() const;
 
     VkCommandPool command_pool_ = VK_NULL_HANDLE;
@@ -139,7 +141,9 @@ bool VkHost::init(std::string* error) {
     }
     return create_instance(error) && pick_device(error) && create_device(error) && create_target(error) &&
            create_render_pass(error) && create_commands(error) && (!target_.ground || create_ground(error)) &&
-           create_meshes(error);
+           create_meshes(error) &&
+           create_vk_shadow_cascades(device_, memory_properties_, target_, pass_target(), ground_set_layout_,
+                                     meshes_.get(), &shadows_, error);
 }
 
 VkPassTarget VkHost::pass_target() const {
@@ -404,6 +408,7 @@ VkHost::~VkHost() {
         vkDeviceWaitIdle(device_);
         movable_meshes_ = nullptr;
         meshes_.reset();
+        shadows_.reset();
         shadow_map_.destroy();
         if (ground_pipeline_) vkDestroyPipeline(device_, ground_pipeline_, nullptr);
         if (pipeline_cache_) vkDestroyPipelineCache(device_, pipeline_cache_, nullptr);
@@ -470,12 +475,14 @@ bool VkHost::create_ground_pipeline(std::string* error) {
 
 // Drawn first in the pass, like an engine's terrain (the host waits for each frame, so
 // the uniform buffer is free to rewrite).
-void VkHost::draw_ground(VkCommandBuffer cmd, const grass_view_desc& view) {
+void VkHost::draw_ground(VkCommandBuffer cmd, const grass_view_desc& view, bool receive_shadows) {
     const GroundUniforms u = make_ground_uniforms(view, target_);
     std::memcpy(ground_buffer_.mapped, &u, sizeof(u));
     const VkViewport viewport{0.0f, 0.0f, float(target_.width), float(target_.height), 0.0f, 1.0f};
     const VkRect2D scissor{{0, 0}, {target_.width, target_.height}};
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_pipeline_);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                      receive_shadows ? shadows_->ground_pipeline() : ground_pipeline_);
+    if (receive_shadows) shadows_->bind_ground_set(cmd); // set 1; set 0's layouts are compatible
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_layout_, 0, 1, &ground_set_, 0, nullptr);
@@ -512,7 +519,8 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     depth.render_pass = reinterpret_cast<uint64_t>(depth_pass_);
     depth.depth_format = kDepthFormat;
     depth.next = vk.next;
-    if (depth_pass_) vk.next = &depth;
+    if (shadows_) depth.render_pass = reinterpret_cast<uint64_t>(shadows_->render_pass()); // the cascades' pass
+    if (depth.render_pass) vk.next = &depth;
     vk.next = velocity_.chain(vk.next); // target.vk_velocity_attachment
     return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
 }
@@ -645,35 +653,6 @@ void VkHost::end_pass(VkCommandBuffer cmd) {
                          nullptr, 0, nullptr, 1, &b);
 }
 
-// The host's own scene: a camera-facing box face, drawn as a cleared rectangle of colour
-// and depth (its window depth is that of view-space z = -distance).
-void VkHost::clear_occluder(VkCommandBuffer cmd, const grass_view_desc& view, const Occluder& occluder) {
-    const int32_t w = int32_t(target_.width), h = int32_t(target_.height);
-    const int32_t x0 = std::max(occluder.x0, 0), x1 = std::min(occluder.x1, w);
-    const int32_t y0 = std::max(occluder.y0, 0), y1 = std::min(occluder.y1, h);
-    if (x1 <= x0 || y1 <= y0) return;
-    const float* p = view.projection;
-    const float z = -occluder.distance;
-    const float clip_z = p[10] * z + p[14];
-    const float clip_w = p[11] * z + p[15];
-    const float depth = std::min(std::max(clip_z / clip_w, 0.0f), 1.0f);
-
-    VkClearAttachment clears[2] = {};
-    clears[0].aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
-    clears[0].colorAttachment = 0;
-    for (int c = 0; c < 3; ++c) {
-        const float linear = occluder.color[c];
-        clears[0].clearValue.color.float32[c] = target_.unorm_color ? linear_to_srgb(linear) : linear;
-    }
-    clears[0].clearValue.color.float32[3] = 1.0f;
-    clears[1].aspectMask = VK_IMAGE_ASPECT_DEPTH_BIT;
-    clears[1].clearValue.depthStencil = {depth, 0};
-    VkClearRect rect{};
-    rect.rect = {{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}}; // top-left origin, as the occluder's
-    rect.layerCount = 1;
-    vkCmdClearAttachments(cmd, 2, clears, 1, &rect);
-}
-
 void VkHost::copy_to_readback(VkCommandBuffer cmd) {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
@@ -707,26 +686,49 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
     // grass plans the frame, then records its uploads outside the pass and its draws in it.
     // Once grass_vk_prepare has recorded, the command buffer is submitted even when a later
     // grass call fails: its uploads must run.
-    grass_result result = begin_grass_frame ? begin_grass_frame(context) : grass_begin_frame(context, &view);
+    // TargetDesc::host_shadows: one frame of the main view (receiving) and the cascades' depth
+    // views, the cascades' passes recorded before the main pass.
+    const bool shadowed = shadows_ && shadow_parts.any();
+    LightCascades cascades;
+    ShadowFrameViews views;
+    if (shadowed) {
+        cascades = fit_light_cascades(view, target_.host_shadows, true);
+        make_shadow_frame_views(view, cascades, target_.host_shadows, shadows_->array_view(),
+                                VkShadowCascades::kReadLayout, shadow_parts.grass_receives, &views);
+        shadows_->set_uniforms(cascades.uniforms);
+    }
+    grass_result result = shadowed ? plan_shadow_frame(context, views, cascades.count, shadow_parts.grass_casts)
+                          : begin_grass_frame ? begin_grass_frame(context)
+                                              : grass_begin_frame(context, &view);
     const bool frame_begun = result == GRASS_SUCCESS;
     if (frame_begun) {
         grass_vk_prepare_desc prepare = grass_default_vk_prepare_desc();
         prepare.command_buffer = cmd_;
         result = grass_vk_prepare(context, &prepare);
     }
+    if (shadowed) { // every layer's pass runs (it leaves the map in its read layout)
+        const grass_result c =
+            shadows_->record_cascades(cmd_, context, cascades, shadow_parts.host_casts ? meshes_.get() : nullptr,
+                                      shadow_parts.grass_casts && result == GRASS_SUCCESS);
+        if (result == GRASS_SUCCESS) result = c;
+    }
+    const bool host_receives = shadowed && shadow_parts.host_receives;
     const bool depth_pass = depth_only && depth_pass_;
     if (depth_pass) {
         begin_depth_pass(cmd_);
     } else {
         begin_pass(cmd_);
-        if (target_.ground) draw_ground(cmd_, view);
-        if (meshes_) meshes_->record(cmd_, view, target_.width, target_.height);
-        if (occluder) clear_occluder(cmd_, view, *occluder);
+        if (target_.ground) draw_ground(cmd_, view, host_receives);
+        if (meshes_)
+            meshes_->record(cmd_, view, target_.width, target_.height, host_receives ? shadows_->set() : nullptr);
+        if (occluder) record_occluder(cmd_, target_, view, *occluder);
     }
     if (result == GRASS_SUCCESS) {
         grass_vk_record_desc record = grass_default_vk_record_desc();
         record.command_buffer = cmd_;
-        result = draw_grass ? draw_grass(context, cmd_) : grass_vk_record(context, &record);
+        result = draw_grass ? draw_grass(context, cmd_)
+                 : shadowed ? grass_vk_record_view(context, 0, &record)
+                            : grass_vk_record(context, &record);
     }
     if (depth_pass) {
         vkCmdEndRenderPass(cmd_); // the depth image ends in TRANSFER_SRC_OPTIMAL (read_depth)

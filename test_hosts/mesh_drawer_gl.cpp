@@ -1,5 +1,7 @@
 #include "mesh_drawer_gl.hpp"
 
+#include "shadow_cascades_gl.hpp"
+
 #include "gl_loader.hpp"
 #include "host_shaders.hpp"
 #include "mesh_draw.hpp"
@@ -11,7 +13,7 @@
 namespace grass_host {
 
 struct GlMeshDrawer::Impl : grass_bootstrap::GlFunctions {
-    GLuint program = 0, vao = 0, geometry = 0, uniforms = 0;
+    GLuint program = 0, receiving_program = 0, vao = 0, geometry = 0, uniforms = 0;
     struct Range {
         const HostMesh* mesh;
         size_t first_index; // in the geometry buffer's index part
@@ -28,6 +30,7 @@ GlMeshDrawer::~GlMeshDrawer() {
     Impl& g = *impl_;
     if (!g.DeleteProgram) return; // never initialised
     if (g.program) g.DeleteProgram(g.program);
+    if (g.receiving_program) g.DeleteProgram(g.receiving_program);
     const GLuint buffers[2] = {g.geometry, g.uniforms};
     g.DeleteBuffers(2, buffers); // zero names are ignored
     if (g.vao) g.DeleteVertexArrays(1, &g.vao);
@@ -75,14 +78,25 @@ bool GlMeshDrawer::init(ProcLoader loader, void* user_data, const std::vector<Ho
     return true;
 }
 
+bool GlMeshDrawer::init_receiving(std::string* error) {
+    std::string ignored;
+    Impl& g = *impl_;
+    const std::string vert = with_define(grass_host_shaders::mesh_vert, "HOST_SHADOWS");
+    const std::string frag = with_define(grass_host_shaders::mesh_frag, "HOST_SHADOWS");
+    g.receiving_program =
+        grass_bootstrap::compile_program(g, vert.c_str(), frag.c_str(), "mesh (shadows)", error ? error : &ignored);
+    return g.receiving_program != 0;
+}
+
 void GlMeshDrawer::set_origin(size_t index, const double origin[3]) {
     if (index < impl_->meshes.size()) std::copy(origin, origin + 3, impl_->meshes[index].origin);
 }
 
-void GlMeshDrawer::draw(const grass_view_desc& view, bool reversed_z, bool encode_srgb) {
+void GlMeshDrawer::draw(const grass_view_desc& view, bool reversed_z, bool encode_srgb, bool receive_shadows) {
     Impl& g = *impl_;
-    if (!g.program || g.ranges.empty()) return;
-    g.UseProgram(g.program);
+    const GLuint program = receive_shadows ? g.receiving_program : g.program;
+    if (!program || g.ranges.empty()) return;
+    g.UseProgram(program);
     g.BindVertexArray(g.vao);
     g.BindBufferBase(GL_UNIFORM_BUFFER, 0, g.uniforms);
     g.Enable(GL_DEPTH_TEST);

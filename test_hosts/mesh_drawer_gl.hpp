@@ -35,10 +35,15 @@ public:
     // Compiles the shaders and uploads the meshes; false and *error when GL refuses.
     bool init(ProcLoader loader, void* user_data, const std::vector<HostMesh>& meshes, std::string* error);
 
+    // Compiles the program that receives the host's shadows (shaders/cascade_shadows.glsl,
+    // TargetDesc::host_shadows); false and *error when GL refuses. After init.
+    bool init_receiving(std::string* error);
+
     // Draws every mesh with the depth test (GL_LESS, or GL_GREATER with reversed_z) and
     // depth writes on. encode_srgb: the target stores what the shader writes (no
-    // GL_FRAMEBUFFER_SRGB conversion): the shader encodes.
-    void draw(const grass_view_desc& view, bool reversed_z, bool encode_srgb);
+    // GL_FRAMEBUFFER_SRGB conversion): the shader encodes. receive_shadows: with the program
+    // of init_receiving, its map and block bound by the caller (GlShadowCascades).
+    void draw(const grass_view_desc& view, bool reversed_z, bool encode_srgb, bool receive_shadows = false);
 
     // Moves mesh `index` (of init's list) to a new world origin: a host object that moves.
     void set_origin(size_t index, const double origin[3]) override;

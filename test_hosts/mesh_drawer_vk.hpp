@@ -33,14 +33,17 @@ struct VkPassTarget {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     bool reversed_z = false;  // depth test GREATER instead of LESS
     bool encode_srgb = false; // the colour target stores what the shader writes (UNORM)
+    // A depth-only pass (a shadow map's: no colour attachment), with a static depth bias.
+    bool depth_only = false;
+    float depth_bias_constant = 0.0f, depth_bias_slope = 0.0f;
 };
 
 // A graphics pipeline of the hosts' own (ground, meshes): triangle list, no culling, depth
 // test and write, viewport and scissor dynamic.
 struct VkHostPipelineDesc {
     const uint32_t* vertex_code = nullptr;
-    size_t vertex_code_size = 0; // bytes
-    const uint32_t* fragment_code = nullptr;
+    size_t vertex_code_size = 0;             // bytes
+    const uint32_t* fragment_code = nullptr; // null: no fragment stage (a depth-only caster)
     size_t fragment_code_size = 0;
     VkPipelineLayout layout = VK_NULL_HANDLE;
     const VkPipelineVertexInputStateCreateInfo* vertex_input = nullptr; // null: none
@@ -61,7 +64,16 @@ public:
 
     // Records every mesh's draw into `cmd`, inside the pass (sets viewport and scissor to
     // width x height).
-    void record(VkCommandBuffer cmd, const grass_view_desc& view, uint32_t width, uint32_t height) const;
+    // receive: the meshes sample the host's shadow map through `shadow_set` (set 1, see
+    // init_shadows).
+    void record(VkCommandBuffer cmd, const grass_view_desc& view, uint32_t width, uint32_t height,
+                VkDescriptorSet shadow_set = VK_NULL_HANDLE) const;
+
+    // TargetDesc::host_shadows: a pipeline that casts into `cascade` (a depth-only pass) and
+    // one that receives through a set of `shadow_set_layout` (shaders/cascade_shadows.glsl).
+    bool init_shadows(const VkPassTarget& cascade, VkDescriptorSetLayout shadow_set_layout, std::string* error);
+    // Records every mesh's depth into a cascade's pass (its viewport set by the caller).
+    void record_caster(VkCommandBuffer cmd, const grass_view_desc& light_view) const;
 
     // Moves mesh `index` (of init's list) to a new world origin: a host object that moves.
     void set_origin(size_t index, const double origin[3]) override {
@@ -75,6 +87,10 @@ private:
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
+    VkPipeline caster_pipeline_ = VK_NULL_HANDLE;
+    VkPipelineLayout receiving_layout_ = VK_NULL_HANDLE;
+    VkPipeline receiving_pipeline_ = VK_NULL_HANDLE;
+    void record_draws(VkCommandBuffer cmd, VkPipelineLayout layout, const grass_view_desc& view) const;
     std::vector<HostMesh> meshes_;
     struct Range {
         uint32_t first_index;

@@ -7,6 +7,7 @@
 #include "cli.hpp"
 #include "gltf_scene.hpp"
 #include "headless_host.hpp"
+#include "host_scene_options.hpp"
 #include "image_io.hpp"
 #include "scene.hpp"
 #include "tool.hpp"
@@ -38,7 +39,8 @@ struct Options {
     uint32_t frames = 1;
     std::string wind, animation_dir;
     std::vector<std::string> colliders;
-    std::vector<std::string> blade_culling; // per-blade culling tests (grass_set_blade_culling)
+    std::vector<std::string> blade_culling;    // per-blade culling tests (grass_set_blade_culling)
+    grass_sample::HostSceneOptions host_scene; // --box, --tree, --host-shadows
 };
 
 void add_options(CLI::App& app, Options* o) {
@@ -90,6 +92,7 @@ void add_options(CLI::App& app, Options* o) {
                 return grass_sample::parse_collider(text, 0.0, 1.0, &c, &error) ? std::string() : error;
             },
             "SHAPE:NUMBERS"));
+    grass_sample::add_host_scene_options(app, &o->host_scene);
     app.add_option("--animation", o->animation_dir,
                    "write every frame to DIR/frame-NNNN.png, then DIR/animation.gif and DIR/animation.mp4 (ffmpeg)");
 }
@@ -202,12 +205,15 @@ int main(int argc, char** argv) {
     apply_responsive_options(o, &scene.responsive);
     const std::string bad_scene = scene_problem(o, scene);
     if (!bad_scene.empty()) return fail(bad_scene);
+    grass_sample::add_host_meshes(o.host_scene, &scene.meshes);
     // The host draws the colliders (balls, legs) and point wind sources and moves them every frame.
     const size_t first_mesh = scene.meshes.size();
     for (grass_host::HostMesh& m : grass_sample::moving_meshes(scene.responsive, o.time))
         scene.meshes.push_back(std::move(m));
 
-    auto host = grass_host::Host::create(backend, grass_sample::target_desc(scene), &error);
+    grass_host::TargetDesc target = grass_sample::target_desc(scene);
+    grass_sample::apply_host_shadows(o.host_scene, &target);
+    auto host = grass_host::Host::create(backend, target, &error);
     if (!host) return fail("cannot create the headless host: " + error);
 
     grass_context_desc cd = grass_default_context_desc();

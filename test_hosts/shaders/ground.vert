@@ -16,6 +16,10 @@ layout(std140, binding = 0) uniform Ground {
 // above the ground from it; an engine's terrain has smaller triangles.
 const int kTiles = 32;
 
+#ifdef HOST_SHADOWS
+layout(location = 0) out vec3 v_relative; // from the camera
+#endif
+
 void main() {
     // Two triangles per square from the vertex index: corners (0,0) (1,0) (0,1) (1,1).
 #ifdef VULKAN
@@ -28,4 +32,7 @@ void main() {
     vec2 cell = vec2(float(tile % kTiles + (c & 1)), float(tile / kTiles + (c >> 1)));
     vec2 xz = (cell / float(kTiles) * 2.0 - 1.0) * ground.plane.y;
     gl_Position = ground.view_projection * vec4(xz.x, ground.plane.x, xz.y, 1.0);
+#ifdef HOST_SHADOWS
+    v_relative = vec3(xz.x, ground.plane.x, xz.y);
+#endif
 }

@@ -65,6 +65,16 @@ expect("grass-render --fps 0" 2 "--fps: \"0\" is not between 0 and 10000" ${REND
 expect("grass-render --wind 1,0" 2 "--wind: \"1,0\" is not DX,DZ,SPEED\\[,GUST\\]" ${RENDER} --wind 1,0)
 expect("grass-render --wind 0,0,3" 2 "--wind: \"0,0,3\": the direction DX,DZ is zero" ${RENDER} --wind 0,0,3)
 expect("grass-render --blade-culling orientation,bogus" 2 "--blade-culling: bogus not in \\{orientation,frustum,distance-index,distance-threshold\\}" ${RENDER} --blade-culling orientation,bogus)
+# The host's boxes, trees and cascaded shadows (docs/integration.md): bad lists refused by name.
+expect("grass-render --host-shadows 10,5" 2 "--host-shadows: '10,5': split distances must be > 0 and ascending" ${RENDER}
+       --host-shadows 10,5)
+expect("grass-render --host-shadows of 5" 2 "--host-shadows: '1,2,3,4,5' has 5 numbers; expected 1 to 4" ${RENDER}
+       --host-shadows 1,2,3,4,5)
+expect("grass-render --box 1,2,3" 2 "--box: '1,2,3' has 3 numbers; expected 6" ${RENDER} --box 1,2,3)
+expect("grass-render --box 1,x,3,4,5,6" 2 "--box: '1,x,3,4,5,6' is not a list of numbers \\('x'\\)" ${RENDER}
+       --box 1,x,3,4,5,6)
+expect("grass-render --tree 1,2,0,3" 2 "--tree: '1,2,0,3': the trunk and crown must be taller than 0" ${RENDER}
+       --tree 1,2,0,3)
 expect("popping --blade-culling bogus" 2 "--blade-culling: bogus not in" ${MEASURE} popping --blade-culling bogus)
 expect("grass-render --collider cube:0,0,0,1" 2 "--collider: \"cube:0,0,0,1\" is not sphere:X,Y,Z,R"
        ${RENDER} --collider cube:0,0,0,1)
