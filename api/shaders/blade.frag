@@ -2,6 +2,9 @@
 // Blade tier: two-sided Lambert + ambient with blade ambient occlusion; the blade's edges
 // give alpha for alpha-to-coverage when the host's target is multisampled.
 #include "blade_interface.glsl"
+#ifdef GRASS_HOST_LIGHTS // the host's lights' variants only
+#include "host_lights.glsl"
+#endif
 #include "lighting.glsl"
 #ifdef GRASS_HOST_SHADOWS
 #include "host_shadows.glsl"
@@ -43,6 +46,9 @@ void main() {
     light.y *= host_sun_visibility(v_position_density.xyz); // the host's shadow at the fragment
 #endif
     vec3 color = grass_lighting(v_albedo_code.rgb, n, ao, light);
+#ifdef GRASS_HOST_LIGHTS
+    color += host_lights_blade(v_albedo_code.rgb, n, to_camera, v_position_density.xyz, light.y);
+#endif
 
     // Distance to the nearest blade edge in pixels -> coverage. Without multisampling the
     // alpha is ignored (no blending); with alpha-to-coverage it antialiases the edges.

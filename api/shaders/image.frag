@@ -3,6 +3,9 @@
 // 6.6), thinned by the density thresholds and the tier transitions, lit per pixel through
 // the slice's normal with the lighting of every tier.
 #include "blade_interface.glsl"
+#ifdef GRASS_HOST_LIGHTS // the host's lights' variants only
+#include "host_lights.glsl"
+#endif
 #include "lighting.glsl"
 #ifdef GRASS_HOST_SHADOWS
 #include "host_shadows.glsl"
@@ -125,6 +128,13 @@ void main() {
     light.y *= host_sun_visibility(v_position); // the host's shadow at the quad's point
 #endif
     const vec3 folded = vec3(1.0, 0.0, 1.0);
+    // A slice's light: the sun's and the ambient, and the host's lights at the quad's point.
+#ifdef GRASS_HOST_LIGHTS
+#define slice_light(a, n, f, v, l, o, m, b, t) \
+    (grass_lighting_lobes_bent(a, n, f, v, l, o, m, b, t) + host_lights_lobes(a, n, f, v, v_position, b, t, (m).y))
+#else
+#define slice_light grass_lighting_lobes_bent
+#endif
     vec3 n_above = normal_height.xyz * 2.0 - 1.0;
     {
         float r = length(n_above);
@@ -135,13 +145,13 @@ void main() {
     vec3 n_x = textureGrad(slice_normal, vec3(uv, 1.0), dx, dy).xyz * 2.0 - 1.0;
     vec3 n_z = textureGrad(slice_normal, vec3(uv, 2.0), dx, dy).xyz * 2.0 - 1.0;
     float along_x = abs(to_camera.x) / max(abs(to_camera.x) + abs(to_camera.z), 1e-6);
-    vec3 grazing = mix(grass_lighting_lobes_bent(base, n_z, folded, to_camera, sun, ao, light, bend_dir, turn),
-                       grass_lighting_lobes_bent(base, n_x, folded, to_camera, sun, ao, light, bend_dir, turn), along_x);
+    vec3 grazing = mix(slice_light(base, n_z, folded, to_camera, sun, ao, light, bend_dir, turn),
+                       slice_light(base, n_x, folded, to_camera, sun, ao, light, bend_dir, turn), along_x);
     const float sin_baked = 0.173648; // sin(10 degrees), the grazing bake's elevation
     float steep = clamp((sin_elevation - sin_baked) / (1.0 - sin_baked), 0.0, 1.0);
     vec3 color = grazing;
     if (steep > 0.0) {
-        color = mix(grazing, grass_lighting_lobes_bent(base, n_above, folded, to_camera, sun, ao, light, bend_dir, turn),
+        color = mix(grazing, slice_light(base, n_above, folded, to_camera, sun, ao, light, bend_dir, turn),
                     steep);
     }
     out_color = debug_thresholds() ? threshold_code(threshold) : output_color(vec4(debug_tint(color), alpha));

@@ -23,9 +23,16 @@ float sun_above_ground() {
 // light_maps() at the point (blade_interface.glsl): x scales the ambient term (the ambient
 // map holds the scene's AO, eq. 6.10, AO_blade is `ambient_occlusion`), y the sun term (the
 // diffuse map's shadows). Without light maps it is (1, 1) and the products fold away.
+// With the host's lights (GRASS_HOST_LIGHTS) the ambient colour may vary with the normal
+// (host_lights.glsl, included before this file by the fragment shaders that light grass).
+#ifdef GRASS_HOST_LIGHTS_BLOCK
+#define GRASS_AMBIENT(n) host_ambient(n)
+#else
+#define GRASS_AMBIENT(n) frame.ambient_color.rgb
+#endif
 vec3 grass_lighting(vec3 albedo, vec3 n, float ambient_occlusion, vec2 light) {
     float n_dot_l = max(dot(n, frame.sun_direction.xyz), 0.0) * sun_above_ground();
-    return albedo * (frame.ambient_color.rgb * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
+    return albedo * (GRASS_AMBIENT(n) * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
 }
 
 // The debug view's tint of a tier (GRASS_VIEW_FLAG_DEBUG_TIERS = 2 in frame.params.y):
@@ -91,6 +98,46 @@ vec3 turned_towards(vec3 n, vec3 d, float turn) {
     return n * c + cross(k, n) * s + k * dot(k, n) * (1.0 - c);
 }
 
+#ifdef GRASS_HOST_LIGHTS_BLOCK
+// The four sign lobes of a slice texel's mean normal `n` (patch space, not unit) across its
+// `folded` axes, each turned with the column by `turn` towards `bend_dir` and facing the
+// camera, with their weights |n.v| towards `to_camera`: grass_lighting_lobes_bent's, for the
+// host's lights (host_lights.glsl), which light several directions with one set. Returns the
+// spread sigma of the blades' normals about the mean. (grass_lighting_lobes_bent keeps its
+// own loop: on llvmpipe the arrays made every plain volume frame 1.45 times slower.)
+float texel_lobes(vec3 n, vec3 folded, vec3 to_camera, vec3 bend_dir, float turn, out vec3 lobe[4], out float w[4]) {
+    float r = length(n);
+    n = r > 1e-4 ? n / r : vec3(0.0, 1.0, 0.0);
+    vec3 a = folded.x > 0.5 ? vec3(-1.0, 1.0, 1.0) : vec3(1.0, -1.0, 1.0);
+    vec3 b = folded.z > 0.5 ? vec3(1.0, 1.0, -1.0) : vec3(1.0, -1.0, 1.0);
+    for (int k = 0; k < 4; ++k) {
+        lobe[k] = turned_towards(n * ((k & 1) != 0 ? a : vec3(1.0)) * ((k & 2) != 0 ? b : vec3(1.0)), bend_dir, turn);
+        float v = dot(lobe[k], to_camera);
+        if (v < 0.0) lobe[k] = -lobe[k]; // each lobe is lit on its side that faces the camera (two-sided blades)
+        w[k] = abs(v) + 1e-3;
+    }
+    return sqrt(max(1.0 - r * r, 0.0) * 0.5);
+}
+
+// The ambient light at the lobes' normals, weighted as their light is (the host's harmonics).
+vec3 lobes_ambient(vec3 n, vec3 folded, vec3 to_camera, vec3 bend_dir, float turn) {
+    if (grass_lights.counts.w < 0.5) return frame.ambient_color.rgb;
+    vec3 lobe[4];
+    float w[4];
+    texel_lobes(n, folded, to_camera, bend_dir, turn, lobe, w);
+    vec3 sum = vec3(0.0);
+    float weight = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        sum += w[k] * host_ambient(normalize(mat3(field.patch_to_world) * lobe[k]));
+        weight += w[k];
+    }
+    return sum / weight;
+}
+#define GRASS_LOBES_AMBIENT(n, folded, to_camera, bend_dir, turn) lobes_ambient(n, folded, to_camera, bend_dir, turn)
+#else
+#define GRASS_LOBES_AMBIENT(n, folded, to_camera, bend_dir, turn) frame.ambient_color.rgb
+#endif
+
 // grass_lighting_lobes of slices whose grass is bent (bakay's shells lit by their bent
 // tangents): each lobe, a blade's normal, turns with the column by `turn` towards `bend_dir`.
 // The lobes turn, not the mean normal before them: the lobes fold signs that a cell's
@@ -98,6 +145,7 @@ vec3 turned_towards(vec3 n, vec3 d, float turn) {
 // cell-sized checkerboard under wind).
 vec3 grass_lighting_lobes_bent(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera, vec3 sun, float ambient_occlusion,
                                vec2 light, vec3 bend_dir, float turn) {
+    vec3 ambient = GRASS_LOBES_AMBIENT(n, folded, to_camera, bend_dir, turn);
     // The texel's mean normal: its length r < 1 says how much the blades' normals spread,
     // 1 - r^2 their variance (Toksvig), about half of it along any one direction.
     float r = length(n);
@@ -115,7 +163,7 @@ vec3 grass_lighting_lobes_bent(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera,
         weight += w;
     }
     float n_dot_l = lit / weight * sun_above_ground();
-    return albedo * (frame.ambient_color.rgb * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
+    return albedo * (ambient * (ambient_occlusion * light.x) + frame.sun_color.rgb * (n_dot_l * light.y));
 }
 
 vec3 grass_lighting_lobes(vec3 albedo, vec3 n, vec3 folded, vec3 to_camera, vec3 sun, float ambient_occlusion,

@@ -5,6 +5,9 @@
 // On a height map (lemme 6.4.4, eq. 6.14-6.18) the carrier spans the terrain's height range
 // and every hit looks its slice up at its height above the terrain under it.
 #include "blade_interface.glsl"
+#ifdef GRASS_HOST_LIGHTS // the host's lights' variants only
+#include "host_lights.glsl"
+#endif
 #include "lighting.glsl"
 #ifdef GRASS_HOST_SHADOWS
 #include "host_shadows.glsl"
@@ -247,6 +250,9 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
                                        field.blade_params.y);
     vec3 folded = kind == 0 ? vec3(0.0, 1.0, 1.0) : kind == 1 ? vec3(1.0, 1.0, 0.0) : vec3(1.0, 0.0, 1.0);
     vec3 lit = grass_lighting_lobes_bent(color, nrm, folded, -g_dir, g_sun, ao, light, bend_dir, turn);
+#ifdef GRASS_HOST_LIGHTS
+    lit += host_lights_lobes(color, nrm, folded, -g_dir, world, bend_dir, turn, light.y);
+#endif
     g_color += (1.0 - g_alpha) * a * lit;
     gather(a, hit, threshold);
 }

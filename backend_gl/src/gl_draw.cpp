@@ -40,6 +40,10 @@ void GlBackend::upload_frame(const RenderTarget& target, uint32_t view) {
         motion_uniform_offset_ = static_cast<GLintptr>(align_up(size, alignment));
         size = static_cast<size_t>(motion_uniform_offset_) + sizeof(MotionUniforms);
     }
+    if (plan.host_lights) { // a lit view's GrassLights block: no other view has one
+        lights_uniform_offset_ = static_cast<GLintptr>(align_up(size, alignment));
+        size = static_cast<size_t>(lights_uniform_offset_) + sizeof(LightUniforms);
+    }
     size = stage_interaction_uniforms(plan, size); // the pass's blocks: view 0's plan only has them
     uniform_staging_.assign(size, 0);
     FrameUniforms frame = plan.frame;
@@ -54,6 +58,9 @@ void GlBackend::upload_frame(const RenderTarget& target, uint32_t view) {
     }
     if (plan.motion) {
         std::memcpy(uniform_staging_.data() + motion_uniform_offset_, &plan.motion_uniforms, sizeof(MotionUniforms));
+    }
+    if (plan.host_lights) {
+        std::memcpy(uniform_staging_.data() + lights_uniform_offset_, &plan.lights, sizeof(LightUniforms));
     }
     for (uint32_t l = 0; l < plan.interaction.levels && l < 2; ++l) {
         std::memcpy(uniform_staging_.data() + interaction_uniform_offsets_[l], &plan.interaction.level[l],
@@ -291,6 +298,11 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
     if (motion) {
         guard.begin_motion(plan.velocity_attachment);
         bind_motion(plan);
+    }
+    if (plan.host_lights && !debug) {
+        guard.begin_host_lights();
+        gl_.BindBufferRange(GL_UNIFORM_BUFFER, kLightsUniformBinding, uniforms_.name(), lights_uniform_offset_,
+                            sizeof(LightUniforms));
     }
 
     if (debug) {

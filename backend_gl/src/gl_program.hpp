@@ -40,14 +40,17 @@ static_assert(kProgramBlades == static_cast<uint32_t>(kShaderBlades) &&
 // Every feature mask: the design maps' bits, then kFeatureWind, kFeatureInteraction,
 // kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView (backend.hpp).
 constexpr uint32_t kFeatureVariants = kFeatureMaskCount;
-// The masks without kFeatureDepthPass, kFeatureShadowReceive and kFeatureMotion (a depth
-// pass's, a receiving view's and a motion view's programs are kept apart, made on the first such view:
+// The masks without kFeatureDepthPass, kFeatureShadowReceive, kFeatureMotion and
+// kFeatureHostLights (a depth pass's, a receiving view's, a motion view's and a lit view's
+// programs are kept apart, made on the first such view:
 // GlBackend::program_slot), and the masks with either.
 constexpr uint32_t kColourVariants = kFeatureDepthPass;
 constexpr uint32_t kPassVariants = kFeatureVariants - kColourVariants;
 static_assert(kFeatureShadowReceive == kFeatureDepthPass << 1 && kFeatureMotion == kFeatureShadowReceive << 1 &&
-                  kFeatureVariants == kFeatureMotion << 1,
-              "the pass bits are the last three");
+                  kFeatureHostLights == kFeatureMotion << 1 && kFeatureVariants == kFeatureHostLights << 1,
+              "the pass bits are the last four");
+// A view lit by the host's lights: its GrassLights block at uniform binding 4 (host_lights.glsl).
+constexpr GLuint kLightsUniformBinding = 4;
 // A view with motion vectors: its GrassMotion block at uniform binding 3 (motion.glsl); the
 // fragment shaders write the velocity to output location 1 (gl_motion.cpp routes it).
 constexpr GLuint kMotionUniformBinding = 3;
@@ -81,7 +84,8 @@ constexpr GLuint kInteractionImageUnit = 0;
 // kFeatureVariants): the shaders get `#define GRASS_FEATURES <features>u` after their
 // #version line (and `#define GRASS_RESPONSIVE 1` when the mask has one of
 // kBladeCurveFeatures, `#define GRASS_HOST_SHADOWS 1` when it has kFeatureShadowReceive,
-// `#define GRASS_VELOCITY 1` when it has kFeatureMotion). On failure the driver's log is in the context's error message
+// `#define GRASS_VELOCITY 1` when it has kFeatureMotion, `#define GRASS_HOST_LIGHTS 1` when
+// it has kFeatureHostLights). On failure the driver's log is in the context's error message
 // (named after `function`) and nothing is left behind.
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
                             uint32_t features, GLuint* out_program);

@@ -178,6 +178,27 @@ void GlDrawStateGuard::begin_depth_pass(GLfloat constant, GLfloat slope) {
     gl.PolygonOffset(slope, constant);
 }
 
+void GlDrawStateGuard::save_binding(GLuint index, UniformBinding* out) const {
+    gl_.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, index, &out->buffer);
+    gl_.GetInteger64i_v(GL_UNIFORM_BUFFER_START, index, &out->start);
+    gl_.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, index, &out->size);
+}
+
+void GlDrawStateGuard::restore_binding(GLuint index, const UniformBinding& b) const {
+    if (b.buffer != 0 && b.size > 0) {
+        gl_.BindBufferRange(GL_UNIFORM_BUFFER, index, static_cast<GLuint>(b.buffer), static_cast<GLintptr>(b.start),
+                            static_cast<GLsizeiptr>(b.size));
+    } else {
+        gl_.BindBufferBase(GL_UNIFORM_BUFFER, index, static_cast<GLuint>(b.buffer));
+    }
+}
+
+void GlDrawStateGuard::begin_host_lights() {
+    if (host_lights_) return;
+    host_lights_ = true;
+    save_binding(kLightsUniformBinding, &lights_binding_);
+}
+
 void GlDrawStateGuard::begin_shadow_receive() {
     const GlFunctions& gl = gl_;
     if (shadow_receive_) return;
@@ -188,9 +209,7 @@ void GlDrawStateGuard::begin_shadow_receive() {
     gl.GetIntegerv(GL_TEXTURE_BINDING_2D_ARRAY, &shadow_unit_.texture_2d_array);
     gl.GetIntegerv(GL_SAMPLER_BINDING, &shadow_unit_.sampler);
     gl.ActiveTexture(static_cast<GLenum>(active));
-    gl.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, kShadowUniformBinding, &shadow_binding_.buffer);
-    gl.GetInteger64i_v(GL_UNIFORM_BUFFER_START, kShadowUniformBinding, &shadow_binding_.start);
-    gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, kShadowUniformBinding, &shadow_binding_.size);
+    save_binding(kShadowUniformBinding, &shadow_binding_);
 }
 
 void GlDrawStateGuard::begin_motion(uint32_t velocity) {
@@ -205,9 +224,7 @@ void GlDrawStateGuard::begin_motion(uint32_t velocity) {
         gl.GetIntegerv(static_cast<GLenum>(GL_DRAW_BUFFER0 + i), &buffer);
         draw_buffers_[i] = static_cast<GLenum>(buffer);
     }
-    gl.GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, kMotionUniformBinding, &motion_binding_.buffer);
-    gl.GetInteger64i_v(GL_UNIFORM_BUFFER_START, kMotionUniformBinding, &motion_binding_.start);
-    gl.GetInteger64i_v(GL_UNIFORM_BUFFER_SIZE, kMotionUniformBinding, &motion_binding_.size);
+    save_binding(kMotionUniformBinding, &motion_binding_);
     gl.GetBooleani_v(GL_COLOR_WRITEMASK, kVelocityOutput, velocity_mask_);
     velocity_blend_ = gl.IsEnabledi(GL_BLEND, kVelocityOutput);
     const GLenum routed[2] = {draw_buffers_[0], draw_buffers_[velocity]}; // check_velocity_target: not GL_NONE
@@ -227,13 +244,7 @@ void GlDrawStateGuard::restore_motion() const {
     } else {
         gl.Disablei(GL_BLEND, kVelocityOutput);
     }
-    const UniformBinding& b = motion_binding_;
-    if (b.buffer != 0 && b.size > 0) {
-        gl.BindBufferRange(GL_UNIFORM_BUFFER, kMotionUniformBinding, static_cast<GLuint>(b.buffer),
-                           static_cast<GLintptr>(b.start), static_cast<GLsizeiptr>(b.size));
-    } else {
-        gl.BindBufferBase(GL_UNIFORM_BUFFER, kMotionUniformBinding, static_cast<GLuint>(b.buffer));
-    }
+    restore_binding(kMotionUniformBinding, motion_binding_);
 }
 
 GlDrawStateGuard::~GlDrawStateGuard() {
@@ -244,14 +255,9 @@ GlDrawStateGuard::~GlDrawStateGuard() {
         gl.BindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(shadow_unit_.texture_2d_array));
         gl.BindSampler(static_cast<GLuint>(kShadowMapUnit), static_cast<GLuint>(shadow_unit_.sampler));
         gl.ActiveTexture(GL_TEXTURE0);
-        const UniformBinding& b = shadow_binding_;
-        if (b.buffer != 0 && b.size > 0) {
-            gl.BindBufferRange(GL_UNIFORM_BUFFER, kShadowUniformBinding, static_cast<GLuint>(b.buffer),
-                               static_cast<GLintptr>(b.start), static_cast<GLsizeiptr>(b.size));
-        } else {
-            gl.BindBufferBase(GL_UNIFORM_BUFFER, kShadowUniformBinding, static_cast<GLuint>(b.buffer));
-        }
+        restore_binding(kShadowUniformBinding, shadow_binding_);
     }
+    if (host_lights_) restore_binding(kLightsUniformBinding, lights_binding_);
     if (depth_pass_) {
         gl.PolygonOffset(polygon_offset_[0], polygon_offset_[1]);
         gl.Disable(GL_POLYGON_OFFSET_FILL); // enabled again below where the host had it

@@ -38,6 +38,9 @@ public:
     // red and green alone, unblended. The host's draw buffer list, uniform binding 3 and
     // draw buffer 1's colour mask and blend enable are saved first and restored with the rest.
     void begin_motion(uint32_t velocity);
+    // A view lit by the host's lights (FramePlan::host_lights): the host's uniform binding 4
+    // saved first and restored with the rest.
+    void begin_host_lights();
     GlDrawStateGuard(const GlDrawStateGuard&) = delete;
     GlDrawStateGuard& operator=(const GlDrawStateGuard&) = delete;
 
@@ -115,6 +118,11 @@ private:
     GLboolean velocity_mask_[4] = {};
     GLboolean velocity_blend_ = GL_FALSE;
     void restore_motion() const;
+    // A lit view: the host's uniform binding 4.
+    bool host_lights_ = false;
+    UniformBinding lights_binding_ = {};
+    void save_binding(GLuint index, UniformBinding* out) const;
+    void restore_binding(GLuint index, const UniformBinding& b) const;
 };
 
 // Around texture uploads from client memory: the unpack pixel-store state and the pixel

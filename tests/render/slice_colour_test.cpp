@@ -49,19 +49,86 @@ constexpr double kSunTermLimit = 2.0; // levels
 constexpr int kImageBands = 2;
 constexpr double kImageColourLimit = 1.0; // levels beyond the spread
 
+// The host's lights (grass_view_lights_desc) of a case: none, or one of these, the sun off
+// (ambient 0.15) unless the case keeps it.
+enum HostLight { kNoHostLight, kPointLight, kSpotLight, kHarmonics, kSpecular };
+
 struct Light {
     const char* name;
     float sun_direction[3];
     bool sun;                         // false: no sun, ambient 1 (the albedo and the ambient occlusion alone)
     double limit_beyond_spread;       // levels (kSunTermLimit where the near band's sun term is off)
     double image_limit_beyond_spread; // levels, the image tier's far and middle bands
+    HostLight host = kNoHostLight;
 };
 // The default sun (from behind the camera's left, 45 degrees up), a low sun from the side, a
 // sun facing the camera (the blades' back sides lit), and no sun.
 const Light kLights[] = {{"default", {0.0f, 0.0f, 0.0f}, true, kSunTermLimit, kImageColourLimit},
                          {"side", {1.0f, 0.35f, 0.0f}, true, kSunTermLimit, 4.0},
                          {"facing", {0.0f, 0.6f, 1.0f}, true, 0.0, kImageColourLimit},
-                         {"unlit", {0.0f, 1.0f, 0.0f}, false, 0.0, kImageColourLimit}};
+                         {"unlit", {0.0f, 1.0f, 0.0f}, false, 0.0, kImageColourLimit},
+                         // The host's lights (GL; Vulkan refuses them): a point light 2.5 m over the
+                         // field's near edge, a spot from above aimed at the field's middle, a
+                         // sky brighter above than below as harmonics, and Kajiya-Kay specular
+                         // under a low sun ahead. Measured (GL), levels off the blades against a
+                         // spread of 3.0, far / middle / near band:
+                         //              volume          image (far, middle)
+                         //   point      0.2, 0.6, 8.4   1.7, 4.7
+                         //   spot       0.8, 0.3, 1.7   0.8, 7.4
+                         //   harmonics  1.0, 0.5, 2.4   2.4, 0.3
+                         //   specular   0.9, 2.5, 2.4   7.9, 7.0  (without it 0.1, 0.4, 1.0 and 0.8, 2.9)
+                         // The point light's near band is the lobes' known excess in the near band
+                         // (kSunTermLimit), here under a light 1.3 times the sun's; the image tier's
+                         // one slice at half height reads the spot's cone edge, and under a high
+                         // exponent the highlight of the blades bent furthest (the tail of their
+                         // tangents), less well. Regression limits, not goals (issue 32: slices that
+                         // know the view and the light).
+                         {"point", {0.0f, 1.0f, 0.0f}, false, 5.5, 2.0, kPointLight},
+                         {"spot", {0.0f, 1.0f, 0.0f}, false, 0.0, 4.5, kSpotLight},
+                         {"harmonics", {0.0f, 1.0f, 0.0f}, false, 0.0, kImageColourLimit, kHarmonics},
+                         {"specular", {0.0f, 0.3f, 1.0f}, true, 0.0, 5.0, kSpecular}};
+
+// The case's grass_view_lights_desc in `d` (its light in `l`), chained on `v`.
+void add_host_light(HostLight kind, grass_view_desc* v, grass_view_lights_desc* d, grass_light* l) {
+    if (kind == kNoHostLight) return;
+    *d = grass_default_view_lights_desc();
+    *l = grass_default_light();
+    if (kind != kSpecular) {
+        for (int c = 0; c < 3; ++c) {
+            v->sun_color[c] = 0.0f;
+            v->ambient_color[c] = 0.15f;
+        }
+    }
+    if (kind == kPointLight || kind == kSpotLight) {
+        d->light_count = 1;
+        d->lights = l;
+        l->position[0] = 1.0;
+        l->position[1] = kind == kPointLight ? 2.5 : 4.0;
+        l->position[2] = kind == kPointLight ? 0.0 : 1.0;
+        l->intensity = kind == kPointLight ? 8.0f : 16.0f;
+        l->range = 30.0f;
+        if (kind == kSpotLight) {
+            l->kind = GRASS_LIGHT_SPOT;
+            l->direction[0] = 0.0f;
+            l->direction[1] = -1.0f;
+            l->direction[2] = 0.0f;
+            l->inner_cone_angle = 0.1f;
+            l->outer_cone_angle = 0.3f;
+        }
+    } else if (kind == kHarmonics) {
+        d->ambient_sh_enabled = 1;
+        for (int c = 0; c < 3; ++c) {
+            d->ambient_sh[0][c] = 0.5f / 0.282095f;
+            d->ambient_sh[1][c] = 0.6f; // brighter from above
+            d->ambient_sh[3][c] = 0.3f; // and from +x
+        }
+    } else {
+        d->specular_strength = 0.4f;
+        d->specular_exponent = 16.0f;
+    }
+    d->next = v->next;
+    v->next = d;
+}
 
 double linear(uint8_t byte) {
     const double c = byte / 255.0;
@@ -114,6 +181,8 @@ enum Variant { kBlades, kBladesOtherSeed, kVolume, kImage, kVariants };
 
 class SliceColourTest : public RenderTest {
 protected:
+    // The Vulkan backend refuses grass_view_lights_desc for now.
+    bool host_lights_supported() const { return GetParam() != GRASS_BACKEND_VULKAN; }
     // Every variant in every light, over black and over white, one context per background:
     // the 8 x 8 cells of the default patch drawn by blades, the same with patch seed 2 and
     // mirror seed 1, and the default patch drawn by the volume tier (8 slices) alone and by
@@ -129,6 +198,7 @@ protected:
             for (int variant = 0; variant < kVariants; ++variant) {
                 for (int l = 0; l < kLightCount; ++l) {
                     const Light& light = kLights[l];
+                    if (light.host != kNoHostLight && !host_lights_supported()) continue;
                     grass_field_desc d = variant == kVolume  ? solo_tier_field(8, GRASS_TIER_VOLUME, 8, 1)
                                          : variant == kImage ? solo_tier_field(8, GRASS_TIER_IMAGE, 0, 1)
                                                              : field_desc(8);
@@ -147,6 +217,9 @@ protected:
                                light.sun_direction[2] != 0.0f) {
                         for (int c = 0; c < 3; ++c) v.sun_direction[c] = light.sun_direction[c];
                     }
+                    grass_view_lights_desc lights{};
+                    grass_light host_light{};
+                    add_host_light(light.host, &v, &lights, &host_light);
                     grass_host::Image& image = b == 0 ? out[variant][l].black : out[variant][l].white;
                     image = render(v);
                     save(image, std::string(light.name) + "_" + names[variant] + (b == 0 ? "_black" : "_white"));
@@ -165,6 +238,10 @@ TEST_P(SliceColourTest, VolumeAndImageRowBandsMatchTheBladesWithinTheSeedSpread)
     if (HasFatalFailure()) return;
     int count = 0;
     for (const Light& light : kLights) {
+        if (light.host != kNoHostLight && !host_lights_supported()) {
+            ++count;
+            continue;
+        }
         const std::string name = light.name;
         const Pair& a = images[kBlades][count];
         const Pair& b = images[kBladesOtherSeed][count];
@@ -208,6 +285,7 @@ TEST_P(SliceColourTest, VolumeAndImageRowBandsMatchTheBladesWithinTheSeedSpread)
                 "image at most %.1f (far and middle bands)\n",
                 backend_name(GetParam()).c_str(), spread, kSpreadFloor, worst, worst_image);
     for (int l = 0; l < count; ++l) {
+        if (kLights[l].host != kNoHostLight && !host_lights_supported()) continue;
         for (int k = 0; k < kBands; ++k) {
             EXPECT_LE(largest_channel_difference(volume[l].colour[k], blades[l].colour[k]),
                       spread + kLights[l].limit_beyond_spread)

@@ -250,6 +250,14 @@ Subcommand add_tier_cost(CLI::App& measure) {
         ->excludes(features)
         ->excludes("--depth-pass")
         ->excludes(receive);
+    app->add_flag("--lights", o->lights,
+                  "each row of the plain table also lit by the host's lights: 1, 8, and 8 with specular and "
+                  "harmonics, GL (docs/records/host-lights.md)")
+        ->excludes(maps)
+        ->excludes(features)
+        ->excludes("--depth-pass")
+        ->excludes(receive)
+        ->excludes("--motion");
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));

@@ -42,13 +42,15 @@
 // --receive: each row of the plain table also receiving a shadow map (grass_shadow_receive_desc;
 // GL or Vulkan; docs/records/shadow-receiving.md) that shades half the field, with filter_radius 0
 // and 1.5, rounds alternating; per basic cell each, and the ratios to the plain frame.
+// --lights: each row of the plain table also lit by the host's lights (grass_view_lights_desc;
+// GL; docs/records/host-lights.md): 1 light, 8, and 8 with specular and harmonics.
 // --motion: each row of the plain table also writing motion vectors (grass_view_motion_desc;
 // docs/records/motion-vectors.md) into a velocity target (GL: an RG16F target the tool adds to
 // the host's framebuffer; Vulkan: the host's RGBA32F colour attachment 1), without wind and in wind (the pose computed twice); per basic cell each, and
 // the ratios to the plain frame of the same wind.
 // --frames N: frames measured per row (after one that uploads); default 5 (median).
 // Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features | --single] [--frames N]
-//        [--rounds N] [--depth-pass | --receive | --motion]
+//        [--rounds N] [--depth-pass | --receive | --motion | --lights]
 #pragma once
 
 #include <grass/grass.h>
@@ -72,6 +74,7 @@ struct Options {
     bool depth_pass = false; // --depth-pass: each plain row also as a depth pass
     bool receive = false;    // --receive: each plain row also receiving a shadow map (GL)
     bool motion = false;     // --motion: each plain row also writing motion vectors
+    bool lights = false;     // --lights: each plain row also lit by the host's lights (GL)
     int frames = 5;
     int rounds = 3;          // --maps and --features only
     std::string patch_scene; // --patch-of: the patch of this scene file instead of the default patch
@@ -143,6 +146,11 @@ public:
         view_.next = motion;
         host_->depth_only = false;
     }
+    // Chains `lights` on the view (nullptr: none) for the frames from now on.
+    void set_lights(const grass_view_lights_desc* lights) {
+        view_.next = lights;
+        host_->depth_only = false;
+    }
     const grass_view_desc& view() const { return view_; }
     grass_frame_stats frame_stats();
     grass_memory_stats memory_stats();
@@ -188,6 +196,8 @@ Cost cost(const std::vector<double>& times, const std::vector<double>& empties);
 int run_plain(Rig& rig); // tier_cost_plain.cpp
 // --motion: the plain rows without and with motion vectors, still and in wind (tier_cost_motion.cpp).
 int run_motion(Rig& rig, const std::vector<Setup>& rows);
+// --lights: the plain rows without and with the host's lights (tier_cost_lights.cpp).
+int run_lights(Rig& rig, const std::vector<Setup>& rows);
 int run_maps(Rig& rig);     // tier_cost_maps.cpp
 int run_features(Rig& rig); // tier_cost_features.cpp
 

@@ -220,7 +220,8 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,          /* 0.5: frames and views */
     GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012,      /* 0.5: depth-only passes (shadows) */
     GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC = 0x67720013, /* 0.5: the host's shadow maps, received */
-    GRASS_STRUCT_TYPE_VIEW_MOTION_DESC = 0x67720014     /* 0.5: motion vectors */
+    GRASS_STRUCT_TYPE_VIEW_MOTION_DESC = 0x67720014,    /* 0.5: motion vectors */
+    GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC = 0x67720015     /* 0.5: the host's lights */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -1087,6 +1088,77 @@ typedef struct grass_view_motion_desc {
 
 /* Default: as each field says (set the previous camera, matrices and time). */
 GRASS_API grass_view_motion_desc grass_default_view_motion_desc(void);
+
+/* 0.5: The host's lights (docs/integration.md, "The host's lights"). */
+typedef enum grass_light_kind {
+    GRASS_LIGHT_DIRECTIONAL = 0, /* parallel light from `direction` (a second sun, a moon) */
+    GRASS_LIGHT_POINT = 1,       /* from `position` in every direction */
+    GRASS_LIGHT_SPOT = 2         /* from `position` along `direction`, within a cone */
+} grass_light_kind;
+
+#define GRASS_MAX_VIEW_LIGHTS 8
+
+/* One light, in the conventions of glTF's KHR_lights_punctual: a point or spot light's
+ * irradiance at distance d is color * intensity / d^2, faded to 0 at `range` by
+ * (1 - (d / range)^4)^2 (clamped to 0..1); a directional light's is color * intensity. A
+ * spot's cone fades smoothly from inner_cone_angle to outer_cone_angle off its axis. */
+typedef struct grass_light {
+    grass_light_kind kind; /* default GRASS_LIGHT_POINT */
+    /* Point and spot: world position, metres, within +-1e12 m each (as camera_position).
+     * Directional: ignored. Default 0. */
+    double position[3];
+    /* Directional: the world direction towards the light (as grass_view_desc.sun_direction).
+     * Spot: the direction the light shines in (from the light outwards). Point: ignored. Not
+     * zero where used. Default (0, -1, 0). */
+    float direction[3];
+    float color[3];  /* linear RGB, each 0 or more; default (1, 1, 1) */
+    float intensity; /* 0 or more (point and spot: candela-like, times 1/d^2); default 1 */
+    /* Point and spot: the distance (m) at which the light has faded to 0, > 0; default 10.
+     * Directional: ignored. */
+    float range;
+    /* Spot: the cone's half angles in radians, 0 <= inner < outer <= pi / 2. Defaults 0
+     * and pi / 4. Others: ignored. */
+    float inner_cone_angle;
+    float outer_cone_angle;
+} grass_light;
+
+/* Default: a white point light of intensity 1 and range 10 m at the origin. */
+GRASS_API grass_light grass_default_light(void);
+
+/* Chained on grass_view_desc.next: the host's lights light grass in every tier, besides the
+ * view's sun (grass_view_desc.sun_*), which stays the one light that the host's shadow map
+ * (grass_shadow_receive_desc) and the diffuse light map shade. The host's lights cast no
+ * shadows on grass. Optionally also: Kajiya-Kay anisotropic specular (bakay2003 3.3.2) on
+ * the blades and its equivalent on the volume and image tiers, for the sun and every light;
+ * and the ambient light as second-order spherical harmonics instead of
+ * grass_view_desc.ambient_color. A view without it draws with the same programs and memory
+ * as before. A depth pass (GRASS_PASS_DEPTH) ignores it. Cost: each light adds to every
+ * tier's fragment work (the volume tier's most: it lights every point its rays composite);
+ * docs/records/host-lights.md has the figures. */
+typedef struct grass_view_lights_desc {
+    grass_struct_type type;    /* GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC */
+    const void* next;          /* the view's next extension, or NULL */
+    uint32_t light_count;      /* 0 to GRASS_MAX_VIEW_LIGHTS; default 0 */
+    const grass_light* lights; /* light_count lights; may be NULL when light_count is 0 */
+    /* Kajiya-Kay specular: its strength (0: none, 0 to 1) and exponent (1 to 1024).
+     * Defaults 0 and 32. */
+    float specular_strength;
+    float specular_exponent;
+    /* 1: the ambient light is a function of the normal, A(n) = sum over k of
+     * ambient_sh[k] * Y_k(n), in place of grass_view_desc.ambient_color (linear RGB, as it):
+     * the nine real spherical harmonics of orders 0-2 over world directions n = (x, y, z),
+     * in the order Y_00 = 0.282095, Y_1-1 = 0.488603 y, Y_10 = 0.488603 z, Y_11 = 0.488603 x,
+     * Y_2-2 = 1.092548 xy, Y_2-1 = 1.092548 yz, Y_20 = 0.315392 (3z^2 - 1), Y_21 = 1.092548
+     * xz, Y_22 = 0.546274 (x^2 - y^2). A constant ambient colour a is ambient_sh[0] = a /
+     * 0.282095 and the rest 0; a host with a probe's radiance coefficients L_k gives
+     * L_k * A_l / pi, A_l = pi, 2 pi / 3, pi / 4 for orders 0, 1, 2 (Ramamoorthi and Hanrahan
+     * 2001). Each coefficient finite. 0: ambient_color as before. Default 0. */
+    uint32_t ambient_sh_enabled;
+    float ambient_sh[9][3];
+} grass_view_lights_desc;
+
+/* Default: as each field says (no lights, no specular, the view's ambient colour). */
+GRASS_API grass_view_lights_desc grass_default_view_lights_desc(void);
 
 /* Starts a frame of one view: validates the view and plans what every field draws. Then
  * draw with grass_gl_render() or grass_vk_record(), and close with grass_end_frame().

@@ -73,13 +73,15 @@ grass_result check_plan(grass_context* ctx, const char* fn, const FramePlan& pla
         const bool debug_ok = ((draw.features & kFeatureDebugView) != 0) == ((plan.flags & kDebugViewFlags) != 0) &&
                               ((draw.features & kFeatureDepthPass) != 0) == plan.depth_pass &&
                               ((draw.features & kFeatureShadowReceive) != 0) == plan.shadow_receive &&
-                              ((draw.features & kFeatureMotion) != 0) == plan.motion;
-        const bool dynamics_ok = (dynamics_bits & ~(kBladeCurveFeatures | kFeatureWindMap | kFeatureDebugView |
-                                                    kFeatureDepthPass | kFeatureShadowReceive | kFeatureMotion)) == 0 &&
-                                 ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0) &&
-                                 ((dynamics_bits & kFeatureWindMap) != 0) == field->wind_map.active() &&
-                                 ((dynamics_bits & kFeatureWindMap) == 0 || (dynamics_bits & kFeatureWind) != 0) &&
-                                 ((dynamics_bits & kFeatureBladeCulling) == 0 || draw.kind == GRASS_TIER_GEOMETRY);
+                              ((draw.features & kFeatureMotion) != 0) == plan.motion &&
+                              ((draw.features & kFeatureHostLights) != 0) == plan.host_lights;
+        const bool dynamics_ok =
+            (dynamics_bits & ~(kBladeCurveFeatures | kFeatureWindMap | kFeatureDebugView | kFeatureDepthPass |
+                               kFeatureShadowReceive | kFeatureMotion | kFeatureHostLights)) == 0 &&
+            ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0) &&
+            ((dynamics_bits & kFeatureWindMap) != 0) == field->wind_map.active() &&
+            ((dynamics_bits & kFeatureWindMap) == 0 || (dynamics_bits & kFeatureWind) != 0) &&
+            ((dynamics_bits & kFeatureBladeCulling) == 0 || draw.kind == GRASS_TIER_GEOMETRY);
         if ((draw.features & map_bits) != field->maps.features || !dynamics_ok || !debug_ok ||
             draw.features != draw.uniforms.tiling[3]) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,

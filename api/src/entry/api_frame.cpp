@@ -4,6 +4,7 @@
 #include "context/invariants.hpp"
 #include "dynamics/colliders.hpp"
 #include "dynamics/dynamics_plan.hpp"
+#include "entry/api_lights.hpp"
 #include "entry/api_motion.hpp"
 #include "foundation/abi_sizes.hpp"
 #include "foundation/validate.hpp"
@@ -146,13 +147,18 @@ grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_vi
             out->motion = static_cast<const grass_view_motion_desc*>(p);
             GRASS_TRY(check_view_motion(ctx, fn, *out->motion));
             p = out->motion->next;
+        } else if (type == GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC && !out->lights) {
+            out->lights = static_cast<const grass_view_lights_desc*>(p);
+            GRASS_TRY(check_view_lights(ctx, fn, *out->lights));
+            p = out->lights->next;
         } else {
-            return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
-                             "%s: view->next chain element %u has type 0x%08x; expected "
-                             "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC, GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC, "
-                             "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC, GRASS_STRUCT_TYPE_VIEW_MOTION_DESC or "
-                             "GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most once",
-                             fn, position, static_cast<unsigned>(type));
+            return ctx->fail(
+                GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                "%s: view->next chain element %u has type 0x%08x; expected "
+                "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC, GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC, "
+                "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC, GRASS_STRUCT_TYPE_VIEW_MOTION_DESC, "
+                "GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC or GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most once",
+                fn, position, static_cast<unsigned>(type));
         }
     }
     return GRASS_SUCCESS;
@@ -221,6 +227,12 @@ grass_result check_views(grass_context* ctx, const char* fn, const ViewExtension
                              "that colour attachment)",
                              fn, ext.motion->velocity_attachment, target.velocity_attachment);
         }
+    }
+    if (ext.lights && ctx->backend->kind() == GRASS_BACKEND_VULKAN) {
+        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: view->next chains a grass_view_lights_desc, but the Vulkan backend does not light "
+                         "grass with the host's lights yet (GL does)",
+                         fn);
     }
     const uint32_t views = target.views;
     if (ext.stereo && views == 2) return GRASS_SUCCESS;

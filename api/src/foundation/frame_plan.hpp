@@ -242,6 +242,21 @@ struct MotionUniforms {
 };
 static_assert(sizeof(MotionUniforms) == 144, "std140 GrassMotion block");
 
+// std140 uniform block `GrassLights` (host_lights.glsl; GL binding 4): a view's host lights
+// (grass_view_lights_desc), only in such a view's upload.
+struct LightUniforms {
+    float counts[4];        // x: lights, y: specular strength, z: specular exponent, w: 1 = ambient harmonics
+    float ambient_sh[9][4]; // rgb per coefficient
+    struct Light {
+        float position_kind
+            [4];       // xyz: camera-relative position, or the unit direction towards a directional light; w: kind
+        float axis[4]; // xyz: a spot's unit axis (the way it shines)
+        float color_range[4]; // rgb: colour x intensity; w: range (m)
+        float cone[4];        // x: cos(inner angle), y: cos(outer angle)
+    } light[8];
+};
+static_assert(sizeof(LightUniforms) == 672, "std140 GrassLights block");
+
 struct FramePlan {
     explicit FramePlan(HostAllocator* host)
         : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host) {}
@@ -268,6 +283,10 @@ struct FramePlan {
     bool motion = false;
     uint32_t velocity_attachment = 0;
     MotionUniforms motion_uniforms{};
+    // A view lit by the host's lights (grass_view_lights_desc): every draw has
+    // kFeatureHostLights; the backend binds `lights`.
+    bool host_lights = false;
+    LightUniforms lights{};
     Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
     Vector<TierDraw> draws;         // per field, per tier that draws something
     grass_frame_stats stats{};

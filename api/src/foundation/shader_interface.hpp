@@ -61,8 +61,13 @@ constexpr uint32_t kFeatureShadowReceive = 1u << 11;
 // the GRASS_VELOCITY define) and also pose the grass at the previous time. Set on every draw
 // of such a colour view's plan and no other.
 constexpr uint32_t kFeatureMotion = 1u << 12;
+// A view lit by the host's lights (grass_view_lights_desc, GRASS_HOST_LIGHTS in the shaders):
+// its variants declare the GrassLights block (host_lights.glsl) and add the lights, the
+// specular and the ambient harmonics. Set on every draw of such a colour view's plan and no
+// other.
+constexpr uint32_t kFeatureHostLights = 1u << 13;
 // Every feature mask is below this (the variants a backend may compile).
-constexpr uint32_t kFeatureMaskCount = kFeatureMotion << 1;
+constexpr uint32_t kFeatureMaskCount = kFeatureHostLights << 1;
 // The debug boxes (GRASS_VIEW_FLAG_DEBUG_CELLS, debug_tiers.*) sample the height map alone.
 constexpr uint32_t kDebugBoxFeatures = 1u << kMapHeight;
 // Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's

@@ -43,6 +43,7 @@ struct ViewExtensions {
     const grass_view_pass_desc* pass = nullptr;        // the pass (none: GRASS_PASS_COLOR)
     const grass_shadow_receive_desc* shadow = nullptr; // the host's shadow map, received (colour views)
     const grass_view_motion_desc* motion = nullptr;    // motion vectors: the previous camera and time
+    const grass_view_lights_desc* lights = nullptr;    // the host's lights (colour views)
 };
 
 // Rebuilds in.plan from a validated view. Fails only when a host lod-test callback

@@ -24,6 +24,7 @@ DEFINES = {
     "GRASS_MAX_WIND_SOURCES": 16,
     "GRASS_MAX_VIEWS_PER_FRAME": 16,
     "GRASS_MAX_SHADOW_CASCADES": 4,
+    "GRASS_MAX_VIEW_LIGHTS": 8,
     "GRASS_MAX_COLLIDERS": 65536, "GRASS_MAX_COLLIDERS_PER_TILE": 1024,
     "GRASS_MAX_MEMORY_HEAPS": 16,
 }
@@ -61,6 +62,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_FRAME_DESC": 0x67720011, "GRASS_STRUCT_TYPE_VIEW_PASS_DESC": 0x67720012,
         "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC": 0x67720013,
         "GRASS_STRUCT_TYPE_VIEW_MOTION_DESC": 0x67720014,
+        "GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC": 0x67720015,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -94,6 +96,7 @@ ENUMS = {
     "grass_tier_kind": {"GRASS_TIER_GEOMETRY": 0, "GRASS_TIER_VOLUME": 1, "GRASS_TIER_IMAGE": 2},
     "grass_pass_kind": {"GRASS_PASS_COLOR": 0, "GRASS_PASS_DEPTH": 1},
     "grass_shadow_compare": {"GRASS_SHADOW_COMPARE_LESS_EQUAL": 0, "GRASS_SHADOW_COMPARE_GREATER_EQUAL": 1},
+    "grass_light_kind": {"GRASS_LIGHT_DIRECTIONAL": 0, "GRASS_LIGHT_POINT": 1, "GRASS_LIGHT_SPOT": 2},
     "grass_lod_answer": {"GRASS_LOD_DISCARD": 0, "GRASS_LOD_SPLIT": 1, "GRASS_LOD_DRAW": 2},
     "grass_lod_test_kind": {
         "GRASS_LOD_TEST_DISTANCE_BAND": 1, "GRASS_LOD_TEST_MACRO_CELL": 2, "GRASS_LOD_TEST_CALLBACK": 3,
@@ -282,6 +285,18 @@ class grass_view_motion_desc(Structure):
                 ("previous_jitter", c_float * 2), ("previous_time", c_double), ("velocity_attachment", c_uint32)]
 
 
+class grass_light(Structure):
+    _fields_ = [("kind", grass_enum), ("position", c_double * 3), ("direction", c_float * 3), ("color", c_float * 3),
+                ("intensity", c_float), ("range", c_float), ("inner_cone_angle", c_float),
+                ("outer_cone_angle", c_float)]
+
+
+class grass_view_lights_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("light_count", c_uint32), ("lights", POINTER(grass_light)),
+                ("specular_strength", c_float), ("specular_exponent", c_float), ("ambient_sh_enabled", c_uint32),
+                ("ambient_sh", (c_float * 3) * 9)]
+
+
 class grass_frame_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("frame_index", c_uint64),
                 ("completed_frame_index", c_uint64), ("time", c_double)]
@@ -444,6 +459,8 @@ FUNCTIONS = {
     "grass_default_view_pass_desc": (grass_view_pass_desc, []),
     "grass_default_shadow_receive_desc": (grass_shadow_receive_desc, []),
     "grass_default_view_motion_desc": (grass_view_motion_desc, []),
+    "grass_default_light": (grass_light, []),
+    "grass_default_view_lights_desc": (grass_view_lights_desc, []),
     "grass_default_frame_desc": (grass_frame_desc, []),
     "grass_begin_host_frame": (grass_enum, [_ctx, _P(grass_frame_desc)]),
     "grass_plan_view": (grass_enum, [_ctx, _P(grass_view_desc), _P(c_uint32)]),
