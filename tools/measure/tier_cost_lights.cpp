@@ -61,7 +61,8 @@ int run_lights(Rig& rig, const std::vector<Setup>& rows) {
         grass_field_id field{};
         grass_sample::check(grass_create_field(ctx, &tf.desc, &field), "grass_create_field", ctx);
         double us[4], cpu_us[4];
-        rig.per_cell_variants(4, [&](int variant) { rig.set_lights(variants[variant]); }, us, cpu_us);
+        rig.per_cell_variants(
+            4, [&](int variant) { rig.set_lights(variants[variant]); }, us, cpu_us);
         rig.set_lights(nullptr);
         std::printf("| %s | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n", s.name, us[0], us[1], us[2],
                     us[3], cpu_us[0], cpu_us[1] / cpu_us[0], cpu_us[2] / cpu_us[0], cpu_us[3] / cpu_us[0]);
