@@ -13,6 +13,7 @@
 //   host's uniform binding 4.
 // The tiers against the blades under a near point light, a spot, the harmonics and the
 // specular, within the seed spread: SliceColourTest's host-light cases.
+#include "gl_program_spy.hpp"
 #include "render_fixture.hpp"
 
 #include <GL/glcorearb.h>
@@ -31,33 +32,6 @@ namespace {
 constexpr uint32_t kCells = 48; // 12 m x 12 m
 const double kEye[3] = {6.0, 1.7, -1.0}, kTarget[3] = {6.0, 0.0, 6.0};
 const float kSun[3] = {0.35f, 0.8f, 0.25f}; // grass_view_desc's default sun
-
-// The programs grass binds and creates, through the host's GL loader.
-struct GlSeen {
-    std::set<GLuint> used;
-    int64_t created = 0;
-    PFNGLUSEPROGRAMPROC use_program = nullptr;
-    PFNGLCREATEPROGRAMPROC create_program = nullptr;
-} gl_seen;
-void APIENTRY seen_use_program(GLuint program) {
-    if (program != 0) gl_seen.used.insert(program);
-    gl_seen.use_program(program);
-}
-GLuint APIENTRY seen_create_program() {
-    gl_seen.created += 1;
-    return gl_seen.create_program();
-}
-void (*gl_filter(const char* name, void (*real)(void)))(void) {
-    if (std::strcmp(name, "glUseProgram") == 0) {
-        gl_seen.use_program = reinterpret_cast<PFNGLUSEPROGRAMPROC>(real);
-        return reinterpret_cast<void (*)(void)>(&seen_use_program);
-    }
-    if (std::strcmp(name, "glCreateProgram") == 0) {
-        gl_seen.create_program = reinterpret_cast<PFNGLCREATEPROGRAMPROC>(real);
-        return reinterpret_cast<void (*)(void)>(&seen_create_program);
-    }
-    return real;
-}
 
 // Largest channel difference of two images, in 8-bit levels, and the share of pixels that
 // differ from `other` by more than 6 levels (how much of the picture a light changed).
@@ -99,7 +73,7 @@ protected:
         grass_host::TargetDesc t;
         t.width = 160;
         t.height = 96;
-        if (GetParam() == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_filter;
+        if (GetParam() == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_program_spy_filter;
         start(t);
         make_field(three_tier_field(kCells));
     }
@@ -307,12 +281,12 @@ TEST_P(HostLightsTest, AViewWithoutItKeepsItsProgramsAndTheHostsBinding) {
     auto get_i = reinterpret_cast<PFNGLGETINTEGERI_VPROC>(host->gl_proc_address("glGetIntegeri_v"));
     auto delete_buffers = reinterpret_cast<PFNGLDELETEBUFFERSPROC>(host->gl_proc_address("glDeleteBuffers"));
     ASSERT_TRUE(get_block && create_buffers && buffer_data && bind_range && get_i && delete_buffers);
-    gl_seen.used.clear();
+    gl_program_spy().used.clear();
     const grass_host::Image plain = render(camera(nullptr));
-    const std::set<GLuint> plain_programs = gl_seen.used;
+    const std::set<GLuint> plain_programs = gl_program_spy().used;
     ASSERT_GE(plain_programs.size(), 3u) << "a program per tier kind";
     for (const GLuint program : plain_programs) EXPECT_EQ(get_block(program, "GrassLights"), GL_INVALID_INDEX);
-    const int64_t plain_created = gl_seen.created;
+    const int64_t plain_created = gl_program_spy().created;
 
     GLuint host_buffer = 0;
     create_buffers(1, &host_buffer);
@@ -324,12 +298,12 @@ TEST_P(HostLightsTest, AViewWithoutItKeepsItsProgramsAndTheHostsBinding) {
     l.position[2] = 2.0;
     l.intensity = 4.0f;
     const grass_view_lights_desc d = one(l);
-    gl_seen.used.clear();
+    gl_program_spy().used.clear();
     const grass_host::Image lit = render(camera(&d));
     save(lit, "near_point");
     EXPECT_GT(changed_share(lit, plain), 0.05) << "a point light 1 m over the near grass";
-    EXPECT_GE(gl_seen.created - plain_created, 3) << "a lit view compiles its own variants";
-    for (const GLuint program : gl_seen.used) {
+    EXPECT_GE(gl_program_spy().created - plain_created, 3) << "a lit view compiles its own variants";
+    for (const GLuint program : gl_program_spy().used) {
         EXPECT_EQ(plain_programs.count(program), 0u) << "the lit view drew with a plain view's program";
         EXPECT_NE(get_block(program, "GrassLights"), GL_INVALID_INDEX);
     }
@@ -337,11 +311,11 @@ TEST_P(HostLightsTest, AViewWithoutItKeepsItsProgramsAndTheHostsBinding) {
     get_i(GL_UNIFORM_BUFFER_BINDING, 4, &buffer);
     EXPECT_EQ(GLuint(buffer), host_buffer) << "uniform binding 4";
 
-    const int64_t before = gl_seen.created;
-    gl_seen.used.clear();
+    const int64_t before = gl_program_spy().created;
+    gl_program_spy().used.clear();
     const grass_host::Image again = render(camera(nullptr));
-    EXPECT_EQ(gl_seen.created, before);
-    EXPECT_EQ(gl_seen.used, plain_programs);
+    EXPECT_EQ(gl_program_spy().created, before);
+    EXPECT_EQ(gl_program_spy().used, plain_programs);
     EXPECT_EQ(again.rgba, plain.rgba);
     delete_buffers(1, &host_buffer);
 }

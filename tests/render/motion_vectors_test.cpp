@@ -17,6 +17,7 @@
 // - A view without the struct draws with programs that declare no GrassMotion block and the
 //   same picture; bad descs are refused naming the field; a Vulkan context without
 //   grass_vk_velocity_target_desc, or with another velocity attachment, refuses the view.
+#include "gl_program_spy.hpp"
 #include "render_fixture.hpp"
 #include "vk_intercept.hpp"
 
@@ -34,34 +35,6 @@ namespace grass_test {
 namespace {
 
 constexpr int kSize = 128;
-
-// The programs grass binds and creates, through the host's GL loader.
-struct GlSeen {
-    std::set<GLuint> used;
-    int64_t created = 0;
-    PFNGLUSEPROGRAMPROC use_program = nullptr;
-    PFNGLCREATEPROGRAMPROC create_program = nullptr;
-} gl_seen;
-
-void APIENTRY seen_use_program(GLuint program) {
-    if (program != 0) gl_seen.used.insert(program);
-    gl_seen.use_program(program);
-}
-GLuint APIENTRY seen_create_program() {
-    gl_seen.created += 1;
-    return gl_seen.create_program();
-}
-void (*gl_filter(const char* name, void (*real)(void)))(void) {
-    if (std::strcmp(name, "glUseProgram") == 0) {
-        gl_seen.use_program = reinterpret_cast<PFNGLUSEPROGRAMPROC>(real);
-        return reinterpret_cast<void (*)(void)>(&seen_use_program);
-    }
-    if (std::strcmp(name, "glCreateProgram") == 0) {
-        gl_seen.create_program = reinterpret_cast<PFNGLCREATEPROGRAMPROC>(real);
-        return reinterpret_cast<void (*)(void)>(&seen_create_program);
-    }
-    return real;
-}
 
 struct Gl {
     PFNGLCREATEFRAMEBUFFERSPROC CreateFramebuffers;
@@ -167,7 +140,7 @@ protected:
         RenderTest::SetUp();
         grass_host::TargetDesc t;
         t.width = t.height = kSize;
-        if (GetParam() == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_filter;
+        if (GetParam() == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_program_spy_filter;
         if (GetParam() == GRASS_BACKEND_VULKAN) {
             t.vk_velocity_attachment = 2;
             t.vk_get_instance_proc_addr = vk_intercept::get_instance_proc_addr(); // counts grass's objects
@@ -518,35 +491,35 @@ TEST_P(MotionVectorsTest, AViewWithoutItKeepsItsProgramsAndPicture) {
     const double eye[3] = {6.0, 0.8, 0.5}, at[3] = {6.9, 0.0, 8.0};
     const float none[2] = {0.0f, 0.0f};
     const grass_view_desc plain = view(eye, at);
-    gl_seen.used.clear();
-    gl_seen.created = 0;
+    gl_program_spy().used.clear();
+    gl_program_spy().created = 0;
     const Frame a = draw(plain);
-    const std::set<GLuint> plain_programs = gl_seen.used;
+    const std::set<GLuint> plain_programs = gl_program_spy().used;
     ASSERT_GE(plain_programs.size(), 3u) << "a program per tier kind";
     for (const GLuint program : plain_programs) {
         EXPECT_EQ(gl.GetUniformBlockIndex(program, "GrassMotion"), GL_INVALID_INDEX)
             << "program " << program << " of a view without motion vectors declares the GrassMotion block";
     }
-    const int64_t plain_created = gl_seen.created;
+    const int64_t plain_created = gl_program_spy().created;
     grass_view_desc before = plain;
     before.camera_position[2] -= 0.3;
     grass_view_motion_desc motion = motion_of(before, none);
     grass_view_desc moving = plain;
     moving.next = &motion;
-    gl_seen.used.clear();
+    gl_program_spy().used.clear();
     const Frame b = draw(moving);
-    EXPECT_GE(gl_seen.created - plain_created, 3) << "a motion view compiles its own variants";
-    for (const GLuint program : gl_seen.used) {
+    EXPECT_GE(gl_program_spy().created - plain_created, 3) << "a motion view compiles its own variants";
+    for (const GLuint program : gl_program_spy().used) {
         EXPECT_EQ(plain_programs.count(program), 0u) << "the motion view drew with a plain view's program";
         EXPECT_NE(gl.GetUniformBlockIndex(program, "GrassMotion"), GL_INVALID_INDEX);
     }
     EXPECT_EQ(a.color, b.color) << "the motion view's colour differs";
     EXPECT_EQ(a.depth, b.depth) << "the motion view's depth differs";
-    const int64_t created = gl_seen.created;
-    gl_seen.used.clear();
+    const int64_t created = gl_program_spy().created;
+    gl_program_spy().used.clear();
     const Frame c = draw(plain);
-    EXPECT_EQ(gl_seen.created, created) << "a plain view after a motion view made programs";
-    EXPECT_EQ(gl_seen.used, plain_programs);
+    EXPECT_EQ(gl_program_spy().created, created) << "a plain view after a motion view made programs";
+    EXPECT_EQ(gl_program_spy().used, plain_programs);
     EXPECT_EQ(c.color, a.color);
 }
 

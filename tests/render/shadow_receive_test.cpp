@@ -14,6 +14,7 @@
 // - GL: a view without it draws with programs that declare no GrassShadow block, and a
 //   receiving view compiles its own and leaves the host's unit 14 and uniform binding 2
 //   (Vulkan's pipelines: vk_shadow_receive_test.cpp).
+#include "gl_program_spy.hpp"
 #include "render_fixture.hpp"
 #ifdef GRASS_HOST_HAS_VULKAN
 #    include "vk_intercept.hpp"
@@ -43,34 +44,6 @@ constexpr int kMapTexels = 64; // the shadow map's layers, texels a side (0.1875
 constexpr uint32_t kVkDepthStencilReadOnly = 4; // VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL
 constexpr uint32_t kVkShaderReadOnly = 5;       // VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
 constexpr uint32_t kVkTransferDst = 7;          // VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL: refused
-
-// The programs grass binds (glUseProgram) and creates, through the host's GL loader.
-struct GlSeen {
-    std::set<GLuint> used;
-    int64_t created = 0;
-    PFNGLUSEPROGRAMPROC use_program = nullptr;
-    PFNGLCREATEPROGRAMPROC create_program = nullptr;
-} gl_seen;
-
-void APIENTRY seen_use_program(GLuint program) {
-    if (program != 0) gl_seen.used.insert(program);
-    gl_seen.use_program(program);
-}
-GLuint APIENTRY seen_create_program() {
-    gl_seen.created += 1;
-    return gl_seen.create_program();
-}
-void (*gl_filter(const char* name, void (*real)(void)))(void) {
-    if (std::strcmp(name, "glUseProgram") == 0) {
-        gl_seen.use_program = reinterpret_cast<PFNGLUSEPROGRAMPROC>(real);
-        return reinterpret_cast<void (*)(void)>(&seen_use_program);
-    }
-    if (std::strcmp(name, "glCreateProgram") == 0) {
-        gl_seen.create_program = reinterpret_cast<PFNGLCREATEPROGRAMPROC>(real);
-        return reinterpret_cast<void (*)(void)>(&seen_create_program);
-    }
-    return real;
-}
 
 struct Gl {
     PFNGLCREATETEXTURESPROC CreateTextures;
@@ -124,7 +97,7 @@ protected:
         t.samples = samples;
         t.vk_dynamic_rendering = dynamic_rendering;
         t.read_depth = samples == 1 && !dynamic_rendering;
-        if (backend == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_filter;
+        if (backend == GRASS_BACKEND_GL) t.gl_proc_filter = &gl_program_spy_filter;
 #ifdef GRASS_HOST_HAS_VULKAN
         if (backend == GRASS_BACKEND_VULKAN) t.vk_get_instance_proc_addr = vk_intercept::get_instance_proc_addr();
 #endif
@@ -459,16 +432,16 @@ TEST_P(ShadowReceiveTest, AViewWithoutItKeepsItsProgramsAndTheHostsBindings) {
     if (GetParam() == GRASS_BACKEND_VULKAN)
         GTEST_SKIP() << "GL programs and state (Vulkan: AVulkanViewWithoutItKeepsItsPipelines)";
     make_tiered_field();
-    gl_seen.used.clear();
-    gl_seen.created = 0;
+    gl_program_spy().used.clear();
+    gl_program_spy().created = 0;
     const grass_host::Image lit = render(camera(nullptr));
-    const std::set<GLuint> plain_programs = gl_seen.used;
+    const std::set<GLuint> plain_programs = gl_program_spy().used;
     ASSERT_GE(plain_programs.size(), 3u) << "a program per tier kind";
     for (const GLuint program : plain_programs) {
         EXPECT_EQ(gl.GetUniformBlockIndex(program, "GrassShadow"), GL_INVALID_INDEX)
             << "program " << program << " of a view without receiving declares the GrassShadow block";
     }
-    const int64_t plain_created = gl_seen.created;
+    const int64_t plain_created = gl_program_spy().created;
 
     // The host's own unit 14 and uniform binding 2, which grass must give back.
     GLuint host_texture = 0, host_buffer = 0;
@@ -482,11 +455,11 @@ TEST_P(ShadowReceiveTest, AViewWithoutItKeepsItsProgramsAndTheHostsBindings) {
 
     make_map(1, [](int, double u, double) { return u < 0.5 ? 0.0f : 1.0f; });
     const grass_shadow_receive_desc d = receive(GRASS_SHADOW_COMPARE_LESS_EQUAL, 1);
-    gl_seen.used.clear();
+    gl_program_spy().used.clear();
     const grass_host::Image image = render(camera(&d));
     EXPECT_NE(image.rgba, lit.rgba) << "the receiving view drew the same picture";
-    EXPECT_GE(gl_seen.created - plain_created, 3) << "a receiving view compiles its own variants";
-    for (const GLuint program : gl_seen.used) {
+    EXPECT_GE(gl_program_spy().created - plain_created, 3) << "a receiving view compiles its own variants";
+    for (const GLuint program : gl_program_spy().used) {
         EXPECT_EQ(plain_programs.count(program), 0u) << "the receiving view drew with a plain view's program";
         EXPECT_NE(gl.GetUniformBlockIndex(program, "GrassShadow"), GL_INVALID_INDEX);
     }
@@ -500,11 +473,11 @@ TEST_P(ShadowReceiveTest, AViewWithoutItKeepsItsProgramsAndTheHostsBindings) {
     EXPECT_EQ(GLuint(buffer), host_buffer) << "uniform binding 2";
 
     // And a view without it afterwards: no program made, the plain ones drawn, the same picture.
-    const int64_t before = gl_seen.created;
-    gl_seen.used.clear();
+    const int64_t before = gl_program_spy().created;
+    gl_program_spy().used.clear();
     const grass_host::Image again = render(camera(nullptr));
-    EXPECT_EQ(gl_seen.created, before);
-    EXPECT_EQ(gl_seen.used, plain_programs);
+    EXPECT_EQ(gl_program_spy().created, before);
+    EXPECT_EQ(gl_program_spy().used, plain_programs);
     EXPECT_EQ(again.rgba, lit.rgba);
     gl.DeleteTextures(1, &host_texture);
     gl.DeleteBuffers(1, &host_buffer);
