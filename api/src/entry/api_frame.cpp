@@ -17,24 +17,12 @@
 namespace grass {
 namespace {
 
-// A world position within +-1e12 m (beyond, double itself loses the millimetre).
-grass_result check_position(grass_context* ctx, const char* fn, const char* name, const double p[3]) {
-    GRASS_TRY(check_finite_array(ctx, fn, name, p, 3));
-    for (int c = 0; c < 3; ++c) {
-        if (std::fabs(p[c]) > 1e12) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                             "%s: %s[%d] is %g; it must be within +-1e12 m", fn, name, c, p[c]);
-        }
-    }
-    return GRASS_SUCCESS;
-}
-
 // An eye: a position, a view with an invertible rotation and a projection (`who` names it).
 grass_result check_eye(grass_context* ctx, const char* fn, const char* who, const double position[3],
                        const float view[16], const float projection[16]) {
     char name[64];
     std::snprintf(name, sizeof(name), "%s->camera_position", who);
-    GRASS_TRY(check_position(ctx, fn, name, position));
+    GRASS_TRY(check_world_position(ctx, fn, name, position));
     std::snprintf(name, sizeof(name), "%s->view", who);
     GRASS_TRY(check_finite_array(ctx, fn, name, view, 16));
     std::snprintf(name, sizeof(name), "%s->projection", who);
@@ -133,7 +121,7 @@ grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_vi
             p = out->stereo->next;
         } else if (type == GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC && !out->lod_origin) {
             out->lod_origin = static_cast<const grass_lod_origin_desc*>(p);
-            GRASS_TRY(check_position(ctx, fn, "grass_lod_origin_desc->position", out->lod_origin->position));
+            GRASS_TRY(check_world_position(ctx, fn, "grass_lod_origin_desc->position", out->lod_origin->position));
             p = out->lod_origin->next;
         } else if (type == GRASS_STRUCT_TYPE_VIEW_PASS_DESC && !out->pass) {
             out->pass = static_cast<const grass_view_pass_desc*>(p);

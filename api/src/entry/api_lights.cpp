@@ -29,15 +29,7 @@ grass_result check_light(grass_context* ctx, const char* fn, uint32_t i, const g
     }
     const bool positioned = kind != GRASS_LIGHT_DIRECTIONAL;
     if (positioned) {
-        GRASS_TRY(check_finite_array(ctx, fn, LightName(i, "position").text, l.position, 3));
-        for (int c = 0; c < 3; ++c) {
-            if (std::fabs(l.position[c]) > 1e12) {
-                return ctx->fail(
-                    GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                    "%s: grass_view_lights_desc->lights[%u].position[%d] is %g; it must be within +-1e12 m", fn, i, c,
-                    l.position[c]);
-            }
-        }
+        GRASS_TRY(check_world_position(ctx, fn, LightName(i, "position").text, l.position));
         GRASS_TRY(check_range_above(ctx, fn, LightName(i, "range").text, l.range, 0.0, 1e12));
     }
     if (kind != GRASS_LIGHT_POINT) GRASS_TRY(check_direction(ctx, fn, LightName(i, "direction").text, l.direction));

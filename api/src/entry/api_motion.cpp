@@ -12,15 +12,7 @@ namespace grass {
 
 grass_result check_view_motion(grass_context* ctx, const char* fn, const grass_view_motion_desc& d) {
     GRASS_TRY(
-        check_finite_array(ctx, fn, "grass_view_motion_desc->previous_camera_position", d.previous_camera_position, 3));
-    for (int c = 0; c < 3; ++c) {
-        if (std::fabs(d.previous_camera_position[c]) > 1e12) {
-            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                             "%s: grass_view_motion_desc->previous_camera_position[%d] is %g; it must be within "
-                             "+-1e12 m",
-                             fn, c, d.previous_camera_position[c]);
-        }
-    }
+        check_world_position(ctx, fn, "grass_view_motion_desc->previous_camera_position", d.previous_camera_position));
     GRASS_TRY(check_finite_array(ctx, fn, "grass_view_motion_desc->previous_view", d.previous_view, 16));
     GRASS_TRY(check_finite_array(ctx, fn, "grass_view_motion_desc->previous_projection", d.previous_projection, 16));
     const float* m = d.previous_view;

@@ -1,5 +1,7 @@
 #include "foundation/validate.hpp"
 
+#include <cmath>
+
 namespace grass {
 
 grass_result check_desc_header(Log* log, const char* function, const char* name, const void* desc, int64_t actual,
@@ -81,6 +83,17 @@ grass_result check_finite_array(Log* log, const char* function, const char* name
         if (!std::isfinite(v[i])) {
             return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NOT_FINITE, "%s: %s[%d] is %g; it must be finite",
                              function, name, i, static_cast<double>(v[i]));
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
+grass_result check_world_position(Log* log, const char* function, const char* name, const double p[3]) {
+    GRASS_TRY(check_finite_array(log, function, name, p, 3));
+    for (int c = 0; c < 3; ++c) {
+        if (std::fabs(p[c]) > 1e12) {
+            return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                             "%s: %s[%d] is %g; it must be within +-1e12 m", function, name, c, p[c]);
         }
     }
     return GRASS_SUCCESS;

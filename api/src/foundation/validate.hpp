@@ -38,6 +38,9 @@ grass_result check_range_above(Log* log, const char* function, const char* name,
 grass_result check_direction(Log* log, const char* function, const char* name, const float v[3]);
 grass_result check_finite_array(Log* log, const char* function, const char* name, const double* v, int n);
 grass_result check_finite_array(Log* log, const char* function, const char* name, const float* v, int n);
+// A world position: finite, each coordinate within +-1e12 m (beyond, double itself loses the
+// millimetre).
+grass_result check_world_position(Log* log, const char* function, const char* name, const double p[3]);
 
 // Early return on error: GRASS_TRY(check_...(...));
 #define GRASS_TRY(expr)                                         \
