@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config ccache
   libgl-dev libegl-dev libgl1-mesa-dri libegl-mesa0 libosmesa6-dev   # GL 4.5 via llvmpipe: EGL surfaceless + OSMesa
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers          # Vulkan loader, lavapipe, validation layers
   glslc                                                              # GLSL -> SPIR-V at build time
