@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -51,6 +53,37 @@ protected:
         grass_patch_id p{};
         EXPECT_EQ(grass_create_patch(ctx, &d, &p), GRASS_SUCCESS) << last_message();
         return p;
+    }
+
+    // A field of 48 x 48 cells of a new default patch drawn by three tiers: blades to 3 m,
+    // the volume (2 slices a cell) to 7 m, the image tier beyond.
+    grass_field_id make_three_tier_field() {
+        const grass_patch_id patch = make_patch();
+        const grass_tier_desc tiers[3] = {{GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 2}, {GRASS_TIER_IMAGE, 0}};
+        grass_lod_test bands[3] = {};
+        const float ends[3] = {3.0f, 7.0f, INFINITY};
+        for (uint32_t t = 0; t < 3; ++t) {
+            bands[t].kind = GRASS_LOD_TEST_DISTANCE_BAND;
+            bands[t].tier = t;
+            bands[t].begin = t == 0 ? 0.0f : ends[t - 1];
+            bands[t].end = ends[t];
+        }
+        grass_field_desc d = one_tier_field(patch, 48, &tiers[0], &bands[0]);
+        d.tier_count = 3;
+        d.lod_test_count = 3;
+        grass_field_id field{};
+        EXPECT_EQ(grass_create_field(ctx, &d, &field), GRASS_SUCCESS) << last_message();
+        return field;
+    }
+
+    // Begins a host frame and plans `views` in order (views 0, 1, ...).
+    void plan_frame(std::initializer_list<const grass_view_desc*> views) {
+        grass_frame_desc frame = grass_default_frame_desc();
+        ASSERT_EQ(grass_begin_host_frame(ctx, &frame), GRASS_SUCCESS) << last_message();
+        for (const grass_view_desc* v : views) {
+            uint32_t index = 0;
+            ASSERT_EQ(grass_plan_view(ctx, v, &index), GRASS_SUCCESS) << last_message();
+        }
     }
 
     grass_context* ctx = nullptr;

@@ -63,12 +63,7 @@ TEST_F(LightsPlanTest, EveryDrawOfALitColourViewAndNoOtherRunsTheLitVariantWithC
     grass_view_desc depth = plain;
     depth.next = &pass;
 
-    grass_frame_desc frame = grass_default_frame_desc();
-    ASSERT_EQ(grass_begin_host_frame(ctx, &frame), GRASS_SUCCESS) << last_message();
-    uint32_t index = 0;
-    ASSERT_EQ(grass_plan_view(ctx, &plain, &index), GRASS_SUCCESS) << last_message();
-    ASSERT_EQ(grass_plan_view(ctx, &lit, &index), GRASS_SUCCESS) << last_message();
-    ASSERT_EQ(grass_plan_view(ctx, &depth, &index), GRASS_SUCCESS) << last_message();
+    plan_frame({&plain, &lit, &depth});
     const grass::FramePlan& a = ctx->views.plan(0);
     const grass::FramePlan& b = ctx->views.plan(1);
     const grass::FramePlan& c = ctx->views.plan(2);

@@ -16,23 +16,7 @@ namespace {
 class ShadowReceivePlanTest : public CoreTest {};
 
 TEST_F(ShadowReceivePlanTest, EveryDrawOfAReceivingColourViewAndNoOtherRunsTheReceivingVariant) {
-    const grass_patch_id patch = make_patch();
-    const grass_tier_desc tiers[3] = {{GRASS_TIER_GEOMETRY, 0}, {GRASS_TIER_VOLUME, 2}, {GRASS_TIER_IMAGE, 0}};
-    grass_lod_test bands[3] = {};
-    const float ends[3] = {3.0f, 7.0f, INFINITY};
-    for (uint32_t t = 0; t < 3; ++t) {
-        bands[t].kind = GRASS_LOD_TEST_DISTANCE_BAND;
-        bands[t].tier = t;
-        bands[t].begin = t == 0 ? 0.0f : ends[t - 1];
-        bands[t].end = ends[t];
-    }
-    grass_field_desc d = one_tier_field(patch, 48, &tiers[0], &bands[0]);
-    d.tiers = tiers;
-    d.tier_count = 3;
-    d.lod_tests = bands;
-    d.lod_test_count = 3;
-    grass_field_id field{};
-    ASSERT_EQ(grass_create_field(ctx, &d, &field), GRASS_SUCCESS) << last_message();
+    make_three_tier_field();
 
     const double eye[3] = {6.0, 1.5, -1.0}, look[3] = {6.0, 0.0, 6.0};
     const grass_view_desc plain = test_view(eye, look);
@@ -52,12 +36,7 @@ TEST_F(ShadowReceivePlanTest, EveryDrawOfAReceivingColourViewAndNoOtherRunsTheRe
     pass.next = &shadow;
     grass_view_desc depth = plain;
     depth.next = &pass;
-    grass_frame_desc frame = grass_default_frame_desc();
-    ASSERT_EQ(grass_begin_host_frame(ctx, &frame), GRASS_SUCCESS) << last_message();
-    uint32_t index = 0;
-    ASSERT_EQ(grass_plan_view(ctx, &plain, &index), GRASS_SUCCESS) << last_message();
-    ASSERT_EQ(grass_plan_view(ctx, &receiving, &index), GRASS_SUCCESS) << last_message();
-    ASSERT_EQ(grass_plan_view(ctx, &depth, &index), GRASS_SUCCESS) << last_message();
+    plan_frame({&plain, &receiving, &depth});
     const grass::FramePlan& a = ctx->views.plan(0);
     const grass::FramePlan& b = ctx->views.plan(1);
     const grass::FramePlan& c = ctx->views.plan(2);
