@@ -47,7 +47,15 @@ bool interaction_press(vec3 p, float len, float depth, float recovery, out float
     float ground = dot(p + frame.map_offset.xyz, frame.map_up.xyz) + frame.map_axis_v.w;
     float p0 = max(texel.z - ground, 0.0) * (1.0 - clamp(depth, 0.0, 1.0));
     if (p0 >= len) return false;
-    cap = len - (len - p0) * exp(-texel.w / max(recovery, 1e-6));
+    float age = texel.w;
+#ifdef GRASS_VELOCITY
+    // The pose at the previous time (motion.glsl): the trail was that much younger. A press
+    // younger than that is taken as it is now: the map keeps no earlier contact (a collider
+    // resting on the grass renews its contact every frame), so the frame a collider first
+    // presses grass gives that press no velocity; a trail standing up again gives its own.
+    if (g_previous_time) age = max(age - grass_motion.times.x, 0.0);
+#endif
+    cap = len - (len - p0) * exp(-age / max(recovery, 1e-6));
     dir = texel.x * frame.map_axis_u.xyz + texel.y * frame.map_axis_v.xyz;
     return true;
 }

@@ -21,6 +21,7 @@ layout(std140, binding = 3) uniform GrassMotion {
     mat4 view_projection;          // camera-relative world -> clip, without jitter
     mat4 previous_view_projection; // camera-relative world -> the previous frame's clip, without jitter
     vec4 previous_wind_phase;      // the gust phases (Frame's wind_phase) at the previous time
+    vec4 times;                    // x: this frame's time minus the previous time (s)
 } grass_motion;
 
 // Fragment shaders (they define GRASS_MOTION_FRAGMENT first): the velocity goes to output

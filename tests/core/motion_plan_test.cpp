@@ -95,6 +95,7 @@ TEST_F(MotionPlanTest, EveryDrawOfAMotionColourViewAndNoOtherRunsTheMotionVarian
         EXPECT_FLOAT_EQ(b.motion_uniforms.previous_wind_phase[k], earlier_phase[k]) << "gust phase " << k;
     }
     EXPECT_NE(std::memcmp(a.frame.wind_phase, earlier_phase, sizeof earlier_phase), 0) << "the gusts moved";
+    EXPECT_FLOAT_EQ(b.motion_uniforms.times[0], 0.25f) << "the trails' age at the previous time: 10 - 9.75 s younger";
 
     // A world point: its camera-relative position through the plan's matrices lands where the
     // unjittered projections put it, in this frame and in the previous one.

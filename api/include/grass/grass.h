@@ -1046,8 +1046,9 @@ GRASS_API grass_shadow_receive_desc grass_default_shadow_receive_desc(void);
  * antialiasing, motion blur and upscalers. The velocity covers the camera's motion (the
  * previous camera and matrices below) and the wind's motion of the blades and of the
  * volume and image tiers' bend (their pose at `time` minus their pose at previous_time).
- * The colliders' motion (the interaction map) is not in it: pressed grass moves only with
- * the camera and the wind. A view without it draws with the same programs and memory as
+ * The colliders' trails are in it as they stand up again (their pose at the trail's age then);
+ * the frame a collider first presses grass gives that press no velocity (the interaction map
+ * keeps no earlier contact). A view without it draws with the same programs and memory as
  * before. A depth pass (GRASS_PASS_DEPTH) ignores it. Vulkan: the context was made with a
  * grass_vk_velocity_target_desc (else GRASS_ERROR_INVALID_STATE).
  *

@@ -239,8 +239,11 @@ struct MotionUniforms {
     // previous projection x previous view rotation x translation by (camera - previous camera).
     float previous_view_projection[16];
     float previous_wind_phase[4]; // FrameUniforms::wind_phase at the previous time, at this camera
+    // x: this frame's time minus the previous time (s): the interaction map's trails were that
+    // much younger then (interaction.glsl); yzw: 0.
+    float times[4];
 };
-static_assert(sizeof(MotionUniforms) == 144, "std140 GrassMotion block");
+static_assert(sizeof(MotionUniforms) == 160, "std140 GrassMotion block");
 
 // std140 uniform block `GrassLights` (host_lights.glsl; GL binding 4): a view's host lights
 // (grass_view_lights_desc), only in such a view's upload.

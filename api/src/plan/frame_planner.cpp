@@ -692,7 +692,7 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
         }
     }
     plan_shadow_receive(view, ext, camera, &plan);
-    plan_motion(view, ext, camera, dynamics.wind ? &in.dynamics.wind : nullptr, dynamics.map_up, &plan);
+    plan_motion(view, ext, camera, in.time, dynamics.wind ? &in.dynamics.wind : nullptr, dynamics.map_up, &plan);
     plan_lights(ext, camera, &plan);
     plan.stats.draws = plan.draws.size();
     plan.stats.plan_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

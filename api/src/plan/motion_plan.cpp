@@ -34,7 +34,7 @@ void unjittered_view_projection(const float view[16], const float projection[16]
 
 } // namespace
 
-void plan_motion(const grass_view_desc& view, const ViewExtensions& ext, const double camera[3],
+void plan_motion(const grass_view_desc& view, const ViewExtensions& ext, const double camera[3], double time,
                  const grass_wind_desc* wind, const double up[3], FramePlan* plan) {
     plan->motion = ext.motion != nullptr && !plan->depth_pass;
     plan->velocity_attachment = plan->motion ? ext.motion->velocity_attachment : 0u;
@@ -53,6 +53,7 @@ void plan_motion(const grass_view_desc& view, const ViewExtensions& ext, const d
         pack_wind(*wind, camera, d.previous_time, up, &previous);
         for (int k = 0; k < 4; ++k) u.previous_wind_phase[k] = previous.wind_phase[k];
     }
+    u.times[0] = static_cast<float>(time - d.previous_time);
     for (TierDraw& draw : plan->draws) {
         draw.features |= kFeatureMotion;
         draw.uniforms.tiling[3] = draw.features;

@@ -14,8 +14,9 @@ namespace grass {
 // view's and the previous frame's view-projections without their jitter, both taking this
 // view's camera-relative positions (the previous one made so in double), and the wind's gust
 // phases at the previous time (`wind`: the context's wind, nullptr when none blows; `up`: the
-// interaction map's up, as pack_wind takes it).
-void plan_motion(const grass_view_desc& view, const ViewExtensions& ext, const double camera[3],
+// interaction map's up, as pack_wind takes it) and how long before the frame's `time` that
+// was (the trails' age then).
+void plan_motion(const grass_view_desc& view, const ViewExtensions& ext, const double camera[3], double time,
                  const grass_wind_desc* wind, const double up[3], FramePlan* plan);
 
 } // namespace grass
