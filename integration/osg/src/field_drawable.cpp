@@ -2,6 +2,7 @@
 
 #include "gl_field.hpp"
 #include "osg_view.hpp"
+#include "vdsm_link.hpp"
 
 #include <grass/grass_gl.h>
 
@@ -94,11 +95,24 @@ FieldDrawable::FieldDrawable(const FieldDesc& desc) : desc_(desc) {
 
 FieldDrawable::FieldDrawable(const FieldDrawable& other, const osg::CopyOp& copyop)
     : osg::Drawable(other, copyop), desc_(other.desc_), flags_(other.flags_), encoding_(other.encoding_),
-      lights_(other.lights_), height_min_(other.height_min_), height_max_(other.height_max_) {
+      lights_(other.lights_), vdsm_(nullptr), height_min_(other.height_min_), height_max_(other.height_max_) {
     std::copy(other.patch_min_, other.patch_min_ + 3, patch_min_);
     std::copy(other.patch_max_, other.patch_max_ + 3, patch_max_);
     setUp();
+    // The link notes its own drawable's cameras: a copy gets one of its own.
+    if (other.vdsm_) {
+        if (getCullCallback() == other.vdsm_.get()) setCullCallback(nullptr);
+        setShadowedScene(other.getShadowedScene());
+    }
 }
+
+void FieldDrawable::setShadowedScene(osgShadow::ShadowedScene* scene) {
+    if (vdsm_ && getCullCallback() == vdsm_.get()) setCullCallback(nullptr);
+    vdsm_ = scene ? new VdsmLink(scene) : nullptr;
+    if (vdsm_) setCullCallback(vdsm_.get());
+}
+
+osgShadow::ShadowedScene* FieldDrawable::getShadowedScene() const { return vdsm_ ? vdsm_->scene() : nullptr; }
 
 void FieldDrawable::setUp() {
     // grass draws every frame with the camera of that draw: never a display list.
@@ -172,6 +186,47 @@ void FieldDrawable::drawImplementation(osg::RenderInfo& renderInfo) const {
     view.flags = flags_ & ~uint32_t(GRASS_VIEW_FLAG_ENCODE_SRGB);
     if (encoding_ == OutputEncoding::EncodeSrgb || (encoding_ == OutputEncoding::Automatic && !target_encodes_srgb())) {
         view.flags |= GRASS_VIEW_FLAG_ENCODE_SRGB;
+    }
+    // VDSM's shadows: its shadow camera's draw is a depth pass, the main camera's receives.
+    grass_view_pass_desc pass = grass_default_view_pass_desc();
+    grass_lod_origin_desc lod = grass_default_lod_origin_desc();
+    grass_shadow_receive_desc receive = grass_default_shadow_receive_desc();
+    if (vdsm_) {
+        const DrawShadows shadows = vdsm_->forDraw(renderInfo);
+        if (!shadows.error.empty()) fail(shadows.error);
+        if (shadows.kind == DrawShadows::Kind::Cast) {
+            const osg::Matrixd& p = state.getProjectionMatrix();
+            if (p(0, 3) != 0.0 || p(1, 3) != 0.0 || p(2, 3) != 0.0) {
+                // Light-space perspective maps (VDSM's default hint) draw grass's depth in
+                // wrong bands: grass casts into orthographic maps only.
+                return fail("grass_osg: the ViewDependentShadowMap draws a perspective shadow map (ShadowSettings' "
+                            "shadow map projection hint PERSPECTIVE_SHADOW_MAP, its default, or a spot light): grass "
+                            "casts only into orthographic ones (setShadowMapProjectionHint(ORTHOGRAPHIC_SHADOW_MAP)) "
+                            "and is left out of this map");
+            }
+            pass.pass = GRASS_PASS_DEPTH;
+            // VDSM's own casters' polygon offset (factor 1.1, units 4).
+            pass.depth_bias_slope = 1.1f;
+            pass.depth_bias_constant = 4.0f;
+            pass.next = &lod;
+            for (int c = 0; c < 3; ++c) lod.position[c] = shadows.lod_origin[c];
+            view.flags = 0; // a depth pass takes no debug view flags and writes no colour
+            view.next = &pass;
+        } else if (shadows.kind == DrawShadows::Kind::Receive) {
+            osg::Texture::TextureObject* map = shadows.map->getTextureObject(state.getContextID());
+            const uint32_t array = map ? field->shadowMapCopy().copy(map->id(), &error) : 0;
+            if (!error.empty()) fail(error);
+            if (array) {
+                receive.shadow_map = array;
+                // grass's own depth in the map is its blades' tops: a point is moved about
+                // the blades' height towards the light, or the field shades itself as a slab
+                // (docs/integration.md, "Shadows: grass in the host's shadow maps", Bias).
+                const double blades = std::max(0.0, double(patch_max_[1]) * desc_.field.cell_size);
+                if (shadows.depth_range > 0.0) receive.depth_bias = float(std::min(1.0, blades / shadows.depth_range));
+                for (int k = 0; k < 16; ++k) receive.world_to_shadow[0][k] = float(shadows.world_to_shadow.ptr()[k]);
+                view.next = &receive;
+            }
+        }
     }
     // One grass frame per draw: each camera plans with its own frustum. grass restores every
     // piece of GL state it sets (grass_gl.h), so OSG's state cache stays true.

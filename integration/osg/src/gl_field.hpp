@@ -5,6 +5,8 @@
 
 #include <grass_osg/field_drawable.hpp>
 
+#include "shadow_map_copy.hpp"
+
 #include <osg/GLObjects>
 
 namespace grass_osg {
@@ -20,12 +22,15 @@ public:
     GlField& operator=(const GlField&) = delete;
 
     grass_context* context() const { return context_; }
+    // The copy of OSG's shadow map this context's views receive (made at the first).
+    ShadowMapCopy& shadowMapCopy() { return shadow_map_copy_; }
 
     static int live();
 
 private:
     GlField() = default;
     grass_context* context_ = nullptr;
+    ShadowMapCopy shadow_map_copy_;
 };
 
 // OSG's deletion queue for the grass contexts of one OSG context: OSG calls it with that GL

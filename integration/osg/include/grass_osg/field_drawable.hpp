@@ -27,7 +27,13 @@
 #include <string>
 #include <vector>
 
+namespace osgShadow {
+class ShadowedScene;
+}
+
 namespace grass_osg {
+
+class VdsmLink;
 
 // An optional terrain under the field: grass_map_stack.height as 32-bit floats 0..1, row 0
 // first (rows along the field's +z, texels along +x), times `scale` metres.
@@ -98,6 +104,19 @@ public:
     void setLights(const Lights& lights) { lights_ = lights; }
     const Lights& getLights() const { return lights_; }
 
+    // Shadows under osgShadow::ViewDependentShadowMap (docs/integration.md, "OSG's shadows"):
+    // give the ShadowedScene the drawable is in (a descendant of it, with the technique set)
+    // and grass casts into VDSM's map (a depth pass drawn when VDSM's shadow camera draws
+    // the drawable, choosing its blades as the main camera does) and receives it (OSG's
+    // map copied into a depth array of the adapter's, read with its matrix). The drawable's
+    // node mask decides, as for OSG's models, whether VDSM's cameras draw it
+    // (ShadowSettings' casts mask). Lights::sun_direction should point at VDSM's light.
+    // It sets the drawable's cull callback (nullptr takes it off): an application's own cull
+    // callback on the drawable would replace it. nullptr (the default): no shadows, and
+    // every draw is as before.
+    void setShadowedScene(osgShadow::ShadowedScene* scene);
+    osgShadow::ShadowedScene* getShadowedScene() const;
+
     // The field's box in local coordinates: every cell, the blades' reach past their cells
     // and their height, and the terrain's lowest and highest displacement. OSG culls, sorts
     // and fits its near and far planes with it.
@@ -137,6 +156,7 @@ private:
     uint32_t flags_ = 0;
     OutputEncoding encoding_ = OutputEncoding::Automatic;
     Lights lights_;
+    osg::ref_ptr<VdsmLink> vdsm_;                               // the cull callback while a ShadowedScene is set
     float patch_min_[3] = {0, 0, 0}, patch_max_[3] = {1, 1, 1}; // the patch's bounds in patch units
     float height_min_ = 0.0f, height_max_ = 0.0f;               // terrain, metres
 
