@@ -5,8 +5,8 @@
 // nothing of it and its preprocessed text is what it was. The tiers include it after
 // blade_interface.glsl and before lighting.glsl, whose ambient terms read host_ambient();
 // they add host_lights_blade() or host_lights_lobes() to their lit colour.
-#ifdef VULKAN
-#error "the Vulkan backend does not light grass with the host's lights yet (the core refuses such a view)"
+#if defined(VULKAN) && defined(GRASS_MULTIVIEW)
+#error "a stereo (multiview) view is not lit by the host's lights (the core refuses such a view)"
 #endif
 
 #define GRASS_HOST_LIGHTS_BLOCK 1 // lighting.glsl's ambient terms read host_ambient()
@@ -22,12 +22,26 @@ struct GrassLight {
     vec4 color_range;   // rgb: colour x intensity; w: range (m)
     vec4 cone;          // x: cos(inner angle), y: cos(outer angle) of a spot
 };
-// The GrassLights block (api/src/foundation/frame_plan.hpp LightUniforms), GL binding 4.
-layout(std140, binding = 4) uniform GrassLights {
+struct GrassLightsData {
     vec4 counts;         // x: lights, y: specular strength, z: specular exponent, w: 1 = ambient harmonics
     vec4 ambient_sh[9];  // rgb per coefficient (grass.h's order)
     GrassLight light[8];
-} grass_lights;
+};
+// The GrassLights block (api/src/foundation/frame_plan.hpp LightUniforms): GL binding 4;
+// Vulkan set 1 (the view extras' blocks, backend_vk/src/vk_view_extras.hpp), binding 2. The
+// block holds its struct as the one element of an array read at the Frame block's index
+// (blade_interface.glsl says why: lavapipe would compile the shader again on every draw for
+// the light count read at a constant offset).
+#ifdef VULKAN
+layout(std140, set = 1, binding = 2) uniform GrassLights { GrassLightsData lights_at[1]; };
+#else
+layout(std140, binding = 4) uniform GrassLights { GrassLightsData lights_at[1]; };
+#endif
+#ifdef GRASS_INDEXED_BLOCKS
+#define grass_lights lights_at[grass_push.block_index]
+#else
+#define grass_lights lights_at[0]
+#endif
 
 // The ambient light at the world normal `n` (unit): the harmonics where the host gave them,
 // else the view's ambient colour.

@@ -208,7 +208,7 @@ private:
     VkPipelineCache cache_ = VK_NULL_HANDLE;     // the host's (grass_vk_host_objects_desc.pipeline_cache) or own_cache_
     VkPipelineCache own_cache_ = VK_NULL_HANDLE; // grass's own, when the host gave none
     BladePipeline pipeline_;
-    ViewExtrasSets extras_; // views that receive shadows or write motion vectors: set 1 per view slot
+    ViewExtrasSets extras_; // views that receive shadows, write motion vectors or are lit: set 1 per view slot
     FrameRing ring_;
     UploadBatch batch_;
     Vector<PatchGpu> patches_;

@@ -132,13 +132,13 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
     const bool depth_pass = (variant.features & kFeatureDepthPass) != 0;
     const uint32_t extras = variant.features & kViewExtras;
     if (extras) {
-        // The core refuses a receiving or motion stereo view and a motion view without the
-        // host's velocity target, and gives a depth pass and a debug view neither.
+        // The core refuses a receiving, motion or lit stereo view and a motion view without
+        // the host's velocity target, and gives a depth pass and a debug view none of them.
         const bool motion = (extras & kFeatureMotion) != 0;
         if (depth_pass || target_.view_mask != 0 || variant.program >= kExtrasPipelineKinds ||
             (motion && velocity_target_.velocity_attachment == 0)) {
-            *what = "a pipeline that receives the host's shadows or writes motion vectors (a depth pass, stereo, a "
-                    "debug view, or motion without a grass_vk_velocity_target_desc)";
+            *what = "a pipeline that receives the host's shadows, writes motion vectors or is lit by the host's "
+                    "lights (a depth pass, stereo, a debug view, or motion without a grass_vk_velocity_target_desc)";
             return false;
         }
     } else if (depth_pass) {
@@ -163,6 +163,7 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
     modules.depth_target = depth_pass; // no colour output: the depth-only target has no attachment for it
     modules.host_shadows = (extras & kFeatureShadowReceive) != 0; // the map and its block in set 1
     modules.velocity = (extras & kFeatureMotion) != 0;            // the GrassMotion block in set 1
+    modules.host_lights = (extras & kFeatureHostLights) != 0;     // the GrassLights block in set 1
     const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(modules)
                                 : variant.program == kShaderVolume ? SlicePipelines::volume_shape(modules)
                                 : variant.program == kShaderImage  ? SlicePipelines::image_shape(modules)

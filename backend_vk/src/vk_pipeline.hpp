@@ -169,8 +169,9 @@ public:
     // Only grass_prepare_pipelines with the debug views and a frame that turns the depth
     // test off ask for the latter. A variant with kFeatureDepthPass (depth-tested, not a
     // debug view) is made against the depth target, in the depth table (made by the first:
-    // may throw std::bad_alloc); one with kFeatureShadowReceive or kFeatureMotion (or both) by
-    // extras() (mono only; motion against the velocity target).
+    // may throw std::bad_alloc); one with kFeatureShadowReceive, kFeatureMotion or
+    // kFeatureHostLights (any of them together) by extras() (mono only; motion against the
+    // velocity target).
     // On failure it does not exist.
     bool create_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure, const char** what);
     // The depth-tested pipelines of every kind for `features` (a field's maps: upload_field).
@@ -184,8 +185,8 @@ public:
 
     VkDescriptorSetLayout set_layout() const { return set_layout_; }
     VkPipelineLayout layout() const { return layout_; }
-    // The pipelines, samplers and layout of views that receive shadows or write motion vectors
-    // (set 1: the view extras, vk_view_extras.hpp).
+    // The pipelines, samplers and layout of views that receive shadows, write motion vectors
+    // or are lit by the host's lights (set 1: the view extras, vk_view_extras.hpp).
     const ViewExtrasPipelines& extras() const { return extras_; }
     // The pipeline of `kind` for `features` (has_variant(features, depth_test)).
     VkPipeline pipeline(PipelineKind kind, uint32_t features, bool depth_test) const {
@@ -222,7 +223,7 @@ private:
     PipelineTarget depth_target_;
     Vector<VkPipeline> depth_pipelines_;
     PipelineTarget velocity_target_; // velocity_attachment 0: the host gave no velocity target
-    ViewExtrasPipelines extras_;     // empty until the first receiving or motion view
+    ViewExtrasPipelines extras_;     // empty until the first view with extras
 };
 
 } // namespace grass::vk

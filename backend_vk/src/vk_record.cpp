@@ -270,10 +270,11 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
         if (!debug_view && own_set(d)) own_sets += 1;
     }
     if (draw_count == 0) return GRASS_SUCCESS;
-    // A view that receives shadows or writes motion vectors (its draws' pipelines made above):
-    // this view's GrassShadow and GrassMotion blocks, as it uses them, in set 1 of the view
-    // extras' layout, and a receiving view's map in set 2.
-    const bool extras = (plan.shadow_receive || plan.motion) && !debug_view;
+    // A view that receives shadows, writes motion vectors or is lit by the host's lights (its
+    // draws' pipelines made above): this view's GrassShadow, GrassMotion and GrassLights
+    // blocks, as it uses them, in set 1 of the view extras' layout, and a receiving view's map
+    // in set 2.
+    const bool extras = (plan.shadow_receive || plan.motion || plan.host_lights) && !debug_view;
     if (extras) {
         VkFailure failure;
         const char* what = "";

@@ -13,13 +13,16 @@
 // - velocity: blade.vert and the same fragment shaders with GRASS_VELOCITY, for a view that
 //   writes motion vectors (grass_view_motion_desc; the GrassMotion block in set 1), alone or
 //   with host shadows (set 1 is one layout for both, vk_view_extras.hpp);
+// - host lights: the fragment shaders with GRASS_HOST_LIGHTS, for a view lit by the host's
+//   lights (grass_view_lights_desc; the GrassLights block in set 1), alone or with either or
+//   both of the above;
 // - responsive: GRASS_RESPONSIVE, for the pipelines of kBladeCurveFeatures (blade.vert,
 //   volume.frag and image.frag have it);
 // - indexed blocks: GRASS_INDEXED_BLOCKS, the Frame and Field blocks read at an index from a
 //   push constant (always 0) instead of the literal 0; the pipeline layout then has a 4-byte
 //   push-constant range, which vk_record sets to 0.
-// Multiview never combines with depth target, host shadows or velocity (those are mono),
-// nor depth target with either of a view's extras: those combinations are not compiled.
+// Multiview never combines with depth target, host shadows, velocity or host lights (those
+// are mono), nor depth target with any of a view's extras: those combinations are not compiled.
 //
 // Why indexed blocks: lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3) specialises a
 // shader whose branches or loop bounds read uniform-buffer values at constant offsets on
@@ -50,6 +53,7 @@ enum SpirvFeature : uint32_t {
     kSpirvVelocity = 1u << 3,      // GRASS_VELOCITY
     kSpirvResponsive = 1u << 4,    // GRASS_RESPONSIVE
     kSpirvIndexedBlocks = 1u << 5, // GRASS_INDEXED_BLOCKS
+    kSpirvHostLights = 1u << 6,    // GRASS_HOST_LIGHTS
 };
 
 struct Spirv {
@@ -65,10 +69,12 @@ struct SpirvVariant {
     bool depth_target = false;   // GRASS_DEPTH_TARGET: a depth pass's fragment shaders. Mono only.
     bool host_shadows = false;   // GRASS_HOST_SHADOWS: a receiving view's fragment shaders. Mono only.
     bool velocity = false;       // GRASS_VELOCITY: a motion view's blade.vert and fragment shaders. Mono only.
+    bool host_lights = false;    // GRASS_HOST_LIGHTS: a lit view's fragment shaders. Mono only.
     uint32_t features() const {
         return (multiview ? kSpirvMultiview : 0u) | (depth_target ? kSpirvDepthTarget : 0u) |
                (host_shadows ? kSpirvHostShadows : 0u) | (velocity ? kSpirvVelocity : 0u) |
-               (responsive ? kSpirvResponsive : 0u) | (indexed_blocks ? kSpirvIndexedBlocks : 0u);
+               (responsive ? kSpirvResponsive : 0u) | (indexed_blocks ? kSpirvIndexedBlocks : 0u) |
+               (host_lights ? kSpirvHostLights : 0u);
     }
 };
 

@@ -8,12 +8,18 @@ namespace grass::vk {
 namespace {
 // The velocity output's location as motion.glsl compiles it.
 constexpr uint32_t kCompiledVelocityLocation = 1;
-// The pipelines' names, [combination: receive, motion, both][kind].
+// The pipelines' names, [combination (ViewExtrasPipelines::combination)][kind].
 const char* const kNames[kExtrasCombinations][kExtrasPipelineKinds] = {
     {"the blade receiving pipelines", "the volume tier receiving pipelines", "the image tier receiving pipelines"},
     {"the blade motion pipelines", "the volume tier motion pipelines", "the image tier motion pipelines"},
     {"the blade receiving motion pipelines", "the volume tier receiving motion pipelines",
      "the image tier receiving motion pipelines"},
+    {"the blade lit pipelines", "the volume tier lit pipelines", "the image tier lit pipelines"},
+    {"the blade lit receiving pipelines", "the volume tier lit receiving pipelines",
+     "the image tier lit receiving pipelines"},
+    {"the blade lit motion pipelines", "the volume tier lit motion pipelines", "the image tier lit motion pipelines"},
+    {"the blade lit receiving motion pipelines", "the volume tier lit receiving motion pipelines",
+     "the image tier lit receiving motion pipelines"},
 };
 } // namespace
 
@@ -48,11 +54,11 @@ bool ViewExtrasPipelines::create_variant(const PipelineTarget& target, VkDescrip
     if (has_variant(variant, depth_test)) return true;
     const bool receive = (variant.features & kFeatureShadowReceive) != 0;
     const bool motion = (variant.features & kFeatureMotion) != 0;
-    if ((!receive && !motion) || variant.program >= kExtrasPipelineKinds ||
+    if ((variant.features & kViewExtras) == 0 || variant.program >= kExtrasPipelineKinds ||
         (variant.features & ~kViewExtras) >= kExtrasColourMasks || (motion && target.velocity_attachment == 0) ||
         shape.vertex_code == nullptr || shape.fragment_code == nullptr) {
-        *what = "a pipeline that receives the host's shadows or writes motion vectors (no such variant, or no "
-                "grass_vk_velocity_target_desc)";
+        *what = "a pipeline that receives the host's shadows, writes motion vectors or is lit by the host's lights "
+                "(no such variant, or no grass_vk_velocity_target_desc)";
         return false;
     }
     if (layout_ == VK_NULL_HANDLE && !create_layouts(target, blade_set, failure, what)) {
@@ -110,6 +116,7 @@ bool ViewExtrasPipelines::create_layouts(const PipelineTarget& target, VkDescrip
         {kBindingMotionBlock, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
          VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {kBindingShadowBlock, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {kBindingLightsBlock, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     };
     const VkDescriptorSetLayoutBinding map{kBindingShadowMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                            VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};

@@ -1,13 +1,15 @@
 // The pipelines of views with extras: those that receive the host's shadow maps
 // (grass_shadow_receive_desc, kFeatureShadowReceive), those that write motion vectors
-// (grass_view_motion_desc, kFeatureMotion), and those that do both (the main view of a host
-// with shadows and temporal anti-aliasing). Blades, volume and image, per colour feature mask,
-// with the depth test and without, their modules the GRASS_HOST_SHADOWS and GRASS_VELOCITY
-// variants (vk_spirv.hpp). One pipeline layout serves them all: the blade layout's set 0 and
-// push constants plus
+// (grass_view_motion_desc, kFeatureMotion), those lit by the host's lights
+// (grass_view_lights_desc, kFeatureHostLights), and those with several of them (the main view
+// of a host with shadows, lights and temporal anti-aliasing has all three). Blades, volume and
+// image, per colour feature mask, with the depth test and without, their modules the
+// GRASS_HOST_SHADOWS, GRASS_VELOCITY and GRASS_HOST_LIGHTS variants (vk_spirv.hpp). One
+// pipeline layout serves them all: the blade layout's set 0 and push constants plus
 // - set 1, the view's blocks: binding 0 the GrassMotion block (a uniform buffer, vertex and
 //   fragment; motion.glsl), binding 1 the GrassShadow block (a uniform buffer, fragment
-//   stage; host_shadows.glsl);
+//   stage; host_shadows.glsl), binding 2 the GrassLights block (a uniform buffer, fragment
+//   stage; host_lights.glsl);
 // - set 2, the host's map (binding 0: a combined image sampler with a depth-compare sampler),
 //   bound by receiving views alone (a motion view has no map to write, and lavapipe, Mesa
 //   22.3, crashed executing the draws of motion views whose set 1 held the map unwritten,
@@ -21,9 +23,9 @@
 // 0 the lit colour, the velocity attachment .rg unblended, every other write mask 0; their
 // fragment module's velocity output (location 1 as compiled) is moved to the velocity
 // attachment's index before the module is made (relocate_output).
-// Everything is made lazily: the layouts on the first view with either extra, the samplers
-// on the first receiving view, each combination's table (receive, motion, both) on its first
-// view: a context whose views use neither holds nothing of it. BladePipeline owns one.
+// Everything is made lazily: the layouts on the first view with any extra, the samplers on
+// the first receiving view, each combination's table (any non-empty set of the three) on its
+// first view: a context whose views use none holds nothing of it. BladePipeline owns one.
 #pragma once
 
 #include "foundation/allocator.hpp"
@@ -41,16 +43,21 @@ struct PipelineTarget; // vk_pipeline.hpp, which includes this header
 struct PipelineShape;
 
 // The feature bits of a view's extras.
-constexpr uint32_t kViewExtras = kFeatureShadowReceive | kFeatureMotion;
+constexpr uint32_t kViewExtras = kFeatureShadowReceive | kFeatureMotion | kFeatureHostLights;
 // Sets 1 and 2 of the extras' pipeline layout (host_shadows.glsl and motion.glsl under VULKAN).
 constexpr uint32_t kExtrasSet = 1;
-enum ExtrasBinding : uint32_t { kBindingMotionBlock = 0, kBindingShadowBlock = 1, kExtrasBindingCount = 2 };
+enum ExtrasBinding : uint32_t {
+    kBindingMotionBlock = 0,
+    kBindingShadowBlock = 1,
+    kBindingLightsBlock = 2,
+    kExtrasBindingCount = 3
+};
 constexpr uint32_t kShadowMapSet = 2;
 constexpr uint32_t kBindingShadowMap = 0;
 static_assert(kShadowMapSet == kExtrasSet + 1, "a receiving view binds both at once (vk_record.cpp)");
 constexpr uint32_t kExtrasPipelineKinds = 3;               // blades, volume, image: a debug view has no extras
 constexpr uint32_t kExtrasColourMasks = kFeatureDepthPass; // the colour feature masks (kColourFeatureMasks)
-constexpr uint32_t kExtrasCombinations = 3;                // receive, motion, both
+constexpr uint32_t kExtrasCombinations = 7;                // the non-empty sets of receive, motion, lights
 
 // `code` (SPIR-V of a fragment shader, `words` long) with the Location decoration of its
 // Output variable at location `from` set to `to`. False when it has no such output.
@@ -61,13 +68,18 @@ public:
     ViewExtrasPipelines(const Functions& functions, VkDevice device, HostAllocator* host)
         : fn_(functions), device_(device), host_(host), pipelines_{Vector<VkPipeline>(StlAllocator<VkPipeline>(host)),
                                                                    Vector<VkPipeline>(StlAllocator<VkPipeline>(host)),
+                                                                   Vector<VkPipeline>(StlAllocator<VkPipeline>(host)),
+                                                                   Vector<VkPipeline>(StlAllocator<VkPipeline>(host)),
+                                                                   Vector<VkPipeline>(StlAllocator<VkPipeline>(host)),
+                                                                   Vector<VkPipeline>(StlAllocator<VkPipeline>(host)),
                                                                    Vector<VkPipeline>(StlAllocator<VkPipeline>(host))} {
     }
     ~ViewExtrasPipelines() { destroy(); }
     ViewExtrasPipelines(const ViewExtrasPipelines&) = delete;
     ViewExtrasPipelines& operator=(const ViewExtrasPipelines&) = delete;
 
-    // Makes the pipeline of `variant` (with kFeatureShadowReceive, kFeatureMotion or both;
+    // Makes the pipeline of `variant` (with any of kFeatureShadowReceive, kFeatureMotion and
+    // kFeatureHostLights;
     // blades, volume or image) from `shape` (its modules of those features) against `target`
     // (with motion: the velocity target), with the depth test or without it, unless it
     // exists; the layouts, the samplers (receiving) and the combination's table first, on
@@ -100,9 +112,10 @@ private:
                         const char** what);
     bool create_samplers(VkFailure* failure, const char** what);
     // The combination's table: [colour features][kind][0 = depth tested, 1 = depth off]
-    // (receive: 0, motion: 1, both: 2), or nullptr outside the tables.
+    // (the extras' bits above bit 11, less one: receive 0, motion 1, both 2, lights 3, ...).
     static uint32_t combination(uint32_t features) { return ((features & kViewExtras) >> 11) - 1; }
-    static_assert(kFeatureShadowReceive == 1u << 11 && kFeatureMotion == 1u << 12, "combination()");
+    static_assert(kFeatureShadowReceive == 1u << 11 && kFeatureMotion == 1u << 12 && kFeatureHostLights == 1u << 13,
+                  "combination()");
     const VkPipeline* slot(uint32_t kind, uint32_t features, bool depth_test) const {
         const uint32_t colour = features & ~kViewExtras;
         if ((features & kViewExtras) == 0 || kind >= kExtrasPipelineKinds || colour >= kExtrasColourMasks)

@@ -51,7 +51,7 @@ bool ViewExtrasSets::write(uint32_t slot, uint64_t frame, const FramePlan& plan,
     Slot& s = slots_[slot];
     if (s.written == frame && s.set != VK_NULL_HANDLE) return true; // this frame's plan is in it already
     if (pool_ == VK_NULL_HANDLE) {
-        const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2 * kMaxViewSlots},
+        const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kExtrasBindingCount * kMaxViewSlots},
                                                {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kMaxViewSlots}};
         VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
         info.maxSets = 2 * kMaxViewSlots;
@@ -65,12 +65,19 @@ bool ViewExtrasSets::write(uint32_t slot, uint64_t frame, const FramePlan& plan,
         }
         name_object(fn_, device_, VK_OBJECT_TYPE_DESCRIPTOR_POOL, pool_, *what);
     }
-    if (plan.shadow_receive &&
-        !create_block(&s.shadow, sizeof(ShadowUniforms), "grass host shadow block", failure, what)) {
-        return false;
+    // Each binding's block: whether the view uses it, its bytes and its name.
+    const bool used[kExtrasBindingCount] = {plan.motion, plan.shadow_receive, plan.host_lights};
+    const void* const data[kExtrasBindingCount] = {&plan.motion_uniforms, &plan.shadow, &plan.lights};
+    const VkDeviceSize bytes[kExtrasBindingCount] = {sizeof(MotionUniforms), sizeof(ShadowUniforms),
+                                                     sizeof(LightUniforms)};
+    const char* const names[kExtrasBindingCount] = {"grass motion block", "grass host shadow block",
+                                                    "grass host lights block"};
+    const char* const writing[kExtrasBindingCount] = {"the GrassMotion block of a motion view",
+                                                      "the GrassShadow block of a receiving view",
+                                                      "the GrassLights block of a lit view"};
+    for (uint32_t b = 0; b < kExtrasBindingCount; ++b) {
+        if (used[b] && !create_block(&s.blocks[b], bytes[b], names[b], failure, what)) return false;
     }
-    if (plan.motion && !create_block(&s.motion, sizeof(MotionUniforms), "grass motion block", failure, what))
-        return false;
     if (!allocate(pipelines.set_layout(), &s.set, "the view extras descriptor set of a view", failure, what))
         return false;
     if (plan.shadow_receive && !allocate(pipelines.map_set_layout(), &s.map_set,
@@ -78,29 +85,28 @@ bool ViewExtrasSets::write(uint32_t slot, uint64_t frame, const FramePlan& plan,
         return false;
     }
 
-    if (plan.shadow_receive) {
-        *what = "the GrassShadow block of a receiving view";
-        std::memcpy(s.shadow.mapped, &plan.shadow, sizeof(ShadowUniforms));
-        if (!memory_.flush(s.shadow, 0, sizeof(ShadowUniforms), failure)) return false;
-    }
-    if (plan.motion) {
-        *what = "the GrassMotion block of a motion view";
-        std::memcpy(s.motion.mapped, &plan.motion_uniforms, sizeof(MotionUniforms));
-        if (!memory_.flush(s.motion, 0, sizeof(MotionUniforms), failure)) return false;
-    }
-    // Both bindings of set 1, always, so that no set grass binds holds a descriptor left
+    // Every binding of set 1, always, so that no set grass binds holds a descriptor left
     // unwritten (lavapipe, Mesa 22.3, crashed on a set whose unused map binding was: see
-    // vk_view_extras.hpp). The block the view's pipelines do not use points at the other
-    // (its range within that buffer; never read).
-    const Buffer& shadow = plan.shadow_receive ? s.shadow : s.motion;
-    const Buffer& motion = plan.motion ? s.motion : s.shadow;
-    const VkDescriptorBufferInfo shadow_block{shadow.buffer, 0,
-                                              plan.shadow_receive ? sizeof(ShadowUniforms) : sizeof(MotionUniforms)};
-    const VkDescriptorBufferInfo motion_block{motion.buffer, 0, sizeof(MotionUniforms)};
-    static_assert(sizeof(MotionUniforms) <= sizeof(ShadowUniforms), "the stand-in's range");
-    VkWriteDescriptorSet writes[kExtrasBindingCount + 1] = {
-        write_of(s.set, kBindingMotionBlock, &motion_block, nullptr),
-        write_of(s.set, kBindingShadowBlock, &shadow_block, nullptr)};
+    // vk_view_extras.hpp). A block the view's pipelines do not use points at one it uses
+    // (that block's range; never read).
+    uint32_t stand_in = 0;
+    while (stand_in < kExtrasBindingCount && !used[stand_in]) ++stand_in;
+    if (stand_in == kExtrasBindingCount) {
+        *what = "the view extras descriptor set of a view without extras";
+        return false;
+    }
+    VkDescriptorBufferInfo infos[kExtrasBindingCount];
+    VkWriteDescriptorSet writes[kExtrasBindingCount + 1];
+    for (uint32_t b = 0; b < kExtrasBindingCount; ++b) {
+        if (used[b]) {
+            *what = writing[b];
+            std::memcpy(s.blocks[b].mapped, data[b], bytes[b]);
+            if (!memory_.flush(s.blocks[b], 0, bytes[b], failure)) return false;
+        }
+        const uint32_t from = used[b] ? b : stand_in;
+        infos[b] = VkDescriptorBufferInfo{s.blocks[from].buffer, 0, bytes[from]};
+        writes[b] = write_of(s.set, b, &infos[b], nullptr);
+    }
     uint32_t count = kExtrasBindingCount;
     // The host's view of its map, in the layout it said the map is in during the pass.
     VkDescriptorImageInfo map{};
@@ -117,8 +123,9 @@ bool ViewExtrasSets::write(uint32_t slot, uint64_t frame, const FramePlan& plan,
 
 void ViewExtrasSets::destroy() {
     for (Slot& s : slots_) {
-        if (s.shadow.buffer) memory_.destroy_buffer(&s.shadow);
-        if (s.motion.buffer) memory_.destroy_buffer(&s.motion);
+        for (Buffer& block : s.blocks) {
+            if (block.buffer) memory_.destroy_buffer(&block);
+        }
         s = Slot{};
     }
     if (pool_) fn_.vkDestroyDescriptorPool(device_, pool_, fn_.callbacks());

@@ -1,15 +1,16 @@
 // A view's extras as its draws bind them (sets 1 and 2 of ViewExtrasPipelines' layout): per
 // view slot (view_slot(), a view of a frame in flight) a descriptor set of the view's blocks
 // (set 1) and the small persistently mapped uniform buffers behind it: the GrassShadow block
-// (ShadowUniforms) of a view that receives the host's shadow maps and the GrassMotion block
-// (MotionUniforms) of a view that writes motion vectors; and for a receiving view a set of
-// the host's image view with the compare sampler of the host's convention (set 2). Both
-// bindings of set 1 are written (the block a view does not use points at the other, so no
-// bound set holds an unwritten descriptor); set 2 only by a receiving view, which alone binds it.
+// (ShadowUniforms) of a view that receives the host's shadow maps, the GrassMotion block
+// (MotionUniforms) of a view that writes motion vectors and the GrassLights block
+// (LightUniforms) of a view lit by the host's lights; and for a receiving view a set of the
+// host's image view with the compare sampler of the host's convention (set 2). Every binding
+// of set 1 is written (a block a view does not use points at one it uses, so no bound set
+// holds an unwritten descriptor); set 2 only by a receiving view, which alone binds it.
 // Each block and the map's set are made on their slot's first view with that feature, set 1
-// on the slot's first view with either, the pool on the first of all; written when the view
+// on the slot's first view with any, the pool on the first of all; written when the view
 // is recorded (the slot's previous frame has finished, so neither its buffers nor its sets
-// are in use), once a frame. A context whose views use neither holds none of it.
+// are in use), once a frame. A context whose views use none holds none of it.
 #pragma once
 
 #include "foundation/frame_plan.hpp"
@@ -32,7 +33,7 @@ public:
     ViewExtrasSets& operator=(const ViewExtrasSets&) = delete;
 
     // View slot `slot` of frame `frame` records `plan`, a view that receives shadows, writes
-    // motion vectors or both: its blocks and its set (pipelines.set_layout(): made) now hold
+    // motion vectors, is lit by the host's lights or several of these: its blocks and its set (pipelines.set_layout(): made) now hold
     // the plan's (a second record of the view in the same frame writes nothing). On failure
     // *what names what was being made.
     bool write(uint32_t slot, uint64_t frame, const FramePlan& plan, const ViewExtrasPipelines& pipelines,
@@ -45,8 +46,7 @@ public:
 
 private:
     struct Slot {
-        Buffer shadow;                            // the GrassShadow block
-        Buffer motion;                            // the GrassMotion block
+        Buffer blocks[kExtrasBindingCount];       // [ExtrasBinding]: GrassMotion, GrassShadow, GrassLights
         VkDescriptorSet set = VK_NULL_HANDLE;     // set 1: the blocks
         VkDescriptorSet map_set = VK_NULL_HANDLE; // set 2: the host's map
         uint64_t written = 0;                     // the frame whose plan the blocks and the set hold (0: none)

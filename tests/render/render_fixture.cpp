@@ -2,6 +2,7 @@
 
 #include "image_io.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -237,6 +238,17 @@ double mean_difference(const grass_host::Image& a, const grass_host::Image& b) {
         if (k % 4 != 3) sum += std::abs(int(a.rgba[k]) - int(b.rgba[k]));
     }
     return sum / double(a.rgba.size() / 4 * 3);
+}
+
+double share_apart(const grass_host::Image& a, const grass_host::Image& b, int levels) {
+    if (a.rgba.size() != b.rgba.size() || a.rgba.empty()) return 1.0;
+    size_t apart = 0;
+    for (size_t p = 0; p < a.rgba.size(); p += 4) {
+        int worst = 0;
+        for (size_t c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.rgba[p + c]) - int(b.rgba[p + c])));
+        apart += worst > levels;
+    }
+    return double(apart) / double(a.rgba.size() / 4);
 }
 
 grass_host::TargetDesc black_or_white_target(bool white) {

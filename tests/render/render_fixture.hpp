@@ -97,6 +97,10 @@ grass_host::Image render_default_scene(grass_backend backend, const grass_host::
 double grass_centroid_x(const grass_host::Image& image, const uint8_t sky[3]);
 // Mean absolute difference of the RGB channels, in 8-bit levels.
 double mean_difference(const grass_host::Image& a, const grass_host::Image& b);
+// Share of pixels whose largest RGB channel difference is over `levels` (1 when the sizes
+// differ): with mean_difference, BackendAgreement's single-sampled measure (0.05 levels, 0.05%
+// of pixels over 32).
+double share_apart(const grass_host::Image& a, const grass_host::Image& b, int levels);
 // Where a world point appears in an image of `width` x `height` rendered through
 // view(eye, target, fovy_degrees) (grass_host::make_view's camera): pixel coordinates, x to
 // the right and y down from the top-left corner (a pixel's centre at +0.5). False when the

@@ -260,6 +260,8 @@ protected:
         return render(v);
     }
 
+    void receive_and_move(const grass_view_lights_desc* lights); // Vulkan's view extras at once
+
     grass_backend backend_ = GRASS_BACKEND_NONE; // the host's (start_on)
     Gl gl{};
     GLuint map_ = 0;
@@ -533,18 +535,7 @@ TEST_P(ShadowReceiveTest, GlAndVulkanDrawTheSameReceivingPicture) {
     for (const float depth : lit.depth) grass += depth < 1.0f - 1e-6f;
     EXPECT_GT(grass, size_t(kSize) * kSize / 4) << "grass pixels";
     EXPECT_GT(mean_difference(lit, images[0]), 2.0) << "the map shadows the Vulkan picture";
-    double sum = 0.0;
-    size_t apart = 0;
-    for (size_t p = 0; p < size_t(kSize) * kSize; ++p) {
-        int worst = 0;
-        for (int c = 0; c < 3; ++c) {
-            const int d = std::abs(int(images[0].rgba[p * 4 + c]) - int(images[1].rgba[p * 4 + c]));
-            sum += d;
-            worst = std::max(worst, d);
-        }
-        apart += worst > 32;
-    }
-    const double mean = sum / (3.0 * kSize * kSize), share = double(apart) / (double(kSize) * kSize);
+    const double mean = mean_difference(images[0], images[1]), share = share_apart(images[0], images[1], 32);
     std::printf("[ measured ] receiving: mean |gl - vk| %.4f levels, %.4f%% of pixels > 32 apart\n", mean,
                 100.0 * share);
     EXPECT_LE(mean, 0.05);
@@ -597,14 +588,19 @@ TEST_P(ShadowReceiveTest, AVulkanViewWithoutItKeepsItsPipelines) {
 
 // The main view of a host with shadows and temporal anti-aliasing: a Vulkan view that receives
 // the host's shadow map and writes motion vectors at once (one set 1 of both blocks and the
-// map, its own pipelines) draws the receiving view's colour and the motion view's velocity.
-TEST_P(ShadowReceiveTest, AVulkanViewReceivesAndWritesMotionVectorsAtOnce) {
-    if (GetParam() != GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan's view extras";
+// map, its own pipelines) draws the receiving view's colour and the motion view's velocity;
+// with `lights` (the host's lights chained too: all three extras) the colour is that of the
+// view that receives and is lit, and the lights change it.
+void ShadowReceiveTest::receive_and_move(const grass_view_lights_desc* lights) {
     start_on(GRASS_BACKEND_VULKAN, 1, false, 2); // velocity at colour attachment 2
     make_tiered_field();
     make_map(1, [](int, double u, double) { return u < 0.5 ? 0.0f : 1.0f; });
-    const grass_host::Image lit = render(camera(nullptr));
+    const grass_view_desc unshadowed = camera(nullptr);
+    lod_origin_.next = lights;
+    const grass_host::Image lit = render(unshadowed); // lit by the sun (and the lights): nothing shadowed
     grass_shadow_receive_desc d = receive(GRASS_SHADOW_COMPARE_LESS_EQUAL, 1);
+    const grass_host::Image received_plain = render(camera(&d));
+    d.next = lights;
     const grass_host::Image received = render(camera(&d));
 
     // The previous frame's camera 0.3 m west and 0.2 m lower: every grass pixel moved.
@@ -617,25 +613,30 @@ TEST_P(ShadowReceiveTest, AVulkanViewReceivesAndWritesMotionVectorsAtOnce) {
     std::memcpy(m.previous_projection, before.projection, sizeof m.previous_projection);
     m.previous_time = before.time;
     m.velocity_attachment = 2;
-    // Both first: no earlier motion view's block can stand in for its own.
-    d.next = &m;
+    // All first: no earlier motion view's block can stand in for its own.
+    grass_view_lights_desc chained = lights ? *lights : grass_view_lights_desc{};
+    chained.next = &m;
+    d.next = lights ? static_cast<const void*>(&chained) : &m;
     const grass_host::Image both = render(camera(&d));
-    save(both, "shadow_receive_with_motion");
+    save(both, lights ? "lit_receiving_with_motion" : "shadow_receive_with_motion");
     grass_view_desc moving = camera(nullptr);
     lod_origin_.next = &m;
     const grass_host::Image moved = render(moving);
 
-    size_t grass = 0, shadowed = 0, moving_pixels = 0, colour_off = 0, velocity_off = 0;
+    size_t grass = 0, shadowed = 0, moving_pixels = 0, colour_off = 0, velocity_off = 0, lights_changed = 0;
     for (size_t i = 0; i < size_t(kSize) * kSize; ++i) {
         if (received.depth[i] >= 1.0f - 1e-6f) continue;
         ++grass;
-        int worst = 0, dark = 0;
+        int worst = 0, dark = 0, by_lights = 0;
         for (int c = 0; c < 3; ++c) {
             worst = std::max(worst, std::abs(int(both.rgba[4 * i + c]) - int(received.rgba[4 * i + c])));
             dark = std::max(dark, int(lit.rgba[4 * i + c]) - int(received.rgba[4 * i + c]));
+            by_lights =
+                std::max(by_lights, std::abs(int(received.rgba[4 * i + c]) - int(received_plain.rgba[4 * i + c])));
         }
         colour_off += worst > 1;
         shadowed += dark > 8;
+        lights_changed += by_lights > 6;
         const float* v = &moved.velocity[4 * i];
         const float* w = &both.velocity[4 * i];
         moving_pixels += std::fabs(v[0]) + std::fabs(v[1]) > 1e-3f;
@@ -643,10 +644,36 @@ TEST_P(ShadowReceiveTest, AVulkanViewReceivesAndWritesMotionVectorsAtOnce) {
     }
     EXPECT_GT(grass, size_t(kSize) * kSize / 4) << "grass pixels";
     EXPECT_GT(shadowed, grass / 5) << "pixels the map shadows";
+    if (lights) {
+        EXPECT_GT(lights_changed, grass / 5) << "pixels the lights change";
+    } else {
+        EXPECT_EQ(lights_changed, 0u);
+    }
     EXPECT_GT(moving_pixels, grass * 9 / 10) << "grass pixels with a velocity";
     EXPECT_EQ(colour_off, 0u) << "pixels whose colour is not the receiving view's (over 1 level)";
     EXPECT_EQ(velocity_off, 0u) << "pixels whose velocity is not the motion view's (over 1e-5)";
     EXPECT_EQ(both.depth, received.depth);
+    EXPECT_EQ(host->validation_messages(), 0u) << host->validation_log();
+}
+
+TEST_P(ShadowReceiveTest, AVulkanViewReceivesAndWritesMotionVectorsAtOnce) {
+    if (GetParam() != GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan's view extras";
+    receive_and_move(nullptr);
+}
+
+// All three of Vulkan's view extras in one view: receiving, motion vectors and the host's
+// lights (a point light over the field's middle and specular).
+TEST_P(ShadowReceiveTest, AVulkanViewIsLitReceivesAndWritesMotionVectorsAtOnce) {
+    if (GetParam() != GRASS_BACKEND_VULKAN) GTEST_SKIP() << "Vulkan's view extras";
+    grass_light point = grass_default_light();
+    const double above[3] = {6.0, 1.5, 6.0};
+    std::memcpy(point.position, above, sizeof above);
+    point.intensity = 8.0f;
+    grass_view_lights_desc lights = grass_default_view_lights_desc();
+    lights.light_count = 1;
+    lights.lights = &point;
+    lights.specular_strength = 0.3f;
+    receive_and_move(&lights);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, ShadowReceiveTest, ::testing::ValuesIn(enabled_backends()),

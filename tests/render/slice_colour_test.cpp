@@ -67,7 +67,7 @@ const Light kLights[] = {{"default", {0.0f, 0.0f, 0.0f}, true, kSunTermLimit, kI
                          {"side", {1.0f, 0.35f, 0.0f}, true, kSunTermLimit, 4.0},
                          {"facing", {0.0f, 0.6f, 1.0f}, true, 0.0, kImageColourLimit},
                          {"unlit", {0.0f, 1.0f, 0.0f}, false, 0.0, kImageColourLimit},
-                         // The host's lights (GL; Vulkan refuses them): a point light 2.5 m over the
+                         // The host's lights (both backends): a point light 2.5 m over the
                          // field's near edge, a spot from above aimed at the field's middle, a
                          // sky brighter above than below as harmonics, and Kajiya-Kay specular
                          // under a low sun ahead. Measured (GL), levels off the blades against a
@@ -82,11 +82,14 @@ const Light kLights[] = {{"default", {0.0f, 0.0f, 0.0f}, true, kSunTermLimit, kI
                          // one slice at half height reads the spot's cone edge, and under a high
                          // exponent the highlight of the blades bent furthest (the tail of their
                          // tangents), less well. Regression limits, not goals (issue 32: slices that
-                         // know the view and the light).
+                         // know the view and the light). Vulkan: the slices within 0.3 level of GL's
+                         // in the far and middle bands; specular's image far band 8.9 (GL 7.9): the
+                         // blades there 0.8 lighter than GL's (under a sun ahead the backends' blades
+                         // differ without the lights too: facing, near band, 2.8), hence 6, not 5.
                          {"point", {0.0f, 1.0f, 0.0f}, false, 5.5, 2.0, kPointLight},
                          {"spot", {0.0f, 1.0f, 0.0f}, false, 0.0, 4.5, kSpotLight},
                          {"harmonics", {0.0f, 1.0f, 0.0f}, false, 0.0, kImageColourLimit, kHarmonics},
-                         {"specular", {0.0f, 0.3f, 1.0f}, true, 0.0, 5.0, kSpecular}};
+                         {"specular", {0.0f, 0.3f, 1.0f}, true, 0.0, 6.0, kSpecular}};
 
 // The case's grass_view_lights_desc in `d` (its light in `l`), chained on `v`.
 void add_host_light(HostLight kind, grass_view_desc* v, grass_view_lights_desc* d, grass_light* l) {
@@ -181,8 +184,6 @@ enum Variant { kBlades, kBladesOtherSeed, kVolume, kImage, kVariants };
 
 class SliceColourTest : public RenderTest {
 protected:
-    // The Vulkan backend refuses grass_view_lights_desc for now.
-    bool host_lights_supported() const { return GetParam() != GRASS_BACKEND_VULKAN; }
     // Every variant in every light, over black and over white, one context per background:
     // the 8 x 8 cells of the default patch drawn by blades, the same with patch seed 2 and
     // mirror seed 1, and the default patch drawn by the volume tier (8 slices) alone and by
@@ -198,7 +199,6 @@ protected:
             for (int variant = 0; variant < kVariants; ++variant) {
                 for (int l = 0; l < kLightCount; ++l) {
                     const Light& light = kLights[l];
-                    if (light.host != kNoHostLight && !host_lights_supported()) continue;
                     grass_field_desc d = variant == kVolume  ? solo_tier_field(8, GRASS_TIER_VOLUME, 8, 1)
                                          : variant == kImage ? solo_tier_field(8, GRASS_TIER_IMAGE, 0, 1)
                                                              : field_desc(8);
@@ -238,10 +238,6 @@ TEST_P(SliceColourTest, VolumeAndImageRowBandsMatchTheBladesWithinTheSeedSpread)
     if (HasFatalFailure()) return;
     int count = 0;
     for (const Light& light : kLights) {
-        if (light.host != kNoHostLight && !host_lights_supported()) {
-            ++count;
-            continue;
-        }
         const std::string name = light.name;
         const Pair& a = images[kBlades][count];
         const Pair& b = images[kBladesOtherSeed][count];
@@ -285,7 +281,6 @@ TEST_P(SliceColourTest, VolumeAndImageRowBandsMatchTheBladesWithinTheSeedSpread)
                 "image at most %.1f (far and middle bands)\n",
                 backend_name(GetParam()).c_str(), spread, kSpreadFloor, worst, worst_image);
     for (int l = 0; l < count; ++l) {
-        if (kLights[l].host != kNoHostLight && !host_lights_supported()) continue;
         for (int k = 0; k < kBands; ++k) {
             EXPECT_LE(largest_channel_difference(volume[l].colour[k], blades[l].colour[k]),
                       spread + kLights[l].limit_beyond_spread)

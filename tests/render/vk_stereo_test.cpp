@@ -554,6 +554,14 @@ TEST_F(VkStereo, AFrameWhoseEyesDoNotMatchTheContextsPassIsRefused) {
     contexts.log.clear();
     EXPECT_EQ(grass_begin_frame(contexts.stereo, &stereo), GRASS_ERROR_UNSUPPORTED);
     EXPECT_NE(contexts.log.find("do not receive the host's shadow maps"), std::string::npos) << contexts.log;
+    // The host's lights: a multiview pass is not lit by them (grass_view_lights_desc).
+    grass_view_lights_desc lights = grass_default_view_lights_desc();
+    second.next = &lights;
+    contexts.log.clear();
+    EXPECT_EQ(grass_begin_frame(contexts.stereo, &stereo), GRASS_ERROR_UNSUPPORTED);
+    EXPECT_NE(contexts.log.find("grass_view_lights_desc, but the context draws into a multiview pass"),
+              std::string::npos)
+        << contexts.log;
     // A bad chain: the same extension twice.
     second.next = &second;
     contexts.log.clear();

@@ -1133,9 +1133,10 @@ GRASS_API grass_light grass_default_light(void);
  * the blades and its equivalent on the volume and image tiers, for the sun and every light;
  * and the ambient light as second-order spherical harmonics instead of
  * grass_view_desc.ambient_color. A view without it draws with the same programs and memory
- * as before. A depth pass (GRASS_PASS_DEPTH) ignores it. Cost: each light adds to every
- * tier's fragment work (the volume tier's most: it lights every point its rays composite);
- * docs/records/host-lights.md has the figures. */
+ * as before. A depth pass (GRASS_PASS_DEPTH) ignores it. GL and Vulkan; Vulkan: mono contexts
+ * only (a multiview context refuses it, GRASS_ERROR_UNSUPPORTED). Cost: each light adds to
+ * every tier's fragment work (the volume tier's most: it lights every point its rays
+ * composite); docs/records/host-lights.md has the figures. */
 typedef struct grass_view_lights_desc {
     grass_struct_type type;    /* GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC */
     const void* next;          /* the view's next extension, or NULL */

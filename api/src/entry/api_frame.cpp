@@ -186,7 +186,8 @@ grass_result check_vk_shadow(grass_context* ctx, const char* fn, const grass_sha
 }
 
 // A stereo frame needs a target of two views, and a target of two views a stereo frame.
-// A depth pass needs a target to draw in (Vulkan: grass_vk_depth_pass_desc).
+// A depth pass needs a target to draw in (Vulkan: grass_vk_depth_pass_desc). A multiview pass
+// (Vulkan stereo) receives no shadows and is not lit by the host's lights.
 grass_result check_views(grass_context* ctx, const char* fn, const ViewExtensions& ext) {
     if (!ctx->backend || ctx->backend->kind() == GRASS_BACKEND_NONE) return GRASS_SUCCESS; // plans only
     const RenderTarget target = ctx->backend->render_target();
@@ -216,10 +217,11 @@ grass_result check_views(grass_context* ctx, const char* fn, const ViewExtension
                              fn, ext.motion->velocity_attachment, target.velocity_attachment);
         }
     }
-    if (ext.lights && ctx->backend->kind() == GRASS_BACKEND_VULKAN) {
+    if (ext.lights && !(ext.pass && ext.pass->pass == GRASS_PASS_DEPTH) && target.views != 1) {
         return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
-                         "%s: view->next chains a grass_view_lights_desc, but the Vulkan backend does not light "
-                         "grass with the host's lights yet (GL does)",
+                         "%s: view->next chains a grass_view_lights_desc, but the context draws into a multiview "
+                         "pass (grass_vk_multiview_desc.view_mask 0x3), whose views are not lit by the host's "
+                         "lights; draw the eyes as two mono frames to light them",
                          fn);
     }
     const uint32_t views = target.views;
