@@ -14,6 +14,7 @@
 // and after it makes none. Bad layouts and a framebuffer without the attachments are refused
 // naming the field; a Vulkan context refuses the view.
 #include "gl_program_spy.hpp"
+#include "gl_test_functions.hpp"
 #include "render_fixture.hpp"
 
 #include <GL/glcorearb.h>
@@ -30,38 +31,6 @@ namespace {
 
 constexpr int kSize = 96;
 constexpr int kColour = 4; // colour attachments
-
-struct Gl {
-    PFNGLCREATEFRAMEBUFFERSPROC CreateFramebuffers;
-    PFNGLDELETEFRAMEBUFFERSPROC DeleteFramebuffers;
-    PFNGLNAMEDFRAMEBUFFERTEXTUREPROC NamedFramebufferTexture;
-    PFNGLNAMEDFRAMEBUFFERDRAWBUFFERSPROC NamedFramebufferDrawBuffers;
-    PFNGLBINDFRAMEBUFFERPROC BindFramebuffer;
-    PFNGLCLEARNAMEDFRAMEBUFFERFVPROC ClearNamedFramebufferfv;
-    PFNGLCREATETEXTURESPROC CreateTextures;
-    PFNGLTEXTURESTORAGE2DPROC TextureStorage2D;
-    PFNGLTEXTURESUBIMAGE2DPROC TextureSubImage2D;
-    PFNGLDELETETEXTURESPROC DeleteTextures;
-    PFNGLGETTEXTUREIMAGEPROC GetTextureImage;
-    PFNGLGETINTEGERVPROC GetIntegerv;
-    PFNGLGETINTEGERI_VPROC GetIntegeri_v;
-    PFNGLGETBOOLEANI_VPROC GetBooleani_v;
-    PFNGLISENABLEDIPROC IsEnabledi;
-    PFNGLENABLEIPROC Enablei;
-    PFNGLDISABLEIPROC Disablei;
-    PFNGLCOLORMASKIPROC ColorMaski;
-    PFNGLCREATEBUFFERSPROC CreateBuffers;
-    PFNGLNAMEDBUFFERDATAPROC NamedBufferData;
-    PFNGLBINDBUFFERRANGEPROC BindBufferRange;
-    PFNGLDELETEBUFFERSPROC DeleteBuffers;
-    PFNGLGETUNIFORMBLOCKINDEXPROC GetUniformBlockIndex;
-};
-
-template <class T>
-void load(const grass_host::Host& host, T* fn, const char* name) {
-    *fn = reinterpret_cast<T>(host.gl_proc_address(name));
-    ASSERT_NE(*fn, nullptr) << name;
-}
 
 // The prefilled byte of attachment `a` at pixel `p`, channel `c`.
 uint8_t pattern(int a, size_t p, int c) {
@@ -84,29 +53,7 @@ protected:
         t.width = t.height = kSize;
         t.gl_proc_filter = &gl_program_spy_filter;
         start(t);
-        load(*host, &gl.CreateFramebuffers, "glCreateFramebuffers");
-        load(*host, &gl.DeleteFramebuffers, "glDeleteFramebuffers");
-        load(*host, &gl.NamedFramebufferTexture, "glNamedFramebufferTexture");
-        load(*host, &gl.NamedFramebufferDrawBuffers, "glNamedFramebufferDrawBuffers");
-        load(*host, &gl.BindFramebuffer, "glBindFramebuffer");
-        load(*host, &gl.ClearNamedFramebufferfv, "glClearNamedFramebufferfv");
-        load(*host, &gl.CreateTextures, "glCreateTextures");
-        load(*host, &gl.TextureStorage2D, "glTextureStorage2D");
-        load(*host, &gl.TextureSubImage2D, "glTextureSubImage2D");
-        load(*host, &gl.DeleteTextures, "glDeleteTextures");
-        load(*host, &gl.GetTextureImage, "glGetTextureImage");
-        load(*host, &gl.GetIntegerv, "glGetIntegerv");
-        load(*host, &gl.GetIntegeri_v, "glGetIntegeri_v");
-        load(*host, &gl.GetBooleani_v, "glGetBooleani_v");
-        load(*host, &gl.IsEnabledi, "glIsEnabledi");
-        load(*host, &gl.Enablei, "glEnablei");
-        load(*host, &gl.Disablei, "glDisablei");
-        load(*host, &gl.ColorMaski, "glColorMaski");
-        load(*host, &gl.CreateBuffers, "glCreateBuffers");
-        load(*host, &gl.NamedBufferData, "glNamedBufferData");
-        load(*host, &gl.BindBufferRange, "glBindBufferRange");
-        load(*host, &gl.DeleteBuffers, "glDeleteBuffers");
-        load(*host, &gl.GetUniformBlockIndex, "glGetUniformBlockIndex");
+        load_gl_test_functions(*host, &gl);
     }
     void TearDown() override {
         release_target();
@@ -191,7 +138,7 @@ protected:
     }
 
     static constexpr float kVelocityClear[4] = {9.0f, -9.0f, 7.0f, 5.0f};
-    Gl gl{};
+    GlTestFunctions gl{};
     GLuint fbo_ = 0;
     GLuint textures_[kColour + 1] = {};
     bool float_velocity_ = false;
