@@ -29,6 +29,9 @@ vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachme
 #else
 layout(location = 0) out vec4 out_color;
 #endif
+#ifdef GRASS_GBUFFER // G-buffer views' variants only
+#include "gbuffer.glsl"
+#endif
 
 void main() {
     load_blocks();
@@ -44,6 +47,13 @@ void main() {
     vec2 light = has_map(GRASS_MAP_AMBIENT | GRASS_MAP_DIFFUSE) ? v_shape_light.zw : vec2(1.0);
 #ifdef GRASS_HOST_SHADOWS
     light.y *= host_sun_visibility(v_position_density.xyz); // the host's shadow at the fragment
+#endif
+#ifdef GRASS_GBUFFER // the surface instead of its light; the whole blade, as the depth pass
+    write_gbuffer(v_albedo_code.rgb, n, ao * light.x);
+#ifdef GRASS_VELOCITY
+    write_velocity(clip_velocity(v_clip_now, v_clip_before));
+#endif
+    return;
 #endif
     vec3 color = grass_lighting(v_albedo_code.rgb, n, ao, light);
 #ifdef GRASS_HOST_LIGHTS

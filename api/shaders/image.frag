@@ -31,6 +31,9 @@ vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachme
 #else
 layout(location = 0) out vec4 out_color;
 #endif
+#ifdef GRASS_GBUFFER // G-buffer views' variants only
+#include "gbuffer.glsl"
+#endif
 
 #ifdef GRASS_RESPONSIVE
 // The bend of the grass the quad stands for (its point is at half the grass's height), and
@@ -145,10 +148,20 @@ void main() {
     vec3 n_x = textureGrad(slice_normal, vec3(uv, 1.0), dx, dy).xyz * 2.0 - 1.0;
     vec3 n_z = textureGrad(slice_normal, vec3(uv, 2.0), dx, dy).xyz * 2.0 - 1.0;
     float along_x = abs(to_camera.x) / max(abs(to_camera.x) + abs(to_camera.z), 1e-6);
-    vec3 grazing = mix(slice_light(base, n_z, folded, to_camera, sun, ao, light, bend_dir, turn),
-                       slice_light(base, n_x, folded, to_camera, sun, ao, light, bend_dir, turn), along_x);
     const float sin_baked = 0.173648; // sin(10 degrees), the grazing bake's elevation
     float steep = clamp((sin_elevation - sin_baked) / (1.0 - sin_baked), 0.0, 1.0);
+#ifdef GRASS_GBUFFER // the surface the lighting below weighs, as one normal
+    vec3 n_grazing = mix(gbuffer_slice_normal(n_z, folded, to_camera), gbuffer_slice_normal(n_x, folded, to_camera),
+                         along_x);
+    vec3 n_patch = mix(n_grazing, gbuffer_slice_normal(n_above, folded, to_camera), steep);
+    write_gbuffer(base, normalize(mat3(field.patch_to_world) * n_patch), ao * light.x);
+#ifdef GRASS_VELOCITY
+    write_velocity(clip_velocity(clip_now(v_position), clip_before(before)));
+#endif
+    return;
+#endif
+    vec3 grazing = mix(slice_light(base, n_z, folded, to_camera, sun, ao, light, bend_dir, turn),
+                       slice_light(base, n_x, folded, to_camera, sun, ao, light, bend_dir, turn), along_x);
     vec3 color = grazing;
     if (steep > 0.0) {
         color = mix(grazing, slice_light(base, n_above, folded, to_camera, sun, ao, light, bend_dir, turn),

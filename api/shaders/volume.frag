@@ -36,6 +36,14 @@ vec4 out_color; // Vulkan's depth-only target (a depth pass): no colour attachme
 #else
 layout(location = 0) out vec4 out_color;
 #endif
+#ifdef GRASS_GBUFFER // G-buffer views' variants only
+#include "gbuffer.glsl"
+// The surface the ray composites, front to back as g_color: albedo, world normal (summed,
+// normalised at the end), ambient occlusion.
+vec3 g_albedo = vec3(0.0);
+vec3 g_normal = vec3(0.0);
+float g_ao = 0.0;
+#endif
 
 const float kHuge = 1e30;
 
@@ -249,11 +257,18 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     float ao = blade_ambient_occlusion(density, kind == 2 ? normal_height.w * g_size.y : h.y, field.blade_params.x,
                                        field.blade_params.y);
     vec3 folded = kind == 0 ? vec3(0.0, 1.0, 1.0) : kind == 1 ? vec3(1.0, 1.0, 0.0) : vec3(1.0, 0.0, 1.0);
+#ifdef GRASS_GBUFFER // the surface instead of its light
+    float weight = (1.0 - g_alpha) * a;
+    g_albedo += weight * color;
+    g_normal += weight * normalize(g_to_world * gbuffer_slice_normal(nrm, folded, -g_dir));
+    g_ao += weight * ao * light.x;
+#else
     vec3 lit = grass_lighting_lobes_bent(color, nrm, folded, -g_dir, g_sun, ao, light, bend_dir, turn);
 #ifdef GRASS_HOST_LIGHTS
     lit += host_lights_lobes(color, nrm, folded, -g_dir, world, bend_dir, turn, light.y);
 #endif
     g_color += (1.0 - g_alpha) * a * lit;
+#endif
     gather(a, hit, threshold);
 }
 
@@ -496,10 +511,15 @@ void main() {
         }
     }
     if (!write_coverage(g_alpha)) discard;
+#ifdef GRASS_GBUFFER
+    vec3 facing = dot(g_normal, g_normal) > 1e-12 ? normalize(g_normal) : normalize(g_to_world * -g_dir);
+    write_gbuffer(g_albedo / g_alpha, facing, g_ao / g_alpha);
+#else
     if (!depth_pass()) { // the depth pass writes the depth alone
         out_color = debug_thresholds() ? threshold_code(g_depth_threshold)
                                        : output_color(vec4(debug_tint(g_color / g_alpha), g_alpha));
     }
+#endif
     // The last level at or below half the ray's alpha (1/2 for an opaque ray).
     int level = 0;
     for (int i = 1; i < g_depth_reached; ++i) {

@@ -169,8 +169,12 @@ private:
     GLintptr shadow_uniform_offset_ = 0; // a receiving view's GrassShadow block, into uniforms_
     // A receiving view's map and block at kShadowMapUnit and uniform binding 2 (gl_draw.cpp).
     void bind_host_shadows(const FramePlan& plan);
-    GLintptr motion_uniform_offset_ = 0; // a motion view's GrassMotion block, into uniforms_
-    GLintptr lights_uniform_offset_ = 0; // a lit view's GrassLights block, into uniforms_
+    GLintptr motion_uniform_offset_ = 0;  // a motion view's GrassMotion block, into uniforms_
+    GLintptr lights_uniform_offset_ = 0;  // a lit view's GrassLights block, into uniforms_
+    GLintptr gbuffer_uniform_offset_ = 0; // a G-buffer view's GrassGBuffer block, into uniforms_
+    // A G-buffer view (gl_gbuffer.cpp): the bound draw framebuffer has a draw buffer at every
+    // attachment grass writes (else GRASS_MSG_GBUFFER_TARGET), checked before anything is drawn.
+    grass_result check_gbuffer_target(const FramePlan& plan, const char* function) const;
     // A motion view (gl_motion.cpp): the bound draw framebuffer has a draw buffer at the
     // velocity attachment (else GRASS_MSG_VELOCITY_TARGET), checked before anything is drawn.
     grass_result check_velocity_target(const FramePlan& plan, const char* function) const;

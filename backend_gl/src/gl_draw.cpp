@@ -44,6 +44,10 @@ void GlBackend::upload_frame(const RenderTarget& target, uint32_t view) {
         lights_uniform_offset_ = static_cast<GLintptr>(align_up(size, alignment));
         size = static_cast<size_t>(lights_uniform_offset_) + sizeof(LightUniforms);
     }
+    if (plan.gbuffer) { // a G-buffer view's GrassGBuffer block: no other view has one
+        gbuffer_uniform_offset_ = static_cast<GLintptr>(align_up(size, alignment));
+        size = static_cast<size_t>(gbuffer_uniform_offset_) + sizeof(GBufferUniforms);
+    }
     size = stage_interaction_uniforms(plan, size); // the pass's blocks: view 0's plan only has them
     uniform_staging_.assign(size, 0);
     FrameUniforms frame = plan.frame;
@@ -61,6 +65,9 @@ void GlBackend::upload_frame(const RenderTarget& target, uint32_t view) {
     }
     if (plan.host_lights) {
         std::memcpy(uniform_staging_.data() + lights_uniform_offset_, &plan.lights, sizeof(LightUniforms));
+    }
+    if (plan.gbuffer) {
+        std::memcpy(uniform_staging_.data() + gbuffer_uniform_offset_, &plan.gbuffer_uniforms, sizeof(GBufferUniforms));
     }
     for (uint32_t l = 0; l < plan.interaction.levels && l < 2; ++l) {
         std::memcpy(uniform_staging_.data() + interaction_uniform_offsets_[l], &plan.interaction.level[l],
@@ -235,7 +242,10 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
         if (result != GRASS_SUCCESS) return result;
     }
     const bool motion = plan.motion && !debug; // the debug boxes write no velocity
-    if (motion) {
+    if (plan.gbuffer) {                        // every attachment grass writes has a draw buffer (gl_gbuffer.cpp)
+        const grass_result result = check_gbuffer_target(plan, function);
+        if (result != GRASS_SUCCESS) return result;
+    } else if (motion) {
         const grass_result result = check_velocity_target(plan, function);
         if (result != GRASS_SUCCESS) return result;
     }
@@ -283,7 +293,7 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
     gl_.Disablei(GL_BLEND, 0); // draw buffer 0's: the others are masked off (GlDrawStateGuard)
     gl_.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     if (multisampled) gl_.Enable(GL_MULTISAMPLE);
-    if (multisampled && !plan.depth_pass) { // a depth pass's blades write no alpha
+    if (multisampled && !plan.depth_pass && !plan.gbuffer) { // depth and G-buffer: alpha-tested
         gl_.Enable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     } else {
         gl_.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
@@ -295,7 +305,12 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
         guard.begin_shadow_receive();
         bind_host_shadows(plan);
     }
-    if (motion) {
+    if (plan.gbuffer) { // routes every output, the velocity's too
+        guard.begin_gbuffer(plan.gbuffer_attachment, plan.gbuffer_mask, motion);
+        gl_.BindBufferRange(GL_UNIFORM_BUFFER, kGBufferUniformBinding, uniforms_.name(), gbuffer_uniform_offset_,
+                            sizeof(GBufferUniforms));
+        if (motion) bind_motion(plan);
+    } else if (motion) {
         guard.begin_motion(plan.velocity_attachment);
         bind_motion(plan);
     }

@@ -68,9 +68,11 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
     const bool shadows = (features & kFeatureShadowReceive) != 0;
     const bool motion = (features & kFeatureMotion) != 0;
     const bool lights = (features & kFeatureHostLights) != 0;
-    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s%s%s%s", features,
+    const bool gbuffer = (features & kFeatureGBuffer) != 0;
+    std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s%s%s%s%s", features,
                   responsive ? "#define GRASS_RESPONSIVE 1\n" : "", shadows ? "#define GRASS_HOST_SHADOWS 1\n" : "",
-                  motion ? "#define GRASS_VELOCITY 1\n" : "", lights ? "#define GRASS_HOST_LIGHTS 1\n" : "");
+                  motion ? "#define GRASS_VELOCITY 1\n" : "", lights ? "#define GRASS_HOST_LIGHTS 1\n" : "",
+                  gbuffer ? "#define GRASS_GBUFFER 1\n" : "");
     const GLchar* strings[3] = {source, define, newline + 1};
     const GLint lengths[3] = {static_cast<GLint>(newline + 1 - source), -1, -1};
 

@@ -40,17 +40,22 @@ static_assert(kProgramBlades == static_cast<uint32_t>(kShaderBlades) &&
 // Every feature mask: the design maps' bits, then kFeatureWind, kFeatureInteraction,
 // kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView (backend.hpp).
 constexpr uint32_t kFeatureVariants = kFeatureMaskCount;
-// The masks without kFeatureDepthPass, kFeatureShadowReceive, kFeatureMotion and
-// kFeatureHostLights (a depth pass's, a receiving view's, a motion view's and a lit view's
+// The masks without kFeatureDepthPass, kFeatureShadowReceive, kFeatureMotion,
+// kFeatureHostLights and kFeatureGBuffer (a depth pass's, a receiving view's, a motion
+// view's, a lit view's and a G-buffer view's
 // programs are kept apart, made on the first such view:
 // GlBackend::program_slot), and the masks with either.
 constexpr uint32_t kColourVariants = kFeatureDepthPass;
 constexpr uint32_t kPassVariants = kFeatureVariants - kColourVariants;
 static_assert(kFeatureShadowReceive == kFeatureDepthPass << 1 && kFeatureMotion == kFeatureShadowReceive << 1 &&
-                  kFeatureHostLights == kFeatureMotion << 1 && kFeatureVariants == kFeatureHostLights << 1,
-              "the pass bits are the last four");
+                  kFeatureHostLights == kFeatureMotion << 1 && kFeatureGBuffer == kFeatureHostLights << 1 &&
+                  kFeatureVariants == kFeatureGBuffer << 1,
+              "the pass bits are the last five");
 // A view lit by the host's lights: its GrassLights block at uniform binding 4 (host_lights.glsl).
 constexpr GLuint kLightsUniformBinding = 4;
+// A G-buffer view: its GrassGBuffer block at uniform binding 5 (gbuffer.glsl); output
+// locations as kGBufferOutput (gl_gbuffer.cpp routes them).
+constexpr GLuint kGBufferUniformBinding = 5;
 // A view with motion vectors: its GrassMotion block at uniform binding 3 (motion.glsl); the
 // fragment shaders write the velocity to output location 1 (gl_motion.cpp routes it).
 constexpr GLuint kMotionUniformBinding = 3;

@@ -216,6 +216,18 @@ void GlDrawStateGuard::begin_motion(uint32_t velocity) {
     const GlFunctions& gl = gl_;
     if (motion_) return;
     motion_ = true;
+    save_draw_buffers();
+    save_binding(kMotionUniformBinding, &motion_binding_);
+    gl.GetBooleani_v(GL_COLOR_WRITEMASK, kVelocityOutput, velocity_mask_);
+    velocity_blend_ = gl.IsEnabledi(GL_BLEND, kVelocityOutput);
+    const GLenum routed[2] = {draw_buffers_[0], draw_buffers_[velocity]}; // check_velocity_target: not GL_NONE
+    gl.DrawBuffers(2, routed);
+    gl.ColorMaski(kVelocityOutput, GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE);
+    gl.Disablei(GL_BLEND, kVelocityOutput);
+}
+
+void GlDrawStateGuard::save_draw_buffers() {
+    const GlFunctions& gl = gl_;
     GLint max_draw_buffers = 1;
     gl.GetIntegerv(GL_MAX_DRAW_BUFFERS, &max_draw_buffers);
     draw_buffer_count_ = static_cast<GLsizei>(std::min(static_cast<GLuint>(max_draw_buffers), kMaxDrawBuffers));
@@ -224,13 +236,47 @@ void GlDrawStateGuard::begin_motion(uint32_t velocity) {
         gl.GetIntegerv(static_cast<GLenum>(GL_DRAW_BUFFER0 + i), &buffer);
         draw_buffers_[i] = static_cast<GLenum>(buffer);
     }
-    save_binding(kMotionUniformBinding, &motion_binding_);
-    gl.GetBooleani_v(GL_COLOR_WRITEMASK, kVelocityOutput, velocity_mask_);
-    velocity_blend_ = gl.IsEnabledi(GL_BLEND, kVelocityOutput);
-    const GLenum routed[2] = {draw_buffers_[0], draw_buffers_[velocity]}; // check_velocity_target: not GL_NONE
-    gl.DrawBuffers(2, routed);
-    gl.ColorMaski(kVelocityOutput, GL_TRUE, GL_TRUE, GL_FALSE, GL_FALSE);
-    gl.Disablei(GL_BLEND, kVelocityOutput);
+}
+
+void GlDrawStateGuard::begin_gbuffer(const uint32_t attachment[kGBufferOutputs], const uint32_t mask[kGBufferOutputs],
+                                     bool motion_block) {
+    const GlFunctions& gl = gl_;
+    if (gbuffer_) return;
+    gbuffer_ = true;
+    save_draw_buffers();
+    save_binding(kGBufferUniformBinding, &gbuffer_binding_);
+    motion_block_ = motion_block;
+    if (motion_block) save_binding(kMotionUniformBinding, &motion_binding_);
+    GLenum routed[kGBufferOutputs];
+    for (GLuint i = 0; i < kGBufferOutputs; ++i) {
+        gl.GetBooleani_v(GL_COLOR_WRITEMASK, i, gbuffer_masks_[i]);
+        gbuffer_blend_[i] = gl.IsEnabledi(GL_BLEND, i);
+        // check_gbuffer_target: an attachment grass writes is within the list and not GL_NONE.
+        const bool written = attachment[i] != kNoGBufferOutput;
+        routed[i] = written ? draw_buffers_[attachment[i]] : static_cast<GLenum>(GL_NONE);
+        const uint32_t m = written ? mask[i] : 0u;
+        gl.ColorMaski(i, (m & 1u) != 0, (m & 2u) != 0, (m & 4u) != 0, (m & 8u) != 0);
+        gl.Disablei(GL_BLEND, i);
+    }
+    gl.DrawBuffers(static_cast<GLsizei>(kGBufferOutputs), routed);
+}
+
+// Before the host's masks and blend enables of draw buffer 0 and the others are restored
+// (the constructor had set them before begin_gbuffer saved them).
+void GlDrawStateGuard::restore_gbuffer() const {
+    const GlFunctions& gl = gl_;
+    gl.DrawBuffers(draw_buffer_count_, draw_buffers_);
+    for (GLuint i = 0; i < kGBufferOutputs; ++i) {
+        const GLboolean* m = gbuffer_masks_[i];
+        gl.ColorMaski(i, m[0], m[1], m[2], m[3]);
+        if (gbuffer_blend_[i]) {
+            gl.Enablei(GL_BLEND, i);
+        } else {
+            gl.Disablei(GL_BLEND, i);
+        }
+    }
+    restore_binding(kGBufferUniformBinding, gbuffer_binding_);
+    if (motion_block_) restore_binding(kMotionUniformBinding, motion_binding_);
 }
 
 // Before the other draw buffers' masks are restored (draw buffer 1's, if the host had one
@@ -249,8 +295,9 @@ void GlDrawStateGuard::restore_motion() const {
 
 GlDrawStateGuard::~GlDrawStateGuard() {
     const GlFunctions& gl = gl_;
-    if (motion_) restore_motion(); // before the generic uniform binding and the masks are restored
-    if (shadow_receive_) {         // before the generic uniform binding and the active unit are restored
+    if (motion_) restore_motion();   // before the generic uniform binding and the masks are restored
+    if (gbuffer_) restore_gbuffer(); // likewise
+    if (shadow_receive_) {           // before the generic uniform binding and the active unit are restored
         gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLuint>(kShadowMapUnit));
         gl.BindTexture(GL_TEXTURE_2D_ARRAY, static_cast<GLuint>(shadow_unit_.texture_2d_array));
         gl.BindSampler(static_cast<GLuint>(kShadowMapUnit), static_cast<GLuint>(shadow_unit_.sampler));

@@ -3,6 +3,8 @@
 
 #include "gl_functions.hpp"
 
+#include "foundation/shader_interface.hpp"
+
 #include <cstdint>
 
 namespace grass {
@@ -41,6 +43,14 @@ public:
     // A view lit by the host's lights (FramePlan::host_lights): the host's uniform binding 4
     // saved first and restored with the rest.
     void begin_host_lights();
+    // A G-buffer view (FramePlan::gbuffer): output location i (kGBufferOutput) is routed to
+    // the host's draw buffer attachment[i] (kNoGBufferOutput: GL_NONE) with the colour mask
+    // mask[i] (bit 1 r, 2 g, 4 b, 8 a), unblended; no other draw buffer is written. The host's
+    // draw buffer list, uniform binding 5 (and 3 with `motion_block`: a view whose G-buffer
+    // has velocity) and the colour masks and blend enables of draw buffers 0-3 are saved
+    // first and restored with the rest.
+    void begin_gbuffer(const uint32_t attachment[kGBufferOutputs], const uint32_t mask[kGBufferOutputs],
+                       bool motion_block);
     GlDrawStateGuard(const GlDrawStateGuard&) = delete;
     GlDrawStateGuard& operator=(const GlDrawStateGuard&) = delete;
 
@@ -118,6 +128,15 @@ private:
     GLboolean velocity_mask_[4] = {};
     GLboolean velocity_blend_ = GL_FALSE;
     void restore_motion() const;
+    void save_draw_buffers(); // draw_buffer_count_ and draw_buffers_
+    // A G-buffer view: uniform binding 5, draw buffers 0-3's colour masks and blend enables
+    // (the draw buffer list in draw_buffers_; binding 3 in motion_binding_ with motion_block_).
+    bool gbuffer_ = false;
+    bool motion_block_ = false;
+    UniformBinding gbuffer_binding_ = {};
+    GLboolean gbuffer_masks_[kGBufferOutputs][4] = {};
+    GLboolean gbuffer_blend_[kGBufferOutputs] = {};
+    void restore_gbuffer() const;
     // A lit view: the host's uniform binding 4.
     bool host_lights_ = false;
     UniformBinding lights_binding_ = {};

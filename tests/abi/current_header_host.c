@@ -21,6 +21,8 @@ int main(void) {
     grass_field_id field;
     grass_frame_stats fs;
     grass_memory_stats ms;
+    grass_view_gbuffer_desc gbuffer;
+    grass_view_pass_desc pass;
     const uint64_t unwritten = 0xababababababababull;
     int k;
 
@@ -69,6 +71,20 @@ int main(void) {
     view.viewport[2] = view.viewport[3] = 256;
     CHECK_OK(grass_begin_frame(ctx, &view));
     CHECK_OK(grass_end_frame(ctx));
+    /* 0.5's G-buffer view: a layout chained after its pass, planned without a GPU. */
+    gbuffer = grass_default_view_gbuffer_desc();
+    CHECK(gbuffer.type == GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC && gbuffer.attachment_count == 1);
+    gbuffer.attachment_count = 2;
+    gbuffer.attachments[0].semantic = GRASS_GBUFFER_ALBEDO;
+    gbuffer.attachments[1].semantic = GRASS_GBUFFER_NORMAL;
+    gbuffer.attachments[1].format = GRASS_GBUFFER_FORMAT_SNORM;
+    pass = grass_default_view_pass_desc();
+    pass.pass = GRASS_PASS_GBUFFER;
+    pass.next = &gbuffer;
+    view.next = &pass;
+    CHECK_OK(grass_begin_frame(ctx, &view));
+    CHECK_OK(grass_end_frame(ctx));
+    view.next = NULL;
 
     memset(&fs, 0xab, sizeof(fs));
     CHECK_OK(grass_get_frame_stats(ctx, &fs));

@@ -18,6 +18,7 @@
 //   same picture; bad descs are refused naming the field; a Vulkan context without
 //   grass_vk_velocity_target_desc, or with another velocity attachment, refuses the view.
 #include "gl_program_spy.hpp"
+#include "gl_test_functions.hpp"
 #include "render_fixture.hpp"
 #include "vk_intercept.hpp"
 
@@ -35,37 +36,6 @@ namespace grass_test {
 namespace {
 
 constexpr int kSize = 128;
-
-struct Gl {
-    PFNGLCREATEFRAMEBUFFERSPROC CreateFramebuffers;
-    PFNGLDELETEFRAMEBUFFERSPROC DeleteFramebuffers;
-    PFNGLNAMEDFRAMEBUFFERTEXTUREPROC NamedFramebufferTexture;
-    PFNGLNAMEDFRAMEBUFFERDRAWBUFFERSPROC NamedFramebufferDrawBuffers;
-    PFNGLBINDFRAMEBUFFERPROC BindFramebuffer;
-    PFNGLCLEARNAMEDFRAMEBUFFERFVPROC ClearNamedFramebufferfv;
-    PFNGLCREATETEXTURESPROC CreateTextures;
-    PFNGLTEXTURESTORAGE2DPROC TextureStorage2D;
-    PFNGLDELETETEXTURESPROC DeleteTextures;
-    PFNGLGETTEXTUREIMAGEPROC GetTextureImage;
-    PFNGLGETINTEGERVPROC GetIntegerv;
-    PFNGLGETINTEGERI_VPROC GetIntegeri_v;
-    PFNGLGETBOOLEANI_VPROC GetBooleani_v;
-    PFNGLISENABLEDIPROC IsEnabledi;
-    PFNGLENABLEIPROC Enablei;
-    PFNGLDISABLEIPROC Disablei;
-    PFNGLCOLORMASKIPROC ColorMaski;
-    PFNGLCREATEBUFFERSPROC CreateBuffers;
-    PFNGLNAMEDBUFFERDATAPROC NamedBufferData;
-    PFNGLBINDBUFFERRANGEPROC BindBufferRange;
-    PFNGLDELETEBUFFERSPROC DeleteBuffers;
-    PFNGLGETUNIFORMBLOCKINDEXPROC GetUniformBlockIndex;
-};
-
-template <class T>
-void load(const grass_host::Host& host, T* fn, const char* name) {
-    *fn = reinterpret_cast<T>(host.gl_proc_address(name));
-    ASSERT_NE(*fn, nullptr) << name;
-}
 
 // c = a * b, column-major 4x4, double.
 void mul4(const double a[16], const double b[16], double c[16]) {
@@ -153,28 +123,7 @@ protected:
         }
         start(t);
         if (GetParam() != GRASS_BACKEND_GL) return;
-        load(*host, &gl.CreateFramebuffers, "glCreateFramebuffers");
-        load(*host, &gl.DeleteFramebuffers, "glDeleteFramebuffers");
-        load(*host, &gl.NamedFramebufferTexture, "glNamedFramebufferTexture");
-        load(*host, &gl.NamedFramebufferDrawBuffers, "glNamedFramebufferDrawBuffers");
-        load(*host, &gl.BindFramebuffer, "glBindFramebuffer");
-        load(*host, &gl.ClearNamedFramebufferfv, "glClearNamedFramebufferfv");
-        load(*host, &gl.CreateTextures, "glCreateTextures");
-        load(*host, &gl.TextureStorage2D, "glTextureStorage2D");
-        load(*host, &gl.DeleteTextures, "glDeleteTextures");
-        load(*host, &gl.GetTextureImage, "glGetTextureImage");
-        load(*host, &gl.GetIntegerv, "glGetIntegerv");
-        load(*host, &gl.GetIntegeri_v, "glGetIntegeri_v");
-        load(*host, &gl.GetBooleani_v, "glGetBooleani_v");
-        load(*host, &gl.IsEnabledi, "glIsEnabledi");
-        load(*host, &gl.Enablei, "glEnablei");
-        load(*host, &gl.Disablei, "glDisablei");
-        load(*host, &gl.ColorMaski, "glColorMaski");
-        load(*host, &gl.CreateBuffers, "glCreateBuffers");
-        load(*host, &gl.NamedBufferData, "glNamedBufferData");
-        load(*host, &gl.BindBufferRange, "glBindBufferRange");
-        load(*host, &gl.DeleteBuffers, "glDeleteBuffers");
-        load(*host, &gl.GetUniformBlockIndex, "glGetUniformBlockIndex");
+        load_gl_test_functions(*host, &gl);
         const GLenum formats[4] = {GL_RGBA8, GL_RGBA32F, GL_RGBA8, GL_DEPTH_COMPONENT32F};
         gl.CreateTextures(GL_TEXTURE_2D, 4, textures_);
         for (int i = 0; i < 4; ++i) gl.TextureStorage2D(textures_[i], 1, formats[i], kSize, kSize);
@@ -342,7 +291,7 @@ protected:
         EXPECT_LT(still_v * kSize, 0.01) << name << ": previous_time = time moves nothing (px)";
     }
 
-    Gl gl{};
+    GlTestFunctions gl{};
     GLuint fbo_ = 0;
     GLuint textures_[4] = {};
 };

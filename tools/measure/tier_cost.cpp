@@ -258,6 +258,15 @@ Subcommand add_tier_cost(CLI::App& measure) {
         ->excludes("--depth-pass")
         ->excludes(receive)
         ->excludes("--motion");
+    app->add_flag("--gbuffer", o->gbuffer,
+                  "each row of the plain table also as a G-buffer view (albedo, normal, material), GL "
+                  "(docs/records/gbuffer.md)")
+        ->excludes(maps)
+        ->excludes(features)
+        ->excludes("--depth-pass")
+        ->excludes(receive)
+        ->excludes("--motion")
+        ->excludes("--lights");
     app->add_option("--rounds", o->rounds, "--maps and --features: rounds, each drawing every row once")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));

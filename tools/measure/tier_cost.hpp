@@ -48,9 +48,11 @@
 // docs/records/motion-vectors.md) into a velocity target (GL: an RG16F target the tool adds to
 // the host's framebuffer; Vulkan: the host's RGBA32F colour attachment 1), without wind and in wind (the pose computed twice); per basic cell each, and
 // the ratios to the plain frame of the same wind.
+// --gbuffer: each row of the plain table also as a G-buffer view (GRASS_PASS_GBUFFER; GL;
+// docs/records/gbuffer.md) into the host's colour and two RGBA8 targets the tool adds.
 // --frames N: frames measured per row (after one that uploads); default 5 (median).
 // Usage: grass-measure tier-cost [--backend gl|vk] [--size WxH] [--maps | --features | --single] [--frames N]
-//        [--rounds N] [--depth-pass | --receive | --motion | --lights]
+//        [--rounds N] [--depth-pass | --receive | --motion | --lights | --gbuffer]
 #pragma once
 
 #include <grass/grass.h>
@@ -75,6 +77,7 @@ struct Options {
     bool receive = false;    // --receive: each plain row also receiving a shadow map (GL)
     bool motion = false;     // --motion: each plain row also writing motion vectors
     bool lights = false;     // --lights: each plain row also lit by the host's lights (GL)
+    bool gbuffer = false;    // --gbuffer: each plain row also as a G-buffer view (GL)
     int frames = 5;
     int rounds = 3;          // --maps and --features only
     std::string patch_scene; // --patch-of: the patch of this scene file instead of the default patch
@@ -198,6 +201,14 @@ int run_plain(Rig& rig); // tier_cost_plain.cpp
 int run_motion(Rig& rig, const std::vector<Setup>& rows);
 // --lights: the plain rows without and with the host's lights (tier_cost_lights.cpp).
 int run_lights(Rig& rig, const std::vector<Setup>& rows);
+// GL: adds `count` renderbuffers (`formats`: GLenums) of the host's size and samples to the
+// framebuffer the host left bound, as its draw buffers 1..count (tier_cost_motion.cpp);
+// false when none is bound. delete_colour_targets deletes them.
+bool add_colour_targets(grass_host::Host& host, uint32_t width, uint32_t height, const uint32_t* formats,
+                        uint32_t count, uint32_t* out);
+void delete_colour_targets(grass_host::Host& host, uint32_t count, const uint32_t* targets);
+// --gbuffer: the plain rows as a colour view and as a G-buffer view (tier_cost_gbuffer.cpp).
+int run_gbuffer(Rig& rig, const std::vector<Setup>& rows);
 int run_maps(Rig& rig);     // tier_cost_maps.cpp
 int run_features(Rig& rig); // tier_cost_features.cpp
 

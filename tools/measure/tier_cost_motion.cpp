@@ -1,7 +1,8 @@
 // grass-measure tier-cost --motion: the plain table's rows drawn without and with motion
 // vectors (grass_view_motion_desc), without wind and in wind, into the host's framebuffer
 // with a velocity target: GL an RG16F renderbuffer added at draw buffer 1, Vulkan the host's
-// RGBA32F colour attachment 1 of its pass (the Rig makes the host with it).
+// RGBA32F colour attachment 1 of its pass (the Rig makes the host with it). Also the GL
+// targets that --motion and --gbuffer add (add_colour_targets).
 #include "tier_cost.hpp"
 
 #include "cli.hpp"
@@ -17,11 +18,8 @@
 namespace grass_measure {
 namespace tier_cost {
 
-namespace {
-
-// Adds an RG16F renderbuffer of the host's size and samples to the framebuffer the host
-// left bound, as its draw buffer 1; returns the renderbuffer (0: none could be added).
-GLuint add_velocity_target(grass_host::Host& host, uint32_t width, uint32_t height) {
+bool add_colour_targets(grass_host::Host& host, uint32_t width, uint32_t height, const uint32_t* formats,
+                        uint32_t count, uint32_t* out) {
     const auto get = reinterpret_cast<PFNGLGETINTEGERVPROC>(host.gl_proc_address("glGetIntegerv"));
     const auto create = reinterpret_cast<PFNGLCREATERENDERBUFFERSPROC>(host.gl_proc_address("glCreateRenderbuffers"));
     const auto storage = reinterpret_cast<PFNGLNAMEDRENDERBUFFERSTORAGEMULTISAMPLEPROC>(
@@ -33,25 +31,31 @@ GLuint add_velocity_target(grass_host::Host& host, uint32_t width, uint32_t heig
     GLint framebuffer = 0, samples = 0;
     get(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
     get(GL_SAMPLES, &samples);
-    if (framebuffer == 0) return 0;
-    GLuint velocity = 0;
-    create(1, &velocity);
-    storage(velocity, samples, GL_RG16F, GLsizei(width), GLsizei(height));
-    attach(GLuint(framebuffer), GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, velocity);
-    const GLenum list[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    buffers(GLuint(framebuffer), 2, list);
-    return velocity;
+    if (framebuffer == 0 || count > 7) return false;
+    GLenum list[8] = {GL_COLOR_ATTACHMENT0};
+    create(GLsizei(count), out);
+    for (uint32_t i = 0; i < count; ++i) {
+        storage(out[i], samples, GLenum(formats[i]), GLsizei(width), GLsizei(height));
+        attach(GLuint(framebuffer), GL_COLOR_ATTACHMENT1 + i, GL_RENDERBUFFER, out[i]);
+        list[i + 1] = GL_COLOR_ATTACHMENT1 + i;
+    }
+    buffers(GLuint(framebuffer), GLsizei(count + 1), list);
+    return true;
 }
 
-} // namespace
+void delete_colour_targets(grass_host::Host& host, uint32_t count, const uint32_t* targets) {
+    const auto destroy = reinterpret_cast<PFNGLDELETERENDERBUFFERSPROC>(host.gl_proc_address("glDeleteRenderbuffers"));
+    destroy(GLsizei(count), targets);
+}
 
 int run_motion(Rig& rig, const std::vector<Setup>& rows) {
     const Options& o = rig.options();
     grass_context* ctx = rig.ctx();
     const bool gl = o.backend == GRASS_BACKEND_GL;
     rig.frame_times(1); // the host binds its framebuffer and leaves it bound
-    const GLuint velocity = gl ? add_velocity_target(rig.host(), o.width, o.height) : 0;
-    if (gl && velocity == 0) {
+    const uint32_t rg16f = GL_RG16F;
+    GLuint velocity = 0;
+    if (gl && !add_colour_targets(rig.host(), o.width, o.height, &rg16f, 1, &velocity)) {
         std::fprintf(stderr, "grass-tier-cost --motion: the host left no framebuffer bound\n");
         return 1;
     }
@@ -89,11 +93,7 @@ int run_motion(Rig& rig, const std::vector<Setup>& rows) {
                     us[3], cpu_us[0], cpu_us[1] / cpu_us[0], cpu_us[2], cpu_us[3] / cpu_us[2]);
         grass_sample::check(grass_destroy_field(ctx, field), "grass_destroy_field", ctx);
     }
-    if (gl) {
-        const auto destroy =
-            reinterpret_cast<PFNGLDELETERENDERBUFFERSPROC>(rig.host().gl_proc_address("glDeleteRenderbuffers"));
-        destroy(1, &velocity);
-    }
+    if (gl) delete_colour_targets(rig.host(), 1, &velocity);
     return rig.finish();
 }
 

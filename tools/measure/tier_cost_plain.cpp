@@ -3,7 +3,7 @@
 // side; the median frame, and per basic cell the frame minus the empty one, in wall and in CPU
 // time. --single: the first, third and fifth rows only (kSingleTiers); --tier: one tier's rows.
 // --depth-pass: run_depth_pass below instead; --receive: run_receive; --motion: run_motion;
-// --lights: run_lights
+// --lights: run_lights; --gbuffer: run_gbuffer
 // (tier_cost_motion.cpp).
 #include "tier_cost.hpp"
 
@@ -176,6 +176,7 @@ int run_plain(Rig& rig) {
     if (o.receive) return run_receive(rig, rows);
     if (o.motion) return run_motion(rig, rows);
     if (o.lights) return run_lights(rig, rows);
+    if (o.gbuffer) return run_gbuffer(rig, rows);
     grass_context* ctx = rig.ctx();
     std::printf("grass-tier-cost: %s (%s), %ux%u, 1024 cells of 0.25 m, frame with no grass %.2f ms (CPU %.2f ms)\n\n",
                 grass_sample::backend_name(o.backend), rig.host().device_name().c_str(), o.width, o.height,

@@ -221,7 +221,8 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012,      /* 0.5: depth-only passes (shadows) */
     GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC = 0x67720013, /* 0.5: the host's shadow maps, received */
     GRASS_STRUCT_TYPE_VIEW_MOTION_DESC = 0x67720014,    /* 0.5: motion vectors */
-    GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC = 0x67720015     /* 0.5: the host's lights */
+    GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC = 0x67720015,    /* 0.5: the host's lights */
+    GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC = 0x67720016    /* 0.5: G-buffer passes (deferred hosts) */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -313,6 +314,11 @@ typedef enum grass_message_id {
      * interaction map (docs/responsive.md): the tile keeps those reaching lowest, the others
      * press nothing there. Said once per context; the frame goes on. */
     GRASS_MSG_COLLIDER_TILE_CAP = 413,
+    /* 0.5: a G-buffer view (GRASS_PASS_GBUFFER) was drawn where its attachments cannot go (GL:
+     * the bound draw framebuffer is the default one, or the draw buffer of an attachment that
+     * grass writes is GL_NONE), refused with GRASS_ERROR_INVALID_STATE before anything is
+     * drawn. */
+    GRASS_MSG_GBUFFER_TARGET = 414,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501
@@ -941,6 +947,58 @@ typedef struct grass_lod_origin_desc {
 
 GRASS_API grass_lod_origin_desc grass_default_lod_origin_desc(void);
 
+/* 0.5: What a G-buffer view writes into one of the host's attachments
+ * (grass_view_gbuffer_attachment). */
+typedef enum grass_gbuffer_semantic {
+    GRASS_GBUFFER_NONE = 0,   /* grass writes nothing there */
+    GRASS_GBUFFER_ALBEDO = 1, /* the linear base colour, rgb (design maps applied, unlit) */
+    GRASS_GBUFFER_NORMAL = 2, /* the world normal of the side facing the camera, xyz */
+    /* r: roughness, 1 (grass's own lighting is Lambert's, two-sided, without specular);
+     * g: translucency, 0.25 (the share of the light on a blade's back that its front lets
+     * through, for a host that lights it); b (not in the default mask): the ambient occlusion
+     * grass scales its ambient light by (the blades' own, eq. 6.11, times the ambient map). */
+    GRASS_GBUFFER_MATERIAL = 3,
+    /* rg: the velocity, as grass_view_motion_desc's encoding; needs a grass_view_motion_desc
+     * on the view (else GRASS_ERROR_INVALID_ARGUMENT), whose velocity_attachment it ignores. */
+    GRASS_GBUFFER_VELOCITY = 4
+} grass_gbuffer_semantic;
+
+/* How an attachment stores values: a normal is written n * 0.5 + 0.5 to a UNORM
+ * attachment, as the signed vector to SNORM and FLOAT ones; the other semantics write their
+ * values as they are (a UNORM attachment clamps velocity to 0..1: give it a FLOAT one). */
+typedef enum grass_gbuffer_format {
+    GRASS_GBUFFER_FORMAT_UNORM = 0, /* GL_RGBA8, GL_RGB10_A2, GL_SRGB8_ALPHA8 ... */
+    GRASS_GBUFFER_FORMAT_SNORM = 1, /* GL_RGBA8_SNORM ... */
+    GRASS_GBUFFER_FORMAT_FLOAT = 2  /* GL_RGBA16F, GL_RG16F, GL_R11F_G11F_B10F ... */
+} grass_gbuffer_format;
+
+#define GRASS_MAX_GBUFFER_ATTACHMENTS 8
+
+/* One attachment of a G-buffer. */
+typedef struct grass_gbuffer_attachment {
+    grass_gbuffer_semantic semantic; /* default GRASS_GBUFFER_NONE; each other semantic once */
+    grass_gbuffer_format format;     /* default GRASS_GBUFFER_FORMAT_UNORM */
+    /* The channels grass writes: bit 1 r, 2 g, 4 b, 8 a; 0 to 15. The others keep what the
+     * host had there. 0 (the default) takes the semantic's own: 7 (rgb) for ALBEDO and
+     * NORMAL, 3 (rg) for MATERIAL and VELOCITY. */
+    uint32_t write_mask;
+} grass_gbuffer_attachment;
+
+/* 0.5: Chained on grass_view_desc.next with a grass_view_pass_desc of GRASS_PASS_GBUFFER:
+ * the host's G-buffer layout. Attachment i is the bound framebuffer's draw buffer i
+ * (glDrawBuffers' list, GL_DRAW_BUFFERi); grass routes its outputs there for its draws and
+ * restores the host's draw buffers and colour masks after. A colour or depth view ignores it.
+ * A frame without a G-buffer view compiles, creates and holds nothing for it. */
+typedef struct grass_view_gbuffer_desc {
+    grass_struct_type type;    /* GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC */
+    const void* next;          /* the view's next extension, or NULL */
+    uint32_t attachment_count; /* 1 to GRASS_MAX_GBUFFER_ATTACHMENTS; default 1 */
+    grass_gbuffer_attachment attachments[GRASS_MAX_GBUFFER_ATTACHMENTS];
+} grass_view_gbuffer_desc;
+
+/* Default: one attachment, of semantic NONE (set the semantics). */
+GRASS_API grass_view_gbuffer_desc grass_default_view_gbuffer_desc(void);
+
 /* 0.5: What a view's pass writes (docs/integration.md, "Shadows: grass in the host's shadow
  * maps"). */
 typedef enum grass_pass_kind {
@@ -951,7 +1009,16 @@ typedef enum grass_pass_kind {
      * does no lighting, and writes no colour (GL: every draw buffer's colour mask is off while
      * grass draws it; Vulkan: into the depth-only target of grass_vk_depth_pass_desc, which a
      * Vulkan context needs for it: without one it refuses a depth view, GRASS_ERROR_INVALID_STATE). */
-    GRASS_PASS_DEPTH = 1
+    GRASS_PASS_DEPTH = 1,
+    /* 0.5: A G-buffer, for deferred hosts (docs/integration.md, "Deferred renderers"): every
+     * tier writes its depth and the surface its lighting uses (base colour, normal, roughness
+     * and translucency, velocity) into the host's attachments that a grass_view_gbuffer_desc
+     * on the view describes (required: without one the view is refused,
+     * GRASS_ERROR_INVALID_ARGUMENT), and nothing else: no lit colour, nothing in an attachment
+     * of semantic NONE nor in a channel its write mask leaves off. Coverage is alpha-tested as
+     * the depth pass's (no blending, no alpha to coverage). GL only: a Vulkan context refuses
+     * a G-buffer view (GRASS_ERROR_UNSUPPORTED). */
+    GRASS_PASS_GBUFFER = 2
 } grass_pass_kind;
 
 /* 0.5: Chained on grass_view_desc.next: the pass the view draws. Without it a view is a

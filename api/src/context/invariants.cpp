@@ -67,17 +67,18 @@ grass_result check_plan(grass_context* ctx, const char* fn, const FramePlan& pla
         // The maps' bits are the field's; past them only the responsive bits, the interaction
         // one only while the map is bound, the culling one on geometry draws only, the debug
         // view's exactly when the frame draws one, the depth pass's exactly on a depth view, the shadow
-        // receiver's exactly on a receiving view.
+        // receiver's exactly on a receiving view, the G-buffer's exactly on a G-buffer view.
         const uint32_t map_bits = (1u << kMapRoleCount) - 1u;
         const uint32_t dynamics_bits = draw.features & ~map_bits;
         const bool debug_ok = ((draw.features & kFeatureDebugView) != 0) == ((plan.flags & kDebugViewFlags) != 0) &&
                               ((draw.features & kFeatureDepthPass) != 0) == plan.depth_pass &&
                               ((draw.features & kFeatureShadowReceive) != 0) == plan.shadow_receive &&
                               ((draw.features & kFeatureMotion) != 0) == plan.motion &&
-                              ((draw.features & kFeatureHostLights) != 0) == plan.host_lights;
+                              ((draw.features & kFeatureHostLights) != 0) == plan.host_lights &&
+                              ((draw.features & kFeatureGBuffer) != 0) == plan.gbuffer;
         const bool dynamics_ok =
             (dynamics_bits & ~(kBladeCurveFeatures | kFeatureWindMap | kFeatureDebugView | kFeatureDepthPass |
-                               kFeatureShadowReceive | kFeatureMotion | kFeatureHostLights)) == 0 &&
+                               kFeatureShadowReceive | kFeatureMotion | kFeatureHostLights | kFeatureGBuffer)) == 0 &&
             ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0) &&
             ((dynamics_bits & kFeatureWindMap) != 0) == field->wind_map.active() &&
             ((dynamics_bits & kFeatureWindMap) == 0 || (dynamics_bits & kFeatureWind) != 0) &&

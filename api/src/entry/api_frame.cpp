@@ -4,6 +4,7 @@
 #include "context/invariants.hpp"
 #include "dynamics/colliders.hpp"
 #include "dynamics/dynamics_plan.hpp"
+#include "entry/api_gbuffer.hpp"
 #include "entry/api_lights.hpp"
 #include "entry/api_motion.hpp"
 #include "foundation/abi_sizes.hpp"
@@ -48,21 +49,23 @@ grass_result check_eye(grass_context* ctx, const char* fn, const char* who, cons
 // debug view and keeps the depth test (it is all it writes).
 grass_result check_pass(grass_context* ctx, const char* fn, const grass_view_pass_desc& pass, uint32_t view_flags) {
     const int64_t kind = raw_enum(pass.pass);
-    if (kind != GRASS_PASS_COLOR && kind != GRASS_PASS_DEPTH) {
-        return ctx->fail(
-            GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
-            "%s: grass_view_pass_desc->pass is %lld; expected GRASS_PASS_COLOR (0) or GRASS_PASS_DEPTH (1)", fn,
-            static_cast<long long>(kind));
+    if (kind != GRASS_PASS_COLOR && kind != GRASS_PASS_DEPTH && kind != GRASS_PASS_GBUFFER) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                         "%s: grass_view_pass_desc->pass is %lld; expected GRASS_PASS_COLOR (0), GRASS_PASS_DEPTH (1) "
+                         "or GRASS_PASS_GBUFFER (2)",
+                         fn, static_cast<long long>(kind));
     }
     GRASS_TRY(
         check_range(ctx, fn, "grass_view_pass_desc->depth_bias_constant", pass.depth_bias_constant, -65536.0, 65536.0));
     GRASS_TRY(check_range(ctx, fn, "grass_view_pass_desc->depth_bias_slope", pass.depth_bias_slope, -64.0, 64.0));
     const uint32_t refused = kDebugViewFlags | GRASS_VIEW_FLAG_DEBUG_CELLS | GRASS_VIEW_FLAG_NO_DEPTH_TEST;
-    if (kind == GRASS_PASS_DEPTH && (view_flags & refused) != 0) {
+    if (kind != GRASS_PASS_COLOR && (view_flags & refused) != 0) {
+        const bool depth = kind == GRASS_PASS_DEPTH;
         return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
-                         "%s: view->flags is 0x%x with grass_view_pass_desc->pass GRASS_PASS_DEPTH; a depth pass takes "
-                         "no debug view flag and no GRASS_VIEW_FLAG_NO_DEPTH_TEST",
-                         fn, view_flags);
+                         "%s: view->flags is 0x%x with grass_view_pass_desc->pass %s; a %s pass takes no debug view "
+                         "flag and no GRASS_VIEW_FLAG_NO_DEPTH_TEST",
+                         fn, view_flags, depth ? "GRASS_PASS_DEPTH" : "GRASS_PASS_GBUFFER",
+                         depth ? "depth" : "G-buffer");
     }
     return GRASS_SUCCESS;
 }
@@ -139,17 +142,21 @@ grass_result parse_view_chain(grass_context* ctx, const char* fn, const grass_vi
             out->lights = static_cast<const grass_view_lights_desc*>(p);
             GRASS_TRY(check_view_lights(ctx, fn, *out->lights));
             p = out->lights->next;
+        } else if (type == GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC && !out->gbuffer) {
+            out->gbuffer = static_cast<const grass_view_gbuffer_desc*>(p);
+            GRASS_TRY(check_view_gbuffer(ctx, fn, *out->gbuffer));
+            p = out->gbuffer->next;
         } else {
-            return ctx->fail(
-                GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
-                "%s: view->next chain element %u has type 0x%08x; expected "
-                "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC, GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC, "
-                "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC, GRASS_STRUCT_TYPE_VIEW_MOTION_DESC, "
-                "GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC or GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most once",
-                fn, position, static_cast<unsigned>(type));
+            return ctx->fail(GRASS_ERROR_WRONG_STRUCT_TYPE, GRASS_MSG_WRONG_STRUCT_TYPE,
+                             "%s: view->next chain element %u has type 0x%08x; expected "
+                             "GRASS_STRUCT_TYPE_STEREO_VIEW_DESC, GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC, "
+                             "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC, GRASS_STRUCT_TYPE_VIEW_MOTION_DESC, "
+                             "GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC, GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC or "
+                             "GRASS_STRUCT_TYPE_VIEW_PASS_DESC, each at most once",
+                             fn, position, static_cast<unsigned>(type));
         }
     }
-    return GRASS_SUCCESS;
+    return check_gbuffer_chain(ctx, fn, *out);
 }
 
 // Vulkan: the layout the host's map is in while grass's pass runs is one grass samples a
@@ -196,6 +203,12 @@ grass_result check_views(grass_context* ctx, const char* fn, const ViewExtension
                          "%s: view->next chains a grass_view_pass_desc with GRASS_PASS_DEPTH, but the context was "
                          "created without a grass_vk_depth_pass_desc (chained on grass_vk_desc.next): the depth-only "
                          "target grass makes its depth pipelines for",
+                         fn);
+    }
+    if (ext.pass && ext.pass->pass == GRASS_PASS_GBUFFER && ctx->backend->kind() == GRASS_BACKEND_VULKAN) {
+        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
+                         "%s: view->next chains a grass_view_pass_desc with GRASS_PASS_GBUFFER, but the Vulkan "
+                         "backend does not draw G-buffer passes yet (GL does)",
                          fn);
     }
     if (ext.shadow && ctx->backend->kind() == GRASS_BACKEND_VULKAN)

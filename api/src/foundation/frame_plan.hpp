@@ -4,6 +4,7 @@
 #pragma once
 
 #include "foundation/allocator.hpp"
+#include "foundation/shader_interface.hpp"
 
 #include <grass/grass.h>
 
@@ -260,6 +261,13 @@ struct LightUniforms {
 };
 static_assert(sizeof(LightUniforms) == 672, "std140 GrassLights block");
 
+// std140 uniform block `GrassGBuffer` (gbuffer.glsl; GL binding 5): how a G-buffer view
+// encodes its normal, only in such a view's upload.
+struct GBufferUniforms {
+    float normal_encode[4]; // x: scale, y: bias (n * x + y: 0.5, 0.5 for UNORM; 1, 0 otherwise)
+};
+static_assert(sizeof(GBufferUniforms) == 16, "std140 GrassGBuffer block");
+
 struct FramePlan {
     explicit FramePlan(HostAllocator* host)
         : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host) {}
@@ -290,6 +298,15 @@ struct FramePlan {
     // kFeatureHostLights; the backend binds `lights`.
     bool host_lights = false;
     LightUniforms lights{};
+    // A G-buffer view (GRASS_PASS_GBUFFER): every draw has kFeatureGBuffer; the backend binds
+    // `gbuffer_uniforms`, routes output location i (kGBufferOutput) to the host's attachment
+    // gbuffer_attachment[i] (kNoGBufferOutput: none) with the colour mask gbuffer_mask[i]
+    // (bit 1 r, 2 g, 4 b, 8 a), blends nothing and writes no other draw buffer.
+    bool gbuffer = false;
+    uint32_t gbuffer_attachment[kGBufferOutputs] = {kNoGBufferOutput, kNoGBufferOutput, kNoGBufferOutput,
+                                                    kNoGBufferOutput};
+    uint32_t gbuffer_mask[kGBufferOutputs] = {0, 0, 0, 0};
+    GBufferUniforms gbuffer_uniforms{};
     Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
     Vector<TierDraw> draws;         // per field, per tier that draws something
     grass_frame_stats stats{};

@@ -66,8 +66,18 @@ constexpr uint32_t kFeatureMotion = 1u << 12;
 // specular and the ambient harmonics. Set on every draw of such a colour view's plan and no
 // other.
 constexpr uint32_t kFeatureHostLights = 1u << 13;
+// A G-buffer view (GRASS_PASS_GBUFFER, GRASS_GBUFFER in the shaders): its variants write
+// the surface (gbuffer.glsl) to the fixed output locations of kGBufferOutput instead of a lit
+// colour, with the depth pass's coverage. Set on every draw of such a view's plan and no other.
+constexpr uint32_t kFeatureGBuffer = 1u << 14;
 // Every feature mask is below this (the variants a backend may compile).
-constexpr uint32_t kFeatureMaskCount = kFeatureHostLights << 1;
+constexpr uint32_t kFeatureMaskCount = kFeatureGBuffer << 1;
+// The fragment output location of each grass_gbuffer_semantic in the GRASS_GBUFFER variants
+// (gbuffer.glsl): albedo takes the colour's, velocity motion.glsl's; the backend routes each
+// location to the host's attachment of that semantic. kNoGBufferOutput: NONE writes nothing.
+constexpr uint32_t kNoGBufferOutput = 0xffffffffu;
+constexpr uint32_t kGBufferOutputs = 4;
+constexpr uint32_t kGBufferOutput[5] = {kNoGBufferOutput, 0, 2, 3, 1}; // NONE, ALBEDO, NORMAL, MATERIAL, VELOCITY
 // The debug boxes (GRASS_VIEW_FLAG_DEBUG_CELLS, debug_tiers.*) sample the height map alone.
 constexpr uint32_t kDebugBoxFeatures = 1u << kMapHeight;
 // Bindings of responsive grass in the draw shaders (Vulkan set 0): the interaction map's

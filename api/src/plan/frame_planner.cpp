@@ -3,6 +3,7 @@
 #include "dynamics/dynamics_plan.hpp"
 #include "foundation/validate.hpp"
 #include "maps/design_map.hpp"
+#include "plan/gbuffer_plan.hpp"
 #include "plan/lights_plan.hpp"
 #include "plan/lod_setup.hpp"
 #include "plan/motion_plan.hpp"
@@ -568,7 +569,7 @@ void eye_view_projection(const float view[16], const float projection[16], doubl
 // camera-relative in double (the shaders' positions are), the view axis is the camera's.
 static void plan_shadow_receive(const grass_view_desc& view, const ViewExtensions& ext, const double camera[3],
                                 FramePlan* plan) {
-    plan->shadow_receive = ext.shadow != nullptr && !plan->depth_pass;
+    plan->shadow_receive = ext.shadow != nullptr && !plan->depth_pass && !plan->gbuffer;
     plan->shadow = ShadowUniforms{};
     plan->shadow_map = plan->shadow_receive ? ext.shadow->shadow_map : 0u;
     plan->shadow_layout = plan->shadow_receive ? ext.shadow->vk_image_layout : 0u;
@@ -691,6 +692,7 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
             return r;
         }
     }
+    plan_gbuffer(ext, &plan); // before the others: a G-buffer view receives no shadows nor lights
     plan_shadow_receive(view, ext, camera, &plan);
     plan_motion(view, ext, camera, in.time, dynamics.wind ? &in.dynamics.wind : nullptr, dynamics.map_up, &plan);
     plan_lights(ext, camera, &plan);

@@ -44,6 +44,7 @@ struct ViewExtensions {
     const grass_shadow_receive_desc* shadow = nullptr; // the host's shadow map, received (colour views)
     const grass_view_motion_desc* motion = nullptr;    // motion vectors: the previous camera and time
     const grass_view_lights_desc* lights = nullptr;    // the host's lights (colour views)
+    const grass_view_gbuffer_desc* gbuffer = nullptr;  // the host's G-buffer layout (G-buffer views)
 };
 
 // Rebuilds in.plan from a validated view. Fails only when a host lod-test callback

@@ -16,7 +16,7 @@ void unit(const float v[3], float out[4]) {
 } // namespace
 
 void plan_lights(const ViewExtensions& ext, const double camera[3], FramePlan* plan) {
-    plan->host_lights = ext.lights != nullptr && !plan->depth_pass;
+    plan->host_lights = ext.lights != nullptr && !plan->depth_pass && !plan->gbuffer;
     plan->lights = LightUniforms{};
     if (!plan->host_lights) return;
     const grass_view_lights_desc& d = *ext.lights;

@@ -36,7 +36,10 @@ void unjittered_view_projection(const float view[16], const float projection[16]
 
 void plan_motion(const grass_view_desc& view, const ViewExtensions& ext, const double camera[3], double time,
                  const grass_wind_desc* wind, const double up[3], FramePlan* plan) {
-    plan->motion = ext.motion != nullptr && !plan->depth_pass;
+    // A G-buffer view writes velocity where its layout has a VELOCITY attachment alone.
+    plan->motion =
+        ext.motion != nullptr && !plan->depth_pass &&
+        (!plan->gbuffer || plan->gbuffer_attachment[kGBufferOutput[GRASS_GBUFFER_VELOCITY]] != kNoGBufferOutput);
     plan->velocity_attachment = plan->motion ? ext.motion->velocity_attachment : 0u;
     plan->motion_uniforms = MotionUniforms{};
     if (!plan->motion) return;

@@ -25,6 +25,7 @@ DEFINES = {
     "GRASS_MAX_VIEWS_PER_FRAME": 16,
     "GRASS_MAX_SHADOW_CASCADES": 4,
     "GRASS_MAX_VIEW_LIGHTS": 8,
+    "GRASS_MAX_GBUFFER_ATTACHMENTS": 8,
     "GRASS_MAX_COLLIDERS": 65536, "GRASS_MAX_COLLIDERS_PER_TILE": 1024,
     "GRASS_MAX_MEMORY_HEAPS": 16,
 }
@@ -63,6 +64,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC": 0x67720013,
         "GRASS_STRUCT_TYPE_VIEW_MOTION_DESC": 0x67720014,
         "GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC": 0x67720015,
+        "GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC": 0x67720016,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -83,6 +85,7 @@ ENUMS = {
         "GRASS_MSG_DEBUG_LABELS_UNAVAILABLE": 410,
         "GRASS_MSG_FRAMES_IN_FLIGHT": 411,
         "GRASS_MSG_VELOCITY_TARGET": 412, "GRASS_MSG_COLLIDER_TILE_CAP": 413,
+        "GRASS_MSG_GBUFFER_TARGET": 414,
         "GRASS_MSG_CONTEXT_CREATED": 500, "GRASS_MSG_PATCH_GENERATED": 501,
     },
     "grass_depth_mode": {"GRASS_DEPTH_LESS": 0, "GRASS_DEPTH_GREATER": 1},
@@ -94,7 +97,14 @@ ENUMS = {
         "GRASS_MAP_FORMAT_RGBA8_UNORM": 4, "GRASS_MAP_FORMAT_RGBA16_UNORM": 5, "GRASS_MAP_FORMAT_RGBA32_FLOAT": 6,
     },
     "grass_tier_kind": {"GRASS_TIER_GEOMETRY": 0, "GRASS_TIER_VOLUME": 1, "GRASS_TIER_IMAGE": 2},
-    "grass_pass_kind": {"GRASS_PASS_COLOR": 0, "GRASS_PASS_DEPTH": 1},
+    "grass_pass_kind": {"GRASS_PASS_COLOR": 0, "GRASS_PASS_DEPTH": 1, "GRASS_PASS_GBUFFER": 2},
+    "grass_gbuffer_semantic": {
+        "GRASS_GBUFFER_NONE": 0, "GRASS_GBUFFER_ALBEDO": 1, "GRASS_GBUFFER_NORMAL": 2, "GRASS_GBUFFER_MATERIAL": 3,
+        "GRASS_GBUFFER_VELOCITY": 4,
+    },
+    "grass_gbuffer_format": {
+        "GRASS_GBUFFER_FORMAT_UNORM": 0, "GRASS_GBUFFER_FORMAT_SNORM": 1, "GRASS_GBUFFER_FORMAT_FLOAT": 2,
+    },
     "grass_shadow_compare": {"GRASS_SHADOW_COMPARE_LESS_EQUAL": 0, "GRASS_SHADOW_COMPARE_GREATER_EQUAL": 1},
     "grass_light_kind": {"GRASS_LIGHT_DIRECTIONAL": 0, "GRASS_LIGHT_POINT": 1, "GRASS_LIGHT_SPOT": 2},
     "grass_lod_answer": {"GRASS_LOD_DISCARD": 0, "GRASS_LOD_SPLIT": 1, "GRASS_LOD_DRAW": 2},
@@ -271,6 +281,15 @@ class grass_lod_origin_desc(Structure):
 class grass_view_pass_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("pass", grass_enum), ("depth_bias_constant", c_float),
                 ("depth_bias_slope", c_float)]
+
+
+class grass_gbuffer_attachment(Structure):
+    _fields_ = [("semantic", grass_enum), ("format", grass_enum), ("write_mask", c_uint32)]
+
+
+class grass_view_gbuffer_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("attachment_count", c_uint32),
+                ("attachments", grass_gbuffer_attachment * DEFINES["GRASS_MAX_GBUFFER_ATTACHMENTS"])]
 
 
 class grass_shadow_receive_desc(Structure):
@@ -457,6 +476,7 @@ FUNCTIONS = {
     "grass_begin_frame": (grass_enum, [_ctx, _P(grass_view_desc)]),
     "grass_end_frame": (grass_enum, [_ctx]),
     "grass_default_view_pass_desc": (grass_view_pass_desc, []),
+    "grass_default_view_gbuffer_desc": (grass_view_gbuffer_desc, []),
     "grass_default_shadow_receive_desc": (grass_shadow_receive_desc, []),
     "grass_default_view_motion_desc": (grass_view_motion_desc, []),
     "grass_default_light": (grass_light, []),

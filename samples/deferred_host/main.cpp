@@ -1,0 +1,282 @@
+// grass-deferred: a small deferred renderer with grass in its G-buffer (docs/integration.md,
+// "Deferred renderers"). Headless GL 4.5 (the test hosts' EGL context), one frame, a PNG:
+//
+//   grass-deferred [out.png]        default out.png: grass-deferred.png
+//
+// 1. The G-buffer: base colour (RGBA16F, linear), normal (RGBA8, n * 0.5 + 0.5), material
+//    (RGBA8: roughness, translucency, ambient occlusion) and depth. The host draws its ground
+//    into it, then grass draws a GRASS_PASS_GBUFFER view into the same attachments.
+// 2. The lighting pass: one full-screen triangle reads the G-buffer and lights every pixel,
+//    ground and grass alike, with a low sun, an ambient term and three point lights (glTF's
+//    falloff, as grass_light's), into an sRGB target that becomes the PNG.
+// Exits 0 when the picture holds lit grass (at least a tenth of its pixels green-dominant,
+// and the point lights brightening over 2000 pixels by more than 40 levels against the sun
+// alone), 1 otherwise.
+#include "gl_loader.hpp"
+#include "headless_host.hpp"
+#include "host_factories.hpp"
+#include "image_io.hpp"
+
+#include <grass/grass_gl.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr uint32_t kWidth = 480, kHeight = 270;
+
+// The G-buffer's ground: a quad at y = 0 over the field and around it, camera-relative.
+const char* const kGroundVert = R"(#version 450
+layout(location = 0) uniform mat4 u_view_projection; // camera-relative world -> clip
+layout(location = 1) uniform vec3 u_camera;
+void main() {
+    const vec2 corners[6] = vec2[](vec2(0, 0), vec2(1, 0), vec2(1, 1), vec2(0, 0), vec2(1, 1), vec2(0, 1));
+    vec2 corner = corners[gl_VertexID];
+    vec3 world = vec3(mix(-40.0, 56.0, corner.x), 0.0, mix(-40.0, 56.0, corner.y));
+    gl_Position = u_view_projection * vec4(world - u_camera, 1.0);
+}
+)";
+const char* const kGroundFrag = R"(#version 450
+layout(location = 0) out vec4 out_albedo;
+layout(location = 1) out vec4 out_normal;
+layout(location = 2) out vec4 out_material;
+void main() {
+    out_albedo = vec4(0.09, 0.065, 0.035, 1.0);     // soil
+    out_normal = vec4(0.5, 1.0, 0.5, 1.0);          // up, encoded as grass encodes a UNORM normal
+    out_material = vec4(1.0, 0.0, 1.0, 1.0);        // rough, opaque, unoccluded
+}
+)";
+
+// The lighting pass: every pixel of the G-buffer lit by the sun, the ambient light and the
+// point lights; the sky where nothing was drawn.
+const char* const kLightVert = R"(#version 450
+void main() {
+    vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+    gl_Position = vec4(p, 0.0, 1.0);
+}
+)";
+const char* const kLightFrag = R"(#version 450
+layout(binding = 0) uniform sampler2D g_albedo;
+layout(binding = 1) uniform sampler2D g_normal;
+layout(binding = 2) uniform sampler2D g_material;
+layout(binding = 3) uniform sampler2D g_depth;
+layout(location = 0) uniform mat4 u_view_projection; // camera-relative world -> clip
+layout(location = 1) uniform vec2 u_size;
+layout(location = 2) uniform vec3 u_sun_direction;   // towards the sun
+layout(location = 3) uniform vec3 u_sun_color;
+layout(location = 4) uniform vec3 u_ambient;
+layout(location = 5) uniform vec4 u_light_position[3]; // camera-relative xyz, w: range
+layout(location = 8) uniform vec4 u_light_color[3];    // rgb x intensity
+layout(location = 0) out vec4 out_color;
+// What a blade lets through to its front of the light on its back (the material's g).
+vec3 diffuse(vec3 albedo, vec3 n, vec3 l, float translucency) {
+    float d = dot(n, l);
+    return albedo * (max(d, 0.0) + translucency * max(-d, 0.0));
+}
+void main() {
+    ivec2 p = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(g_depth, p, 0).r;
+    if (depth >= 1.0) { out_color = vec4(0.30, 0.42, 0.62, 1.0); return; }
+    vec3 albedo = texelFetch(g_albedo, p, 0).rgb;
+    vec3 n = normalize(texelFetch(g_normal, p, 0).xyz * 2.0 - 1.0);
+    vec3 m = texelFetch(g_material, p, 0).rgb;
+    vec4 clip = vec4(gl_FragCoord.xy / u_size * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+    vec4 rel = inverse(u_view_projection) * clip;
+    vec3 position = rel.xyz / rel.w; // camera-relative
+    vec3 color = albedo * u_ambient * m.b + u_sun_color * diffuse(albedo, n, u_sun_direction, m.g);
+    for (int i = 0; i < 3; ++i) {
+        vec3 to_light = u_light_position[i].xyz - position;
+        float d = length(to_light);
+        float fade = clamp(1.0 - pow(d / u_light_position[i].w, 4.0), 0.0, 1.0);
+        color += u_light_color[i].rgb * diffuse(albedo, n, to_light / d, m.g) * fade * fade / max(d * d, 1e-4);
+    }
+    out_color = vec4(color, 1.0);
+}
+)";
+
+// GL entry points beyond the bootstrap's table.
+struct Textures {
+    PFNGLCREATETEXTURESPROC CreateTextures = nullptr;
+    PFNGLTEXTURESTORAGE2DPROC TextureStorage2D = nullptr;
+    PFNGLNAMEDFRAMEBUFFERTEXTUREPROC NamedFramebufferTexture = nullptr;
+    PFNGLNAMEDFRAMEBUFFERDRAWBUFFERSPROC NamedFramebufferDrawBuffers = nullptr;
+    PFNGLBINDTEXTUREUNITPROC BindTextureUnit = nullptr;
+    PFNGLUNIFORMMATRIX4FVPROC UniformMatrix4fv = nullptr;
+    PFNGLUNIFORM2FPROC Uniform2f = nullptr;
+    PFNGLUNIFORM3FVPROC Uniform3fv = nullptr;
+    PFNGLUNIFORM4FVPROC Uniform4fv = nullptr;
+};
+
+void* load_proc(void* host, const char* name) { return static_cast<grass_host::Host*>(host)->gl_proc_address(name); }
+
+void log_message(void*, grass_log_level level, grass_message_id id, const char* message) {
+    std::fprintf(stderr, "grass %s %d: %s\n", level == GRASS_LOG_ERROR ? "error" : "warning", int(id), message);
+}
+
+bool ok(grass_result r, const char* call) {
+    if (r != GRASS_SUCCESS) std::fprintf(stderr, "%s failed: %s\n", call, grass_result_string(r));
+    return r == GRASS_SUCCESS;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    const std::string out_path = argc > 1 ? argv[1] : "grass-deferred.png";
+    grass_host::TargetDesc target;
+    target.width = kWidth;
+    target.height = kHeight;
+    std::string error;
+    std::unique_ptr<grass_host::Host> host = grass_host::create_gl_host(target, &error);
+    grass_bootstrap::GlFunctions gl;
+    Textures tx;
+    if (!host || !gl.load(&load_proc, host.get(), &error)) {
+        std::fprintf(stderr, "no GL 4.5 context: %s\n", error.c_str());
+        return 1;
+    }
+#define LOAD(name) tx.name = reinterpret_cast<decltype(tx.name)>(host->gl_proc_address("gl" #name))
+    LOAD(CreateTextures);
+    LOAD(TextureStorage2D);
+    LOAD(NamedFramebufferTexture);
+    LOAD(NamedFramebufferDrawBuffers);
+    LOAD(BindTextureUnit);
+    LOAD(UniformMatrix4fv);
+    LOAD(Uniform2f);
+    LOAD(Uniform3fv);
+    LOAD(Uniform4fv);
+#undef LOAD
+
+    // The G-buffer (albedo, normal, material, depth) and the lit target.
+    GLuint textures[5], gbuffer = 0, lit = 0;
+    const GLenum formats[5] = {GL_RGBA16F, GL_RGBA8, GL_RGBA8, GL_DEPTH_COMPONENT32F, GL_SRGB8_ALPHA8};
+    tx.CreateTextures(GL_TEXTURE_2D, 5, textures);
+    for (int i = 0; i < 5; ++i) tx.TextureStorage2D(textures[i], 1, formats[i], kWidth, kHeight);
+    gl.CreateFramebuffers(1, &gbuffer);
+    gl.CreateFramebuffers(1, &lit);
+    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    for (int i = 0; i < 3; ++i) tx.NamedFramebufferTexture(gbuffer, buffers[i], textures[i], 0);
+    tx.NamedFramebufferTexture(gbuffer, GL_DEPTH_ATTACHMENT, textures[3], 0);
+    tx.NamedFramebufferDrawBuffers(gbuffer, 3, buffers);
+    tx.NamedFramebufferTexture(lit, GL_COLOR_ATTACHMENT0, textures[4], 0);
+    const GLuint ground = grass_bootstrap::compile_program(gl, kGroundVert, kGroundFrag, "ground", &error);
+    const GLuint lighting = grass_bootstrap::compile_program(gl, kLightVert, kLightFrag, "lighting", &error);
+    if (!ground || !lighting) {
+        std::fprintf(stderr, "%s\n", error.c_str());
+        return 1;
+    }
+    GLuint vertex_array = 0;
+    gl.CreateVertexArrays(1, &vertex_array);
+
+    grass_context_desc cd = grass_default_context_desc();
+    cd.log_fn = log_message;
+    grass_context* ctx = nullptr;
+    grass_patch_id patch{};
+    grass_field_id field{};
+    grass_patch_desc pd = grass_default_patch_desc();
+    grass_field_desc fd = grass_default_field_desc();
+    if (!ok(host->create_context(cd, &ctx), "grass_gl_create_context")) return 1;
+    bool success = ok(grass_create_patch(ctx, &pd, &patch), "grass_create_patch");
+    fd.patch = patch;
+    fd.cells_x = fd.cells_z = 64; // 16 m x 16 m
+    success = success && ok(grass_create_field(ctx, &fd, &field), "grass_create_field");
+
+    // The camera 1.4 m up at the field's edge, in a late afternoon: a low sun, three lamps in the grass.
+    const double eye[3] = {8.0, 1.4, -0.5}, at[3] = {8.0, 0.0, 8.0};
+    grass_view_desc view = grass_host::make_view(*host, eye, at, 55.0f, 0.05f, 100.0f);
+    view.viewport[2] = kWidth;
+    view.viewport[3] = kHeight;
+    float vp[16]; // camera-relative world -> clip: the projection times the view's rotation
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            float s = 0.0f;
+            for (int k = 0; k < 3; ++k) s += view.projection[4 * k + r] * (c < 3 ? view.view[4 * c + k] : 0.0f);
+            vp[4 * c + r] = c < 3 ? s : view.projection[12 + r];
+        }
+    }
+    const float far_depth = 1.0f, zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    gl.BindFramebuffer(GL_FRAMEBUFFER, gbuffer);
+    gl.Viewport(0, 0, kWidth, kHeight);
+    for (int i = 0; i < 3; ++i) gl.ClearBufferfv(GL_COLOR, i, zero);
+    gl.ClearBufferfv(GL_DEPTH, 0, &far_depth);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LEQUAL);
+    gl.UseProgram(ground);
+    gl.BindVertexArray(vertex_array);
+    const float camera[3] = {float(eye[0]), float(eye[1]), float(eye[2])};
+    tx.UniformMatrix4fv(0, 1, GL_FALSE, vp);
+    tx.Uniform3fv(1, 1, camera);
+    gl.DrawArrays(GL_TRIANGLES, 0, 6);
+
+    // grass into the same G-buffer: albedo, normal, material (with its ambient occlusion).
+    grass_view_gbuffer_desc layout = grass_default_view_gbuffer_desc();
+    layout.attachment_count = 3;
+    layout.attachments[0].semantic = GRASS_GBUFFER_ALBEDO;
+    layout.attachments[0].format = GRASS_GBUFFER_FORMAT_FLOAT;
+    layout.attachments[1].semantic = GRASS_GBUFFER_NORMAL;
+    layout.attachments[2].semantic = GRASS_GBUFFER_MATERIAL;
+    layout.attachments[2].write_mask = 0x7;
+    grass_view_pass_desc pass = grass_default_view_pass_desc();
+    pass.pass = GRASS_PASS_GBUFFER;
+    pass.next = &layout;
+    view.next = &pass;
+    success = success && ok(grass_begin_frame(ctx, &view), "grass_begin_frame") &&
+              ok(grass_gl_render(ctx), "grass_gl_render") && ok(grass_end_frame(ctx), "grass_end_frame");
+
+    // The lighting pass into the sRGB target.
+    const float sun_direction[3] = {-0.48f, 0.52f, 0.71f}, sun_color[3] = {1.0f, 0.82f, 0.62f}; // unit; warm
+    const float ambient[3] = {0.12f, 0.15f, 0.22f};
+    const double lamps[3][3] = {{6.0, 0.5, 3.0}, {10.5, 0.6, 5.0}, {7.5, 0.4, 9.0}};
+    const float lamp_colors[3][4] = {{2.4f, 1.6f, 0.7f, 0.0f}, {0.6f, 1.2f, 2.6f, 0.0f}, {2.2f, 0.8f, 1.8f, 0.0f}};
+    float lamp_positions[3][4];
+    for (int i = 0; i < 3; ++i) {
+        for (int c = 0; c < 3; ++c) lamp_positions[i][c] = float(lamps[i][c] - eye[c]);
+        lamp_positions[i][3] = 6.0f; // range (m)
+    }
+    // Lights the G-buffer into the sRGB target and reads it back, top row first; `with_lamps`
+    // false: the sun and the ambient light alone (what the lamps add is checked below).
+    const auto light_and_read = [&](bool with_lamps) {
+        const float none[3][4] = {};
+        gl.BindFramebuffer(GL_FRAMEBUFFER, lit);
+        gl.Disable(GL_DEPTH_TEST);
+        gl.Enable(GL_FRAMEBUFFER_SRGB);
+        gl.UseProgram(lighting);
+        for (int i = 0; i < 4; ++i) tx.BindTextureUnit(GLuint(i), textures[i]);
+        tx.UniformMatrix4fv(0, 1, GL_FALSE, vp);
+        tx.Uniform2f(1, float(kWidth), float(kHeight));
+        tx.Uniform3fv(2, 1, sun_direction);
+        tx.Uniform3fv(3, 1, sun_color);
+        tx.Uniform3fv(4, 1, ambient);
+        tx.Uniform4fv(5, 3, &lamp_positions[0][0]);
+        tx.Uniform4fv(8, 3, with_lamps ? &lamp_colors[0][0] : &none[0][0]);
+        gl.DrawArrays(GL_TRIANGLES, 0, 3);
+        std::vector<uint8_t> rows(size_t(kWidth) * kHeight * 4), top_first(rows.size());
+        gl.Disable(GL_FRAMEBUFFER_SRGB); // the stored sRGB bytes as they are
+        gl.ReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+        const size_t row = size_t(kWidth) * 4;
+        for (uint32_t y = 0; y < kHeight; ++y) std::memcpy(&top_first[y * row], &rows[(kHeight - 1 - y) * row], row);
+        return top_first;
+    };
+    const std::vector<uint8_t> sun_only = light_and_read(false);
+    grass_host::Image image;
+    image.width = kWidth;
+    image.height = kHeight;
+    image.rgba = light_and_read(true);
+    long green = 0, lit_by_lamps = 0;
+    for (size_t p = 0; p < image.rgba.size(); p += 4) {
+        const uint8_t* c = &image.rgba[p];
+        green += c[1] > c[0] + 8 && c[1] > c[2] + 8 ? 1 : 0;
+        int brighter = 0;
+        for (int k = 0; k < 3; ++k) brighter = std::max(brighter, int(c[k]) - int(sun_only[p + size_t(k)]));
+        lit_by_lamps += brighter > 40 ? 1 : 0;
+    }
+    success = success && grass_host::write_png(out_path, image, &error);
+    std::printf("wrote %s: %ld of %u pixels green, %ld over 40 levels brighter for the lamps\n", out_path.c_str(),
+                green, kWidth * kHeight, lit_by_lamps);
+    success = success && green * 10 >= long(kWidth) * kHeight && lit_by_lamps > 2000;
+    if (!success) std::fprintf(stderr, "the picture holds no lit grass (or could not be written: %s)\n", error.c_str());
+    grass_destroy_context(ctx);
+    return success ? 0 : 1;
+}
