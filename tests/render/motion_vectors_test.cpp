@@ -211,6 +211,31 @@ protected:
         return v;
     }
 
+    // Tier case k of the gust and trail tests: sparse blades seen from above (k 0; their
+    // coverage moves over the dark ground), the volume of 2 slices a cell (k 1, seen from 45
+    // degrees: from above the rays meet the grass near its roots, which hardly move), the
+    // image tier (k 2, from above).
+    grass_field_desc tier_case_field(int k) {
+        const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
+        grass_field_desc d = k == 0 ? field_desc(4) : solo_tier_field(4, kinds[k], k == 1 ? 2u : 0u, 4);
+        if (k == 0) d.density = 0.15f;
+        return d;
+    }
+    // Two frames of the top-down camera (`oblique`: 45 degrees down): *a at time ta, drawn with
+    // previous_time = ta (nothing moves), and *b at tb, whose previous frame is a.
+    void draw_pair(double ta, double tb, bool oblique, Frame* a, Frame* b) {
+        const float none[2] = {0.0f, 0.0f};
+        const grass_view_desc first = top_down(ta, oblique);
+        grass_view_motion_desc still = motion_of(first, none);
+        grass_view_desc v0 = first;
+        v0.next = &still;
+        *a = draw(v0);
+        grass_view_desc v1 = top_down(tb, oblique);
+        grass_view_motion_desc motion = motion_of(first, none);
+        v1.next = &motion;
+        *b = draw(v1);
+    }
+
     // What frame b's velocity explains of how it differs from frame a (the finite difference
     // of two frames): each of b's grass pixels against frame a where its velocity says that
     // grass was (bilinear), against a at the same pixel, and at the opposite displacement. It
@@ -382,25 +407,11 @@ TEST_P(MotionVectorsTest, AGustMovesTheGrassAsTwoFramesDo) {
     soft.stiffness = 10.0f; // blades that the gusts bend far
     ASSERT_EQ(grass_set_blade_mechanics(ctx, patch, &soft), GRASS_SUCCESS) << log;
     const double t0 = 22.0, t1 = 23.0; // the gust passing changes the bend
-    const float none[2] = {0.0f, 0.0f};
-    const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
     const char* const names[3] = {"geometry", "volume", "image"};
     for (int k = 0; k < 3; ++k) {
-        // Sparse blades seen from above (their coverage moves over the dark ground); the
-        // volume from 45 degrees (seen from above, the rays meet the grass near its roots,
-        // which hardly move); the image tier from above.
-        grass_field_desc d = k == 0 ? field_desc(4) : solo_tier_field(4, kinds[k], k == 1 ? 2u : 0u, 4);
-        if (k == 0) d.density = 0.15f;
-        const grass_field_id field = make_field(d);
-        const grass_view_desc first = top_down(t0, k == 1);
-        grass_view_motion_desc still = motion_of(first, none); // previous_time = t0: no motion
-        grass_view_desc v0 = first;
-        v0.next = &still;
-        const Frame a = draw(v0);
-        grass_view_desc v1 = top_down(t1, k == 1);
-        grass_view_motion_desc motion = motion_of(first, none);
-        v1.next = &motion;
-        const Frame b = draw(v1);
+        const grass_field_id field = make_field(tier_case_field(k));
+        Frame a, b;
+        draw_pair(t0, t1, k == 1, &a, &b);
         expect_still(a, names[k]);
         // Blades bend and turn as they move, and the volume's velocity is its depth point's
         // (the tips in front of it move more): they are held to less than the image tier.
@@ -424,27 +435,16 @@ TEST_P(MotionVectorsTest, ATrailStandingUpMovesTheGrassAsTwoFramesDo) {
     ball.center[1] = 1.02;
     ball.center[2] = 0.5;
     const double t0 = 30.0, t1 = 30.3, t2 = 30.5;
-    const float none[2] = {0.0f, 0.0f};
-    const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
     const char* const names[3] = {"geometry", "volume", "image"};
     for (int k = 0; k < 3; ++k) {
-        grass_field_desc d = k == 0 ? field_desc(4) : solo_tier_field(4, kinds[k], k == 1 ? 2u : 0u, 4);
-        if (k == 0) d.density = 0.15f;
-        const grass_field_id field = make_field(d);
+        const grass_field_id field = make_field(tier_case_field(k));
         const grass_interaction_desc fresh = grass_default_interaction_desc(); // no trail of the last tier's
         ASSERT_EQ(grass_set_interaction(ctx, &fresh), GRASS_SUCCESS) << log;
         ASSERT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS) << log;
         draw(top_down(t0, k == 1));
         ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS) << log;
-        const grass_view_desc first = top_down(t1, k == 1);
-        grass_view_motion_desc still = motion_of(first, none);
-        grass_view_desc v0 = first;
-        v0.next = &still;
-        const Frame a = draw(v0);
-        grass_view_desc v1 = top_down(t2, k == 1);
-        grass_view_motion_desc motion = motion_of(first, none);
-        v1.next = &motion;
-        const Frame b = draw(v1);
+        Frame a, b;
+        draw_pair(t1, t2, k == 1, &a, &b);
         expect_still(a, names[k]);
         // Rising blades also stand taller in the picture, and the trail brightens unevenly as
         // it stands up (its shade follows each texel's press; one gain takes out its mean):
