@@ -3,6 +3,7 @@
 // seen from a low camera is opaque as blades (the control: a blades-everywhere render of the
 // same view); the tiers that replace the blades there must not leave holes either.
 // The scene is Lemme's five tiers on distances scaled to a 12 m field seen from 0.5 m up.
+#include "coverage_colour.hpp"
 #include "render_fixture.hpp"
 
 #include <algorithm>
@@ -19,10 +20,7 @@ constexpr uint32_t kCells = 48; // 12 m x 12 m
 constexpr float kFov = 40.0f;
 const double kEye[3] = {6.0, 0.5, -0.3}, kTarget[3] = {6.0, 0.2, 12.0};
 
-double linear(uint8_t byte) {
-    const double c = byte / 255.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
+double linear(uint8_t byte) { return grass_host::srgb_to_linear(byte); }
 
 // A pixel's colour channel in linear RGB, from the float read-back when there is one.
 double linear_at(const grass_host::Image& image, uint32_t x, uint32_t y, int c) {

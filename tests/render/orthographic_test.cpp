@@ -17,6 +17,7 @@
 //     8.9 / 9.0, now 0.0 / 0.17
 //   rings' colour against the blades': before at most 3.1 / 3.9 levels off where it covered
 //     (slanted rays from a near eye meet vertical slices), now 7.5 / 5.7 (below)
+#include "coverage_colour.hpp"
 #include "render_fixture.hpp"
 
 #include <algorithm>
@@ -35,11 +36,9 @@ constexpr float kDistanceScale = 0.1f;                      // of the default qu
 constexpr int kRings = 5;                                   // bands of distance from the lod origin
 const double kRingEnd[kRings] = {1.25, 2.5, 5.0, 7.5, 1e9}; // m: tier 1, 1-2, 2-3, 3-4, 4 (0-based)
 
-double linear(uint8_t byte) {
-    const double c = byte / 255.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-double srgb(double l) { return 255.0 * (l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055); }
+using grass_host::largest_channel_difference;
+double linear(uint8_t byte) { return grass_host::srgb_to_linear(byte); }
+double srgb(double l) { return grass_host::linear_to_srgb_levels(l); }
 
 // Whether the grass covers every sample of a pixel: over the pure blue clear colour a pixel
 // one of whose 4 samples the grass (linear blue under 0.15) leaves clear reads at least 0.2
@@ -196,12 +195,6 @@ double covered(const grass_host::Image& image) {
         for (uint32_t x = 0; x < image.width; ++x) n += covered(image, x, y);
     }
     return double(n) / (double(image.width) * image.height);
-}
-
-double largest_channel_difference(const double a[3], const double b[3]) {
-    double d = 0.0;
-    for (int c = 0; c < 3; ++c) d = std::max(d, std::fabs(a[c] - b[c]));
-    return d;
 }
 
 // The seed-to-seed spread of the blades (two patch and mirror seeds) is measured in every

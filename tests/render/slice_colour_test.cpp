@@ -2,11 +2,12 @@
 // volume tier alone and by blades have the same mean colour, row band by row band, within
 // what another seed of the blades themselves shows, in several lights. The test prints what
 // it measures.
+#include "coverage_colour.hpp"
 #include "render_fixture.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace grass_test {
 namespace {
@@ -133,23 +134,8 @@ void add_host_light(HostLight kind, grass_view_desc* v, grass_view_lights_desc* 
     v->next = d;
 }
 
-double linear(uint8_t byte) {
-    const double c = byte / 255.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-double srgb(double l) { return 255.0 * (l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055); }
-
-// A render over a black and over a white background: a pixel that the grass covers by c
-// with colour g reads c g over black and c g + (1 - c) over white (the resolve mixes in
-// linear RGB), so c = 1 - (white - black) and the grass's own colour follows.
-struct Pair {
-    grass_host::Image black, white;
-    double coverage(uint32_t x, uint32_t y) const {
-        double c = 0.0;
-        for (int ch = 0; ch < 3; ++ch) c += 1.0 - (linear(white.pixel(x, y)[ch]) - linear(black.pixel(x, y)[ch]));
-        return std::clamp(c / 3.0, 0.0, 1.0);
-    }
-};
+using grass_host::largest_channel_difference;
+using Pair = grass_host::CoveragePair;
 
 struct Bands {
     double colour[kBands][3] = {}; // coverage-weighted mean sRGB of the grass
@@ -159,24 +145,12 @@ struct Bands {
 // The grass rows [first, last) of `p` split into kBands bands of equal height.
 Bands measure(const Pair& p, uint32_t first, uint32_t last) {
     Bands b;
-    double sum[kBands][3] = {};
-    for (uint32_t y = first; y < last; ++y) {
-        const int band = std::min(kBands - 1, int((y - first) * kBands / (last - first)));
-        for (uint32_t x = 0; x < p.black.width; ++x) {
-            b.coverage[band] += p.coverage(x, y);
-            for (int ch = 0; ch < 3; ++ch) sum[band][ch] += linear(p.black.pixel(x, y)[ch]);
-        }
-    }
+    const std::vector<grass_host::BandColour> bands = grass_host::band_colours(p, first, last, kBands);
     for (int k = 0; k < kBands; ++k) {
-        for (int ch = 0; ch < 3; ++ch) b.colour[k][ch] = b.coverage[k] > 0.0 ? srgb(sum[k][ch] / b.coverage[k]) : 0.0;
+        b.coverage[k] = bands[size_t(k)].coverage;
+        for (int ch = 0; ch < 3; ++ch) b.colour[k][ch] = bands[size_t(k)].colour[ch];
     }
     return b;
-}
-
-double largest_channel_difference(const double a[3], const double b[3]) {
-    double d = 0.0;
-    for (int ch = 0; ch < 3; ++ch) d = std::max(d, std::fabs(a[ch] - b[ch]));
-    return d;
 }
 
 constexpr int kLightCount = int(sizeof(kLights) / sizeof(kLights[0]));
@@ -244,15 +218,8 @@ TEST_P(SliceColourTest, VolumeAndImageRowBandsMatchTheBladesWithinTheSeedSpread)
         const Pair& v = images[kVolume][count];
         const Pair& im = images[kImage][count];
         // The rows the blades cover (more than 2 pixels' worth in a row), far to near.
-        uint32_t first = a.black.height, last = 0;
-        for (uint32_t y = 0; y < a.black.height; ++y) {
-            double row = 0.0;
-            for (uint32_t x = 0; x < a.black.width; ++x) row += a.coverage(x, y);
-            if (row > 2.0) {
-                first = std::min(first, y);
-                last = y + 1;
-            }
-        }
+        uint32_t first = 0, last = 0;
+        grass_host::covered_rows(a, 2.0, &first, &last);
         ASSERT_GT(last, first + 3 * kBands) << "no grass in the blades' render (" << name << ")";
         blades[count] = measure(a, first, last);
         const Bands other = measure(b, first, last);

@@ -18,5 +18,6 @@ Subcommand add_tier_cost(CLI::App& measure);   // tier_cost.cpp
 Subcommand add_popping(CLI::App& measure);     // popping.cpp
 Subcommand add_dynamics(CLI::App& measure);    // dynamics.cpp
 Subcommand add_first_frame(CLI::App& measure); // first_frame.cpp
+Subcommand add_tier_sweep(CLI::App& measure);  // tier_sweep.cpp
 
 } // namespace grass_measure
