@@ -100,6 +100,7 @@ struct FieldData {
     vec4 wind_map_v;       // xyz: ... and wind map v
     vec4 culling;          // per-blade culling (blade_culling.glsl): x: orientation limit (2: off),
                            // y: frustum tolerance (< 0: off), z: distance max (m; 0: off), w: levels (0: by threshold)
+    vec4 alpha_test_scale[4]; // the horizontal slice's alpha-test scale per mip level, 4 a row (sample_coverage.glsl)
 };
 
 // The Frame and Field blocks (uniform buffers, std140), read as `frame` and `field`. Each

@@ -89,6 +89,8 @@ void main() {
     vec2 dx = dFdx(v_local), dy = dFdy(v_local);
     vec3 coord = vec3(uv, 0.0);
     vec4 albedo = textureGrad(slice_color, coord, dx, dy);
+    vec2 texels = vec2(textureSize(slice_color, 0).xy);
+    albedo.a = horizontal_slice_alpha(albedo.a, log2(max(max(length(dx * texels), length(dy * texels)), 1.0)));
     vec4 normal_height = textureGrad(slice_normal, coord, dx, dy);
     vec4 thresholds = textureGrad(slice_threshold, coord, dx, dy); // r: threshold, gba: coverage curve
     float threshold = thresholds.r;
@@ -111,21 +113,27 @@ void main() {
     if (!write_coverage(alpha)) discard;
     if (depth_pass()) return; // the coverage's depth alone: no lighting, no colour
 
-    // The slice's colour and heights are what a grazing ray sees (slice_baker.cpp,
-    // apply_grazing): the blades' upper parts, whose ambient occlusion the height gives. Its
-    // normals are the view's: layers 1 and 2 hold those a ray 10 degrees up sees heading
-    // along x and along z (the blades it meets broadside), lit each and weighed by the view's
-    // heading, as the volume weighs its two slice families. Steeper views turn to layer 0's,
-    // seen from above (the blades' parts that face up), whose up component is scaled by
-    // sin(elevation) (from an elevation one sees more of the blades' sides; their spread, the
-    // mean's length, kept). The four sign lobes of the two horizontal components light the
-    // blades that face the camera from every side (lighting.glsl).
+    // Layers 1 and 2 hold what a grazing ray sees (slice_baker.cpp, apply_grazing): the
+    // colour and heights of the blades' upper parts, whose ambient occlusion the height
+    // gives, and the normals a ray 10 degrees up sees heading along x and along z (the blades
+    // it meets broadside), lit each and weighed by the view's heading, as the volume weighs
+    // its two slice families. Steeper views turn to layer 0's colour, heights and normals,
+    // seen from above (the tips and, through the gaps, the darker lower parts; the blades'
+    // parts that face up), whose normals' up component is scaled by sin(elevation) (from an
+    // elevation one sees more of the blades' sides; their spread, the mean's length, kept).
+    // The four sign lobes of the two horizontal components light the blades that face the
+    // camera from every side (lighting.glsl).
     vec3 to_camera = world_to_patch_direction(to_viewer);
     vec3 sun = world_to_patch_direction(frame.sun_direction.xyz);
-    float height = normal_height.w * field.blade_params.w; // the grazing view's (slice_baker.cpp)
+    vec4 grazing_normal_height = textureGrad(slice_normal, vec3(uv, 1.0), dx, dy);
+    vec3 grazing_albedo = textureGrad(slice_color, vec3(uv, 1.0), dx, dy).rgb;
+    const float sin_baked = 0.173648; // sin(10 degrees), the grazing bake's elevation
+    float steep = clamp((sin_elevation - sin_baked) / (1.0 - sin_baked), 0.0, 1.0);
+    float height = mix(grazing_normal_height.w, normal_height.w, steep) * field.blade_params.w;
     float ao = blade_ambient_occlusion(density, height, field.blade_params.x, field.blade_params.y);
     // The design maps per pixel (lemme 6.4.2-6.4.3): colour modulation, then the light maps.
-    vec3 base = modulate_color(albedo.rgb, cell_point) * shade;
+    vec3 base_grazing = modulate_color(grazing_albedo, cell_point) * shade;
+    vec3 base_above = modulate_color(albedo.rgb, cell_point) * shade;
     vec2 light = light_maps(cell_point);
 #ifdef GRASS_HOST_SHADOWS
     light.y *= host_sun_visibility(v_position); // the host's shadow at the quad's point
@@ -145,26 +153,25 @@ void main() {
         u.y *= sin_elevation;
         n_above = dot(u, u) > 1e-8 ? normalize(u) * r : vec3(0.0, r, 0.0);
     }
-    vec3 n_x = textureGrad(slice_normal, vec3(uv, 1.0), dx, dy).xyz * 2.0 - 1.0;
+    vec3 n_x = grazing_normal_height.xyz * 2.0 - 1.0;
     vec3 n_z = textureGrad(slice_normal, vec3(uv, 2.0), dx, dy).xyz * 2.0 - 1.0;
     float along_x = abs(to_camera.x) / max(abs(to_camera.x) + abs(to_camera.z), 1e-6);
-    const float sin_baked = 0.173648; // sin(10 degrees), the grazing bake's elevation
-    float steep = clamp((sin_elevation - sin_baked) / (1.0 - sin_baked), 0.0, 1.0);
 #ifdef GRASS_GBUFFER // the surface the lighting below weighs, as one normal
     vec3 n_grazing = mix(gbuffer_slice_normal(n_z, folded, to_camera), gbuffer_slice_normal(n_x, folded, to_camera),
                          along_x);
     vec3 n_patch = mix(n_grazing, gbuffer_slice_normal(n_above, folded, to_camera), steep);
-    write_gbuffer(base, normalize(mat3(field.patch_to_world) * n_patch), ao * light.x);
+    write_gbuffer(mix(base_grazing, base_above, steep), normalize(mat3(field.patch_to_world) * n_patch),
+                  ao * light.x);
 #ifdef GRASS_VELOCITY
     write_velocity(clip_velocity(clip_now(v_position), clip_before(before)));
 #endif
     return;
 #endif
-    vec3 grazing = mix(slice_light(base, n_z, folded, to_camera, sun, ao, light, bend_dir, turn),
-                       slice_light(base, n_x, folded, to_camera, sun, ao, light, bend_dir, turn), along_x);
+    vec3 grazing = mix(slice_light(base_grazing, n_z, folded, to_camera, sun, ao, light, bend_dir, turn),
+                       slice_light(base_grazing, n_x, folded, to_camera, sun, ao, light, bend_dir, turn), along_x);
     vec3 color = grazing;
     if (steep > 0.0) {
-        color = mix(grazing, slice_light(base, n_above, folded, to_camera, sun, ao, light, bend_dir, turn),
+        color = mix(grazing, slice_light(base_above, n_above, folded, to_camera, sun, ao, light, bend_dir, turn),
                     steep);
     }
     out_color = debug_thresholds() ? threshold_code(threshold) : output_color(vec4(debug_tint(color), alpha));

@@ -21,6 +21,21 @@
 // keep a fragment whose alpha reaches 1/2.
 const float kOpaqueAlpha = 0.99;
 
+// The horizontal slice's alpha at mip `lod` as this target draws it. Its mips keep the mean
+// opacity (slice_mips.hpp), which a multisampled target draws as a share of its samples. A
+// single-sampled one keeps a fragment whose alpha reaches 1/2 (write_coverage), which a mean
+// of 0.8 passes everywhere: there the coverage-preserving scale of the level (lemme eq.
+// 4.13-4.15, per level in field.alpha_test_scale) makes the share of texels that pass that
+// of level 0.
+float horizontal_slice_alpha(float alpha, float lod) {
+    if (sample_count() > 1) return alpha;
+    float l = clamp(lod, 0.0, 15.0);
+    int k = int(l);
+    int k1 = min(k + 1, 15);
+    float s = mix(field.alpha_test_scale[k >> 2][k & 3], field.alpha_test_scale[k1 >> 2][k1 & 3], l - float(k));
+    return min(alpha * s, 1.0);
+}
+
 bool write_coverage(float alpha) {
     int n = sample_count();
     if (n <= 1 || alpha >= min(kOpaqueAlpha, 1.0 - 0.5 / float(n))) {

@@ -190,6 +190,7 @@ void composite(vec3 h, vec3 hit, float t, int kind, float slab) {
     vec4 albedo;
     if (kind == 2 || g_taps <= 1.0) {
         albedo = textureLod(slice_color, coord, color_lod);
+        if (kind == 2) albedo.a = horizontal_slice_alpha(albedo.a, color_lod);
     } else {
         // The share's colour and coverage: taps from its top down, each for 1/taps of it,
         // looked up no coarser than the height it stands for. The slices a grazing ray runs

@@ -74,7 +74,8 @@ const Light kLights[] = {{"default", {0.0f, 0.0f, 0.0f}, true, kSunTermLimit, kI
                          // under a low sun ahead. Measured (GL), levels off the blades against a
                          // spread of 3.0, far / middle / near band:
                          //              volume          image (far, middle)
-                         //   point      0.2, 0.6, 8.4   1.7, 4.7
+                         //   point      0.2, 0.6, 8.9   1.7, 4.7  (near band 8.4 before the horizontal
+                         //                                     slice kept its mean opacity, slice_mips.hpp)
                          //   spot       0.8, 0.3, 1.7   0.8, 7.4
                          //   harmonics  1.0, 0.5, 2.4   2.4, 0.3
                          //   specular   0.9, 2.5, 2.4   7.9, 7.0  (without it 0.1, 0.4, 1.0 and 0.8, 2.9)
@@ -87,7 +88,7 @@ const Light kLights[] = {{"default", {0.0f, 0.0f, 0.0f}, true, kSunTermLimit, kI
                          // in the far and middle bands; specular's image far band 8.9 (GL 7.9): the
                          // blades there 0.8 lighter than GL's (under a sun ahead the backends' blades
                          // differ without the lights too: facing, near band, 2.8), hence 6, not 5.
-                         {"point", {0.0f, 1.0f, 0.0f}, false, 5.5, 2.0, kPointLight},
+                         {"point", {0.0f, 1.0f, 0.0f}, false, 6.0, 2.0, kPointLight},
                          {"spot", {0.0f, 1.0f, 0.0f}, false, 0.0, 4.5, kSpotLight},
                          {"harmonics", {0.0f, 1.0f, 0.0f}, false, 0.0, kImageColourLimit, kHarmonics},
                          {"specular", {0.0f, 0.3f, 1.0f}, true, 0.0, 6.0, kSpecular}};

@@ -4,9 +4,13 @@
 // as much as the blades; the coverage curve baked with the slices (baked_slices.hpp) draws
 // the share of each texel's blades that the density keeps. The test prints what it measures.
 // Measured (GL; coverage of the field's footprint in linear RGB, 4x MSAA, 5 m up looking
-// 9 m ahead):
-//   density 0.1: blades 0.316, volume 8 0.326, volume 2 0.287, volume 1 0.316, image 0.264
-//   density 0.3: blades 0.605, volume 8 0.616, volume 2 0.599, volume 1 0.636, image 0.587
+// 9 m ahead; Vulkan within 0.01):
+//   density 0.1: blades 0.316, volume 8 0.323, volume 2 0.270, volume 1 0.262, image 0.254
+//   density 0.3: blades 0.605, volume 8 0.628, volume 2 0.575, volume 1 0.564, image 0.582
+// Before the horizontal slice's mips kept its mean opacity (slice_mips.hpp), volume 2 and 1
+// read 0.287 and 0.316 at 0.1: each tier's coverage is measured against its own colour at
+// density 1, and there the slices let the sky through (volume 1 covered less of the field
+// than the blades), which made every lower density read as more covered.
 // With the coverage curve interpolated linearly from (0, 0) instead of geometrically
 // (tier_transitions.glsl), density 0.1 gave volume 8 0.263, volume 2 0.231, volume 1 0.235:
 // a texel of a thick slab holds many blades and is mostly covered at low density already.
@@ -36,7 +40,7 @@ protected:
 };
 
 // The largest difference of each representation's coverage to the blades'.
-constexpr double kLimit[5] = {0.0, 0.06, 0.06, 0.06, 0.07};
+constexpr double kLimit[5] = {0.0, 0.06, 0.06, 0.07, 0.07};
 
 TEST_P(TierDensityTest, ThinGrassCoversAboutAsMuchInEveryTier) {
     grass_host::TargetDesc t;

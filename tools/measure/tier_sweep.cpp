@@ -13,7 +13,7 @@
 // degrees down (a horizontal axis through the ground sees the field edge on). The tool exits 1
 // when a tier covers under a fifth of what the blades cover in a band from 10 degrees up
 // (the image tier's one horizontal slice is seen edge on at 0).
-// Usage: grass-measure tier-sweep [--backend gl|vk] [--size WxH] [--distance M] [--images DIR] [--quick]
+// Usage: grass-measure tier-sweep [--backend gl|vk] [--size WxH] [--distance M] [--samples 1|4] [--images DIR] [--quick]
 #include "cli.hpp"
 #include "coverage_colour.hpp"
 #include "headless_host.hpp"
@@ -44,6 +44,7 @@ struct Options {
     double distance = 9.0; // metres from the field's centre
     std::string images;    // a directory for every render, or empty
     bool quick = false;    // elevations 0, 40 and 90 under the suns ahead and at the zenith only
+    uint32_t samples = 4;  // the target's samples: 1 or 4
 };
 
 struct Sun {
@@ -77,7 +78,7 @@ struct Rig {
         grass_host::TargetDesc t;
         t.width = o.width;
         t.height = o.height;
-        t.samples = 4;
+        t.samples = o.samples;
         for (int c = 0; c < 3; ++c) t.clear_color[c] = white ? 1.0f : 0.0f;
         std::string error;
         host = grass_host::Host::create(o.backend, t, &error);
@@ -203,9 +204,9 @@ int run(const Options& o) {
             }
         }
     }
-    std::printf("grass-measure tier-sweep: %s (%s), %ux%u at 4 samples, %u x %u cells of %.2f m seen from %.1f m\n",
-                grass_sample::backend_name(o.backend), device.c_str(), o.width, o.height, kCells, kCells, kCellSize,
-                o.distance);
+    std::printf("grass-measure tier-sweep: %s (%s), %ux%u at %u samples, %u x %u cells of %.2f m seen from %.1f m\n",
+                grass_sample::backend_name(o.backend), device.c_str(), o.width, o.height, o.samples, kCells, kCells,
+                kCellSize, o.distance);
     // Per case: [0] over the host's ground, [1] the grass's own colour; the seed spread and
     // each tier's score.
     struct Row {
@@ -291,6 +292,9 @@ Subcommand add_tier_sweep(CLI::App& measure) {
     app->add_option("--distance", o->distance, "the camera's distance from the field's centre (m)")
         ->capture_default_str()
         ->check(CLI::Range(2.0, 100.0));
+    app->add_option("--samples", o->samples, "the target's samples (4: grass's coverage is a share of them)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({1, 4}));
     app->add_flag("--quick", o->quick, "elevations 0, 40 and 90 under the suns ahead and at the zenith only");
     app->add_option("--images", o->images, "a directory to write every render into (over black and over white)");
     return {app, [o]() { return tier_sweep::run(*o); }};

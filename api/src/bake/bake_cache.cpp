@@ -306,6 +306,7 @@ CacheMiss load_baked(const char* directory, uint64_t key, HostAllocator* host, S
         out->color = std::move(set.color);
         out->normal = std::move(set.normal);
         out->threshold = std::move(set.threshold);
+        set_alpha_test_scales(out, host);
         miss = CacheMiss::none;
     } while (false);
     std::fclose(f);

@@ -16,10 +16,11 @@ namespace grass {
 
 // Bump when the baked bytes for the same key would change: the file layout, the baker, the
 // mip filters, or the patch generator (the key hashes the desc, not the generated patch).
-constexpr uint32_t kBakeFormatVersion = 8; // 4: the threshold channel holds the coverage curve; 5: folded normals;
+constexpr uint32_t kBakeFormatVersion = 9; // 4: the threshold channel holds the coverage curve; 5: folded normals;
                                            // 6: partly covered texels keep their colour; 7: the
                                            // horizontal slice's colour and heights seen grazing;
-                                           // 8: the image tier's grazing normals per heading
+                                           // 8: the image tier's grazing normals per heading;
+                                           // 9: the horizontal slice's mips keep the mean opacity
 
 // FNV-1a 64 over the format version, every field of the desc but type and next (by value,
 // little-endian, floats by their bits), and the bake parameters (0 sizes replaced by the

@@ -16,9 +16,10 @@ namespace grass {
 // z = (i + 0.5) / N, each holding the blades inside its slab [i/N, (i+1)/N], and layer 2N the
 // horizontal slice at the set's size, which the volume shows near the ground for views from
 // above, after boulanger2006 3.3), or the image tier's horizontal slice (N = 0, the whole
-// patch seen from above) in three layers that differ only in their normals: layer 0 those
-// seen from above, layers 1 and 2 those a grazing ray sees heading along x and along z
-// (slice_baker.cpp; image.frag lights with the pair the view's heading picks).
+// patch seen from above) in three layers of the same coverage and thresholds: layer 0 the
+// colour, heights and normals seen from above, layers 1 and 2 the colour and heights a
+// grazing ray sees and its normals heading along x and along z (slice_baker.cpp; image.frag
+// lights with the pair the view's heading picks, and turns to layer 0 as the view steepens).
 //
 // Texel (s, t) of a vertical slice orthogonal to x: s = z in [0, 1) across the patch, t = y
 // from 0 (ground, row 0) to `height_patch_units` (top row); orthogonal to z: s = x. Texel
@@ -52,6 +53,14 @@ struct SliceSet {
     // alpha x (curve(high) - curve(low)) for the thresholds its density and transitions select.
     Vector<uint16_t> threshold;
     uint64_t content_hash = 0; // FNV-1a 64 over color, normal, threshold
+    // The horizontal slice (layer 2N; the image tier's layers alike) keeps its mean opacity
+    // through the mips, which a multisampled target draws as a share of its samples. A
+    // single-sampled one alpha-tests at 1/2, which needs the coverage-preserving scale of
+    // eq. 4.13-4.15 instead: alpha_test_scale[k] is that scale for mip k (1 at level 0 and
+    // past the last level), applied by the shaders (sample_coverage.glsl). Derived from the
+    // stored alphas (set_alpha_test_scales, slice_mips.hpp), not stored in the cache.
+    static constexpr uint32_t kAlphaTestLevels = 16;
+    float alpha_test_scale[kAlphaTestLevels] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
 
     // Offset (in texels) of mip `level` of `layer` in the arrays.
     uint64_t offset(uint32_t layer, uint32_t level) const;

@@ -184,17 +184,18 @@ View layer_view(uint32_t slices_per_axis, uint32_t layer, double height_units) {
 // above, but the tier is drawn far away, where the view grazes the blade layer and meets the
 // blades' upper, lighter parts first; from above one also sees their darker lower parts and
 // bases through the gaps (the image tier came out 7-19 sRGB levels darker than the blades).
-// Its colour is therefore what a ray at kImageTierElevation sees first, along the four axis
-// headings: each blade point is projected along the ray onto the ground (the texel the ray
-// lands in), the nearest along the ray kept, and the four headings averaged, weighted by
-// their coverage; likewise the height of what it sees (for the blades' ambient occlusion).
-// Its alpha and thresholds stay those seen from above.
+// Its colour in layers 1 and 2 is therefore what a ray at kImageTierElevation sees first,
+// along the four axis headings: each blade point is projected along the ray onto the ground
+// (the texel the ray lands in), the nearest along the ray kept, and the four headings
+// averaged, weighted by their coverage; likewise the height of what it sees (for the blades'
+// ambient occlusion). Layer 0 keeps the colour and heights seen from above, for steep views.
+// The alpha and thresholds of every layer stay those seen from above.
 // Its normals depend on the heading (issue 12, the light from the side): a ray heading along
 // z sees the blades that face it broadside, whose normals lean along z, and few of those
 // that face x, which a sun from the side lights best; along x the other way round. Averaged
 // over the headings, or seen from above, a sun from the side lit the image tier 11-13 levels
 // brighter than the blades. So the set keeps three layers (slice_layer_count): the normals
-// seen from above (layer 0, for steep views), and those seen grazing along x (layer 1) and
+// (and colour) seen from above (layer 0, for steep views), and those seen grazing along x (layer 1) and
 // along z (layer 2), each the mean over the two opposite headings, folded as the slice's
 // normals are (up signed, x and z as magnitudes); image.frag lights with both and weighs them
 // by the view's heading.
@@ -274,9 +275,12 @@ void see_grazing(const Vector<Triangle>& triangles, double height_scale, uint32_
 }
 
 // Gives the covered texels of `level0` (the horizontal slice from above) the grazing view's
-// colour and heights, and for `normals` 1 (along x) or 2 (along z) that heading's normals
-// (0: those seen from above stay).
+// colour and heights, and for `normals` 1 (along x) or 2 (along z) that heading's normals.
+// Layer 0 (`normals` 0) keeps the colour, heights and normals seen from above, which steep
+// views turn to (image.frag): seen from 90 degrees, the grazing colour made the image tier
+// 18-20 levels lighter than the blades (docs/records/tier-sweep.md).
 void apply_grazing(const GrazingView& g, uint32_t normals, SliceImage* level0) {
+    if (normals == 0) return;
     for (size_t i = 0; i < level0->texels(); ++i) {
         const size_t x = (i % level0->width) * g.w / level0->width, y = (i / level0->width) * g.h / level0->height;
         const double* acc = &g.sum[(y * g.w + x) * GrazingView::kValues];
@@ -284,7 +288,7 @@ void apply_grazing(const GrazingView& g, uint32_t normals, SliceImage* level0) {
         for (int c = 0; c < 3; ++c) level0->color[i * 3 + c] = static_cast<float>(acc[c] / acc[4]);
         level0->normal[i * 4 + 3] = static_cast<float>(acc[3] / acc[4]);
         const double* family = acc + (normals == 1 ? 5 : 9);
-        if (normals == 0 || !(family[3] > 0.0)) continue; // no ray of that heading lands here
+        if (!(family[3] > 0.0)) continue; // no ray of that heading lands here
         for (int c = 0; c < 3; ++c) level0->normal[i * 4 + c] = static_cast<float>(family[c] / family[3]);
     }
 }
@@ -374,11 +378,16 @@ void bake_slices(const PatchData& patch, uint32_t slices_per_axis, uint32_t widt
         levels.emplace_back(host);
         raster.resolve(&levels[0]);
         if (slices_per_axis == 0) apply_grazing(grazing, layer, &levels[0]);
-        build_coverage_mips(&levels, out->mip_levels, host);
+        // The horizontal slice (the image tier's layers, the volume's last) keeps its mean
+        // opacity; the vertical slices their alpha-tested coverage (slice_mips.hpp).
+        const bool horizontal = (slices_per_axis == 0 || layer == 2 * slices_per_axis);
+        build_coverage_mips(&levels, out->mip_levels, host,
+                            horizontal ? MipAlphaBase::kMeanOpacity : MipAlphaBase::kMean);
         bleed_colours(&levels);
         encode_layer(levels, layer, out);
     }
     out->content_hash = slice_content_hash(*out);
+    set_alpha_test_scales(out, host);
 }
 
 } // namespace grass

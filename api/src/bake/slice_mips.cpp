@@ -1,5 +1,6 @@
 #include "bake/slice_mips.hpp"
 
+#include "bake/baked_slices.hpp"
 #include "bake/srgb_encode.hpp"
 
 #include <algorithm>
@@ -160,12 +161,34 @@ void build_coverage_mips(Vector<SliceImage>* levels, uint32_t level_count, HostA
         const uint64_t texels = level.texels();
         // round(base coverage * texels), in integers.
         const uint64_t target = (2 * base_count * texels + base_texels) / (2 * base_texels);
-        const double scale = coverage_scale(level.alpha, target, &sorted);
+        const double scale = base == MipAlphaBase::kMeanOpacity ? 1.0 : coverage_scale(level.alpha, target, &sorted);
         for (size_t i = 0; i < texels; ++i) {
             float& a = level.alpha[i];
             a = quantise_unorm8(static_cast<float>(std::min(1.0, scale * static_cast<double>(a)))); // eq. 4.15
             if (a == 0.0f) level.threshold[i] = 0; // a trace that rounds to nothing: no blade
         }
+    }
+}
+
+void set_alpha_test_scales(SliceSet* set, HostAllocator* host) {
+    for (float& s : set->alpha_test_scale) s = 1.0f;
+    if (set->layers == 0 || set->color.empty()) return;
+    const uint32_t layer = set->slices_per_axis ? 2 * set->slices_per_axis : 0;
+    Vector<float> alpha{StlAllocator<float>(host)}, sorted{StlAllocator<float>(host)};
+    const auto read = [&](uint32_t level) {
+        const uint64_t texels = uint64_t(set->level_width(level)) * set->level_height(level);
+        const uint8_t* rgba = &set->color[set->offset(layer, level) * 4];
+        alpha.resize(texels);
+        for (uint64_t i = 0; i < texels; ++i) alpha[i] = static_cast<float>(rgba[i * 4 + 3]) / 255.0f;
+        return texels;
+    };
+    const uint64_t base_texels = read(0);
+    const uint64_t base_count = count_above(alpha, kCoverageReference);
+    const uint32_t levels = std::min(set->mip_levels, SliceSet::kAlphaTestLevels);
+    for (uint32_t k = 1; k < levels; ++k) {
+        const uint64_t texels = read(k);
+        const uint64_t target = (2 * base_count * texels + base_texels) / (2 * base_texels);
+        set->alpha_test_scale[k] = static_cast<float>(coverage_scale(alpha, target, &sorted));
     }
 }
 

@@ -31,6 +31,13 @@ enum class MipAlphaBase {
     // coverage back (default patch, N = 8, mean over layers: +45% at 64 x 16; at 32 x 8
     // each layer ends +100% or 0, and every level below is 0).
     kMax,
+    // The footprint's mean, not rescaled: the mean opacity. For the horizontal slice, which
+    // a ray meets once and whose alpha the tiers draw as an opacity (the share of a pixel's
+    // samples, sample_coverage.glsl): a rescale that keeps the alpha-tested coverage (the
+    // share of texels above a_r) moves the mean instead. Seen from above through a coarse
+    // level, the default patch's horizontal slice covered 0.57-0.66 of the view where the
+    // blades cover 0.82 (docs/records/tier-sweep.md).
+    kMeanOpacity,
 };
 
 // `levels` holds level 0; appends levels 1 .. level_count - 1. Each texel of level k
@@ -38,7 +45,7 @@ enum class MipAlphaBase {
 //   colour  = alpha-weighted average (eq. 4.9-4.10; 0 where all alphas are 0);
 //   alpha   = scale_k * base (eq. 4.15, base: MipAlphaBase), clamped to 1, scale_k chosen
 //             from the sorted values so that the coverage at a_r (eq. 4.11) is the closest
-//             achievable to level 0's (eq. 4.13-4.14);
+//             achievable to level 0's (eq. 4.13-4.14); kMeanOpacity: the mean, scale 1;
 //   normal  = alpha-weighted average, renormalised (plain average where all alphas are 0);
 //             w (height) alpha-weighted;
 //   threshold = that of the footprint texel with the largest alpha (ties: smaller); 0 where
@@ -47,6 +54,11 @@ enum class MipAlphaBase {
 // coverage measured on the stored bytes is the one the scale was chosen for.
 void build_coverage_mips(Vector<SliceImage>* levels, uint32_t level_count, HostAllocator* host,
                          MipAlphaBase base = MipAlphaBase::kMean);
+
+// SliceSet::alpha_test_scale from the stored alphas of `set`'s horizontal slice: per mip,
+// the scale of eq. 4.13-4.14 that gives the share of level 0's texels above a_r.
+struct SliceSet;
+void set_alpha_test_scales(SliceSet* set, HostAllocator* host);
 
 // eq. 4.7-4.8: every channel is the plain average of its footprint (alpha included).
 void build_box_mips(Vector<SliceImage>* levels, uint32_t level_count, HostAllocator* host);

@@ -125,8 +125,11 @@ struct FieldUniforms {
     // x = orientation limit (|cos|; 2 = off), y = frustum tolerance (relative to w; < 0 = off),
     // z = distance max (m; 0 = off), w = distance levels (0 = thinning by threshold)
     float culling[4];
+    // Volume and image draws: the horizontal slice's alpha-test scale per mip level (SliceSet::
+    // alpha_test_scale, 4 levels a row), which single-sampled targets apply; 1 elsewhere.
+    float alpha_test_scale[4][4];
 };
-static_assert(sizeof(FieldUniforms) == 400, "std140 Field block");
+static_assert(sizeof(FieldUniforms) == 464, "std140 Field block");
 
 // One patch instance of any tier: a cell, or a macro-cell of count[0] x count[1] cells.
 // Vertex input, per instance: location 5 (vec4), location 6 (uvec4) and location 7 (vec4). The exact integer

@@ -527,6 +527,11 @@ private:
         u->culling[1] = c.frustum_tolerance;
         u->culling[2] = c.distance_max;
         u->culling[3] = c.distance_levels;
+        const SliceSet* slices = kind == GRASS_TIER_GEOMETRY ? nullptr
+                                 : kind == GRASS_TIER_VOLUME ? patch_.slices(field_.lod.tiers[tier].slices)
+                                                             : patch_.slices(0);
+        for (uint32_t k = 0; k < 16; ++k)
+            u->alpha_test_scale[k / 4][k % 4] = slices ? slices->alpha_test_scale[k] : 1.0f;
     }
 
     const FramePlanning& in_;
