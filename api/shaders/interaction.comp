@@ -11,6 +11,7 @@ layout(std140, binding = 0) uniform Interaction {
     ivec4 window; // xy: the window's first texel mod N, zw: W - W_prev (clamped to +-N)
     vec4 origin;  // xy: texel W's lower corner relative to the camera (m), z: texel size (m), w: time step (s)
     uvec4 counts; // x: N, y: tile size (texels), z: tiles per side, w: 1 = clear everything
+    vec4 reach;   // x: a texel centre this far beyond a collider's footprint is pressed as if under its edge (m)
 } level;
 
 // api/src/foundation/frame_plan.hpp GpuCollider: u, v, h in the map's frame (m; h above the anchor).
@@ -63,6 +64,15 @@ vec2 away_from(vec2 column, vec2 q, float d, float r, vec2 velocity, vec2 fallba
     return speed > 0.0 ? velocity / speed : fallback;
 }
 
+// The horizontal distance from the axis of a collider of radius r at which a texel centre d
+// from it is pressed. The coarse level stretches the footprint across up by its reach, to
+// r + reach (half a texel's diagonal: every texel the footprint overlaps is pressed, so a
+// collider narrower than a texel cannot slip between the centres). Strictly increasing in
+// d, so the deepest contact of a passage is at one point of it, at any frame rate.
+float reached(float d, float r) {
+    return level.reach.x > 0.0 ? d * (r / (r + level.reach.x)) : d;
+}
+
 void sphere_contact(inout Contact best, Collider c, vec2 column, float dt, vec2 fallback) {
     float r = c.a.w;
     vec3 c1 = c.a.xyz;
@@ -72,9 +82,10 @@ void sphere_contact(inout Contact best, Collider c, vec2 column, float dt, vec2 
     float s = len2 > 0.0 ? clamp(dot(column - c0.xy, sweep) / len2, 0.0, 1.0) : 1.0;
     vec3 cs = mix(c0, c1, s);
     float d = length(column - cs.xy);
-    if (d >= r) return;
-    bool continues = c.velocity.w > 0.5 && length(column - c0.xy) < r; // w: not new (bin_colliders)
-    keep(best, cs.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, cs.xy, d, r, c.velocity.xy, fallback),
+    float e = reached(d, r);
+    if (e >= r) return;
+    bool continues = c.velocity.w > 0.5 && reached(length(column - c0.xy), r) < r; // w: not new (bin_colliders)
+    keep(best, cs.z - sqrt(r * r - e * e), (1.0 - s) * dt, away_from(column, cs.xy, d, r, c.velocity.xy, fallback),
          continues);
 }
 
@@ -93,9 +104,10 @@ void capsule_contact(inout Contact best, Collider c, vec2 column, float dt, floa
         float t = axis2 > 0.0 ? clamp(dot(column - a.xy, axis.xy) / axis2, 0.0, 1.0) : (axis.z < 0.0 ? 1.0 : 0.0);
         vec3 q = a + axis * t;
         float d = length(column - q.xy);
-        if (d >= r) continue;
+        float e = reached(d, r);
+        if (e >= r) continue;
         continues = continues || (k == 0 && c.velocity.w > 0.5);
-        keep(best, q.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, q.xy, d, r, v.xy, fallback),
+        keep(best, q.z - sqrt(r * r - e * e), (1.0 - s) * dt, away_from(column, q.xy, d, r, v.xy, fallback),
              continues);
     }
 }

@@ -17,6 +17,13 @@
 namespace grass {
 
 constexpr double kReanchorDistance = 1e4; // metres along up
+// The coarse level (1) stretches a collider's footprint across up by this many texels (half a
+// texel's diagonal, rounded up): a texel centre d from the axis of a collider of radius r is
+// pressed as the collider presses at d r / (r + reach). Every texel the footprint overlaps
+// is pressed, so a collider narrower than a coarse texel (a leg, a 1 m
+// ball on 1 m texels) cannot slip between the centres and its trail reads from afar. The
+// fine level (0) presses exactly under the footprint.
+constexpr double kCoarseReach = 0.7072;
 
 grass_interaction_desc default_interaction_desc();
 

@@ -185,8 +185,10 @@ struct InteractionLevelUniforms {
     float origin[4];    // xy: texel W's lower corner relative to the camera along u, v (m); z: texel size (m);
                         // w: time step (s)
     uint32_t counts[4]; // x: resolution N, y: tile size in texels, z: tiles per side, w: 1 = clear everything
+    float reach[4];     // x: how far beyond a collider's footprint a texel centre is still pressed (m): half a
+                        // texel's diagonal on the coarse level, 0 on the fine one (kCoarseReach); yzw unused
 };
-static_assert(sizeof(InteractionLevelUniforms) == 48, "std140 Interaction block");
+static_assert(sizeof(InteractionLevelUniforms) == 64, "std140 Interaction block");
 
 // The interaction pass of one frame: run when map_levels > 0 (and the map exists or colliders
 // ask for it). tile_offsets[level] has tiles^2 + 1 entries into tile_colliders[level]: the
