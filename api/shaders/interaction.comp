@@ -11,7 +11,7 @@ layout(std140, binding = 0) uniform Interaction {
     ivec4 window; // xy: the window's first texel mod N, zw: W - W_prev (clamped to +-N)
     vec4 origin;  // xy: texel W's lower corner relative to the camera (m), z: texel size (m), w: time step (s)
     uvec4 counts; // x: N, y: tile size (texels), z: tiles per side, w: 1 = clear everything
-    vec4 reach;   // x: a texel centre this far beyond a collider's footprint is pressed as if under its edge (m)
+    vec4 least;   // x: the least footprint radius of the level (m): a narrower collider's is widened to it
 } level;
 
 // api/src/foundation/frame_plan.hpp GpuCollider: u, v, h in the map's frame (m; h above the anchor).
@@ -65,12 +65,13 @@ vec2 away_from(vec2 column, vec2 q, float d, float r, vec2 velocity, vec2 fallba
 }
 
 // The horizontal distance from the axis of a collider of radius r at which a texel centre d
-// from it is pressed. The coarse level stretches the footprint across up by its reach, to
-// r + reach (half a texel's diagonal: every texel the footprint overlaps is pressed, so a
-// collider narrower than a texel cannot slip between the centres). Strictly increasing in
-// d, so the deepest contact of a passage is at one point of it, at any frame rate.
+// from it is pressed. The coarse level widens a footprint narrower than half a texel's
+// diagonal to that radius R (d r / R), so every point of it lies within R of a texel centre
+// and a collider narrower than a texel cannot slip between the centres; a wider one is
+// pressed exactly. Strictly increasing in d: the deepest contact of a passage is at one
+// point of it, at any frame rate.
 float reached(float d, float r) {
-    return level.reach.x > 0.0 ? d * (r / (r + level.reach.x)) : d;
+    return level.least.x > r ? d * (r / level.least.x) : d;
 }
 
 void sphere_contact(inout Contact best, Collider c, vec2 column, float dt, vec2 fallback) {

@@ -201,7 +201,7 @@ TEST_F(DynamicsPlanTest, TheMapIsMadeAtTheFirstFrameWithCollidersAndFollowsTheCa
         EXPECT_EQ(lu.counts[2], 16u);
         EXPECT_NEAR(plan().frame.map_levels[level][0], std::fmod(2.0 / texel, 256.0), 1e-4);
         EXPECT_FLOAT_EQ(plan().frame.map_levels[level][2], float(1.0 / texel));
-        EXPECT_FLOAT_EQ(lu.reach[0], level == 0 ? 0.0f : float(0.7072 * texel)); // coarse: half a diagonal
+        EXPECT_FLOAT_EQ(lu.least_radius[0], level == 0 ? 0.0f : float(0.7072 * texel)); // coarse: half a diagonal
     }
     // The next frame: not new, not cleared; a move of 3 level-0 texels along u shifts by 3.
     eye[0] += 0.15;

@@ -273,12 +273,13 @@ TEST_F(InteractionPassTest, ScrollingKeepsTheWorldsTrailsAndClearsWhatLeftTheWin
     }
 }
 
-// The coarse level presses every texel a collider's footprint overlaps (docs/responsive.md):
-// a thin sphere (5 cm) resting on the corner of four 1 m coarse texels, 0.71 m from each
-// centre, presses all four nearly to the ground and no other; the fine level only under it. Tested
-// at the centres alone, the coarse level had no mark of it. A ball rolled 1 s leaves the same
-// coarse texels at 30 fps as in one step (the reach does not depend on the frame rate).
-TEST_F(InteractionPassTest, TheCoarseLevelPressesEveryTexelAThinColliderOverlaps) {
+// The coarse level misses no collider narrower than its texels (docs/responsive.md): it
+// widens the footprint to half a texel's diagonal. A thin sphere (5 cm) resting on the corner
+// of four 1 m coarse texels, 0.71 m from each centre, presses all four below its centre and
+// no other; the fine level only under it. Tested at the centres alone, the coarse level had
+// no mark of it. A ball rolled 1 s leaves the same coarse texels at 30 fps as in one step
+// (the widening does not depend on the frame rate).
+TEST_F(InteractionPassTest, TheCoarseLevelMissesNoThinCollider) {
     const double eye[3] = {2.0, 3.0, 2.0};
     const grass_collider c = sphere(3.0, 0.05, 3.0, 0.05f);
     ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS);
@@ -297,7 +298,7 @@ TEST_F(InteractionPassTest, TheCoarseLevelPressesEveryTexelAThinColliderOverlaps
             const InteractionTexel* t = read(plan(), map[1], 1, eye, centre);
             ASSERT_NE(t, nullptr);
             EXPECT_TRUE(pressed(*t)) << dx << " " << dz;
-            EXPECT_LT(t->underside, ground() + 0.05); // below its centre: pressed flat (0.018 m above its lowest point)
+            EXPECT_LT(t->underside, ground() + 0.05); // below its centre: grass 0.2 m tall is pressed to 0.025 m
         }
     }
     const double start[3] = {1.3, 0.25, 2.2};
@@ -393,7 +394,7 @@ TEST_F(InteractionPassTest, TheTilesMissNoCollider) {
         grass::run_interaction_pass(every, l, brute.data());
         int contacts = 0;
         for (const auto& t : tiled) contacts += t.age == 0.0f ? 0 : (pressed(t) ? 1 : 0);
-        EXPECT_GT(contacts, 500) << l;
+        EXPECT_GT(contacts, l == 0 ? 500 : 300) << l; // 420 on level 1's 1 m texels (was over 500 at 0.5 m)
         EXPECT_EQ(std::memcmp(tiled.data(), brute.data(), tiled.size() * sizeof(InteractionTexel)), 0) << l;
     }
 }

@@ -1,7 +1,8 @@
 // Trails to the horizon (issue 35, item 4): at the player camera (1.7 m eye height) a ball's
 // trail running away from the camera reads 100 m and 120 m away, where the image tier draws
 // the grass: the interaction map's coarse level (1 m texels, 256 m across) covers the image
-// tier's band, and it presses every texel the ball's footprint overlaps.
+// tier's band, and it widens a footprint narrower than half a texel's diagonal to that radius
+// (no ball slips between its texel centres).
 #include "render_fixture.hpp"
 
 #include <algorithm>

@@ -1519,7 +1519,7 @@ typedef struct grass_interaction_desc {
     uint32_t resolution;
     /* 1 or 2 levels; default 2: a fine level near the camera for the blades and a coarse
      * one for the volume and image tiers, so a trail stays visible from afar. The coarse
-     * level presses every texel a collider's footprint overlaps. */
+     * level widens a collider narrower than half its texel's diagonal to that radius. */
     uint32_t level_count;
     /* Metres per texel of each level (level 1 >= level 0), 1e-3 .. 1e3; default 0.05, 1:
      * 12.8 m and 256 m across at 256 texels, so a trail is kept out to 127 m from the

@@ -34,10 +34,11 @@ void to_map(const MapFrame& f, const double p[3], float out[3]) {
 }
 
 // The tiles of `level` that the footprint [lo, hi] (u, v metres relative to the camera),
-// grown by the level's reach, reaches, clamped to the window: bounded work for any footprint.
+// grown by the level's least radius (a narrow collider's widened footprint), reaches, clamped
+// to the window: bounded work for any footprint.
 TileRect tiles_of(const InteractionLevelUniforms& level, const double lo[2], const double hi[2]) {
     const double tile = double(level.origin[2]) * level.counts[1];
-    const double reach = level.reach[0];
+    const double reach = level.least_radius[0];
     const int32_t last = static_cast<int32_t>(level.counts[2]) - 1;
     int32_t r[4];
     for (int a = 0; a < 2; ++a) {

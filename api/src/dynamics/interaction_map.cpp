@@ -129,7 +129,7 @@ void plan_interaction(const DynamicsState& state, const double camera[3], double
         lu.counts[1] = kInteractionTileSize;
         lu.counts[2] = n / kInteractionTileSize;
         lu.counts[3] = clear_all ? 1u : 0u;
-        lu.reach[0] = l == 0 ? 0.0f : static_cast<float>(kCoarseReach * texel);
+        lu.least_radius[0] = l == 0 ? 0.0f : static_cast<float>(kCoarseLeastRadius * texel);
         fu.map_levels[l][2] = static_cast<float>(1.0 / texel);
         fu.map_levels[l][3] = static_cast<float>(n);
     }
