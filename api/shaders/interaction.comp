@@ -11,6 +11,7 @@ layout(std140, binding = 0) uniform Interaction {
     ivec4 window; // xy: the window's first texel mod N, zw: W - W_prev (clamped to +-N)
     vec4 origin;  // xy: texel W's lower corner relative to the camera (m), z: texel size (m), w: time step (s)
     uvec4 counts; // x: N, y: tile size (texels), z: tiles per side, w: 1 = clear everything
+    vec4 least;   // x: the least footprint radius of the level (m): a narrower collider's is widened to it
 } level;
 
 // api/src/foundation/frame_plan.hpp GpuCollider: u, v, h in the map's frame (m; h above the anchor).
@@ -63,6 +64,16 @@ vec2 away_from(vec2 column, vec2 q, float d, float r, vec2 velocity, vec2 fallba
     return speed > 0.0 ? velocity / speed : fallback;
 }
 
+// The horizontal distance from the axis of a collider of radius r at which a texel centre d
+// from it is pressed. The coarse level widens a footprint narrower than half a texel's
+// diagonal to that radius R (d r / R), so every point of it lies within R of a texel centre
+// and a collider narrower than a texel cannot slip between the centres; a wider one is
+// pressed exactly. Strictly increasing in d: the deepest contact of a passage is at one
+// point of it, at any frame rate.
+float reached(float d, float r) {
+    return level.least.x > r ? d * (r / level.least.x) : d;
+}
+
 void sphere_contact(inout Contact best, Collider c, vec2 column, float dt, vec2 fallback) {
     float r = c.a.w;
     vec3 c1 = c.a.xyz;
@@ -72,9 +83,10 @@ void sphere_contact(inout Contact best, Collider c, vec2 column, float dt, vec2 
     float s = len2 > 0.0 ? clamp(dot(column - c0.xy, sweep) / len2, 0.0, 1.0) : 1.0;
     vec3 cs = mix(c0, c1, s);
     float d = length(column - cs.xy);
-    if (d >= r) return;
-    bool continues = c.velocity.w > 0.5 && length(column - c0.xy) < r; // w: not new (bin_colliders)
-    keep(best, cs.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, cs.xy, d, r, c.velocity.xy, fallback),
+    float e = reached(d, r);
+    if (e >= r) return;
+    bool continues = c.velocity.w > 0.5 && reached(length(column - c0.xy), r) < r; // w: not new (bin_colliders)
+    keep(best, cs.z - sqrt(r * r - e * e), (1.0 - s) * dt, away_from(column, cs.xy, d, r, c.velocity.xy, fallback),
          continues);
 }
 
@@ -93,9 +105,10 @@ void capsule_contact(inout Contact best, Collider c, vec2 column, float dt, floa
         float t = axis2 > 0.0 ? clamp(dot(column - a.xy, axis.xy) / axis2, 0.0, 1.0) : (axis.z < 0.0 ? 1.0 : 0.0);
         vec3 q = a + axis * t;
         float d = length(column - q.xy);
-        if (d >= r) continue;
+        float e = reached(d, r);
+        if (e >= r) continue;
         continues = continues || (k == 0 && c.velocity.w > 0.5);
-        keep(best, q.z - sqrt(r * r - d * d), (1.0 - s) * dt, away_from(column, q.xy, d, r, v.xy, fallback),
+        keep(best, q.z - sqrt(r * r - e * e), (1.0 - s) * dt, away_from(column, q.xy, d, r, v.xy, fallback),
              continues);
     }
 }

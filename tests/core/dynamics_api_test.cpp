@@ -152,7 +152,7 @@ TEST_F(DynamicsApiTest, DefaultsAreTheDocumentedValues) {
     EXPECT_EQ(i.resolution, 256u);
     EXPECT_EQ(i.level_count, 2u);
     EXPECT_EQ(i.texel_size[0], 0.05f);
-    EXPECT_EQ(i.texel_size[1], 0.5f);
+    EXPECT_EQ(i.texel_size[1], 1.0f);
     // Each default is accepted, and so is every input of reset().
     EXPECT_EQ(grass_set_blade_mechanics(ctx, patch, &m), GRASS_SUCCESS) << last_message();
     EXPECT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << last_message();

@@ -190,7 +190,7 @@ TEST_F(DynamicsPlanTest, TheMapIsMadeAtTheFirstFrameWithCollidersAndFollowsTheCa
     EXPECT_EQ(m.dynamics_gpu_bytes, 2u * 256 * 256 * 16 + 384u * 32);
     // Level 0: 0.05 m texels. The camera at u = 2.0 m is world texel 40; W = 40 - 128.
     for (int level = 0; level < 2; ++level) {
-        const double texel = level == 0 ? double(0.05f) : double(0.5f); // the desc's floats
+        const double texel = level == 0 ? double(0.05f) : double(1.0f); // the desc's floats
         const auto& lu = ip.level[level];
         const int64_t k = static_cast<int64_t>(std::floor(2.0 / texel)), w = k - 128;
         EXPECT_EQ(lu.window[0], ((w % 256) + 256) % 256) << level;
@@ -201,6 +201,7 @@ TEST_F(DynamicsPlanTest, TheMapIsMadeAtTheFirstFrameWithCollidersAndFollowsTheCa
         EXPECT_EQ(lu.counts[2], 16u);
         EXPECT_NEAR(plan().frame.map_levels[level][0], std::fmod(2.0 / texel, 256.0), 1e-4);
         EXPECT_FLOAT_EQ(plan().frame.map_levels[level][2], float(1.0 / texel));
+        EXPECT_FLOAT_EQ(lu.least_radius[0], level == 0 ? 0.0f : float(0.7072 * texel)); // coarse: half a diagonal
     }
     // The next frame: not new, not cleared; a move of 3 level-0 texels along u shifts by 3.
     eye[0] += 0.15;

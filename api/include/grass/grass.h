@@ -1518,10 +1518,12 @@ typedef struct grass_interaction_desc {
     /* Texels per side of each level, a power of two, 64 .. 2048; default 256. */
     uint32_t resolution;
     /* 1 or 2 levels; default 2: a fine level near the camera for the blades and a coarse
-     * one, as far as the volume and image tiers, so a trail stays visible from afar. */
+     * one for the volume and image tiers, so a trail stays visible from afar. The coarse
+     * level widens a collider narrower than half its texel's diagonal to that radius. */
     uint32_t level_count;
-    /* Metres per texel of each level (level 1 >= level 0), 1e-3 .. 1e3; default 0.05, 0.5:
-     * 12.8 m and 128 m across at 256 texels. A trail outside the coarse level is gone. */
+    /* Metres per texel of each level (level 1 >= level 0), 1e-3 .. 1e3; default 0.05, 1:
+     * 12.8 m and 256 m across at 256 texels, so a trail is kept out to 127 m from the
+     * camera (half the coarse level less a texel). A trail outside the coarse level is gone. */
     float texel_size[2];
 } grass_interaction_desc;
 

@@ -33,15 +33,17 @@ void to_map(const MapFrame& f, const double p[3], float out[3]) {
     out[2] = static_cast<float>(dot3(rel, f.up) + f.camera_height);
 }
 
-// The tiles of `level` that the footprint [lo, hi] (u, v metres relative to the camera)
-// reaches, clamped to the window: bounded work for any footprint.
+// The tiles of `level` that the footprint [lo, hi] (u, v metres relative to the camera),
+// grown by the level's least radius (a narrow collider's widened footprint), reaches, clamped
+// to the window: bounded work for any footprint.
 TileRect tiles_of(const InteractionLevelUniforms& level, const double lo[2], const double hi[2]) {
     const double tile = double(level.origin[2]) * level.counts[1];
+    const double reach = level.least_radius[0];
     const int32_t last = static_cast<int32_t>(level.counts[2]) - 1;
     int32_t r[4];
     for (int a = 0; a < 2; ++a) {
-        const double t0 = std::floor((lo[a] - level.origin[a]) / tile);
-        const double t1 = std::floor((hi[a] - level.origin[a]) / tile);
+        const double t0 = std::floor((lo[a] - reach - level.origin[a]) / tile);
+        const double t1 = std::floor((hi[a] + reach - level.origin[a]) / tile);
         if (t1 < 0.0 || t0 > last) return TileRect{1, 1, 0, 0}; // outside the window
         r[a] = static_cast<int32_t>(std::max(t0, 0.0));
         r[a + 2] = static_cast<int32_t>(std::min(t1, double(last)));

@@ -27,7 +27,7 @@ grass_interaction_desc default_interaction_desc() {
     d.resolution = 256;
     d.level_count = 2;
     d.texel_size[0] = 0.05f;
-    d.texel_size[1] = 0.5f;
+    d.texel_size[1] = 1.0f;
     return d;
 }
 
@@ -129,6 +129,7 @@ void plan_interaction(const DynamicsState& state, const double camera[3], double
         lu.counts[1] = kInteractionTileSize;
         lu.counts[2] = n / kInteractionTileSize;
         lu.counts[3] = clear_all ? 1u : 0u;
+        lu.least_radius[0] = l == 0 ? 0.0f : static_cast<float>(kCoarseLeastRadius * texel);
         fu.map_levels[l][2] = static_cast<float>(1.0 / texel);
         fu.map_levels[l][3] = static_cast<float>(n);
     }

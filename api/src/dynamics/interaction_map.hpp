@@ -17,6 +17,13 @@
 namespace grass {
 
 constexpr double kReanchorDistance = 1e4; // metres along up
+// The coarse level (1) widens a collider's footprint narrower than this many texels (half a
+// texel's diagonal, rounded up) to that radius R: a texel centre d from the axis of a collider
+// of radius r < R is pressed as the collider presses at d r / R. Every point lies within R of
+// a texel centre, so a collider narrower than a coarse texel (a leg, a 1 m ball on 1 m
+// texels) cannot slip between the centres and its trail reads from afar; a wider collider is
+// pressed exactly. The fine level (0) presses exactly under every footprint.
+constexpr double kCoarseLeastRadius = 0.7072;
 
 grass_interaction_desc default_interaction_desc();
 

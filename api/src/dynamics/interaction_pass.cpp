@@ -51,7 +51,11 @@ float nearest(V2 p, V2 a, V2 b) {
     return l2 > 0.0f ? std::min(std::max(dot(p - a, ab) / l2, 0.0f), 1.0f) : 0.0f;
 }
 
-void test_sphere(const GpuCollider& c, V2 p, float dt, Contact* best) {
+// The distance at which a texel centre d from a collider of radius r is pressed: a footprint
+// narrower than the level's least radius widened to it (interaction.comp).
+float reached(float d, float r, float least) { return least > r ? d * (r / least) : d; }
+
+void test_sphere(const GpuCollider& c, V2 p, float dt, float least, Contact* best) {
     const float r = c.a[3];
     const float c0[3] = {c.a[0] - c.velocity[0] * dt, c.a[1] - c.velocity[1] * dt, c.a[2] - c.velocity[2] * dt};
     const V2 from{c0[0], c0[1]}, to{c.a[0], c.a[1]};
@@ -61,13 +65,14 @@ void test_sphere(const GpuCollider& c, V2 p, float dt, Contact* best) {
     const float ch = c0[2] + (c.a[2] - c0[2]) * s;
     const V2 away = p - V2{cu, cv};
     const float d = length(away);
-    if (!(d < r)) return;
-    const bool continues = c.velocity[3] > 0.5f && length(p - from) < r; // bin_colliders: not new
-    offer(best, ch - std::sqrt(r * r - d * d), (1.0f - s) * dt, away, d, r, V2{c.velocity[0], c.velocity[1]},
+    const float e = reached(d, r, least);
+    if (!(e < r)) return;
+    const bool continues = c.velocity[3] > 0.5f && reached(length(p - from), r, least) < r; // bin_colliders: not new
+    offer(best, ch - std::sqrt(r * r - e * e), (1.0f - s) * dt, away, d, r, V2{c.velocity[0], c.velocity[1]},
           continues);
 }
 
-void test_capsule(const GpuCollider& c, V2 p, float dt, float texel, Contact* best) {
+void test_capsule(const GpuCollider& c, V2 p, float dt, float texel, float least, Contact* best) {
     const float r = c.a[3];
     const float speed =
         std::sqrt(c.velocity[0] * c.velocity[0] + c.velocity[1] * c.velocity[1] + c.velocity[2] * c.velocity[2]);
@@ -88,9 +93,10 @@ void test_capsule(const GpuCollider& c, V2 p, float dt, float texel, Contact* be
         const float q[3] = {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t};
         const V2 away = p - V2{q[0], q[1]};
         const float d = length(away);
-        if (!(d < r)) continue;
+        const float e = reached(d, r, least);
+        if (!(e < r)) continue;
         continues = continues || (k == 0 && c.velocity[3] > 0.5f);
-        offer(best, q[2] - std::sqrt(r * r - d * d), back, away, d, r, V2{c.velocity[0], c.velocity[1]}, continues);
+        offer(best, q[2] - std::sqrt(r * r - e * e), back, away, d, r, V2{c.velocity[0], c.velocity[1]}, continues);
     }
 }
 
@@ -105,7 +111,7 @@ void run_interaction_pass(const InteractionPlan& plan, uint32_t level, Interacti
     const InteractionLevelUniforms& u = plan.level[level];
     const int32_t n = static_cast<int32_t>(u.counts[0]);
     const int32_t tile_size = static_cast<int32_t>(u.counts[1]), tiles = static_cast<int32_t>(u.counts[2]);
-    const float texel = u.origin[2], dt = u.origin[3];
+    const float texel = u.origin[2], dt = u.origin[3], least = u.least_radius[0];
     const auto& offsets = plan.tile_offsets[level];
     const auto& list = plan.tile_colliders[level];
     for (int32_t y = 0; y < n; ++y) {
@@ -122,9 +128,9 @@ void run_interaction_pass(const InteractionPlan& plan, uint32_t level, Interacti
             for (uint32_t e = offsets[tile]; e < offsets[tile + 1]; ++e) {
                 const GpuCollider& c = plan.colliders[list[e]];
                 if (c.b[3] == float(GRASS_COLLIDER_CAPSULE)) {
-                    test_capsule(c, p, dt, texel, &best);
+                    test_capsule(c, p, dt, texel, least, &best);
                 } else {
-                    test_sphere(c, p, dt, &best);
+                    test_sphere(c, p, dt, least, &best);
                 }
             }
             if (!best.found) continue;

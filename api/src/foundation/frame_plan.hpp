@@ -182,14 +182,16 @@ static_assert(sizeof(GpuCollider) == 48, "GpuCollider must match interaction.com
 // What the interaction pass does to one level of the map this frame (std140 block
 // `Interaction` of interaction.comp).
 struct InteractionLevelUniforms {
-    int32_t window[4];  // xy: the window's first texel modulo N (where world texel W lands in the
-                        // toroidal texture); zw: W - W_prev per axis clamped to [-N, N] (texels that left the
-                        // window are cleared; N or -N: all)
-    float origin[4];    // xy: texel W's lower corner relative to the camera along u, v (m); z: texel size (m);
-                        // w: time step (s)
-    uint32_t counts[4]; // x: resolution N, y: tile size in texels, z: tiles per side, w: 1 = clear everything
+    int32_t window[4];     // xy: the window's first texel modulo N (where world texel W lands in the
+                           // toroidal texture); zw: W - W_prev per axis clamped to [-N, N] (texels that left the
+                           // window are cleared; N or -N: all)
+    float origin[4];       // xy: texel W's lower corner relative to the camera along u, v (m); z: texel size (m);
+                           // w: time step (s)
+    uint32_t counts[4];    // x: resolution N, y: tile size in texels, z: tiles per side, w: 1 = clear everything
+    float least_radius[4]; // x: a collider's footprint narrower than this (m) is widened to it: half a texel's
+                           // diagonal on the coarse level, 0 on the fine one (kCoarseLeastRadius); yzw unused
 };
-static_assert(sizeof(InteractionLevelUniforms) == 48, "std140 Interaction block");
+static_assert(sizeof(InteractionLevelUniforms) == 64, "std140 Interaction block");
 
 // The interaction pass of one frame: run when map_levels > 0 (and the map exists or colliders
 // ask for it). tile_offsets[level] has tiles^2 + 1 entries into tile_colliders[level]: the
