@@ -83,6 +83,14 @@ struct TargetDesc {
     uint32_t vk_velocity_attachment = 0;
     float velocity_clear[4] = {};
     float other_clear[4] = {};
+    // Vulkan: a G-buffer target (velocity_target_vk.hpp): the VkFormat values of up to 3
+    // colour attachments after the host's colour (attachment 0), 0 after the last; each
+    // cleared to gbuffer_clear[i], read back into Image::gbuffer[i] as stored, given to grass
+    // as its grass_vk_gbuffer_target_desc. With vk_velocity_attachment besides, that
+    // attachment (an RGBA32F one) is the velocity target too (Image::velocity). The same
+    // limits as the velocity target's.
+    uint32_t vk_gbuffer_formats[3] = {};
+    float gbuffer_clear[3][4] = {};
     // The host's cascaded sun shadows (off by default).
     HostShadows host_shadows;
     // Vulkan: the vkGetInstanceProcAddr the host hands grass (grass_vk_desc's
@@ -131,6 +139,8 @@ struct Image {
     // colour image's RGBA8 (attachment 2 only), top row first; empty otherwise.
     std::vector<float> velocity;
     std::vector<uint8_t> other;
+    // TargetDesc::vk_gbuffer_formats: each further attachment's texels as stored, top row first.
+    std::vector<std::vector<uint8_t>> gbuffer;
     const uint8_t* pixel(uint32_t x, uint32_t y) const { return &rgba[(size_t(y) * width + x) * 4]; }
     const float* pixel_f32(uint32_t x, uint32_t y) const { return &rgba_f32[(size_t(y) * width + x) * 4]; }
 };

@@ -369,7 +369,7 @@ bool VkHost::create_render_pass(std::string* error) {
 
     if (!grass_bootstrap::create_render_pass(device_, pass, &render_pass_, error)) return false;
 
-    VkImageView views[4] = {color_.view, depth_.view, resolve_.view};
+    VkImageView views[5] = {color_.view, depth_.view, resolve_.view};
     for (uint32_t i = 0; i < velocity_.count(); ++i) views[2 + i] = velocity_.views()[i];
     VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     fb.renderPass = render_pass_;
@@ -534,7 +534,7 @@ void VkHost::projection(float fovy_radians, float aspect, float near_m, float fa
 // ---- A frame ------------------------------------------------------------------------------
 
 void VkHost::begin_pass(VkCommandBuffer cmd) {
-    VkClearValue clears[4] = {};
+    VkClearValue clears[5] = {};
     stored_clear_color(target_, clears[0].color.float32);
     clears[1].depthStencil = {target_.reversed_z ? 0.0f : 1.0f, 0};
     velocity_.clear_values(clears + 2);

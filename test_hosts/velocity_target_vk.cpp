@@ -4,8 +4,13 @@
 
 namespace grass_host {
 
+namespace {
+// The bytes of a texel of `format` (the formats the tests use: 8-bit RGBA, 32-bit float RGBA).
+uint32_t texel_bytes(VkFormat format) { return format == VK_FORMAT_R32G32B32A32_SFLOAT ? 16u : 4u; }
+} // namespace
+
 const void* VkVelocityTarget::enable_features(const TargetDesc& target, const void* chain) {
-    if (target.vk_velocity_attachment == 0) return chain;
+    if (target.vk_velocity_attachment == 0 && target.vk_gbuffer_formats[0] == 0) return chain;
     features_.features.independentBlend = VK_TRUE;
     features_.pNext = const_cast<void*>(chain);
     return &features_;
@@ -14,9 +19,11 @@ const void* VkVelocityTarget::enable_features(const TargetDesc& target, const vo
 bool VkVelocityTarget::create(VkDevice device, const VkPhysicalDeviceMemoryProperties& memory, const TargetDesc& target,
                               grass_bootstrap::VkPassDesc* pass, std::string* error) {
     target_ = target;
-    if (target.vk_velocity_attachment == 0) return true;
-    if (target.vk_velocity_attachment < 1 || target.vk_velocity_attachment > 2 || target.samples != 1 ||
-        target.vk_dynamic_rendering || target.ground || !target.meshes.empty()) {
+    gbuffer_ = target.vk_gbuffer_formats[0] != 0;
+    if (target.vk_velocity_attachment == 0 && !gbuffer_) return true;
+    const uint32_t most = gbuffer_ ? 3 : 2;
+    if ((!gbuffer_ && target.vk_velocity_attachment < 1) || target.vk_velocity_attachment > most ||
+        target.samples != 1 || target.vk_dynamic_rendering || target.ground || !target.meshes.empty()) {
         *error = "vk_velocity_attachment needs 1 or 2 and a single-sampled target drawn with a render pass, without "
                  "ground or meshes";
         return false;
@@ -24,6 +31,13 @@ bool VkVelocityTarget::create(VkDevice device, const VkPhysicalDeviceMemoryPrope
     count_ = target.vk_velocity_attachment;
     formats_[0] = count_ == 2 ? kOtherFormat : kVelocityFormat;
     formats_[1] = kVelocityFormat;
+    if (gbuffer_) {
+        count_ = 0;
+        while (count_ < 3 && target.vk_gbuffer_formats[count_] != 0) {
+            formats_[count_] = static_cast<VkFormat>(target.vk_gbuffer_formats[count_]);
+            count_ += 1;
+        }
+    }
     for (uint32_t i = 0; i < count_; ++i) {
         grass_bootstrap::VkImageDesc desc;
         desc.extent = {target.width, target.height};
@@ -34,7 +48,7 @@ bool VkVelocityTarget::create(VkDevice device, const VkPhysicalDeviceMemoryPrope
     }
     pass->more_colors = formats_;
     pass->more_color_count = count_;
-    const VkDeviceSize size = VkDeviceSize(target.width) * target.height * (16 + 4);
+    const VkDeviceSize size = VkDeviceSize(target.width) * target.height * 16 * 3;
     return grass_bootstrap::create_buffer(device, memory, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                           VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT,
                                           &readback_, error);
@@ -48,13 +62,26 @@ void VkVelocityTarget::destroy(VkDevice device) {
 
 void VkVelocityTarget::clear_values(VkClearValue* out) const {
     for (uint32_t i = 0; i < count_; ++i) {
-        const float* c = i + 1 == count_ ? target_.velocity_clear : target_.other_clear;
+        const float* c = gbuffer_          ? target_.gbuffer_clear[i]
+                         : i + 1 == count_ ? target_.velocity_clear
+                                           : target_.other_clear;
         std::memcpy(out[i].color.float32, c, 4 * sizeof(float));
     }
 }
 
 const void* VkVelocityTarget::chain(const void* next) {
     if (count_ == 0) return next;
+    if (gbuffer_) {
+        gbuffer_desc_.color_attachment_count = 1 + count_;
+        for (uint32_t i = 0; i < count_; ++i) gbuffer_desc_.color_formats[1 + i] = formats_[i];
+        gbuffer_desc_.next = next;
+        if (target_.vk_velocity_attachment == 0) return &gbuffer_desc_;
+        desc_.color_attachment_count = 1 + count_;
+        desc_.velocity_attachment = target_.vk_velocity_attachment;
+        for (uint32_t i = 0; i < count_; ++i) desc_.color_formats[i] = formats_[i];
+        desc_.next = &gbuffer_desc_;
+        return &desc_;
+    }
     desc_.color_attachment_count = 1 + count_;
     desc_.velocity_attachment = count_;
     for (uint32_t i = 0; i < count_; ++i) desc_.color_formats[i] = formats_[i];
@@ -66,6 +93,17 @@ void VkVelocityTarget::copy(VkCommandBuffer cmd) const {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {target_.width, target_.height, 1};
+    for (uint32_t i = 0; gbuffer_ && i < count_; ++i) { // each at a stride of 16 bytes a texel
+        region.bufferOffset = VkDeviceSize(target_.width) * target_.height * 16 * i;
+        vkCmdCopyImageToBuffer(cmd, images_[i].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1,
+                               &region);
+    }
+    if (gbuffer_) {
+        const VkBufferMemoryBarrier b = grass_bootstrap::host_read_barrier(readback_.buffer);
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0,
+                             nullptr);
+        return;
+    }
     vkCmdCopyImageToBuffer(cmd, images_[count_ - 1].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1,
                            &region);
     if (count_ == 2) {
@@ -80,6 +118,20 @@ void VkVelocityTarget::copy(VkCommandBuffer cmd) const {
 
 void VkVelocityTarget::read(VkDevice, Image* out) const {
     const size_t n = size_t(target_.width) * target_.height;
+    if (gbuffer_) {
+        const auto* bytes = static_cast<const uint8_t*>(readback_.mapped);
+        out->gbuffer.assign(count_, {});
+        for (uint32_t i = 0; i < count_; ++i) {
+            const uint8_t* at = bytes + n * 16 * i;
+            out->gbuffer[i].assign(at, at + n * texel_bytes(formats_[i]));
+        }
+        out->velocity.clear();
+        if (target_.vk_velocity_attachment != 0) {
+            out->velocity.resize(n * 4);
+            std::memcpy(out->velocity.data(), bytes + n * 16 * (target_.vk_velocity_attachment - 1), n * 16);
+        }
+        return;
+    }
     out->velocity.resize(n * 4);
     std::memcpy(out->velocity.data(), readback_.mapped, n * 16);
     out->other.clear();

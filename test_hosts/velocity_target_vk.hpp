@@ -4,7 +4,10 @@
 // an RGBA8 image at colour attachment 1 that grass must leave as cleared (a G-buffer
 // target). Single-sampled render passes only (the pass: grass_bootstrap::VkPassDesc's
 // more_colors). The host chains grass_vk_velocity_target_desc from chain() and reads both
-// images back after the pass (Image::velocity, Image::other).
+// images back after the pass (Image::velocity, Image::other). A G-buffer target
+// (TargetDesc::vk_gbuffer_formats) is the same pass with up to three attachments of the
+// given formats, chained as a grass_vk_gbuffer_target_desc (and a velocity target where
+// vk_velocity_attachment names one of them), read back into Image::gbuffer.
 #pragma once
 
 #include "headless_host.hpp"
@@ -50,10 +53,12 @@ private:
     TargetDesc target_;
     VkPhysicalDeviceFeatures2 features_{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     grass_vk_velocity_target_desc desc_ = grass_default_vk_velocity_target_desc();
+    grass_vk_gbuffer_target_desc gbuffer_desc_ = grass_default_vk_gbuffer_target_desc();
+    bool gbuffer_ = false; // TargetDesc::vk_gbuffer_formats
     uint32_t count_ = 0;
-    VkFormat formats_[2] = {};
-    VkImageView views_[2] = {};
-    grass_bootstrap::VkImageParts images_[2]; // [count_ - 1]: the velocity
+    VkFormat formats_[3] = {};
+    VkImageView views_[3] = {};
+    grass_bootstrap::VkImageParts images_[3]; // velocity target: [count_ - 1] the velocity
     grass_bootstrap::VkBufferParts readback_; // host-visible, coherent: velocity, then the other image
 };
 

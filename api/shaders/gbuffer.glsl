@@ -1,16 +1,24 @@
 // G-buffer views (GRASS_PASS_GBUFFER, grass_view_gbuffer_desc): what a tier writes instead of
 // its lit colour. Included only where GRASS_GBUFFER is defined (GL defines it with
-// GRASS_FEATURES for the masks with kFeatureGBuffer), so every other variant declares
-// neither the block nor the outputs and its preprocessed text is what it was. Output
-// locations (api/src/foundation/shader_interface.hpp kGBufferOutput): 0 the albedo (the
-// colour's own out_color), 1 the velocity (motion.glsl), 2 the normal, 3 the material; the
-// backend routes each to the host's attachment of that semantic, or to none.
-#ifdef VULKAN
-#error "the Vulkan backend draws no G-buffer passes (grass_view_pass_desc: GRASS_PASS_GBUFFER is GL only)"
+// GRASS_FEATURES for the masks with kFeatureGBuffer; Vulkan compiles the GRASS_GBUFFER
+// modules), so every other variant declares neither the block nor the outputs and its
+// preprocessed text is what it was. Output locations (api/src/foundation/shader_interface.hpp
+// kGBufferOutput): 0 the albedo (the colour's own out_color), 1 the velocity (motion.glsl),
+// 2 the normal, 3 the material; the backend routes each to the host's attachment of that
+// semantic, or to none (GL: GL_NONE; Vulkan rewrites the module: the output's Location moves
+// to its attachment, an output the host did not ask for becomes a private variable,
+// backend_vk/src/vk_gbuffer.cpp).
+#if defined(VULKAN) && defined(GRASS_MULTIVIEW)
+#error "a stereo (multiview) context draws no G-buffer views (grass_vk_gbuffer_target_desc is mono only)"
 #endif
 
-// The GrassGBuffer block (api/src/foundation/frame_plan.hpp GBufferUniforms): GL binding 5.
+// The GrassGBuffer block (api/src/foundation/frame_plan.hpp GBufferUniforms): GL binding 5;
+// Vulkan set 1, binding 3 (the view extras' blocks, backend_vk/src/vk_view_extras.hpp).
+#ifdef VULKAN
+layout(std140, set = 1, binding = 3) uniform GrassGBuffer {
+#else
 layout(std140, binding = 5) uniform GrassGBuffer {
+#endif
     vec4 normal_encode; // x: scale, y: bias of the normal (0.5, 0.5 into a UNORM attachment)
 } grass_gbuffer;
 

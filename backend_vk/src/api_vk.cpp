@@ -121,6 +121,13 @@ grass_vk_velocity_target_desc grass_default_vk_velocity_target_desc(void) {
     return d;
 }
 
+grass_vk_gbuffer_target_desc grass_default_vk_gbuffer_target_desc(void) {
+    grass_vk_gbuffer_target_desc d{};
+    d.type = GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC;
+    d.color_attachment_count = 4;
+    return d;
+}
+
 grass_vk_record_desc grass_default_vk_record_desc(void) {
     grass_vk_record_desc d{};
     d.type = GRASS_STRUCT_TYPE_VK_RECORD_DESC;

@@ -95,6 +95,15 @@ grass_result VkBackend::init(const char* function) {
         velocity.velocity_attachment = device_.velocity.velocity_attachment;
         pipeline_.set_velocity_target(velocity);
     }
+    if (device_.has_gbuffer) {
+        // The pass has the host's G-buffer attachments: every pipeline has a blend state for
+        // each; a G-buffer view's, made on the first that draws each layout (record), write
+        // the attachments its layout routes grass's outputs to.
+        target.color_count = device_.gbuffer.color_attachment_count;
+        for (uint32_t i = 1; i < 8; ++i)
+            target.other_formats[i - 1] = static_cast<VkFormat>(device_.gbuffer.color_formats[i]);
+        pipeline_.set_gbuffer_target(target);
+    }
     if (!pipeline_.create(target, &failure, &what)) return fail(function, what, failure);
     if (!ring_.create(&failure, &what)) return fail(function, what, failure);
     create_timers();

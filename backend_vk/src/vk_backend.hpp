@@ -61,6 +61,7 @@ public:
         target.depth_pass = device_.has_depth_pass;      // grass_vk_depth_pass_desc: depth views draw
         target.depth_pass_samples = device_.has_depth_pass ? device_.depth_pass.sample_count : 0;
         target.velocity_attachment = device_.has_velocity ? device_.velocity.velocity_attachment : 0;
+        target.gbuffer_attachments = device_.has_gbuffer ? device_.gbuffer.color_attachment_count : 0;
         return target;
     }
     grass_result begin_host_frame(const char* function, const HostFrame& frame, bool implied) override;

@@ -101,6 +101,25 @@ grass_result check_velocity_target(grass_context* ctx, const char* function, con
     return GRASS_SUCCESS;
 }
 
+// The checks of a chained grass_vk_gbuffer_target_desc (`dynamic`: grass_vk_desc.render_pass 0).
+grass_result check_gbuffer_target(grass_context* ctx, const char* function, const grass_vk_gbuffer_target_desc& g,
+                                  bool dynamic) {
+    if (g.color_attachment_count < 1 || g.color_attachment_count > 8) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: grass_vk_gbuffer_target_desc.color_attachment_count is %u; it must be 1 to 8", function,
+                         g.color_attachment_count);
+    }
+    for (uint32_t i = 1; dynamic && i < g.color_attachment_count; ++i) {
+        if (g.color_formats[i] == 0) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM,
+                             "%s: grass_vk_gbuffer_target_desc.color_formats[%u] is 0 (VK_FORMAT_UNDEFINED); dynamic "
+                             "rendering (render_pass 0) needs the VkFormat of colour attachment %u",
+                             function, i, i);
+        }
+    }
+    return GRASS_SUCCESS;
+}
+
 // Walks the extensions chained to vk_desc->next: each a known type, each once.
 grass_result read_chain(grass_context* ctx, const char* function, const void* next, bool dynamic,
                         VkDescExtensions* out) {
@@ -108,7 +127,8 @@ grass_result read_chain(grass_context* ctx, const char* function, const void* ne
     bool has_host_objects = false, has_multiview = false;
     const auto known = [](uint32_t type) {
         return type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC || type == GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC ||
-               type == GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC || type == GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC;
+               type == GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC || type == GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC ||
+               type == GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC;
     };
     while (next) {
         struct Header {
@@ -141,17 +161,25 @@ grass_result read_chain(grass_context* ctx, const char* function, const void* ne
             next = out->velocity.next;
             out->velocity.next = nullptr;
             r = check_velocity_target(ctx, function, out->velocity, dynamic);
+        } else if (type == GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC && !out->has_gbuffer) {
+            out->gbuffer = *static_cast<const grass_vk_gbuffer_target_desc*>(next);
+            out->has_gbuffer = true;
+            next = out->gbuffer.next;
+            out->gbuffer.next = nullptr;
+            r = check_gbuffer_target(ctx, function, out->gbuffer, dynamic);
         } else {
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NEXT_NOT_NULL,
                              "%s: vk_desc->next chain holds a struct of type 0x%08x%s; it may hold "
                              "GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC (0x%08x), GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC "
-                             "(0x%08x), GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC (0x%08x) and "
-                             "GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC (0x%08x), each once",
+                             "(0x%08x), GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC (0x%08x), "
+                             "GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC (0x%08x) and "
+                             "GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC (0x%08x), each once",
                              function, static_cast<unsigned>(type), known(type) ? " a second time" : "",
                              static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC),
                              static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC),
                              static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC),
-                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC));
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC),
+                             static_cast<unsigned>(GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC));
         }
         if (r != GRASS_SUCCESS) return r;
     }
@@ -166,6 +194,20 @@ grass_result read_chain(grass_context* ctx, const char* function, const void* ne
                          "%s: vk_desc->next chains a grass_vk_velocity_target_desc and a grass_vk_multiview_desc with "
                          "view_mask 0x%x; motion vectors are drawn by mono contexts only",
                          function, out->multiview.view_mask);
+    }
+    if (out->has_gbuffer && out->multiview.view_mask != 0) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: vk_desc->next chains a grass_vk_gbuffer_target_desc and a grass_vk_multiview_desc with "
+                         "view_mask 0x%x; G-buffer views are drawn by mono contexts only",
+                         function, out->multiview.view_mask);
+    }
+    if (out->has_gbuffer && out->has_velocity &&
+        out->gbuffer.color_attachment_count != out->velocity.color_attachment_count) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: grass_vk_gbuffer_target_desc.color_attachment_count is %u, but "
+                         "grass_vk_velocity_target_desc.color_attachment_count is %u; both describe the one pass grass "
+                         "draws in",
+                         function, out->gbuffer.color_attachment_count, out->velocity.color_attachment_count);
     }
     return GRASS_SUCCESS;
 }

@@ -24,6 +24,8 @@ struct VkDescExtensions {
     grass_vk_depth_pass_desc depth_pass = grass_default_vk_depth_pass_desc();
     bool has_velocity = false; // a grass_vk_velocity_target_desc is chained: the context draws motion views
     grass_vk_velocity_target_desc velocity = grass_default_vk_velocity_target_desc();
+    bool has_gbuffer = false; // a grass_vk_gbuffer_target_desc is chained: the context draws G-buffer views
+    grass_vk_gbuffer_target_desc gbuffer = grass_default_vk_gbuffer_target_desc();
 };
 
 // Logs the first problem through `context` (named after `function`) and returns its code.

@@ -73,6 +73,8 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
     d.has_depth_pass = extensions.has_depth_pass;
     d.has_velocity = extensions.has_velocity;
     d.velocity = extensions.velocity;
+    d.has_gbuffer = extensions.has_gbuffer;
+    d.gbuffer = extensions.gbuffer;
     d.depth_pass = extensions.depth_pass;
     if (d.has_depth_pass && d.depth_pass.render_pass == 0 && d.properties.apiVersion < VK_API_VERSION_1_3 &&
         !has_device_extension(d, &ctx->host, VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME)) {
@@ -93,12 +95,14 @@ grass_result load_device(grass_context* ctx, const char* function, const grass_v
                                "grass_vk_multiview_desc.view_mask 0x3 (stereo) needs");
         }
     }
-    if (d.has_velocity) { // the pipelines write the pass's colour attachments with different masks
+    if (d.has_velocity || (d.has_gbuffer && d.gbuffer.color_attachment_count > 1)) {
+        // the pipelines write the pass's colour attachments with different masks
         VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
         if (d.fn.vkGetPhysicalDeviceFeatures2) d.fn.vkGetPhysicalDeviceFeatures2(d.physical_device, &features);
         if (!features.features.independentBlend) {
             return unsupported(ctx, function, d,
-                               "lacks the independentBlend feature, which grass_vk_velocity_target_desc (a pass whose "
+                               "lacks the independentBlend feature, which grass_vk_velocity_target_desc or "
+                               "grass_vk_gbuffer_target_desc with more than one attachment (a pass whose "
                                "colour attachments grass writes with different masks) needs");
         }
     }

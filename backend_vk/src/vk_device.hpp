@@ -38,6 +38,10 @@ struct Device {
     // Absent: the context refuses motion views.
     bool has_velocity = false;
     grass_vk_velocity_target_desc velocity{};
+    // The colour attachments of the host's pass when it draws G-buffer views in it
+    // (grass_vk_gbuffer_target_desc). Absent: the context refuses G-buffer views.
+    bool has_gbuffer = false;
+    grass_vk_gbuffer_target_desc gbuffer{};
 };
 
 // The format of single-channel design maps (density, ambient, diffuse, height): 16-bit

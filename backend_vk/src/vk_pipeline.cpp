@@ -131,6 +131,7 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
     if (has_variant(variant, depth_test)) return true;
     const bool depth_pass = (variant.features & kFeatureDepthPass) != 0;
     const uint32_t extras = variant.features & kViewExtras;
+    if (variant.features & kFeatureGBuffer) return create_gbuffer_variant(variant, depth_test, failure, what);
     if (extras) {
         // The core refuses a receiving, motion or lit stereo view and a motion view without
         // the host's velocity target, and gives a depth pass and a debug view none of them.
@@ -181,6 +182,30 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
                            &pipelines_[variant.features][variant.program][depth_test ? 0 : 1], failure, what);
 }
 
+bool BladePipeline::create_gbuffer_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure,
+                                           const char** what) {
+    // The core refuses a G-buffer view without the host's G-buffer target and gives it no
+    // shadows, lights nor depth pass; a debug view draws boxes.
+    const uint32_t others = kFeatureDepthPass | kFeatureShadowReceive | kFeatureHostLights;
+    if (gbuffer_target_.color_count == 0 || target_.view_mask != 0 || variant.program >= kExtrasPipelineKinds ||
+        (variant.features & others) != 0) {
+        *what = "a G-buffer view's pipeline (a depth pass, stereo, a debug view, shadows, lights, or no "
+                "grass_vk_gbuffer_target_desc)";
+        return false;
+    }
+    SpirvVariant modules;
+    modules.responsive = (variant.features & kBladeCurveFeatures) != 0;
+    modules.indexed_blocks = target_.indexed_blocks;
+    modules.velocity = (variant.features & kFeatureMotion) != 0; // the GrassMotion block in set 1
+    modules.gbuffer = true;                                      // the GrassGBuffer block in set 1
+    const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(modules)
+                                : variant.program == kShaderVolume ? SlicePipelines::volume_shape(modules)
+                                                                   : SlicePipelines::image_shape(modules);
+    if (!extras_.create_layouts(gbuffer_target_, set_layout_, failure, what)) return false;
+    return gbuffer_.create_variant(gbuffer_target_, extras_.layout(), routes_, variant, shape, depth_test, failure,
+                                   what);
+}
+
 bool BladePipeline::create_variants(uint32_t features, VkFailure* failure, const char** what) {
     const ShaderVariant variants[] = {{kShaderBlades, features},
                                       {kShaderVolume, features},
@@ -207,6 +232,7 @@ void BladePipeline::destroy() {
         if (p) fn_.vkDestroyPipeline(device_, p, fn_.callbacks());
     }
     depth_pipelines_.clear();
+    gbuffer_.destroy();
     extras_.destroy();
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
@@ -394,6 +420,8 @@ bool create_pipeline(const Functions& fn, VkDevice device, const PipelineTarget&
         VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
     if (target.velocity_attachment != 0 && target.velocity_attachment < color_count)
         attachments[target.velocity_attachment].colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT;
+    for (uint32_t i = 0; target.explicit_masks && i < color_count; ++i) // a G-buffer view's layout
+        attachments[i].colorWriteMask = target.write_masks[i];
     VkFormat formats[8] = {target.color_format};
     for (uint32_t i = 1; i < color_count; ++i) formats[i] = target.other_formats[i - 1];
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};

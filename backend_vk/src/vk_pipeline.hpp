@@ -11,6 +11,7 @@
 #include "foundation/shader_interface.hpp"
 #include "foundation/shader_variants.hpp"
 #include "vk_functions.hpp"
+#include "vk_gbuffer.hpp"
 #include "vk_result.hpp"
 #include "vk_spirv.hpp"
 #include "vk_view_extras.hpp"
@@ -96,6 +97,10 @@ struct PipelineTarget {
     uint32_t color_count = 1;
     uint32_t velocity_attachment = 0;
     VkFormat other_formats[7] = {};
+    // A G-buffer view's pipelines (vk_gbuffer.hpp): each attachment's colorWriteMask is
+    // write_masks[i] (RGBA bits), attachment 0's too, all unblended.
+    bool explicit_masks = false;
+    uint32_t write_masks[8] = {};
 };
 
 // The descriptor type of the Frame and Field blocks (dynamic offsets: one per draw).
@@ -147,7 +152,7 @@ class BladePipeline {
 public:
     BladePipeline(const Functions& functions, VkDevice device, HostAllocator* host)
         : fn_(functions), device_(device), depth_pipelines_(StlAllocator<VkPipeline>(host)),
-          extras_(functions, device, host) {}
+          extras_(functions, device, host), gbuffer_(functions, device, host) {}
     ~BladePipeline() { destroy(); }
     BladePipeline(const BladePipeline&) = delete;
     BladePipeline& operator=(const BladePipeline&) = delete;
@@ -162,6 +167,14 @@ public:
     // velocity_attachment not 0), before any motion variant is made. Without it
     // create_variant refuses kFeatureMotion.
     void set_velocity_target(const PipelineTarget& target) { velocity_target_ = target; }
+    // The colour attachments of G-buffer views (grass_vk_gbuffer_target_desc), before any
+    // G-buffer variant is made. Without it create_variant refuses kFeatureGBuffer.
+    void set_gbuffer_target(const PipelineTarget& target) { gbuffer_target_ = target; }
+    // The routes of the G-buffer view being recorded: kFeatureGBuffer variants made, looked
+    // up and drawn after it are those of this layout.
+    void select_gbuffer(const GBufferRoutes& routes) { routes_ = routes; }
+    // The pipelines of G-buffer views (empty until the first).
+    const GBufferPipelines& gbuffer() const { return gbuffer_; }
     void destroy();
 
     // Makes the pipeline of `variant` (foundation/shader_variants.hpp) with the depth test
@@ -177,6 +190,8 @@ public:
     // The depth-tested pipelines of every kind for `features` (a field's maps: upload_field).
     bool create_variants(uint32_t features, VkFailure* failure, const char** what);
     bool has_variant(const ShaderVariant& v, bool depth_test) const {
+        if (v.features & kFeatureGBuffer)
+            return gbuffer_.pipeline(routes_, v.program, v.features, depth_test) != VK_NULL_HANDLE;
         if (v.features & kViewExtras) return extras_.has_variant(v, depth_test);
         if (v.features & kFeatureDepthPass) return depth_test && depth_slot(v.program, v.features) != nullptr;
         return v.features < kColourFeatureMasks &&
@@ -190,6 +205,7 @@ public:
     const ViewExtrasPipelines& extras() const { return extras_; }
     // The pipeline of `kind` for `features` (has_variant(features, depth_test)).
     VkPipeline pipeline(PipelineKind kind, uint32_t features, bool depth_test) const {
+        if (features & kFeatureGBuffer) return gbuffer_.pipeline(routes_, kind, features, depth_test);
         if (features & kViewExtras) return extras_.pipeline(kind, features, depth_test);
         if (features & kFeatureDepthPass) return *depth_slot(kind, features);
         return pipelines_[features][kind][depth_test ? 0 : 1];
@@ -197,6 +213,8 @@ public:
 
 private:
     bool create_layouts(VkFailure* failure, const char** what);
+    // A kFeatureGBuffer variant for the selected routes (create_variant).
+    bool create_gbuffer_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure, const char** what);
     void destroy_variants(uint32_t features);
     // The depth table's entry of `program` for `features` (with kFeatureDepthPass), or
     // nullptr where it has none (no table yet, a debug view); the entry may be VK_NULL_HANDLE.
@@ -224,6 +242,9 @@ private:
     Vector<VkPipeline> depth_pipelines_;
     PipelineTarget velocity_target_; // velocity_attachment 0: the host gave no velocity target
     ViewExtrasPipelines extras_;     // empty until the first view with extras
+    PipelineTarget gbuffer_target_;  // color_count 0: the host gave no G-buffer target
+    GBufferRoutes routes_;           // the G-buffer view being recorded (select_gbuffer)
+    GBufferPipelines gbuffer_;       // empty until the first G-buffer view
 };
 
 } // namespace grass::vk

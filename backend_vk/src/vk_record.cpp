@@ -244,6 +244,7 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
     const uint32_t vs = view_slot(slot_, view); // this view's buffers and sets in the frame's slot
     const bool debug_view = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
     const bool depth_test = (plan.flags & GRASS_VIEW_FLAG_NO_DEPTH_TEST) == 0;
+    if (plan.gbuffer) pipeline_.select_gbuffer(GBufferRoutes::of(plan)); // its layout's pipelines
     // Refuse before recording anything, so that the command buffer is left untouched. The
     // plan itself was checked by grass_begin_frame (check_plan in context/invariants.hpp).
     uint32_t draw_count = 0, slice_draws = 0, own_sets = 0;
@@ -274,7 +275,7 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
     // draws' pipelines made above): this view's GrassShadow, GrassMotion and GrassLights
     // blocks, as it uses them, in set 1 of the view extras' layout, and a receiving view's map
     // in set 2.
-    const bool extras = (plan.shadow_receive || plan.motion || plan.host_lights) && !debug_view;
+    const bool extras = (plan.shadow_receive || plan.motion || plan.host_lights || plan.gbuffer) && !debug_view;
     if (extras) {
         VkFailure failure;
         const char* what = "";

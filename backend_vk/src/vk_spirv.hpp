@@ -16,6 +16,8 @@
 // - host lights: the fragment shaders with GRASS_HOST_LIGHTS, for a view lit by the host's
 //   lights (grass_view_lights_desc; the GrassLights block in set 1), alone or with either or
 //   both of the above;
+// - G-buffer: the fragment shaders with GRASS_GBUFFER, for a G-buffer view
+//   (grass_view_gbuffer_desc; the GrassGBuffer block in set 1), alone or with velocity;
 // - responsive: GRASS_RESPONSIVE, for the pipelines of kBladeCurveFeatures (blade.vert,
 //   volume.frag and image.frag have it);
 // - indexed blocks: GRASS_INDEXED_BLOCKS, the Frame and Field blocks read at an index from a
@@ -54,6 +56,7 @@ enum SpirvFeature : uint32_t {
     kSpirvResponsive = 1u << 4,    // GRASS_RESPONSIVE
     kSpirvIndexedBlocks = 1u << 5, // GRASS_INDEXED_BLOCKS
     kSpirvHostLights = 1u << 6,    // GRASS_HOST_LIGHTS
+    kSpirvGBuffer = 1u << 7,       // GRASS_GBUFFER
 };
 
 struct Spirv {
@@ -70,11 +73,12 @@ struct SpirvVariant {
     bool host_shadows = false;   // GRASS_HOST_SHADOWS: a receiving view's fragment shaders. Mono only.
     bool velocity = false;       // GRASS_VELOCITY: a motion view's blade.vert and fragment shaders. Mono only.
     bool host_lights = false;    // GRASS_HOST_LIGHTS: a lit view's fragment shaders. Mono only.
+    bool gbuffer = false;        // GRASS_GBUFFER: a G-buffer view's fragment shaders. Mono only.
     uint32_t features() const {
         return (multiview ? kSpirvMultiview : 0u) | (depth_target ? kSpirvDepthTarget : 0u) |
                (host_shadows ? kSpirvHostShadows : 0u) | (velocity ? kSpirvVelocity : 0u) |
                (responsive ? kSpirvResponsive : 0u) | (indexed_blocks ? kSpirvIndexedBlocks : 0u) |
-               (host_lights ? kSpirvHostLights : 0u);
+               (host_lights ? kSpirvHostLights : 0u) | (gbuffer ? kSpirvGBuffer : 0u);
     }
 };
 

@@ -23,23 +23,25 @@ const char* const kNames[kExtrasCombinations][kExtrasPipelineKinds] = {
 };
 } // namespace
 
+bool is_output_variable(const uint32_t* code, size_t words, uint32_t id) {
+    constexpr uint32_t kOpVariable = 59, kStorageOutput = 3;
+    for (size_t at = 5; at < words;) {
+        const uint32_t count = code[at] >> 16, op = code[at] & 0xffffu;
+        if (count == 0 || at + count > words) return false;
+        if (op == kOpVariable && count >= 4 && code[at + 2] == id) return code[at + 3] == kStorageOutput;
+        at += count;
+    }
+    return false;
+}
+
 bool relocate_output(uint32_t* code, size_t words, uint32_t from, uint32_t to) {
-    constexpr uint32_t kOpDecorate = 71, kOpVariable = 59, kDecorationLocation = 30, kStorageOutput = 3;
+    constexpr uint32_t kOpDecorate = 71, kDecorationLocation = 30;
     if (words < 5 || code[0] != 0x07230203u) return false;
-    const auto is_output = [&](uint32_t id) {
-        for (size_t at = 5; at < words;) {
-            const uint32_t count = code[at] >> 16, op = code[at] & 0xffffu;
-            if (count == 0 || at + count > words) return false;
-            if (op == kOpVariable && count >= 4 && code[at + 2] == id) return code[at + 3] == kStorageOutput;
-            at += count;
-        }
-        return false;
-    };
     for (size_t at = 5; at < words;) {
         const uint32_t count = code[at] >> 16, op = code[at] & 0xffffu;
         if (count == 0 || at + count > words) return false;
         if (op == kOpDecorate && count >= 4 && code[at + 2] == kDecorationLocation && code[at + 3] == from &&
-            is_output(code[at + 1])) {
+            is_output_variable(code, words, code[at + 1])) {
             code[at + 3] = to;
             return true;
         }
@@ -61,7 +63,7 @@ bool ViewExtrasPipelines::create_variant(const PipelineTarget& target, VkDescrip
                 "(no such variant, or no grass_vk_velocity_target_desc)";
         return false;
     }
-    if (layout_ == VK_NULL_HANDLE && !create_layouts(target, blade_set, failure, what)) {
+    if (!create_layouts(target, blade_set, failure, what)) {
         destroy();
         return false;
     }
@@ -112,11 +114,13 @@ bool ViewExtrasPipelines::create_samplers(VkFailure* failure, const char** what)
 
 bool ViewExtrasPipelines::create_layouts(const PipelineTarget& target, VkDescriptorSetLayout blade_set,
                                          VkFailure* failure, const char** what) {
+    if (layout_ != VK_NULL_HANDLE) return true;
     const VkDescriptorSetLayoutBinding bindings[kExtrasBindingCount] = {
         {kBindingMotionBlock, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
          VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {kBindingShadowBlock, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
         {kBindingLightsBlock, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {kBindingGBufferBlock, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     };
     const VkDescriptorSetLayoutBinding map{kBindingShadowMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                            VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};

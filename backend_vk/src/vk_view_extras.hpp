@@ -9,7 +9,8 @@
 // - set 1, the view's blocks: binding 0 the GrassMotion block (a uniform buffer, vertex and
 //   fragment; motion.glsl), binding 1 the GrassShadow block (a uniform buffer, fragment
 //   stage; host_shadows.glsl), binding 2 the GrassLights block (a uniform buffer, fragment
-//   stage; host_lights.glsl);
+//   stage; host_lights.glsl), binding 3 the GrassGBuffer block of a G-buffer view (a uniform
+//   buffer, fragment stage; gbuffer.glsl; its pipelines: vk_gbuffer.hpp);
 // - set 2, the host's map (binding 0: a combined image sampler with a depth-compare sampler),
 //   bound by receiving views alone (a motion view has no map to write, and lavapipe, Mesa
 //   22.3, crashed executing the draws of motion views whose set 1 held the map unwritten,
@@ -50,7 +51,8 @@ enum ExtrasBinding : uint32_t {
     kBindingMotionBlock = 0,
     kBindingShadowBlock = 1,
     kBindingLightsBlock = 2,
-    kExtrasBindingCount = 3
+    kBindingGBufferBlock = 3, // a G-buffer view's GrassGBuffer block (gbuffer.glsl; vk_gbuffer.hpp)
+    kExtrasBindingCount = 4
 };
 constexpr uint32_t kShadowMapSet = 2;
 constexpr uint32_t kBindingShadowMap = 0;
@@ -58,6 +60,9 @@ static_assert(kShadowMapSet == kExtrasSet + 1, "a receiving view binds both at o
 constexpr uint32_t kExtrasPipelineKinds = 3;               // blades, volume, image: a debug view has no extras
 constexpr uint32_t kExtrasColourMasks = kFeatureDepthPass; // the colour feature masks (kColourFeatureMasks)
 constexpr uint32_t kExtrasCombinations = 7;                // the non-empty sets of receive, motion, lights
+
+// Whether `id` is an OpVariable of the Output storage class in `code` (SPIR-V, `words` long).
+bool is_output_variable(const uint32_t* code, size_t words, uint32_t id);
 
 // `code` (SPIR-V of a fragment shader, `words` long) with the Location decoration of its
 // Output variable at location `from` set to `to`. False when it has no such output.
@@ -106,10 +111,11 @@ public:
     // Whether anything was made (a test's "costs nothing").
     bool empty() const { return layout_ == VK_NULL_HANDLE && samplers_[0] == VK_NULL_HANDLE; }
     void destroy();
-
-private:
+    // The layouts, unless made (a G-buffer view's pipelines share them: vk_gbuffer.hpp).
     bool create_layouts(const PipelineTarget& target, VkDescriptorSetLayout blade_set, VkFailure* failure,
                         const char** what);
+
+private:
     bool create_samplers(VkFailure* failure, const char** what);
     // The combination's table: [colour features][kind][0 = depth tested, 1 = depth off]
     // (the extras' bits above bit 11, less one: receive 0, motion 1, both 2, lights 3, ...).

@@ -66,15 +66,16 @@ bool ViewExtrasSets::write(uint32_t slot, uint64_t frame, const FramePlan& plan,
         name_object(fn_, device_, VK_OBJECT_TYPE_DESCRIPTOR_POOL, pool_, *what);
     }
     // Each binding's block: whether the view uses it, its bytes and its name.
-    const bool used[kExtrasBindingCount] = {plan.motion, plan.shadow_receive, plan.host_lights};
-    const void* const data[kExtrasBindingCount] = {&plan.motion_uniforms, &plan.shadow, &plan.lights};
+    const bool used[kExtrasBindingCount] = {plan.motion, plan.shadow_receive, plan.host_lights, plan.gbuffer};
+    const void* const data[kExtrasBindingCount] = {&plan.motion_uniforms, &plan.shadow, &plan.lights,
+                                                   &plan.gbuffer_uniforms};
     const VkDeviceSize bytes[kExtrasBindingCount] = {sizeof(MotionUniforms), sizeof(ShadowUniforms),
-                                                     sizeof(LightUniforms)};
+                                                     sizeof(LightUniforms), sizeof(GBufferUniforms)};
     const char* const names[kExtrasBindingCount] = {"grass motion block", "grass host shadow block",
-                                                    "grass host lights block"};
-    const char* const writing[kExtrasBindingCount] = {"the GrassMotion block of a motion view",
-                                                      "the GrassShadow block of a receiving view",
-                                                      "the GrassLights block of a lit view"};
+                                                    "grass host lights block", "grass G-buffer block"};
+    const char* const writing[kExtrasBindingCount] = {
+        "the GrassMotion block of a motion view", "the GrassShadow block of a receiving view",
+        "the GrassLights block of a lit view", "the GrassGBuffer block of a G-buffer view"};
     for (uint32_t b = 0; b < kExtrasBindingCount; ++b) {
         if (used[b] && !create_block(&s.blocks[b], bytes[b], names[b], failure, what)) return false;
     }

@@ -2,8 +2,9 @@
 // view slot (view_slot(), a view of a frame in flight) a descriptor set of the view's blocks
 // (set 1) and the small persistently mapped uniform buffers behind it: the GrassShadow block
 // (ShadowUniforms) of a view that receives the host's shadow maps, the GrassMotion block
-// (MotionUniforms) of a view that writes motion vectors and the GrassLights block
-// (LightUniforms) of a view lit by the host's lights; and for a receiving view a set of the
+// (MotionUniforms) of a view that writes motion vectors, the GrassLights block
+// (LightUniforms) of a view lit by the host's lights and the GrassGBuffer block
+// (GBufferUniforms) of a G-buffer view; and for a receiving view a set of the
 // host's image view with the compare sampler of the host's convention (set 2). Every binding
 // of set 1 is written (a block a view does not use points at one it uses, so no bound set
 // holds an unwritten descriptor); set 2 only by a receiving view, which alone binds it.
@@ -46,8 +47,8 @@ public:
 
 private:
     struct Slot {
-        Buffer blocks[kExtrasBindingCount];       // [ExtrasBinding]: GrassMotion, GrassShadow, GrassLights
-        VkDescriptorSet set = VK_NULL_HANDLE;     // set 1: the blocks
+        Buffer blocks[kExtrasBindingCount];   // [ExtrasBinding]: GrassMotion, GrassShadow, GrassLights, GrassGBuffer
+        VkDescriptorSet set = VK_NULL_HANDLE; // set 1: the blocks
         VkDescriptorSet map_set = VK_NULL_HANDLE; // set 2: the host's map
         uint64_t written = 0;                     // the frame whose plan the blocks and the set hold (0: none)
     };

@@ -1,8 +1,10 @@
 // grass-deferred: a small deferred renderer with grass in its G-buffer (docs/integration.md,
 // "Deferred renderers"). Headless GL 4.5 (the test hosts' EGL context), one frame, a PNG:
 //
-//   grass-deferred [out.png]        default out.png: grass-deferred.png
+//   grass-deferred [--backend gl|vk] [out.png]        default: gl, grass-deferred.png
 //
+// --backend vk: the same scene with Vulkan (vk_deferred.cpp): grass's G-buffer drawn with
+// grass_vk_record, the ground and the lighting on the CPU. The scene: scene.hpp.
 // 1. The G-buffer: base colour (RGBA16F, linear), normal (RGBA8, n * 0.5 + 0.5), material
 //    (RGBA8: roughness, translucency, ambient occlusion) and depth. The host draws its ground
 //    into it, then grass draws a GRASS_PASS_GBUFFER view into the same attachments.
@@ -16,6 +18,7 @@
 #include "headless_host.hpp"
 #include "host_factories.hpp"
 #include "image_io.hpp"
+#include "scene.hpp"
 
 #include <grass/grass_gl.h>
 
@@ -27,7 +30,7 @@
 
 namespace {
 
-constexpr uint32_t kWidth = 480, kHeight = 270;
+using namespace deferred;
 
 // The G-buffer's ground: a quad at y = 0 over the field and around it, camera-relative.
 const char* const kGroundVert = R"(#version 450
@@ -125,7 +128,30 @@ bool ok(grass_result r, const char* call) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const std::string out_path = argc > 1 ? argv[1] : "grass-deferred.png";
+    bool vulkan = false;
+    std::string out_path = "grass-deferred.png";
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--backend" && i + 1 < argc &&
+            (std::string(argv[i + 1]) == "gl" || std::string(argv[i + 1]) == "vk")) {
+            vulkan = std::string(argv[++i]) == "vk";
+        } else if (arg.rfind("--", 0) == 0) {
+            std::fprintf(stderr,
+                         "grass-deferred: unknown option %s (usage: grass-deferred [--backend gl|vk] [out.png])\n",
+                         arg.c_str());
+            return 2;
+        } else {
+            out_path = arg;
+        }
+    }
+#ifdef GRASS_HOST_HAS_VULKAN
+    if (vulkan) return run_vulkan(out_path);
+#else
+    if (vulkan) {
+        std::fprintf(stderr, "grass-deferred: this build has no Vulkan backend\n");
+        return 2;
+    }
+#endif
     grass_host::TargetDesc target;
     target.width = kWidth;
     target.height = kHeight;
@@ -180,22 +206,15 @@ int main(int argc, char** argv) {
     if (!ok(host->create_context(cd, &ctx), "grass_gl_create_context")) return 1;
     bool success = ok(grass_create_patch(ctx, &pd, &patch), "grass_create_patch");
     fd.patch = patch;
-    fd.cells_x = fd.cells_z = 64; // 16 m x 16 m
+    fd.cells_x = fd.cells_z = kCells;
     success = success && ok(grass_create_field(ctx, &fd, &field), "grass_create_field");
 
-    // The camera 1.4 m up at the field's edge, in a late afternoon: a low sun, three lamps in the grass.
-    const double eye[3] = {8.0, 1.4, -0.5}, at[3] = {8.0, 0.0, 8.0};
-    grass_view_desc view = grass_host::make_view(*host, eye, at, 55.0f, 0.05f, 100.0f);
+    const double* eye = kEye;
+    grass_view_desc view = grass_host::make_view(*host, kEye, kAt, kFovy, kNear, kFar);
     view.viewport[2] = kWidth;
     view.viewport[3] = kHeight;
-    float vp[16]; // camera-relative world -> clip: the projection times the view's rotation
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) {
-            float s = 0.0f;
-            for (int k = 0; k < 3; ++k) s += view.projection[4 * k + r] * (c < 3 ? view.view[4 * c + k] : 0.0f);
-            vp[4 * c + r] = c < 3 ? s : view.projection[12 + r];
-        }
-    }
+    float vp[16]; // camera-relative world -> clip
+    view_projection(view, vp);
     const float far_depth = 1.0f, zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     gl.BindFramebuffer(GL_FRAMEBUFFER, gbuffer);
     gl.Viewport(0, 0, kWidth, kHeight);
@@ -211,13 +230,8 @@ int main(int argc, char** argv) {
     gl.DrawArrays(GL_TRIANGLES, 0, 6);
 
     // grass into the same G-buffer: albedo, normal, material (with its ambient occlusion).
-    grass_view_gbuffer_desc layout = grass_default_view_gbuffer_desc();
-    layout.attachment_count = 3;
-    layout.attachments[0].semantic = GRASS_GBUFFER_ALBEDO;
-    layout.attachments[0].format = GRASS_GBUFFER_FORMAT_FLOAT;
-    layout.attachments[1].semantic = GRASS_GBUFFER_NORMAL;
-    layout.attachments[2].semantic = GRASS_GBUFFER_MATERIAL;
-    layout.attachments[2].write_mask = 0x7;
+    grass_view_gbuffer_desc layout = gbuffer_layout();
+    layout.attachments[0].format = GRASS_GBUFFER_FORMAT_FLOAT; // GL's albedo is RGBA16F
     grass_view_pass_desc pass = grass_default_view_pass_desc();
     pass.pass = GRASS_PASS_GBUFFER;
     pass.next = &layout;
@@ -226,14 +240,10 @@ int main(int argc, char** argv) {
               ok(grass_gl_render(ctx), "grass_gl_render") && ok(grass_end_frame(ctx), "grass_end_frame");
 
     // The lighting pass into the sRGB target.
-    const float sun_direction[3] = {-0.48f, 0.52f, 0.71f}, sun_color[3] = {1.0f, 0.82f, 0.62f}; // unit; warm
-    const float ambient[3] = {0.12f, 0.15f, 0.22f};
-    const double lamps[3][3] = {{6.0, 0.5, 3.0}, {10.5, 0.6, 5.0}, {7.5, 0.4, 9.0}};
-    const float lamp_colors[3][4] = {{2.4f, 1.6f, 0.7f, 0.0f}, {0.6f, 1.2f, 2.6f, 0.0f}, {2.2f, 0.8f, 1.8f, 0.0f}};
     float lamp_positions[3][4];
     for (int i = 0; i < 3; ++i) {
-        for (int c = 0; c < 3; ++c) lamp_positions[i][c] = float(lamps[i][c] - eye[c]);
-        lamp_positions[i][3] = 6.0f; // range (m)
+        for (int c = 0; c < 3; ++c) lamp_positions[i][c] = float(kLamps[i][c] - eye[c]);
+        lamp_positions[i][3] = kLampRange;
     }
     // Lights the G-buffer into the sRGB target and reads it back, top row first; `with_lamps`
     // false: the sun and the ambient light alone (what the lamps add is checked below).
@@ -246,11 +256,11 @@ int main(int argc, char** argv) {
         for (int i = 0; i < 4; ++i) tx.BindTextureUnit(GLuint(i), textures[i]);
         tx.UniformMatrix4fv(0, 1, GL_FALSE, vp);
         tx.Uniform2f(1, float(kWidth), float(kHeight));
-        tx.Uniform3fv(2, 1, sun_direction);
-        tx.Uniform3fv(3, 1, sun_color);
-        tx.Uniform3fv(4, 1, ambient);
+        tx.Uniform3fv(2, 1, kSunDirection);
+        tx.Uniform3fv(3, 1, kSunColor);
+        tx.Uniform3fv(4, 1, kAmbient);
         tx.Uniform4fv(5, 3, &lamp_positions[0][0]);
-        tx.Uniform4fv(8, 3, with_lamps ? &lamp_colors[0][0] : &none[0][0]);
+        tx.Uniform4fv(8, 3, with_lamps ? &kLampColors[0][0] : &none[0][0]);
         gl.DrawArrays(GL_TRIANGLES, 0, 3);
         std::vector<uint8_t> rows(size_t(kWidth) * kHeight * 4), top_first(rows.size());
         gl.Disable(GL_FRAMEBUFFER_SRGB); // the stored sRGB bytes as they are
@@ -260,23 +270,7 @@ int main(int argc, char** argv) {
         return top_first;
     };
     const std::vector<uint8_t> sun_only = light_and_read(false);
-    grass_host::Image image;
-    image.width = kWidth;
-    image.height = kHeight;
-    image.rgba = light_and_read(true);
-    long green = 0, lit_by_lamps = 0;
-    for (size_t p = 0; p < image.rgba.size(); p += 4) {
-        const uint8_t* c = &image.rgba[p];
-        green += c[1] > c[0] + 8 && c[1] > c[2] + 8 ? 1 : 0;
-        int brighter = 0;
-        for (int k = 0; k < 3; ++k) brighter = std::max(brighter, int(c[k]) - int(sun_only[p + size_t(k)]));
-        lit_by_lamps += brighter > 40 ? 1 : 0;
-    }
-    success = success && grass_host::write_png(out_path, image, &error);
-    std::printf("wrote %s: %ld of %u pixels green, %ld over 40 levels brighter for the lamps\n", out_path.c_str(),
-                green, kWidth * kHeight, lit_by_lamps);
-    success = success && green * 10 >= long(kWidth) * kHeight && lit_by_lamps > 2000;
-    if (!success) std::fprintf(stderr, "the picture holds no lit grass (or could not be written: %s)\n", error.c_str());
+    success = holds_lit_grass(light_and_read(true), sun_only, out_path) && success;
     grass_destroy_context(ctx);
     return success ? 0 : 1;
 }

@@ -38,6 +38,8 @@ int main(void) {
     CHECK(grass_default_vk_velocity_target_desc().type == GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC);
     CHECK(grass_default_vk_velocity_target_desc().color_attachment_count == 2 &&
           grass_default_vk_velocity_target_desc().velocity_attachment == 1);
+    CHECK(grass_default_vk_gbuffer_target_desc().type == GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC);
+    CHECK(grass_default_vk_gbuffer_target_desc().color_attachment_count == 4);
     CHECK(grass_default_vk_record_desc().type == GRASS_STRUCT_TYPE_VK_RECORD_DESC);
     CHECK_OK(grass_create_context(GRASS_HEADER_VERSION, &cd, &ctx));
     if (!ctx) return 1;

@@ -19,6 +19,7 @@
 //   grass_vk_velocity_target_desc, or with another velocity attachment, refuses the view.
 #include "gl_program_spy.hpp"
 #include "gl_test_functions.hpp"
+#include "matrix4.hpp"
 #include "render_fixture.hpp"
 #include "vk_intercept.hpp"
 
@@ -48,31 +49,7 @@ void mul4(const double a[16], const double b[16], double c[16]) {
     }
 }
 
-// The inverse of a 4x4 matrix (Gauss-Jordan with partial pivoting), column-major.
-void invert4(const double m[16], double out[16]) {
-    double a[4][8];
-    for (int r = 0; r < 4; ++r) {
-        for (int c = 0; c < 4; ++c) {
-            a[r][c] = m[4 * c + r];
-            a[r][4 + c] = r == c ? 1.0 : 0.0;
-        }
-    }
-    for (int c = 0; c < 4; ++c) {
-        int p = c;
-        for (int r = c + 1; r < 4; ++r) p = std::fabs(a[r][c]) > std::fabs(a[p][c]) ? r : p;
-        for (int k = 0; k < 8; ++k) std::swap(a[c][k], a[p][k]);
-        const double d = a[c][c];
-        for (int k = 0; k < 8; ++k) a[c][k] /= d;
-        for (int r = 0; r < 4; ++r) {
-            if (r == c) continue;
-            const double f = a[r][c];
-            for (int k = 0; k < 8; ++k) a[r][k] -= f * a[c][k];
-        }
-    }
-    for (int r = 0; r < 4; ++r) {
-        for (int c = 0; c < 4; ++c) out[4 * c + r] = a[r][4 + c];
-    }
-}
+using grass_host::invert4; // matrix4.hpp
 
 // projection x the view's rotation (camera-relative world -> clip), in double.
 void camera_relative_vp(const float view[16], const float projection[16], double out[16]) {

@@ -41,6 +41,11 @@ Rig::Rig(const Options& options) : options_(options) {
     // --motion on Vulkan: the host's pass with an RGBA32F velocity target at colour attachment 1,
     // given to grass (grass_vk_velocity_target_desc).
     if (options.motion && options.backend == GRASS_BACKEND_VULKAN) target.vk_velocity_attachment = 1;
+    // --gbuffer on Vulkan: the host's pass with two more RGBA8 UNORM colour attachments (normal,
+    // material), given to grass (grass_vk_gbuffer_target_desc); albedo into its colour.
+    if (options.gbuffer && options.backend == GRASS_BACKEND_VULKAN) {
+        target.vk_gbuffer_formats[0] = target.vk_gbuffer_formats[1] = 37; // VK_FORMAT_R8G8B8A8_UNORM
+    }
     std::string error;
     host_ = grass_host::Host::create(options.backend, target, &error);
     if (!host_) throw grass_sample::Failure("cannot create the headless host: " + error);

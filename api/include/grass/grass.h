@@ -207,6 +207,7 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC = 0x67720205,       /* 0.5 */
     GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC = 0x67720206,      /* 0.5: depth-only passes on Vulkan */
     GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC = 0x67720207, /* 0.5: motion vectors on Vulkan */
+    GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC = 0x67720208,  /* 0.5: G-buffer views on Vulkan */
     /* 0.5: responsive grass */
     GRASS_STRUCT_TYPE_BLADE_MECHANICS = 0x67720008,
     GRASS_STRUCT_TYPE_WIND_DESC = 0x67720009,
@@ -316,8 +317,8 @@ typedef enum grass_message_id {
     GRASS_MSG_COLLIDER_TILE_CAP = 413,
     /* 0.5: a G-buffer view (GRASS_PASS_GBUFFER) was drawn where its attachments cannot go (GL:
      * the bound draw framebuffer is the default one, or the draw buffer of an attachment that
-     * grass writes is GL_NONE), refused with GRASS_ERROR_INVALID_STATE before anything is
-     * drawn. */
+     * grass writes is GL_NONE; Vulkan: the context has no grass_vk_gbuffer_target_desc, or
+     * the view's attachment count is not its), refused before anything is drawn. */
     GRASS_MSG_GBUFFER_TARGET = 414,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
@@ -985,10 +986,13 @@ typedef struct grass_gbuffer_attachment {
 } grass_gbuffer_attachment;
 
 /* 0.5: Chained on grass_view_desc.next with a grass_view_pass_desc of GRASS_PASS_GBUFFER:
- * the host's G-buffer layout. Attachment i is the bound framebuffer's draw buffer i
+ * the host's G-buffer layout. GL: attachment i is the bound framebuffer's draw buffer i
  * (glDrawBuffers' list, GL_DRAW_BUFFERi); grass routes its outputs there for its draws and
- * restores the host's draw buffers and colour masks after. A colour or depth view ignores it.
- * A frame without a G-buffer view compiles, creates and holds nothing for it. */
+ * restores the host's draw buffers and colour masks after. Vulkan: attachment i is colour
+ * attachment i of the pass (grass_vk_gbuffer_target_desc; attachment_count must equal its
+ * color_attachment_count, else GRASS_ERROR_INVALID_ARGUMENT); formats are the pass's. A
+ * colour or depth view ignores it. A frame without a G-buffer view compiles, creates and
+ * holds nothing for it. */
 typedef struct grass_view_gbuffer_desc {
     grass_struct_type type;    /* GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC */
     const void* next;          /* the view's next extension, or NULL */
@@ -1016,8 +1020,9 @@ typedef enum grass_pass_kind {
      * on the view describes (required: without one the view is refused,
      * GRASS_ERROR_INVALID_ARGUMENT), and nothing else: no lit colour, nothing in an attachment
      * of semantic NONE nor in a channel its write mask leaves off. Coverage is alpha-tested as
-     * the depth pass's (no blending, no alpha to coverage). GL only: a Vulkan context refuses
-     * a G-buffer view (GRASS_ERROR_UNSUPPORTED). */
+     * the depth pass's (no blending, no alpha to coverage). Vulkan: into the host's pass that
+     * a grass_vk_gbuffer_target_desc describes, which a Vulkan context needs for it (without
+     * one it refuses a G-buffer view, GRASS_ERROR_INVALID_STATE). */
     GRASS_PASS_GBUFFER = 2
 } grass_pass_kind;
 

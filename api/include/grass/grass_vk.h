@@ -81,7 +81,7 @@ typedef struct grass_vk_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_DESC */
     /* NULL, or a chain of extensions (0.5): a grass_vk_host_objects_desc, a
      * grass_vk_multiview_desc, a grass_vk_depth_pass_desc, a grass_vk_velocity_target_desc,
-     * each at most once, in any order */
+     * a grass_vk_gbuffer_target_desc, each at most once, in any order */
     const void* next;
     grass_vk_get_instance_proc_addr_fn get_instance_proc_addr; /* required */
     void* instance;                                            /* VkInstance, required */
@@ -201,6 +201,40 @@ typedef struct grass_vk_velocity_target_desc {
 
 /* 0.5 */
 GRASS_API grass_vk_velocity_target_desc grass_default_vk_velocity_target_desc(void);
+
+/* 0.5: G-buffer views (grass_view_pass_desc GRASS_PASS_GBUFFER, grass_view_gbuffer_desc;
+ * docs/integration.md, "Deferred renderers"), chained through grass_vk_desc.next: the colour
+ * attachments of the pass grass draws in (grass_vk_desc's render pass subpass, or its dynamic
+ * rendering) when the host draws G-buffer views in it. A G-buffer view's
+ * grass_view_gbuffer_desc.attachment_count must equal color_attachment_count; attachment i
+ * of its layout is colour attachment i of the pass. grass makes a G-buffer view's pipelines
+ * on the first view that draws each layout (the semantic and write mask of every attachment),
+ * tier and feature mask: each semantic's output goes to its attachment, unblended, with the
+ * attachment's write mask (a NONE attachment's is 0), and grass's other outputs are left out
+ * of the module; depth tested and written as a colour view's; no alpha to coverage. The
+ * GrassGBuffer block lives per view slot in the view's descriptor set of grass's own (with a
+ * motion view's GrassMotion block: a G-buffer view may write velocity). The device needs
+ * independentBlend when the pass has more than one colour attachment. Without this struct a
+ * context refuses a G-buffer view (GRASS_ERROR_INVALID_STATE); a context that never draws one
+ * holds nothing for it. Mono only: not with grass_vk_multiview_desc.view_mask 0x3
+ * (GRASS_ERROR_INVALID_ARGUMENT). With a grass_vk_velocity_target_desc besides, both describe
+ * the same pass: their color_attachment_count must agree. Every pipeline of the context (its
+ * colour views' too) then has a blend state per attachment; a colour view writes attachment 0
+ * alone. Sample count: grass_vk_desc.sample_count, for every attachment. */
+typedef struct grass_vk_gbuffer_target_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC */
+    const void* next;       /* NULL, or a further extension of grass_vk_desc */
+    /* How many colour attachments the pass has: 1 to 8. Default 4. */
+    uint32_t color_attachment_count;
+    /* Dynamic rendering (grass_vk_desc.render_pass 0): the VkFormat of every colour
+     * attachment after the first, at its index (color_formats[i] for attachment i), each not
+     * VK_FORMAT_UNDEFINED; color_formats[0] is ignored (attachment 0's is
+     * grass_vk_desc.color_format). A render pass: ignored. */
+    uint32_t color_formats[8];
+} grass_vk_gbuffer_target_desc;
+
+/* 0.5 */
+GRASS_API grass_vk_gbuffer_target_desc grass_default_vk_gbuffer_target_desc(void);
 
 GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const grass_context_desc* desc,
                                                const grass_vk_desc* vk_desc, grass_context** out_context);

@@ -71,6 +71,13 @@ GRASS_API grass_vk_velocity_target_desc grass_default_vk_velocity_target_desc(vo
     d.velocity_attachment = 1;
     return d;
 }
+GRASS_API grass_vk_gbuffer_target_desc grass_default_vk_gbuffer_target_desc(void) {
+    grass_vk_gbuffer_target_desc d;
+    std::memset(&d, 0, sizeof(d));
+    d.type = GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC;
+    d.color_attachment_count = 4;
+    return d;
+}
 GRASS_API grass_vk_record_desc grass_default_vk_record_desc(void) {
     grass_vk_record_desc d;
     std::memset(&d, 0, sizeof(d));

@@ -206,10 +206,20 @@ grass_result check_views(grass_context* ctx, const char* fn, const ViewExtension
                          fn);
     }
     if (ext.pass && ext.pass->pass == GRASS_PASS_GBUFFER && ctx->backend->kind() == GRASS_BACKEND_VULKAN) {
-        return ctx->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
-                         "%s: view->next chains a grass_view_pass_desc with GRASS_PASS_GBUFFER, but the Vulkan "
-                         "backend does not draw G-buffer passes yet (GL does)",
-                         fn);
+        if (target.gbuffer_attachments == 0) {
+            return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_GBUFFER_TARGET,
+                             "%s: view->next chains a grass_view_pass_desc with GRASS_PASS_GBUFFER, but the context "
+                             "was made without a grass_vk_gbuffer_target_desc on grass_vk_desc.next, which names the "
+                             "pass's colour attachments that grass makes its G-buffer pipelines for",
+                             fn);
+        }
+        if (ext.gbuffer && ext.gbuffer->attachment_count != target.gbuffer_attachments) {
+            return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_GBUFFER_TARGET,
+                             "%s: grass_view_gbuffer_desc->attachment_count is %u, but the context's "
+                             "grass_vk_gbuffer_target_desc.color_attachment_count is %u (attachment i of the layout "
+                             "is colour attachment i of the pass)",
+                             fn, ext.gbuffer->attachment_count, target.gbuffer_attachments);
+        }
     }
     if (ext.shadow && ctx->backend->kind() == GRASS_BACKEND_VULKAN)
         GRASS_TRY(check_vk_shadow(ctx, fn, *ext.shadow, target));

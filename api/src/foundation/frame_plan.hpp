@@ -71,6 +71,10 @@ struct RenderTarget {
     // the backend's motion pipelines write (grass_vk_velocity_target_desc), 0 where it has
     // none and refuses them. GL: 0 (it routes the bound framebuffer's draw buffers per view).
     uint32_t velocity_attachment = 0;
+    // G-buffer views (GRASS_PASS_GBUFFER) on Vulkan: the colour attachments of the pass the
+    // backend's G-buffer pipelines draw in (grass_vk_gbuffer_target_desc), 0 where it has none
+    // and refuses them. GL: 0 (it checks the bound framebuffer's draw buffers per view).
+    uint32_t gbuffer_attachments = 0;
     bool operator==(const RenderTarget& o) const {
         return samples == o.samples && clip_zero_to_one == o.clip_zero_to_one && views == o.views;
     }

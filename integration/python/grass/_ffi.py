@@ -55,6 +55,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_VK_MULTIVIEW_DESC": 0x67720205,
         "GRASS_STRUCT_TYPE_VK_DEPTH_PASS_DESC": 0x67720206,
         "GRASS_STRUCT_TYPE_VK_VELOCITY_TARGET_DESC": 0x67720207,
+        "GRASS_STRUCT_TYPE_VK_GBUFFER_TARGET_DESC": 0x67720208,
         "GRASS_STRUCT_TYPE_BLADE_MECHANICS": 0x67720008, "GRASS_STRUCT_TYPE_WIND_DESC": 0x67720009,
         "GRASS_STRUCT_TYPE_INTERACTION_DESC": 0x6772000A, "GRASS_STRUCT_TYPE_WIND_MAP_DESC": 0x6772000B,
         "GRASS_STRUCT_TYPE_BLADE_CULLING_DESC": 0x6772000C, "GRASS_STRUCT_TYPE_PIPELINE_DESC": 0x6772000D,
@@ -421,6 +422,11 @@ class grass_vk_velocity_target_desc(Structure):
                 ("velocity_attachment", c_uint32), ("color_formats", c_uint32 * 7)]
 
 
+class grass_vk_gbuffer_target_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("color_attachment_count", c_uint32),
+                ("color_formats", c_uint32 * 8)]
+
+
 class grass_vk_record_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("command_buffer", c_void_p)]
 
@@ -513,6 +519,7 @@ FUNCTIONS = {
     "grass_default_vk_multiview_desc": (grass_vk_multiview_desc, []),
     "grass_default_vk_depth_pass_desc": (grass_vk_depth_pass_desc, []),
     "grass_default_vk_velocity_target_desc": (grass_vk_velocity_target_desc, []),
+    "grass_default_vk_gbuffer_target_desc": (grass_vk_gbuffer_target_desc, []),
     "grass_vk_prepare": (grass_enum, [_ctx, _P(grass_vk_prepare_desc)]),
     "grass_default_vk_record_desc": (grass_vk_record_desc, []),
     "grass_vk_record": (grass_enum, [_ctx, _P(grass_vk_record_desc)]),
