@@ -21,6 +21,12 @@ void VkDeferredHost::on_message(void* user, const std::string& line) {
 }
 
 bool VkDeferredHost::init(std::string* error) {
+    if (target_.width == 0 || target_.height == 0 || target_.samples != 1) {
+        *error = "grass-deferred's Vulkan host draws single-sampled targets of at least 1 x 1 pixels (target is " +
+                 std::to_string(target_.width) + " x " + std::to_string(target_.height) + ", samples " +
+                 std::to_string(target_.samples) + ")";
+        return false;
+    }
     grass_bootstrap::VkInstanceDesc desc;
     desc.application = "grass-deferred";
     desc.messenger_without_layer = true;

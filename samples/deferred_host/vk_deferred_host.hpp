@@ -38,8 +38,9 @@ static_assert(sizeof(LightingUniforms) == 224, "lighting.frag's std140 block");
 
 class VkDeferredHost final : public grass_host::Host {
 public:
-    // A host for `target` (its width and height; the rest is this host's own), nullptr and
-    // *error when there is no Vulkan device.
+    // A host for `target`: its width and height (samples 1; its other fields are not read,
+    // the G-buffer, ground and lights being this host's own). nullptr and *error for another
+    // target or when there is no Vulkan device.
     static std::unique_ptr<VkDeferredHost> create(const grass_host::TargetDesc& target, std::string* error);
     ~VkDeferredHost() override;
     VkDeferredHost(const VkDeferredHost&) = delete;

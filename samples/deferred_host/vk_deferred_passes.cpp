@@ -38,46 +38,34 @@ struct GroundConstants {
     float camera[3], pad;
 };
 
-// The lighting pass: the lit image, written whole (its old texels are not loaded), left
-// for the read-back copy.
-VkResult create_lighting_pass(VkDevice device, VkRenderPass* out) {
-    VkAttachmentDescription lit{};
-    lit.format = kLitFormat;
-    lit.samples = VK_SAMPLE_COUNT_1_BIT;
-    lit.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    lit.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    lit.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    lit.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    lit.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    lit.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    const VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription subpass{};
-    subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &ref;
-    VkSubpassDependency dependencies[2] = {};
-    // The last read-back copy of the lit image comes before this pass writes it (the G-buffer
-    // pass's own dependency makes its writes visible to this pass's fragment shader).
-    dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-    dependencies[0].dstSubpass = 0;
-    dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-    dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    // Its writes come before the read-back copy.
-    dependencies[1].srcSubpass = 0;
-    dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-    dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-    dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    info.attachmentCount = 1;
-    info.pAttachments = &lit;
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = 2;
-    info.pDependencies = dependencies;
-    return vkCreateRenderPass(device, &info, nullptr, out);
+// A dependency between the pass's one subpass and what comes before it (`into`) or after it.
+VkSubpassDependency external(bool into, VkPipelineStageFlags src_stages, VkAccessFlags src_access,
+                             VkPipelineStageFlags dst_stages, VkAccessFlags dst_access) {
+    VkSubpassDependency d{};
+    d.srcSubpass = into ? VK_SUBPASS_EXTERNAL : 0;
+    d.dstSubpass = into ? 0 : VK_SUBPASS_EXTERNAL;
+    d.srcStageMask = src_stages;
+    d.dstStageMask = dst_stages;
+    d.srcAccessMask = src_access;
+    d.dstAccessMask = dst_access;
+    return d;
+}
+
+// One of the host's pipelines (mesh_drawer_vk.hpp: no culling, depth tested and written
+// where the pass has depth) in `pass` with `attachments` colour attachments.
+VkResult create_pipeline(VkDevice device, const uint32_t* vert, uint32_t vert_size, const uint32_t* frag,
+                         uint32_t frag_size, VkPipelineLayout layout, VkRenderPass pass, VkFormat color_format,
+                         uint32_t attachments, VkPipeline* out) {
+    grass_host::VkHostPipelineDesc desc;
+    desc.vertex_code = vert;
+    desc.vertex_code_size = vert_size;
+    desc.fragment_code = frag;
+    desc.fragment_code_size = frag_size;
+    desc.layout = layout;
+    desc.target.render_pass = pass;
+    desc.target.color_format = color_format;
+    desc.target.color_attachments = attachments;
+    return grass_host::create_host_pipeline(device, desc, out);
 }
 
 } // namespace
@@ -114,25 +102,34 @@ bool VkDeferredHost::create_passes(std::string* error) {
     pass.color_final = kColorRead;
     pass.keep_depth = true;
     pass.depth_final = kDepthRead;
-    VkSubpassDependency* d = pass.dependencies;
+    const VkPipelineStageFlags attachment_stages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                                   VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                                   VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
     // The last lighting pass's reads come before this pass writes the images again.
-    d[0].srcSubpass = VK_SUBPASS_EXTERNAL;
-    d[0].dstSubpass = 0;
-    d[0].srcStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-    d[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                        VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    d[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
-                         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    pass.dependencies[0] =
+        external(true, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, attachment_stages,
+                 VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                     VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
     // Its writes come before the lighting pass samples them.
-    d[1].srcSubpass = 0;
-    d[1].dstSubpass = VK_SUBPASS_EXTERNAL;
-    d[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                        VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    d[1].dstStageMask = VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-    d[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-    d[1].dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    pass.dependencies[1] = external(false, attachment_stages,
+                                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
     if (!grass_bootstrap::create_render_pass(device_, pass, &gbuffer_pass_, error)) return false;
-    VkResult r = create_lighting_pass(device_, &lighting_pass_);
+    // The lighting pass: the lit image alone, left for the read-back copy.
+    grass_bootstrap::VkPassDesc lighting;
+    lighting.color_format = kLitFormat;
+    lighting.depth_format = VK_FORMAT_UNDEFINED;
+    lighting.color_final = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    // The last read-back copy of the lit image comes before this pass writes it (the G-buffer
+    // pass's own dependency makes its writes visible to this pass's fragment shader).
+    lighting.dependencies[0] =
+        external(true, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    // Its writes come before the read-back copy.
+    lighting.dependencies[1] =
+        external(false, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    if (!grass_bootstrap::create_render_pass(device_, lighting, &lighting_pass_, error)) return false;
     const VkImageView views[4] = {gbuffer_[0].view, gbuffer_[3].view, gbuffer_[1].view, gbuffer_[2].view};
     VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     fb.renderPass = gbuffer_pass_;
@@ -141,12 +138,12 @@ bool VkDeferredHost::create_passes(std::string* error) {
     fb.width = target_.width;
     fb.height = target_.height;
     fb.layers = 1;
-    if (r == VK_SUCCESS) r = vkCreateFramebuffer(device_, &fb, nullptr, &gbuffer_framebuffer_);
+    VkResult r = vkCreateFramebuffer(device_, &fb, nullptr, &gbuffer_framebuffer_);
     fb.renderPass = lighting_pass_;
     fb.attachmentCount = 1;
     fb.pAttachments = &lit_.view;
     if (r == VK_SUCCESS) r = vkCreateFramebuffer(device_, &fb, nullptr, &lighting_framebuffer_);
-    if (r != VK_SUCCESS) *error = vk_error("creating the lighting pass and the framebuffers", r);
+    if (r != VK_SUCCESS) *error = vk_error("vkCreateFramebuffer", r);
     return r == VK_SUCCESS;
 }
 
@@ -174,25 +171,14 @@ bool VkDeferredHost::create_pipelines(std::string* error) {
     layout.pPushConstantRanges = &constants;
     if (r == VK_SUCCESS) r = vkCreatePipelineLayout(device_, &layout, nullptr, &ground_layout_);
 
-    grass_host::VkHostPipelineDesc ground; // depth-tested and written, three attachments
-    ground.vertex_code = deferred_spirv::gbuffer_ground_vert;
-    ground.vertex_code_size = deferred_spirv::gbuffer_ground_vert_size;
-    ground.fragment_code = deferred_spirv::gbuffer_ground_frag;
-    ground.fragment_code_size = deferred_spirv::gbuffer_ground_frag_size;
-    ground.layout = ground_layout_;
-    ground.target.render_pass = gbuffer_pass_;
-    ground.target.color_format = kGBufferFormats[0];
-    ground.target.color_attachments = 3;
-    if (r == VK_SUCCESS) r = grass_host::create_host_pipeline(device_, ground, &ground_pipeline_);
-    grass_host::VkHostPipelineDesc lighting; // the pass has no depth: its depth state is ignored
-    lighting.vertex_code = deferred_spirv::lighting_vert;
-    lighting.vertex_code_size = deferred_spirv::lighting_vert_size;
-    lighting.fragment_code = deferred_spirv::lighting_frag;
-    lighting.fragment_code_size = deferred_spirv::lighting_frag_size;
-    lighting.layout = lighting_layout_;
-    lighting.target.render_pass = lighting_pass_;
-    lighting.target.color_format = kLitFormat;
-    if (r == VK_SUCCESS) r = grass_host::create_host_pipeline(device_, lighting, &lighting_pipeline_);
+    using namespace deferred_spirv;
+    if (r == VK_SUCCESS) // depth-tested and written, three attachments
+        r = create_pipeline(device_, gbuffer_ground_vert, gbuffer_ground_vert_size, gbuffer_ground_frag,
+                            gbuffer_ground_frag_size, ground_layout_, gbuffer_pass_, kGBufferFormats[0], 3,
+                            &ground_pipeline_);
+    if (r == VK_SUCCESS) // the pass has no depth: the pipeline's depth state is ignored
+        r = create_pipeline(device_, lighting_vert, lighting_vert_size, lighting_frag, lighting_frag_size,
+                            lighting_layout_, lighting_pass_, kLitFormat, 1, &lighting_pipeline_);
     if (r != VK_SUCCESS) *error = vk_error("creating the ground's and the lighting's pipelines", r);
     return r == VK_SUCCESS;
 }
@@ -267,6 +253,9 @@ void VkDeferredHost::record_lighting(VkCommandBuffer cmd) {
     info.renderPass = lighting_pass_;
     info.framebuffer = lighting_framebuffer_;
     info.renderArea = {{0, 0}, {target_.width, target_.height}};
+    const VkClearValue clear{}; // the bootstrap's passes clear (the triangle covers every pixel anyway)
+    info.clearValueCount = 1;
+    info.pClearValues = &clear;
     vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
     const VkViewport viewport{0.0f, 0.0f, float(target_.width), float(target_.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
