@@ -49,11 +49,11 @@ VkResult create_host_pipeline(VkDevice device, const VkHostPipelineDesc& desc, V
     depth.depthTestEnable = VK_TRUE;
     depth.depthWriteEnable = VK_TRUE;
     depth.depthCompareOp = desc.target.reversed_z ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
-    VkPipelineColorBlendAttachmentState attachment{};
-    attachment.colorWriteMask = 0xf;
+    VkPipelineColorBlendAttachmentState attachments[8] = {};
+    for (VkPipelineColorBlendAttachmentState& a : attachments) a.colorWriteMask = 0xf;
     VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    blend.attachmentCount = desc.target.depth_only ? 0 : 1;
-    blend.pAttachments = &attachment;
+    blend.attachmentCount = desc.target.depth_only ? 0 : std::min(desc.target.color_attachments, 8u);
+    blend.pAttachments = attachments;
     const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dynamic.dynamicStateCount = 2;

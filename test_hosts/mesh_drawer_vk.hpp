@@ -36,6 +36,9 @@ struct VkPassTarget {
     // A depth-only pass (a shadow map's: no colour attachment), with a static depth bias.
     bool depth_only = false;
     float depth_bias_constant = 0.0f, depth_bias_slope = 0.0f;
+    // Colour attachments the pipeline writes, each whole and unblended: 1 to 8, more than one
+    // with a render pass only (a G-buffer pass's: samples/deferred_host).
+    uint32_t color_attachments = 1;
 };
 
 // A graphics pipeline of the hosts' own (ground, meshes): triangle list, no culling, depth

@@ -3,13 +3,14 @@
 //
 //   grass-deferred [--backend gl|vk] [out.png]        default: gl, grass-deferred.png
 //
-// --backend vk: the same scene with Vulkan (vk_deferred.cpp): grass's G-buffer drawn with
-// grass_vk_record, the ground and the lighting on the CPU. The scene: scene.hpp.
+// --backend vk: the same scene with Vulkan (vk_deferred.cpp): the same G-buffer and lighting
+// passes in a Vulkan deferred host (vk_deferred_host.hpp). The scene: scene.hpp. Both halves
+// draw with the same shaders (shaders/: the ground, the lighting).
 // 1. The G-buffer: base colour (RGBA16F, linear), normal (RGBA8, n * 0.5 + 0.5), material
 //    (RGBA8: roughness, translucency, ambient occlusion) and depth. The host draws its ground
 //    into it, then grass draws a GRASS_PASS_GBUFFER view into the same attachments.
-// 2. The lighting pass: one full-screen triangle reads the G-buffer and lights every pixel,
-//    ground and grass alike, with a low sun, an ambient term and three point lights (glTF's
+// 2. The lighting pass (shaders/lighting.frag): one full-screen triangle reads the G-buffer
+//    and lights every pixel, ground and grass alike, with a low sun, an ambient term and three point lights (glTF's
 //    falloff, as grass_light's), into an sRGB target that becomes the PNG.
 // Exits 0 when the picture holds lit grass (at least a tenth of its pixels green-dominant,
 // and the point lights brightening over 2000 pixels by more than 40 levels against the sun
@@ -28,78 +29,16 @@
 #include <string>
 #include <vector>
 
+namespace deferred_glsl { // shaders/, embedded as text by the build (Vulkan's SPIR-V: vk_deferred_passes.cpp)
+extern const char* const gbuffer_ground_vert; // the ground's quad into the G-buffer
+extern const char* const gbuffer_ground_frag;
+extern const char* const lighting_vert; // the full-screen lighting pass
+extern const char* const lighting_frag;
+} // namespace deferred_glsl
+
 namespace {
 
 using namespace deferred;
-
-// The G-buffer's ground: a quad at y = 0 over the field and around it, camera-relative.
-const char* const kGroundVert = R"(#version 450
-layout(location = 0) uniform mat4 u_view_projection; // camera-relative world -> clip
-layout(location = 1) uniform vec3 u_camera;
-void main() {
-    const vec2 corners[6] = vec2[](vec2(0, 0), vec2(1, 0), vec2(1, 1), vec2(0, 0), vec2(1, 1), vec2(0, 1));
-    vec2 corner = corners[gl_VertexID];
-    vec3 world = vec3(mix(-40.0, 56.0, corner.x), 0.0, mix(-40.0, 56.0, corner.y));
-    gl_Position = u_view_projection * vec4(world - u_camera, 1.0);
-}
-)";
-const char* const kGroundFrag = R"(#version 450
-layout(location = 0) out vec4 out_albedo;
-layout(location = 1) out vec4 out_normal;
-layout(location = 2) out vec4 out_material;
-void main() {
-    out_albedo = vec4(0.09, 0.065, 0.035, 1.0);     // soil
-    out_normal = vec4(0.5, 1.0, 0.5, 1.0);          // up, encoded as grass encodes a UNORM normal
-    out_material = vec4(1.0, 0.0, 1.0, 1.0);        // rough, opaque, unoccluded
-}
-)";
-
-// The lighting pass: every pixel of the G-buffer lit by the sun, the ambient light and the
-// point lights; the sky where nothing was drawn.
-const char* const kLightVert = R"(#version 450
-void main() {
-    vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
-    gl_Position = vec4(p, 0.0, 1.0);
-}
-)";
-const char* const kLightFrag = R"(#version 450
-layout(binding = 0) uniform sampler2D g_albedo;
-layout(binding = 1) uniform sampler2D g_normal;
-layout(binding = 2) uniform sampler2D g_material;
-layout(binding = 3) uniform sampler2D g_depth;
-layout(location = 0) uniform mat4 u_view_projection; // camera-relative world -> clip
-layout(location = 1) uniform vec2 u_size;
-layout(location = 2) uniform vec3 u_sun_direction;   // towards the sun
-layout(location = 3) uniform vec3 u_sun_color;
-layout(location = 4) uniform vec3 u_ambient;
-layout(location = 5) uniform vec4 u_light_position[3]; // camera-relative xyz, w: range
-layout(location = 8) uniform vec4 u_light_color[3];    // rgb x intensity
-layout(location = 0) out vec4 out_color;
-// What a blade lets through to its front of the light on its back (the material's g).
-vec3 diffuse(vec3 albedo, vec3 n, vec3 l, float translucency) {
-    float d = dot(n, l);
-    return albedo * (max(d, 0.0) + translucency * max(-d, 0.0));
-}
-void main() {
-    ivec2 p = ivec2(gl_FragCoord.xy);
-    float depth = texelFetch(g_depth, p, 0).r;
-    if (depth >= 1.0) { out_color = vec4(0.30, 0.42, 0.62, 1.0); return; }
-    vec3 albedo = texelFetch(g_albedo, p, 0).rgb;
-    vec3 n = normalize(texelFetch(g_normal, p, 0).xyz * 2.0 - 1.0);
-    vec3 m = texelFetch(g_material, p, 0).rgb;
-    vec4 clip = vec4(gl_FragCoord.xy / u_size * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-    vec4 rel = inverse(u_view_projection) * clip;
-    vec3 position = rel.xyz / rel.w; // camera-relative
-    vec3 color = albedo * u_ambient * m.b + u_sun_color * diffuse(albedo, n, u_sun_direction, m.g);
-    for (int i = 0; i < 3; ++i) {
-        vec3 to_light = u_light_position[i].xyz - position;
-        float d = length(to_light);
-        float fade = clamp(1.0 - pow(d / u_light_position[i].w, 4.0), 0.0, 1.0);
-        color += u_light_color[i].rgb * diffuse(albedo, n, to_light / d, m.g) * fade * fade / max(d * d, 1e-4);
-    }
-    out_color = vec4(color, 1.0);
-}
-)";
 
 // GL entry points beyond the bootstrap's table.
 struct Textures {
@@ -187,8 +126,10 @@ int main(int argc, char** argv) {
     tx.NamedFramebufferTexture(gbuffer, GL_DEPTH_ATTACHMENT, textures[3], 0);
     tx.NamedFramebufferDrawBuffers(gbuffer, 3, buffers);
     tx.NamedFramebufferTexture(lit, GL_COLOR_ATTACHMENT0, textures[4], 0);
-    const GLuint ground = grass_bootstrap::compile_program(gl, kGroundVert, kGroundFrag, "ground", &error);
-    const GLuint lighting = grass_bootstrap::compile_program(gl, kLightVert, kLightFrag, "lighting", &error);
+    const GLuint ground = grass_bootstrap::compile_program(gl, deferred_glsl::gbuffer_ground_vert,
+                                                           deferred_glsl::gbuffer_ground_frag, "ground", &error);
+    const GLuint lighting = grass_bootstrap::compile_program(gl, deferred_glsl::lighting_vert,
+                                                             deferred_glsl::lighting_frag, "lighting", &error);
     if (!ground || !lighting) {
         std::fprintf(stderr, "%s\n", error.c_str());
         return 1;

@@ -1,6 +1,7 @@
 // grass-deferred's scene, the same in both backends: the target, the camera, the lights and
-// the check that the picture holds lit grass. main.cpp draws it with GL (the lighting pass a
-// full-screen triangle), vk_deferred.cpp with Vulkan.
+// the check that the picture holds lit grass. main.cpp draws it with GL, vk_deferred.cpp with
+// Vulkan, with the same shaders (shaders/): the ground into the G-buffer, then a full-screen
+// lighting pass.
 #pragma once
 
 #include "headless_host.hpp"
@@ -27,10 +28,9 @@ constexpr float kAmbient[3] = {0.12f, 0.15f, 0.22f};
 constexpr double kLamps[3][3] = {{6.0, 0.5, 3.0}, {10.5, 0.6, 5.0}, {7.5, 0.4, 9.0}};
 constexpr float kLampColors[3][4] = {{2.4f, 1.6f, 0.7f, 0.0f}, {0.6f, 1.2f, 2.6f, 0.0f}, {2.2f, 0.8f, 1.8f, 0.0f}};
 constexpr float kLampRange = 6.0f; // m
-// The ground: a quad at y = 0 from -40 to 56 m in x and z, soil, facing up; the sky behind.
-constexpr float kGroundMin = -40.0f, kGroundMax = 56.0f;
-constexpr float kSoil[3] = {0.09f, 0.065f, 0.035f}; // main.cpp's GLSL spells these two too
-constexpr float kSky[3] = {0.30f, 0.42f, 0.62f};
+// The ground (shaders/gbuffer_ground.*): a quad at y = 0 from -40 to 56 m in x and z, soil
+// (linear 0.09, 0.065, 0.035), facing up; the sky behind it (shaders/lighting.frag: linear
+// 0.30, 0.42, 0.62).
 
 // Camera-relative world -> clip of `view`: its projection times its view's rotation.
 inline void view_projection(const grass_view_desc& view, float vp[16]) {

@@ -311,7 +311,8 @@ void write_uniform_descriptor(VkDevice device, VkDescriptorSet set, VkBuffer buf
 
 bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* out, std::string* error) {
     const bool msaa = desc.samples != VK_SAMPLE_COUNT_1_BIT;
-    const bool depth_only = desc.color_format == VK_FORMAT_UNDEFINED; // a shadow map's pass: depth alone
+    const bool depth_only = desc.color_format == VK_FORMAT_UNDEFINED;          // a shadow map's pass: depth alone
+    const bool color_only = desc.depth_format == VK_FORMAT_UNDEFINED && !msaa; // one colour attachment alone
     VkAttachmentDescription attachments[9] = {};
     // 0: colour (multisampled or not). Single-sample: the image the pass ends in.
     attachments[0].format = desc.color_format;
@@ -335,7 +336,7 @@ bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* o
     attachments[2].finalLayout = desc.color_final;
 
     VkAttachmentReference color_refs[8] = {{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
-    const uint32_t more = msaa || depth_only ? 0 : desc.more_color_count < 7 ? desc.more_color_count : 7;
+    const uint32_t more = msaa || depth_only || color_only ? 0 : desc.more_color_count < 7 ? desc.more_color_count : 7;
     for (uint32_t i = 0; i < more; ++i) { // single-sampled: attachment 2 is no resolve target
         attachments[2 + i] = attachments[0];
         attachments[2 + i].format = desc.more_colors[i];
@@ -348,11 +349,11 @@ bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* o
     subpass.colorAttachmentCount = depth_only ? 0 : 1 + more;
     subpass.pColorAttachments = depth_only ? nullptr : color_refs;
     subpass.pResolveAttachments = msaa && !depth_only ? &resolve_ref : nullptr;
-    subpass.pDepthStencilAttachment = &depth_ref;
+    subpass.pDepthStencilAttachment = color_only ? nullptr : &depth_ref;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
     info.pNext = desc.next;
-    info.attachmentCount = depth_only ? 1 : msaa ? 3 : 2 + more;
+    info.attachmentCount = depth_only || color_only ? 1 : msaa ? 3 : 2 + more;
     info.pAttachments = depth_only ? &attachments[1] : attachments;
     info.subpassCount = 1;
     info.pSubpasses = &subpass;

@@ -117,8 +117,8 @@ void write_uniform_descriptor(VkDevice device, VkDescriptorSet set, VkBuffer buf
 // multisampled): colour cleared, its final layout `color_final` (the resolve target's when
 // multisampled), depth cleared and stored only when `keep_depth`, `depth_final` its final layout.
 struct VkPassDesc {
-    VkFormat color_format = VK_FORMAT_UNDEFINED; // UNDEFINED: a depth-only pass (its one attachment, 0)
-    VkFormat depth_format = VK_FORMAT_D32_SFLOAT;
+    VkFormat color_format = VK_FORMAT_UNDEFINED;  // UNDEFINED: a depth-only pass (its one attachment, 0)
+    VkFormat depth_format = VK_FORMAT_D32_SFLOAT; // UNDEFINED, single-sampled: the colour attachment alone
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     VkImageLayout color_final = VK_IMAGE_LAYOUT_UNDEFINED;
     bool keep_depth = false;
