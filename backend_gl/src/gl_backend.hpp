@@ -41,7 +41,7 @@ public:
     void set_field_wind_map(uint32_t slot, uint32_t map_slot) override;
     // gl_prepare.cpp: grass_prepare_pipelines and the program binaries.
     grass_result prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
-                                  bool interaction_pass, bool no_depth_test) override;
+                                  bool interaction_pass, bool no_depth_test, const GBufferLayout* gbuffer) override;
     grass_result seed_pipeline_cache(const char* function, const void* data, uint64_t size) override;
     grass_result pipeline_cache_data(const char* function, void* data, uint64_t* size) override;
     grass_result begin_host_frame(const char* function, const HostFrame& frame, bool implied) override;

@@ -13,8 +13,11 @@ grass_result GlBackend::make_interaction_program(const char* function) {
     return result;
 }
 
+// One program draws with the depth test and without; one program draws every G-buffer layout
+// (the draw buffers route its outputs: gl_gbuffer.cpp).
 grass_result GlBackend::prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
-                                         bool interaction_pass, bool /*no_depth_test: one program draws both ways*/) {
+                                         bool interaction_pass, bool /*no_depth_test*/,
+                                         const GBufferLayout* /*gbuffer*/) {
     for (uint32_t i = 0; i < count; ++i) {
         GLuint unused = 0;
         const grass_result result =

@@ -48,7 +48,7 @@ public:
     void set_field_wind_map(uint32_t slot, uint32_t map_slot) override;
     // vk_pipeline_cache.cpp: grass_prepare_pipelines and the pipeline cache.
     grass_result prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
-                                  bool interaction_pass, bool no_depth_test) override;
+                                  bool interaction_pass, bool no_depth_test, const GBufferLayout* gbuffer) override;
     grass_result seed_pipeline_cache(const char* function, const void* data, uint64_t size) override;
     grass_result pipeline_cache_data(const char* function, void* data, uint64_t* size) override;
     // The render pass's sample count (grass_vk_desc) and Vulkan's one clip convention, 0..1;

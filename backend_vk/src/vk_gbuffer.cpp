@@ -16,10 +16,19 @@ const char* const kNames[3] = {"the blade G-buffer pipelines", "the volume tier 
 } // namespace
 
 GBufferRoutes GBufferRoutes::of(const FramePlan& plan) {
+    GBufferLayout layout;
+    for (uint32_t i = 0; i < kGBufferOutputs; ++i) {
+        layout.attachment[i] = plan.gbuffer_attachment[i];
+        layout.mask[i] = plan.gbuffer_mask[i];
+    }
+    return of(layout);
+}
+
+GBufferRoutes GBufferRoutes::of(const GBufferLayout& layout) {
     GBufferRoutes r;
     for (uint32_t i = 0; i < kGBufferOutputs; ++i) {
-        r.attachment[i] = plan.gbuffer_attachment[i];
-        r.mask[i] = plan.gbuffer_mask[i] & kWriteMaskAll;
+        r.attachment[i] = layout.attachment[i];
+        r.mask[i] = layout.mask[i] & kWriteMaskAll;
     }
     return r;
 }

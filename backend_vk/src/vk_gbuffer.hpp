@@ -32,6 +32,7 @@ struct GBufferRoutes {
     uint32_t attachment[kGBufferOutputs] = {kNoGBufferOutput, kNoGBufferOutput, kNoGBufferOutput, kNoGBufferOutput};
     uint32_t mask[kGBufferOutputs] = {0, 0, 0, 0};
     static GBufferRoutes of(const FramePlan& plan);
+    static GBufferRoutes of(const GBufferLayout& layout); // a layout grass_prepare_pipelines was given
     bool operator==(const GBufferRoutes& o) const;
 };
 

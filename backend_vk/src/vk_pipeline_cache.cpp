@@ -48,14 +48,19 @@ void VkBackend::destroy_pipeline_cache() {
 }
 
 grass_result VkBackend::prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
-                                         bool interaction_pass, bool no_depth_test) {
+                                         bool interaction_pass, bool no_depth_test, const GBufferLayout* gbuffer) {
     VkFailure failure;
     const char* what = "";
+    // G-buffer pipelines are made per layout: those of `gbuffer` (a frame selects its view's
+    // layout again before it looks any up: record).
+    if (gbuffer != nullptr) pipeline_.select_gbuffer(GBufferRoutes::of(*gbuffer));
     for (uint32_t i = 0; i < count; ++i) {
+        if ((variants[i].features & kFeatureGBuffer) && gbuffer == nullptr) continue; // no layout to make them for
         if (!pipeline_.create_variant(variants[i], true, &failure, &what)) return fail(function, what, failure);
         // GRASS_VIEW_FLAG_NO_DEPTH_TEST draws with pipelines of their own, made only when the
         // host declared the debug views (or by the first frame that sets the flag: record).
-        if (no_depth_test && !pipeline_.create_variant(variants[i], false, &failure, &what))
+        if (no_depth_test && takes_no_depth_test(variants[i]) &&
+            !pipeline_.create_variant(variants[i], false, &failure, &what))
             return fail(function, what, failure);
     }
     if (interaction_pass && !interaction_.ensure_pipeline(&failure, &what)) return fail(function, what, failure);

@@ -24,7 +24,8 @@ public:
     grass_result upload_field(uint32_t, const grass::FieldMaps&) override { return GRASS_SUCCESS; }
     void release_field(uint32_t) override {}
     void set_field_wind_map(uint32_t, uint32_t) override {}
-    grass_result prepare_variants(const char*, const grass::ShaderVariant*, uint32_t, bool, bool) override {
+    grass_result prepare_variants(const char*, const grass::ShaderVariant*, uint32_t, bool, bool,
+                                  const grass::GBufferLayout*) override {
         return GRASS_SUCCESS;
     }
     grass_result seed_pipeline_cache(const char*, const void*, uint64_t) override { return GRASS_SUCCESS; }

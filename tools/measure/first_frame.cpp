@@ -3,12 +3,17 @@
 // Each run makes a fresh host, context, patch (default) and field (64 x 64 cells, the default
 // three tiers) seen from 2 m, renders one still frame (uploads, still grass's variants), then:
 //   without: turns on wind (5 m/s) and times the next frame, then a second windy frame;
-//   with:    times grass_prepare_pipelines(default features), then the same two frames.
+//   with:    times grass_prepare_pipelines(default features, or --features), then the same
+//            two frames.
+// --features takes a grass_pipeline_desc.features mask (0x3E0: the views of an engine's
+// frame); with GRASS_PIPELINE_FEATURE_GBUFFER it chains the layout {albedo, velocity}. The
+// target then holds every view (--view-targets: Vulkan's depth-only, velocity and G-buffer
+// targets, an RGBA32F attachment 1), so that no view mode is skipped.
 // A frame's time is its wall clock and the process's CPU time (CLOCK_PROCESS_CPUTIME_ID, every
 // thread: llvmpipe and lavapipe compile and draw on the CPU) around Host::render (begin, record,
 // submit, wait, read back). The second windy frame is the steady state: the first minus it is
 // the hitch. Medians over --runs runs; runs alternate without / with.
-// Usage: grass-measure first-frame [--backend gl|vk] [--runs N]
+// Usage: grass-measure first-frame [--backend gl|vk] [--runs N] [--features MASK] [--view-targets]
 #include "cli.hpp"
 #include "headless_host.hpp"
 #include "measure.hpp"
@@ -31,7 +36,18 @@ namespace {
 struct Options {
     grass_backend backend = GRASS_BACKEND_VULKAN;
     int runs = 5;
+    std::string features; // empty: the default desc's
+    bool view_targets = false;
 };
+
+// The features to prepare: --features parsed as C does (0x for hex), or the default.
+uint32_t features_of(const Options& o) {
+    if (o.features.empty()) return grass_default_pipeline_desc().features;
+    size_t used = 0;
+    const unsigned long v = std::stoul(o.features, &used, 0);
+    if (used != o.features.size()) throw grass_sample::Failure("--features " + o.features + ": not a number");
+    return static_cast<uint32_t>(v);
+}
 
 struct Clock {
     double wall_ms = 0.0, cpu_ms = 0.0;
@@ -57,6 +73,11 @@ struct Run {
 Run run_once(const Options& o, bool prepared) {
     grass_host::TargetDesc target;
     target.width = target.height = 256;
+    if (o.view_targets) {
+        target.read_depth = target.vk_depth_pass = true;
+        target.vk_gbuffer_formats[0] = 109; // VK_FORMAT_R32G32B32A32_SFLOAT: velocity and G-buffer target
+        target.vk_velocity_attachment = 1;
+    }
     std::string error;
     std::unique_ptr<grass_host::Host> host = grass_host::Host::create(o.backend, target, &error);
     if (!host) throw grass_sample::Failure(error);
@@ -90,7 +111,14 @@ Run run_once(const Options& o, bool prepared) {
     frame(0.0); // uploads and still grass
     Run run;
     if (prepared) {
-        const grass_pipeline_desc pipelines = grass_default_pipeline_desc();
+        grass_pipeline_desc pipelines = grass_default_pipeline_desc();
+        pipelines.features = features_of(o);
+        grass_view_gbuffer_desc layout = grass_default_view_gbuffer_desc();
+        layout.attachment_count = 2;
+        layout.attachments[0].semantic = GRASS_GBUFFER_ALBEDO;
+        layout.attachments[1].semantic = GRASS_GBUFFER_VELOCITY;
+        layout.attachments[1].format = GRASS_GBUFFER_FORMAT_FLOAT;
+        if (pipelines.features & GRASS_PIPELINE_FEATURE_GBUFFER) pipelines.next = &layout;
         const Clock start = now();
         grass_sample::check(grass_prepare_pipelines(ctx, &pipelines), "grass_prepare_pipelines", ctx);
         run.prepare = since(start);
@@ -118,8 +146,8 @@ int run(const Options& o) {
         without.push_back(run_once(o, false));
         with.push_back(run_once(o, true));
     }
-    std::printf("grass-measure first-frame: %s, %d runs, medians (ms)\n\n", grass_sample::backend_name(o.backend),
-                o.runs);
+    std::printf("grass-measure first-frame: %s, %d runs, features 0x%x%s, medians (ms)\n\n",
+                grass_sample::backend_name(o.backend), o.runs, features_of(o), o.view_targets ? ", view targets" : "");
     std::printf("| | prepare wall | prepare CPU | 1st windy wall | 1st windy CPU | 2nd windy wall | 2nd windy CPU |\n");
     std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
     const struct {
@@ -158,6 +186,10 @@ Subcommand add_first_frame(CLI::App& measure) {
     app->add_option("--runs", o->runs, "runs per case (fresh host and context each; median)")
         ->capture_default_str()
         ->check(grass_sample::at_least(1));
+    app->add_option("--features", o->features,
+                    "grass_pipeline_desc.features to prepare (0x for hex; default: the default desc's)");
+    app->add_flag("--view-targets", o->view_targets,
+                  "Vulkan: a depth-only, velocity and G-buffer target besides, so that every view mode is prepared");
     return {app, [o]() { return first_frame::run(*o); }};
 }
 

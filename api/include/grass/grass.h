@@ -1602,7 +1602,22 @@ GRASS_API grass_result grass_set_blade_culling(grass_context* context, grass_fie
  * the first frame" measures what it saves and what it costs.
  *
  * The render target is no part of a variant: Vulkan pipelines are made for the render pass
- * or formats and sample count of grass_vk_desc; GL programs do not depend on the target. */
+ * or formats and sample count of grass_vk_desc; GL programs do not depend on the target.
+ *
+ * 0.5: the views of an engine's frame have variants of their own: a depth pass, a view that
+ * receives the host's shadows, one that writes motion vectors, one lit by the host's lights,
+ * a G-buffer view (GRASS_PIPELINE_FEATURE_DEPTH_PASS ... _GBUFFER). Each multiplies the
+ * variants of the features above: a view mode (plain colour, depth, each combination of
+ * receiving, motion and lights, G-buffer with or without motion) runs every responsive
+ * variant. All ten bits and one G-buffer layout: 433 variants per set of maps and tier kinds
+ * (49 without the view bits); the five view bits with wind alone: 60. A view mode the
+ * context cannot draw is skipped, not an error: Vulkan without grass_vk_depth_pass_desc
+ * makes no depth variant, without grass_vk_velocity_target_desc no motion variant (a
+ * G-buffer layout with velocity included), without grass_vk_gbuffer_target_desc no G-buffer
+ * variant, and a multiview context (grass_vk_multiview_desc) none but the depth pass's. G-buffer variants on Vulkan are made per layout (the attachments the outputs go
+ * to): GRASS_PIPELINE_FEATURE_GBUFFER takes the layout the host will draw as a
+ * grass_view_gbuffer_desc chained on grass_pipeline_desc.next (GL, whose programs do not
+ * depend on it, checks it and needs it too); call again with each other layout. */
 typedef enum grass_pipeline_feature_bits {
     GRASS_PIPELINE_FEATURE_WIND = 0x1,          /* wind or non-standard gravity (grass_set_wind) */
     GRASS_PIPELINE_FEATURE_WIND_MAP = 0x2,      /* a field's wind map (grass_set_field_wind_map); brings WIND */
@@ -1611,16 +1626,32 @@ typedef enum grass_pipeline_feature_bits {
     /* GRASS_VIEW_FLAG_DEBUG_TIERS, _THRESHOLDS or _CELLS, and NO_DEPTH_TEST: on Vulkan every
      * variant prepared is also compiled without the depth test (twice the pipelines) */
     GRASS_PIPELINE_FEATURE_DEBUG_VIEWS = 0x10,
-    GRASS_PIPELINE_FEATURE_ALL = 0x1F
+    /* The five features above, as in 0.5's first header: enum values never change, so ALL
+     * keeps this meaning and does not take in the view bits below. */
+    GRASS_PIPELINE_FEATURE_ALL = 0x1F,
+    /* 0.5: the variants of an engine's views (see above); not in GRASS_PIPELINE_FEATURE_ALL
+     * nor in the default, each multiplies what the features above compile. */
+    GRASS_PIPELINE_FEATURE_DEPTH_PASS = 0x20,     /* depth views (grass_view_pass_desc GRASS_PASS_DEPTH) */
+    GRASS_PIPELINE_FEATURE_SHADOW_RECEIVE = 0x40, /* receiving views (grass_shadow_receive_desc) */
+    GRASS_PIPELINE_FEATURE_MOTION_VECTORS = 0x80, /* motion views (grass_view_motion_desc) */
+    GRASS_PIPELINE_FEATURE_HOST_LIGHTS = 0x100,   /* lit views (grass_view_lights_desc) */
+    /* G-buffer views (GRASS_PASS_GBUFFER) of the layout chained on grass_pipeline_desc.next */
+    GRASS_PIPELINE_FEATURE_GBUFFER = 0x200,
+    GRASS_PIPELINE_FEATURE_ALL_VIEWS = 0x3E0 /* the five view bits */
 } grass_pipeline_feature_bits;
 
 typedef struct grass_pipeline_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_PIPELINE_DESC */
-    const void* next;       /* NULL */
+    /* NULL, or with GRASS_PIPELINE_FEATURE_GBUFFER (0.5) the grass_view_gbuffer_desc of the
+     * G-buffer views to prepare (its own next NULL) */
+    const void* next;
     /* The features the host may turn on, GRASS_PIPELINE_FEATURE_* bits; every combination of
-     * them is compiled for each field's design maps (all five: 49 variants per set of maps).
-     * 0: only still grass (what grass_create_field compiles anyway). Default
-     * GRASS_PIPELINE_FEATURE_ALL & ~GRASS_PIPELINE_FEATURE_DEBUG_VIEWS (24 variants). */
+     * them is compiled for each field's design maps (GRASS_PIPELINE_FEATURE_ALL: 49 variants
+     * per set of maps; with the view bits, see above). 0: only still grass (what
+     * grass_create_field compiles anyway). Default GRASS_PIPELINE_FEATURE_ALL &
+     * ~GRASS_PIPELINE_FEATURE_DEBUG_VIEWS (24 variants): the responsive grass a host turns on
+     * at run time; the view bits are left to the host that draws those views, since they
+     * multiply the count (all of them: 433 variants, minutes of compiling on a CPU driver). */
     uint32_t features;
     /* A blob grass_get_pipeline_cache_data returned earlier (on a previous run), or NULL (the
      * default). Vulkan: merged into grass's own VkPipelineCache (refused when the host gave
@@ -1639,8 +1670,12 @@ GRASS_API grass_pipeline_desc grass_default_pipeline_desc(void);
  * remembers the features for the fields created later. Outside a frame
  * (GRASS_MSG_FRAME_ALREADY_BEGUN); GL: with the context's GL context current. May be called
  * again: it then declares the new set, compiling what is missing (nothing is released).
- * Refused: features with bits outside GRASS_PIPELINE_FEATURE_ALL, cache_data NULL with a
- * size or a size of 0 with data (GRASS_ERROR_INVALID_ARGUMENT, naming the value). Cost:
+ * Refused: features with bits outside GRASS_PIPELINE_FEATURE_ALL |
+ * GRASS_PIPELINE_FEATURE_ALL_VIEWS, cache_data NULL with a size or a size of 0 with data,
+ * GRASS_PIPELINE_FEATURE_GBUFFER without a grass_view_gbuffer_desc on next or with an invalid
+ * one (on Vulkan also one whose attachment_count is not grass_vk_gbuffer_target_desc's),
+ * anything else on next (GRASS_ERROR_INVALID_ARGUMENT or GRASS_ERROR_WRONG_STRUCT_TYPE,
+ * naming the value). Cost:
  * the driver's compile time of each variant not made yet (docs/records/prepare-pipelines.md
  * measures it on llvmpipe and lavapipe); nothing when all exist. A context made by
  * grass_create_context compiles nothing. */

@@ -73,10 +73,13 @@ public:
     // `variants` not made yet, and the interaction pass's when `interaction_pass`; outside
     // a frame. With `no_depth_test` (declares_no_depth_test) a backend whose pipelines fix
     // the depth test (Vulkan) also makes each variant's pipeline for
-    // GRASS_VIEW_FLAG_NO_DEPTH_TEST; GL toggles the test and ignores it. `function` names the
-    // public call for messages.
+    // GRASS_VIEW_FLAG_NO_DEPTH_TEST (the variants that take it: takes_no_depth_test); GL
+    // toggles the test and ignores it. The kFeatureGBuffer variants among `variants` are
+    // made for `gbuffer` (a layout the host declared; nullptr where there are none): Vulkan
+    // makes G-buffer pipelines per layout, GL ignores it. `function` names the public call
+    // for messages.
     virtual grass_result prepare_variants(const char* function, const ShaderVariant* variants, uint32_t count,
-                                          bool interaction_pass, bool no_depth_test) = 0;
+                                          bool interaction_pass, bool no_depth_test, const GBufferLayout* gbuffer) = 0;
     // Seeds the backend's own cache with a blob (grass_pipeline_desc.cache_data, size > 0):
     // one that does not fit is ignored with a GRASS_MSG_PIPELINE_CACHE warning.
     virtual grass_result seed_pipeline_cache(const char* function, const void* data, uint64_t size) = 0;
@@ -143,7 +146,8 @@ public:
     grass_result upload_field(uint32_t, const FieldMaps&) override { return GRASS_SUCCESS; }
     void release_field(uint32_t) override {}
     void set_field_wind_map(uint32_t, uint32_t) override {}
-    grass_result prepare_variants(const char*, const ShaderVariant*, uint32_t, bool, bool) override {
+    grass_result prepare_variants(const char*, const ShaderVariant*, uint32_t, bool, bool,
+                                  const GBufferLayout*) override {
         return GRASS_SUCCESS;
     }
     grass_result seed_pipeline_cache(const char*, const void*, uint64_t) override { return GRASS_SUCCESS; }

@@ -13,7 +13,8 @@
 grass_context::grass_context(const grass_context_desc& d, uint16_t owner_tag)
     : grass::Log(d), host(d.allocator), desc(d), owner(owner_tag), patches(&host), fields(&host), maps(&host),
       plan(&host), views(&host, &plan), plan_scratch(&host), dynamics(&host),
-      cache_directory(grass::StlAllocator<char>(&host)) {
+      cache_directory(grass::StlAllocator<char>(&host)),
+      prepared_gbuffer_layouts(grass::StlAllocator<grass::GBufferLayout>(&host)) {
     if (d.cache_directory && d.cache_directory[0]) {
         cache_directory.assign(d.cache_directory, d.cache_directory + std::strlen(d.cache_directory) + 1);
         desc.cache_directory = cache_directory.data();
@@ -195,10 +196,27 @@ grass_result prepare_field_variants(grass_context* ctx, const char* function, ui
     if (ctx->prepared_features == 0 || field == nullptr) return GRASS_SUCCESS;
     uint32_t tier_kinds = 0;
     for (uint32_t t = 0; t < field->lod.tier_count; ++t) tier_kinds |= 1u << field->lod.tiers[t].kind;
+    const uint32_t declared = ctx->prepared_features;
+    const RenderTarget target = ctx->backend->render_target();
+    const bool fixed_targets = ctx->backend->kind() == GRASS_BACKEND_VULKAN; // pipelines made for its targets
+    const uint32_t views = drawable_view_bits(declared, target, fixed_targets);
+    uint32_t modes[kMaxViewModes];
+    const uint32_t mode_count = view_modes(views, modes);
     ShaderVariant variants[kMaxFieldVariants];
-    const uint32_t count = field_variants(ctx->prepared_features, field->maps.features, tier_kinds, variants);
-    return ctx->backend->prepare_variants(function, variants, count, /*interaction_pass=*/false,
-                                          declares_no_depth_test(ctx->prepared_features));
+    uint32_t count = field_variants(declared, modes, mode_count, field->maps.features, tier_kinds, variants);
+    grass_result r = ctx->backend->prepare_variants(function, variants, count, /*interaction_pass=*/false,
+                                                    declares_no_depth_test(declared), nullptr);
+    if (r != GRASS_SUCCESS || (views & kFeatureGBuffer) == 0) return r;
+    // A G-buffer view with velocity writes motion vectors: skipped where the context cannot.
+    const bool motion = drawable_view_bits(kFeatureMotion, target, fixed_targets) != 0;
+    for (const GBufferLayout& layout : ctx->prepared_gbuffer_layouts) {
+        const uint32_t mode = gbuffer_view_mode(layout);
+        if ((mode & kFeatureMotion) && !motion) continue;
+        count = field_variants(declared, &mode, 1, field->maps.features, tier_kinds, variants);
+        r = ctx->backend->prepare_variants(function, variants, count, false, false, &layout);
+        if (r != GRASS_SUCCESS) return r;
+    }
+    return GRASS_SUCCESS;
 }
 
 namespace {

@@ -53,6 +53,9 @@ struct grass_context : grass::Log {
     // grass_prepare_pipelines: the feature bits the host declared (declared_feature_bits),
     // whose variants each new field gets at creation (prepare_field_variants). 0: none.
     uint32_t prepared_features = 0;
+    // The G-buffer layouts declared with GRASS_PIPELINE_FEATURE_GBUFFER, each once: Vulkan
+    // makes G-buffer pipelines per layout.
+    grass::Vector<grass::GBufferLayout> prepared_gbuffer_layouts;
     // Host callbacks running on this context (grass.h "Re-entrancy"): lod test callbacks and
     // the log callback; the allocator's hooks are counted by `host`. While one runs, every
     // call on the context but the pure getters is refused (refuse_reentrant).
@@ -72,8 +75,9 @@ grass_result create_context(const char* function, uint32_t header_version, const
 void destroy_context(grass_context* context);
 
 // Has the backend make every variant the declared features (context->prepared_features)
-// need for the field in `slot` (grass_prepare_pipelines, grass_create_field). Nothing
-// without a declaration.
+// need for the field in `slot` (grass_prepare_pipelines, grass_create_field): the responsive
+// variants in each view mode the context can draw (drawable_view_bits), the G-buffer modes
+// once per declared layout. Nothing without a declaration.
 grass_result prepare_field_variants(grass_context* context, const char* function, uint32_t slot);
 
 // The entry check of every call on a context: refuses a call made from inside one of the
