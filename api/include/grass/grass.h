@@ -1614,8 +1614,9 @@ GRASS_API grass_result grass_set_blade_culling(grass_context* context, grass_fie
  * context cannot draw is skipped, not an error: Vulkan without grass_vk_depth_pass_desc
  * makes no depth variant, without grass_vk_velocity_target_desc no motion variant (a
  * G-buffer layout with velocity included), without grass_vk_gbuffer_target_desc no G-buffer
- * variant, and a multiview context (grass_vk_multiview_desc) none but the depth pass's. G-buffer variants on Vulkan are made per layout (the attachments the outputs go
- * to): GRASS_PIPELINE_FEATURE_GBUFFER takes the layout the host will draw as a
+ * variant, and a multiview context (grass_vk_multiview_desc) none but the depth pass's.
+ * G-buffer variants on Vulkan are made per layout (the attachments the outputs go to):
+ * GRASS_PIPELINE_FEATURE_GBUFFER takes the layout the host will draw as a
  * grass_view_gbuffer_desc chained on grass_pipeline_desc.next (GL, whose programs do not
  * depend on it, checks it and needs it too); call again with each other layout. */
 typedef enum grass_pipeline_feature_bits {
