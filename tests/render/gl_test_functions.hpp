@@ -19,6 +19,9 @@ namespace grass_test {
     X(PFNGLCLEARNAMEDFRAMEBUFFERFVPROC, ClearNamedFramebufferfv)         \
     X(PFNGLCREATETEXTURESPROC, CreateTextures)                           \
     X(PFNGLTEXTURESTORAGE2DPROC, TextureStorage2D)                       \
+    X(PFNGLTEXTURESTORAGE2DMULTISAMPLEPROC, TextureStorage2DMultisample) \
+    X(PFNGLNAMEDFRAMEBUFFERREADBUFFERPROC, NamedFramebufferReadBuffer)   \
+    X(PFNGLBLITNAMEDFRAMEBUFFERPROC, BlitNamedFramebuffer)               \
     X(PFNGLTEXTURESUBIMAGE2DPROC, TextureSubImage2D)                     \
     X(PFNGLDELETETEXTURESPROC, DeleteTextures)                           \
     X(PFNGLGETTEXTUREIMAGEPROC, GetTextureImage)                         \
