@@ -3,6 +3,8 @@
 // write masks, as each backend read it back.
 #pragma once
 
+#include "render_fixture.hpp"
+
 #include <grass/grass.h>
 
 #include <gtest/gtest.h>
@@ -169,5 +171,27 @@ inline void expect_surface(const GBufferRead& g, const double eye[3], const doub
     EXPECT_GE(facing * 100, grass * 90) << name << ": normals facing the camera, " << facing << " of " << grass;
     EXPECT_EQ(material, grass) << name << ": roughness 1 and translucency 0.25";
 }
+
+// The fixture of GBufferTest (GL) and GBufferVkTest.
+class GBufferFixture : public RenderTest {
+protected:
+    // Per tier (a 16 x 16-cell field of it alone, destroyed after): `check(kind, name, v)`, v
+    // the G-buffer view of the four-attachment layout from `eye` to `at`.
+    void each_tier(const double eye[3], const double at[3],
+                   const std::function<void(grass_tier_kind, const char*, const grass_view_desc&)>& check) {
+        const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
+        const char* const names[3] = {"geometry", "volume", "image"};
+        for (int k = 0; k < 3; ++k) {
+            const grass_field_id field =
+                make_field(solo_tier_field(16, kinds[k], kinds[k] == GRASS_TIER_VOLUME ? 2u : 0u, 4));
+            grass_view_gbuffer_desc layout = four_attachments();
+            grass_view_pass_desc pass = gbuffer_pass(&layout);
+            grass_view_desc v = view(eye, at);
+            v.next = &pass;
+            check(kinds[k], names[k], v);
+            EXPECT_EQ(grass_destroy_field(ctx, field), GRASS_SUCCESS);
+        }
+    }
+};
 
 } // namespace grass_test

@@ -9,6 +9,8 @@
 // - the NONE attachment, every channel masked off (albedo and normal .a, material .ba) and
 //   every pixel without grass keep their pattern, byte for byte;
 // - the host's draw buffers, colour masks, blend enables and uniform binding 5 come back.
+// The same at 4 samples, as a host makes the framebuffer (multisampled textures, cleared),
+// after each attachment's resolve (EveryTierAt4Samples).
 // With a motion desc, a VELOCITY attachment (RGBA32F) holds what the motion view's velocity
 // attachment holds. A view without it draws with programs that declare no GrassGBuffer block,
 // and after it makes none. Bad layouts and a framebuffer without the attachments are refused
@@ -46,7 +48,7 @@ struct Frame {
     bool grass(size_t p) const { return depth[p] < 1.0f; }
 };
 
-class GBufferTest : public RenderTest {
+class GBufferTest : public GBufferFixture {
 protected:
     void SetUp() override {
         RenderTest::SetUp();
@@ -106,7 +108,7 @@ protected:
         }
         const float far = 1.0f;
         gl.ClearNamedFramebufferfv(fbo_, GL_DEPTH, 0, &far);
-        render_view(v);
+        draw_whole_view(ctx, v, kSize, log);
         Frame f;
         for (int a = 0; a < kColour; ++a) {
             if (a == 1 && float_velocity_) continue;
@@ -120,16 +122,6 @@ protected:
         f.depth.resize(n);
         gl.GetTextureImage(textures_[kColour], 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(n * 4), f.depth.data());
         return f;
-    }
-
-    // Draws `v` into the bound framebuffer, over the whole of it.
-    void render_view(const grass_view_desc& v) {
-        grass_view_desc d = v;
-        d.viewport[0] = d.viewport[1] = 0;
-        d.viewport[2] = d.viewport[3] = kSize;
-        EXPECT_EQ(grass_begin_frame(ctx, &d), GRASS_SUCCESS) << log;
-        EXPECT_EQ(grass_gl_render(ctx), GRASS_SUCCESS) << log;
-        EXPECT_EQ(grass_end_frame(ctx), GRASS_SUCCESS) << log;
     }
 
     // As a host draws at 4 samples: attachments 0-3 (RGBA8) and depth multisampled textures,
@@ -160,7 +152,7 @@ protected:
         const float far = 1.0f;
         gl.ClearNamedFramebufferfv(fbos[0], GL_DEPTH, 0, &far);
         gl.BindFramebuffer(GL_FRAMEBUFFER, fbos[0]);
-        render_view(v);
+        draw_whole_view(ctx, v, kSize, log);
         Frame f;
         const size_t n = size_t(kSize) * kSize;
         for (int a = 0; a < kColour; ++a) {
@@ -191,8 +183,6 @@ const double kEye[3] = {2.0, 1.6, -0.6}, kAt[3] = {2.0, 0.0, 2.4};
 
 TEST_P(GBufferTest, EveryTierWritesItsSurfaceAndNothingElse) {
     make_target(false);
-    const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
-    const char* const names[3] = {"geometry", "volume", "image"};
     // The host's state of draw buffers 0-3 and uniform binding 5, to come back.
     GLuint host_buffer = 0;
     gl.CreateBuffers(1, &host_buffer);
@@ -200,13 +190,7 @@ TEST_P(GBufferTest, EveryTierWritesItsSurfaceAndNothingElse) {
     gl.BindBufferRange(GL_UNIFORM_BUFFER, 5, host_buffer, 256, 512);
     gl.Enablei(GL_BLEND, 2);
     gl.ColorMaski(3, GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
-    for (int k = 0; k < 3; ++k) {
-        const grass_field_id field =
-            make_field(solo_tier_field(16, kinds[k], kinds[k] == GRASS_TIER_VOLUME ? 2u : 0u, 4));
-        grass_view_gbuffer_desc layout = four_attachments();
-        grass_view_pass_desc pass = gbuffer_pass(&layout);
-        grass_view_desc v = view(kEye, kAt);
-        v.next = &pass;
+    each_tier(kEye, kAt, [&](grass_tier_kind, const char* name, const grass_view_desc& v) {
         const Frame f = draw(v);
         // Attachment 3 keeps its pattern though the host's own mask there leaves r and b writable.
         GBufferRead g;
@@ -214,9 +198,8 @@ TEST_P(GBufferTest, EveryTierWritesItsSurfaceAndNothingElse) {
         g.byte = [&](int a, size_t p, int c) { return f.colour[a][p * 4 + c]; };
         g.before = pattern;
         g.grass = [&](size_t p) { return f.grass(p); };
-        expect_surface(g, kEye, kAt, names[k]);
-        EXPECT_EQ(grass_destroy_field(ctx, field), GRASS_SUCCESS);
-    }
+        expect_surface(g, kEye, kAt, name);
+    });
     GLint buffers[kColour] = {}, binding = 0;
     for (int i = 0; i < kColour; ++i) {
         gl.GetIntegerv(GL_DRAW_BUFFER0 + i, &buffers[i]);
@@ -242,25 +225,16 @@ TEST_P(GBufferTest, EveryTierWritesItsSurfaceAndNothingElse) {
 // where grass drew found by_material; the blades' resolved normals are means of several
 // blades' (GBufferRead::mean_normals).
 TEST_P(GBufferTest, EveryTierAt4Samples) {
-    const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
-    const char* const names[3] = {"4 samples, geometry", "4 samples, volume", "4 samples, image"};
-    for (int k = 0; k < 3; ++k) {
-        const grass_field_id field =
-            make_field(solo_tier_field(16, kinds[k], kinds[k] == GRASS_TIER_VOLUME ? 2u : 0u, 4));
-        grass_view_gbuffer_desc layout = four_attachments();
-        grass_view_pass_desc pass = gbuffer_pass(&layout);
-        grass_view_desc v = view(kEye, kAt);
-        v.next = &pass;
+    each_tier(kEye, kAt, [&](grass_tier_kind kind, const char* name, const grass_view_desc& v) {
         const Frame f = draw_4_samples(v);
         GBufferRead g;
         g.pixels = size_t(kSize) * kSize;
         g.byte = [&](int a, size_t p, int c) { return f.colour[a][p * 4 + c]; };
         g.before = [](int a, size_t, int c) { return gbuffer_clear_byte(a, c); };
         by_material(&g);
-        g.mean_normals = kinds[k] == GRASS_TIER_GEOMETRY;
-        expect_surface(g, kEye, kAt, names[k]);
-        EXPECT_EQ(grass_destroy_field(ctx, field), GRASS_SUCCESS);
-    }
+        g.mean_normals = kind == GRASS_TIER_GEOMETRY;
+        expect_surface(g, kEye, kAt, (std::string("4 samples, ") + name).c_str());
+    });
 }
 
 TEST_P(GBufferTest, VelocityIsTheMotionViewsVelocity) {

@@ -10,6 +10,9 @@
 //   1 and translucency 0.25;
 // - the NONE attachment, every channel masked off (albedo and normal .a, material .ba) and
 //   every pixel without grass keep their clear, byte for byte.
+// The same at 4 samples (each attachment resolved), in a render pass and with dynamic
+// rendering at 1 and 4 samples (the host's extra targets, extra_targets_vk.hpp), where grass
+// drew told by the material attachment (by_material: no depth is read back there).
 // With a motion desc, a VELOCITY attachment (RGBA32F, the context's velocity target too) holds
 // what the motion view's velocity attachment holds. Plain views make nothing for G-buffers;
 // each layout makes its own pipelines. A context without grass_vk_gbuffer_target_desc, or a
@@ -36,7 +39,7 @@ constexpr float kVelocityClear[4] = {9.0f, -9.0f, 7.0f, 5.0f};
 
 const double kEye[3] = {2.0, 1.6, -0.6}, kAt[3] = {2.0, 0.0, 2.4};
 
-class GBufferVkTest : public RenderTest {
+class GBufferVkTest : public GBufferFixture {
 protected:
     void SetUp() override {
         RenderTest::SetUp();
@@ -74,16 +77,8 @@ protected:
     // normals of blades are means (GBufferRead::mean_normals).
     void every_tier(const grass_host::TargetDesc& t, const char* how) {
         start(t);
-        const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
-        const char* const names[3] = {"geometry", "volume", "image"};
-        for (int k = 0; k < 3; ++k) {
-            const grass_field_id field =
-                make_field(solo_tier_field(16, kinds[k], kinds[k] == GRASS_TIER_VOLUME ? 2u : 0u, 4));
-            grass_view_gbuffer_desc layout = four_attachments();
-            grass_view_pass_desc pass = gbuffer_pass(&layout);
-            grass_view_desc v = sized(view(kEye, kAt));
-            v.next = &pass;
-            const grass_host::Image f = render(v);
+        each_tier(kEye, kAt, [&](grass_tier_kind kind, const char* name, const grass_view_desc& whole) {
+            const grass_host::Image f = render(sized(whole));
             ASSERT_EQ(f.gbuffer.size(), 3u);
             const size_t n = size_t(kSize) * kSize;
             GBufferRead g;
@@ -94,12 +89,14 @@ protected:
             by_material(&g);
             if (t.read_depth) g.grass = g.touched = [&](size_t p) { return f.depth[p] < 1.0f; };
             for (size_t p = 0; p < n && sky == n; ++p) sky = g.touched(p) ? n : p;
-            ASSERT_LT(sky, n) << how << ", " << names[k] << ": a pixel without grass";
-            g.mean_normals = t.samples > 1 && kinds[k] == GRASS_TIER_GEOMETRY;
-            expect_surface(g, kEye, kAt, (std::string(how) + ", " + names[k]).c_str());
-            save(f, names[k]);
-            EXPECT_EQ(grass_destroy_field(ctx, field), GRASS_SUCCESS);
-        }
+            ASSERT_LT(sky, n) << how << ", " << name << ": a pixel without grass";
+            g.mean_normals = t.samples > 1 && kind == GRASS_TIER_GEOMETRY;
+            expect_surface(g, kEye, kAt, (std::string(how) + ", " + name).c_str());
+            save(f, name); // the albedo, then the normal
+            grass_host::Image normal = f;
+            normal.rgba = f.gbuffer[0];
+            save(normal, std::string(name) + ".normal");
+        });
     }
 };
 
