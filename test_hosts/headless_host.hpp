@@ -75,7 +75,7 @@ struct TargetDesc {
     // Vulkan: a depth-only render pass over the depth image besides (single-sampled, with
     // read_depth), given to grass as its grass_vk_depth_pass_desc; Host::depth_only draws in it.
     bool vk_depth_pass = false;
-    // Vulkan: motion vectors' target (velocity_target_vk.hpp): 0 none; 1 or 2 an RGBA32F
+    // Vulkan: motion vectors' target (extra_targets_vk.hpp): 0 none; 1 or 2 an RGBA32F
     // velocity image at that colour attachment of the pass (2: an RGBA8 image at attachment 1
     // besides), cleared to velocity_clear and other_clear, read back into Image::velocity and
     // Image::other, given to grass as its grass_vk_velocity_target_desc. Single-sampled, with
@@ -83,12 +83,13 @@ struct TargetDesc {
     uint32_t vk_velocity_attachment = 0;
     float velocity_clear[4] = {};
     float other_clear[4] = {};
-    // Vulkan: a G-buffer target (velocity_target_vk.hpp): the VkFormat values of up to 3
+    // Vulkan: a G-buffer target (extra_targets_vk.hpp): the VkFormat values of up to 3
     // colour attachments after the host's colour (attachment 0), 0 after the last; each
     // cleared to gbuffer_clear[i], read back into Image::gbuffer[i] as stored, given to grass
     // as its grass_vk_gbuffer_target_desc. With vk_velocity_attachment besides, that
-    // attachment (an RGBA32F one) is the velocity target too (Image::velocity). The same
-    // limits as the velocity target's.
+    // attachment (an RGBA32F one) is the velocity target too (Image::velocity). Any sample
+    // count (multisampled: each resolved, the resolve read back), a render pass or dynamic
+    // rendering; no ground nor meshes.
     uint32_t vk_gbuffer_formats[3] = {};
     float gbuffer_clear[3][4] = {};
     // The host's cascaded sun shadows (off by default).

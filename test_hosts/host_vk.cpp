@@ -1,18 +1,19 @@
 // The headless Vulkan host: an instance with the validation layers when installed (every
 // warning and error is counted), one graphics queue, an offscreen sRGB colour + depth
 // target (multisampled with a resolve image when asked), a render pass or dynamic
-// rendering, and the frame around grass_vk_prepare / grass_vk_record. It links the
-// Vulkan loader; grass gets only vkGetInstanceProcAddr and the handles.
+// rendering, extra colour targets (extra_targets_vk.hpp), and the frame around
+// grass_vk_prepare / grass_vk_record. It links the Vulkan loader; grass gets only
+// vkGetInstanceProcAddr and the handles.
 //
 // GRASS_VK_DEVICE: pick the first physical device whose name contains this text.
 #include "driver_residency.hpp"
+#include "extra_targets_vk.hpp"
 #include "ground.hpp"
 #include "host_factories.hpp"
 #include "host_shaders.hpp"
 #include "mesh_drawer_vk.hpp"
 #include "shadow_cascades_vk.hpp"
 #include "shadow_map_vk.hpp"
-#include "velocity_target_vk.hpp"
 #include "vk_bootstrap.hpp"
 #include "vk_occluder.hpp"
 
@@ -116,7 +117,7 @@ private:
     VkPipelineLayout ground_layout_ = VK_NULL_HANDLE;
     VkPipeline ground_pipeline_ = VK_NULL_HANDLE;
     std::unique_ptr<VkMeshDrawer> meshes_;      // target.meshes
-    VkVelocityTarget velocity_;                 // target.vk_velocity_attachment
+    VkExtraTargets extras_;                     // target.vk_velocity_attachment, vk_gbuffer_formats
     std::unique_ptr<VkShadowCascades> shadows_; // target.host_shadows
     VkPassTarget pass_target() const;
 
@@ -181,13 +182,10 @@ bool VkHost::pick_device(std::string* error) {
     }
     const char* wanted = std::getenv("GRASS_VK_DEVICE");
     physical_device_ = VK_NULL_HANDLE;
-    for (VkPhysicalDevice d : devices) {
+    for (size_t i = 0; i < devices.size() && !physical_device_; ++i) {
         VkPhysicalDeviceProperties p{};
-        vkGetPhysicalDeviceProperties(d, &p);
-        if (wanted && *wanted && std::strstr(p.deviceName, wanted)) {
-            physical_device_ = d;
-            break;
-        }
+        vkGetPhysicalDeviceProperties(devices[i], &p);
+        if (wanted && *wanted && std::strstr(p.deviceName, wanted)) physical_device_ = devices[i];
     }
     if (!physical_device_) {
         if (wanted && *wanted) {
@@ -214,10 +212,8 @@ bool VkHost::pick_device(std::string* error) {
 
     const std::vector<VkQueueFamilyProperties> families = grass_bootstrap::queue_families(physical_device_);
     for (uint32_t i = 0; i < families.size(); ++i) {
-        if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) {
-            queue_family_ = i;
-            return true;
-        }
+        queue_family_ = i;
+        if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) return true;
     }
     *error = "the Vulkan device \"" + device_name_ + "\" has no graphics queue";
     return false;
@@ -261,7 +257,7 @@ bool VkHost::create_device(std::string* error) {
         enable = &enable_khr;
         extension_names.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
     }
-    enable = velocity_.enable_features(target_, enable);
+    enable = extras_.enable_features(target_, enable);
     if (!grass_bootstrap::create_device(physical_device_, queue_family_, extension_names, enable, &device_, &queue_,
                                         error)) {
         return false;
@@ -336,7 +332,7 @@ bool VkHost::create_target(std::string* error) {
 
 bool VkHost::create_render_pass(std::string* error) {
     grass_bootstrap::VkPassDesc pass;
-    if (!velocity_.create(device_, memory_properties_, target_, &pass, error)) return false;
+    if (!extras_.create(device_, memory_properties_, target_, &pass, error)) return false;
     if (target_.vk_dynamic_rendering) return true;
     pass.color_format = color_format_;
     pass.depth_format = kDepthFormat;
@@ -369,11 +365,11 @@ bool VkHost::create_render_pass(std::string* error) {
 
     if (!grass_bootstrap::create_render_pass(device_, pass, &render_pass_, error)) return false;
 
-    VkImageView views[5] = {color_.view, depth_.view, resolve_.view};
-    for (uint32_t i = 0; i < velocity_.count(); ++i) views[2 + i] = velocity_.views()[i];
+    VkImageView views[9] = {color_.view, depth_.view, resolve_.view};
+    const uint32_t own = samples_ != VK_SAMPLE_COUNT_1_BIT ? 3 : 2;
     VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     fb.renderPass = render_pass_;
-    fb.attachmentCount = samples_ != VK_SAMPLE_COUNT_1_BIT ? 3 : 2 + velocity_.count();
+    fb.attachmentCount = own + extras_.views(views + own);
     fb.pAttachments = views;
     fb.width = target_.width;
     fb.height = target_.height;
@@ -426,7 +422,7 @@ VkHost::~VkHost() {
         grass_bootstrap::destroy_image(device_, &resolve_);
         grass_bootstrap::destroy_image(device_, &depth_);
         grass_bootstrap::destroy_image(device_, &color_);
-        velocity_.destroy(device_);
+        extras_.destroy(device_);
         vkDestroyDevice(device_, nullptr);
     }
     instance_.destroy(); // while the validation log is still there
@@ -521,7 +517,7 @@ grass_result VkHost::create_context(const grass_context_desc& desc, grass_contex
     depth.next = vk.next;
     if (shadows_) depth.render_pass = reinterpret_cast<uint64_t>(shadows_->render_pass()); // the cascades' pass
     if (depth.render_pass) vk.next = &depth;
-    vk.next = velocity_.chain(vk.next); // target.vk_velocity_attachment
+    vk.next = extras_.chain(vk.next); // target.vk_velocity_attachment
     return grass_vk_create_context(GRASS_HEADER_VERSION, &desc, &vk, out);
 }
 
@@ -534,17 +530,17 @@ void VkHost::projection(float fovy_radians, float aspect, float near_m, float fa
 // ---- A frame ------------------------------------------------------------------------------
 
 void VkHost::begin_pass(VkCommandBuffer cmd) {
-    VkClearValue clears[5] = {};
+    VkClearValue clears[6] = {};
     stored_clear_color(target_, clears[0].color.float32);
     clears[1].depthStencil = {target_.reversed_z ? 0.0f : 1.0f, 0};
-    velocity_.clear_values(clears + 2);
+    const uint32_t clear_count = extras_.clear_values(clears);
     const VkRect2D area{{0, 0}, {target_.width, target_.height}};
     if (render_pass_) {
         VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         info.renderPass = render_pass_;
         info.framebuffer = framebuffer_;
         info.renderArea = area;
-        info.clearValueCount = 2 + velocity_.count();
+        info.clearValueCount = clear_count;
         info.pClearValues = clears;
         vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
         return;
@@ -576,7 +572,9 @@ void VkHost::begin_pass(VkCommandBuffer cmd) {
                              VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
                          0, 0, nullptr, 0, nullptr, msaa ? 3 : 2, barriers);
 
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    VkRenderingAttachmentInfo colors[4] = {{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO}};
+    extras_.begin_rendering(cmd, colors + 1); // colour attachments 1..
+    VkRenderingAttachmentInfo& color = colors[0];
     color.imageView = color_.view;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
@@ -596,8 +594,8 @@ void VkHost::begin_pass(VkCommandBuffer cmd) {
     VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
     info.renderArea = area;
     info.layerCount = 1;
-    info.colorAttachmentCount = 1;
-    info.pColorAttachments = &color;
+    info.colorAttachmentCount = 1 + extras_.count();
+    info.pColorAttachments = colors;
     info.pDepthAttachment = &depth;
     begin_rendering_(cmd, &info);
 }
@@ -640,6 +638,7 @@ void VkHost::end_pass(VkCommandBuffer cmd) {
         return;
     }
     end_rendering_(cmd);
+    extras_.end_rendering(cmd);
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     b.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
     b.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
@@ -667,7 +666,7 @@ void VkHost::copy_to_readback(VkCommandBuffer cmd) {
     const VkBufferMemoryBarrier b = grass_bootstrap::host_read_barrier(readback_.buffer);
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0,
                          nullptr);
-    if (velocity_.count()) velocity_.copy(cmd);
+    if (extras_.count()) extras_.copy(cmd);
 }
 
 grass_result VkHost::render(grass_context* context, const grass_view_desc& view, const Occluder* occluder, Image* out,
@@ -781,7 +780,7 @@ grass_result VkHost::render(grass_context* context, const grass_view_desc& view,
                         size_t(target_.width) * target_.height * texel_bytes_,
                     out->depth.size() * sizeof(float));
     }
-    if (velocity_.count()) velocity_.read(device_, out);
+    if (extras_.count()) extras_.read(device_, out);
     if (messages_ != 0 && error) *error = log_;
     return GRASS_SUCCESS;
 }

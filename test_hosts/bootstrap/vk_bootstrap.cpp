@@ -336,24 +336,31 @@ bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* o
     attachments[2].finalLayout = desc.color_final;
 
     VkAttachmentReference color_refs[8] = {{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
-    const uint32_t more = msaa || depth_only || color_only ? 0 : desc.more_color_count < 7 ? desc.more_color_count : 7;
-    for (uint32_t i = 0; i < more; ++i) { // single-sampled: attachment 2 is no resolve target
-        attachments[2 + i] = attachments[0];
-        attachments[2 + i].format = desc.more_colors[i];
-        color_refs[1 + i] = {2 + i, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkAttachmentReference resolve_refs[8] = {{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL}};
+    const uint32_t most = msaa ? 3 : 7;
+    const uint32_t more = depth_only || color_only ? 0 : desc.more_color_count < most ? desc.more_color_count : most;
+    for (uint32_t i = 0; i < more; ++i) {
+        // Single-sampled: attachment 2 + i. Multisampled: 3 + i, its resolve target 3 + more + i.
+        const uint32_t at = msaa ? 3 + i : 2 + i;
+        attachments[at] = attachments[0];
+        attachments[at].format = desc.more_colors[i];
+        color_refs[1 + i] = {at, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+        if (!msaa) continue;
+        attachments[at + more] = attachments[2];
+        attachments[at + more].format = desc.more_colors[i];
+        resolve_refs[1 + i] = {at + more, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     }
     const VkAttachmentReference depth_ref{depth_only ? 0u : 1u, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
-    const VkAttachmentReference resolve_ref{2, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
     subpass.colorAttachmentCount = depth_only ? 0 : 1 + more;
     subpass.pColorAttachments = depth_only ? nullptr : color_refs;
-    subpass.pResolveAttachments = msaa && !depth_only ? &resolve_ref : nullptr;
+    subpass.pResolveAttachments = msaa && !depth_only ? resolve_refs : nullptr;
     subpass.pDepthStencilAttachment = color_only ? nullptr : &depth_ref;
 
     VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
     info.pNext = desc.next;
-    info.attachmentCount = depth_only || color_only ? 1 : msaa ? 3 : 2 + more;
+    info.attachmentCount = depth_only || color_only ? 1 : msaa ? 3 + 2 * more : 2 + more;
     info.pAttachments = depth_only ? &attachments[1] : attachments;
     info.subpassCount = 1;
     info.pSubpasses = &subpass;

@@ -125,10 +125,12 @@ struct VkPassDesc {
     VkImageLayout depth_final = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     VkSubpassDependency dependencies[2] = {}; // into and out of the pass
     const void* next = nullptr;               // VkRenderPassCreateInfo::pNext (a multiview pass's view masks)
-    // Single-sampled passes: further colour attachments (colour attachments 1.., the pass's
-    // attachments 2..), cleared, stored and ending in color_final (a velocity target's pass).
+    // Further colour attachments (colour attachments 1..), cleared, ending in color_final (an
+    // extra target's pass). Single-sampled: the pass's attachments 2.., stored. Multisampled:
+    // the pass's attachments 3.. (after the resolve target), each resolved into a single-sample
+    // attachment after them all (3 + more_color_count..), as attachment 0 is into 2.
     const VkFormat* more_colors = nullptr;
-    uint32_t more_color_count = 0; // at most 7
+    uint32_t more_color_count = 0; // at most 7, multisampled 3
 };
 bool create_render_pass(VkDevice device, const VkPassDesc& desc, VkRenderPass* out, std::string* error);
 

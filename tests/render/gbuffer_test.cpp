@@ -9,6 +9,8 @@
 // - the NONE attachment, every channel masked off (albedo and normal .a, material .ba) and
 //   every pixel without grass keep their pattern, byte for byte;
 // - the host's draw buffers, colour masks, blend enables and uniform binding 5 come back.
+// The same at 4 samples, as a host makes the framebuffer (multisampled textures, cleared),
+// after each attachment's resolve (EveryTierAt4Samples).
 // With a motion desc, a VELOCITY attachment (RGBA32F) holds what the motion view's velocity
 // attachment holds. A view without it draws with programs that declare no GrassGBuffer block,
 // and after it makes none. Bad layouts and a framebuffer without the attachments are refused
@@ -46,7 +48,7 @@ struct Frame {
     bool grass(size_t p) const { return depth[p] < 1.0f; }
 };
 
-class GBufferTest : public RenderTest {
+class GBufferTest : public GBufferFixture {
 protected:
     void SetUp() override {
         RenderTest::SetUp();
@@ -106,12 +108,7 @@ protected:
         }
         const float far = 1.0f;
         gl.ClearNamedFramebufferfv(fbo_, GL_DEPTH, 0, &far);
-        grass_view_desc d = v;
-        d.viewport[0] = d.viewport[1] = 0;
-        d.viewport[2] = d.viewport[3] = kSize;
-        EXPECT_EQ(grass_begin_frame(ctx, &d), GRASS_SUCCESS) << log;
-        EXPECT_EQ(grass_gl_render(ctx), GRASS_SUCCESS) << log;
-        EXPECT_EQ(grass_end_frame(ctx), GRASS_SUCCESS) << log;
+        draw_whole_view(ctx, v, kSize, log);
         Frame f;
         for (int a = 0; a < kColour; ++a) {
             if (a == 1 && float_velocity_) continue;
@@ -124,6 +121,52 @@ protected:
         }
         f.depth.resize(n);
         gl.GetTextureImage(textures_[kColour], 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(n * 4), f.depth.data());
+        return f;
+    }
+
+    // As a host draws at 4 samples: attachments 0-3 (RGBA8) and depth multisampled textures,
+    // draw buffers 0-3, each cleared to gbuffer_clear_byte (a multisampled texture takes no
+    // upload); draws `v`, then resolves each attachment (glBlitNamedFramebuffer) into a
+    // single-sample RGBA8 texture and reads that back (Frame::colour; no depth).
+    Frame draw_4_samples(const grass_view_desc& v) {
+        GLuint ms[kColour + 1] = {}, resolved[kColour] = {}, fbos[2] = {};
+        gl.CreateTextures(GL_TEXTURE_2D_MULTISAMPLE, kColour + 1, ms);
+        gl.CreateTextures(GL_TEXTURE_2D, kColour, resolved);
+        gl.CreateFramebuffers(2, fbos);
+        GLenum buffers[kColour];
+        for (int i = 0; i < kColour; ++i) {
+            gl.TextureStorage2DMultisample(ms[i], 4, GL_RGBA8, kSize, kSize, GL_TRUE);
+            gl.NamedFramebufferTexture(fbos[0], GL_COLOR_ATTACHMENT0 + i, ms[i], 0);
+            gl.TextureStorage2D(resolved[i], 1, GL_RGBA8, kSize, kSize);
+            gl.NamedFramebufferTexture(fbos[1], GL_COLOR_ATTACHMENT0 + i, resolved[i], 0);
+            buffers[i] = GL_COLOR_ATTACHMENT0 + i;
+        }
+        gl.TextureStorage2DMultisample(ms[kColour], 4, GL_DEPTH_COMPONENT32F, kSize, kSize, GL_TRUE);
+        gl.NamedFramebufferTexture(fbos[0], GL_DEPTH_ATTACHMENT, ms[kColour], 0);
+        gl.NamedFramebufferDrawBuffers(fbos[0], kColour, buffers);
+        for (int a = 0; a < kColour; ++a) {
+            float clear[4];
+            for (int c = 0; c < 4; ++c) clear[c] = gbuffer_clear_byte(a, c) / 255.0f;
+            gl.ClearNamedFramebufferfv(fbos[0], GL_COLOR, a, clear);
+        }
+        const float far = 1.0f;
+        gl.ClearNamedFramebufferfv(fbos[0], GL_DEPTH, 0, &far);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, fbos[0]);
+        draw_whole_view(ctx, v, kSize, log);
+        Frame f;
+        const size_t n = size_t(kSize) * kSize;
+        for (int a = 0; a < kColour; ++a) {
+            gl.NamedFramebufferReadBuffer(fbos[0], buffers[a]);
+            gl.NamedFramebufferDrawBuffers(fbos[1], 1, &buffers[a]);
+            gl.BlitNamedFramebuffer(fbos[0], fbos[1], 0, 0, kSize, kSize, 0, 0, kSize, kSize, GL_COLOR_BUFFER_BIT,
+                                    GL_NEAREST);
+            f.colour[a].resize(n * 4);
+            gl.GetTextureImage(resolved[a], 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(n * 4), f.colour[a].data());
+        }
+        gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+        gl.DeleteFramebuffers(2, fbos);
+        gl.DeleteTextures(kColour + 1, ms);
+        gl.DeleteTextures(kColour, resolved);
         return f;
     }
 
@@ -140,8 +183,6 @@ const double kEye[3] = {2.0, 1.6, -0.6}, kAt[3] = {2.0, 0.0, 2.4};
 
 TEST_P(GBufferTest, EveryTierWritesItsSurfaceAndNothingElse) {
     make_target(false);
-    const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
-    const char* const names[3] = {"geometry", "volume", "image"};
     // The host's state of draw buffers 0-3 and uniform binding 5, to come back.
     GLuint host_buffer = 0;
     gl.CreateBuffers(1, &host_buffer);
@@ -149,13 +190,7 @@ TEST_P(GBufferTest, EveryTierWritesItsSurfaceAndNothingElse) {
     gl.BindBufferRange(GL_UNIFORM_BUFFER, 5, host_buffer, 256, 512);
     gl.Enablei(GL_BLEND, 2);
     gl.ColorMaski(3, GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
-    for (int k = 0; k < 3; ++k) {
-        const grass_field_id field =
-            make_field(solo_tier_field(16, kinds[k], kinds[k] == GRASS_TIER_VOLUME ? 2u : 0u, 4));
-        grass_view_gbuffer_desc layout = four_attachments();
-        grass_view_pass_desc pass = gbuffer_pass(&layout);
-        grass_view_desc v = view(kEye, kAt);
-        v.next = &pass;
+    each_tier(kEye, kAt, [&](grass_tier_kind, const char* name, const grass_view_desc& v) {
         const Frame f = draw(v);
         // Attachment 3 keeps its pattern though the host's own mask there leaves r and b writable.
         GBufferRead g;
@@ -163,9 +198,8 @@ TEST_P(GBufferTest, EveryTierWritesItsSurfaceAndNothingElse) {
         g.byte = [&](int a, size_t p, int c) { return f.colour[a][p * 4 + c]; };
         g.before = pattern;
         g.grass = [&](size_t p) { return f.grass(p); };
-        expect_surface(g, kEye, kAt, names[k]);
-        EXPECT_EQ(grass_destroy_field(ctx, field), GRASS_SUCCESS);
-    }
+        expect_surface(g, kEye, kAt, name);
+    });
     GLint buffers[kColour] = {}, binding = 0;
     for (int i = 0; i < kColour; ++i) {
         gl.GetIntegerv(GL_DRAW_BUFFER0 + i, &buffers[i]);
@@ -185,6 +219,22 @@ TEST_P(GBufferTest, EveryTierWritesItsSurfaceAndNothingElse) {
     gl.Disablei(GL_BLEND, 2);
     gl.ColorMaski(3, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl.DeleteBuffers(1, &host_buffer);
+}
+
+// As a host draws at 4 samples (draw_4_samples): per tier the same checks after the resolve,
+// where grass drew found by_material; the blades' resolved normals are means of several
+// blades' (GBufferRead::mean_normals).
+TEST_P(GBufferTest, EveryTierAt4Samples) {
+    each_tier(kEye, kAt, [&](grass_tier_kind kind, const char* name, const grass_view_desc& v) {
+        const Frame f = draw_4_samples(v);
+        GBufferRead g;
+        g.pixels = size_t(kSize) * kSize;
+        g.byte = [&](int a, size_t p, int c) { return f.colour[a][p * 4 + c]; };
+        g.before = [](int a, size_t, int c) { return gbuffer_clear_byte(a, c); };
+        by_material(&g);
+        g.mean_normals = kind == GRASS_TIER_GEOMETRY;
+        expect_surface(g, kEye, kAt, (std::string("4 samples, ") + name).c_str());
+    });
 }
 
 TEST_P(GBufferTest, VelocityIsTheMotionViewsVelocity) {

@@ -10,6 +10,9 @@
 //   1 and translucency 0.25;
 // - the NONE attachment, every channel masked off (albedo and normal .a, material .ba) and
 //   every pixel without grass keep their clear, byte for byte.
+// The same at 4 samples (each attachment resolved), in a render pass and with dynamic
+// rendering at 1 and 4 samples (the host's extra targets, extra_targets_vk.hpp), where grass
+// drew told by the material attachment (by_material: no depth is read back there).
 // With a motion desc, a VELOCITY attachment (RGBA32F, the context's velocity target too) holds
 // what the motion view's velocity attachment holds. Plain views make nothing for G-buffers;
 // each layout makes its own pipelines. A context without grass_vk_gbuffer_target_desc, or a
@@ -32,13 +35,11 @@ namespace {
 
 constexpr uint32_t kSize = 96;
 constexpr int kColour = 4; // colour attachments
-// The byte each channel of attachments 1-3 is cleared to.
-uint8_t clear_byte(int attachment, int channel) { return static_cast<uint8_t>(17 + 40 * attachment + 11 * channel); }
 constexpr float kVelocityClear[4] = {9.0f, -9.0f, 7.0f, 5.0f};
 
 const double kEye[3] = {2.0, 1.6, -0.6}, kAt[3] = {2.0, 0.0, 2.4};
 
-class GBufferVkTest : public RenderTest {
+class GBufferVkTest : public GBufferFixture {
 protected:
     void SetUp() override {
         RenderTest::SetUp();
@@ -61,7 +62,7 @@ protected:
         }
         for (int a = 0; a < 3; ++a) {
             t.vk_gbuffer_formats[a] = VK_FORMAT_R8G8B8A8_UNORM;
-            for (int c = 0; c < 4; ++c) t.gbuffer_clear[a][c] = clear_byte(a + 1, c) / 255.0f;
+            for (int c = 0; c < 4; ++c) t.gbuffer_clear[a][c] = gbuffer_clear_byte(a + 1, c) / 255.0f;
         }
         return t;
     }
@@ -70,34 +71,58 @@ protected:
         v.viewport[2] = v.viewport[3] = kSize;
         return v;
     }
+    // Draws a field of each tier alone into the G-buffer of `t` (target(false), perhaps at
+    // other samples or with dynamic rendering) and checks its surface (expect_surface). Where
+    // grass drew: its depth (`t.read_depth`), else by_material. Multisampled, the resolved
+    // normals of blades are means (GBufferRead::mean_normals).
+    void every_tier(const grass_host::TargetDesc& t, const char* how) {
+        start(t);
+        each_tier(kEye, kAt, [&](grass_tier_kind kind, const char* name, const grass_view_desc& whole) {
+            const grass_host::Image f = render(sized(whole));
+            ASSERT_EQ(f.gbuffer.size(), 3u);
+            const size_t n = size_t(kSize) * kSize;
+            GBufferRead g;
+            g.pixels = n;
+            size_t sky = n; // a pixel without grass: it keeps attachment 0's clear bytes
+            g.byte = [&](int a, size_t p, int c) { return a == 0 ? f.rgba[p * 4 + c] : f.gbuffer[a - 1][p * 4 + c]; };
+            g.before = [&](int a, size_t, int c) { return a == 0 ? f.rgba[sky * 4 + c] : gbuffer_clear_byte(a, c); };
+            by_material(&g);
+            if (t.read_depth) g.grass = g.touched = [&](size_t p) { return f.depth[p] < 1.0f; };
+            for (size_t p = 0; p < n && sky == n; ++p) sky = g.touched(p) ? n : p;
+            ASSERT_LT(sky, n) << how << ", " << name << ": a pixel without grass";
+            g.mean_normals = t.samples > 1 && kind == GRASS_TIER_GEOMETRY;
+            expect_surface(g, kEye, kAt, (std::string(how) + ", " + name).c_str());
+            save(f, name); // the albedo, then the normal
+            grass_host::Image normal = f;
+            normal.rgba = f.gbuffer[0];
+            save(normal, std::string(name) + ".normal");
+        });
+    }
 };
 
-TEST_P(GBufferVkTest, EveryTierWritesItsSurfaceAndNothingElse) {
-    const grass_tier_kind kinds[3] = {GRASS_TIER_GEOMETRY, GRASS_TIER_VOLUME, GRASS_TIER_IMAGE};
-    const char* const names[3] = {"geometry", "volume", "image"};
-    for (int k = 0; k < 3; ++k) {
-        const grass_field_id field =
-            make_field(solo_tier_field(16, kinds[k], kinds[k] == GRASS_TIER_VOLUME ? 2u : 0u, 4));
-        grass_view_gbuffer_desc layout = four_attachments();
-        grass_view_pass_desc pass = gbuffer_pass(&layout);
-        grass_view_desc v = sized(view(kEye, kAt));
-        v.next = &pass;
-        const grass_host::Image f = render(v);
-        ASSERT_EQ(f.gbuffer.size(), 3u);
-        const size_t n = size_t(kSize) * kSize;
-        // Attachment 0's clear bytes: a pixel without grass keeps them.
-        size_t sky = n;
-        for (size_t p = 0; p < n && sky == n; ++p) sky = f.depth[p] >= 1.0f ? p : n;
-        ASSERT_LT(sky, n) << names[k] << ": a pixel without grass";
-        GBufferRead g;
-        g.pixels = n;
-        g.byte = [&](int a, size_t p, int c) { return a == 0 ? f.rgba[p * 4 + c] : f.gbuffer[a - 1][p * 4 + c]; };
-        g.before = [&](int a, size_t, int c) { return a == 0 ? f.rgba[sky * 4 + c] : clear_byte(a, c); };
-        g.grass = [&](size_t p) { return f.depth[p] < 1.0f; };
-        expect_surface(g, kEye, kAt, names[k]);
-        save(f, names[k]);
-        EXPECT_EQ(grass_destroy_field(ctx, field), GRASS_SUCCESS);
-    }
+TEST_P(GBufferVkTest, EveryTierWritesItsSurfaceAndNothingElse) { every_tier(target(false), "1 sample, render pass"); }
+
+// As a host draws: 4 samples (each attachment resolved), a render pass or dynamic rendering.
+TEST_P(GBufferVkTest, EveryTierAt4SamplesInARenderPass) {
+    grass_host::TargetDesc t = target(false);
+    t.samples = 4;
+    t.read_depth = false;
+    every_tier(t, "4 samples, render pass");
+}
+
+TEST_P(GBufferVkTest, EveryTierWithDynamicRendering) {
+    grass_host::TargetDesc t = target(false);
+    t.vk_dynamic_rendering = true;
+    t.read_depth = false;
+    every_tier(t, "1 sample, dynamic rendering");
+}
+
+TEST_P(GBufferVkTest, EveryTierAt4SamplesWithDynamicRendering) {
+    grass_host::TargetDesc t = target(false);
+    t.samples = 4;
+    t.vk_dynamic_rendering = true;
+    t.read_depth = false;
+    every_tier(t, "4 samples, dynamic rendering");
 }
 
 TEST_P(GBufferVkTest, VelocityIsTheMotionViewsVelocity) {

@@ -5,8 +5,12 @@
 
 #include "headless_host.hpp"
 
+#include <grass/grass_gl.h>
+
 #include <GL/glcorearb.h>
 #include <gtest/gtest.h>
+
+#include <string>
 
 namespace grass_test {
 
@@ -19,6 +23,9 @@ namespace grass_test {
     X(PFNGLCLEARNAMEDFRAMEBUFFERFVPROC, ClearNamedFramebufferfv)         \
     X(PFNGLCREATETEXTURESPROC, CreateTextures)                           \
     X(PFNGLTEXTURESTORAGE2DPROC, TextureStorage2D)                       \
+    X(PFNGLTEXTURESTORAGE2DMULTISAMPLEPROC, TextureStorage2DMultisample) \
+    X(PFNGLNAMEDFRAMEBUFFERREADBUFFERPROC, NamedFramebufferReadBuffer)   \
+    X(PFNGLBLITNAMEDFRAMEBUFFERPROC, BlitNamedFramebuffer)               \
     X(PFNGLTEXTURESUBIMAGE2DPROC, TextureSubImage2D)                     \
     X(PFNGLDELETETEXTURESPROC, DeleteTextures)                           \
     X(PFNGLGETTEXTUREIMAGEPROC, GetTextureImage)                         \
@@ -48,6 +55,17 @@ inline void load_gl_test_functions(const grass_host::Host& host, GlTestFunctions
     EXPECT_NE(gl->name, nullptr) << "gl" #name;
     GRASS_TEST_GL_FUNCTIONS(GRASS_TEST_GL_LOAD)
 #undef GRASS_TEST_GL_LOAD
+}
+
+// A frame of `v` drawn over the whole of the bound `size` x `size` framebuffer; `log` the
+// context's messages, for a failure to show.
+inline void draw_whole_view(grass_context* ctx, const grass_view_desc& v, int size, const std::string& log) {
+    grass_view_desc d = v;
+    d.viewport[0] = d.viewport[1] = 0;
+    d.viewport[2] = d.viewport[3] = size;
+    EXPECT_EQ(grass_begin_frame(ctx, &d), GRASS_SUCCESS) << log;
+    EXPECT_EQ(grass_gl_render(ctx), GRASS_SUCCESS) << log;
+    EXPECT_EQ(grass_end_frame(ctx), GRASS_SUCCESS) << log;
 }
 
 } // namespace grass_test

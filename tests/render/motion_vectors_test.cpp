@@ -155,12 +155,7 @@ protected:
         gl.ClearNamedFramebufferfv(fbo_, GL_COLOR, 1, kExtraClear);
         gl.ClearNamedFramebufferfv(fbo_, GL_COLOR, 2, kVelocityClear);
         gl.ClearNamedFramebufferfv(fbo_, GL_DEPTH, 0, &far);
-        grass_view_desc d = v;
-        d.viewport[0] = d.viewport[1] = 0;
-        d.viewport[2] = d.viewport[3] = kSize;
-        EXPECT_EQ(grass_begin_frame(ctx, &d), GRASS_SUCCESS) << log;
-        EXPECT_EQ(grass_gl_render(ctx), GRASS_SUCCESS) << log;
-        EXPECT_EQ(grass_end_frame(ctx), GRASS_SUCCESS) << log;
+        draw_whole_view(ctx, v, kSize, log);
         const size_t n = size_t(kSize) * kSize;
         f.color.resize(n * 4);
         f.extra.resize(n * 4);

@@ -1,6 +1,7 @@
-#include "velocity_target_vk.hpp"
+#include "extra_targets_vk.hpp"
 
 #include <cstring>
+#include <initializer_list>
 
 namespace grass_host {
 
@@ -9,23 +10,24 @@ namespace {
 uint32_t texel_bytes(VkFormat format) { return format == VK_FORMAT_R32G32B32A32_SFLOAT ? 16u : 4u; }
 } // namespace
 
-const void* VkVelocityTarget::enable_features(const TargetDesc& target, const void* chain) {
+const void* VkExtraTargets::enable_features(const TargetDesc& target, const void* chain) {
     if (target.vk_velocity_attachment == 0 && target.vk_gbuffer_formats[0] == 0) return chain;
     features_.features.independentBlend = VK_TRUE;
     features_.pNext = const_cast<void*>(chain);
     return &features_;
 }
 
-bool VkVelocityTarget::create(VkDevice device, const VkPhysicalDeviceMemoryProperties& memory, const TargetDesc& target,
-                              grass_bootstrap::VkPassDesc* pass, std::string* error) {
+bool VkExtraTargets::create(VkDevice device, const VkPhysicalDeviceMemoryProperties& memory, const TargetDesc& target,
+                            grass_bootstrap::VkPassDesc* pass, std::string* error) {
     target_ = target;
     gbuffer_ = target.vk_gbuffer_formats[0] != 0;
+    msaa_ = target.samples > 1;
     if (target.vk_velocity_attachment == 0 && !gbuffer_) return true;
     const uint32_t most = gbuffer_ ? 3 : 2;
     if ((!gbuffer_ && target.vk_velocity_attachment < 1) || target.vk_velocity_attachment > most ||
-        target.samples != 1 || target.vk_dynamic_rendering || target.ground || !target.meshes.empty()) {
-        *error = "vk_velocity_attachment needs 1 or 2 and a single-sampled target drawn with a render pass, without "
-                 "ground or meshes";
+        (!gbuffer_ && (msaa_ || target.vk_dynamic_rendering)) || target.ground || !target.meshes.empty()) {
+        *error = "vk_velocity_attachment needs 1 or 2 and a single-sampled target drawn with a render pass (a "
+                 "G-buffer target: any), without ground or meshes";
         return false;
     }
     count_ = target.vk_velocity_attachment;
@@ -42,9 +44,12 @@ bool VkVelocityTarget::create(VkDevice device, const VkPhysicalDeviceMemoryPrope
         grass_bootstrap::VkImageDesc desc;
         desc.extent = {target.width, target.height};
         desc.format = formats_[i];
-        desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        desc.samples = static_cast<VkSampleCountFlagBits>(target.samples);
+        desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (msaa_ ? 0 : VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
         if (!grass_bootstrap::create_image(device, memory, desc, &images_[i], error)) return false;
-        views_[i] = images_[i].view;
+        desc.samples = VK_SAMPLE_COUNT_1_BIT;
+        desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        if (msaa_ && !grass_bootstrap::create_image(device, memory, desc, &resolves_[i], error)) return false;
     }
     pass->more_colors = formats_;
     pass->more_color_count = count_;
@@ -54,22 +59,83 @@ bool VkVelocityTarget::create(VkDevice device, const VkPhysicalDeviceMemoryPrope
                                           &readback_, error);
 }
 
-void VkVelocityTarget::destroy(VkDevice device) {
+void VkExtraTargets::destroy(VkDevice device) {
     for (grass_bootstrap::VkImageParts& image : images_) grass_bootstrap::destroy_image(device, &image);
+    for (grass_bootstrap::VkImageParts& image : resolves_) grass_bootstrap::destroy_image(device, &image);
     grass_bootstrap::destroy_buffer(device, &readback_);
     count_ = 0;
 }
 
-void VkVelocityTarget::clear_values(VkClearValue* out) const {
+uint32_t VkExtraTargets::views(VkImageView* at) const {
+    for (uint32_t i = 0; i < count_; ++i) {
+        at[i] = images_[i].view;
+        if (msaa_) at[count_ + i] = resolves_[i].view;
+    }
+    return msaa_ ? 2 * count_ : count_;
+}
+
+uint32_t VkExtraTargets::clear_values(VkClearValue* clears) const {
+    const uint32_t first = msaa_ ? 3 : 2; // after colour, depth and (multisampled) the resolve image
     for (uint32_t i = 0; i < count_; ++i) {
         const float* c = gbuffer_          ? target_.gbuffer_clear[i]
                          : i + 1 == count_ ? target_.velocity_clear
                                            : target_.other_clear;
-        std::memcpy(out[i].color.float32, c, 4 * sizeof(float));
+        std::memcpy(clears[first + i].color.float32, c, 4 * sizeof(float));
+    }
+    return first + count_;
+}
+
+void VkExtraTargets::barrier(VkCommandBuffer cmd, bool into_pass) const {
+    VkImageMemoryBarrier barriers[6] = {};
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < count_; ++i) {
+        for (const VkImage image : {images_[i].image, resolves_[i].image}) {
+            if (image == VK_NULL_HANDLE || (!into_pass && image != read_image(i))) continue;
+            VkImageMemoryBarrier& b = barriers[n++];
+            b.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+            b.srcAccessMask = into_pass ? 0 : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+            b.dstAccessMask = into_pass ? VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT
+                                        : VK_ACCESS_TRANSFER_READ_BIT;
+            b.oldLayout = into_pass ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+            b.newLayout = into_pass ? VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+            b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+            b.image = image;
+            b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        }
+    }
+    // Into the pass: after the last frame's read-back copy; out of it: before this frame's.
+    const VkPipelineStageFlags src =
+        into_pass ? VK_PIPELINE_STAGE_TRANSFER_BIT : VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    const VkPipelineStageFlags dst =
+        into_pass ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT : VK_PIPELINE_STAGE_TRANSFER_BIT;
+    vkCmdPipelineBarrier(cmd, src, dst, 0, 0, nullptr, 0, nullptr, n, barriers);
+}
+
+void VkExtraTargets::begin_rendering(VkCommandBuffer cmd, VkRenderingAttachmentInfo* out) const {
+    if (count_ == 0) return;
+    barrier(cmd, true);
+    VkClearValue clears[6] = {};
+    const uint32_t first = clear_values(clears) - count_;
+    for (uint32_t i = 0; i < count_; ++i) {
+        VkRenderingAttachmentInfo& a = out[i];
+        a = VkRenderingAttachmentInfo{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+        a.imageView = images_[i].view;
+        a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+        a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        a.storeOp = msaa_ ? VK_ATTACHMENT_STORE_OP_DONT_CARE : VK_ATTACHMENT_STORE_OP_STORE;
+        a.clearValue = clears[first + i];
+        if (!msaa_) continue;
+        a.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+        a.resolveImageView = resolves_[i].view;
+        a.resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     }
 }
 
-const void* VkVelocityTarget::chain(const void* next) {
+void VkExtraTargets::end_rendering(VkCommandBuffer cmd) const {
+    if (count_ != 0) barrier(cmd, false);
+}
+
+const void* VkExtraTargets::chain(const void* next) {
     if (count_ == 0) return next;
     if (gbuffer_) {
         gbuffer_desc_.color_attachment_count = 1 + count_;
@@ -89,14 +155,13 @@ const void* VkVelocityTarget::chain(const void* next) {
     return &desc_;
 }
 
-void VkVelocityTarget::copy(VkCommandBuffer cmd) const {
+void VkExtraTargets::copy(VkCommandBuffer cmd) const {
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {target_.width, target_.height, 1};
     for (uint32_t i = 0; gbuffer_ && i < count_; ++i) { // each at a stride of 16 bytes a texel
         region.bufferOffset = VkDeviceSize(target_.width) * target_.height * 16 * i;
-        vkCmdCopyImageToBuffer(cmd, images_[i].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1,
-                               &region);
+        vkCmdCopyImageToBuffer(cmd, read_image(i), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1, &region);
     }
     if (gbuffer_) {
         const VkBufferMemoryBarrier b = grass_bootstrap::host_read_barrier(readback_.buffer);
@@ -116,7 +181,7 @@ void VkVelocityTarget::copy(VkCommandBuffer cmd) const {
                          nullptr);
 }
 
-void VkVelocityTarget::read(VkDevice, Image* out) const {
+void VkExtraTargets::read(VkDevice, Image* out) const {
     const size_t n = size_t(target_.width) * target_.height;
     if (gbuffer_) {
         const auto* bytes = static_cast<const uint8_t*>(readback_.mapped);
