@@ -76,7 +76,7 @@ struct Truth {
 // The reference's timed frame per camera, of one scene and backend: the cost every other frame
 // of that scene and backend is set against.
 struct Reference {
-    double ms[4] = {0, 0, 0, 0};
+    double ms[kCameraCount] = {};
 };
 
 // A host with a target of the given size and samples, a context, and a field of the scene made
@@ -222,7 +222,7 @@ bool truth_image(const Options& opt, const PreparedScene& ps, int ci, uint64_t s
 
 // The truths of every measured camera of a scene.
 bool make_truths(const Options& opt, const PreparedScene& ps, std::chrono::steady_clock::time_point t_start,
-                 Truth truth[4], std::string* error) {
+                 Truth truth[kCameraCount], std::string* error) {
     for (const int ci : ps.cameras) {
         if (!truth_image(opt, ps, ci, 0, t_start, &truth[ci].a, error) ||
             !truth_image(opt, ps, ci, opt.seed_step, t_start, &truth[ci].b, error))
@@ -256,7 +256,7 @@ void cached_reference_times(const Options& opt, const PreparedScene& ps, grass_b
 // camera; a failed frame is reported and sets *status to 1; false (with *error) when the run
 // cannot go on.
 bool render_variant(const Options& opt, grass_backend backend, const PreparedScene& ps, const Variant& v,
-                    const Truth truth[4], Reference* ref, std::chrono::steady_clock::time_point t_start,
+                    const Truth truth[kCameraCount], Reference* ref, std::chrono::steady_clock::time_point t_start,
                     std::vector<Row>* rows, int* status, std::string* error) {
     const char* be = grass_sample::backend_name(backend);
     const BenchScene& bs = *ps.bench;
@@ -348,6 +348,8 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
         row.error = grass_bench::image_error(t.rgba.data(), img, image.width, image.height);
         row.seed = truth[ci].seed;
         row.norm = grass_bench::normalised(row.error, row.seed);
+        row.grass_share = grass_bench::row_bands(img, image.width, image.height, 1)[0].coverage;
+        row.truth_grass_share = grass_bench::row_bands(t.rgba.data(), t.width, t.height, 1)[0].coverage;
         row.native_reference = is_reference ? image : grass_host::Image{};
         grass_host::Image diff;
         diff.width = image.width;
@@ -482,15 +484,21 @@ int preset_index(const std::string& name) {
     return -1;
 }
 int camera_index(const std::string& name) {
-    for (int c = 0; c < 4; ++c)
+    for (int c = 0; c < kCameraCount; ++c)
         if (name == kScenes[0].cameras[c].name) return c;
     return -1;
+}
+// The cameras' names from kScenes, ", " between them: the first `count` of them.
+std::string camera_names(int count) {
+    std::string list;
+    for (int c = 0; c < count; ++c) list += std::string(c ? ", " : "") + kScenes[0].cameras[c].name;
+    return list;
 }
 
 // A repeatable option naming a scene or camera (`index` finds the name; `list` the names for
 // the error): each name's index appended to *out.
 void add_names_option(CLI::App& app, const std::string& option, int (*index)(const std::string&), const char* what,
-                      const char* list, const std::string& help, std::vector<int>* out) {
+                      const std::string& list, const std::string& help, std::vector<int>* out) {
     const CLI::Validator is_name(
         [index, what, list](std::string& text) {
             return index(text) >= 0 ? std::string()
@@ -570,7 +578,7 @@ int run(Options opt, bool quick) {
         PreparedScene ps;
         std::string error;
         if (!prepare_scene(opt, kScenes[si], &ps, &error)) throw grass_sample::Failure(error);
-        Truth truth[4];
+        Truth truth[kCameraCount];
         if (!make_truths(opt, ps, t_start, truth, &error)) throw grass_sample::Failure(error);
         for (const grass_backend backend : opt.backends) {
             // The reference comes first (variants[0]): every other frame's cost is set against it.
@@ -588,14 +596,14 @@ int run(Options opt, bool quick) {
         int s = 0, c = 0;
         for (int k = 0; k < kSceneCount; ++k)
             if (r.scene == kScenes[k].name) s = k;
-        for (int k = 0; k < 4; ++k)
+        for (int k = 0; k < kCameraCount; ++k)
             if (r.camera == kScenes[0].cameras[k].name) c = k;
-        return s * 4 + c;
+        return s * kCameraCount + c;
     };
     for (Row& r : rows) r.native_reference = grass_host::Image{}; // no longer needed
     if (opt.sweep) {
         // Rows in the order backend, scene, camera, then the sweep's order.
-        auto rank = [&](const Row& r) { return (r.backend == "vk") * kSceneCount * 4 + scene_rank(r); };
+        auto rank = [&](const Row& r) { return (r.backend == "vk") * kSceneCount * kCameraCount + scene_rank(r); };
         std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) { return rank(a) < rank(b); });
         const double total_s = seconds_since(t_start);
         const std::string md = sweep_markdown(rows, opt, total_s);
@@ -656,8 +664,11 @@ Subcommand add_bench(CLI::App& measure) {
         ->default_str("both");
     bench::add_names_option(*app, "--scene", bench::scene_index, "scene", "football, park, hills",
                             "football, park or hills (repeatable; default all)", &o->scenes);
-    bench::add_names_option(*app, "--camera", bench::camera_index, "camera", "high, player, ant, grazing",
-                            "high, player, ant or grazing (repeatable; default all)", &o->cameras);
+    bench::add_names_option(*app, "--camera", bench::camera_index, "camera", bench::camera_names(bench::kCameraCount),
+                            bench::camera_names(bench::kCameraCount) + " (repeatable; default " +
+                                bench::camera_names(bench::kDefaultCameraCount) +
+                                ", the real scenes player; the game cameras third .. flight only when named)",
+                            &o->cameras);
     bench::add_names_option(*app, "--preset", bench::preset_index, "preset", "reference, high, default, low, fastest",
                             "reference, high, default, low or fastest (repeatable; default all). Without reference "
                             "the cost against it is n/a, unless the reference's frame is in the cache",

@@ -1,7 +1,8 @@
 // grass-measure bench: the speed/accuracy trade of the quality presets (docs/quality.md).
 //
 // For each scene (the football field, the park, the hills; reduced for the bench, see
-// kScenes) x camera (high, player height, ant, grazing) x backend, it renders every preset of
+// kScenes) x camera (high, player height, ant, grazing; on request the game cameras third
+// person, elevated, strategy, top-down and flight) x backend, it renders every preset of
 // grass_quality_preset(): the REFERENCE first (blades everywhere), then the others, each on a
 // target with the preset's MSAA sample count. Per frame it measures the wall time of a
 // rendered and read-back frame (median of --frames frames after one warm-up), the plan time
@@ -46,7 +47,7 @@ extern const char* const kLevelNames[GRASS_QUALITY_LEVEL_COUNT];
 struct Options {
     std::vector<grass_backend> backends = {GRASS_BACKEND_GL, GRASS_BACKEND_VULKAN};
     std::vector<int> scenes;  // indices into kScenes; empty = all
-    std::vector<int> cameras; // 0..3; empty = all
+    std::vector<int> cameras; // indices into a scene's cameras; empty = the default ones
     std::vector<int> presets; // quality levels; empty = all (ignored by --sweep)
     std::string scene_dir = GRASS_SCENE_DIR;
     std::string out = "grass-bench-out";
@@ -78,6 +79,9 @@ struct Row {
     double backend_diff_mean = -1, backend_diff_max = -1; // vk reference rows: against GL's, sRGB levels
     grass_host::Image native_reference;                   // reference rows, until the run compares the backends
     uint64_t triangles = 0, instances[GRASS_TIER_KIND_COUNT] = {0, 0, 0};
+    // The share of grass pixels (grass_bench::is_grass) in the frame and in truth A: how much
+    // of the view the camera's grass fills (the game cameras from high up see the part small).
+    double grass_share = 0, truth_grass_share = 0;
     double gpu_total() const { return gpu_ms[0] + gpu_ms[1] + gpu_ms[2]; }
 };
 

@@ -60,7 +60,8 @@ std::string csv(const std::vector<Row>& rows, const Options& o) {
          "seed_ssim_error_x1,seed_ssim_error_x2,seed_ssim_error_x4,seed_rms_x1,seed_rms_x2,seed_rms_x4,"
          "norm_ssim_error_x1,norm_ssim_error_x2,norm_ssim_error_x4,norm_rms_x1,norm_rms_x2,norm_rms_x4,"
          "band_colour_levels,colour_band,seed_band_colour_levels,band_coverage,coverage_band,seed_band_coverage,"
-         "supersample,backend_diff_mean_levels,backend_diff_max_levels,ssim_vs_other_seeds\n";
+         "supersample,backend_diff_mean_levels,backend_diff_max_levels,ssim_vs_other_seeds,grass_share,"
+         "truth_grass_share\n";
     for (const Row& r : rows) {
         s << r.scene << ',' << r.camera << ',' << r.backend << ',' << r.preset << ',' << o.width << ',' << o.height
           << ',' << r.msaa << ',' << r.blades << ',' << r.subdivisions << ',' << fmt("%.2f", r.frame_ms) << ','
@@ -74,7 +75,8 @@ std::string csv(const std::vector<Row>& rows, const Options& o) {
           << fmt("%.3f", r.seed.band_colour) << ',' << fmt("%.4f", r.error.band_coverage) << ','
           << r.error.coverage_band << ',' << fmt("%.4f", r.seed.band_coverage) << ',' << o.supersample << ','
           << fmt("%.3f", r.backend_diff_mean) << ',' << fmt("%.0f", r.backend_diff_max) << ','
-          << fmt("%.5f", r.ssim_other) << '\n';
+          << fmt("%.5f", r.ssim_other) << ',' << fmt("%.4f", r.grass_share) << ',' << fmt("%.4f", r.truth_grass_share)
+          << '\n';
     }
     return s.str();
 }
@@ -114,8 +116,9 @@ std::string markdown(const std::vector<Row>& rows, const Options& o, double tota
           << fmt("%.3f", std::fabs(r.seed.band_coverage)) << ") |\n";
     }
     s << "\n## The seed-to-seed error: truth B against truth A\n\n"
-      << "| scene | camera | SSIM x1 / x2 / x4 | RMS x1 / x2 / x4 (levels) | band colour | band coverage |\n"
-      << "|---|---|---|---|---|---|\n";
+      << "| scene | camera | SSIM x1 / x2 / x4 | RMS x1 / x2 / x4 (levels) | band colour | band coverage | grass "
+         "pixels of truth A |\n"
+      << "|---|---|---|---|---|---|---|\n";
     for (size_t i = 0; i < rows.size(); ++i) {
         const Row& r = rows[i];
         // The first row of each scene and camera (every row of one carries its seed-to-seed error).
@@ -123,7 +126,7 @@ std::string markdown(const std::vector<Row>& rows, const Options& o, double tota
         const double ssim[3] = {1 - r.seed.ssim_error[0], 1 - r.seed.ssim_error[1], 1 - r.seed.ssim_error[2]};
         s << "| " << r.scene << " | " << r.camera << " | " << scales_text(ssim, "%.3f") << " | "
           << scales_text(r.seed.rms) << " | " << fmt("%+.1f", r.seed.band_colour) << " | "
-          << fmt("%+.3f", r.seed.band_coverage) << " |\n";
+          << fmt("%+.3f", r.seed.band_coverage) << " | " << fmt("%.3f", r.truth_grass_share) << " |\n";
     }
     bool agreement = false;
     for (const Row& r : rows) agreement = agreement || r.backend_diff_mean >= 0;

@@ -25,18 +25,39 @@ namespace bench {
 // blades of 0.02..0.03 patch units, park and hills 1200 of the default width).
 namespace {
 
-const Camera kFootballCameras[4] = {{"high", {47.5, 60, -40}, {47.5, 0, 80}},
-                                    {"player", {47.5, 1.7, 6}, {47.5, 0, 60}},
-                                    {"ant", {47.3, 0.05, 6}, {47.3, 0.04, 20}},
-                                    {"grazing", {47.3, 3, -2}, {47.3, 2.9, 400}}};
-const Camera kParkCameras[4] = {{"high", {20, 30, -15}, {20, 0, 22}},
-                                {"player", {20, 1.7, 2}, {20, 0, 30}},
-                                {"ant", {30, 0.05, 5}, {30, 0.04, 19}},
-                                {"grazing", {20, 3, -2}, {20, 2.9, 400}}};
-const Camera kHillsCameras[4] = {{"high", {100, 40, -30}, {100, 0, 60}},
-                                 {"player", {100, 1.7, 5}, {100, 4, 60}},
-                                 {"ant", {100, 0.05, 5}, {100, 0.04, 19}},
-                                 {"grazing", {100, 3, -2}, {100, 2.9, 400}}};
+// The game cameras (issue 32) after the four: third person 4 m up looking 15 degrees down
+// from the near edge of the part; elevated (20 m, 30 degrees down), strategy (60 m, 55) and
+// top-down (100 m, 85) aimed at the part's centre; a flight pass 150 m up looking 20 degrees
+// down, placed so that the part's centre lies 40 degrees down, near the bottom of the view
+// (the fields are small from 150 m: a few percent of the view). Each target is where the view's
+// centre meets the flat ground: eye height / tan(angle) ahead of the eye.
+const Camera kFootballCameras[kCameraCount] = {{"high", {47.5, 60, -40}, {47.5, 0, 80}},
+                                               {"player", {47.5, 1.7, 6}, {47.5, 0, 60}},
+                                               {"ant", {47.3, 0.05, 6}, {47.3, 0.04, 20}},
+                                               {"grazing", {47.3, 3, -2}, {47.3, 2.9, 400}},
+                                               {"third", {47.5, 4, 2}, {47.5, 0, 16.928}},
+                                               {"elevated", {47.5, 20, -4.641}, {47.5, 0, 30}},
+                                               {"strategy", {47.5, 60, -12.012}, {47.5, 0, 30}},
+                                               {"topdown", {47.5, 100, 21.251}, {47.5, 0, 30}},
+                                               {"flight", {47.5, 150, -148.763}, {47.5, 0, 263.359}}};
+const Camera kParkCameras[kCameraCount] = {{"high", {20, 30, -15}, {20, 0, 22}},
+                                           {"player", {20, 1.7, 2}, {20, 0, 30}},
+                                           {"ant", {30, 0.05, 5}, {30, 0.04, 19}},
+                                           {"grazing", {20, 3, -2}, {20, 2.9, 400}},
+                                           {"third", {20, 4, 2}, {20, 0, 16.928}},
+                                           {"elevated", {20, 20, -14.641}, {20, 0, 20}},
+                                           {"strategy", {20, 60, -22.012}, {20, 0, 20}},
+                                           {"topdown", {20, 100, 11.251}, {20, 0, 20}},
+                                           {"flight", {20, 150, -158.763}, {20, 0, 253.359}}};
+const Camera kHillsCameras[kCameraCount] = {{"high", {100, 40, -30}, {100, 0, 60}},
+                                            {"player", {100, 1.7, 5}, {100, 4, 60}},
+                                            {"ant", {100, 0.05, 5}, {100, 0.04, 19}},
+                                            {"grazing", {100, 3, -2}, {100, 2.9, 400}},
+                                            {"third", {100, 4, 2}, {100, 0, 16.928}},
+                                            {"elevated", {100, 20, 15.359}, {100, 0, 50}},
+                                            {"strategy", {100, 60, 7.988}, {100, 0, 50}},
+                                            {"topdown", {100, 100, 41.251}, {100, 0, 50}},
+                                            {"flight", {100, 150, -128.763}, {100, 0, 283.359}}};
 } // namespace
 
 const BenchScene kScenes[] = {
@@ -164,7 +185,7 @@ bool prepare_scene(const Options& opt, const BenchScene& bs, PreparedScene* ps, 
         return false;
     }
     const double cs = scene.field.cell_size;
-    for (int c = 0; c < 4; ++c) {
+    for (int c = 0; c < kCameraCount; ++c) {
         const Camera& cam = bs.cameras[c];
         const double lift = terrain_height(scene, full_x, full_z, cam.eye[0], cam.eye[2]);
         for (int k = 0; k < 3; ++k) {
@@ -190,7 +211,10 @@ bool prepare_scene(const Options& opt, const BenchScene& bs, PreparedScene* ps, 
         return false;
     }
     ps->cameras = opt.cameras;
-    if (ps->cameras.empty()) ps->cameras = bs.real ? std::vector<int>{1} : std::vector<int>{0, 1, 2, 3};
+    if (ps->cameras.empty()) {
+        if (bs.real) ps->cameras = {1}; // the player
+        for (int c = 0; c < kDefaultCameraCount && !bs.real; ++c) ps->cameras.push_back(c);
+    }
     // The scene file's bytes, its maps' texels and the bench's changes define its images.
     std::ostringstream id;
     id << "scene " << bs.name << " file " << file_hash(opt.scene_dir + "/" + bs.file) << " maps";

@@ -1,5 +1,6 @@
 // grass-measure bench's scenes: the scene files it measures, each on a part of its field with
-// its four cameras, the lod setup of a preset for a scene, and a scene prepared for a run.
+// its cameras (the bench's four and five that games use), the lod setup of a preset for a
+// scene, and a scene prepared for a run.
 #pragma once
 
 #include "bench.hpp"
@@ -19,6 +20,13 @@ struct Camera {
     double target[3];
 };
 
+// Every scene has these cameras, named alike in this order (bench_scenes.cpp has their
+// eyes and targets): the first four (high, player, ant, grazing) are measured by default,
+// the game cameras after them (third, elevated, strategy, topdown, flight) on request
+// (--camera).
+constexpr int kCameraCount = 9;
+constexpr int kDefaultCameraCount = 4;
+
 // A scene file on a part of its field (the maps are mapped so that the part keeps its place
 // in them). The reduced variants (football, park, hills) also have fewer and wider blades per
 // patch, so that their reference (blades everywhere) renders in seconds on llvmpipe; the
@@ -33,7 +41,7 @@ struct BenchScene {
     uint32_t cells_x, cells_z;
     uint32_t blade_count;       // 0: the scene file's
     float width_min, width_max; // patch units; 0: the scene file's
-    const Camera* cameras;      // 4: high, player, ant, grazing
+    const Camera* cameras;      // kCameraCount: high, player, ant, grazing, then the game cameras
     // The scene file's patch: by default the player camera only, the reference timed on one frame.
     bool real;
 };
@@ -52,7 +60,7 @@ bool lod_setup(grass_context* ctx, const grass_quality_desc& q, const grass_samp
 struct PreparedScene {
     const BenchScene* bench = nullptr;
     grass_sample::Scene scene;
-    double cams[4][2][3] = {};
+    double cams[kCameraCount][2][3] = {};
     std::vector<int> cameras; // the cameras to measure
     std::string identity;     // what defines its images but the camera (reference_key)
 };
