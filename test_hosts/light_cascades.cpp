@@ -1,5 +1,7 @@
 #include "light_cascades.hpp"
 
+#include "matrix4.hpp"
+
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -17,17 +19,6 @@ V3 operator*(V3 a, double s) { return {a.x * s, a.y * s, a.z * s}; }
 double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 V3 cross(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 V3 unit(V3 a) { return a * (1.0 / std::sqrt(dot(a, a))); }
-
-// Column-major 4x4 product a * b, in double.
-void multiply(const double a[16], const double b[16], double out[16]) {
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) {
-            double s = 0.0;
-            for (int k = 0; k < 4; ++k) s += a[4 * k + r] * b[4 * c + k];
-            out[4 * c + r] = s;
-        }
-    }
-}
 
 std::string text(double v) { return std::to_string(v); }
 
@@ -118,12 +109,12 @@ LightCascades fit_light_cascades(const grass_view_desc& main, const HostShadows&
         bias[14] = vulkan ? 0.0 : 0.5;
         bias[15] = 1.0;
         double pv[16], world_to_shadow[16];
-        multiply(p, view_full, pv);
-        multiply(bias, pv, world_to_shadow);
+        multiply4(p, view_full, pv);
+        multiply4(bias, pv, world_to_shadow);
         // Camera-relative: the translation column takes the camera's position in double.
         double camera_translate[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, camera.x, camera.y, camera.z, 1};
         double relative[16];
-        multiply(world_to_shadow, camera_translate, relative);
+        multiply4(world_to_shadow, camera_translate, relative);
         for (int k = 0; k < 16; ++k) {
             out.world_to_shadow[i][k] = float(world_to_shadow[k]);
             u.relative_to_shadow[i][k] = float(relative[k]);

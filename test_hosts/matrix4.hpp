@@ -6,6 +6,17 @@
 
 namespace grass_host {
 
+// The product a * b of column-major 4x4 matrices into `out` (not a or b).
+inline void multiply4(const double a[16], const double b[16], double out[16]) {
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) {
+            double s = 0.0;
+            for (int k = 0; k < 4; ++k) s += a[4 * k + r] * b[4 * c + k];
+            out[4 * c + r] = s;
+        }
+    }
+}
+
 // The inverse of `m` (Gauss-Jordan with partial pivoting) into `out`; false when `m` is
 // singular (out then undefined).
 inline bool invert4(const double m[16], double out[16]) {

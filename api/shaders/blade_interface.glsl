@@ -61,6 +61,8 @@ struct FrameData {
                            // 0 for GL's default -1..1 (as the backend reports it); yzw: an orthographic
                            // view's axis (world, unit, the way it looks), zero for perspective (view_axis())
     vec4 lod_origin;       // xyz: the lod origin relative to the plan's origin (m) (lod_distance())
+    vec4 projection_centre; // xyz: where a perspective view's rays start relative to its camera (m): zero
+                            // but for an off-centre or warped projection (towards_viewer())
     // Responsive grass (api/src/foundation/frame_plan.hpp FrameUniforms): read only by variants with
     // GRASS_WIND / GRASS_INTERACTION.
     vec4 wind;             // xyz: mean wind velocity (world m/s), w: gust strength
@@ -138,8 +140,9 @@ FieldData g_field;
 #define GRASS_INSTANCE_ORIGIN(o) o
 #endif
 
-// Orthographic views (a shadow cascade, a top-down map): the view axis, the world direction
-// the view looks along, which every ray of the view is parallel to; zero for a perspective
+// Orthographic views (a shadow cascade, a top-down map; a warp of one whose rays stay parallel,
+// as a light-space perspective shadow map's): the view axis, the world direction the view
+// looks along, which every ray of the view is parallel to; zero for a perspective
 // view (and the eyes of a stereo frame). The same for every invocation of a draw: code that
 // branches on it runs one side, and a perspective view computes what it did before.
 vec3 view_axis() {
@@ -148,11 +151,18 @@ vec3 view_axis() {
 bool orthographic_view() {
     return frame.target.y != 0.0 || frame.target.z != 0.0 || frame.target.w != 0.0;
 }
-// The direction from a point (relative to the view's eye, as every position in the shaders)
-// towards the viewer, not unit: the eye's in a perspective view, against the axis in an
-// orthographic one (whose eye point is only where its box was put).
+// A perspective view's centre of projection relative to the view's eye (every position in
+// the shaders is): the point its rays start from, the eye itself unless the host's projection
+// is off-centre or warped (a spot light's frustum placed off camera_position, a light-space
+// perspective shadow map's); the planner takes it from the matrix (ViewCulling).
+vec3 projection_centre() {
+    return frame.projection_centre.xyz;
+}
+// The direction from a point towards the viewer, not unit: the centre of projection's in a
+// perspective view, against the axis in an orthographic one (whose eye point is only where
+// its box was put).
 vec3 towards_viewer(vec3 p) {
-    return orthographic_view() ? -view_axis() : -p;
+    return orthographic_view() ? -view_axis() : projection_centre() - p;
 }
 // The distance the tiers and their transitions are chosen by, of a point relative to the
 // view's eye: from the lod origin (the camera unless grass_lod_origin_desc moves it; a

@@ -320,7 +320,9 @@ void main() {
         box_min.y = v_terrain.x;
         box_max.y = v_terrain.y + size.y;
     }
-    // The ray through the fragment, in the cuboid's frame. Perspective: from the camera.
+    // The ray through the fragment, in the cuboid's frame. Perspective: from the centre of
+    // projection, the camera unless the host's projection is off-centre or warped (the same
+    // for every invocation of a draw: an ordinary view skips the inverse).
     // Orthographic (a shadow cascade, a top-down map): every ray is parallel to the view axis;
     // this one is the line through the fragment along it, started outside the cuboid (a cell
     // before the sphere around it), and t counts from there. Only the fragment's position
@@ -330,6 +332,7 @@ void main() {
     // the hit from the lod origin, the mip levels take the pixel's footprint (below), the
     // depth the hit's position.
     vec3 eye = v_camera_local;
+    if (projection_centre() != vec3(0.0)) eye += inverse(mat3(field.patch_to_world)) * projection_centre();
     vec3 ray;
     if (orthographic_view()) {
         vec3 axis = world_to_patch_direction(view_axis());

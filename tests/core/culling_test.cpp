@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <ostream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -164,43 +165,100 @@ void random_look(std::mt19937_64& rng, double max_height, double pitch_min, doub
     target[2] = eye[2] + std::cos(pitch) * std::sin(yaw);
 }
 
+// A random perspective view over the field, far plane 50 m to 50 + `far_span` m.
+grass_view_desc random_perspective(std::mt19937_64& rng, double far_span, std::ostream& what) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double eye[3], target[3];
+    random_look(rng, 80.0, -85.0, 20.0, eye, target);
+    const float fov = static_cast<float>(20.0 + 80.0 * u(rng));
+    const float aspect = static_cast<float>(0.5 + 2.0 * u(rng));
+    const float near_m = static_cast<float>(0.05 + 0.95 * u(rng));
+    const float far_m = static_cast<float>(50.0 + far_span * u(rng));
+    what << "target (" << target[0] << ", " << target[1] << ", " << target[2] << ") fov " << fov << " aspect " << aspect
+         << " near " << near_m << " far " << far_m;
+    return test_view(eye, target, fov, aspect, near_m, far_m);
+}
+
+// A random orthographic box: 5-60 m half-height, seen from up to 100 m, looking 20-90
+// degrees down, its near plane up to 100 m behind the eye.
+grass_view_desc random_box(std::mt19937_64& rng, std::ostream& what) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double eye[3], target[3];
+    random_look(rng, 100.0, -90.0, -20.0, eye, target);
+    const float half_height = static_cast<float>(5.0 + 55.0 * u(rng));
+    const float aspect = static_cast<float>(0.5 + 2.0 * u(rng));
+    const float near_m = static_cast<float>(-100.0 + 101.0 * u(rng));
+    const float far_m = static_cast<float>(50.0 + 450.0 * u(rng));
+    what << "target (" << target[0] << ", " << target[1] << ", " << target[2] << ") ortho half-height " << half_height
+         << " aspect " << aspect << " near " << near_m << " far " << far_m;
+    return test_ortho_view(eye, target, half_height, aspect, near_m, far_m);
+}
+
 TEST_F(CoreTest, CullingNeverDropsACellThatMeetsTheFrustum) {
     check_culling(
         ctx, make_patch(), [this] { return last_message(); }, 300, 0.5,
         [](std::mt19937_64& rng) {
-            std::uniform_real_distribution<double> u(0.0, 1.0);
-            double eye[3], target[3];
-            random_look(rng, 80.0, -85.0, 20.0, eye, target);
-            const float fov = static_cast<float>(20.0 + 80.0 * u(rng));
-            const float aspect = static_cast<float>(0.5 + 2.0 * u(rng));
-            const float near_m = static_cast<float>(0.05 + 0.95 * u(rng));
-            const float far_m = static_cast<float>(50.0 + 1950.0 * u(rng));
             std::ostringstream what;
-            what << "target (" << target[0] << ", " << target[1] << ", " << target[2] << ") fov " << fov << " aspect "
-                 << aspect << " near " << near_m << " far " << far_m;
-            return RandomCamera{test_view(eye, target, fov, aspect, near_m, far_m), what.str()};
+            const grass_view_desc v = random_perspective(rng, 1950.0, what);
+            return RandomCamera{v, what.str()};
         });
 }
 
-// Orthographic views (issue 33: a shadow cascade's box, a top-down map, a strategy camera):
-// 5-60 m half-height boxes seen from up to 100 m, looking 20-90 degrees down, whose near
-// plane may lie behind the eye. A cone with its apex at the eye cut whole rectangles off
-// such a box's sides (seen failing: cells dropped beside the eye).
+// Orthographic views (issue 33: a shadow cascade's box, a top-down map, a strategy camera),
+// whose near plane may lie behind the eye. A cone with its apex at the eye cut whole
+// rectangles off such a box's sides (seen failing: cells dropped beside the eye).
 TEST_F(CoreTest, CullingNeverDropsACellThatMeetsAnOrthographicBox) {
     check_culling(
         ctx, make_patch(), [this] { return last_message(); }, 200, 0.4,
         [](std::mt19937_64& rng) {
-            std::uniform_real_distribution<double> u(0.0, 1.0);
-            double eye[3], target[3];
-            random_look(rng, 100.0, -90.0, -20.0, eye, target);
-            const float half_height = static_cast<float>(5.0 + 55.0 * u(rng));
-            const float aspect = static_cast<float>(0.5 + 2.0 * u(rng));
-            const float near_m = static_cast<float>(-100.0 + 101.0 * u(rng));
-            const float far_m = static_cast<float>(50.0 + 450.0 * u(rng));
             std::ostringstream what;
-            what << "target (" << target[0] << ", " << target[1] << ", " << target[2] << ") ortho half-height "
-                 << half_height << " aspect " << aspect << " near " << near_m << " far " << far_m;
-            return RandomCamera{test_ortho_view(eye, target, half_height, aspect, near_m, far_m), what.str()};
+            const grass_view_desc v = random_box(rng, what);
+            return RandomCamera{v, what.str()};
+        });
+}
+
+// Views under any projection matrix (issue 33, items 1 and 3): the view's camera_position
+// moved up to 40 m off the projection's centre, which the projection's translation puts back
+// (a spot light's frustum placed off the camera, Bx = P T(R o) for the offset o), and
+// orthographic boxes warped by a light-space perspective (y' = y, w' = c y + e z + w: rays
+// parallel to the light for e = 0, meeting at a finite point otherwise). A cone with its apex
+// at camera_position dropped whole views (seen failing: every cell of an off-centre view).
+void move_centre(grass_view_desc* v, std::mt19937_64& rng, std::ostream& what) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const double offset[3] = {40.0 * u(rng), 20.0 * u(rng), 40.0 * u(rng)};
+    double shift[3] = {0, 0, 0}, p[16], moved[16];
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) shift[r] += v->view[4 * c + r] * offset[c];
+    }
+    for (int k = 0; k < 16; ++k) p[k] = v->projection[k];
+    for (int k = 0; k < 12; ++k) moved[k] = p[k];
+    for (int r = 0; r < 4; ++r) moved[12 + r] = p[r] * shift[0] + p[4 + r] * shift[1] + p[8 + r] * shift[2] + p[12 + r];
+    for (int k = 0; k < 16; ++k) v->projection[k] = static_cast<float>(moved[k]);
+    for (int c = 0; c < 3; ++c) v->camera_position[c] += offset[c];
+    what << " centre moved by (" << offset[0] << ", " << offset[1] << ", " << offset[2] << ")";
+}
+
+TEST_F(CoreTest, CullingNeverDropsACellUnderOffCentreAndWarpedProjections) {
+    check_culling(
+        ctx, make_patch(), [this] { return last_message(); }, 200, 0.4,
+        [](std::mt19937_64& rng) {
+            std::uniform_real_distribution<double> u(0.0, 1.0);
+            std::ostringstream what;
+            grass_view_desc v;
+            if (u(rng) < 0.5) {
+                v = random_perspective(rng, 450.0, what);
+            } else {
+                v = random_box(rng, what);
+                // The warp: clip w' = c y + e z + w, w' > 0 over the box (|c| + |e| < 1).
+                const double c = 0.6 * (2.0 * u(rng) - 1.0), e = u(rng) < 0.5 ? 0.0 : 0.3 * (2.0 * u(rng) - 1.0);
+                for (int col = 0; col < 4; ++col) {
+                    float* m = v.projection + 4 * col;
+                    m[3] = static_cast<float>(c * m[1] + e * m[2] + m[3]);
+                }
+                what << " warped w' = " << c << " y + " << e << " z + w";
+            }
+            move_centre(&v, rng, what);
+            return RandomCamera{v, what.str()};
         });
 }
 

@@ -200,4 +200,49 @@ TEST_F(StereoPlanTest, TheFrameBlockCarriesTheLodOriginAndAnOrthographicViewsAxi
     }
 }
 
+// Where the rays of a view under any projection matrix start (frame_plan.hpp FrameUniforms
+// projection_centre, target.yzw): the camera for an ordinary perspective; the spot of a
+// perspective placed off camera_position by the projection's translation; at infinity along
+// the light for a light-space perspective warp of an orthographic box.
+TEST_F(StereoPlanTest, TheFrameBlockCarriesTheCentreOfProjection) {
+    make_field(band(30.0f));
+    const double eye[3] = {8.0, 30.0, -2.0}, look[3] = {8.0, 0.0, 8.0};
+    const auto frame_block = [&](const grass_view_desc& view) {
+        EXPECT_EQ(grass_begin_frame(ctx, &view), GRASS_SUCCESS) << last_message();
+        const grass::FrameUniforms f = ctx->plan.frame;
+        EXPECT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
+        return f;
+    };
+    grass_view_desc plain = test_view(eye, look);
+    grass::FrameUniforms f = frame_block(plain);
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(f.projection_centre[c], 0.0f) << c;
+    // The same frustum, camera_position 3 m to the side and 2 m lower: the projection moves
+    // it back (P T(R o), o the offset), its rays start at the eye, (-3, 2, 0) from the camera.
+    const double offset[3] = {3.0, -2.0, 0.0};
+    grass_view_desc moved = plain;
+    double shift[3] = {0, 0, 0};
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) shift[r] += plain.view[4 * c + r] * offset[c];
+    }
+    for (int r = 0; r < 4; ++r) {
+        moved.projection[12 + r] = float(plain.projection[r] * shift[0] + plain.projection[4 + r] * shift[1] +
+                                         plain.projection[8 + r] * shift[2] + plain.projection[12 + r]);
+    }
+    for (int c = 0; c < 3; ++c) moved.camera_position[c] += offset[c];
+    f = frame_block(moved);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(f.projection_centre[c], -offset[c], 1e-4) << c;
+        EXPECT_EQ(f.target[1 + c], 0.0f) << c;
+    }
+    // An orthographic box warped in its image's y (w' = 0.5 y + w): parallel rays, the axis.
+    grass_view_desc warped = test_ortho_view(eye, look, 10.0f, 1.0f, -5.0f, 60.0f);
+    for (int col = 0; col < 4; ++col) warped.projection[4 * col + 3] += 0.5f * warped.projection[4 * col + 1];
+    f = frame_block(warped);
+    const double d[3] = {0.0, -30.0, 10.0}, len = std::sqrt(1000.0);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(f.target[1 + c], d[c] / len, 1e-6) << c;
+        EXPECT_EQ(f.projection_centre[c], 0.0f) << c;
+    }
+}
+
 } // namespace

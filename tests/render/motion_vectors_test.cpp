@@ -38,17 +38,6 @@ namespace {
 
 constexpr int kSize = 128;
 
-// c = a * b, column-major 4x4, double.
-void mul4(const double a[16], const double b[16], double c[16]) {
-    for (int col = 0; col < 4; ++col) {
-        for (int row = 0; row < 4; ++row) {
-            double s = 0.0;
-            for (int k = 0; k < 4; ++k) s += a[4 * k + row] * b[4 * col + k];
-            c[4 * col + row] = s;
-        }
-    }
-}
-
 using grass_host::invert4; // matrix4.hpp
 
 // projection x the view's rotation (camera-relative world -> clip), in double.
@@ -59,7 +48,7 @@ void camera_relative_vp(const float view[16], const float projection[16], double
     }
     r[15] = 1.0;
     for (int k = 0; k < 16; ++k) p[k] = projection[k];
-    mul4(p, r, out);
+    grass_host::multiply4(p, r, out);
 }
 
 // Jitters a projection by `j` in NDC: clip.xy += j clip.w.

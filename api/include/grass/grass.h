@@ -884,7 +884,9 @@ typedef struct grass_view_desc {
      * Ogre's), in column-major order. GL: clip z in -1..1, or in 0..1 when the host sets
      * glClipControl(..., GL_ZERO_TO_ONE) (read at each grass_gl_render), y up. Vulkan: clip
      * z in 0..1 and y down (put the flip in the matrix: a negative viewport height is
-     * refused). grass culls with it and takes every fragment's depth from it. */
+     * refused). grass culls with it and takes every fragment's depth from it. Any invertible
+     * matrix: perspective, orthographic, off-centre (its centre of projection may lie off
+     * camera_position), infinite far, warped (a light-space perspective shadow map). */
     float projection[16];
     /* x, y, width, height in pixels of the host's target: the viewport the host draws its
      * scene with; width and height > 0. The origin follows the API, as the host's own

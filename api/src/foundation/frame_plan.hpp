@@ -27,6 +27,11 @@ struct FrameUniforms {
     float lod_origin[4];       // xyz = the lod origin relative to the plan's origin (m; zero unless
                                // grass_lod_origin_desc moves it off the camera), w = 0: the tiers'
                                // distances are measured from it (lod_distance(), blade_interface.glsl)
+    // xyz = the centre of projection relative to the plan's origin (m) of a view whose rays start
+    // elsewhere than at the camera (an off-centre or warped perspective: ViewCulling::apex()), zero
+    // otherwise (the camera; parallel rays, whose axis is target.yzw; stereo); w = 0. The volume
+    // tier's rays start there (projection_centre(), towards_viewer(), blade_interface.glsl).
+    float projection_centre[4];
     // Responsive grass (docs/responsive.md, api/shaders/wind.glsl, interaction.glsl). Read only by
     // shader variants with kFeatureWind / kFeatureInteraction; zero otherwise.
     float wind[4];          // xyz: mean wind velocity, world m/s (zero: none); w: gust strength (fraction of speed)
@@ -51,7 +56,7 @@ struct FrameUniforms {
     // to read the map of view 0's uniforms above. Zero in view 0. w: unused.
     float map_offset[4];
 };
-static_assert(sizeof(FrameUniforms) == 1344, "std140 Frame block");
+static_assert(sizeof(FrameUniforms) == 1360, "std140 Frame block");
 
 // The host's render target as the shaders must know it, which only a backend knows
 // (Backend::render_target): its samples per pixel (sample_count() of blade_interface.glsl)

@@ -678,12 +678,17 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
 
     const ViewCulling culling(view_projection, in.depth_mode);
     frusta.culling[0] = &culling;
-    // An orthographic view's axis (a shadow cascade's, a top-down map's): its rays are parallel
-    // to it, and it is the direction towards the viewer in the lighting. Zero: perspective
-    // (a stereo frame's eyes are).
+    // An orthographic view's axis (a shadow cascade's, a top-down map's, a warp of one with
+    // parallel rays): its rays are parallel to it, and it is the direction towards the viewer
+    // in the lighting. Zero: perspective (a stereo frame's eyes are). A perspective view's rays
+    // start at its centre of projection: the camera (zero), or where an off-centre or warped
+    // projection puts it (zero in stereo: each eye's own).
     for (int c = 0; c < 3; ++c) {
         plan.frame.target[1 + c] = culling.orthographic() && !stereo ? static_cast<float>(culling.axis()[c]) : 0.0f;
+        plan.frame.projection_centre[c] =
+            culling.orthographic() || stereo ? 0.0f : static_cast<float>(culling.apex()[c]);
     }
+    plan.frame.projection_centre[3] = 0.0f;
     const ViewCulling second_culling(stereo ? second_view_projection : view_projection, in.depth_mode);
     frusta.culling[1] = &second_culling;
     for (uint32_t slot = 0; slot < in.fields.capacity(); ++slot) {

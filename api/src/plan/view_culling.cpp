@@ -58,6 +58,31 @@ bool unproject(const double inv[16], double x, double y, double z, double out[3]
 
 double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
+// The centre of projection of `m`: the homogeneous point (camera-relative) that every ray
+// passes through, the null vector of its x, y and w rows (each ray is where clip x and y are
+// fixed multiples of clip w). w = 0: at infinity, the rays parallel to xyz.
+void centre_of_projection(const double m[16], double out[4]) {
+    const double rows[3][4] = {{m[0], m[4], m[8], m[12]}, {m[1], m[5], m[9], m[13]}, {m[3], m[7], m[11], m[15]}};
+    for (int i = 0; i < 4; ++i) {
+        int col[3], n = 0;
+        for (int k = 0; k < 4; ++k) {
+            if (k != i) col[n++] = k;
+        }
+        const double det = rows[0][col[0]] * (rows[1][col[1]] * rows[2][col[2]] - rows[1][col[2]] * rows[2][col[1]]) -
+                           rows[0][col[1]] * (rows[1][col[0]] * rows[2][col[2]] - rows[1][col[2]] * rows[2][col[0]]) +
+                           rows[0][col[2]] * (rows[1][col[0]] * rows[2][col[1]] - rows[1][col[1]] * rows[2][col[0]]);
+        out[i] = (i % 2 ? -1.0 : 1.0) * det;
+    }
+}
+
+// NDC z of a camera-relative point; false at infinity.
+bool ndc_depth(const double m[16], const double p[3], double* z) {
+    const double w = m[3] * p[0] + m[7] * p[1] + m[11] * p[2] + m[15];
+    if (!(std::fabs(w) > 1e-300)) return false;
+    *z = (m[2] * p[0] + m[6] * p[1] + m[10] * p[2] + m[14]) / w;
+    return std::isfinite(*z);
+}
+
 } // namespace
 
 ViewCulling::ViewCulling(const double m[16], grass_depth_mode depth_mode) {
@@ -78,17 +103,63 @@ ViewCulling::ViewCulling(const double m[16], grass_depth_mode depth_mode) {
         orthographic_box(inv, depth_mode);
         return;
     }
+    // Any other projection: its rays meet at its centre of projection, which is the camera
+    // for a perspective built at the view's origin (exactly: its x, y and w rows have no
+    // translation), and elsewhere for an off-centre or warped one (a spot light's frustum
+    // placed off camera_position, a light-space perspective shadow map's warp, whose rays stay
+    // parallel to the light: its centre lies at infinity).
+    double c[4];
+    centre_of_projection(m, c);
+    const double c_len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    if (c_len > 0.0) {
+        // Parallel rays when the centre lies so far that the rays across the view diverge by
+        // less than 1e-5 radians (a warp in float rarely gives w = 0 exactly).
+        double a[3], b[3];
+        const bool spans = unproject(inv, -1.0, -1.0, 0.5, a) && unproject(inv, 1.0, 1.0, 0.5, b);
+        const double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+        const double extent = spans ? std::sqrt(dot(d, d)) : 0.0;
+        if (std::fabs(c[3]) * extent <= 1e-5 * c_len) {
+            parallel_rays(m, inv, c, depth_mode);
+            return;
+        }
+        for (int k = 0; k < 3; ++k) apex_[k] = c[k] / c[3];
+    }
+    perspective(inv, depth_mode);
+}
+
+void ViewCulling::parallel_rays(const double m[16], const double inv[16], const double c[4],
+                                grass_depth_mode depth_mode) {
+    // A box's sphere where the frustum is bounded; the axis is the rays' direction, the way
+    // the depth grows (falls for reversed depth) along them.
+    orthographic_box(inv, depth_mode);
+    double p[3], q[3], z0 = 0.0, z1 = 0.0;
+    if (!unproject(inv, 0.0, 0.0, 0.5, p)) return;
+    const double len = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    for (int k = 0; k < 3; ++k) q[k] = p[k] + c[k] / len;
+    if (!ndc_depth(m, p, &z0) || !ndc_depth(m, q, &z1) || z0 == z1) return;
+    const double s = ((z1 > z0) == (depth_mode != GRASS_DEPTH_GREATER)) ? 1.0 : -1.0;
+    for (int k = 0; k < 3; ++k) axis_[k] = s * c[k] / len;
+    orthographic_ = true;
+}
+
+void ViewCulling::perspective(const double inv[16], grass_depth_mode depth_mode) {
+    // Points relative to the apex (the centre of projection).
+    const auto unproject_from_apex = [&](double x, double y, double z, double out[3]) {
+        if (!unproject(inv, x, y, z, out)) return false;
+        for (int k = 0; k < 3; ++k) out[k] -= apex_[k];
+        return true;
+    };
     // Directions through the centre and the corners, from points inside the depth range of
     // both conventions; the far plane at depth 1 (or 0 for reversed depth).
     double centre[3], corner[4][3];
-    if (!unproject(inv, 0.0, 0.0, 0.5, centre)) return;
+    if (!unproject_from_apex(0.0, 0.0, 0.5, centre)) return;
     const double len = std::sqrt(dot(centre, centre));
     for (int c = 0; c < 3; ++c) axis_[c] = centre[c] / len;
     double cos_min = 1.0;
     bool corners_ok = true;
     for (int k = 0; k < 4; ++k) {
         const double x = (k & 1) ? 1.0 : -1.0, y = (k & 2) ? 1.0 : -1.0;
-        if (!unproject(inv, x, y, 0.5, corner[k])) {
+        if (!unproject_from_apex(x, y, 0.5, corner[k])) {
             corners_ok = false;
             break;
         }
@@ -112,7 +183,7 @@ ViewCulling::ViewCulling(const double m[16], grass_depth_mode depth_mode) {
         far_distance = 0.0;
         for (int k = 0; k < 4; ++k) {
             const double x = (k & 1) ? 1.0 : -1.0, y = (k & 2) ? 1.0 : -1.0;
-            if (!unproject(inv, x, y, far_depth, far_corner[k]) || dot(far_corner[k], axis_) <= 0.0) return false;
+            if (!unproject_from_apex(x, y, far_depth, far_corner[k]) || dot(far_corner[k], axis_) <= 0.0) return false;
             far_distance = std::max(far_distance, dot(far_corner[k], axis_));
         }
         return true;
@@ -122,14 +193,34 @@ ViewCulling::ViewCulling(const double m[16], grass_depth_mode depth_mode) {
     } else if (!far_corners(1.0)) {
         return; // infinite far plane
     }
-    // Centre half-way to the far plane (the near plane is ~0 away); radius through the far
-    // corners, which also covers the camera.
-    for (int c = 0; c < 3; ++c) sphere_center_[c] = axis_[c] * 0.5 * far_distance;
-    double r2 = dot(sphere_center_, sphere_center_);
+    // Off the camera (an off-centre or warped projection) the near plane need not lie between
+    // the apex and the far plane: the sphere below holds the frustum only where each near
+    // corner lies on its ray between them (near at NDC z -1 or 0, 1 for reversed depth).
+    if (apex_[0] != 0.0 || apex_[1] != 0.0 || apex_[2] != 0.0) {
+        const auto near_inside = [&](double near_depth) {
+            for (int k = 0; k < 4; ++k) {
+                const double x = (k & 1) ? 1.0 : -1.0, y = (k & 2) ? 1.0 : -1.0;
+                double q[3];
+                if (!unproject_from_apex(x, y, near_depth, q)) return false;
+                const double along = dot(q, axis_);
+                if (!(along > 0.0 && along <= dot(far_corner[k], axis_))) return false;
+            }
+            return true;
+        };
+        const bool inside =
+            depth_mode == GRASS_DEPTH_GREATER ? near_inside(1.0) : near_inside(-1.0) || near_inside(0.0);
+        if (!inside) return;
+    }
+    // Centre half-way to the far plane (the near plane lies between the apex and it); radius
+    // through the far corners, which also covers the apex.
+    double centre_from_apex[3];
+    for (int c = 0; c < 3; ++c) centre_from_apex[c] = axis_[c] * 0.5 * far_distance;
+    double r2 = dot(centre_from_apex, centre_from_apex);
     for (const auto& q : far_corner) {
-        const double d[3] = {q[0] - sphere_center_[0], q[1] - sphere_center_[1], q[2] - sphere_center_[2]};
+        const double d[3] = {q[0] - centre_from_apex[0], q[1] - centre_from_apex[1], q[2] - centre_from_apex[2]};
         r2 = std::max(r2, dot(d, d));
     }
+    for (int c = 0; c < 3; ++c) sphere_center_[c] = apex_[c] + centre_from_apex[c];
     sphere_radius_ = std::sqrt(r2) * (1.0 + 1e-9);
     has_sphere_ = std::isfinite(sphere_radius_);
 }
@@ -138,7 +229,15 @@ void ViewCulling::orthographic_box(const double inv[16], grass_depth_mode depth_
     // Corners at NDC z -1 and 1: the whole box in GL's depth range, and more in 0..1 (z -1
     // lies behind the near plane, or beyond the far plane for reversed depth): conservative
     // in every convention. The axis runs from the near face to the far face.
+    // A warped projection's cube may reach through infinity (its corners' w of both signs):
+    // no sphere then.
     double corner[8][3], mean[3] = {0, 0, 0}, near_centre[3] = {0, 0, 0}, far_centre[3] = {0, 0, 0};
+    int positive_w = 0;
+    for (int k = 0; k < 8; ++k) {
+        const double x = (k & 1) ? 1.0 : -1.0, y = (k & 2) ? 1.0 : -1.0, z = (k & 4) ? 1.0 : -1.0;
+        positive_w += inv[3] * x + inv[7] * y + inv[11] * z + inv[15] > 0.0;
+    }
+    if (positive_w != 0 && positive_w != 8) return;
     for (int k = 0; k < 8; ++k) {
         const double x = (k & 1) ? 1.0 : -1.0, y = (k & 2) ? 1.0 : -1.0, z = (k & 4) ? 1.0 : -1.0;
         if (!unproject(inv, x, y, z, corner[k])) return;
@@ -164,13 +263,15 @@ void ViewCulling::orthographic_box(const double inv[16], grass_depth_mode depth_
     has_sphere_ = std::isfinite(sphere_radius_);
 }
 
-bool ViewCulling::sphere_may_be_visible(const double s[3], double r) const {
+bool ViewCulling::sphere_may_be_visible(const double centre[3], double r) const {
     if (has_sphere_) {
-        const double d[3] = {s[0] - sphere_center_[0], s[1] - sphere_center_[1], s[2] - sphere_center_[2]};
+        const double d[3] = {centre[0] - sphere_center_[0], centre[1] - sphere_center_[1],
+                             centre[2] - sphere_center_[2]};
         const double reach = r + sphere_radius_;
         if (dot(d, d) > reach * reach) return false;
     }
     if (has_cone_) {
+        const double s[3] = {centre[0] - apex_[0], centre[1] - apex_[1], centre[2] - apex_[2]};
         // Eberly: move the apex back by r / sin(angle) along the axis; the sphere meets the
         // cone if its centre is inside that larger cone and not behind the real apex beyond r.
         const double back = r / sin_angle_;

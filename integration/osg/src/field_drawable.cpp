@@ -195,15 +195,8 @@ void FieldDrawable::drawImplementation(osg::RenderInfo& renderInfo) const {
         const DrawShadows shadows = vdsm_->forDraw(renderInfo);
         if (!shadows.error.empty()) fail(shadows.error);
         if (shadows.kind == DrawShadows::Kind::Cast) {
-            const osg::Matrixd& p = state.getProjectionMatrix();
-            if (p(0, 3) != 0.0 || p(1, 3) != 0.0 || p(2, 3) != 0.0) {
-                // Light-space perspective maps (VDSM's default hint) draw grass's depth in
-                // wrong bands: grass casts into orthographic maps only.
-                return fail("grass_osg: the ViewDependentShadowMap draws a perspective shadow map (ShadowSettings' "
-                            "shadow map projection hint PERSPECTIVE_SHADOW_MAP, its default, or a spot light): grass "
-                            "casts only into orthographic ones (setShadowMapProjectionHint(ORTHOGRAPHIC_SHADOW_MAP)) "
-                            "and is left out of this map");
-            }
+            // Any projection VDSM draws with, its default light-space perspective map (a warp
+            // whose rays stay parallel to the light) included: grass takes the rays from it.
             pass.pass = GRASS_PASS_DEPTH;
             // VDSM's own casters' polygon offset (factor 1.1, units 4).
             pass.depth_bias_slope = 1.1f;
