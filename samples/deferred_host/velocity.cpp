@@ -44,9 +44,7 @@ bool is_grass(const float* t) { return t[2] < 0.5f && t[3] > 0.5f; }  // grass w
 } // namespace
 
 grass_wind_desc gust_wind() {
-    grass_wind_desc wind = grass_default_wind_desc();
-    wind.direction[0] = 1.0f;
-    wind.direction[2] = 0.3f;
+    grass_wind_desc wind = grass_default_wind_desc(); // along (1, 0, 0.3)
     wind.speed = 20.0f;
     wind.gust_strength = 4.0f;
     wind.turbulence = 1.0f;
@@ -162,7 +160,7 @@ int check_and_write_velocity(const grass_view_desc& view, const VelocityImage& s
             const bool covered = t[3] > 0.5f;
             c[0] = covered ? level(t[0] * kWidth) : 0;
             c[1] = covered ? level((gust.y_down ? -t[1] : t[1]) * kHeight) : 0;
-            c[2] = covered ? 128 : 0;
+            c[2] = is_ground(t) ? 192 : covered ? 128 : 0;
             c[3] = 255;
         }
     }

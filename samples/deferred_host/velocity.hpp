@@ -20,13 +20,14 @@ namespace deferred {
 // pan since then (the previous eye and target kPan metres along -x, the camera's right).
 constexpr double kTime = 2.0, kPreviousTime = kTime - 1.0 / 30.0;
 constexpr double kPan = 0.02; // metres
-// The colours of the picture: mid-grey (128) is still; red rises kLevelsPerPixel levels for
-// each pixel of motion to the right (falls for the left), green for each pixel upwards
-// (whatever the backend's y), blue 128 on the ground and grass, 0 on the sky (nothing wrote
-// velocity there); clamped to 0..255.
+// The colours of the picture: red and green 128 where nothing moves; red rises kLevelsPerPixel
+// levels for each pixel of motion to the right (falls for the left), green for each pixel
+// upwards (whatever the backend's y), clamped to 0..255; blue 128 on grass, 192 on the ground
+// (to tell them apart); black on the sky (nothing wrote velocity there).
 constexpr float kLevelsPerPixel = 32.0f;
 
-// The wind of the velocity frame: a 6 m/s wind along +x, in a strong gust.
+// The wind of the velocity frames: 20 m/s along the default direction (1, 0, 0.3), gusts of
+// the strongest (4) and full turbulence.
 grass_wind_desc gust_wind();
 
 // The previous camera of `view` (its eye kPan metres along -x) for a view's chain, the wind's
