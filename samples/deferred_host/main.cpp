@@ -2,24 +2,30 @@
 // "Deferred renderers"). Headless GL 4.5 (the test hosts' EGL context), one frame, a PNG:
 //
 //   grass-deferred [--backend gl|vk] [out.png]        default: gl, grass-deferred.png
+//   grass-deferred [--backend gl|vk] --velocity-output FILE.png
 //
 // --backend vk: the same scene with Vulkan (vk_deferred.cpp): the same G-buffer and lighting
 // passes in a Vulkan deferred host (vk_deferred_host.hpp). The scene: scene.hpp. Both halves
 // draw with the same shaders (shaders/: the ground, the lighting).
 // 1. The G-buffer: base colour (RGBA16F, linear), normal (RGBA8, n * 0.5 + 0.5), material
-//    (RGBA8: roughness, translucency, ambient occlusion) and depth. The host draws its ground
-//    into it, then grass draws a GRASS_PASS_GBUFFER view into the same attachments.
+//    (RGBA8: roughness, translucency, ambient occlusion), velocity (RGBA16F) and depth. The
+//    host draws its ground into it, then grass draws a GRASS_PASS_GBUFFER view into the same
+//    attachments.
 // 2. The lighting pass (shaders/lighting.frag): one full-screen triangle reads the G-buffer
 //    and lights every pixel, ground and grass alike, with a low sun, an ambient term and three point lights (glTF's
 //    falloff, as grass_light's), into an sRGB target that becomes the PNG.
 // Exits 0 when the picture holds lit grass (at least a tenth of its pixels green-dominant,
 // and the point lights brightening over 2000 pixels by more than 40 levels against the sun
 // alone), 1 otherwise.
+// --velocity-output FILE.png: instead of the lit picture, two frames with a previous camera (a
+// pan) and a gust of wind, grass writing its velocity into the G-buffer's velocity attachment,
+// checked and drawn as a picture (velocity.hpp); exits 0 when the checks hold.
 #include "gl_loader.hpp"
 #include "headless_host.hpp"
 #include "host_factories.hpp"
 #include "image_io.hpp"
 #include "scene.hpp"
+#include "velocity.hpp"
 
 #include <grass/grass_gl.h>
 
@@ -68,15 +74,18 @@ bool ok(grass_result r, const char* call) {
 
 int main(int argc, char** argv) {
     bool vulkan = false;
-    std::string out_path = "grass-deferred.png";
+    std::string out_path = "grass-deferred.png", velocity_path;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg == "--backend" && i + 1 < argc &&
             (std::string(argv[i + 1]) == "gl" || std::string(argv[i + 1]) == "vk")) {
             vulkan = std::string(argv[++i]) == "vk";
+        } else if (arg == "--velocity-output" && i + 1 < argc) {
+            velocity_path = argv[++i];
         } else if (arg.rfind("--", 0) == 0) {
             std::fprintf(stderr,
-                         "grass-deferred: unknown option %s (usage: grass-deferred [--backend gl|vk] [out.png])\n",
+                         "grass-deferred: unknown option %s (usage: grass-deferred [--backend gl|vk] "
+                         "[--velocity-output FILE.png] [out.png])\n",
                          arg.c_str());
             return 2;
         } else {
@@ -84,7 +93,7 @@ int main(int argc, char** argv) {
         }
     }
 #ifdef GRASS_HOST_HAS_VULKAN
-    if (vulkan) return run_vulkan(out_path);
+    if (vulkan) return run_vulkan(out_path, velocity_path);
 #else
     if (vulkan) {
         std::fprintf(stderr, "grass-deferred: this build has no Vulkan backend\n");
@@ -114,17 +123,18 @@ int main(int argc, char** argv) {
     LOAD(Uniform4fv);
 #undef LOAD
 
-    // The G-buffer (albedo, normal, material, depth) and the lit target.
-    GLuint textures[5], gbuffer = 0, lit = 0;
-    const GLenum formats[5] = {GL_RGBA16F, GL_RGBA8, GL_RGBA8, GL_DEPTH_COMPONENT32F, GL_SRGB8_ALPHA8};
-    tx.CreateTextures(GL_TEXTURE_2D, 5, textures);
-    for (int i = 0; i < 5; ++i) tx.TextureStorage2D(textures[i], 1, formats[i], kWidth, kHeight);
+    // The G-buffer (albedo, normal, material, depth, velocity) and the lit target.
+    GLuint textures[6], gbuffer = 0, lit = 0;
+    const GLenum formats[6] = {GL_RGBA16F, GL_RGBA8, GL_RGBA8, GL_DEPTH_COMPONENT32F, GL_SRGB8_ALPHA8, GL_RGBA16F};
+    tx.CreateTextures(GL_TEXTURE_2D, 6, textures);
+    for (int i = 0; i < 6; ++i) tx.TextureStorage2D(textures[i], 1, formats[i], kWidth, kHeight);
     gl.CreateFramebuffers(1, &gbuffer);
     gl.CreateFramebuffers(1, &lit);
-    const GLenum buffers[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    const GLenum buffers[4] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
     for (int i = 0; i < 3; ++i) tx.NamedFramebufferTexture(gbuffer, buffers[i], textures[i], 0);
+    tx.NamedFramebufferTexture(gbuffer, buffers[3], textures[5], 0);
     tx.NamedFramebufferTexture(gbuffer, GL_DEPTH_ATTACHMENT, textures[3], 0);
-    tx.NamedFramebufferDrawBuffers(gbuffer, 3, buffers);
+    tx.NamedFramebufferDrawBuffers(gbuffer, 4, buffers);
     tx.NamedFramebufferTexture(lit, GL_COLOR_ATTACHMENT0, textures[4], 0);
     const GLuint ground = grass_bootstrap::compile_program(gl, deferred_glsl::gbuffer_ground_vert,
                                                            deferred_glsl::gbuffer_ground_frag, "ground", &error);
@@ -156,29 +166,63 @@ int main(int argc, char** argv) {
     view.viewport[3] = kHeight;
     float vp[16]; // camera-relative world -> clip
     view_projection(view, vp);
-    const float far_depth = 1.0f, zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    gl.BindFramebuffer(GL_FRAMEBUFFER, gbuffer);
-    gl.Viewport(0, 0, kWidth, kHeight);
-    for (int i = 0; i < 3; ++i) gl.ClearBufferfv(GL_COLOR, i, zero);
-    gl.ClearBufferfv(GL_DEPTH, 0, &far_depth);
-    gl.Enable(GL_DEPTH_TEST);
-    gl.DepthFunc(GL_LEQUAL);
-    gl.UseProgram(ground);
-    gl.BindVertexArray(vertex_array);
-    const float camera[3] = {float(eye[0]), float(eye[1]), float(eye[2])};
-    tx.UniformMatrix4fv(0, 1, GL_FALSE, vp);
-    tx.Uniform3fv(1, 1, camera);
-    gl.DrawArrays(GL_TRIANGLES, 0, 6);
-
-    // grass into the same G-buffer: albedo, normal, material (with its ambient occlusion).
-    grass_view_gbuffer_desc layout = gbuffer_layout();
-    layout.attachments[0].format = GRASS_GBUFFER_FORMAT_FLOAT; // GL's albedo is RGBA16F
+    const bool velocity = !velocity_path.empty();
+    grass_view_gbuffer_desc layout = gbuffer_layout(velocity);
     grass_view_pass_desc pass = grass_default_view_pass_desc();
     pass.pass = GRASS_PASS_GBUFFER;
     pass.next = &layout;
     view.next = &pass;
-    success = success && ok(grass_begin_frame(ctx, &view), "grass_begin_frame") &&
-              ok(grass_gl_render(ctx), "grass_gl_render") && ok(grass_end_frame(ctx), "grass_end_frame");
+    grass_view_motion_desc motion = pan_motion(*host, false);
+    if (velocity) {
+        view.time = kTime;
+        motion.next = &pass;
+        view.next = &motion;
+        const grass_wind_desc wind = gust_wind();
+        success = success && ok(grass_set_wind(ctx, &wind), "grass_set_wind");
+    }
+    // The ground, then grass into the same G-buffer: albedo, normal, material (with its ambient
+    // occlusion) and, for the velocity frames, velocity.
+    const auto draw_gbuffer = [&]() {
+        const float far_depth = 1.0f, zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        gl.BindFramebuffer(GL_FRAMEBUFFER, gbuffer);
+        gl.Viewport(0, 0, kWidth, kHeight);
+        for (int i = 0; i < 4; ++i) gl.ClearBufferfv(GL_COLOR, i, zero);
+        gl.ClearBufferfv(GL_DEPTH, 0, &far_depth);
+        gl.Enable(GL_DEPTH_TEST);
+        gl.DepthFunc(GL_LEQUAL);
+        gl.UseProgram(ground);
+        gl.BindVertexArray(vertex_array);
+        float world_to_clip[16], world_to_previous_clip[16];
+        ground_matrices(view, world_to_clip, world_to_previous_clip);
+        tx.UniformMatrix4fv(0, 1, GL_FALSE, world_to_clip);
+        tx.UniformMatrix4fv(1, 1, GL_FALSE, world_to_previous_clip);
+        gl.DrawArrays(GL_TRIANGLES, 0, 6);
+        return ok(grass_begin_frame(ctx, &view), "grass_begin_frame") && ok(grass_gl_render(ctx), "grass_gl_render") &&
+               ok(grass_end_frame(ctx), "grass_end_frame");
+    };
+    if (velocity) {
+        // The velocity attachment of a frame without the wind's motion and of one with it,
+        // read back top row first (GL's rows run bottom-up).
+        const auto read_velocity = [&](bool wind_moves, VelocityImage* out) {
+            motion = pan_motion(*host, wind_moves);
+            motion.next = &pass;
+            if (!draw_gbuffer()) return false;
+            std::vector<float> rows(size_t(kWidth) * kHeight * 4);
+            out->rgba.resize(rows.size());
+            gl.ReadBuffer(GL_COLOR_ATTACHMENT3);
+            gl.ReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, rows.data());
+            const size_t row = size_t(kWidth) * 4;
+            for (uint32_t y = 0; y < kHeight; ++y)
+                std::memcpy(&out->rgba[y * row], &rows[(kHeight - 1 - y) * row], row * sizeof(float));
+            return true;
+        };
+        VelocityImage still, gust;
+        success = success && read_velocity(false, &still) && read_velocity(true, &gust);
+        const int checked = success ? check_and_write_velocity(view, still, gust, velocity_path) : 1;
+        grass_destroy_context(ctx);
+        return checked;
+    }
+    success = success && draw_gbuffer();
 
     // The lighting pass into the sRGB target.
     float lamp_positions[3][4];

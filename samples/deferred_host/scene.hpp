@@ -44,14 +44,20 @@ inline void view_projection(const grass_view_desc& view, float vp[16]) {
 }
 
 // grass's layout in the G-buffer: albedo, normal (n * 0.5 + 0.5), material with its ambient
-// occlusion (rgb), at attachments 0, 1 and 2.
-inline grass_view_gbuffer_desc gbuffer_layout() {
+// occlusion (rgb), at attachments 0, 1 and 2; attachment 3, the velocity (RGBA16F), written
+// by the ground alone unless `velocity` (velocity.hpp: then grass writes its velocity's rg and
+// 0 in b, a float attachment).
+inline grass_view_gbuffer_desc gbuffer_layout(bool velocity) {
     grass_view_gbuffer_desc layout = grass_default_view_gbuffer_desc();
-    layout.attachment_count = 3;
+    layout.attachment_count = 4;
     layout.attachments[0].semantic = GRASS_GBUFFER_ALBEDO;
     layout.attachments[1].semantic = GRASS_GBUFFER_NORMAL;
     layout.attachments[2].semantic = GRASS_GBUFFER_MATERIAL;
     layout.attachments[2].write_mask = 0x7;
+    layout.attachments[0].format = GRASS_GBUFFER_FORMAT_FLOAT; // the albedo is RGBA16F
+    layout.attachments[3].semantic = velocity ? GRASS_GBUFFER_VELOCITY : GRASS_GBUFFER_NONE;
+    layout.attachments[3].format = GRASS_GBUFFER_FORMAT_FLOAT;
+    layout.attachments[3].write_mask = velocity ? 0x7 : 0x0;
     return layout;
 }
 
@@ -82,6 +88,7 @@ inline bool holds_lit_grass(std::vector<uint8_t> rgba, const std::vector<uint8_t
 }
 
 // The Vulkan half (vk_deferred.cpp): 0 when the picture holds lit grass.
-int run_vulkan(const std::string& out_path);
+// `velocity_path` not empty: the velocity frames and their picture instead (velocity.hpp).
+int run_vulkan(const std::string& out_path, const std::string& velocity_path);
 
 } // namespace deferred

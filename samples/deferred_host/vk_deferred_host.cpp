@@ -4,6 +4,7 @@
 
 #include <grass/grass_vk.h>
 
+#include <cmath>
 #include <cstring>
 
 namespace deferred {
@@ -98,7 +99,11 @@ VkDeferredHost::~VkDeferredHost() {
 
 grass_result VkDeferredHost::create_context(const grass_context_desc& desc, grass_context** out) {
     grass_vk_gbuffer_target_desc gbuffer = grass_default_vk_gbuffer_target_desc();
-    gbuffer.color_attachment_count = 3; // albedo, normal, material
+    gbuffer.color_attachment_count = 4; // albedo, normal, material, velocity
+    grass_vk_velocity_target_desc velocity = grass_default_vk_velocity_target_desc();
+    velocity.color_attachment_count = 4;
+    velocity.velocity_attachment = 3;
+    if (velocity_) gbuffer.next = &velocity;
     grass_vk_desc vk = grass_default_vk_desc();
     vk.next = &gbuffer;
     vk.get_instance_proc_addr = vkGetInstanceProcAddr;
@@ -133,6 +138,18 @@ bool VkDeferredHost::submit_and_read(grass_host::Image* out, std::string* error)
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {target_.width, target_.height, 1};
     vkCmdCopyImageToBuffer(cmd_, lit_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1, &region);
+    if (!submit(error)) return false;
+    if (out) {
+        out->width = target_.width;
+        out->height = target_.height;
+        out->rgba.resize(size_t(target_.width) * target_.height * 4);
+        std::memcpy(out->rgba.data(), readback_.mapped, out->rgba.size()); // Vulkan rows run top-down
+    }
+    return true;
+}
+
+// Makes the read-back copy visible to the host, ends the command buffer, submits and waits.
+bool VkDeferredHost::submit(std::string* error) {
     const VkBufferMemoryBarrier b = grass_bootstrap::host_read_barrier(readback_.buffer);
     vkCmdPipelineBarrier(cmd_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0,
                          nullptr);
@@ -146,12 +163,6 @@ bool VkDeferredHost::submit_and_read(grass_host::Image* out, std::string* error)
     if (r != VK_SUCCESS) {
         if (error) *error = vk_error("vkEndCommandBuffer/vkQueueSubmit/vkWaitForFences", r);
         return false;
-    }
-    if (out) {
-        out->width = target_.width;
-        out->height = target_.height;
-        out->rgba.resize(size_t(target_.width) * target_.height * 4);
-        std::memcpy(out->rgba.data(), readback_.mapped, out->rgba.size()); // Vulkan rows run top-down
     }
     return true;
 }
@@ -201,6 +212,54 @@ bool VkDeferredHost::relight(grass_host::Image* out, std::string* error) {
     if (!begin_commands(error)) return false;
     record_lighting(cmd_);
     return submit_and_read(out, error);
+}
+
+namespace {
+
+// An IEEE half (the velocity image's texels) as a float.
+float half_to_float(uint16_t h) {
+    const int exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
+    const float sign = (h & 0x8000) ? -1.0f : 1.0f;
+    if (exponent == 0) return sign * std::ldexp(float(mantissa), -24);
+    if (exponent == 31) return mantissa ? std::nanf("") : sign * INFINITY;
+    return sign * std::ldexp(float(mantissa + 1024), exponent - 25);
+}
+
+// The velocity image from the G-buffer pass's final layout to the copy's, or back.
+void transition_velocity(VkCommandBuffer cmd, VkImage image, bool to_copy) {
+    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.srcAccessMask = to_copy ? VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT : VK_ACCESS_TRANSFER_READ_BIT;
+    b.dstAccessMask = to_copy ? VK_ACCESS_TRANSFER_READ_BIT : VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    b.oldLayout = to_copy ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    b.newLayout = to_copy ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    const VkPipelineStageFlags attachment = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                               transfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    vkCmdPipelineBarrier(cmd, to_copy ? attachment : transfer, to_copy ? transfer : attachment, 0, 0, nullptr, 0,
+                         nullptr, 1, &b);
+}
+
+} // namespace
+
+bool VkDeferredHost::read_velocity(std::vector<float>* rgba, std::string* error) {
+    if (!has_frame_) {
+        if (error) *error = "read_velocity: no frame has filled the G-buffer yet (render one first)";
+        return false;
+    }
+    if (!begin_commands(error)) return false;
+    transition_velocity(cmd_, gbuffer_[4].image, true);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {target_.width, target_.height, 1};
+    vkCmdCopyImageToBuffer(cmd_, gbuffer_[4].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback_.buffer, 1, &region);
+    transition_velocity(cmd_, gbuffer_[4].image, false); // as the next G-buffer pass finds it
+    if (!submit(error)) return false;
+    rgba->resize(size_t(target_.width) * target_.height * 4);
+    const auto* halves = static_cast<const uint16_t*>(readback_.mapped); // Vulkan rows run top-down
+    for (size_t i = 0; i < rgba->size(); ++i) (*rgba)[i] = half_to_float(halves[i]);
+    return true;
 }
 
 } // namespace deferred

@@ -2,8 +2,8 @@
 // its own device (the bootstrap's instance with the validation layers, one graphics queue,
 // independentBlend), whose frame is a deferred renderer's:
 // 1. The G-buffer pass: albedo (RGBA16F, linear, colour attachment 0), normal (RGBA8 UNORM,
-//    n * 0.5 + 0.5), material (RGBA8 UNORM: roughness, translucency, ambient occlusion) and
-//    depth (D32). The host draws its ground (shaders/gbuffer_ground.*), then grass records the
+//    n * 0.5 + 0.5), material (RGBA8 UNORM: roughness, translucency, ambient occlusion),
+//    velocity (RGBA16F, colour attachment 3; velocity.hpp) and depth (D32). The host draws its ground (shaders/gbuffer_ground.*), then grass records the
 //    view it is given (a GRASS_PASS_GBUFFER view, scene.hpp's gbuffer_layout) into the same
 //    attachments; grass was told of the pass with a grass_vk_gbuffer_target_desc.
 // 2. The lighting pass: a second render pass whose one full-screen triangle samples the four
@@ -21,6 +21,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace deferred {
 
@@ -47,8 +48,10 @@ public:
     VkDeferredHost& operator=(const VkDeferredHost&) = delete;
 
     grass_backend backend() const override { return GRASS_BACKEND_VULKAN; }
-    // A context that draws in the G-buffer pass (its three colour attachments and depth).
+    // A context that draws in the G-buffer pass (its four colour attachments and depth), with
+    // a grass_vk_velocity_target_desc (attachment 3) when `velocity` was set before.
     grass_result create_context(const grass_context_desc& desc, grass_context** out) override;
+    void set_velocity(bool velocity) { velocity_ = velocity; }
     void projection(float fovy_radians, float aspect, float near_m, float far_m, float out[16]) const override;
     // One deferred frame of `view` (the ground, grass, the lighting with the lights last given
     // to set_lights), its lit picture in out->rgba (sRGB, top row first). `occluder` must be
@@ -60,6 +63,9 @@ public:
     // Lights the last frame's G-buffer again with the lights now set, into *out; false and
     // *error before the first frame.
     bool relight(grass_host::Image* out, std::string* error);
+    // The last frame's velocity attachment, RGBA floats, top row first; false and *error
+    // before the first frame.
+    bool read_velocity(std::vector<float>* rgba, std::string* error);
 
 private:
     explicit VkDeferredHost(const grass_host::TargetDesc& target) : Host(target) {}
@@ -74,6 +80,7 @@ private:
     void record_lighting(VkCommandBuffer cmd);
     bool begin_commands(std::string* error);
     bool submit_and_read(grass_host::Image* out, std::string* error);
+    bool submit(std::string* error); // ends, submits and waits for the command buffer
     static void on_message(void* user, const std::string& line);
 
     grass_bootstrap::VkMessageSink sink_{&VkDeferredHost::on_message, this};
@@ -87,10 +94,10 @@ private:
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
 
-    // The G-buffer: albedo, normal, material, depth; then the lit target.
-    grass_bootstrap::VkImageParts gbuffer_[4];
+    // The G-buffer: albedo, normal, material, depth, velocity; then the lit target.
+    grass_bootstrap::VkImageParts gbuffer_[5];
     grass_bootstrap::VkImageParts lit_;
-    grass_bootstrap::VkBufferParts readback_; // host-visible, coherent: the lit texels
+    grass_bootstrap::VkBufferParts readback_; // host-visible, coherent: the lit or velocity texels
     VkRenderPass gbuffer_pass_ = VK_NULL_HANDLE, lighting_pass_ = VK_NULL_HANDLE;
     VkFramebuffer gbuffer_framebuffer_ = VK_NULL_HANDLE, lighting_framebuffer_ = VK_NULL_HANDLE;
     VkPipelineLayout ground_layout_ = VK_NULL_HANDLE; // push constants: GroundConstants
@@ -105,6 +112,7 @@ private:
     LightingUniforms lights_{};
     float view_projection_[16] = {}; // of the last frame's view
     bool has_frame_ = false;         // a frame has filled the G-buffer
+    bool velocity_ = false;          // the context writes velocity
 };
 
 } // namespace deferred

@@ -3,6 +3,7 @@
 // descriptors, and the recording of both passes (vk_deferred_host.hpp).
 #include "mesh_drawer_vk.hpp"
 #include "scene.hpp"
+#include "velocity.hpp"
 #include "vk_deferred_host.hpp"
 
 #include <cstring>
@@ -24,18 +25,20 @@ namespace {
 
 using grass_bootstrap::vk_error;
 
-// The G-buffer's formats (albedo, normal, material, depth) and the lit target's.
-constexpr VkFormat kGBufferFormats[4] = {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R8G8B8A8_UNORM,
-                                         VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT};
+// The G-buffer's formats (albedo, normal, material, depth, velocity) and the lit target's.
+constexpr VkFormat kGBufferFormats[5] = {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R8G8B8A8_UNORM,
+                                         VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, VK_FORMAT_R16G16B16A16_SFLOAT};
+// The colour attachments after the first: normal, material, velocity.
+constexpr VkFormat kMoreColors[3] = {kGBufferFormats[1], kGBufferFormats[2], kGBufferFormats[4]};
 constexpr VkFormat kLitFormat = VK_FORMAT_R8G8B8A8_SRGB;
 // The layouts the G-buffer pass leaves its images in, for the lighting pass to sample.
 constexpr VkImageLayout kColorRead = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 constexpr VkImageLayout kDepthRead = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
 
-// gbuffer_ground.vert's push constants.
+// gbuffer_ground.vert's push constants (velocity.hpp's ground_matrices).
 struct GroundConstants {
-    float view_projection[16];
-    float camera[3], pad;
+    float world_to_clip[16];
+    float world_to_previous_clip[16];
 };
 
 // A dependency between the pass's one subpass and what comes before it (`into`) or after it.
@@ -73,11 +76,12 @@ VkResult create_pipeline(VkDevice device, const uint32_t* vert, uint32_t vert_si
 bool VkDeferredHost::create_images(std::string* error) {
     grass_bootstrap::VkImageDesc desc;
     desc.extent = {target_.width, target_.height};
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < 5; ++i) { // the velocity (4) is copied out, and left as the others
         desc.format = kGBufferFormats[i];
         desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT |
-                     (i < 3 ? VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT : VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
-        desc.aspect = i < 3 ? VK_IMAGE_ASPECT_COLOR_BIT : VK_IMAGE_ASPECT_DEPTH_BIT;
+                     (i == 3 ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT) |
+                     (i == 4 ? VK_IMAGE_USAGE_TRANSFER_SRC_BIT : 0);
+        desc.aspect = i == 3 ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
         if (!grass_bootstrap::create_image(device_, memory_properties_, desc, &gbuffer_[i], error)) return false;
     }
     desc.format = kLitFormat;
@@ -85,7 +89,7 @@ bool VkDeferredHost::create_images(std::string* error) {
     desc.aspect = VK_IMAGE_ASPECT_COLOR_BIT;
     const VkMemoryPropertyFlags mapped = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     return grass_bootstrap::create_image(device_, memory_properties_, desc, &lit_, error) &&
-           grass_bootstrap::create_buffer(device_, memory_properties_, VkDeviceSize(target_.width) * target_.height * 4,
+           grass_bootstrap::create_buffer(device_, memory_properties_, VkDeviceSize(target_.width) * target_.height * 8,
                                           VK_BUFFER_USAGE_TRANSFER_DST_BIT, mapped, &readback_, error) &&
            grass_bootstrap::create_buffer(device_, memory_properties_, sizeof(LightingUniforms),
                                           VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, mapped, &lighting_buffer_, error);
@@ -93,12 +97,13 @@ bool VkDeferredHost::create_images(std::string* error) {
 
 bool VkDeferredHost::create_passes(std::string* error) {
     // The G-buffer pass (the bootstrap's: colour attachment 0 the albedo, the pass's
-    // attachment 1 the depth, 2 and 3 the normal and material), every image left readable.
+    // attachment 1 the depth, 2, 3 and 4 the normal, material and velocity), every image
+    // left readable.
     grass_bootstrap::VkPassDesc pass;
     pass.color_format = kGBufferFormats[0];
     pass.depth_format = kGBufferFormats[3];
-    pass.more_colors = &kGBufferFormats[1];
-    pass.more_color_count = 2;
+    pass.more_colors = kMoreColors;
+    pass.more_color_count = 3;
     pass.color_final = kColorRead;
     pass.keep_depth = true;
     pass.depth_final = kDepthRead;
@@ -130,10 +135,11 @@ bool VkDeferredHost::create_passes(std::string* error) {
         external(false, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     if (!grass_bootstrap::create_render_pass(device_, lighting, &lighting_pass_, error)) return false;
-    const VkImageView views[4] = {gbuffer_[0].view, gbuffer_[3].view, gbuffer_[1].view, gbuffer_[2].view};
+    const VkImageView views[5] = {gbuffer_[0].view, gbuffer_[3].view, gbuffer_[1].view, gbuffer_[2].view,
+                                  gbuffer_[4].view};
     VkFramebufferCreateInfo fb{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     fb.renderPass = gbuffer_pass_;
-    fb.attachmentCount = 4;
+    fb.attachmentCount = 5;
     fb.pAttachments = views;
     fb.width = target_.width;
     fb.height = target_.height;
@@ -172,9 +178,9 @@ bool VkDeferredHost::create_pipelines(std::string* error) {
     if (r == VK_SUCCESS) r = vkCreatePipelineLayout(device_, &layout, nullptr, &ground_layout_);
 
     using namespace deferred_spirv;
-    if (r == VK_SUCCESS) // depth-tested and written, three attachments
+    if (r == VK_SUCCESS) // depth-tested and written, four attachments
         r = create_pipeline(device_, gbuffer_ground_vert, gbuffer_ground_vert_size, gbuffer_ground_frag,
-                            gbuffer_ground_frag_size, ground_layout_, gbuffer_pass_, kGBufferFormats[0], 3,
+                            gbuffer_ground_frag_size, ground_layout_, gbuffer_pass_, kGBufferFormats[0], 4,
                             &ground_pipeline_);
     if (r == VK_SUCCESS) // the pass has no depth: the pipeline's depth state is ignored
         r = create_pipeline(device_, lighting_vert, lighting_vert_size, lighting_frag, lighting_frag_size,
@@ -221,21 +227,20 @@ bool VkDeferredHost::create_lighting_set(std::string* error) {
 // Begins the G-buffer pass (colours cleared to 0, depth to 1) and draws the ground.
 void VkDeferredHost::record_gbuffer_begin(VkCommandBuffer cmd, const grass_view_desc& view) {
     view_projection(view, view_projection_);
-    VkClearValue clears[4] = {};
+    VkClearValue clears[5] = {};
     clears[1].depthStencil = {1.0f, 0};
     VkRenderPassBeginInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     info.renderPass = gbuffer_pass_;
     info.framebuffer = gbuffer_framebuffer_;
     info.renderArea = {{0, 0}, {target_.width, target_.height}};
-    info.clearValueCount = 4;
+    info.clearValueCount = 5;
     info.pClearValues = clears;
     vkCmdBeginRenderPass(cmd, &info, VK_SUBPASS_CONTENTS_INLINE);
     const VkViewport viewport{0.0f, 0.0f, float(target_.width), float(target_.height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &info.renderArea);
     GroundConstants ground{};
-    std::memcpy(ground.view_projection, view_projection_, sizeof(view_projection_));
-    for (int c = 0; c < 3; ++c) ground.camera[c] = float(view.camera_position[c]);
+    ground_matrices(view, ground.world_to_clip, ground.world_to_previous_clip);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, ground_pipeline_);
     vkCmdPushConstants(cmd, ground_layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(ground), &ground);
     vkCmdDraw(cmd, 6, 1, 0, 0);
