@@ -40,6 +40,14 @@ const char* vk_result_name(VkResult result, char (&scratch)[32]) {
 }
 
 grass_result report_failure(grass_context* context, const char* function, const char* what, const VkFailure& failure) {
+    if (failure.result == VK_SUCCESS) {
+        // No Vulkan call failed: the backend declined what the core should have refused first
+        // (a pipeline for a target the context was not made with): a bug in grass.
+        return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
+                             "%s: the Vulkan backend cannot make %s for this context, and no Vulkan call failed: the "
+                             "core should have refused this earlier (please report it)",
+                             function, what && *what ? what : "what this call needs");
+    }
     char scratch[32];
     const char* name = vk_result_name(failure.result, scratch);
     const bool out_of_memory =

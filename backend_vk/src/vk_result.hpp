@@ -30,7 +30,9 @@ const char* vk_result_name(VkResult result, char (&scratch)[32]);
 // Logs "<function>: <call> failed with <VkResult> (<what>)" and returns
 // GRASS_ERROR_OUT_OF_MEMORY for the out-of-memory results (GRASS_MSG_OUT_OF_MEMORY),
 // GRASS_ERROR_BACKEND otherwise: GRASS_MSG_DEVICE_LOST for VK_ERROR_DEVICE_LOST,
-// GRASS_MSG_BACKEND_CALL_FAILED for the rest.
+// GRASS_MSG_BACKEND_CALL_FAILED for the rest. A failure without a Vulkan error (no call
+// failed: the backend declined what the core should have refused) is
+// GRASS_ERROR_INVALID_STATE with GRASS_MSG_INTERNAL_ERROR.
 grass_result report_failure(grass_context* context, const char* function, const char* what, const VkFailure& failure);
 
 } // namespace grass::vk
