@@ -1,4 +1,4 @@
-// G-buffer views on GL (GRASS_PASS_GBUFFER; docs/integration.md "Deferred renderers"): the
+// G-buffer views on GL (GRASS_PASS_GBUFFER; docs/engine-frames.md "Deferred renderers"): the
 // check that the host's framebuffer has a draw buffer at every attachment grass writes. The
 // fragment shaders write the kGBufferOutput locations (gbuffer.glsl);
 // GlDrawStateGuard::begin_gbuffer routes them to the host's draw buffers.

@@ -1,4 +1,4 @@
-// Motion vectors on GL (grass_view_motion_desc; docs/integration.md "Motion vectors"): the
+// Motion vectors on GL (grass_view_motion_desc; docs/engine-frames.md "Motion vectors"): the
 // velocity target's check and the GrassMotion block. The fragment shaders of a motion view
 // write the velocity to output location 1 (motion.glsl); GlDrawStateGuard::begin_motion
 // routes that location to the host's draw buffer.

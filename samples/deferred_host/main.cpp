@@ -1,4 +1,4 @@
-// grass-deferred: a small deferred renderer with grass in its G-buffer (docs/integration.md,
+// grass-deferred: a small deferred renderer with grass in its G-buffer (docs/engine-frames.md,
 // "Deferred renderers"). Headless GL 4.5 (the test hosts' EGL context), one frame, a PNG:
 //
 //   grass-deferred [--backend gl|vk] [out.png]        default: gl, grass-deferred.png

@@ -1,4 +1,4 @@
-// grass-deferred --velocity-output FILE.png (docs/integration.md, "Motion vectors"): the
+// grass-deferred --velocity-output FILE.png (docs/engine-frames.md, "Motion vectors"): the
 // G-buffer's velocity attachment (attachment 3, RGBA16F) of one frame drawn with a previous
 // camera kPan metres to the left and in a gust of wind, the same in both halves. grass writes
 // its blades' velocity there on the GPU (a GRASS_GBUFFER_VELOCITY attachment, the camera's

@@ -1,4 +1,4 @@
-// grass-render's options for the host's own scene around grass (docs/integration.md,
+// grass-render's options for the host's own scene around grass (docs/engine-frames.md,
 // "Shadows: grass in the host's shadow maps"): boxes and trees the host draws as meshes, and
 // the host's cascaded sun shadows (TargetDesc::host_shadows), in which the meshes and grass
 // cast and which the ground, the meshes and grass receive.

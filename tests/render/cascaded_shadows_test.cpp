@@ -1,4 +1,4 @@
-// The host's cascaded sun shadows end to end (TargetDesc::host_shadows; docs/integration.md
+// The host's cascaded sun shadows end to end (TargetDesc::host_shadows; docs/engine-frames.md
 // "Shadows: grass in the host's shadow maps" and "Receiving the host's shadows"): each frame
 // the host fits three orthographic cascades of the sun around the main camera's frustum,
 // draws its box "building" and grass's depth views (one grass frame: the main view, then a

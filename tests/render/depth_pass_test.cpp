@@ -1,4 +1,4 @@
-// Depth passes (grass_view_pass_desc, GRASS_PASS_DEPTH; docs/integration.md "Shadows: grass in
+// Depth passes (grass_view_pass_desc, GRASS_PASS_DEPTH; docs/engine-frames.md "Shadows: grass in
 // the host's shadow maps"): a field of geometry, volume and image tiers seen by an
 // orthographic light view whose lod origin is the main camera, drawn as a colour pass and as
 // a depth pass into the same target:

@@ -1,5 +1,5 @@
 // G-buffer views on Vulkan (GRASS_PASS_GBUFFER, grass_view_gbuffer_desc,
-// grass_vk_gbuffer_target_desc; docs/integration.md "Deferred renderers"), drawn by the
+// grass_vk_gbuffer_target_desc; docs/engine-frames.md "Deferred renderers"), drawn by the
 // Vulkan test host into a render pass of four RGBA8 UNORM colour attachments (the host's
 // colour, then three more: TargetDesc::vk_gbuffer_formats) and depth, the layout {albedo,
 // normal (UNORM), material, NONE}. Attachments 1-3 are cleared to a value of their own per

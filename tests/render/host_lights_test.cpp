@@ -1,4 +1,4 @@
-// The host's lights (grass_view_lights_desc; docs/integration.md "The host's lights"): a field
+// The host's lights (grass_view_lights_desc; docs/engine-frames.md "The host's lights"): a field
 // of geometry, volume and image tiers (RenderTest::three_tier_field) lit by the host's
 // directional, point and spot lights and ambient harmonics, checked against the sun, whose
 // lighting every tier has had since lemme2012 6.4.3:

@@ -1,4 +1,4 @@
-// Motion vectors (grass_view_motion_desc; docs/integration.md "Motion vectors"), drawn into
+// Motion vectors (grass_view_motion_desc; docs/engine-frames.md "Motion vectors"), drawn into
 // a framebuffer the test makes: draw buffers {colour, a G-buffer-like target filled with a
 // pattern, velocity (RGBA32F)}, so the velocity goes to draw buffer 2. Vulkan: the host's
 // pass of colour attachments {colour, an RGBA8 target, velocity (RGBA32F)}

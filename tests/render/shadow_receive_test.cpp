@@ -1,4 +1,4 @@
-// Receiving the host's shadows (grass_shadow_receive_desc; docs/integration.md "Receiving the
+// Receiving the host's shadows (grass_shadow_receive_desc; docs/engine-frames.md "Receiving the
 // host's shadows"): a field of geometry, volume and image tiers seen by an orthographic
 // camera 45 degrees down, and a shadow map the test makes itself (GL: a GL_TEXTURE_2D_ARRAY of
 // depth; Vulkan: a D32_SFLOAT 2D array the host fills and leaves in a read-only layout,

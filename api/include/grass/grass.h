@@ -1005,7 +1005,7 @@ typedef struct grass_view_gbuffer_desc {
 /* Default: one attachment, of semantic NONE (set the semantics). */
 GRASS_API grass_view_gbuffer_desc grass_default_view_gbuffer_desc(void);
 
-/* 0.5: What a view's pass writes (docs/integration.md, "Shadows: grass in the host's shadow
+/* 0.5: What a view's pass writes (docs/engine-frames.md, "Shadows: grass in the host's shadow
  * maps"). */
 typedef enum grass_pass_kind {
     GRASS_PASS_COLOR = 0, /* colour and depth, lit (the default) */
@@ -1016,7 +1016,7 @@ typedef enum grass_pass_kind {
      * grass draws it; Vulkan: into the depth-only target of grass_vk_depth_pass_desc, which a
      * Vulkan context needs for it: without one it refuses a depth view, GRASS_ERROR_INVALID_STATE). */
     GRASS_PASS_DEPTH = 1,
-    /* 0.5: A G-buffer, for deferred hosts (docs/integration.md, "Deferred renderers"): every
+    /* 0.5: A G-buffer, for deferred hosts (docs/engine-frames.md, "Deferred renderers"): every
      * tier writes its depth and the surface its lighting uses (base colour, normal, roughness
      * and translucency, velocity) into the host's attachments that a grass_view_gbuffer_desc
      * on the view describes (required: without one the view is refused,
@@ -1062,7 +1062,7 @@ typedef enum grass_shadow_compare {
 #define GRASS_MAX_SHADOW_CASCADES 4
 
 /* 0.5: Chained on grass_view_desc.next: the view receives the host's sun shadows
- * (docs/integration.md, "Receiving the host's shadows"). Every tier darkens the sun term of
+ * (docs/engine-frames.md, "Receiving the host's shadows"). Every tier darkens the sun term of
  * its lighting (grass_view_desc.sun_color) by the share of the sun the map says reaches the
  * point (the blades at each fragment, the volume tier at each point its ray composites, the
  * image tier at its point); the ambient term stays. A view without it draws with the same
@@ -1116,7 +1116,7 @@ typedef struct grass_shadow_receive_desc {
 GRASS_API grass_shadow_receive_desc grass_default_shadow_receive_desc(void);
 
 /* 0.5: Chained on grass_view_desc.next: every tier also writes the screen-space velocity of
- * its grass to an extra colour target (docs/integration.md, "Motion vectors"), for temporal
+ * its grass to an extra colour target (docs/engine-frames.md, "Motion vectors"), for temporal
  * antialiasing, motion blur and upscalers. The velocity covers the camera's motion (the
  * previous camera and matrices below) and the wind's motion of the blades and of the
  * volume and image tiers' bend (their pose at `time` minus their pose at previous_time).
@@ -1164,7 +1164,7 @@ typedef struct grass_view_motion_desc {
 /* Default: as each field says (set the previous camera, matrices and time). */
 GRASS_API grass_view_motion_desc grass_default_view_motion_desc(void);
 
-/* 0.5: The host's lights (docs/integration.md, "The host's lights"). */
+/* 0.5: The host's lights (docs/engine-frames.md, "The host's lights"). */
 typedef enum grass_light_kind {
     GRASS_LIGHT_DIRECTIONAL = 0, /* parallel light from `direction` (a second sun, a moon) */
     GRASS_LIGHT_POINT = 1,       /* from `position` in every direction */

@@ -146,7 +146,7 @@ typedef struct grass_vk_multiview_desc {
 /* 0.5 */
 GRASS_API grass_vk_multiview_desc grass_default_vk_multiview_desc(void);
 
-/* 0.5: Depth-only passes (grass_view_pass_desc, GRASS_PASS_DEPTH; docs/integration.md,
+/* 0.5: Depth-only passes (grass_view_pass_desc, GRASS_PASS_DEPTH; docs/engine-frames.md,
  * "Shadows: grass in the host's shadow maps"), chained through grass_vk_desc.next: the
  * host's depth-only target that grass draws its depth views in (a shadow map's pass, which
  * has no colour attachment). Its fields follow grass_vk_desc's. grass makes depth-only
@@ -170,7 +170,7 @@ typedef struct grass_vk_depth_pass_desc {
 /* 0.5 */
 GRASS_API grass_vk_depth_pass_desc grass_default_vk_depth_pass_desc(void);
 
-/* 0.5: Motion vectors (grass_view_motion_desc; docs/integration.md, "Motion vectors"),
+/* 0.5: Motion vectors (grass_view_motion_desc; docs/engine-frames.md, "Motion vectors"),
  * chained through grass_vk_desc.next: the colour attachments of the pass grass draws in
  * (grass_vk_desc's render pass subpass, or its dynamic rendering) when that pass also holds
  * a velocity target. grass makes its motion pipelines against it on the first motion view
@@ -203,7 +203,7 @@ typedef struct grass_vk_velocity_target_desc {
 GRASS_API grass_vk_velocity_target_desc grass_default_vk_velocity_target_desc(void);
 
 /* 0.5: G-buffer views (grass_view_pass_desc GRASS_PASS_GBUFFER, grass_view_gbuffer_desc;
- * docs/integration.md, "Deferred renderers"), chained through grass_vk_desc.next: the colour
+ * docs/engine-frames.md, "Deferred renderers"), chained through grass_vk_desc.next: the colour
  * attachments of the pass grass draws in (grass_vk_desc's render pass subpass, or its dynamic
  * rendering) when the host draws G-buffer views in it. A G-buffer view's
  * grass_view_gbuffer_desc.attachment_count must equal color_attachment_count; attachment i

@@ -1,4 +1,4 @@
-// G-buffer views (GRASS_PASS_GBUFFER, grass_view_gbuffer_desc, grass.h; docs/integration.md
+// G-buffer views (GRASS_PASS_GBUFFER, grass_view_gbuffer_desc, grass.h; docs/engine-frames.md
 // "Deferred renderers"): the struct's validation and defaults.
 #include "entry/api_gbuffer.hpp"
 

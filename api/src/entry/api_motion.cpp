@@ -1,4 +1,4 @@
-// Motion vectors (grass_view_motion_desc, grass.h; docs/integration.md "Motion vectors"):
+// Motion vectors (grass_view_motion_desc, grass.h; docs/engine-frames.md "Motion vectors"):
 // the struct's validation and defaults. The plan is api/src/plan/motion_plan.cpp.
 #include "entry/api_motion.hpp"
 

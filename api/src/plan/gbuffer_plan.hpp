@@ -1,4 +1,4 @@
-// G-buffer views (GRASS_PASS_GBUFFER, grass_view_gbuffer_desc; docs/integration.md
+// G-buffer views (GRASS_PASS_GBUFFER, grass_view_gbuffer_desc; docs/engine-frames.md
 // "Deferred renderers"): what such a view adds to its plan.
 #pragma once
 

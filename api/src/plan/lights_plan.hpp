@@ -1,4 +1,4 @@
-// The host's lights (grass_view_lights_desc; docs/integration.md "The host's lights"): what a
+// The host's lights (grass_view_lights_desc; docs/engine-frames.md "The host's lights"): what a
 // view lit by them adds to its plan.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Motion vectors (grass_view_motion_desc; docs/integration.md "Motion vectors"): what a
+// Motion vectors (grass_view_motion_desc; docs/engine-frames.md "Motion vectors"): what a
 // view that writes them adds to its plan.
 #pragma once
 

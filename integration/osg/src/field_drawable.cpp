@@ -213,7 +213,7 @@ void FieldDrawable::drawImplementation(osg::RenderInfo& renderInfo) const {
                 receive.shadow_map = array;
                 // grass's own depth in the map is its blades' tops: a point is moved about
                 // the blades' height towards the light, or the field shades itself as a slab
-                // (docs/integration.md, "Shadows: grass in the host's shadow maps", Bias).
+                // (docs/engine-frames.md, "Shadows: grass in the host's shadow maps", Bias).
                 const double blades = std::max(0.0, double(patch_max_[1]) * desc_.field.cell_size);
                 if (shadows.depth_range > 0.0) receive.depth_bias = float(std::min(1.0, blades / shadows.depth_range));
                 for (int k = 0; k < 16; ++k) receive.world_to_shadow[0][k] = float(shadows.world_to_shadow.ptr()[k]);

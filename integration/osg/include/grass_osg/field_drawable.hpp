@@ -12,7 +12,7 @@
 // made at the first draw in their GL context and destroyed when OSG releases the drawable's
 // GL objects (releaseGLObjects, a scene-graph rebuild, the context's close).
 //
-// See docs/integration.md for the whole contract.
+// See docs/integration.md for the whole contract, docs/adapters.md for this adapter.
 #pragma once
 
 #include <grass/grass.h>
@@ -104,7 +104,7 @@ public:
     void setLights(const Lights& lights) { lights_ = lights; }
     const Lights& getLights() const { return lights_; }
 
-    // Shadows under osgShadow::ViewDependentShadowMap (docs/integration.md, "OSG's shadows"):
+    // Shadows under osgShadow::ViewDependentShadowMap (docs/adapters.md, "OSG's shadows"):
     // give the ShadowedScene the drawable is in (a descendant of it, with the technique set)
     // and grass casts into VDSM's map (a depth pass drawn when VDSM's shadow camera draws
     // the drawable, choosing its blades as the main camera does) and receives it (OSG's
