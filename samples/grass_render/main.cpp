@@ -29,8 +29,9 @@ struct Options {
     grass_backend backend = GRASS_BACKEND_GL;
     std::string scene_path, output = "grass.png", cache_dir;
     // Options that override the scene file are applied after it is loaded.
-    double camera[3] = {0, 0, 0}, target[3] = {0, 0, 0};
-    bool have_camera = false, have_target = false, no_mirror = false, no_ground = false, debug_tiers = false;
+    double camera[3] = {0, 0, 0}, target[3] = {0, 0, 0}, lod_origin[3] = {0, 0, 0};
+    bool have_camera = false, have_target = false, have_lod_origin = false, no_mirror = false, no_ground = false,
+         debug_tiers = false;
     bool debug_cells = false;
     float far_m = 0.0f, fov = 0.0f, density = -1.0f;
     uint32_t width = 0, height = 0, samples = 0;
@@ -54,6 +55,9 @@ void add_options(CLI::App& app, Options* o) {
     app.add_option("--samples", o->samples, "1 or 4 (default from the scene, 4)")->check(CLI::IsMember({1, 4}));
     grass_sample::add_point_option(app, "--camera", o->camera, &o->have_camera, "camera position in metres");
     grass_sample::add_point_option(app, "--target", o->target, &o->have_target, "point the camera looks at");
+    grass_sample::add_point_option(app, "--lod-origin", o->lod_origin, &o->have_lod_origin,
+                                   "the point the tiers' distances are measured from (grass_lod_origin_desc; default "
+                                   "the camera): a third-person camera gives its character's feet");
     app.add_option("--fov", o->fov, "vertical field of view in degrees")->check(grass_sample::open_range(0, 180));
     app.add_option("--density", o->density, "uniform density multiplier 0..1")
         ->check(grass_sample::closed_range(0.0, 1.0));
@@ -265,6 +269,11 @@ int main(int argc, char** argv) {
     if (scene_ready) {
         grass_view_desc view =
             grass_host::make_view(*host, scene.eye, scene.target, scene.fov_degrees, scene.near_m, scene.far_m);
+        grass_lod_origin_desc lod_origin = grass_default_lod_origin_desc();
+        if (o.have_lod_origin) {
+            std::memcpy(lod_origin.position, o.lod_origin, sizeof(o.lod_origin));
+            view.next = &lod_origin;
+        }
         if (o.debug_tiers) view.flags |= GRASS_VIEW_FLAG_DEBUG_TIERS;
         if (o.debug_cells) view.flags |= GRASS_VIEW_FLAG_DEBUG_CELLS;
         grass_sample::apply_light(scene, &view);

@@ -33,6 +33,9 @@ file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/cli-bad-patch.json" "{\"patch\": {\"blad
 expect("tier-cost --patch-of with a bad patch" 1 "--patch-of: .*cli-bad-patch.json: \"patch.blade_count\" is -3, out of range"
        ${MEASURE} tier-cost --patch-of "${CMAKE_CURRENT_BINARY_DIR}/cli-bad-patch.json")
 
+# grass-render --lod-origin takes a point, as --camera does.
+expect("grass-render --lod-origin 1,2" 2 "--lod-origin: \"1,2\" is not X,Y,Z" ${RENDER} --lod-origin 1,2)
+
 set(tools "grass-render" "bench" "tier-cost" "popping" "dynamics")
 if(VIEWER)
   list(APPEND tools "grass-viewer")
