@@ -152,17 +152,17 @@ vec3 blade_state_contact(BladePose pose, BladeCollider c, vec3 shift, vec3 up) {
 // `forces` (m/s^2, blade_forces: wind and gravity, constant over the step) and the colliders
 // of blade_state_collider. In substeps of at most kBladeStateSubstep (at most
 // kBladeStateMaxSubsteps of them, longer beyond 16 x that), each:
+// - eta (eq. 2, 16 as rates): it rises by kBladeStateEtaBuild (d / L)^2 per second, d the
+//   push-out the colliders give the stateless pose (how hard they hold the blade from its
+//   equilibrium), and falls by 1 / recovery_time per second, within 0..1;
 // - the spring (eq. 1, 3 with inertia): the tip accelerates by (s / L) recovery (target - v2)
 //   - 2 zeta omega velocity, omega^2 = s / L, zeta = kBladeStateDamping, recovery =
-//   max(1 - eta, 0.1) (eq. 3), target = blade_state_target; stepped exactly;
+//   max(1 - eta, 0.1) (eq. 3) with eta's mean over the substep, target =
+//   blade_state_target; solved exactly over the substep;
 // - eq. 9 on the free tip;
 // - colliders (eq. 14-15) at their place at the substep's end push the validated pose's tip
 //   and midpoint out; the free tip moves by that, and loses the velocity into the collider
-//   (beyond the collider's own);
-// - first eta (eq. 2, 16 as rates): it rises by kBladeStateEtaBuild (d / L)^2 per second, d
-//   the push-out the colliders give the stateless pose (how hard they hold the blade from its
-//   equilibrium), and falls by 1 / recovery_time per second, within 0..1; the spring's
-//   recovery takes its mean over the substep.
+//   (beyond the collider's own).
 void blade_state_step(inout BladeState s, BladeRest rest, float stiffness, vec3 forces, float recovery_time,
                       float dt) {
     if (!(rest.len > 0.0) || !(dt > 0.0)) return;
