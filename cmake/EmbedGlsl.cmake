@@ -1,4 +1,6 @@
-# Script mode: cmake -DINPUTS="a.vert;b.frag" -DINCLUDE_DIR=dir -DOUTPUT=out.cpp -DNAMESPACE=ns -P EmbedGlsl.cmake
+# Script mode: cmake -DINPUTS="a.vert;b.frag" -DINCLUDE_DIR=dir [-DSHARED_INCLUDE_DIR=dir] -DOUTPUT=out.cpp
+#   -DNAMESPACE=ns -P EmbedGlsl.cmake
+# An #include is looked up in INCLUDE_DIR, then in SHARED_INCLUDE_DIR.
 # Writes each shader as a C++ string with its #include lines inlined (the GL driver has
 # no include support), as `extern const char* const ns::<name>` (blade.vert -> blade_vert).
 #
@@ -17,7 +19,11 @@ function(inline_includes path out_var depth)
   foreach(directive IN LISTS directives)
     string(REGEX REPLACE "#[ \t]*include[ \t]+\"([^\"]+)\"" "\\1" name "${directive}")
     math(EXPR next "${depth} + 1")
-    inline_includes("${INCLUDE_DIR}/${name}" included ${next})
+    set(found "${INCLUDE_DIR}/${name}")
+    if(NOT EXISTS "${found}" AND SHARED_INCLUDE_DIR)
+      set(found "${SHARED_INCLUDE_DIR}/${name}") # a test's shader includes grass's (api/shaders)
+    endif()
+    inline_includes("${found}" included ${next})
     string(REPLACE "${directive}" "${included}" text "${text}")
   endforeach()
   set(${out_var} "${text}" PARENT_SCOPE)

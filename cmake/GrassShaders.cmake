@@ -5,7 +5,8 @@ set(GRASS_SHADER_DIR "${PROJECT_SOURCE_DIR}/api/shaders")
 file(GLOB GRASS_SHADER_INCLUDES CONFIGURE_DEPENDS "${GRASS_SHADER_DIR}/*.glsl")
 
 # Both functions read shaders from GRASS_SHADER_DIR, or from SHADER_DIR when the caller sets
-# it (the test hosts keep their own shaders).
+# it (the test hosts keep their own shaders); an #include is looked up in SHADER_DIR, then in
+# GRASS_SHADER_DIR (a test's shader may include grass's).
 
 # grass_embed_glsl(<out_cpp> <namespace> <shader>...): shader source strings for GL.
 function(grass_embed_glsl out_cpp namespace)
@@ -19,7 +20,7 @@ function(grass_embed_glsl out_cpp namespace)
   string(REPLACE ";" "\\;" inputs_arg "${inputs}")
   add_custom_command(
     OUTPUT "${out_cpp}"
-    COMMAND ${CMAKE_COMMAND} "-DINPUTS=${inputs_arg}" "-DINCLUDE_DIR=${SHADER_DIR}"
+    COMMAND ${CMAKE_COMMAND} "-DINPUTS=${inputs_arg}" "-DINCLUDE_DIR=${SHADER_DIR}" "-DSHARED_INCLUDE_DIR=${GRASS_SHADER_DIR}"
             "-DOUTPUT=${out_cpp}" "-DNAMESPACE=${namespace}" -P "${PROJECT_SOURCE_DIR}/cmake/EmbedGlsl.cmake"
     DEPENDS ${inputs} ${GRASS_SHADER_INCLUDES} "${PROJECT_SOURCE_DIR}/cmake/EmbedGlsl.cmake"
     COMMENT "Embedding GLSL for the GL backend"
@@ -53,7 +54,7 @@ function(grass_compile_spirv out_var namespace)
       COMMAND ${CMAKE_COMMAND} -E make_directory "${CMAKE_CURRENT_BINARY_DIR}/spirv"
       # No -O: spirv-opt's performance recipe made lavapipe's code for the volume tier about
       # 25% slower (docs/records/tier-cost.md); drivers optimise the module themselves.
-      COMMAND ${GRASS_GLSLC} --target-env=vulkan1.1 -Werror -mfmt=c -I "${SHADER_DIR}" ${define_args}
+      COMMAND ${GRASS_GLSLC} --target-env=vulkan1.1 -Werror -mfmt=c -I "${SHADER_DIR}" -I "${GRASS_SHADER_DIR}" ${define_args}
               -o "${inc}" "${SHADER_DIR}/${s}"
       COMMAND ${CMAKE_COMMAND} "-DINPUT=${inc}" "-DNAME=${name}" "-DOUTPUT=${cpp}" "-DNAMESPACE=${namespace}"
               -P "${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake"

@@ -3,7 +3,8 @@
 // the *equilibrium* of the recovery force (eq. 3) against wind (eq. 7-8) and gravity (eq.
 // 4-6), then the state is validated (eq. 9, 11, 13) and capped by the interaction map's
 // press. Included by blade.vert after wind.glsl and interaction.glsl; used only by variants
-// with GRASS_WIND or GRASS_INTERACTION.
+// with GRASS_WIND or GRASS_INTERACTION. The per-blade state (blade_state.glsl) uses its
+// forces, equilibrium and validation.
 
 #ifdef VULKAN
 #define GRASS_BLADE_CURVES_BINDING 12
@@ -59,6 +60,37 @@ float curve_top(vec3 v1, vec3 v2, vec3 up) {
     return h1 > h2 ? h1 * h1 / (2.0 * h1 - h2) : h2;
 }
 
+// One blade's response (grass_blade_mechanics, field.mechanics) with its variation.
+struct BladeMechanics {
+    float stiffness; // recovery (m/s^2 for a tip moved its whole length), at least 1e-3
+    float mass;      // x the gravity difference
+    float response;  // wind response (m/s^2 per m/s)
+};
+
+BladeMechanics blade_mechanics(uint blade, uvec2 cell) {
+    BladeMechanics m;
+    m.stiffness = max(field.mechanics.x * blade_variation(blade, cell, 0u), 1e-3);
+    m.mass = field.mechanics.y * blade_variation(blade, cell, 1u);
+    m.response = field.mechanics.z * blade_variation(blade, cell, 2u);
+    return m;
+}
+
+// The acceleration (world m/s^2) wind and gravity give the tip of a blade of rest tip i2,
+// length `len` and unit `front` (across up): wind (eq. 7-8) aligned with the rest blade,
+// and the gravity difference `gravity` to the standard gravity the rest pose has (eq. 4-6),
+// plus a quarter of its magnitude along the front. The stateless pose balances it against
+// recovery, the per-blade state (blade_state.glsl) is driven by it: the forces are computed
+// here only.
+vec3 blade_forces(BladeMechanics m, vec3 wind, vec3 gravity, vec3 i2, vec3 up, vec3 front, float len) {
+    float wind_speed = length(wind);
+    float f_d = wind_speed > 0.0 ? 1.0 - abs(dot(wind / wind_speed, normalize(i2))) : 0.0;
+    float f_r = clamp(dot(i2, up) / len, 0.0, 1.0);
+    vec3 w = m.response * wind * f_d * f_r;
+    vec3 g_e = m.mass * gravity;
+    vec3 g = g_e + 0.25 * length(g_e) * front;
+    return w + g;
+}
+
 struct BladePose {
     vec3 v1, v2;  // deformed control points relative to the root (world metres)
     float shade;  // press darkening (press_shade)
@@ -87,6 +119,17 @@ void validate_blade(inout BladePose pose, vec3 i1, vec3 i2, vec3 up, float len, 
     pose.v2 = v2;
 }
 
+// The equilibrium of recovery (I_v2 - v2) s against the forces (blade_forces), validated:
+// an acceleration a moves the tip a / s of the blade's length `len`.
+BladePose blade_equilibrium(vec3 i1, vec3 i2, vec3 up, float len, float stiffness, vec3 forces, int segments) {
+    BladePose pose;
+    pose.v1 = i1;
+    pose.v2 = i2 + len * forces / stiffness;
+    pose.shade = 1.0;
+    validate_blade(pose, i1, i2, up, len, len, segments);
+    return pose;
+}
+
 // The deformed pose of blade `blade` of cell `cell`: rest points in world metres relative to
 // the root (`to_world`: patch -> world with the cell's mirroring), root at camera-relative
 // `root`, drawn with `segments` segments; on a height map the root stands at `ground`
@@ -106,25 +149,14 @@ BladePose blade_pose(uint blade, uvec2 cell, mat3 to_world, vec3 root, int segme
     vec3 front = to_world * vec3(cos(c2.w), 0.0, sin(c2.w));
     front = normalize(front - up * dot(front, up) + 1e-12 * up);
 
+    vec3 forces = vec3(0.0);
+    float stiffness = 1.0;
     if (has_map(GRASS_WIND)) {
-        float stiffness = max(field.mechanics.x * blade_variation(blade, cell, 0u), 1e-3);
-        float mass = field.mechanics.y * blade_variation(blade, cell, 1u);
-        float response = field.mechanics.z * blade_variation(blade, cell, 2u);
-        // Wind (eq. 7-8): its alignment theta with the rest blade.
-        vec3 wind = wind_at(root, up, cell_point);
-        float wind_speed = length(wind);
-        float f_d = wind_speed > 0.0 ? 1.0 - abs(dot(wind / wind_speed, normalize(i2))) : 0.0;
-        float f_r = clamp(dot(i2, up) / len, 0.0, 1.0);
-        vec3 w = response * wind * f_d * f_r;
-        // Gravity (eq. 4-6): the difference to the standard gravity the rest pose has, and
-        // a quarter of its magnitude along the blade's front.
-        vec3 g_e = mass * frame.gravity.xyz;
-        vec3 g = g_e + 0.25 * length(g_e) * front;
-        // Equilibrium of recovery (I_v2 - v2) s against w + g: an acceleration a moves the
-        // tip a / s of the blade's length.
-        pose.v2 = i2 + len * (w + g) / stiffness;
+        BladeMechanics m = blade_mechanics(blade, cell);
+        forces = blade_forces(m, wind_at(root, up, cell_point), frame.gravity.xyz, i2, up, front, len);
+        stiffness = m.stiffness;
     }
-    validate_blade(pose, i1, i2, up, len, len, segments);
+    pose = blade_equilibrium(i1, i2, up, len, stiffness, forces, segments);
 
     if (has_map(GRASS_INTERACTION)) {
         float depth = field.trample.x * blade_variation(blade, cell, 3u);

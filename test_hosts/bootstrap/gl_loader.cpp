@@ -32,12 +32,13 @@ std::string gl_renderer(const GlFunctions& gl) {
     return renderer ? renderer : "unknown GL renderer";
 }
 
-GLuint compile_program(const GlFunctions& gl, const char* vertex, const char* fragment, const char* label,
-                       std::string* error) {
-    const char* sources[2] = {vertex, fragment};
-    const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+namespace {
+
+// Compiles `count` shaders of the given stages and links them into a program.
+GLuint link_stages(const GlFunctions& gl, const GLenum* stages, const char* const* sources, int count,
+                   const char* label, std::string* error) {
     const GLuint program = gl.CreateProgram();
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < count; ++k) {
         const GLuint shader = gl.CreateShader(stages[k]);
         gl.ShaderSource(shader, 1, &sources[k], nullptr);
         gl.CompileShader(shader);
@@ -65,6 +66,20 @@ GLuint compile_program(const GlFunctions& gl, const char* vertex, const char* fr
         return 0;
     }
     return program;
+}
+
+} // namespace
+
+GLuint compile_program(const GlFunctions& gl, const char* vertex, const char* fragment, const char* label,
+                       std::string* error) {
+    const char* sources[2] = {vertex, fragment};
+    const GLenum stages[2] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+    return link_stages(gl, stages, sources, 2, label, error);
+}
+
+GLuint compile_compute_program(const GlFunctions& gl, const char* compute, const char* label, std::string* error) {
+    const GLenum stage = GL_COMPUTE_SHADER;
+    return link_stages(gl, &stage, &compute, 1, label, error);
 }
 
 } // namespace grass_bootstrap

@@ -1,6 +1,6 @@
 // The one table of GL 4.5 entry points that the hosts call: the headless GL host
-// (test_hosts/host_gl.cpp), the GL mesh drawer, the viewer's GL window and the OSG adapter's
-// test host. Like grass, a host links no GL library for these: the table is loaded through
+// (test_hosts/host_gl.cpp), the GL mesh drawer, the viewer's GL window, the OSG adapter's
+// test host and the tests that dispatch a compute program of their own. Like grass, a host links no GL library for these: the table is loaded through
 // the context's own loader (eglGetProcAddress, glfwGetProcAddress, OSMesaGetProcAddress).
 // The library's own table (backend_gl/src/gl_functions.hpp) stays inside libgrass: hosts
 // must not link library internals.
@@ -68,7 +68,11 @@ namespace grass_bootstrap {
     X(PFNGLVERTEXARRAYATTRIBFORMATPROC, VertexArrayAttribFormat)                         \
     X(PFNGLVERTEXARRAYATTRIBBINDINGPROC, VertexArrayAttribBinding)                       \
     X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                   \
-    X(PFNGLDRAWELEMENTSBASEVERTEXPROC, DrawElementsBaseVertex)
+    X(PFNGLDRAWELEMENTSBASEVERTEXPROC, DrawElementsBaseVertex)                           \
+    X(PFNGLGETNAMEDBUFFERSUBDATAPROC, GetNamedBufferSubData)                             \
+    X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                                         \
+    X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                                             \
+    X(PFNGLFINISHPROC, Finish)
 
 // A GL entry point by name, as a data pointer (the host's loader behind it).
 using GlProcLoader = void* (*)(void* user_data, const char* name);
@@ -93,5 +97,7 @@ std::string gl_renderer(const GlFunctions& gl);
 // or "<label> program: ...") when GL refuses.
 GLuint compile_program(const GlFunctions& gl, const char* vertex, const char* fragment, const char* label,
                        std::string* error);
+// Likewise, one compute shader (tests that run grass's shader functions on buffers).
+GLuint compile_compute_program(const GlFunctions& gl, const char* compute, const char* label, std::string* error);
 
 } // namespace grass_bootstrap
