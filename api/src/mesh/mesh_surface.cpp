@@ -97,10 +97,6 @@ grass_result check_counts(Log* log, const char* fn, const MeshSurfaceDesc& d) {
 
 } // namespace
 
-double MeshSurface::triangle_area(uint32_t k) const {
-    return cumulative_area_[k] - (k > 0 ? cumulative_area_[k - 1] : 0.0);
-}
-
 uint32_t MeshSurface::triangle_at_area(double a) const {
     const auto it = std::upper_bound(cumulative_area_.begin(), cumulative_area_.end(), a);
     const auto k = static_cast<uint32_t>(it - cumulative_area_.begin());

@@ -41,7 +41,6 @@ public:
     uint32_t host_triangle(uint32_t k) const { return triangles_[k]; }
     // Area in world units (square metres: the transform's scale included).
     double total_area() const { return total_area_; }
-    double triangle_area(uint32_t k) const;
     // The kept triangle whose share of the cumulative area holds `a` in [0, total_area()).
     uint32_t triangle_at_area(double a) const;
     // The vertex indices of the host's triangle t.
