@@ -241,6 +241,41 @@ TEST_F(MeshScatterTest, PoissonTuftsKeepTheirMinimumDistance) {
     EXPECT_TRUE(refused.blades.empty());
 }
 
+TEST_F(MeshScatterTest, TuftRadiusAndDistanceInWorldMetresUnderAScaledTransform) {
+    MeshScatterParams p;
+    p.seeding = MeshSeeding::kTufts;
+    p.density = 50.0; // 4 x 2 m in the world: 400 blades, 50 tufts of 8
+    p.patch_blades = 400;
+    p.tuft_min_distance = 0.15;
+    p.tuft_radius = 0.1;
+    const Mesh sq = square(2);
+    MeshSurfaceDesc d = sq.desc();
+    d.transform[0] = 2.0; // mesh x is twice as long in the world
+    MeshSurface s(&host_);
+    ASSERT_EQ(build(d, &s), GRASS_SUCCESS);
+    EXPECT_NEAR(s.total_area(), 8.0, 1e-9);
+    MeshScatter out(&host_);
+    ASSERT_EQ(grass::scatter_mesh_blades(&log_, "test", s, p, &out), GRASS_SUCCESS) << last();
+    ASSERT_EQ(out.blades.size(), 400u);
+    double farthest = 0, closest = 1e30;
+    for (const MeshBlade& b : out.blades) {
+        const float* c = &out.tuft_centres[b.tuft * 3];
+        const double dx = 2.0 * (b.root[0] - c[0]), dz = b.root[2] - c[2]; // world metres
+        farthest = std::max(farthest, std::sqrt(dx * dx + dz * dz));
+    }
+    const size_t tufts = out.tuft_centres.size() / 3;
+    for (size_t a = 0; a < tufts; ++a) {
+        for (size_t b = a + 1; b < tufts; ++b) {
+            const double dx = 2.0 * (out.tuft_centres[a * 3] - out.tuft_centres[b * 3]),
+                         dz = out.tuft_centres[a * 3 + 2] - out.tuft_centres[b * 3 + 2];
+            closest = std::min(closest, std::sqrt(dx * dx + dz * dz));
+        }
+    }
+    EXPECT_LE(farthest, 0.1 + 1e-5);
+    EXPECT_GT(farthest, 0.09); // the radius is used, in world metres
+    EXPECT_GE(closest, 0.15 - 1e-5);
+}
+
 TEST_F(MeshScatterTest, SameSeedSameBlades) {
     for (MeshSeeding seeding : {MeshSeeding::kSingleBlades, MeshSeeding::kTufts}) {
         MeshScatterParams p;
@@ -369,6 +404,26 @@ TEST_F(MeshScatterTest, BadInputIsRefusedByNameAndLeavesTheSurface) {
     MeshScatter out(&host_);
     EXPECT_EQ(grass::scatter_mesh_blades(&log_, "test", s, p, &out), GRASS_ERROR_INVALID_ARGUMENT);
     EXPECT_NE(last().find("params->density is nan"), std::string::npos) << last();
+    p.density = 100.0;
+    p.patch_blades = 10;
+    EXPECT_EQ(grass::scatter_mesh_blades(&log_, "test", s, p, &out), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(last().find("params->patch_blades is 10"), std::string::npos) << last();
+    p.patch_blades = 1024;
+    p.density = 1e5;
+    Mesh large = square(200); // 4e4 m^2 at 1e5 a square metre: 4e9 blades
+    MeshSurface wide(&host_);
+    ASSERT_EQ(build(large.desc(), &wide), GRASS_SUCCESS);
+    EXPECT_EQ(grass::scatter_mesh_blades(&log_, "test", wide, p, &out), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(last().find("params->density 100000 on 40000 m^2"), std::string::npos) << last();
+    p.density = 100.0;
+    p.thresholds.mode = GRASS_THRESHOLD_CLUSTERED; // clusters over UVs: refused on a mesh without them
+    MeshSurfaceDesc bare = good.desc();
+    bare.uvs = nullptr;
+    MeshSurface no_uvs(&host_);
+    ASSERT_EQ(build(bare, &no_uvs), GRASS_SUCCESS);
+    EXPECT_EQ(grass::scatter_mesh_blades(&log_, "test", no_uvs, p, &out), GRASS_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(last().find("desc->uvs is NULL"), std::string::npos) << last();
+    EXPECT_TRUE(out.blades.empty());
 }
 
 TEST_F(MeshScatterTest, DegenerateTrianglesAreSkippedAndCounted) {
