@@ -14,7 +14,7 @@ namespace grass {
 struct MeshBlade {
     float root[3];     // on the surface (single blades) or in its triangle's plane (a tuft's blades)
     float up[3];       // unit: the surface's normal interpolated at the root (a tuft's: at its centre)
-    float uv[2];       // the mesh's UV there, for the design maps; (0, 0) for a mesh without UVs
+    float uv[2];       // the mesh's UV there (a tuft's: at its centre), for the design maps; (0, 0) without UVs
     float facing;      // radians about `up`, from the tangent of orthonormal_basis (mesh_scatter.hpp)
     float threshold;   // density threshold in (0, 1]: drawn where the density is at least this
     uint32_t triangle; // the host's triangle (first index / 3) the blade grows from
