@@ -21,7 +21,7 @@ import sys
 LAYERS = [
     ("foundation",),
     ("patch", "maps", "timing"),
-    ("bake",),
+    ("bake", "mesh"),
     ("dynamics",),
     ("plan",),
     ("context",),
