@@ -1,5 +1,6 @@
 #include "plan/frame_planner.hpp"
 
+#include "dynamics/blade_window.hpp"
 #include "dynamics/dynamics_plan.hpp"
 #include "foundation/validate.hpp"
 #include "maps/design_map.hpp"
@@ -701,6 +702,11 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
             plan.clear();
             return r;
         }
+    }
+    if (in.first_view) {
+        apply_blade_window(*in.first_view, &plan);
+    } else {
+        plan_blade_window(&plan, in.blade_window, in.patches);
     }
     plan_gbuffer(ext, &plan); // before the others: a G-buffer view receives no shadows nor lights
     plan_shadow_receive(view, ext, camera, &plan);
