@@ -66,12 +66,17 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
     }
     char define[192];
     const bool responsive = (features & kBladeCurveFeatures) != 0;
+    // The blade window's reads only for a context that has the window (GRASS_BLADE_WINDOW=on):
+    // otherwise the responsive variants are today's.
+    const bool window = responsive && ctx->dynamics.blade_window;
     const bool shadows = (features & kFeatureShadowReceive) != 0;
     const bool motion = (features & kFeatureMotion) != 0;
     const bool lights = (features & kFeatureHostLights) != 0;
     const bool gbuffer = (features & kFeatureGBuffer) != 0;
     std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s%s%s%s%s", features,
-                  responsive ? "#define GRASS_RESPONSIVE 1\n#define GRASS_BLADE_WINDOW 1\n" : "",
+                  responsive ? (window ? "#define GRASS_RESPONSIVE 1\n#define GRASS_BLADE_WINDOW 1\n"
+                                       : "#define GRASS_RESPONSIVE 1\n")
+                             : "",
                   shadows ? "#define GRASS_HOST_SHADOWS 1\n" : "", motion ? "#define GRASS_VELOCITY 1\n" : "",
                   lights ? "#define GRASS_HOST_LIGHTS 1\n" : "", gbuffer ? "#define GRASS_GBUFFER 1\n" : "");
     const GLchar* strings[3] = {source, define, newline + 1};

@@ -88,7 +88,7 @@ constexpr GLuint kInteractionImageUnit = 0;
 // Compiles and links the program of `kind` for the feature mask `features` (<
 // kFeatureVariants): the shaders get `#define GRASS_FEATURES <features>u` after their
 // #version line (and `#define GRASS_RESPONSIVE 1` when the mask has one of
-// kBladeCurveFeatures, `#define GRASS_HOST_SHADOWS 1` when it has kFeatureShadowReceive,
+// kBladeCurveFeatures, with `#define GRASS_BLADE_WINDOW 1` in a context with the blade window, `#define GRASS_HOST_SHADOWS 1` when it has kFeatureShadowReceive,
 // `#define GRASS_VELOCITY 1` when it has kFeatureMotion, `#define GRASS_HOST_LIGHTS 1` when
 // it has kFeatureHostLights). On failure the driver's log is in the context's error message
 // (named after `function`) and nothing is left behind.

@@ -10,10 +10,11 @@
 namespace grass_test {
 namespace {
 
-// The window switched off for the contexts made while it lives (GRASS_BLADE_WINDOW=off).
-struct WindowOff {
-    WindowOff() { setenv("GRASS_BLADE_WINDOW", "off", 1); }
-    ~WindowOff() { unsetenv("GRASS_BLADE_WINDOW"); }
+// The window switched on for the contexts made while it lives (GRASS_BLADE_WINDOW=on; off
+// by default).
+struct WindowOn {
+    WindowOn() { setenv("GRASS_BLADE_WINDOW", "on", 1); }
+    ~WindowOn() { unsetenv("GRASS_BLADE_WINDOW"); }
 };
 
 grass_collider ball(double x, double z, double t) {
@@ -35,6 +36,7 @@ protected:
         grass_host::TargetDesc t;
         t.width = 160;
         t.height = 120;
+        const WindowOn on; // the fixture's context has the window
         start(t);
     }
 };
@@ -62,12 +64,12 @@ TEST_P(BladeWindowRenderTest, PosesOnceAFrameDrawWhatPerVertexPosesDrew) {
             if (frame == 2) dynamics_bytes[which] = stats.dynamics_gpu_bytes;
         };
     };
-    const grass_host::Image window = render_default_scene(GetParam(), target, 16, eye, look, 3, scene(0, true));
-    grass_host::Image per_vertex;
+    grass_host::Image window;
     {
-        const WindowOff off;
-        per_vertex = render_default_scene(GetParam(), target, 16, eye, look, 3, scene(1, true));
+        const WindowOn on;
+        window = render_default_scene(GetParam(), target, 16, eye, look, 3, scene(0, true));
     }
+    const grass_host::Image per_vertex = render_default_scene(GetParam(), target, 16, eye, look, 3, scene(1, true));
     const grass_host::Image still = render_default_scene(GetParam(), target, 16, eye, look, 3, scene(2, false));
     save(window, "window");
     save(per_vertex, "per_vertex");

@@ -111,7 +111,7 @@ void apply_blade_window(const FramePlan& first, FramePlan* plan) {
 
 bool blade_window_enabled_by_environment() {
     const char* value = std::getenv("GRASS_BLADE_WINDOW");
-    return !(value && (std::strcmp(value, "off") == 0 || std::strcmp(value, "0") == 0));
+    return value && (std::strcmp(value, "on") == 0 || std::strcmp(value, "1") == 0);
 }
 
 } // namespace grass

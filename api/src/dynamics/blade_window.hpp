@@ -44,9 +44,11 @@ void plan_blade_window(FramePlan* plan, bool enabled, const HandlePool<Patch>& p
 // A later view of the frame: its responsive draws read view 0's tables.
 void apply_blade_window(const FramePlan& first, FramePlan* plan);
 
-// The GRASS_BLADE_WINDOW environment variable: "off" or "0" turns the window off for
-// contexts made afterwards (the poses are then computed in the vertex shader, as before the
-// window: a diagnostic and the tests' reference).
+// The GRASS_BLADE_WINDOW environment variable: "on" or "1" turns the window on for contexts
+// made afterwards; otherwise the poses are computed in the vertex shader, as before the
+// window. Off by default: on llvmpipe the responsive variants still run their per-vertex
+// fallback (both sides of a branch run there), so the pass only adds its cost
+// (docs/records/blade-pass.md); a variant without the fallback is the next step.
 bool blade_window_enabled_by_environment();
 
 } // namespace grass
