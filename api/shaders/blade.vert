@@ -11,7 +11,7 @@
 #include "interaction.glsl"
 #include "blade_dynamics.glsl"
 #include "blade_culling.glsl"
-#ifdef GRASS_BLADE_WINDOW // the blade window's poses (GL's responsive variants)
+#ifdef GRASS_BLADE_WINDOW // the blade window's variant (kFeatureBladeWindow): poses read, not computed
 #include "blade_window.glsl"
 #endif
 #endif
@@ -90,14 +90,14 @@ void main() {
         if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
             // Responsive grass (blade_dynamics.glsl): the blade's curve moves from its rest pose
             // I to the deformed one; each vertex keeps its offset across the blade (its width).
-            // The pose from the blade window where it holds the blade's cell, else computed here
-            // by the same step (cell_blade_pose).
+            // The window variant (a draw whose cells the blade window all holds) reads the pose
+            // the pass wrote; the others compute it here by the same step (cell_blade_pose).
             int segments = int(per_blade / 2u) - 1;
-            BladePose pose;
 #ifdef GRASS_BLADE_WINDOW
-            if (!window_pose(i_cell.xy, blade, pose))
+            BladePose pose = window_pose(i_cell.xy, blade);
+#else
+            BladePose pose = cell_blade_pose(blade, i_cell.xy, GRASS_INSTANCE_ORIGIN(i_origin.xyz), a_root_shape.xy, segments);
 #endif
-                pose = cell_blade_pose(blade, i_cell.xy, GRASS_INSTANCE_ORIGIN(i_origin.xyz), a_root_shape.xy, segments);
             v1 = pose.v1;
             v2 = pose.v2;
             float t = a_root_shape.w;

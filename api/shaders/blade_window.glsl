@@ -1,7 +1,7 @@
 // The blade window (docs/responsive.md "The blade window", api/src/dynamics/blade_window.hpp):
 // the poses of the blades of the cells that view 0 draws in a geometry tier, computed once
-// per frame by blade_window.comp, read by every view's blade.vert. Compiled only where
-// GRASS_BLADE_WINDOW is defined (the GL backend's responsive variants and its pass).
+// per frame by blade_window.comp, read by blade.vert's window variant (GRASS_BLADE_WINDOW:
+// a draw whose cells the window all holds). Compiled only there and in the pass.
 //
 // The table: per field, side x side entries (field.transition.y: the side, 0 where the field
 // has no window; field.transition.z: its first entry), toroidally addressed by cell
@@ -34,22 +34,19 @@ layout(std430, binding = GRASS_WINDOW_TABLE_BINDING) readonly buffer BladeWindow
     uvec4 window_table[];
 };
 
-// The pose of blade `blade` of cell `cell` from the window: false where the field has no
-// window or the window holds no pose for the cell (the caller computes it then).
-bool window_pose(uvec2 cell, uint blade, out BladePose pose) {
-    pose.v1 = vec3(0.0);
-    pose.v2 = vec3(0.0);
-    pose.shade = 1.0;
+// The pose of blade `blade` of cell `cell` from the window. Only the window variant
+// (GRASS_BLADE_WINDOW) reads it, on a draw whose cells the window all holds (the core's
+// choice, dynamics/blade_window.hpp): the cell's entry is its own.
+BladePose window_pose(uvec2 cell, uint blade) {
     uint side = uint(field.transition.y + 0.5);
-    if (side == 0u) return false;
     uvec4 entry = window_table[uint(field.transition.z + 0.5) + (cell.y % side) * side + cell.x % side];
-    if (entry.x != cell.x || entry.y != cell.y) return false;
     uint at = window_pose_index(entry.z, entry.w, blade);
     vec4 a = window_poses[at];
     vec4 b = window_poses[at + 1u];
+    BladePose pose;
     pose.v1 = a.xyz;
     pose.shade = a.w;
     pose.v2 = b.xyz;
-    return true;
+    return pose;
 }
 #endif

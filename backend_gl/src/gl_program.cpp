@@ -66,9 +66,8 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
     }
     char define[192];
     const bool responsive = (features & kBladeCurveFeatures) != 0;
-    // The blade window's reads only for a context that has the window (GRASS_BLADE_WINDOW=on):
-    // otherwise the responsive variants are today's.
-    const bool window = responsive && ctx->dynamics.blade_window;
+    // The blade window's variant (kFeatureBladeWindow): the poses read from the window only.
+    const bool window = responsive && (features & kFeatureBladeWindow) != 0;
     const bool shadows = (features & kFeatureShadowReceive) != 0;
     const bool motion = (features & kFeatureMotion) != 0;
     const bool lights = (features & kFeatureHostLights) != 0;

@@ -1,6 +1,7 @@
 // The blade window's plan (api/src/dynamics/blade_window.hpp): the table's side from the
 // geometry tiers' reach, a slot per instance of view 0's responsive geometry draws, the
-// table's entries, what later views read, and nothing at all for still grass.
+// table's entries, what later views read, which draws get the window's variant, and nothing
+// at all for still grass.
 #include "dynamics/blade_window.hpp"
 #include "plan/field.hpp"
 
@@ -136,6 +137,56 @@ TEST(BladeWindowTest, LaterViewsReadViewZerosTables) {
     EXPECT_EQ(later.draws[0].uniforms.transition[1], 72.0f);
     EXPECT_EQ(later.draws[1].uniforms.transition[1], 0.0f);
     EXPECT_TRUE(later.blade_window.dispatches.empty()); // one pass a frame: view 0's
+}
+
+// The core chooses the variant per draw: the window's (kFeatureBladeWindow, no per-vertex
+// pose code) for a responsive geometry draw whose cells the window all holds, the
+// per-vertex one for a draw with any cell it does not hold, in view 0 and in later views.
+TEST(BladeWindowTest, TheWindowVariantOnlyForDrawsWhoseCellsItAllHolds) {
+    constexpr uint32_t kWindow = grass::kFeatureBladeWindow;
+    Fixture f(10);
+    f.add_draw(0, GRASS_TIER_GEOMETRY, grass::kFeatureWind, {{1, 1}, {2, 1}});
+    f.add_draw(1, GRASS_TIER_GEOMETRY, grass::kFeatureInteraction, {{1, 1}, {73, 1}}); // 73 mod 72 = 1: taken
+    f.add_draw(0, GRASS_TIER_VOLUME, grass::kFeatureWind, {{9, 9}});
+    f.add_draw(2, GRASS_TIER_GEOMETRY, 0u, {{5, 5}}); // still grass
+    grass::plan_blade_window(&f.plan, true, f.patches);
+    const uint32_t expected[4] = {grass::kFeatureWind | kWindow, grass::kFeatureInteraction, grass::kFeatureWind, 0u};
+    for (uint32_t d = 0; d < 4; ++d) {
+        EXPECT_EQ(f.plan.draws[d].features, expected[d]) << d;
+        EXPECT_EQ(f.plan.draws[d].uniforms.tiling[3], float(expected[d])) << d; // the uniforms agree
+    }
+
+    // A later view: a draw of held cells only, one with a cell view 0 did not draw, one of a
+    // field without a window; a bit left from an earlier plan is taken back.
+    FramePlan later(&f.host);
+    auto add_later = [&](uint32_t field, const std::vector<std::pair<uint32_t, uint32_t>>& cells) {
+        TierDraw draw{};
+        draw.kind = GRASS_TIER_GEOMETRY;
+        draw.field_slot = field;
+        draw.features = grass::kFeatureWind | kWindow;
+        draw.first_instance = static_cast<uint32_t>(later.instances.size());
+        draw.instance_count = static_cast<uint32_t>(cells.size());
+        for (const auto& c : cells) {
+            TierInstance instance{};
+            instance.cell[0] = c.first;
+            instance.cell[1] = c.second;
+            later.instances.push_back(instance);
+        }
+        later.draws.push_back(draw);
+    };
+    add_later(0, {{2, 1}, {1, 1}});
+    add_later(0, {{1, 1}, {3, 1}});
+    add_later(7, {{1, 1}});
+    grass::apply_blade_window(f.plan, &later);
+    EXPECT_EQ(later.draws[0].features, grass::kFeatureWind | kWindow);
+    EXPECT_EQ(later.draws[1].features, grass::kFeatureWind);
+    EXPECT_EQ(later.draws[2].features, grass::kFeatureWind);
+
+    // A backend without the pass: every draw keeps the per-vertex variant.
+    Fixture off(10);
+    off.add_draw(0, GRASS_TIER_GEOMETRY, grass::kFeatureWind, {{1, 1}});
+    grass::plan_blade_window(&off.plan, false, off.patches);
+    EXPECT_EQ(off.plan.draws[0].features, grass::kFeatureWind);
 }
 
 // Still grass (no wind, no colliders), a switched-off window and the debug boxes plan none.

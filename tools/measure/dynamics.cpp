@@ -292,8 +292,7 @@ Subcommand add_dynamics(CLI::App& measure) {
         ->check(grass_sample::at_least(1));
     app->add_flag("--quick", o->quick, "the image tier and no grass, crowds of 1 and 100 only (a smoke run)");
     app->add_flag("--blades", o->blades,
-                  "the geometry tier alone: still, wind, crowds of 1, 100 and 1000 (the blade window's cost; "
-                  "GRASS_BLADE_WINDOW=off measures the per-vertex poses)");
+                  "the geometry tier alone: still, wind, crowds of 1, 100 and 1000 (the blade window's cost)");
     return {app, [o]() { return dynamics::run(*o); }};
 }
 

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
 
 namespace grass {
 
@@ -28,6 +26,34 @@ void set_table(FieldUniforms* u, const BladeWindowField& f) {
 
 bool responsive_geometry(const TierDraw& draw) {
     return draw.kind == GRASS_TIER_GEOMETRY && (draw.features & (kFeatureWind | kFeatureInteraction)) != 0;
+}
+
+// Whether `window` holds the poses of every instance of `draw`: each cell's entry is that
+// cell's (a field's draws share its patch, so the entry's blades are the draw's).
+bool holds_every_cell(const BladeWindowPlan& window, const FramePlan& plan, const TierDraw& draw) {
+    const BladeWindowField* f = find_field(window, draw.field_slot);
+    if (!f || f->side == 0 || draw.instance_count == 0) return false;
+    for (uint32_t i = 0; i < draw.instance_count; ++i) {
+        const TierInstance& instance = plan.instances[draw.first_instance + i];
+        const uint32_t* entry =
+            window.table.data() +
+            (size_t(f->first_entry) + size_t(instance.cell[1] % f->side) * f->side + instance.cell[0] % f->side) *
+                kEntryWords;
+        if (entry[0] != instance.cell[0] || entry[1] != instance.cell[1]) return false;
+    }
+    return true;
+}
+
+// Gives the window variant (kFeatureBladeWindow) to the responsive geometry draws of `plan`
+// whose cells `window` all holds; the others keep the per-vertex variant.
+void mark_held_draws(const BladeWindowPlan& window, FramePlan* plan) {
+    for (TierDraw& draw : plan->draws) {
+        draw.features &= ~kFeatureBladeWindow;
+        if (responsive_geometry(draw) && holds_every_cell(window, *plan, draw)) {
+            draw.features |= kFeatureBladeWindow;
+        }
+        draw.uniforms.tiling[3] = draw.features;
+    }
 }
 
 } // namespace
@@ -99,6 +125,7 @@ void plan_blade_window(FramePlan* plan_out, bool enabled, const HandlePool<Patch
         if ((draw.features & (kFeatureWind | kFeatureInteraction)) == 0 || draw.kind != GRASS_TIER_GEOMETRY) continue;
         if (const BladeWindowField* f = find_field(window, draw.field_slot)) set_table(&draw.uniforms, *f);
     }
+    mark_held_draws(plan.blade_window, &plan);
 }
 
 void apply_blade_window(const FramePlan& first, FramePlan* plan) {
@@ -107,11 +134,7 @@ void apply_blade_window(const FramePlan& first, FramePlan* plan) {
         if (!responsive_geometry(draw)) continue;
         if (const BladeWindowField* f = find_field(first.blade_window, draw.field_slot)) set_table(&draw.uniforms, *f);
     }
-}
-
-bool blade_window_enabled_by_environment() {
-    const char* value = std::getenv("GRASS_BLADE_WINDOW");
-    return value && (std::strcmp(value, "on") == 0 || std::strcmp(value, "1") == 0);
+    mark_held_draws(first.blade_window, plan);
 }
 
 } // namespace grass

@@ -4,8 +4,9 @@
 // per-blade step cell_blade_pose of blade_dynamics.glsl), after the interaction pass. Every
 // view of the frame reads them through a table per field of side x side entries,
 // toroidally addressed by cell, which covers the band the field's geometry tiers draw in;
-// a cell without a slot (outside view 0's frustum, a far shadow cascade) computes its poses
-// in the vertex shader as before. View-independent: a blade's shadow and the blade agree.
+// a draw with a cell without a slot (outside view 0's frustum, a far shadow cascade) keeps
+// the per-vertex variant, which computes every pose in the vertex shader as before; a draw
+// whose cells all have one gets the window variant (kFeatureBladeWindow), which only reads. View-independent: a blade's shadow and the blade agree.
 // Planned only for frames with wind or colliders; still grass plans nothing here.
 #pragma once
 
@@ -37,18 +38,13 @@ uint32_t blade_window_side(double reach, double cell_size, uint32_t cells_x, uin
 
 // View 0: plans the window from plan->draws (their features, uniforms and instances) and
 // writes each responsive draw's table (FieldUniforms::transition y, z) and, for the pass,
-// its first slot and instance (tiers[3], transition[3]). `enabled` false (the
-// GRASS_BLADE_WINDOW=off knob) plans none.
+// its first slot and instance (tiers[3], transition[3]), and gives the draws whose cells it
+// all holds the window variant (kFeatureBladeWindow). `enabled` false (a backend without
+// the pass) plans none.
 void plan_blade_window(FramePlan* plan, bool enabled, const HandlePool<Patch>& patches);
 
-// A later view of the frame: its responsive draws read view 0's tables.
+// A later view of the frame: its responsive draws read view 0's tables; those whose cells
+// view 0's window all holds get the window variant.
 void apply_blade_window(const FramePlan& first, FramePlan* plan);
-
-// The GRASS_BLADE_WINDOW environment variable: "on" or "1" turns the window on for contexts
-// made afterwards; otherwise the poses are computed in the vertex shader, as before the
-// window. Off by default: on llvmpipe the responsive variants still run their per-vertex
-// fallback (both sides of a branch run there), so the pass only adds its cost
-// (docs/records/blade-pass.md); a variant without the fallback is the next step.
-bool blade_window_enabled_by_environment();
 
 } // namespace grass

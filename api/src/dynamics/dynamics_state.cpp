@@ -1,6 +1,5 @@
 #include "dynamics/dynamics_state.hpp"
 
-#include "dynamics/blade_window.hpp"
 #include "dynamics/interaction_map.hpp"
 #include "dynamics/wind.hpp"
 
@@ -10,7 +9,6 @@ DynamicsState::DynamicsState(HostAllocator* host)
     : wind(default_wind_desc()), colliders(StlAllocator<grass_collider>(host)),
       previous_colliders(StlAllocator<grass_collider>(host)), interaction(default_interaction_desc()),
       pending_colliders(StlAllocator<grass_collider>(host)), tile_rects(StlAllocator<TileRect>(host)),
-      tile_fill(StlAllocator<uint32_t>(host)), collider_low(StlAllocator<float>(host)),
-      blade_window(blade_window_enabled_by_environment()) {}
+      tile_fill(StlAllocator<uint32_t>(host)), collider_low(StlAllocator<float>(host)) {}
 
 } // namespace grass

@@ -54,9 +54,6 @@ struct DynamicsState {
     uint32_t most_in_tile = 0;
     uint32_t most_level = 0;
     bool tile_cap_said = false; // GRASS_MSG_COLLIDER_TILE_CAP: once per context
-    // The blade window (blade_window.hpp): on when GRASS_BLADE_WINDOW=on as the context was
-    // made (off by default).
-    bool blade_window = true;
 };
 
 } // namespace grass
