@@ -1,4 +1,4 @@
-// The blade window (docs/responsive.md "The blade window", api/src/dynamics/blade_window.hpp):
+// The blade window (docs/responsive.md "The blade window", api/src/plan/blade_window.hpp):
 // the poses of the blades of the cells that view 0 draws in a geometry tier, computed once
 // per frame by blade_window.comp, read by blade.vert's window variant (GRASS_BLADE_WINDOW:
 // a draw whose cells the window all holds). Compiled only there and in the pass.
@@ -36,7 +36,7 @@ layout(std430, binding = GRASS_WINDOW_TABLE_BINDING) readonly buffer BladeWindow
 
 // The pose of blade `blade` of cell `cell` from the window. Only the window variant
 // (GRASS_BLADE_WINDOW) reads it, on a draw whose cells the window all holds (the core's
-// choice, dynamics/blade_window.hpp): the cell's entry is its own.
+// choice, plan/blade_window.hpp): the cell's entry is its own.
 BladePose window_pose(uvec2 cell, uint blade) {
     uint side = uint(field.transition.y + 0.5);
     uvec4 entry = window_table[uint(field.transition.z + 0.5) + (cell.y % side) * side + cell.x % side];

@@ -1,5 +1,5 @@
 // The blade window pass in the GL backend (docs/responsive.md "The blade window",
-// api/src/dynamics/blade_window.hpp): once per frame, in the frame's first grass_gl_render
+// api/src/plan/blade_window.hpp): once per frame, in the frame's first grass_gl_render
 // after the interaction pass, one dispatch of blade_window.comp per geometry draw of view 0
 // that the core gave slots, then glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT). Every view's
 // responsive geometry draws then read the window's table (shader storage binding 1) and

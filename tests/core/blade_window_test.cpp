@@ -1,8 +1,8 @@
-// The blade window's plan (api/src/dynamics/blade_window.hpp): the table's side from the
+// The blade window's plan (api/src/plan/blade_window.hpp): the table's side from the
 // geometry tiers' reach, a slot per instance of view 0's responsive geometry draws, the
 // table's entries, what later views read, which draws get the window's variant, and nothing
 // at all for still grass.
-#include "dynamics/blade_window.hpp"
+#include "plan/blade_window.hpp"
 #include "plan/field.hpp"
 
 #include <gtest/gtest.h>

@@ -109,7 +109,7 @@ public:
     // Responsive grass: the part of gpu_bytes() that it holds: the interaction map's levels
     // and the uploaded blade curves (grass_memory_stats.dynamics_gpu_bytes).
     virtual uint64_t dynamics_gpu_bytes() const = 0;
-    // Whether it runs the blade window pass (dynamics/blade_window.hpp) of view 0's plan and
+    // Whether it runs the blade window pass (plan/blade_window.hpp) of view 0's plan and
     // its responsive geometry draws read the window: the core plans one only then.
     virtual bool runs_blade_window() const = 0;
     // The device memory per heap (grass_memory_stats from heap_count on); a backend that

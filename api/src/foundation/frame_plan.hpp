@@ -236,7 +236,7 @@ struct InteractionPlan {
     }
 };
 
-// The blade window of a frame (dynamics/blade_window.hpp, api/shaders/blade_window.glsl):
+// The blade window of a frame (plan/blade_window.hpp, api/shaders/blade_window.glsl):
 // view 0's plan holds it; empty dispatches: no pass and no buffers (still grass).
 constexpr uint64_t kBladeWindowPoseBytes = 32; // two vec4 per blade and slot
 constexpr uint32_t kNoWindowEntry = 0xffffffffu;

@@ -71,7 +71,7 @@ constexpr uint32_t kFeatureHostLights = 1u << 13;
 // colour, with the depth pass's coverage. Set on every draw of such a view's plan and no other.
 constexpr uint32_t kFeatureGBuffer = 1u << 14;
 // A responsive geometry draw whose instances' cells the blade window holds, every one, this
-// frame (dynamics/blade_window.hpp; GRASS_BLADE_WINDOW in the shaders): its variant reads
+// frame (plan/blade_window.hpp; GRASS_BLADE_WINDOW in the shaders): its variant reads
 // each blade's pose from the window and has no per-vertex pose code. Set by the core only
 // for a backend that runs the window pass (Backend::runs_blade_window); a draw with any cell
 // the window does not hold keeps the per-vertex variant.

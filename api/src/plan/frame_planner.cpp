@@ -1,9 +1,9 @@
 #include "plan/frame_planner.hpp"
 
-#include "dynamics/blade_window.hpp"
 #include "dynamics/dynamics_plan.hpp"
 #include "foundation/validate.hpp"
 #include "maps/design_map.hpp"
+#include "plan/blade_window.hpp"
 #include "plan/gbuffer_plan.hpp"
 #include "plan/lights_plan.hpp"
 #include "plan/lod_setup.hpp"

@@ -1,4 +1,4 @@
-#include "dynamics/blade_window.hpp"
+#include "plan/blade_window.hpp"
 
 #include "plan/field.hpp"
 
