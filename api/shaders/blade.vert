@@ -11,6 +11,9 @@
 #include "interaction.glsl"
 #include "blade_dynamics.glsl"
 #include "blade_culling.glsl"
+#ifdef GRASS_BLADE_WINDOW // the blade window's variant (kFeatureBladeWindow): poses read, not computed
+#include "blade_window.glsl"
+#endif
 #endif
 
 layout(location = 0) in vec3 a_position;     // patch units
@@ -87,8 +90,14 @@ void main() {
         if (has_map(GRASS_WIND | GRASS_INTERACTION)) {
             // Responsive grass (blade_dynamics.glsl): the blade's curve moves from its rest pose
             // I to the deformed one; each vertex keeps its offset across the blade (its width).
+            // The window variant (a draw whose cells the blade window all holds) reads the pose
+            // the pass wrote; the others compute it here by the same step (cell_blade_pose).
             int segments = int(per_blade / 2u) - 1;
-            BladePose pose = blade_pose(blade, i_cell.xy, to_world, root_position, segments, cell_point, ground);
+#ifdef GRASS_BLADE_WINDOW
+            BladePose pose = window_pose(i_cell.xy, blade);
+#else
+            BladePose pose = cell_blade_pose(blade, i_cell.xy, GRASS_INSTANCE_ORIGIN(i_origin.xyz), a_root_shape.xy, segments);
+#endif
             v1 = pose.v1;
             v2 = pose.v2;
             float t = a_root_shape.w;
@@ -97,7 +106,7 @@ void main() {
             position = bezier(pose.v1, pose.v2, t) + root_position + offset;
 #ifdef GRASS_VELOCITY
             g_previous_time = true; // the pose at the previous frame's time (motion.glsl)
-            BladePose before = blade_pose(blade, i_cell.xy, to_world, root_position, segments, cell_point, ground);
+            BladePose before = cell_blade_pose(blade, i_cell.xy, GRASS_INSTANCE_ORIGIN(i_origin.xyz), a_root_shape.xy, segments);
             g_previous_time = false;
             previous = bezier(before.v1, before.v2, t) + root_position + offset;
 #endif

@@ -2,9 +2,9 @@
 // rest pose I_v1, I_v2 from the BladeCurves buffer). Without state per blade, the tip v2 is
 // the *equilibrium* of the recovery force (eq. 3) against wind (eq. 7-8) and gravity (eq.
 // 4-6), then the state is validated (eq. 9, 11, 13) and capped by the interaction map's
-// press. Included by blade.vert after wind.glsl and interaction.glsl; used only by variants
-// with GRASS_WIND or GRASS_INTERACTION. The per-blade state (blade_state.glsl) uses its
-// forces, equilibrium and validation.
+// press. Included by blade.vert and blade_window.comp after lighting.glsl (mirror_signs),
+// wind.glsl and interaction.glsl; used only by variants with GRASS_WIND or GRASS_INTERACTION.
+// The per-blade state (blade_state.glsl) uses its forces, equilibrium and validation.
 
 #ifdef VULKAN
 #define GRASS_BLADE_CURVES_BINDING 12
@@ -210,4 +210,19 @@ BladePose blade_pose(uint blade, uvec2 cell, mat3 to_world, vec3 root, int segme
         }
     }
     return pose;
+}
+
+// The per-blade step (docs/responsive.md "The blade window"): the pose of blade `blade` of
+// cell `cell`, whose (0, 0) corner lies at `origin` (m, relative to the view's eye), from
+// the blade's root `root_patch` (patch units, before the cell's mirroring), drawn with
+// `segments` segments. blade_window.comp runs it once per blade and frame; blade.vert runs
+// it where the window holds no pose for the blade.
+BladePose cell_blade_pose(uint blade, uvec2 cell, vec3 origin, vec2 root_patch, int segments) {
+    vec2 s = mirror_signs(cell);
+    vec2 root = (root_patch - 0.5) * s + 0.5;
+    vec2 cell_point = vec2(cell) + root;
+    float ground = terrain_height(cell_point);
+    vec3 root_position = mat3(field.patch_to_world) * vec3(root.x, ground, root.y) + origin;
+    mat3 to_world = mat3(field.patch_to_world) * mat3(vec3(s.x, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, s.y));
+    return blade_pose(blade, cell, to_world, root_position, segments, cell_point, ground);
 }

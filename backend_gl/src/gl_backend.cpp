@@ -185,6 +185,7 @@ GlBackend::~GlBackend() {
         tile_colliders_[l].destroy(gl_);
     }
     release_interaction_map();
+    release_blade_window();
     if (interaction_program_ != 0) gl_.DeleteProgram(interaction_program_);
     if (sampler_ != 0) gl_.DeleteSamplers(1, &sampler_);
     if (slice_sampler_ != 0) gl_.DeleteSamplers(1, &slice_sampler_);
@@ -512,6 +513,7 @@ grass_result GlBackend::begin_host_frame(const char*, const HostFrame&, bool) {
     // grass_gl_render_view that draws it, where the host's GL context is current by contract.
     uploaded_view_ = kNoView;
     interaction_ran_ = false;
+    window_ran_ = false;
     timer_ring_.close_frame(); // a frame's timer set is closed when it ends; this is a safeguard
     frame_timer_opened_ = false;
     return GRASS_SUCCESS;

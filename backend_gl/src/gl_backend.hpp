@@ -53,6 +53,7 @@ public:
     // Responsive grass (gl_dynamics.cpp).
     grass_result upload_blade_curves(uint32_t slot, const PatchData& patch) override;
     uint64_t dynamics_gpu_bytes() const override;
+    bool runs_blade_window() const override { return true; }
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
     // The host's GL context of this grass context is current (gl_current.cpp).
     grass_result check_current(const char* function) override;
@@ -232,6 +233,21 @@ private:
     GlStreamBuffer colliders_;
     GlStreamBuffer tile_offsets_[2];
     GlStreamBuffer tile_colliders_[2];
+    // gl_blade_window.cpp: the blade window pass (plan.blade_window of view 0), run by the
+    // frame's first render after the interaction pass; its programs per feature mask
+    // (kBladeWindowPassFeatures), made on first use; the table (made on the first pass) and
+    // the poses, grown as a frame needs.
+    grass_result run_blade_window_pass(const FramePlan& plan, const char* function);
+    grass_result blade_window_program(const char* function, uint32_t features, GLuint* out_program);
+    void bind_blade_window() const; // for the responsive geometry draws: table and poses
+    uint64_t blade_window_bytes() const;
+    void release_blade_window_buffers(); // a frame without a window: still grass holds none
+    void release_blade_window();
+    GLuint window_programs_[kBladeWindowPassFeatures + 1] = {};
+    GlStreamBuffer window_table_;
+    GLuint window_poses_ = 0;
+    uint64_t window_pose_capacity_ = 0;
+    bool window_ran_ = false; // this frame's blade window pass has run
 };
 
 } // namespace grass

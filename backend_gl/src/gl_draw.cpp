@@ -137,6 +137,7 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
         gl_.BindVertexArray(patch.vertex_array);
         if ((draw.features & kBladeCurveFeatures) != 0) {
             gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kBladeCurvesStorageBinding, patch.curves);
+            bind_blade_window();
         }
         bind_field_maps(fields_[draw.field_slot], draw.features);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
@@ -213,10 +214,14 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
     // The interaction pass runs once per frame, at its first render of any view, even when
     // nothing is drawn: trails age.
     const bool pass_pending = first.interaction.pass && !interaction_ran_;
-    if (plan.draws.empty() && !pass_pending) return GRASS_SUCCESS;
+    // So does the blade window pass (gl_blade_window.cpp), after it. A frame without a
+    // window keeps no buffers of it.
+    if (first.blade_window.dispatches.empty() && window_poses_ != 0) release_blade_window_buffers();
+    const bool window_pending = !first.blade_window.dispatches.empty() && !window_ran_;
+    if (plan.draws.empty() && !pass_pending && !window_pending) return GRASS_SUCCESS;
     const bool debug = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
     // Responsive grass: draws that read the blade curves or the interaction map.
-    bool dynamics = pass_pending;
+    bool dynamics = pass_pending || window_pending;
     bool reads_map = false;
     for (const TierDraw& draw : plan.draws) {
         dynamics = dynamics || (draw.features & (kFeatureWind | kFeatureInteraction)) != 0;
@@ -261,8 +266,9 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
     RenderTarget target;
     target.samples = sample_count;
     target.clip_zero_to_one = clip_depth_mode == GL_ZERO_TO_ONE;
-    // The interaction pass reads its blocks from view 0's upload.
-    if (pass_pending && (uploaded_view_ != 0 || frame_target_ != target)) upload_frame(target, 0);
+    // The interaction and blade window passes read their blocks (and the window pass view 0's
+    // instances) from view 0's upload.
+    if ((pass_pending || window_pending) && (uploaded_view_ != 0 || frame_target_ != target)) upload_frame(target, 0);
 
     GlDrawStateGuard guard(gl_, dynamics);                // also makes texture unit 0 active
     const DebugGroup render_group(*this, "grass render"); // popped before the guard restores
@@ -272,6 +278,12 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
         interaction_ran_ = true;
         const DebugGroup group(*this, "grass interaction pass");
         const grass_result result = run_interaction_pass(first, function);
+        if (result != GRASS_SUCCESS) return result;
+    }
+    if (window_pending) { // after the interaction pass: the poses read the map as it is now
+        window_ran_ = true;
+        const DebugGroup group(*this, "grass blade window pass");
+        const grass_result result = run_blade_window_pass(first, function);
         if (result != GRASS_SUCCESS) return result;
     }
     if (plan.draws.empty()) return GRASS_SUCCESS;

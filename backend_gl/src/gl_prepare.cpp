@@ -20,8 +20,11 @@ grass_result GlBackend::prepare_variants(const char* function, const ShaderVaria
                                          const GBufferLayout* /*gbuffer*/) {
     for (uint32_t i = 0; i < count; ++i) {
         GLuint unused = 0;
-        const grass_result result =
+        grass_result result =
             program(static_cast<GlProgramKind>(variants[i].program), variants[i].features, function, &unused);
+        // A window variant's draws are posed by the blade window pass of its maps and bits.
+        if (result == GRASS_SUCCESS && (variants[i].features & kFeatureBladeWindow) != 0)
+            result = blade_window_program(function, variants[i].features, &unused);
         if (result != GRASS_SUCCESS) return result;
     }
     if (interaction_pass && interaction_program_ == 0) {

@@ -15,6 +15,7 @@ extern const char* const image_frag;
 extern const char* const volume_vert;
 extern const char* const volume_frag;
 extern const char* const interaction_comp;
+extern const char* const blade_window_comp;
 } // namespace grass_gl_shaders
 
 namespace grass {
@@ -65,14 +66,18 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
     }
     char define[192];
     const bool responsive = (features & kBladeCurveFeatures) != 0;
+    // The blade window's variant (kFeatureBladeWindow): the poses read from the window only.
+    const bool window = responsive && (features & kFeatureBladeWindow) != 0;
     const bool shadows = (features & kFeatureShadowReceive) != 0;
     const bool motion = (features & kFeatureMotion) != 0;
     const bool lights = (features & kFeatureHostLights) != 0;
     const bool gbuffer = (features & kFeatureGBuffer) != 0;
     std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s%s%s%s%s", features,
-                  responsive ? "#define GRASS_RESPONSIVE 1\n" : "", shadows ? "#define GRASS_HOST_SHADOWS 1\n" : "",
-                  motion ? "#define GRASS_VELOCITY 1\n" : "", lights ? "#define GRASS_HOST_LIGHTS 1\n" : "",
-                  gbuffer ? "#define GRASS_GBUFFER 1\n" : "");
+                  responsive ? (window ? "#define GRASS_RESPONSIVE 1\n#define GRASS_BLADE_WINDOW 1\n"
+                                       : "#define GRASS_RESPONSIVE 1\n")
+                             : "",
+                  shadows ? "#define GRASS_HOST_SHADOWS 1\n" : "", motion ? "#define GRASS_VELOCITY 1\n" : "",
+                  lights ? "#define GRASS_HOST_LIGHTS 1\n" : "", gbuffer ? "#define GRASS_GBUFFER 1\n" : "");
     const GLchar* strings[3] = {source, define, newline + 1};
     const GLint lengths[3] = {static_cast<GLint>(newline + 1 - source), -1, -1};
 
@@ -164,6 +169,20 @@ grass_result create_interaction_program(grass_context* ctx, const GlFunctions& g
     return link(ctx, gl, function, "the interaction pass program", 0, &comp, 1, out_program);
 }
 
+grass_result create_blade_window_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                         uint32_t features, GLuint* out_program) {
+    GLuint comp = 0;
+    const grass_result result = compile(ctx, gl, function, GL_COMPUTE_SHADER, "blade_window.comp",
+                                        grass_gl_shaders::blade_window_comp, features, &comp);
+    if (result != GRASS_SUCCESS) return result;
+    GLuint program = 0;
+    const grass_result linked = link(ctx, gl, function, "the blade window pass program", features, &comp, 1, &program);
+    if (linked != GRASS_SUCCESS) return linked;
+    set_sampler_units(gl, program);
+    *out_program = program;
+    return GRASS_SUCCESS;
+}
+
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
                             uint32_t features, GLuint* out_program) {
     const ProgramSource source = program_source(kind);
@@ -193,10 +212,11 @@ void set_sampler_units(const GlFunctions& gl, GLuint program) {
 }
 
 uint64_t shader_sources_hash() {
-    const char* const sources[] = {
-        grass_gl_shaders::blade_vert,       grass_gl_shaders::blade_frag,  grass_gl_shaders::debug_tiers_vert,
-        grass_gl_shaders::debug_tiers_frag, grass_gl_shaders::image_vert,  grass_gl_shaders::image_frag,
-        grass_gl_shaders::volume_vert,      grass_gl_shaders::volume_frag, grass_gl_shaders::interaction_comp};
+    const char* const sources[] = {grass_gl_shaders::blade_vert,       grass_gl_shaders::blade_frag,
+                                   grass_gl_shaders::debug_tiers_vert, grass_gl_shaders::debug_tiers_frag,
+                                   grass_gl_shaders::image_vert,       grass_gl_shaders::image_frag,
+                                   grass_gl_shaders::volume_vert,      grass_gl_shaders::volume_frag,
+                                   grass_gl_shaders::interaction_comp, grass_gl_shaders::blade_window_comp};
     uint64_t hash = kFnvOffset;
     for (const char* source : sources) hash = fnv1a64(source, std::strlen(source) + 1, hash);
     return hash;

@@ -41,16 +41,16 @@ static_assert(kProgramBlades == static_cast<uint32_t>(kShaderBlades) &&
 // kFeatureWindMap, kFeatureBladeCulling and kFeatureDebugView (backend.hpp).
 constexpr uint32_t kFeatureVariants = kFeatureMaskCount;
 // The masks without kFeatureDepthPass, kFeatureShadowReceive, kFeatureMotion,
-// kFeatureHostLights and kFeatureGBuffer (a depth pass's, a receiving view's, a motion
-// view's, a lit view's and a G-buffer view's
+// kFeatureHostLights, kFeatureGBuffer and kFeatureBladeWindow (a depth pass's, a receiving
+// view's, a motion view's, a lit view's, a G-buffer view's and the blade window's
 // programs are kept apart, made on the first such view:
 // GlBackend::program_slot), and the masks with either.
 constexpr uint32_t kColourVariants = kFeatureDepthPass;
 constexpr uint32_t kPassVariants = kFeatureVariants - kColourVariants;
 static_assert(kFeatureShadowReceive == kFeatureDepthPass << 1 && kFeatureMotion == kFeatureShadowReceive << 1 &&
                   kFeatureHostLights == kFeatureMotion << 1 && kFeatureGBuffer == kFeatureHostLights << 1 &&
-                  kFeatureVariants == kFeatureGBuffer << 1,
-              "the pass bits are the last five");
+                  kFeatureBladeWindow == kFeatureGBuffer << 1 && kFeatureVariants == kFeatureBladeWindow << 1,
+              "the pass bits and the blade window's are the last six");
 // A view lit by the host's lights: its GrassLights block at uniform binding 4 (host_lights.glsl).
 constexpr GLuint kLightsUniformBinding = 4;
 // A G-buffer view: its GrassGBuffer block at uniform binding 5 (gbuffer.glsl); output
@@ -88,7 +88,8 @@ constexpr GLuint kInteractionImageUnit = 0;
 // Compiles and links the program of `kind` for the feature mask `features` (<
 // kFeatureVariants): the shaders get `#define GRASS_FEATURES <features>u` after their
 // #version line (and `#define GRASS_RESPONSIVE 1` when the mask has one of
-// kBladeCurveFeatures, `#define GRASS_HOST_SHADOWS 1` when it has kFeatureShadowReceive,
+// kBladeCurveFeatures, with `#define GRASS_BLADE_WINDOW 1` when it also has
+// kFeatureBladeWindow, `#define GRASS_HOST_SHADOWS 1` when it has kFeatureShadowReceive,
 // `#define GRASS_VELOCITY 1` when it has kFeatureMotion, `#define GRASS_HOST_LIGHTS 1` when
 // it has kFeatureHostLights). On failure the driver's log is in the context's error message
 // (named after `function`) and nothing is left behind.
@@ -102,6 +103,15 @@ void set_sampler_units(const GlFunctions& gl, GLuint program);
 // FNV-1a 64 over every embedded shader source: a program binary saved with other sources is
 // not loaded (gl_program_cache.hpp).
 uint64_t shader_sources_hash();
+
+// The feature bits the blade window pass (blade_window.comp) is compiled with: the design
+// maps', wind, the interaction map and the wind map (all below kFeatureBladeCulling).
+constexpr uint32_t kBladeWindowPassFeatures = kFeatureBladeCulling - 1;
+
+// Compiles and links the blade window pass for the feature mask `features` (within
+// kBladeWindowPassFeatures; it has kFeatureWind or kFeatureInteraction), likewise.
+grass_result create_blade_window_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                         uint32_t features, GLuint* out_program);
 
 // Compiles and links the interaction pass (interaction.comp), likewise.
 grass_result create_interaction_program(grass_context* ctx, const GlFunctions& gl, const char* function,

@@ -69,6 +69,8 @@ public:
     void end_frame() override {} // the host submits: a frame ends with nothing to do here
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
     uint64_t dynamics_gpu_bytes() const override;
+    // The blade window pass is the GL backend's so far: every pose is computed in the vertex shader.
+    bool runs_blade_window() const override { return false; }
     void device_memory(grass_memory_stats* stats) const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
     // A Vulkan device is not current on a thread: every call may use it.

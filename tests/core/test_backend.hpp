@@ -39,6 +39,7 @@ public:
     void end_frame() override {}
     uint64_t gpu_bytes() const override { return 0; }
     uint64_t dynamics_gpu_bytes() const override { return 0; }
+    bool runs_blade_window() const override { return false; }
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override {
         for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = 0.0;
         return false;

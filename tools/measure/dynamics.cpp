@@ -24,7 +24,8 @@
 // pass, every collider in the map's window and the map's memory. (gpu_bytes is not compared:
 // the frame's uniform and instance buffers keep the largest size a frame needed.)
 // --quick: the image tier and no grass, crowds of 1 and 100 only (a smoke run of seconds).
-// Usage: grass-measure dynamics [--backend gl|vk] [--size WxH] [--frames N] [--rounds N] [--quick]
+// --blades: the geometry tier alone, still, wind and crowds of 1, 100 and 1000.
+// Usage: grass-measure dynamics [--backend gl|vk] [--size WxH] [--frames N] [--rounds N] [--quick] [--blades]
 #include "tier_cost.hpp"
 
 #include "cli.hpp"
@@ -68,10 +69,15 @@ const Row kQuickRows[] = {{"still", false, kNoCollider},
                           {"1 collider", false, 1},
                           {"100 colliders", false, 100},
                           {"still again", false, kNoCollider}};
+// --blades: the geometry tier's rows of issue 35's cost goals (the blade window's measure).
+const Row kBladeRows[] = {{"still", false, kNoCollider},   {"wind 5 m/s", true, kNoCollider},
+                          {"1 collider", false, 1},        {"100 colliders", false, 100},
+                          {"1000 colliders", false, 1000}, {"still again", false, kNoCollider}};
 
 struct Options {
     tier_cost::Options rig;
     bool quick = false;
+    bool blades = false;
 };
 
 // A crowd of n spheres of 0.3 m on a jittered grid over the field, moving.
@@ -196,13 +202,41 @@ void print_rows(const char* tier, bool drawn, const std::vector<Row>& rows, cons
     std::fflush(stdout);
 }
 
+// The pass alone against each tier's still draw (both from this run): the last of
+// `measured` is the "no grass" tier.
+void print_pass_alone(const std::vector<Row>& rows, const std::vector<const Setup*>& tiers,
+                      const std::vector<TierRows>& measured) {
+    std::printf("\n| colliders | pass alone (ms) |");
+    for (const Setup* tier : tiers)
+        if (tier) std::printf(" %s: still draw (ms) | pass / (pass + draw) |", tier->name);
+    std::printf("\n|---|---|");
+    for (const Setup* tier : tiers)
+        if (tier) std::printf("---|---|");
+    std::printf("\n");
+    const TierRows& alone = measured.back();
+    const Cost alone_still = tier_cost::cost(alone.times[0], alone.empties);
+    for (size_t r = 0; r < rows.size(); ++r) {
+        if (rows[r].colliders < kMapKept) continue;
+        const double pass = tier_cost::cost(alone.times[r], alone.empties).median - alone_still.median;
+        std::printf("| %s | %.2f |", rows[r].name, pass);
+        for (size_t i = 0; i + 1 < measured.size(); ++i) {
+            const double draw = tier_cost::cost(measured[i].times[0], measured[i].empties).median;
+            std::printf(" %.1f | %.1f%% |", draw, 100.0 * pass / (pass + draw));
+        }
+        std::printf("\n");
+    }
+}
+
 int run(const Options& o) {
     Rig rig(o.rig);
     rig.set_time_step(kFrameStep);
-    const std::vector<Row> rows = o.quick ? std::vector<Row>(std::begin(kQuickRows), std::end(kQuickRows))
-                                          : std::vector<Row>(std::begin(kRows), std::end(kRows));
+    const std::vector<Row> rows = o.quick    ? std::vector<Row>(std::begin(kQuickRows), std::end(kQuickRows))
+                                  : o.blades ? std::vector<Row>(std::begin(kBladeRows), std::end(kBladeRows))
+                                             : std::vector<Row>(std::begin(kRows), std::end(kRows));
     std::vector<const Setup*> tiers; // nullptr: no grass, the pass alone
-    if (o.quick) {
+    if (o.blades) {
+        tiers = {&tier_cost::kSingleTiers[0]};
+    } else if (o.quick) {
         tiers = {&tier_cost::kSingleTiers[2], nullptr};
     } else {
         tiers = {&tier_cost::kSingleTiers[0], &tier_cost::kSingleTiers[1], &tier_cost::kSingleTiers[2], nullptr};
@@ -229,26 +263,7 @@ int run(const Options& o) {
         check_rows(name, rows, t, &fails);
         measured.push_back(std::move(t));
     }
-    // The pass alone against each tier's still draw (both from this run).
-    std::printf("\n| colliders | pass alone (ms) |");
-    for (const Setup* tier : tiers)
-        if (tier) std::printf(" %s: still draw (ms) | pass / (pass + draw) |", tier->name);
-    std::printf("\n|---|---|");
-    for (const Setup* tier : tiers)
-        if (tier) std::printf("---|---|");
-    std::printf("\n");
-    const TierRows& alone = measured.back();
-    const Cost alone_still = tier_cost::cost(alone.times[0], alone.empties);
-    for (size_t r = 0; r < rows.size(); ++r) {
-        if (rows[r].colliders < kMapKept) continue;
-        const double pass = tier_cost::cost(alone.times[r], alone.empties).median - alone_still.median;
-        std::printf("| %s | %.2f |", rows[r].name, pass);
-        for (size_t i = 0; i + 1 < measured.size(); ++i) {
-            const double draw = tier_cost::cost(measured[i].times[0], measured[i].empties).median;
-            std::printf(" %.1f | %.1f%% |", draw, 100.0 * pass / (pass + draw));
-        }
-        std::printf("\n");
-    }
+    if (!o.blades) print_pass_alone(rows, tiers, measured); // --blades has no "no grass" rows
     std::fflush(stdout);
     const int status = rig.finish();
     for (const std::string& f : fails) std::fprintf(stderr, "grass-measure dynamics: %s\n", f.c_str());
@@ -276,6 +291,8 @@ Subcommand add_dynamics(CLI::App& measure) {
         ->capture_default_str()
         ->check(grass_sample::at_least(1));
     app->add_flag("--quick", o->quick, "the image tier and no grass, crowds of 1 and 100 only (a smoke run)");
+    app->add_flag("--blades", o->blades,
+                  "the geometry tier alone: still, wind, crowds of 1, 100 and 1000 (the blade window's cost)");
     return {app, [o]() { return dynamics::run(*o); }};
 }
 

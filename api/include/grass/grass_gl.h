@@ -71,7 +71,10 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     texture: a field's wind map) and their samplers. The
  *     frame's first call runs the interaction pass (a compute dispatch per map level)
  *     before drawing, then glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT |
- *     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT); it runs even when nothing is drawn;
+ *     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT); it runs even when nothing is drawn; then the
+ *     blade window pass (docs/responsive.md "The blade window": a compute dispatch per
+ *     geometry draw of view 0 with responsive grass) and
+ *     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
  *   - viewport 0 (from grass_view_desc.viewport, set with glViewportIndexedf: the host's
  *     other viewports are not touched), depth test/func/mask, cull face (off: no face is
  *     culled, so the front-face winding does not matter), draw buffer 0's blend enable

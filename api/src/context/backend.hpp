@@ -109,6 +109,9 @@ public:
     // Responsive grass: the part of gpu_bytes() that it holds: the interaction map's levels
     // and the uploaded blade curves (grass_memory_stats.dynamics_gpu_bytes).
     virtual uint64_t dynamics_gpu_bytes() const = 0;
+    // Whether it runs the blade window pass (plan/blade_window.hpp) of view 0's plan and
+    // its responsive geometry draws read the window: the core plans one only then.
+    virtual bool runs_blade_window() const = 0;
     // The device memory per heap (grass_memory_stats from heap_count on); a backend that
     // cannot tell leaves them 0.
     virtual void device_memory(grass_memory_stats* stats) const { (void)stats; }
@@ -161,6 +164,7 @@ public:
     void end_frame() override {}
     uint64_t gpu_bytes() const override { return 0; }
     uint64_t dynamics_gpu_bytes() const override { return 0; }
+    bool runs_blade_window() const override { return false; }
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override { // no GPU, no timings
         for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) out_ms[k] = 0.0;
         return false;

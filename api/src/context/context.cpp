@@ -191,6 +191,17 @@ void destroy_context(grass_context* ctx) {
     HostAllocator(hooks).deallocate(ctx);
 }
 
+namespace {
+// The blade window's variants of `variants` (a backend that runs the window), prepared like them.
+grass_result prepare_window_variants(grass_context* ctx, const char* function, const ShaderVariant* variants,
+                                     uint32_t count, bool no_depth_test, const GBufferLayout* layout) {
+    if (!ctx->backend->runs_blade_window()) return GRASS_SUCCESS;
+    ShaderVariant window[kMaxFieldVariants];
+    const uint32_t n = blade_window_variants(variants, count, window);
+    return n == 0 ? GRASS_SUCCESS : ctx->backend->prepare_variants(function, window, n, false, no_depth_test, layout);
+}
+} // namespace
+
 grass_result prepare_field_variants(grass_context* ctx, const char* function, uint32_t slot) {
     const Field* field = ctx->fields.get(slot);
     if (ctx->prepared_features == 0 || field == nullptr) return GRASS_SUCCESS;
@@ -206,6 +217,8 @@ grass_result prepare_field_variants(grass_context* ctx, const char* function, ui
     uint32_t count = field_variants(declared, modes, mode_count, field->maps.features, tier_kinds, variants);
     grass_result r = ctx->backend->prepare_variants(function, variants, count, /*interaction_pass=*/false,
                                                     declares_no_depth_test(declared), nullptr);
+    if (r == GRASS_SUCCESS)
+        r = prepare_window_variants(ctx, function, variants, count, declares_no_depth_test(declared), nullptr);
     if (r != GRASS_SUCCESS || (views & kFeatureGBuffer) == 0) return r;
     // A G-buffer view with velocity writes motion vectors: skipped where the context cannot.
     const bool motion = drawable_view_bits(kFeatureMotion, target, fixed_targets) != 0;
@@ -214,6 +227,7 @@ grass_result prepare_field_variants(grass_context* ctx, const char* function, ui
         if ((mode & kFeatureMotion) && !motion) continue;
         count = field_variants(declared, &mode, 1, field->maps.features, tier_kinds, variants);
         r = ctx->backend->prepare_variants(function, variants, count, false, false, &layout);
+        if (r == GRASS_SUCCESS) r = prepare_window_variants(ctx, function, variants, count, false, &layout);
         if (r != GRASS_SUCCESS) return r;
     }
     return GRASS_SUCCESS;

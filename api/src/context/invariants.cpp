@@ -66,7 +66,8 @@ grass_result check_plan(grass_context* ctx, const char* fn, const FramePlan& pla
         }
         // The maps' bits are the field's; past them only the responsive bits, the interaction
         // one only while the map is bound, the culling one on geometry draws only, the debug
-        // view's exactly when the frame draws one, the depth pass's exactly on a depth view, the shadow
+        // view's exactly when the frame draws one, the blade window's on responsive geometry
+        // draws of a backend that runs the window, the depth pass's exactly on a depth view, the shadow
         // receiver's exactly on a receiving view, the G-buffer's exactly on a G-buffer view.
         const uint32_t map_bits = (1u << kMapRoleCount) - 1u;
         const uint32_t dynamics_bits = draw.features & ~map_bits;
@@ -77,8 +78,12 @@ grass_result check_plan(grass_context* ctx, const char* fn, const FramePlan& pla
                               ((draw.features & kFeatureHostLights) != 0) == plan.host_lights &&
                               ((draw.features & kFeatureGBuffer) != 0) == plan.gbuffer;
         const bool dynamics_ok =
-            (dynamics_bits & ~(kBladeCurveFeatures | kFeatureWindMap | kFeatureDebugView | kFeatureDepthPass |
-                               kFeatureShadowReceive | kFeatureMotion | kFeatureHostLights | kFeatureGBuffer)) == 0 &&
+            (dynamics_bits &
+             ~(kBladeCurveFeatures | kFeatureWindMap | kFeatureDebugView | kFeatureDepthPass | kFeatureShadowReceive |
+               kFeatureMotion | kFeatureHostLights | kFeatureGBuffer | kFeatureBladeWindow)) == 0 &&
+            ((dynamics_bits & kFeatureBladeWindow) == 0 ||
+             (draw.kind == GRASS_TIER_GEOMETRY && (dynamics_bits & (kFeatureWind | kFeatureInteraction)) != 0 &&
+              ctx->backend->runs_blade_window())) &&
             ((dynamics_bits & kFeatureInteraction) == 0 || plan.interaction.levels > 0) &&
             ((dynamics_bits & kFeatureWindMap) != 0) == field->wind_map.active() &&
             ((dynamics_bits & kFeatureWindMap) == 0 || (dynamics_bits & kFeatureWind) != 0) &&

@@ -236,6 +236,40 @@ struct InteractionPlan {
     }
 };
 
+// The blade window of a frame (plan/blade_window.hpp, api/shaders/blade_window.glsl):
+// view 0's plan holds it; empty dispatches: no pass and no buffers (still grass).
+constexpr uint64_t kBladeWindowPoseBytes = 32; // two vec4 per blade and slot
+constexpr uint32_t kNoWindowEntry = 0xffffffffu;
+// One dispatch of the pass: a geometry draw of view 0 (index into its draws) whose
+// instances take slots first_slot .. first_slot + instance_count - 1.
+struct BladeWindowDispatch {
+    uint32_t draw;
+    uint32_t first_slot;
+};
+
+// A field's table in the frame: its slot in the context, its side and first entry.
+struct BladeWindowField {
+    uint32_t field_slot;
+    uint32_t side;
+    uint32_t first_entry;
+};
+
+struct BladeWindowPlan {
+    explicit BladeWindowPlan(HostAllocator* host)
+        : table(StlAllocator<uint32_t>(host)), fields(StlAllocator<BladeWindowField>(host)),
+          dispatches(StlAllocator<BladeWindowDispatch>(host)) {}
+    Vector<uint32_t> table; // four words an entry: cell x, cell z, slot, blades (kNoWindowEntry: empty)
+    Vector<BladeWindowField> fields;
+    Vector<BladeWindowDispatch> dispatches; // none: no pass, no buffers
+    uint64_t pose_bytes = 0;                // the poses' buffer: sum of slots x blades x 32
+    void clear() {
+        table.clear();
+        fields.clear();
+        dispatches.clear();
+        pose_bytes = 0;
+    }
+};
+
 // std140 uniform block `GrassShadow` (host_shadows.glsl; GL binding 2): the host's shadow
 // map of a receiving view (grass_shadow_receive_desc), only in such a view's upload.
 struct ShadowUniforms {
@@ -284,7 +318,8 @@ static_assert(sizeof(GBufferUniforms) == 16, "std140 GrassGBuffer block");
 
 struct FramePlan {
     explicit FramePlan(HostAllocator* host)
-        : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host) {}
+        : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host),
+          blade_window(host) {}
     FrameUniforms frame{};
     double origin[3] = {0, 0, 0}; // world position every position of the plan is relative to (the camera)
     bool stereo = false;          // a stereo frame: `eyes` follows `frame` in the Frame block (RenderTarget::views 2)
@@ -324,11 +359,13 @@ struct FramePlan {
     Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
     Vector<TierDraw> draws;         // per field, per tier that draws something
     grass_frame_stats stats{};
-    InteractionPlan interaction; // responsive grass: the interaction pass (levels = 0: none)
+    InteractionPlan interaction;  // responsive grass: the interaction pass (levels = 0: none)
+    BladeWindowPlan blade_window; // responsive grass: the poses once per frame (view 0's plan)
     void clear() {
         instances.clear();
         draws.clear();
         interaction.clear();
+        blade_window.clear();
         stats = grass_frame_stats{};
     }
 };

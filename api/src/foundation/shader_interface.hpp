@@ -70,8 +70,14 @@ constexpr uint32_t kFeatureHostLights = 1u << 13;
 // the surface (gbuffer.glsl) to the fixed output locations of kGBufferOutput instead of a lit
 // colour, with the depth pass's coverage. Set on every draw of such a view's plan and no other.
 constexpr uint32_t kFeatureGBuffer = 1u << 14;
+// A responsive geometry draw whose instances' cells the blade window holds, every one, this
+// frame (plan/blade_window.hpp; GRASS_BLADE_WINDOW in the shaders): its variant reads
+// each blade's pose from the window and has no per-vertex pose code. Set by the core only
+// for a backend that runs the window pass (Backend::runs_blade_window); a draw with any cell
+// the window does not hold keeps the per-vertex variant.
+constexpr uint32_t kFeatureBladeWindow = 1u << 15;
 // Every feature mask is below this (the variants a backend may compile).
-constexpr uint32_t kFeatureMaskCount = kFeatureGBuffer << 1;
+constexpr uint32_t kFeatureMaskCount = kFeatureBladeWindow << 1;
 // The fragment output location of each grass_gbuffer_semantic in the GRASS_GBUFFER variants
 // (gbuffer.glsl): albedo takes the colour's, velocity motion.glsl's; the backend routes each
 // location to the host's attachment of that semantic. kNoGBufferOutput: NONE writes nothing.

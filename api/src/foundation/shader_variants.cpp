@@ -102,4 +102,14 @@ uint32_t field_variants(uint32_t declared, const uint32_t* modes, uint32_t mode_
     return count;
 }
 
+uint32_t blade_window_variants(const ShaderVariant* variants, uint32_t count, ShaderVariant out[kMaxFieldVariants]) {
+    uint32_t written = 0;
+    for (uint32_t i = 0; i < count && written < kMaxFieldVariants; ++i) {
+        const ShaderVariant& v = variants[i];
+        if (v.program != kShaderBlades || (v.features & (kFeatureWind | kFeatureInteraction)) == 0) continue;
+        out[written++] = ShaderVariant{v.program, v.features | kFeatureBladeWindow};
+    }
+    return written;
+}
+
 } // namespace grass

@@ -96,4 +96,9 @@ constexpr uint32_t kMaxFieldVariants = 512;
 uint32_t field_variants(uint32_t declared, const uint32_t* modes, uint32_t mode_count, uint32_t map_features,
                         uint32_t tier_kinds, ShaderVariant out[kMaxFieldVariants]);
 
+// The blade window's variants (kFeatureBladeWindow) of the responsive blade variants among
+// the `count` of `variants`, for a backend that runs the window pass: written to `out`
+// (at most kMaxFieldVariants); returns how many.
+uint32_t blade_window_variants(const ShaderVariant* variants, uint32_t count, ShaderVariant out[kMaxFieldVariants]);
+
 } // namespace grass

@@ -3,6 +3,7 @@
 #include "dynamics/dynamics_plan.hpp"
 #include "foundation/validate.hpp"
 #include "maps/design_map.hpp"
+#include "plan/blade_window.hpp"
 #include "plan/gbuffer_plan.hpp"
 #include "plan/lights_plan.hpp"
 #include "plan/lod_setup.hpp"
@@ -701,6 +702,11 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
             plan.clear();
             return r;
         }
+    }
+    if (in.first_view) {
+        apply_blade_window(*in.first_view, &plan);
+    } else {
+        plan_blade_window(&plan, in.blade_window, in.patches);
     }
     plan_gbuffer(ext, &plan); // before the others: a G-buffer view receives no shadows nor lights
     plan_shadow_receive(view, ext, camera, &plan);

@@ -34,6 +34,9 @@ struct FramePlanning {
     // The frame's view 0, when this plan is a later view of it: the responsive grass stepped
     // there, and this view reads its interaction map (plan_view_dynamics). nullptr: view 0.
     const FramePlan* first_view;
+    // The backend runs the blade window pass (Backend::runs_blade_window): view 0 plans the
+    // window (blade_window.hpp) and the draws whose cells it holds get its variant.
+    bool blade_window = false;
 };
 
 // The validated extensions chained on grass_view_desc.next (each may be absent).
