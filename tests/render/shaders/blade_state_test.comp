@@ -10,6 +10,7 @@
 #endif
 #define GRASS_RESPONSIVE 1
 #include "blade_interface.glsl"
+#include "lighting.glsl" // mirror_signs (blade_dynamics.glsl's cell_blade_pose)
 #include "wind.glsl"
 #include "interaction.glsl"
 #include "blade_dynamics.glsl"
