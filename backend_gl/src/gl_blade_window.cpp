@@ -27,6 +27,7 @@ grass_result GlBackend::blade_window_program(const char* function, uint32_t feat
     if (window_programs_[mask] == 0) {
         const grass_result result = create_blade_window_program(ctx_, gl_, function, mask, &window_programs_[mask]);
         if (result != GRASS_SUCCESS) return result;
+        label(GL_PROGRAM, window_programs_[mask], "grass blade window program");
     }
     *out_program = window_programs_[mask];
     return GRASS_SUCCESS;
@@ -50,7 +51,10 @@ grass_result GlBackend::run_blade_window_pass(const FramePlan& plan, const char*
         }
         window_pose_capacity_ = window.pose_bytes;
     }
-    if (window_table_.name() == 0) window_table_.create(gl_);
+    if (window_table_.name() == 0) {
+        window_table_.create(gl_);
+        label(GL_BUFFER, window_table_.name(), "grass blade window table");
+    }
     window_table_.upload(gl_, window.table.data(), window.table.size() * sizeof(uint32_t));
 
     gl_.BindBufferRange(GL_UNIFORM_BUFFER, 0, uniforms_.name(), 0, sizeof(FrameUniforms));
