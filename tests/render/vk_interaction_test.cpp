@@ -1,6 +1,7 @@
 // The interaction pass on Vulkan (grass_vk.h, docs/responsive.md), through grass's own
 // dispatch table (vk_intercept.hpp counts the dispatches grass records):
-// - grass_vk_prepare records one dispatch per map level for a frame with colliders, and
+// - grass_vk_prepare records one dispatch per map level for a frame with colliders (and the
+//   blade window pass's, vk_blade_window_test.cpp), and
 //   none for a frame of still grass, which holds no responsive GPU memory; the frame with a
 //   collider shows its trail where the collider is and nothing changes far from it; once the
 //   map is dropped (grass_set_interaction) no pass runs and its memory is given back;
@@ -127,7 +128,8 @@ TEST(VkInteraction, PrepareFrameRecordsThePassOnlyForFramesWithColliders) {
     ASSERT_EQ(set_ball(s.ctx, kBall[0], 0.0f), GRASS_SUCCESS) << s.log;
     before = vi::live().dispatches;
     const grass_host::Image pressed = frame(s, 1.1);
-    EXPECT_EQ(vi::live().dispatches - before, int64_t(levels)) << "one dispatch per level";
+    // One dispatch per level, then the blade window pass's one (the field's one geometry draw).
+    EXPECT_EQ(vi::live().dispatches - before, int64_t(levels) + 1) << "one dispatch per level and the window's";
     const grass_interaction_desc id = grass_default_interaction_desc();
     EXPECT_GE(dynamics_bytes(s.ctx), uint64_t(id.level_count) * id.resolution * id.resolution * 16u)
         << "the map's levels are counted";
