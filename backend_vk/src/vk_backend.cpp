@@ -40,7 +40,8 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       slices_(StlAllocator<SliceGpu>(&context->host)), draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),
       regions_(StlAllocator<VkBufferImageCopy>(&context->host)),
       interaction_(fn_, device_.device, memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits),
-      window_(fn_, device_.device, memory_, deferred_, device_.indexed_blocks, &context->host),
+      window_(fn_, device_.device, memory_, deferred_, vk_desc.frames_in_flight, device_.indexed_blocks,
+              &context->host),
       window_dispatches_(StlAllocator<WindowDispatch>(&context->host)),
       timer_ring_(vk_desc.frames_in_flight, TierTimerRing::WhenBusy::drop_results) {}
 

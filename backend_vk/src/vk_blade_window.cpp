@@ -32,9 +32,10 @@ constexpr VkDescriptorSetLayoutBinding kPassBindings[kWindowPassBindingCount] = 
 } // namespace
 
 BladeWindowPass::BladeWindowPass(const Functions& functions, VkDevice device, Memory& memory,
-                                 DeferredDeletion& deferred, bool indexed_blocks, HostAllocator* host)
-    : fn_(functions), device_(device), memory_(memory), deferred_(deferred), indexed_blocks_(indexed_blocks),
-      pipelines_(StlAllocator<Pipeline>(host)) {}
+                                 DeferredDeletion& deferred, uint32_t frames_in_flight, bool indexed_blocks,
+                                 HostAllocator* host)
+    : fn_(functions), device_(device), memory_(memory), deferred_(deferred), frames_in_flight_(frames_in_flight),
+      indexed_blocks_(indexed_blocks), pipelines_(StlAllocator<Pipeline>(host)) {}
 
 BladeWindowPass::~BladeWindowPass() {
     // The host guarantees the device is idle for grass work (context destruction).
@@ -135,14 +136,23 @@ bool BladeWindowPass::prepare(uint32_t slot, uint64_t frame, const BladeWindowPl
     const VkDeviceSize table_bytes = plan.table.empty() ? 16 : VkDeviceSize(plan.table.size()) * sizeof(uint32_t);
     Buffer& table = tables_[slot];
     if (table_bytes > table.size) {
-        Buffer fresh;
+        // Every slot's table at once, all of one size: the window's memory is the plan's, not
+        // the history of which slot grew when. Frames in flight keep reading the old ones.
+        Buffer fresh[kMaxFramesInFlight];
         *what = "the blade window's table";
         const VkDeviceSize size = table_bytes > 2 * table.size ? table_bytes : 2 * table.size;
-        if (!deferred_.create_buffer(size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::streaming, &fresh, failure))
-            return false;
-        name_object(fn_, device_, VK_OBJECT_TYPE_BUFFER, fresh.buffer, "grass blade window table");
-        deferred_.retire(&table, frame); // the slot's last frame has finished
-        table = fresh;
+        for (uint32_t s = 0; s < frames_in_flight_; ++s) {
+            if (!deferred_.create_buffer(size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::streaming, &fresh[s],
+                                         failure)) {
+                for (Buffer& f : fresh) deferred_.destroy_now(&f);
+                return false;
+            }
+            name_object(fn_, device_, VK_OBJECT_TYPE_BUFFER, fresh[s].buffer, "grass blade window table");
+        }
+        for (uint32_t s = 0; s < frames_in_flight_; ++s) {
+            deferred_.retire(&tables_[s], frame);
+            tables_[s] = fresh[s];
+        }
     }
     if (pose_bytes > poses_.size) {
         // Grown to what the plan asks, no more: the poses can take up to kMaxBladeWindowPoseBytes.

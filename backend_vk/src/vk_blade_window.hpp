@@ -9,10 +9,11 @@
 // layout, so the pass binds the same set as its draw; set 1: the pass's own, WindowPassBinding),
 // the poses (one device-local buffer, sized by the plan's pose_bytes, shared by every frame in
 // flight with the barriers of grass_vk.h) and the table (one streaming buffer per frame slot,
-// sized by the plan's table, written by the CPU each frame). One window, not one per frame in
-// flight: the poses are written and read on the GPU only, so a barrier orders a frame's pass
-// after the earlier frames' draws, and the memory (up to kMaxBladeWindowPoseBytes) is taken
-// once. Nothing exists until the first frame whose plan has a window: still grass costs nothing.
+// sized by the plan's table, written by the CPU each frame; all grown together). One window,
+// not one per frame in flight: the poses are written and read on the GPU only, so a barrier
+// orders a frame's pass after the earlier frames' draws, and the memory (up to
+// kMaxBladeWindowPoseBytes) is taken once. Nothing exists until the first frame whose plan
+// has a window: still grass costs nothing.
 #pragma once
 
 #include "foundation/allocator.hpp"
@@ -52,7 +53,7 @@ struct WindowDispatch {
 class BladeWindowPass {
 public:
     BladeWindowPass(const Functions& functions, VkDevice device, Memory& memory, DeferredDeletion& deferred,
-                    bool indexed_blocks, HostAllocator* host);
+                    uint32_t frames_in_flight, bool indexed_blocks, HostAllocator* host);
     ~BladeWindowPass();
     BladeWindowPass(const BladeWindowPass&) = delete;
     BladeWindowPass& operator=(const BladeWindowPass&) = delete;
@@ -92,13 +93,14 @@ private:
     VkDevice device_;
     Memory& memory_;
     DeferredDeletion& deferred_;
+    uint32_t frames_in_flight_;
     bool indexed_blocks_;
     VkPipelineCache cache_ = VK_NULL_HANDLE;
     VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE; // set 1
     VkPipelineLayout layout_ = VK_NULL_HANDLE;          // sets 0 and 1
     Vector<Pipeline> pipelines_;                        // per features, made on first use
     Buffer poses_;                                      // device-local, every frame's
-    Buffer tables_[kMaxFramesInFlight];                 // streaming, per frame slot
+    Buffer tables_[kMaxFramesInFlight];                 // streaming, per frame slot, all of one size
 };
 
 } // namespace grass::vk
