@@ -14,20 +14,20 @@ layout(local_size_x = 64) in;
 #include "blade_dynamics.glsl"
 #include "blade_window.glsl"
 
-#ifdef VULKAN
-#define GRASS_WINDOW_INSTANCES_BINDING 16
-#define GRASS_WINDOW_ROOTS_BINDING 17
+#ifdef VULKAN // the pass's own set 1 (backend_vk/src/vk_blade_window.hpp WindowPassBinding)
+#define GRASS_WINDOW_INSTANCES_BINDING set = 1, binding = 0
+#define GRASS_WINDOW_ROOTS_BINDING set = 1, binding = 1
 #else
-#define GRASS_WINDOW_INSTANCES_BINDING 1 // GL: shader storage bindings 1 and 3 (gl_blade_window.cpp)
-#define GRASS_WINDOW_ROOTS_BINDING 3
+#define GRASS_WINDOW_INSTANCES_BINDING binding = 1 // GL: shader storage bindings 1 and 3 (gl_blade_window.cpp)
+#define GRASS_WINDOW_ROOTS_BINDING binding = 3
 #endif
 // View 0's instances (api/src/foundation/frame_plan.hpp TierInstance: three vec4 each).
-layout(std430, binding = GRASS_WINDOW_INSTANCES_BINDING) readonly buffer WindowInstances {
+layout(std430, GRASS_WINDOW_INSTANCES_BINDING) readonly buffer WindowInstances {
     vec4 instance_words[];
 };
 // The patch's vertices (api/src/patch/patch_data.hpp BladeVertex: 12 words each, the root's
 // x and z at word 6 and 7; a blade's vertices follow each other).
-layout(std430, binding = GRASS_WINDOW_ROOTS_BINDING) readonly buffer WindowPatchVertices {
+layout(std430, GRASS_WINDOW_ROOTS_BINDING) readonly buffer WindowPatchVertices {
     float vertex_words[];
 };
 const uint kVertexWords = 12u;
