@@ -20,35 +20,36 @@ layout(local_size_x = 64) in;
 #include "blade_window.glsl"
 #include "blade_state.glsl"
 
-// The pass's bindings beyond the draws' (listed here only; GL: gl_blade_window.cpp).
+// The pass's bindings beyond the draws' (listed here only; GL: gl_blade_window.cpp, Vulkan:
+// the pass's own set 1, backend_vk/src/vk_blade_window.hpp WindowPassBinding).
 #ifdef VULKAN
-#define GRASS_WINDOW_INSTANCES_BINDING 16
-#define GRASS_WINDOW_ROOTS_BINDING 17
-#define GRASS_WINDOW_WORK_BINDING 18
-#define GRASS_WINDOW_COLLIDERS_BINDING 19
-#define GRASS_WINDOW_TILE_OFFSETS_BINDING 20
-#define GRASS_WINDOW_TILE_COLLIDERS_BINDING 21
-#define GRASS_WINDOW_LEVEL_BINDING 22
-#else
-#define GRASS_WINDOW_INSTANCES_BINDING 1 // GL: shader storage bindings 1, 3-7, uniform binding 2
-#define GRASS_WINDOW_ROOTS_BINDING 3
-#define GRASS_WINDOW_WORK_BINDING 4
-#define GRASS_WINDOW_COLLIDERS_BINDING 5
-#define GRASS_WINDOW_TILE_OFFSETS_BINDING 6
-#define GRASS_WINDOW_TILE_COLLIDERS_BINDING 7
-#define GRASS_WINDOW_LEVEL_BINDING 2
+#define GRASS_WINDOW_INSTANCES_BINDING set = 1, binding = 0
+#define GRASS_WINDOW_ROOTS_BINDING set = 1, binding = 1
+#define GRASS_WINDOW_WORK_BINDING set = 1, binding = 2
+#define GRASS_WINDOW_COLLIDERS_BINDING set = 1, binding = 3
+#define GRASS_WINDOW_TILE_OFFSETS_BINDING set = 1, binding = 4
+#define GRASS_WINDOW_TILE_COLLIDERS_BINDING set = 1, binding = 5
+#define GRASS_WINDOW_LEVEL_BINDING set = 1, binding = 6
+#else // GL: shader storage bindings 1, 3-7, uniform binding 2
+#define GRASS_WINDOW_INSTANCES_BINDING binding = 1
+#define GRASS_WINDOW_ROOTS_BINDING binding = 3
+#define GRASS_WINDOW_WORK_BINDING binding = 4
+#define GRASS_WINDOW_COLLIDERS_BINDING binding = 5
+#define GRASS_WINDOW_TILE_OFFSETS_BINDING binding = 6
+#define GRASS_WINDOW_TILE_COLLIDERS_BINDING binding = 7
+#define GRASS_WINDOW_LEVEL_BINDING binding = 2
 #endif
 // View 0's instances (api/src/foundation/frame_plan.hpp TierInstance: three vec4 each).
-layout(std430, binding = GRASS_WINDOW_INSTANCES_BINDING) readonly buffer WindowInstances {
+layout(std430, GRASS_WINDOW_INSTANCES_BINDING) readonly buffer WindowInstances {
     vec4 instance_words[];
 };
 // The patch's vertices (api/src/patch/patch_data.hpp BladeVertex: 12 words each, the root's
 // x and z at word 6 and 7; a blade's vertices follow each other).
-layout(std430, binding = GRASS_WINDOW_ROOTS_BINDING) readonly buffer WindowPatchVertices {
+layout(std430, GRASS_WINDOW_ROOTS_BINDING) readonly buffer WindowPatchVertices {
     float vertex_words[];
 };
 // The work items (BladeWindowPlan::work): slot (| 1 << 31: entered this frame), instance.
-layout(std430, binding = GRASS_WINDOW_WORK_BINDING) readonly buffer WindowWork {
+layout(std430, GRASS_WINDOW_WORK_BINDING) readonly buffer WindowWork {
     uint work_words[];
 };
 // The interaction pass's colliders (GpuCollider, the map's frame) and the fine level's tile
@@ -58,16 +59,16 @@ struct WindowCollider {
     vec4 b;        // u, v, h of the other end; w: shape (0 sphere, 1 capsule)
     vec4 velocity; // u, v, h (m/s)
 };
-layout(std430, binding = GRASS_WINDOW_COLLIDERS_BINDING) readonly buffer WindowColliders {
+layout(std430, GRASS_WINDOW_COLLIDERS_BINDING) readonly buffer WindowColliders {
     WindowCollider window_colliders[];
 };
-layout(std430, binding = GRASS_WINDOW_TILE_OFFSETS_BINDING) readonly buffer WindowTileOffsets {
+layout(std430, GRASS_WINDOW_TILE_OFFSETS_BINDING) readonly buffer WindowTileOffsets {
     uint window_tile_offsets[];
 };
-layout(std430, binding = GRASS_WINDOW_TILE_COLLIDERS_BINDING) readonly buffer WindowTileColliders {
+layout(std430, GRASS_WINDOW_TILE_COLLIDERS_BINDING) readonly buffer WindowTileColliders {
     uint window_tile_colliders[];
 };
-layout(std140, binding = GRASS_WINDOW_LEVEL_BINDING) uniform WindowLevel {
+layout(std140, GRASS_WINDOW_LEVEL_BINDING) uniform WindowLevel {
     ivec4 window; // interaction.comp's Interaction block of the fine level
     vec4 origin;  // xy: the window's lower corner relative to the camera (m), z: texel size (m)
     uvec4 counts; // x: N, y: tile size (texels), z: tiles per side

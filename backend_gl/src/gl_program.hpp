@@ -104,10 +104,6 @@ void set_sampler_units(const GlFunctions& gl, GLuint program);
 // not loaded (gl_program_cache.hpp).
 uint64_t shader_sources_hash();
 
-// The feature bits the blade window pass (blade_window.comp) is compiled with: the design
-// maps', wind, the interaction map and the wind map (all below kFeatureBladeCulling).
-constexpr uint32_t kBladeWindowPassFeatures = kFeatureBladeCulling - 1;
-
 // Compiles and links the blade window pass for the feature mask `features` (within
 // kBladeWindowPassFeatures; it has kFeatureWind or kFeatureInteraction), likewise.
 grass_result create_blade_window_program(grass_context* ctx, const GlFunctions& gl, const char* function,

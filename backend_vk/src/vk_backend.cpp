@@ -40,6 +40,9 @@ VkBackend::VkBackend(grass_context* context, const grass_vk_desc& vk_desc, const
       slices_(StlAllocator<SliceGpu>(&context->host)), draw_sets_(StlAllocator<VkDescriptorSet>(&context->host)),
       regions_(StlAllocator<VkBufferImageCopy>(&context->host)),
       interaction_(fn_, device_.device, memory_, deferred_, vk_desc.frames_in_flight, device_.properties.limits),
+      window_(fn_, device_.device, memory_, deferred_, vk_desc.frames_in_flight, device_.indexed_blocks,
+              &context->host),
+      window_dispatches_(StlAllocator<WindowDispatch>(&context->host)),
       timer_ring_(vk_desc.frames_in_flight, TierTimerRing::WhenBusy::drop_results) {}
 
 VkBackend::~VkBackend() {
@@ -72,6 +75,7 @@ grass_result VkBackend::init(const char* function) {
     const char* what = "";
     if (!create_pipeline_cache(&failure, &what)) return fail(function, what, failure);
     interaction_.use_cache(cache_);
+    window_.use_cache(cache_);
     PipelineTarget target = pipeline_target(ctx_, desc_, device_);
     target.cache = cache_;
     if (device_.has_depth_pass) { // depth views' pipelines: made on the first (record)
@@ -183,7 +187,9 @@ VkBackend::SetViews VkBackend::still_views() const {
                     {default_black_.view, default_black_.view},
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                     default_curves_.buffer,
-                    default_black_.view};
+                    default_black_.view,
+                    default_curves_.buffer,
+                    default_curves_.buffer};
 }
 
 bool VkBackend::own_set(const TierDraw& d) {
@@ -209,6 +215,10 @@ VkBackend::SetViews VkBackend::draw_views(const TierDraw& d) const {
     if ((d.features & kFeatureWindMap) && wind != kNoMap && wind < maps_.size() && maps_[wind].live) {
         v.wind_map = maps_[wind].image.view;
     }
+    if ((d.features & kFeatureBladeWindow) && window_.has_window()) {
+        v.window_table = window_.table(slot_); // view 0's of this frame, read by every view
+        v.window_poses = window_.poses();
+    }
     return v;
 }
 
@@ -217,7 +227,10 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
     const VkDescriptorBufferInfo frame_block{uniforms, 0, ring_.frame_block_bytes()};
     const VkDescriptorBufferInfo field_block{uniforms, 0, sizeof(FieldUniforms)};
     const VkDescriptorBufferInfo curves{views.curves, 0, VK_WHOLE_SIZE};
-    // The samplers are immutable, in the layout. Bindings 2..11 and 13: images[binding - 2].
+    const VkDescriptorBufferInfo window_table{views.window_table, 0, VK_WHOLE_SIZE};
+    const VkDescriptorBufferInfo window_poses{views.window_poses, 0, VK_WHOLE_SIZE};
+    // The samplers are immutable, in the layout. Bindings 2..11 and 13: images[binding - 2]
+    // (14 and 15 are buffers: their entries stay unused).
     VkDescriptorImageInfo images[kBindingCount - kBindingDensityMap];
     for (VkDescriptorImageInfo& i : images)
         i = {VK_NULL_HANDLE, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
@@ -240,9 +253,11 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
         writes[i].descriptorCount = 1;
         if (i < kBindingDensityMap) {
             writes[i].descriptorType = kBlockDescriptorType;
-        } else if (i == kBindingBladeCurves) {
+        } else if (i == kBindingBladeCurves || i == kBindingWindowTable || i == kBindingWindowPoses) {
             writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-            writes[i].pBufferInfo = &curves;
+            writes[i].pBufferInfo = i == kBindingBladeCurves   ? &curves
+                                    : i == kBindingWindowTable ? &window_table
+                                                               : &window_poses;
         } else {
             writes[i].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
             writes[i].pImageInfo = &images[i - kBindingDensityMap];
@@ -254,7 +269,7 @@ void VkBackend::write_set(VkDescriptorSet set, uint32_t slot, const FieldGpu& fi
 }
 
 uint64_t VkBackend::dynamics_gpu_bytes() const {
-    uint64_t bytes = interaction_.map_bytes();
+    uint64_t bytes = interaction_.map_bytes() + window_.bytes();
     for (const PatchGpu& p : patches_) bytes += p.curves.allocated;
     return bytes;
 }

@@ -6,6 +6,7 @@
 
 #include "context/backend.hpp"
 #include "timing/tier_timer_ring.hpp"
+#include "vk_blade_window.hpp"
 #include "vk_debug_view.hpp"
 #include "vk_deferred.hpp"
 #include "vk_desc_check.hpp"
@@ -69,8 +70,8 @@ public:
     void end_frame() override {} // the host submits: a frame ends with nothing to do here
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
     uint64_t dynamics_gpu_bytes() const override;
-    // The blade window pass is the GL backend's so far: every pose is computed in the vertex shader.
-    bool runs_blade_window() const override { return false; }
+    // The blade window pass (vk_blade_window.hpp): recorded by grass_vk_prepare.
+    bool runs_blade_window() const override { return true; }
     void device_memory(grass_memory_stats* stats) const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
     // A Vulkan device is not current on a thread: every call may use it.
@@ -149,20 +150,24 @@ private:
     bool create_pipeline_cache(VkFailure* failure, const char** what);
     void destroy_pipeline_cache();
     // What a set binds besides the uniforms and the field's maps: the slices of a volume or
-    // image draw (bindings 3-5) and responsive grass (bindings 10-12).
+    // image draw (bindings 3-5) and responsive grass (bindings 10-15).
     struct SetViews {
         VkImageView slices[3];
         VkImageView interaction[2];
         VkImageLayout interaction_layout;
         VkBuffer curves;
         VkImageView wind_map;
+        VkBuffer window_table; // the blade window's (kFeatureBladeWindow and its pass)
+        VkBuffer window_poses;
     };
     // The stand-ins of a draw that samples no slices and is not responsive: the default
     // slice image, the default black map for the interaction levels, the 16-byte
-    // default curves buffer. The shaders of such a draw never read them.
+    // default curves buffer (for the blade window's table and poses too). The shaders of
+    // such a draw never read them.
     SetViews still_views() const;
     // What draw `d` binds: its slices, the interaction map's levels (kFeatureInteraction),
-    // its patch's blade curves (once uploaded); the stand-ins for the rest.
+    // its patch's blade curves (once uploaded), the blade window's table and poses
+    // (kFeatureBladeWindow); the stand-ins for the rest.
     SetViews draw_views(const TierDraw& d) const;
     // Whether `d` needs a set of its own this frame (record()): volume and image draws (the
     // field's maps with the patch's slices) and responsive draws (its patch's curves).
@@ -188,6 +193,11 @@ private:
     bool draw_ready(const TierDraw& draw, bool debug_view, const char** problem) const;
     // prepare_frame: the copies of every pending upload, with their barriers.
     void record_uploads(VkCommandBuffer cmd);
+    // vk_blade_window.cpp: view 0 begins: the window's pipelines and buffers for `plan`
+    // (none: released), and the pass pending; prepare_frame records it after the
+    // interaction pass, one dispatch per draw of the plan's window with sets of this frame.
+    bool prepare_blade_window(const FramePlan& plan, VkFailure* failure, const char** what);
+    grass_result record_blade_window(VkCommandBuffer cmd);
     void destroy_patch_now(PatchGpu* patch);
     void destroy_slices_now(SliceGpu* slices);
     // Retires the images of `slices` (frames in flight may sample them) and drops its staging.
@@ -230,10 +240,13 @@ private:
     Buffer default_curves_;            // 16 bytes, never written or read: binding 12 of draws that are not responsive
     InteractionPass interaction_;      // responsive grass: the interaction map and its pass
     bool interaction_pending_ = false; // this frame's pass is planned, not recorded yet (prepare_frame)
-    uint32_t pending_uploads_ = 0;     // patches, slice sets, maps, map updates and the default images not yet recorded
-    uint64_t frame_ = 0;               // the host's index of the begun (or last) frame (grass_frame_desc)
-    uint32_t slot_ = 0;                // its frame slot: the one whose last frame finished longest ago
-    uint32_t views_made_ = 1;          // views whose view slots exist (make_view_slots)
+    BladeWindowPass window_;           // responsive grass: the blade window and its pass
+    bool window_pending_ = false;      // this frame's window pass is planned, not recorded yet
+    Vector<WindowDispatch> window_dispatches_; // prepare_frame: the window pass's dispatches
+    uint32_t pending_uploads_ = 0; // patches, slice sets, maps, map updates and the default images not yet recorded
+    uint64_t frame_ = 0;           // the host's index of the begun (or last) frame (grass_frame_desc)
+    uint32_t slot_ = 0;            // its frame slot: the one whose last frame finished longest ago
+    uint32_t views_made_ = 1;      // views whose view slots exist (make_view_slots)
     uint64_t slot_frame_[kMaxFramesInFlight] = {}; // the last frame of each frame slot (0: none)
     VkQueryPool timer_pool_ = VK_NULL_HANDLE;      // frames_in_flight x TierTimerRing::kStampsPerSet timestamps
     TierTimerRing timer_ring_;

@@ -15,11 +15,13 @@ namespace grass::vk {
 
 // What one set of the blade layout holds: the Frame and Field blocks (dynamic uniform
 // buffers), eleven combined image samplers (the five design maps; slice colour, normal,
-// threshold; the interaction map's two levels; the wind map) and one storage buffer (blade
-// curves).
+// threshold; the interaction map's two levels; the wind map) and three storage buffers
+// (blade curves; the blade window's table and poses). The blade window pass's own set
+// (vk_blade_window.hpp: two storage buffers) fits in the same room and comes from the same
+// per-frame pools.
 constexpr uint32_t kUniformBuffersPerSet = 2;
 constexpr uint32_t kImageSamplersPerSet = 11;
-constexpr uint32_t kStorageBuffersPerSet = 1;
+constexpr uint32_t kStorageBuffersPerSet = 3;
 
 // A set and the pool it came from (needed to free it).
 struct DescriptorSet {
@@ -64,7 +66,8 @@ public:
     // View slot `slot` (vk_desc_check.hpp) begins: its earlier frame has finished, so every
     // set allocated for it can go (the pools are reset, not destroyed).
     void reset(uint32_t slot);
-    // A set of the blade layout `layout` that lives until slot `slot` is reset. May throw
+    // A set of the blade layout `layout` (or of a layout needing no more of any type, as the
+    // blade window pass's set 1) that lives until slot `slot` is reset. May throw
     // std::bad_alloc (before any Vulkan object is made); a slot gets its pools on first use.
     bool allocate(uint32_t slot, VkDescriptorSetLayout layout, VkDescriptorSet* out, VkFailure* failure);
 

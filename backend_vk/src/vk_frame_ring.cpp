@@ -62,8 +62,9 @@ bool FrameRing::replace_buffer(Buffer* buffer, VkDeviceSize size, VkBufferUsageF
 
 bool FrameRing::grow_instances(Slot& s, uint32_t needed, uint64_t frame, VkFailure* failure) {
     const uint32_t capacity = grown_capacity(s.instance_capacity, needed);
-    if (!replace_buffer(&s.instances, VkDeviceSize(capacity) * sizeof(TierInstance), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                        frame, failure)) {
+    // A storage buffer too: the blade window pass reads view 0's instances (vk_blade_window.hpp).
+    if (!replace_buffer(&s.instances, VkDeviceSize(capacity) * sizeof(TierInstance),
+                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, frame, failure)) {
         return false;
     }
     s.instance_capacity = capacity;

@@ -131,6 +131,15 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
     if (has_variant(variant, depth_test)) return true;
     const bool depth_pass = (variant.features & kFeatureDepthPass) != 0;
     const uint32_t extras = variant.features & kViewExtras;
+    // The blade window's variant (kFeatureBladeWindow): responsive blades only; its pipelines
+    // live in a list of their own (window_slot), the colour features index the others' tables.
+    const bool window = (variant.features & kFeatureBladeWindow) != 0;
+    if (window &&
+        (variant.program != kShaderBlades || (variant.features & (kFeatureWind | kFeatureInteraction)) == 0)) {
+        *what = "a blade window pipeline (only responsive blades read the window)";
+        return false;
+    }
+    const uint32_t tabled = variant.features & ~kFeatureBladeWindow;
     if (variant.features & kFeatureGBuffer) return create_gbuffer_variant(variant, depth_test, failure, what);
     if (extras) {
         // The core refuses a receiving, motion or lit stereo view and a motion view without
@@ -146,13 +155,13 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
         // The core refuses a depth view without the host's depth target, and a depth view
         // with debug views or without the depth test (check_pass).
         if (!depth_target_.depth_only || !depth_test || variant.program >= kDepthPipelineKinds ||
-            (variant.features & ~kFeatureDepthPass) >= kColourFeatureMasks) {
+            (tabled & ~kFeatureDepthPass) >= kColourFeatureMasks) {
             *what = "a depth-only pipeline (no grass_vk_depth_pass_desc)";
             return false;
         }
-        if (depth_pipelines_.empty())
+        if (depth_pipelines_.empty() && !window)
             depth_pipelines_.assign(kColourFeatureMasks * kDepthPipelineKinds, VK_NULL_HANDLE);
-    } else if (variant.features >= kColourFeatureMasks) {
+    } else if (tabled >= kColourFeatureMasks) {
         return false;
     }
     // Responsive variants run the shaders compiled with GRASS_RESPONSIVE; still grass its own.
@@ -165,21 +174,33 @@ bool BladePipeline::create_variant(const ShaderVariant& variant, bool depth_test
     modules.host_shadows = (extras & kFeatureShadowReceive) != 0; // the map and its block in set 1
     modules.velocity = (extras & kFeatureMotion) != 0;            // the GrassMotion block in set 1
     modules.host_lights = (extras & kFeatureHostLights) != 0;     // the GrassLights block in set 1
+    modules.blade_window = window;                                // the poses read (bindings 14, 15)
+    VkPipeline* into = window ? window_slot(variant.program, variant.features, depth_test) : nullptr;
     const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(modules)
                                 : variant.program == kShaderVolume ? SlicePipelines::volume_shape(modules)
                                 : variant.program == kShaderImage  ? SlicePipelines::image_shape(modules)
                                                                    : DebugViewPipeline::shape(modules);
     if (extras) {
         const PipelineTarget& target = modules.velocity ? velocity_target_ : target_;
-        return extras_.create_variant(target, set_layout_, variant, shape, depth_test, failure, what);
+        return extras_.create_variant(target, set_layout_, variant, shape, depth_test, failure, what, into);
     }
     if (depth_pass) {
         const uint32_t colour = variant.features & ~kFeatureDepthPass;
         return create_pipeline(fn_, device_, depth_target_, layout_, shape, variant.features, true,
-                               &depth_pipelines_[colour * kDepthPipelineKinds + variant.program], failure, what);
+                               into ? into : &depth_pipelines_[colour * kDepthPipelineKinds + variant.program], failure,
+                               what);
     }
     return create_pipeline(fn_, device_, target_, layout_, shape, variant.features, depth_test,
-                           &pipelines_[variant.features][variant.program][depth_test ? 0 : 1], failure, what);
+                           into ? into : &pipelines_[variant.features][variant.program][depth_test ? 0 : 1], failure,
+                           what);
+}
+
+VkPipeline* BladePipeline::window_slot(uint32_t program, uint32_t features, bool depth_test) {
+    for (WindowPipeline& w : window_pipelines_) {
+        if (w.program == program && w.features == features && w.depth_test == depth_test) return &w.pipeline;
+    }
+    window_pipelines_.push_back(WindowPipeline{program, features, depth_test, VK_NULL_HANDLE});
+    return &window_pipelines_.back().pipeline;
 }
 
 bool BladePipeline::create_gbuffer_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure,
@@ -198,6 +219,7 @@ bool BladePipeline::create_gbuffer_variant(const ShaderVariant& variant, bool de
     modules.indexed_blocks = target_.indexed_blocks;
     modules.velocity = (variant.features & kFeatureMotion) != 0; // the GrassMotion block in set 1
     modules.gbuffer = true;                                      // the GrassGBuffer block in set 1
+    modules.blade_window = (variant.features & kFeatureBladeWindow) != 0;
     const PipelineShape shape = variant.program == kShaderBlades   ? blade_shape(modules)
                                 : variant.program == kShaderVolume ? SlicePipelines::volume_shape(modules)
                                                                    : SlicePipelines::image_shape(modules);
@@ -232,6 +254,10 @@ void BladePipeline::destroy() {
         if (p) fn_.vkDestroyPipeline(device_, p, fn_.callbacks());
     }
     depth_pipelines_.clear();
+    for (WindowPipeline& w : window_pipelines_) {
+        if (w.pipeline) fn_.vkDestroyPipeline(device_, w.pipeline, fn_.callbacks());
+    }
+    window_pipelines_.clear();
     gbuffer_.destroy();
     extras_.destroy();
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
@@ -284,7 +310,7 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
     }
     name_object(fn_, device_, VK_OBJECT_TYPE_SAMPLER, slice_nearest_, *what);
 
-    const VkShaderStageFlags stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    const VkShaderStageFlags stages = kBladeSetStages;
     const VkDescriptorSetLayoutBinding bindings[kBindingCount] = {
         {kBindingFrame, kBlockDescriptorType, 1, stages, nullptr},
         {kBindingField, kBlockDescriptorType, 1, stages, nullptr},
@@ -302,6 +328,11 @@ bool BladePipeline::create_layouts(VkFailure* failure, const char** what) {
         {kBindingInteractionMap1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
         {kBindingBladeCurves, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
         {kBindingWindMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, stages, &slice_nearest_},
+        // The pass never reads the table: the compute stage sees four storage buffers with
+        // its own set's (Vulkan's least maxPerStageDescriptorStorageBuffers).
+        {kBindingWindowTable, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+        {kBindingWindowPoses, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, stages, nullptr},
     };
     const VkPushConstantRange block_index{kBlockIndexStages, 0, kBlockIndexBytes};
     return create_set_and_pipeline_layout(

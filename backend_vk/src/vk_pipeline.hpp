@@ -43,10 +43,19 @@ enum BladeBinding : uint32_t {
     // A field's wind map (kFeatureWindMap: an RGBA design map read with texelFetch); draws
     // without it bind the default black map, which they never read.
     kBindingWindMap = 13,
-    kBindingCount = 14
+    // The blade window (kFeatureBladeWindow, vk_blade_window.hpp): the frame slot's table and
+    // the poses (storage buffers), read by the window variant of blade.vert; the pass writes
+    // the poses through the same binding. Other draws bind the 16-byte stand-in.
+    kBindingWindowTable = 14,
+    kBindingWindowPoses = 15,
+    kBindingCount = 16
 };
 static_assert(kBindingDensityMap == 2 && kBindingColorMap == 6 && kBindingHeightMap == 9,
               "kMapBinding of api/src/foundation/shader_interface.hpp");
+// The stages of set 0: the graphics shaders and the blade window pass, which binds a
+// responsive draw's set (vk_blade_window.hpp).
+constexpr VkShaderStageFlags kBladeSetStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT;
 static_assert(
     kBindingInteractionMap0 == 10 && kBindingInteractionMap1 == 11 && kBindingBladeCurves == 12 &&
         kBindingWindMap == kWindMapBinding,
@@ -152,7 +161,8 @@ class BladePipeline {
 public:
     BladePipeline(const Functions& functions, VkDevice device, HostAllocator* host)
         : fn_(functions), device_(device), depth_pipelines_(StlAllocator<VkPipeline>(host)),
-          extras_(functions, device, host), gbuffer_(functions, device, host) {}
+          extras_(functions, device, host), gbuffer_(functions, device, host),
+          window_pipelines_(StlAllocator<WindowPipeline>(host)) {}
     ~BladePipeline() { destroy(); }
     BladePipeline(const BladePipeline&) = delete;
     BladePipeline& operator=(const BladePipeline&) = delete;
@@ -190,6 +200,8 @@ public:
     // The depth-tested pipelines of every kind for `features` (a field's maps: upload_field).
     bool create_variants(uint32_t features, VkFailure* failure, const char** what);
     bool has_variant(const ShaderVariant& v, bool depth_test) const {
+        if ((v.features & kFeatureBladeWindow) && !(v.features & kFeatureGBuffer))
+            return window_pipeline(v.program, v.features, depth_test) != VK_NULL_HANDLE;
         if (v.features & kFeatureGBuffer)
             return gbuffer_.pipeline(routes_, v.program, v.features, depth_test) != VK_NULL_HANDLE;
         if (v.features & kViewExtras) return extras_.has_variant(v, depth_test);
@@ -205,6 +217,8 @@ public:
     const ViewExtrasPipelines& extras() const { return extras_; }
     // The pipeline of `kind` for `features` (has_variant(features, depth_test)).
     VkPipeline pipeline(PipelineKind kind, uint32_t features, bool depth_test) const {
+        if ((features & kFeatureBladeWindow) && !(features & kFeatureGBuffer))
+            return window_pipeline(kind, features, depth_test);
         if (features & kFeatureGBuffer) return gbuffer_.pipeline(routes_, kind, features, depth_test);
         if (features & kViewExtras) return extras_.pipeline(kind, features, depth_test);
         if (features & kFeatureDepthPass) return *depth_slot(kind, features);
@@ -212,6 +226,22 @@ public:
     }
 
 private:
+    // A blade window variant's pipeline (kFeatureBladeWindow, in any view but a G-buffer
+    // view's, whose table keys every feature): VK_NULL_HANDLE where not made.
+    struct WindowPipeline {
+        uint32_t program;
+        uint32_t features;
+        bool depth_test;
+        VkPipeline pipeline;
+    };
+    VkPipeline window_pipeline(uint32_t program, uint32_t features, bool depth_test) const {
+        for (const WindowPipeline& w : window_pipelines_) {
+            if (w.program == program && w.features == features && w.depth_test == depth_test) return w.pipeline;
+        }
+        return VK_NULL_HANDLE;
+    }
+    // Its entry, added unless it exists (may throw std::bad_alloc before anything is made).
+    VkPipeline* window_slot(uint32_t program, uint32_t features, bool depth_test);
     bool create_layouts(VkFailure* failure, const char** what);
     // A kFeatureGBuffer variant for the selected routes (create_variant).
     bool create_gbuffer_variant(const ShaderVariant& variant, bool depth_test, VkFailure* failure, const char** what);
@@ -240,11 +270,12 @@ private:
     // until the first depth variant; depth_target_.depth_only: the host gave a depth target.
     PipelineTarget depth_target_;
     Vector<VkPipeline> depth_pipelines_;
-    PipelineTarget velocity_target_; // velocity_attachment 0: the host gave no velocity target
-    ViewExtrasPipelines extras_;     // empty until the first view with extras
-    PipelineTarget gbuffer_target_;  // color_count 0: the host gave no G-buffer target
-    GBufferRoutes routes_;           // the G-buffer view being recorded (select_gbuffer)
-    GBufferPipelines gbuffer_;       // empty until the first G-buffer view
+    PipelineTarget velocity_target_;          // velocity_attachment 0: the host gave no velocity target
+    ViewExtrasPipelines extras_;              // empty until the first view with extras
+    PipelineTarget gbuffer_target_;           // color_count 0: the host gave no G-buffer target
+    GBufferRoutes routes_;                    // the G-buffer view being recorded (select_gbuffer)
+    GBufferPipelines gbuffer_;                // empty until the first G-buffer view
+    Vector<WindowPipeline> window_pipelines_; // empty until the first blade window variant
 };
 
 } // namespace grass::vk

@@ -57,6 +57,10 @@ grass_result VkBackend::prepare_variants(const char* function, const ShaderVaria
     for (uint32_t i = 0; i < count; ++i) {
         if ((variants[i].features & kFeatureGBuffer) && gbuffer == nullptr) continue; // no layout to make them for
         if (!pipeline_.create_variant(variants[i], true, &failure, &what)) return fail(function, what, failure);
+        // A blade window variant's draws are posed by the window pass of their features.
+        if ((variants[i].features & kFeatureBladeWindow) &&
+            !window_.ensure_pipeline(pipeline_.set_layout(), variants[i].features, &failure, &what))
+            return fail(function, what, failure);
         // GRASS_VIEW_FLAG_NO_DEPTH_TEST draws with pipelines of their own, made only when the
         // host declared the debug views (or by the first frame that sets the flag: record).
         if (no_depth_test && takes_no_depth_test(variants[i]) &&

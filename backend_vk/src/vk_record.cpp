@@ -74,6 +74,8 @@ grass_result VkBackend::begin_view(const char* function, uint32_t view, const Fr
     } else if (interaction_.has_map()) {
         interaction_.release(frame_); // the core holds no map (frame_plan.hpp)
     }
+    // The blade window of view 0's plan (its pass recorded by prepare_frame, after the map's).
+    if (!prepare_blade_window(plan, &failure, &what)) return fail(function, what, failure);
     return GRASS_SUCCESS;
 }
 
@@ -91,6 +93,8 @@ grass_result VkBackend::prepare_frame(VkCommandBuffer cmd) {
         interaction_.record(cmd, slot_, ctx_->plan.interaction);
         interaction_pending_ = false;
     }
+    // Then the blade window pass, which reads the map (grass_vk.h).
+    if (window_pending_) return record_blade_window(cmd);
     return GRASS_SUCCESS;
 }
 
@@ -234,6 +238,10 @@ bool VkBackend::draw_ready(const TierDraw& draw, bool debug_view, const char** p
     }
     if ((draw.features & kFeatureInteraction) && (interaction_pending_ || !interaction_.map_ready())) {
         *problem = "this frame's interaction pass (responsive grass)";
+        return false;
+    }
+    if ((draw.features & kFeatureBladeWindow) && (window_pending_ || !window_.has_window())) {
+        *problem = "this frame's blade window pass (responsive grass)";
         return false;
     }
     return true;

@@ -20,6 +20,9 @@
 //   (grass_view_gbuffer_desc; the GrassGBuffer block in set 1), alone or with velocity;
 // - responsive: GRASS_RESPONSIVE, for the pipelines of kBladeCurveFeatures (blade.vert,
 //   volume.frag and image.frag have it);
+// - blade window: GRASS_BLADE_WINDOW, blade.vert of the responsive pipelines of
+//   kFeatureBladeWindow, which reads each blade's pose from the blade window (bindings 14 and
+//   15, vk_blade_window.hpp) instead of computing it; never without responsive;
 // - indexed blocks: GRASS_INDEXED_BLOCKS, the Frame and Field blocks read at an index from a
 //   push constant (always 0) instead of the literal 0; the pipeline layout then has a 4-byte
 //   push-constant range, which vk_record sets to 0.
@@ -57,6 +60,7 @@ enum SpirvFeature : uint32_t {
     kSpirvIndexedBlocks = 1u << 5, // GRASS_INDEXED_BLOCKS
     kSpirvHostLights = 1u << 6,    // GRASS_HOST_LIGHTS
     kSpirvGBuffer = 1u << 7,       // GRASS_GBUFFER
+    kSpirvBladeWindow = 1u << 8,   // GRASS_BLADE_WINDOW
 };
 
 struct Spirv {
@@ -74,11 +78,13 @@ struct SpirvVariant {
     bool velocity = false;       // GRASS_VELOCITY: a motion view's blade.vert and fragment shaders. Mono only.
     bool host_lights = false;    // GRASS_HOST_LIGHTS: a lit view's fragment shaders. Mono only.
     bool gbuffer = false;        // GRASS_GBUFFER: a G-buffer view's fragment shaders. Mono only.
+    bool blade_window = false;   // GRASS_BLADE_WINDOW: blade.vert reads the blade window's poses. Responsive only.
     uint32_t features() const {
         return (multiview ? kSpirvMultiview : 0u) | (depth_target ? kSpirvDepthTarget : 0u) |
                (host_shadows ? kSpirvHostShadows : 0u) | (velocity ? kSpirvVelocity : 0u) |
                (responsive ? kSpirvResponsive : 0u) | (indexed_blocks ? kSpirvIndexedBlocks : 0u) |
-               (host_lights ? kSpirvHostLights : 0u) | (gbuffer ? kSpirvGBuffer : 0u);
+               (host_lights ? kSpirvHostLights : 0u) | (gbuffer ? kSpirvGBuffer : 0u) |
+               (blade_window ? kSpirvBladeWindow : 0u);
     }
 };
 

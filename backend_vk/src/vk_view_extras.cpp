@@ -52,13 +52,13 @@ bool relocate_output(uint32_t* code, size_t words, uint32_t from, uint32_t to) {
 
 bool ViewExtrasPipelines::create_variant(const PipelineTarget& target, VkDescriptorSetLayout blade_set,
                                          const ShaderVariant& variant, const PipelineShape& shape, bool depth_test,
-                                         VkFailure* failure, const char** what) {
-    if (has_variant(variant, depth_test)) return true;
+                                         VkFailure* failure, const char** what, VkPipeline* into) {
+    if (into == nullptr && has_variant(variant, depth_test)) return true;
     const bool receive = (variant.features & kFeatureShadowReceive) != 0;
     const bool motion = (variant.features & kFeatureMotion) != 0;
     if ((variant.features & kViewExtras) == 0 || variant.program >= kExtrasPipelineKinds ||
-        (variant.features & ~kViewExtras) >= kExtrasColourMasks || (motion && target.velocity_attachment == 0) ||
-        shape.vertex_code == nullptr || shape.fragment_code == nullptr) {
+        (variant.features & ~(kViewExtras | kFeatureBladeWindow)) >= kExtrasColourMasks ||
+        (motion && target.velocity_attachment == 0) || shape.vertex_code == nullptr || shape.fragment_code == nullptr) {
         *what = "a pipeline that receives the host's shadows, writes motion vectors or is lit by the host's lights "
                 "(no such variant, or no grass_vk_velocity_target_desc)";
         return false;
@@ -68,10 +68,13 @@ bool ViewExtrasPipelines::create_variant(const PipelineTarget& target, VkDescrip
         return false;
     }
     if (receive && samplers_[0] == VK_NULL_HANDLE && !create_samplers(failure, what)) return false;
-    Vector<VkPipeline>& table = pipelines_[combination(variant.features)];
-    if (table.empty()) table.assign(kExtrasColourMasks * kExtrasPipelineKinds * 2, VK_NULL_HANDLE);
-    const uint32_t colour = variant.features & ~kViewExtras;
-    VkPipeline* p = &table[(colour * kExtrasPipelineKinds + variant.program) * 2 + (depth_test ? 0 : 1)];
+    VkPipeline* p = into;
+    if (p == nullptr) {
+        Vector<VkPipeline>& table = pipelines_[combination(variant.features)];
+        if (table.empty()) table.assign(kExtrasColourMasks * kExtrasPipelineKinds * 2, VK_NULL_HANDLE);
+        const uint32_t colour = variant.features & ~kViewExtras;
+        p = &table[(colour * kExtrasPipelineKinds + variant.program) * 2 + (depth_test ? 0 : 1)];
+    }
     PipelineShape named = shape;
     named.name = kNames[combination(variant.features)][variant.program];
     if (!motion)

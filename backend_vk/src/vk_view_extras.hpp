@@ -90,8 +90,11 @@ public:
     // exists; the layouts, the samplers (receiving) and the combination's table first, on
     // the first call that needs them (`blade_set`: set 0's layout; a table may throw
     // std::bad_alloc). On failure it does not exist and *what names what was being made.
+    // `into` (a blade window variant's, kFeatureBladeWindow): the pipeline goes there, not
+    // into the combination's table.
     bool create_variant(const PipelineTarget& target, VkDescriptorSetLayout blade_set, const ShaderVariant& variant,
-                        const PipelineShape& shape, bool depth_test, VkFailure* failure, const char** what);
+                        const PipelineShape& shape, bool depth_test, VkFailure* failure, const char** what,
+                        VkPipeline* into = nullptr);
     bool has_variant(const ShaderVariant& v, bool depth_test) const {
         const VkPipeline* p = slot(v.program, v.features, depth_test);
         return p != nullptr && *p != VK_NULL_HANDLE;

@@ -3,6 +3,7 @@
 // determinism, patches of equal count with boxes and spread prefixes, a sphere's every face.
 #include "mesh/mesh_scatter.hpp"
 #include "mesh/mesh_surface.hpp"
+#include "mesh/poisson_disk.hpp"
 
 #include <gtest/gtest.h>
 
@@ -239,6 +240,24 @@ TEST_F(MeshScatterTest, PoissonTuftsKeepTheirMinimumDistance) {
     EXPECT_EQ(grass::scatter_mesh_blades(&log_, "test", s, p, &refused), GRASS_ERROR_INVALID_ARGUMENT);
     EXPECT_NE(last().find("params->tuft_min_distance 1 m"), std::string::npos) << last();
     EXPECT_TRUE(refused.blades.empty());
+}
+
+// Coordinates whose cell index passes int64 (1e300 m, a minimum distance of 1e-300 m):
+// fuzz_mesh_field found the cast's undefined behaviour in the dart throwing (clang's UBSan,
+// float-cast-overflow; GCC's -fsanitize=undefined of the asan stage leaves that check out,
+// and without a sanitizer the answers were the same). The points still keep their distance.
+TEST_F(MeshScatterTest, PoissonCellsOfHugeCoordinatesStayDefined) {
+    grass::PoissonDiskSet far(1.0, 16, &host_);
+    const double a[3] = {1e300, 0.0, 0.0}, b[3] = {-1e300, 1e300, -1e300}, c[3] = {1e300, 0.5, 0.0};
+    EXPECT_TRUE(far.try_insert(a));
+    EXPECT_TRUE(far.try_insert(b));
+    EXPECT_FALSE(far.try_insert(c)); // 0.5 m from a: too close, though its cell index is held at the bound
+    EXPECT_FALSE(far.try_insert(a));
+    grass::PoissonDiskSet tiny(1e-300, 16, &host_);
+    const double d[3] = {1.0, 2.0, 3.0}, e[3] = {1.0, 2.0, 3.5};
+    EXPECT_TRUE(tiny.try_insert(d));
+    EXPECT_TRUE(tiny.try_insert(e));
+    EXPECT_EQ(tiny.size(), 2u);
 }
 
 TEST_F(MeshScatterTest, TuftRadiusAndDistanceInWorldMetresUnderAScaledTransform) {

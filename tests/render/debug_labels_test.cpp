@@ -179,6 +179,7 @@ TEST(VkDebugLabels, EveryObjectGrassMakesIsNamedAndEachPassAndTierIsLabelled) {
         const std::multiset<std::string> begun = check_balanced(vi::label_events());
         EXPECT_GE(begun.count("grass uploads"), 1u);
         for (const char* label : kFrameLabels) EXPECT_EQ(begun.count(label), 3u) << label << ", one per frame";
+        EXPECT_EQ(begun.count("grass blade window pass"), 3u) << "one per frame (the collider's)";
     }
     vi::clear_debug_records();
 }

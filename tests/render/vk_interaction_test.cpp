@@ -1,6 +1,7 @@
 // The interaction pass on Vulkan (grass_vk.h, docs/responsive.md), through grass's own
 // dispatch table (vk_intercept.hpp counts the dispatches grass records):
-// - grass_vk_prepare records one dispatch per map level for a frame with colliders, and
+// - grass_vk_prepare records one dispatch per map level for a frame with colliders (and the
+//   blade window pass's, vk_blade_window_test.cpp), and
 //   none for a frame of still grass, which holds no responsive GPU memory; the frame with a
 //   collider shows its trail where the collider is and nothing changes far from it; once the
 //   map is dropped (grass_set_interaction) no pass runs and its memory is given back;
@@ -9,8 +10,7 @@
 //   scroll it;
 // - grass_vk_record refuses a frame whose pass grass_vk_prepare did not record;
 // - grass_vk_prepare refuses a bad desc, naming the argument, and records nothing.
-#include "render_fixture.hpp"
-#include "vk_intercept.hpp"
+#include "vk_small_scene.hpp"
 
 #include "image_io.hpp"
 
@@ -28,42 +28,9 @@ namespace vi = vk_intercept;
 constexpr double kBall[3] = {2.0, 0.2, 1.6}; // on the 4 m x 4 m field, in view
 constexpr float kBallRadius = 0.35f;
 
-grass_host::TargetDesc small_target() {
-    grass_host::TargetDesc t;
-    t.width = t.height = 96;
-    t.vk_get_instance_proc_addr = vi::get_instance_proc_addr();
-    return t;
-}
-
-struct Scene {
-    std::unique_ptr<grass_host::Host> host;
-    grass_context* ctx = nullptr;
-    std::string log;
-    ~Scene() {
-        if (ctx) grass_destroy_context(ctx);
-        if (host) {
-            EXPECT_EQ(host->validation_messages(), 0u) << host->validation_log();
-        }
-    }
-};
-
+using Scene = VkSmallScene;
 // A 4 m x 4 m field of blades seen at a slant from its near edge.
-void make_scene(Scene* s) {
-    std::string error;
-    s->host = grass_host::Host::create(GRASS_BACKEND_VULKAN, small_target(), &error);
-    ASSERT_TRUE(s->host) << error;
-    grass_context_desc cd = grass_default_context_desc();
-    cd.log_user_data = &s->log;
-    cd.log_fn = [](void* user, grass_log_level, grass_message_id id, const char* message) {
-        *static_cast<std::string*>(user) += std::to_string(int(id)) + ": " + message + "\n";
-    };
-    ASSERT_EQ(s->host->create_context(cd, &s->ctx), GRASS_SUCCESS) << s->log;
-    grass_patch_desc pd = grass_default_patch_desc();
-    grass_patch_id patch{};
-    ASSERT_EQ(grass_create_patch(s->ctx, &pd, &patch), GRASS_SUCCESS) << s->log;
-    grass_field_id field{};
-    ASSERT_EQ(create_blade_field(s->ctx, patch, 16, &field), GRASS_SUCCESS) << s->log;
-}
+void make_scene(Scene* s) { make_small_scene(s); }
 
 grass_view_desc scene_view(const Scene& s, double time) {
     const double eye[3] = {2.0, 1.2, -0.4}, look[3] = {2.0, 0.0, 2.0};
@@ -127,7 +94,8 @@ TEST(VkInteraction, PrepareFrameRecordsThePassOnlyForFramesWithColliders) {
     ASSERT_EQ(set_ball(s.ctx, kBall[0], 0.0f), GRASS_SUCCESS) << s.log;
     before = vi::live().dispatches;
     const grass_host::Image pressed = frame(s, 1.1);
-    EXPECT_EQ(vi::live().dispatches - before, int64_t(levels)) << "one dispatch per level";
+    // One dispatch per level, then the blade window pass's one (the field's one geometry draw).
+    EXPECT_EQ(vi::live().dispatches - before, int64_t(levels) + 1) << "one dispatch per level and the window's";
     const grass_interaction_desc id = grass_default_interaction_desc();
     EXPECT_GE(dynamics_bytes(s.ctx), uint64_t(id.level_count) * id.resolution * id.resolution * 16u)
         << "the map's levels are counted";

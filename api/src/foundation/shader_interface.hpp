@@ -76,6 +76,10 @@ constexpr uint32_t kFeatureGBuffer = 1u << 14;
 // for a backend that runs the window pass (Backend::runs_blade_window); a draw with any cell
 // the window does not hold keeps the per-vertex variant.
 constexpr uint32_t kFeatureBladeWindow = 1u << 15;
+// The feature bits the blade window pass (blade_window.comp) is compiled or specialised with,
+// in both backends: the design maps', wind, the interaction map and the wind map (all below
+// kFeatureBladeCulling).
+constexpr uint32_t kBladeWindowPassFeatures = kFeatureBladeCulling - 1;
 // Every feature mask is below this (the variants a backend may compile).
 constexpr uint32_t kFeatureMaskCount = kFeatureBladeWindow << 1;
 // The fragment output location of each grass_gbuffer_semantic in the GRASS_GBUFFER variants

@@ -7,7 +7,16 @@ namespace grass {
 namespace {
 constexpr uint32_t kEnd = 0xffffffffu;
 
-int64_t cell_coordinate(double v, double cell) { return static_cast<int64_t>(std::floor(v / cell)); }
+// The grid cell of a coordinate. A quotient beyond +-2^62 (a coordinate of 1e30 m, or a
+// minimum distance of 1e-300 m) would overflow int64: it is held at the bound, so that far
+// points share a cell and are told apart by their distance, which try_insert compares anyway.
+int64_t cell_coordinate(double v, double cell) {
+    constexpr double kBound = 4611686018427387904.0; // 2^62
+    const double q = std::floor(v / cell);
+    if (!(q > -kBound)) return -static_cast<int64_t>(kBound);
+    if (!(q < kBound)) return static_cast<int64_t>(kBound);
+    return static_cast<int64_t>(q);
+}
 } // namespace
 
 PoissonDiskSet::PoissonDiskSet(double min_distance, uint32_t capacity, HostAllocator* host)
