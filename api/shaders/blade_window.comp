@@ -21,15 +21,16 @@ layout(local_size_x = 64) in;
 #include "blade_state.glsl"
 
 // The pass's bindings beyond the draws' (listed here only; GL: gl_blade_window.cpp, Vulkan:
-// the pass's own set 1, backend_vk/src/vk_blade_window.hpp WindowPassBinding).
+// the pass's own sets 1 and 2, backend_vk/src/vk_blade_window.hpp WindowPassBinding and
+// WindowStateBinding).
 #ifdef VULKAN
 #define GRASS_WINDOW_INSTANCES_BINDING set = 1, binding = 0
 #define GRASS_WINDOW_ROOTS_BINDING set = 1, binding = 1
 #define GRASS_WINDOW_WORK_BINDING set = 1, binding = 2
-#define GRASS_WINDOW_COLLIDERS_BINDING set = 1, binding = 3
-#define GRASS_WINDOW_TILE_OFFSETS_BINDING set = 1, binding = 4
-#define GRASS_WINDOW_TILE_COLLIDERS_BINDING set = 1, binding = 5
-#define GRASS_WINDOW_LEVEL_BINDING set = 1, binding = 6
+#define GRASS_WINDOW_COLLIDERS_BINDING set = 2, binding = 0 // set 2: WindowStateBinding
+#define GRASS_WINDOW_TILE_OFFSETS_BINDING set = 2, binding = 1
+#define GRASS_WINDOW_TILE_COLLIDERS_BINDING set = 2, binding = 2
+#define GRASS_WINDOW_LEVEL_BINDING set = 2, binding = 3
 #else // GL: shader storage bindings 1, 3-7, uniform binding 2
 #define GRASS_WINDOW_INSTANCES_BINDING binding = 1
 #define GRASS_WINDOW_ROOTS_BINDING binding = 3

@@ -165,11 +165,14 @@ TEST_P(BladeStateRenderTest, ARollingBallPushesBladesAwayFromItsCentre) {
     frame(0.0);
     const std::vector<Record> rest = records();
     ASSERT_FALSE(rest.empty());
+    grass_host::Image image;
     for (int k = 1; k <= 45; ++k) {
         const double t = k / 30.0;
         ball(-0.35, 0.25, -0.5 + 1.0 * t, 0.45f, 0.0f, 1.0f);
-        frame(t);
+        image = frame(t);
     }
+    save(image, "rolling_ball");
+    expect_grass(image, host->target(), 0.1, "the rolling ball's frame"); // the field in view
     const std::vector<Record> now = records();
     ASSERT_EQ(now.size(), rest.size());
     size_t pushed = 0, outward = 0;
