@@ -105,9 +105,15 @@ void main() {
             vec3 offset = position - rest; // across the blade
             position = bezier(pose.v1, pose.v2, t) + root_position + offset;
 #ifdef GRASS_VELOCITY
+#ifdef GRASS_BLADE_WINDOW
+            // The last frame's pose, which the pass keeps; none where the host's previous time
+            // is this frame's (grass_view_motion_desc: nothing moves).
+            BladePose before = grass_motion.times.x != 0.0 ? window_previous_pose(i_cell.xy, blade) : pose;
+#else
             g_previous_time = true; // the pose at the previous frame's time (motion.glsl)
             BladePose before = cell_blade_pose(blade, i_cell.xy, GRASS_INSTANCE_ORIGIN(i_origin.xyz), a_root_shape.xy, segments);
             g_previous_time = false;
+#endif
             previous = bezier(before.v1, before.v2, t) + root_position + offset;
 #endif
             // The normal turns with the tangent: cross(side, tangent) of the deformed curve,

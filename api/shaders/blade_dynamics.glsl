@@ -130,6 +130,13 @@ BladePose blade_equilibrium(vec3 i1, vec3 i2, vec3 up, float len, float stiffnes
     return pose;
 }
 
+#ifdef GRASS_BLADE_STATE
+// The blade window pass (blade_window.comp) steps the blade's state: its drawn pose replaces
+// the equilibrium, before the interaction map's press and the terrain apply as they do to it.
+BladePose blade_window_step(uint blade, uvec2 cell, vec3 i1, vec3 i2, vec3 up, float len, int segments, vec3 root,
+                            vec3 forces);
+#endif
+
 // The deformed pose of blade `blade` of cell `cell`: rest points in world metres relative to
 // the root (`to_world`: patch -> world with the cell's mirroring), root at camera-relative
 // `root`, drawn with `segments` segments; on a height map the root stands at `ground`
@@ -157,6 +164,9 @@ BladePose blade_pose(uint blade, uvec2 cell, mat3 to_world, vec3 root, int segme
         stiffness = m.stiffness;
     }
     pose = blade_equilibrium(i1, i2, up, len, stiffness, forces, segments);
+#ifdef GRASS_BLADE_STATE
+    pose = blade_window_step(blade, cell, i1, i2, up, len, segments, root, forces);
+#endif
 
     if (has_map(GRASS_INTERACTION)) {
         float depth = field.trample.x * blade_variation(blade, cell, 3u);

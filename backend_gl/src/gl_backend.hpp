@@ -235,8 +235,9 @@ private:
     GlStreamBuffer tile_colliders_[2];
     // gl_blade_window.cpp: the blade window pass (plan.blade_window of view 0), run by the
     // frame's first render after the interaction pass; its programs per feature mask
-    // (kBladeWindowPassFeatures), made on first use; the table (made on the first pass) and
-    // the poses, grown as a frame needs.
+    // (kBladeWindowPassFeatures), made on first use; the table and work items (made on the
+    // first pass) and the records (poses and state), grown as a frame needs, keeping the
+    // slots' state across the growth.
     grass_result run_blade_window_pass(const FramePlan& plan, const char* function);
     grass_result blade_window_program(const char* function, uint32_t features, GLuint* out_program);
     void bind_blade_window() const; // for the responsive geometry draws: table and poses
@@ -245,6 +246,7 @@ private:
     void release_blade_window();
     GLuint window_programs_[kBladeWindowPassFeatures + 1] = {};
     GlStreamBuffer window_table_;
+    GlStreamBuffer window_work_;
     GLuint window_poses_ = 0;
     uint64_t window_pose_capacity_ = 0;
     bool window_ran_ = false; // this frame's blade window pass has run

@@ -58,6 +58,7 @@
     X(PFNGLNAMEDBUFFERSTORAGEPROC, NamedBufferStorage)                               \
     X(PFNGLNAMEDBUFFERDATAPROC, NamedBufferData)                                     \
     X(PFNGLNAMEDBUFFERSUBDATAPROC, NamedBufferSubData)                               \
+    X(PFNGLCOPYNAMEDBUFFERSUBDATAPROC, CopyNamedBufferSubData)                       \
     X(PFNGLBINDBUFFERPROC, BindBuffer)                                               \
     X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                       \
     X(PFNGLBINDBUFFERRANGEPROC, BindBufferRange)                                     \

@@ -60,6 +60,7 @@ static_assert(kHostDisabledCount <= 32, "GlDrawStateGuard::host_enabled_ holds o
 
 void GlDrawStateGuard::save_dynamics() {
     const GlFunctions& gl = gl_;
+    save_binding(kWindowLevelUniformBinding, &window_level_binding_);
     gl.GetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storage_buffer_);
     for (GLuint i = 0; i < kStorageBindings; ++i) {
         gl.GetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &storage_bindings_[i].buffer);
@@ -82,6 +83,7 @@ void GlDrawStateGuard::save_dynamics() {
 
 void GlDrawStateGuard::restore_dynamics() const {
     const GlFunctions& gl = gl_;
+    restore_binding(kWindowLevelUniformBinding, window_level_binding_);
     for (GLuint i = 0; i < kStorageBindings; ++i) {
         const UniformBinding& b = storage_bindings_[i];
         if (b.buffer != 0 && b.size > 0) {

@@ -72,7 +72,7 @@ private:
         GLint sampler;
     };
     // Responsive grass.
-    static constexpr GLuint kStorageBindings = 4; // blade curves (0), colliders and tile lists (1-3)
+    static constexpr GLuint kStorageBindings = 8; // curves (0), colliders and tiles (1-3), the window pass's (4-7)
     struct ImageUnit {
         GLint texture, level, layer, access, format;
         GLboolean layered;
@@ -81,6 +81,8 @@ private:
     void restore_dynamics() const;
     bool dynamics_ = false;
     UniformBinding storage_bindings_[kStorageBindings] = {};
+    static constexpr GLuint kWindowLevelUniformBinding = 2; // the blade window pass's Interaction block
+    UniformBinding window_level_binding_ = {};
     GLint storage_buffer_ = 0; // the generic binding
     ImageUnit image_unit0_ = {};
     MapUnit interaction_units_[3] = {}; // units 10, 11 (interaction map), 13 (wind map)

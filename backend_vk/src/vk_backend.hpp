@@ -71,7 +71,10 @@ public:
     uint64_t gpu_bytes() const override { return memory_.bytes(); }
     uint64_t dynamics_gpu_bytes() const override;
     // The blade window pass (vk_blade_window.hpp): recorded by grass_vk_prepare.
-    bool runs_blade_window() const override { return true; }
+    // The pass needs kWindowPassStorageBuffers storage buffers in its compute stage.
+    bool runs_blade_window() const override {
+        return device_.properties.limits.maxPerStageDescriptorStorageBuffers >= kWindowPassStorageBuffers;
+    }
     void device_memory(grass_memory_stats* stats) const override;
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
     // A Vulkan device is not current on a thread: every call may use it.

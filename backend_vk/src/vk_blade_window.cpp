@@ -27,7 +27,18 @@ namespace {
 constexpr VkDescriptorSetLayoutBinding kPassBindings[kWindowPassBindingCount] = {
     {kWindowPassBindingInstances, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
     {kWindowPassBindingVertices, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+    {kWindowPassBindingWork, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
 };
+// Set 2's bindings (WindowStateBinding).
+constexpr VkDescriptorSetLayoutBinding kStateBindings[kWindowStateBindingCount] = {
+    {kWindowStateBindingColliders, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+    {kWindowStateBindingTileOffsets, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+    {kWindowStateBindingTileColliders, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+    {kWindowStateBindingLevel, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+};
+// The work items' buffers are at least this large: they stand in for the state set's uniform
+// block (InteractionLevelUniforms) when there are no colliders.
+constexpr VkDeviceSize kMinWorkBytes = 256;
 
 } // namespace
 
@@ -41,6 +52,9 @@ BladeWindowPass::~BladeWindowPass() {
     // The host guarantees the device is idle for grass work (context destruction).
     deferred_.destroy_now(&poses_);
     for (Buffer& t : tables_) deferred_.destroy_now(&t);
+    for (Buffer& w : works_) deferred_.destroy_now(&w);
+    if (state_pool_) fn_.vkDestroyDescriptorPool(device_, state_pool_, fn_.callbacks()); // frees its sets
+    if (state_layout_) fn_.vkDestroyDescriptorSetLayout(device_, state_layout_, fn_.callbacks());
     for (Pipeline& p : pipelines_) fn_.vkDestroyPipeline(device_, p.pipeline, fn_.callbacks());
     if (layout_) fn_.vkDestroyPipelineLayout(device_, layout_, fn_.callbacks());
     if (set_layout_) fn_.vkDestroyDescriptorSetLayout(device_, set_layout_, fn_.callbacks());
@@ -49,6 +63,7 @@ BladeWindowPass::~BladeWindowPass() {
 uint64_t BladeWindowPass::bytes() const {
     uint64_t bytes = poses_.allocated;
     for (const Buffer& t : tables_) bytes += t.allocated;
+    for (const Buffer& w : works_) bytes += w.allocated;
     return bytes;
 }
 
@@ -70,11 +85,21 @@ bool BladeWindowPass::create_layouts(VkDescriptorSetLayout blade_set, VkFailure*
         return false;
     }
     name_object(fn_, device_, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, set_layout_, *what);
-    const VkDescriptorSetLayout sets[2] = {blade_set, set_layout_};
+    set_info.bindingCount = kWindowStateBindingCount;
+    set_info.pBindings = kStateBindings;
+    *what = "the blade window pass's state descriptor set layout";
+    if (!vk_ok(fn_.vkCreateDescriptorSetLayout(device_, &set_info, fn_.callbacks(), &state_layout_),
+               "vkCreateDescriptorSetLayout", failure)) {
+        state_layout_ = VK_NULL_HANDLE;
+        return false;
+    }
+    name_object(fn_, device_, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, state_layout_, *what);
+    if (!create_state_sets(failure, what)) return false;
+    const VkDescriptorSetLayout sets[3] = {blade_set, set_layout_, state_layout_};
     // The indexed-block module reads the Frame and Field blocks at a pushed index (0).
     const VkPushConstantRange block_index{VK_SHADER_STAGE_COMPUTE_BIT, 0, kBlockIndexBytes};
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    info.setLayoutCount = 2;
+    info.setLayoutCount = 3;
     info.pSetLayouts = sets;
     info.pushConstantRangeCount = indexed_blocks_ ? 1 : 0;
     info.pPushConstantRanges = &block_index;
@@ -86,6 +111,32 @@ bool BladeWindowPass::create_layouts(VkDescriptorSetLayout blade_set, VkFailure*
     }
     name_object(fn_, device_, VK_OBJECT_TYPE_PIPELINE_LAYOUT, layout_, *what);
     return true;
+}
+
+bool BladeWindowPass::create_state_sets(VkFailure* failure, const char** what) {
+    const VkDescriptorPoolSize sizes[] = {
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 3 * frames_in_flight_},
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frames_in_flight_},
+    };
+    VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pool_info.maxSets = frames_in_flight_;
+    pool_info.poolSizeCount = 2;
+    pool_info.pPoolSizes = sizes;
+    *what = "the blade window pass's state descriptor pool";
+    if (!vk_ok(fn_.vkCreateDescriptorPool(device_, &pool_info, fn_.callbacks(), &state_pool_), "vkCreateDescriptorPool",
+               failure)) {
+        state_pool_ = VK_NULL_HANDLE;
+        return false;
+    }
+    name_object(fn_, device_, VK_OBJECT_TYPE_DESCRIPTOR_POOL, state_pool_, *what);
+    VkDescriptorSetLayout layouts[kMaxFramesInFlight];
+    for (uint32_t s = 0; s < frames_in_flight_; ++s) layouts[s] = state_layout_;
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = state_pool_;
+    alloc.descriptorSetCount = frames_in_flight_;
+    alloc.pSetLayouts = layouts;
+    *what = "the blade window pass's state descriptor sets";
+    return vk_ok(fn_.vkAllocateDescriptorSets(device_, &alloc, state_sets_), "vkAllocateDescriptorSets", failure);
 }
 
 bool BladeWindowPass::ensure_pipeline(VkDescriptorSetLayout blade_set, uint32_t features, VkFailure* failure,
@@ -129,56 +180,97 @@ bool BladeWindowPass::ensure_pipeline(VkDescriptorSetLayout blade_set, uint32_t 
     return true;
 }
 
+bool BladeWindowPass::grow_streaming(Buffer* buffers, VkDeviceSize bytes, uint64_t frame, const char* name,
+                                     VkFailure* failure) {
+    if (bytes <= buffers[0].size) return true;
+    // Every slot's buffer at once, all of one size: the window's memory is the plan's, not
+    // the history of which slot grew when. Frames in flight keep reading the old ones.
+    Buffer fresh[kMaxFramesInFlight];
+    const VkDeviceSize size = bytes > 2 * buffers[0].size ? bytes : 2 * buffers[0].size;
+    for (uint32_t s = 0; s < frames_in_flight_; ++s) {
+        if (!deferred_.create_buffer(size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                     MemoryUse::streaming, &fresh[s], failure)) {
+            for (Buffer& f : fresh) deferred_.destroy_now(&f);
+            return false;
+        }
+        name_object(fn_, device_, VK_OBJECT_TYPE_BUFFER, fresh[s].buffer, name);
+    }
+    for (uint32_t s = 0; s < frames_in_flight_; ++s) {
+        deferred_.retire(&buffers[s], frame);
+        buffers[s] = fresh[s];
+    }
+    return true;
+}
+
 bool BladeWindowPass::prepare(uint32_t slot, uint64_t frame, const BladeWindowPlan& plan, VkFailure* failure,
                               const char** what) {
-    // The sizes are the plan's (the core's stride per blade and slot, its table's entries).
+    // The sizes are the plan's (the core's records per blade and slot, its table's entries).
     const VkDeviceSize pose_bytes = plan.pose_bytes > 0 ? plan.pose_bytes : 16;
     const VkDeviceSize table_bytes = plan.table.empty() ? 16 : VkDeviceSize(plan.table.size()) * sizeof(uint32_t);
-    Buffer& table = tables_[slot];
-    if (table_bytes > table.size) {
-        // Every slot's table at once, all of one size: the window's memory is the plan's, not
-        // the history of which slot grew when. Frames in flight keep reading the old ones.
-        Buffer fresh[kMaxFramesInFlight];
-        *what = "the blade window's table";
-        const VkDeviceSize size = table_bytes > 2 * table.size ? table_bytes : 2 * table.size;
-        for (uint32_t s = 0; s < frames_in_flight_; ++s) {
-            if (!deferred_.create_buffer(size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::streaming, &fresh[s],
-                                         failure)) {
-                for (Buffer& f : fresh) deferred_.destroy_now(&f);
-                return false;
-            }
-            name_object(fn_, device_, VK_OBJECT_TYPE_BUFFER, fresh[s].buffer, "grass blade window table");
-        }
-        for (uint32_t s = 0; s < frames_in_flight_; ++s) {
-            deferred_.retire(&tables_[s], frame);
-            tables_[s] = fresh[s];
-        }
+    const VkDeviceSize work_bytes = VkDeviceSize(plan.work.size()) * sizeof(uint32_t);
+    *what = "the blade window's table";
+    if (!grow_streaming(tables_, table_bytes, frame, "grass blade window table", failure)) return false;
+    *what = "the blade window's work items";
+    if (!grow_streaming(works_, work_bytes > kMinWorkBytes ? work_bytes : kMinWorkBytes, frame,
+                        "grass blade window work", failure)) {
+        return false;
     }
     if (pose_bytes > poses_.size) {
-        // Grown to what the plan asks, no more: the poses can take up to kMaxBladeWindowPoseBytes.
+        // Grown to what the plan asks, no more (up to kMaxBladeWindowPoseBytes). The slots the
+        // core keeps keep their records: record() copies the old buffer into the new one, which
+        // is retired at this frame (frames in flight read it, this frame's copy too).
         Buffer fresh;
         *what = "the blade window's poses";
-        if (!deferred_.create_buffer(pose_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::device_local, &fresh,
-                                     failure)) {
+        if (!deferred_.create_buffer(pose_bytes,
+                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                         VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                     MemoryUse::device_local, &fresh, failure)) {
             return false;
         }
         name_object(fn_, device_, VK_OBJECT_TYPE_BUFFER, fresh.buffer, "grass blade window poses");
-        deferred_.retire(&poses_, frame); // frames in flight may read the old poses
+        // Grown twice before a pass: the first source (retired at this frame too) is still the one.
+        if (poses_.buffer != VK_NULL_HANDLE && grown_from_ == VK_NULL_HANDLE) {
+            grown_from_ = poses_.buffer;
+            grown_bytes_ = poses_.size;
+        }
+        deferred_.retire(&poses_, frame);
         poses_ = fresh;
     }
+    Buffer& table = tables_[slot];
+    Buffer& work = works_[slot];
     if (!plan.table.empty()) std::memcpy(table.mapped, plan.table.data(), plan.table.size() * sizeof(uint32_t));
+    if (!plan.work.empty()) std::memcpy(work.mapped, plan.work.data(), work_bytes);
     *what = "the blade window's table";
-    return memory_.flush(table, 0, table_bytes, failure);
+    if (!memory_.flush(table, 0, table_bytes, failure)) return false;
+    *what = "the blade window's work items";
+    return work_bytes == 0 || memory_.flush(work, 0, work_bytes, failure);
 }
 
 void BladeWindowPass::release(uint64_t frame) {
     deferred_.retire(&poses_, frame);
     for (Buffer& t : tables_) deferred_.retire(&t, frame);
+    for (Buffer& w : works_) deferred_.retire(&w, frame);
+    grown_from_ = VK_NULL_HANDLE;
 }
 
-void BladeWindowPass::write_dispatch_set(VkDescriptorSet set, VkBuffer instances, VkBuffer vertices) const {
-    const VkDescriptorBufferInfo buffers[kWindowPassBindingCount] = {{instances, 0, VK_WHOLE_SIZE},
-                                                                     {vertices, 0, VK_WHOLE_SIZE}};
+void BladeWindowPass::write_state_set(uint32_t slot, const VkDescriptorBufferInfo* inputs) const {
+    const VkDescriptorBufferInfo stand_in{works_[slot].buffer, 0, kMinWorkBytes};
+    VkWriteDescriptorSet writes[kWindowStateBindingCount];
+    for (uint32_t b = 0; b < kWindowStateBindingCount; ++b) {
+        writes[b] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[b].dstSet = state_sets_[slot];
+        writes[b].dstBinding = kStateBindings[b].binding;
+        writes[b].descriptorCount = 1;
+        writes[b].descriptorType = kStateBindings[b].descriptorType;
+        writes[b].pBufferInfo = inputs != nullptr ? &inputs[b] : &stand_in;
+    }
+    fn_.vkUpdateDescriptorSets(device_, kWindowStateBindingCount, writes, 0, nullptr);
+}
+
+void BladeWindowPass::write_dispatch_set(VkDescriptorSet set, uint32_t slot, VkBuffer instances,
+                                         VkBuffer vertices) const {
+    const VkDescriptorBufferInfo buffers[kWindowPassBindingCount] = {
+        {instances, 0, VK_WHOLE_SIZE}, {vertices, 0, VK_WHOLE_SIZE}, {works_[slot].buffer, 0, VK_WHOLE_SIZE}};
     VkWriteDescriptorSet writes[kWindowPassBindingCount];
     for (uint32_t b = 0; b < kWindowPassBindingCount; ++b) {
         writes[b] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -191,7 +283,18 @@ void BladeWindowPass::write_dispatch_set(VkDescriptorSet set, VkBuffer instances
     fn_.vkUpdateDescriptorSets(device_, kWindowPassBindingCount, writes, 0, nullptr);
 }
 
-void BladeWindowPass::record(VkCommandBuffer cmd, const WindowDispatch* dispatches, uint32_t count) const {
+void BladeWindowPass::record(VkCommandBuffer cmd, uint32_t slot, const WindowDispatch* dispatches, uint32_t count) {
+    if (grown_from_ != VK_NULL_HANDLE) {
+        // The records grew: the earlier frames' passes wrote the old buffer (write -> copy read).
+        VkMemoryBarrier written{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        written.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+        written.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        fn_.vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
+                                 &written, 0, nullptr, 0, nullptr);
+        const VkBufferCopy region{0, 0, grown_bytes_};
+        fn_.vkCmdCopyBuffer(cmd, grown_from_, poses_.buffer, 1, &region);
+        grown_from_ = VK_NULL_HANDLE;
+    }
     // Before the pass (grass_vk.h): the earlier frames' draws read the poses (write-after-read:
     // frames in flight share them), their pass wrote them (write-after-write), this frame's
     // interaction pass wrote the map and its uploads the patches' vertices and curves that the
@@ -215,9 +318,9 @@ void BladeWindowPass::record(VkCommandBuffer cmd, const WindowDispatch* dispatch
             fn_.vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p);
             bound = p;
         }
-        const VkDescriptorSet sets[2] = {d.blade_set, d.pass_set};
-        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 2, sets, 2, d.block_offsets);
-        fn_.vkCmdDispatch(cmd, (d.blades + kWindowGroupSize - 1) / kWindowGroupSize, d.instances, 1);
+        const VkDescriptorSet sets[3] = {d.blade_set, d.pass_set, state_sets_[slot]};
+        fn_.vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 3, sets, 2, d.block_offsets);
+        fn_.vkCmdDispatch(cmd, (d.blades + kWindowGroupSize - 1) / kWindowGroupSize, d.items, 1);
     }
     // After it: the poses -> every view's window variant this frame (blade.vert).
     VkBufferMemoryBarrier after{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
@@ -262,7 +365,7 @@ grass_result VkBackend::record_blade_window(VkCommandBuffer cmd) {
         w.block_offsets[1] = ring_.field_offset(bd.draw);
         w.features = d.features;
         w.blades = static_cast<uint32_t>(patches_[d.patch_slot].curves.size / (8 * sizeof(float)));
-        w.instances = d.instance_count;
+        w.items = bd.items;
         VkFailure failure;
         if (!frame_sets_.allocate(vs, pipeline_.set_layout(), &w.blade_set, &failure) ||
             !frame_sets_.allocate(vs, window_.set_layout(), &w.pass_set, &failure)) {
@@ -280,10 +383,15 @@ grass_result VkBackend::record_blade_window(VkCommandBuffer cmd) {
         views.window_table = window_.table(slot_);
         views.window_poses = window_.poses();
         write_set(w.blade_set, vs, fields_[d.field_slot], views);
-        window_.write_dispatch_set(w.pass_set, ring_.instance_buffer(vs), patches_[d.patch_slot].vertices.buffer);
+        window_.write_dispatch_set(w.pass_set, slot_, ring_.instance_buffer(vs),
+                                   patches_[d.patch_slot].vertices.buffer);
     }
+    // The state's push-out reads the colliders the interaction pass binned to its fine level.
+    VkDescriptorBufferInfo inputs[kWindowStateBindingCount];
+    const bool colliders = ctx_->plan.interaction.levels > 0 && interaction_.state_inputs(slot_, inputs);
+    window_.write_state_set(slot_, colliders ? inputs : nullptr);
     const LabelScope label(fn_, cmd, "grass blade window pass");
-    window_.record(cmd, window_dispatches_.data(), static_cast<uint32_t>(window_dispatches_.size()));
+    window_.record(cmd, slot_, window_dispatches_.data(), static_cast<uint32_t>(window_dispatches_.size()));
     window_pending_ = false;
     return GRASS_SUCCESS;
 }

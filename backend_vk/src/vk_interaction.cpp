@@ -295,4 +295,13 @@ void InteractionPass::record(VkCommandBuffer cmd, uint32_t slot, const Interacti
     defined_ = true;
 }
 
+bool InteractionPass::state_inputs(uint32_t slot, VkDescriptorBufferInfo out[4]) const {
+    const Slot& s = slots_[slot];
+    if (s.data.buffer == VK_NULL_HANDLE) return false;
+    const uint32_t bindings[4] = {kInteractionBindingColliders, kInteractionBindingTileOffsets,
+                                  kInteractionBindingTileColliders, kInteractionBindingLevel};
+    for (uint32_t i = 0; i < 4; ++i) out[i] = {s.data.buffer, s.offsets[bindings[i]][0], s.ranges[bindings[i]][0]};
+    return true;
+}
+
 } // namespace grass::vk

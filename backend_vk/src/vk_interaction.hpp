@@ -66,6 +66,10 @@ public:
     VkImageView level_view(uint32_t level) const;
     // Whether the map's contents are defined (its first pass recorded: a cleared map).
     bool map_ready() const { return levels_ > 0 && defined_; }
+    // The blade window's state inputs (vk_blade_window.hpp WindowStateBinding) from slot
+    // `slot`'s buffer as prepare() laid it out: the colliders and the fine level's tile
+    // offsets, tile colliders and Interaction block. False before the slot has a buffer.
+    bool state_inputs(uint32_t slot, VkDescriptorBufferInfo out[4]) const;
     // GPU bytes of the map's images.
     uint64_t map_bytes() const;
 

@@ -23,6 +23,8 @@ struct Fixture {
     grass::HostAllocator host{grass_allocator{}};
     grass::HandlePool<grass::Patch> patches{&host};
     FramePlan plan{&host};
+    grass::BladeWindowPlan previous{&host}; // the last frame's window (keep_blade_window)
+    grass::Vector<uint32_t> used{grass::StlAllocator<uint32_t>(&host)};
     uint32_t patch_slot = 0;
 
     explicit Fixture(uint32_t blades) {
@@ -83,14 +85,17 @@ TEST(BladeWindowTest, SlotsForViewZerosResponsiveGeometryInstances) {
     f.add_draw(3, GRASS_TIER_GEOMETRY, wind, {{10, 20}, {11, 20}, {10, 21}});
     f.add_draw(3, GRASS_TIER_VOLUME, wind, {{40, 40}});
     f.add_draw(5, GRASS_TIER_GEOMETRY, wind | grass::kFeatureInteraction, {{0, 0}, {82, 0}});
-    grass::plan_blade_window(&f.plan, true, f.patches);
+    grass::plan_blade_window(&f.plan, true, f.patches, f.previous, &f.used);
     const grass::BladeWindowPlan& w = f.plan.blade_window;
     ASSERT_EQ(w.dispatches.size(), 2u);
     EXPECT_EQ(w.dispatches[0].draw, 0u);
-    EXPECT_EQ(w.dispatches[0].first_slot, 0u);
+    EXPECT_EQ(w.dispatches[0].first_item, 0u);
+    EXPECT_EQ(w.dispatches[0].items, 3u);
     EXPECT_EQ(w.dispatches[1].draw, 2u);
-    EXPECT_EQ(w.dispatches[1].first_slot, 3u);
-    EXPECT_EQ(w.pose_bytes, 5u * 100u * 32u);
+    EXPECT_EQ(w.dispatches[1].first_item, 3u);
+    EXPECT_EQ(w.stride, 100u);
+    EXPECT_EQ(w.slots, 5u);
+    EXPECT_EQ(w.pose_bytes, 5u * 100u * 96u);
     ASSERT_EQ(w.fields.size(), 2u);
     EXPECT_EQ(w.fields[0].side, 72u);
     EXPECT_EQ(w.fields[1].first_entry, 72u * 72u);
@@ -103,11 +108,15 @@ TEST(BladeWindowTest, SlotsForViewZerosResponsiveGeometryInstances) {
     // Cell 82 lands where cell 10 of the same row would (82 mod 72): its own field's table.
     EXPECT_EQ(entry(f.plan, w.fields[1], 82, 0)[2], 4u);
     EXPECT_EQ(entry(f.plan, w.fields[0], 12, 20)[0], grass::kNoWindowEntry);
-    // The draws' uniforms: the table for the shaders, the first slot and instance for the pass.
+    // A first frame: every cell enters (its work item's slot has the flag, the table's not).
+    ASSERT_EQ(w.work.size(), 10u);
+    EXPECT_EQ(w.work[2], 1u | grass::kWindowSlotEntered); // cell (11, 20): slot 1, instance 1
+    EXPECT_EQ(w.work[3], 1u);
+    // The draws' uniforms: the table for the shaders, the first work item and the stride for the pass.
     EXPECT_EQ(f.plan.draws[0].uniforms.transition[1], 72.0f);
     EXPECT_EQ(f.plan.draws[0].uniforms.transition[2], 0.0f);
     EXPECT_EQ(f.plan.draws[2].uniforms.tiers[3], 3u);
-    EXPECT_EQ(f.plan.draws[2].uniforms.transition[3], 4.0f);
+    EXPECT_EQ(f.plan.draws[2].uniforms.transition[3], 100.0f);
     EXPECT_EQ(f.plan.draws[2].uniforms.transition[2], float(72 * 72));
     EXPECT_EQ(f.plan.draws[1].uniforms.transition[1], 0.0f); // volume: poses as before
 }
@@ -115,16 +124,62 @@ TEST(BladeWindowTest, SlotsForViewZerosResponsiveGeometryInstances) {
 TEST(BladeWindowTest, ACellWhoseEntryIsTakenComputesItsOwnPose) {
     Fixture f(10);
     f.add_draw(0, GRASS_TIER_GEOMETRY, grass::kFeatureWind, {{1, 1}, {73, 1}}); // 73 mod 72 = 1
-    grass::plan_blade_window(&f.plan, true, f.patches);
+    grass::plan_blade_window(&f.plan, true, f.patches, f.previous, &f.used);
     const BladeWindowField& t = f.plan.blade_window.fields[0];
-    EXPECT_EQ(entry(f.plan, t, 1, 1)[0], 1u); // the first keeps it; 73 finds cell 1 there
-    EXPECT_EQ(f.plan.blade_window.pose_bytes, 2u * 10u * 32u);
+    EXPECT_EQ(entry(f.plan, t, 1, 1)[0], 1u);                  // the first keeps it; 73 finds cell 1 there
+    EXPECT_EQ(f.plan.blade_window.pose_bytes, 1u * 10u * 96u); // one slot: 73 has none
+    EXPECT_EQ(f.plan.blade_window.work.size(), 2u);
+}
+
+// The state stays with its cell: a cell the last frame's window held keeps its slot (not
+// entered), a new cell takes the lowest free slot (entered), a cell that left frees its
+// slot; a patch of another blade count (a new stride) starts every cell afresh.
+TEST(BladeWindowTest, ACellKeepsItsSlotWhileItStaysInTheWindow) {
+    Fixture f(10);
+    f.add_draw(0, GRASS_TIER_GEOMETRY, grass::kFeatureWind, {{1, 1}, {2, 1}, {3, 1}});
+    grass::plan_blade_window(&f.plan, true, f.patches, f.previous, &f.used);
+    grass::keep_blade_window(f.plan.blade_window, &f.previous);
+    ASSERT_EQ(f.previous.slots, 3u);
+
+    // The camera moved: cell 1 left, cell 4 came; the draw lists them in another order.
+    f.plan.draws.clear();
+    f.plan.instances.clear();
+    f.add_draw(0, GRASS_TIER_GEOMETRY, grass::kFeatureWind, {{4, 1}, {3, 1}, {2, 1}});
+    grass::plan_blade_window(&f.plan, true, f.patches, f.previous, &f.used);
+    const grass::BladeWindowPlan& w = f.plan.blade_window;
+    const BladeWindowField& t = w.fields[0];
+    EXPECT_EQ(entry(f.plan, t, 2, 1)[2], 1u);
+    EXPECT_EQ(entry(f.plan, t, 3, 1)[2], 2u);
+    EXPECT_EQ(entry(f.plan, t, 4, 1)[2], 0u); // cell 1's slot, free again
+    ASSERT_EQ(w.work.size(), 6u);
+    EXPECT_EQ(w.work[0], 0u | grass::kWindowSlotEntered);
+    EXPECT_EQ(w.work[2], 2u);
+    EXPECT_EQ(w.work[4], 1u);
+    EXPECT_EQ(w.slots, 3u);
+
+    // Another patch, of 20 blades: a new stride, every cell enters.
+    grass::keep_blade_window(w, &f.previous);
+    Fixture g(20);
+    g.add_draw(0, GRASS_TIER_GEOMETRY, grass::kFeatureWind, {{4, 1}, {3, 1}});
+    grass::plan_blade_window(&g.plan, true, g.patches, f.previous, &g.used);
+    ASSERT_EQ(g.plan.blade_window.work.size(), 4u);
+    EXPECT_EQ(g.plan.blade_window.work[0], 1u | grass::kWindowSlotEntered);
+    EXPECT_EQ(g.plan.blade_window.work[2], 0u | grass::kWindowSlotEntered);
+    EXPECT_EQ(g.plan.blade_window.stride, 20u);
+
+    // A frame without a window (still grass) keeps nothing: the next window starts afresh.
+    Fixture still(10);
+    still.add_draw(0, GRASS_TIER_GEOMETRY, 0u, {{4, 1}});
+    grass::plan_blade_window(&still.plan, true, still.patches, f.previous, &still.used);
+    grass::keep_blade_window(still.plan.blade_window, &f.previous);
+    EXPECT_EQ(f.previous.slots, 0u);
+    EXPECT_TRUE(f.previous.table.empty());
 }
 
 TEST(BladeWindowTest, LaterViewsReadViewZerosTables) {
     Fixture f(10);
     f.add_draw(2, GRASS_TIER_GEOMETRY, grass::kFeatureWind, {{5, 5}});
-    grass::plan_blade_window(&f.plan, true, f.patches);
+    grass::plan_blade_window(&f.plan, true, f.patches, f.previous, &f.used);
     FramePlan later(&f.host);
     TierDraw draw{};
     draw.kind = GRASS_TIER_GEOMETRY;
@@ -149,7 +204,7 @@ TEST(BladeWindowTest, TheWindowVariantOnlyForDrawsWhoseCellsItAllHolds) {
     f.add_draw(1, GRASS_TIER_GEOMETRY, grass::kFeatureInteraction, {{1, 1}, {73, 1}}); // 73 mod 72 = 1: taken
     f.add_draw(0, GRASS_TIER_VOLUME, grass::kFeatureWind, {{9, 9}});
     f.add_draw(2, GRASS_TIER_GEOMETRY, 0u, {{5, 5}}); // still grass
-    grass::plan_blade_window(&f.plan, true, f.patches);
+    grass::plan_blade_window(&f.plan, true, f.patches, f.previous, &f.used);
     const uint32_t expected[4] = {grass::kFeatureWind | kWindow, grass::kFeatureInteraction, grass::kFeatureWind, 0u};
     for (uint32_t d = 0; d < 4; ++d) {
         EXPECT_EQ(f.plan.draws[d].features, expected[d]) << d;
@@ -185,7 +240,7 @@ TEST(BladeWindowTest, TheWindowVariantOnlyForDrawsWhoseCellsItAllHolds) {
     // A backend without the pass: every draw keeps the per-vertex variant.
     Fixture off(10);
     off.add_draw(0, GRASS_TIER_GEOMETRY, grass::kFeatureWind, {{1, 1}});
-    grass::plan_blade_window(&off.plan, false, off.patches);
+    grass::plan_blade_window(&off.plan, false, off.patches, off.previous, &off.used);
     EXPECT_EQ(off.plan.draws[0].features, grass::kFeatureWind);
 }
 
@@ -195,7 +250,7 @@ TEST(BladeWindowTest, StillGrassPlansNothing) {
         Fixture f(10);
         f.add_draw(0, GRASS_TIER_GEOMETRY, c == 0 ? 0u : grass::kFeatureWind, {{5, 5}});
         if (c == 2) f.plan.flags = GRASS_VIEW_FLAG_DEBUG_CELLS;
-        grass::plan_blade_window(&f.plan, c != 1, f.patches);
+        grass::plan_blade_window(&f.plan, c != 1, f.patches, f.previous, &f.used);
         EXPECT_TRUE(f.plan.blade_window.dispatches.empty()) << c;
         EXPECT_TRUE(f.plan.blade_window.table.empty()) << c;
         EXPECT_EQ(f.plan.blade_window.pose_bytes, 0u) << c;

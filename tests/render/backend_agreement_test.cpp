@@ -12,6 +12,7 @@
 #include "image_io.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -32,8 +33,10 @@ grass_host::TargetDesc target(uint32_t samples) {
     return t;
 }
 
-// Responsive grass: a gusty wind, and a ball that rolled across the field (its trail, 0.5 s
-// old, crosses the view).
+// Responsive grass: a gusty wind, and a ball that rolled across the field (its trail crosses
+// the view). Both frames at the same time: time steps of 0, so GL's per-blade state (its
+// blade window pass, docs/responsive.md "Per-blade state") stays the stateless pose its
+// blades entered at: both backends draw the equilibrium (stepping_frame steps it).
 void responsive_frame(grass_context* ctx, int frame, grass_view_desc* view) {
     if (frame == 0) {
         grass_wind_desc wind = grass_default_wind_desc();
@@ -50,7 +53,28 @@ void responsive_frame(grass_context* ctx, int frame, grass_view_desc* view) {
     } else {
         ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS);
     }
-    view->time = 1.0 + 0.5 * frame;
+    view->time = 1.0;
+}
+
+// The state stepped: eight frames at 30 fps under a gusty 6 m/s wind, a ball rolling through
+// at 2 m/s, so the blades lag the wind and are pushed aside (both backends' window passes
+// step the same per-blade state).
+void stepping_frame(grass_context* ctx, int frame, grass_view_desc* view) {
+    const double t = frame / 30.0;
+    if (frame == 0) {
+        grass_wind_desc wind = grass_default_wind_desc();
+        wind.speed = 6.0f;
+        ASSERT_EQ(grass_set_wind(ctx, &wind), GRASS_SUCCESS);
+    }
+    grass_collider ball{};
+    ball.shape = GRASS_COLLIDER_SPHERE;
+    ball.radius = 0.3f;
+    ball.center[0] = 1.6 + 2.0 * t;
+    ball.center[1] = 0.25;
+    ball.center[2] = 1.2;
+    ball.velocity[0] = 2.0f;
+    ASSERT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS);
+    view->time = 1.0 + t;
 }
 
 // A wind map over the 16 x 16 cell field and no other wind: a swirl (the wind along x
@@ -78,12 +102,14 @@ void swirl_wind_map(grass_context* ctx, grass_field_id field) {
     ASSERT_EQ(grass_set_field_wind_map(ctx, field, &d), GRASS_SUCCESS);
 }
 
-enum class Scene { still, responsive, wind_map };
+enum class Scene { still, responsive, wind_map, stepping };
 
 Rendered render_scene(grass_backend backend, uint32_t samples, Scene scene = Scene::still) {
     const double eye[3] = {2.0, 0.8, -0.6}, look[3] = {2.0, 0.0, 2.0};
     if (scene == Scene::responsive)
         return Rendered{render_default_scene(backend, target(samples), 16, eye, look, 2, responsive_frame)};
+    if (scene == Scene::stepping)
+        return Rendered{render_default_scene(backend, target(samples), 16, eye, look, 8, stepping_frame)};
     if (scene == Scene::wind_map)
         return Rendered{render_default_scene(backend, target(samples), 16, eye, look, 1, nullptr, swirl_wind_map)};
     return Rendered{render_default_scene(backend, target(samples), 16, eye, look)};
@@ -147,9 +173,22 @@ void compare(uint32_t samples, uint32_t block, double max_mean_difference, doubl
         std::printf("[ measured ] the responsive scene changes the Vulkan image by %.2f levels on average\n", moved);
         EXPECT_GT(moved, 2.0) << "the responsive scene looks like still grass";
     }
+    if (scene == Scene::stepping) {
+        // The state must show: the same frames at one time (no step) draw the equilibrium.
+        const grass_host::Image equilibrium = render_default_scene(
+            GRASS_BACKEND_VULKAN, target(samples), 16, std::array<double, 3>{2.0, 0.8, -0.6}.data(),
+            std::array<double, 3>{2.0, 0.0, 2.0}.data(), 8, [](grass_context* ctx, int frame, grass_view_desc* view) {
+                stepping_frame(ctx, frame, view);
+                view->time = 1.0 + 7.0 / 30.0;
+            });
+        const double lag = mean_difference(equilibrium, vk.image);
+        std::printf("[ measured ] the stepped state changes the Vulkan image by %.2f levels on average\n", lag);
+        EXPECT_GT(lag, 5.0) << "the stepped frames look like the stateless pose"; // stateless: 1.5
+    }
     if (const char* dir = std::getenv("GRASS_TEST_IMAGE_DIR")) {
         const std::string tag = std::string(scene == Scene::responsive ? "responsive_"
                                             : scene == Scene::wind_map ? "wind_map_"
+                                            : scene == Scene::stepping ? "stepping_"
                                                                        : "") +
                                 std::to_string(samples) + ".png";
         grass_host::write_png(std::string(dir) + "/agreement_gl_" + tag, gl.image, nullptr);
@@ -171,6 +210,10 @@ TEST(BackendAgreement, GlAndVulkanImagesAgreeBlockByBlockWithFourTimesMultisampl
 // interaction pass (GL compute at the first render, Vulkan compute in prepare_frame) are one
 // set of shaders, so the backends must agree as closely.
 TEST(BackendAgreement, GlAndVulkanAgreeUnderWindAndWithATrail) { compare(1, 1, 0.05, 0.0005, Scene::responsive); }
+
+// Jahrmann's per-blade state stepped over eight frames by both backends' window passes
+// (gust lag, a ball's push-out), same tolerance: one shader, one plan.
+TEST(BackendAgreement, GlAndVulkanAgreeWhileThePerBladeStateSteps) { compare(1, 1, 0.05, 0.0005, Scene::stepping); }
 
 // A field's wind map (a swirl, no other wind), same tolerance: the map's lookup is shared
 // shader code too.

@@ -50,8 +50,8 @@ protected:
     }
 };
 
-// Three frames of wind and a rolling ball over a 4 m x 4 m field, drawn by view 1 of each
-// frame. View 0 (planned, never drawn) stands at the same eye (the interaction map follows
+// Three frames of wind and a ball over a 4 m x 4 m field, all at the same time (time steps
+// of 0: the state stays where it entered, the stateless pose), drawn by view 1 of each frame. View 0 (planned, never drawn) stands at the same eye (the interaction map follows
 // it, so both runs' maps are the same): looking where view 1 looks, the window holds every
 // cell view 1 draws and its draw runs the window's variant (poses read, none computed);
 // looking away, it holds none of them and view 1's draw runs the per-vertex variant. The same
@@ -71,7 +71,10 @@ TEST_P(BladeWindowRenderTest, PosesOnceAFrameDrawWhatPerVertexPosesDrew) {
             grass_frame_desc fd = grass_default_frame_desc();
             fd.frame_index = uint64_t(frame) + 1;
             fd.completed_frame_index = uint64_t(frame);
-            fd.time = 0.5 * frame;
+            // Every frame at the same time: the first steps 0 (a context's first frame), the
+            // others too, so the blades' state stays the equilibrium they entered the window
+            // at (docs/responsive.md "Per-blade state"), which the per-vertex variant draws.
+            fd.time = 1.0;
             if (responsive) {
                 grass_wind_desc wind = grass_default_wind_desc();
                 wind.speed = 6.0f;

@@ -565,6 +565,39 @@ TEST_P(ExtremesTest, HillyFieldFarFromTheOrigin) {
     EXPECT_EQ(grass_destroy_map(ctx, map), GRASS_SUCCESS);
 }
 
+// Per-blade state (docs/responsive.md "Per-blade state", GL's blade window pass) at its
+// extremes: the strongest wind and gravity the API takes, gusts at their most, a ball under
+// the grass rolling at 1e3 m/s, and time steps of 10 s, 0 and 10 s again: every pixel stays
+// finite (the steps are exact springs, the state is validated and reset if not finite).
+TEST_P(ExtremesTest, BladeStateUnderTenSecondStepsAndTheStrongestForces) {
+    const Shot s{{2.0, 1.5, -0.5}, {2.0, 0.0, 2.0}};
+    grass_field_id f = add(field_desc(16));
+    grass_wind_desc w = grass_default_wind_desc();
+    w.speed = 1e3f;
+    w.gust_strength = 4.0f;
+    w.turbulence = 1.0f;
+    w.gravity[0] = 1e3f;
+    w.gravity[1] = -1e3f;
+    ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << log;
+    const double times[5] = {0.0, 10.0, 10.0, 20.0, 20.0 + 1.0 / 60.0};
+    for (int k = 0; k < 5; ++k) {
+        grass_collider c{};
+        c.shape = GRASS_COLLIDER_SPHERE;
+        c.radius = 0.4f;
+        c.center[0] = 2.0 + (k % 2 == 0 ? 1.0 : -1.0);
+        c.center[1] = 0.1;
+        c.center[2] = 2.0;
+        c.velocity[0] = k % 2 == 0 ? 1e3f : -1e3f;
+        ASSERT_EQ(grass_set_colliders(ctx, &c, 1), GRASS_SUCCESS) << log;
+        const Frame fr = shoot(s, "state_step" + std::to_string(k), [&](grass_view_desc& v) { v.time = times[k]; });
+        EXPECT_GT(share(fr), 0.05) << k;
+    }
+    ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS) << log;
+    w = grass_default_wind_desc();
+    ASSERT_EQ(grass_set_wind(ctx, &w), GRASS_SUCCESS) << log;
+    remove(f);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, ExtremesTest, ::testing::ValuesIn(enabled_backends()),
                          [](const auto& p) { return backend_name(p.param); });
 

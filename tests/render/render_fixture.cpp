@@ -51,6 +51,7 @@ void RenderTest::start(const grass_host::TargetDesc& target, grass_backend backe
         *static_cast<std::string*>(user) += std::to_string(static_cast<int>(id)) + ": " + message + "\n";
     };
     d.log_user_data = &log;
+    d.next = context_next;
     d.depth_mode = target.reversed_z ? GRASS_DEPTH_GREATER : GRASS_DEPTH_LESS;
     ASSERT_EQ(host->create_context(d, &ctx), GRASS_SUCCESS) << log;
     grass_patch_desc p = grass_default_patch_desc();

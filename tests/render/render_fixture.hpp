@@ -61,6 +61,7 @@ protected:
 
     std::unique_ptr<grass_host::Host> host;
     grass_context* ctx = nullptr;
+    const void* context_next = nullptr; // chained to the context desc by start() (a debug labels desc)
     grass_patch_id patch{};
     std::string log;
     grass_tier_desc blade_tier{GRASS_TIER_GEOMETRY, 0};

@@ -66,7 +66,8 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     samplers, texture units 6-9 (their 2D textures: the colour, ambient, diffuse and
  *     height maps) and their samplers, active texture;
  *   - responsive grass only (a frame with wind, gravity, colliders or a field's wind map,
- *     grass.h): shader storage buffer bindings 0-3 (and the generic one), image unit 0,
+ *     grass.h): shader storage buffer bindings 0-7 (and the generic one), uniform buffer
+ *     binding 2 (the blade window pass's), image unit 0,
  *     texture units 10-11 (their 2D textures: the interaction map's levels) and 13 (its 2D
  *     texture: a field's wind map) and their samplers. The
  *     frame's first call runs the interaction pass (a compute dispatch per map level)

@@ -266,18 +266,22 @@ GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const gr
  *   4. One image barrier per level, GENERAL -> GENERAL: src COMPUTE_SHADER / SHADER_WRITE ->
  *      dst VERTEX_SHADER | FRAGMENT_SHADER / SHADER_READ (this frame's draws texelFetch it).
  * The blade window pass (responsive grass, docs/responsive.md "The blade window"): each
- * blade's pose computed once per frame for the geometry draws of view 0 that the core gives
- * the window, into one device-local storage buffer (the poses) shared by every frame in
- * flight, read by every view's draws of the window variant in the vertex shader. For a frame
- * with wind or colliders grass_vk_prepare records, after the interaction pass:
+ * blade's per-blade state stepped and its pose computed once per frame for the geometry
+ * draws of view 0 that the core gives the window, into one device-local storage buffer (the
+ * records) shared by every frame in flight, read by every view's draws of the window variant
+ * in the vertex shader. For a frame with wind or colliders grass_vk_prepare records, after
+ * the interaction pass:
+ *   4b. Only on a frame whose window grew: a memory barrier src COMPUTE_SHADER / SHADER_WRITE
+ *      -> dst TRANSFER / TRANSFER_READ, then vkCmdCopyBuffer of the old records into the new
+ *      buffer (the blades the window keeps keep their state); step 5 orders the pass after it.
  *   5. One memory barrier: src stages TRANSFER | VERTEX_SHADER | COMPUTE_SHADER, src access
  *      SHADER_WRITE | TRANSFER_WRITE  ->  dst stage COMPUTE_SHADER, dst access SHADER_READ |
  *      SHADER_WRITE. It orders the pass after the earlier frames' draws that read the poses
  *      (write-after-read: frames in flight share them), after the previous pass (write-after-
  *      write), and after what it reads: this frame's interaction pass and uploads.
- *   6. Per draw: vkCmdBindPipeline (compute), vkCmdBindDescriptorSets (compute, sets 0 and 1)
- *      and vkCmdDispatch(ceil(blades / 64), instances, 1); with push constants where the
- *      device reads the blocks at an index (lavapipe).
+ *   6. Per draw: vkCmdBindPipeline (compute), vkCmdBindDescriptorSets (compute, sets 0-2: the
+ *      draw's, its work items, the colliders) and vkCmdDispatch(ceil(blades / 64), work items,
+ *      1); with push constants where the device reads the blocks at an index (lavapipe).
  *   7. One buffer barrier on the poses: src COMPUTE_SHADER / SHADER_WRITE -> dst VERTEX_SHADER /
  *      SHADER_READ (this frame's draws read them).
  * Still grass records none of it and holds no window.
@@ -285,7 +289,9 @@ GRASS_API grass_result grass_vk_create_context(uint32_t header_version, const gr
  * order work within one queue in submission order, so submit every frame's grass work to the
  * queue of vk_desc.queue_family, in frame order. The device needs nothing beyond Vulkan 1.1
  * core for it (storage images of a declared format, storage buffers in the vertex stage
- * read only). */
+ * read only); the blade window needs 8 storage buffers in the compute stage
+ * (maxPerStageDescriptorStorageBuffers), and a device with fewer poses every blade per vertex,
+ * statelessly. */
 typedef struct grass_vk_prepare_desc {
     grass_struct_type type; /* GRASS_STRUCT_TYPE_VK_PREPARE_DESC */
     const void* next;       /* NULL */

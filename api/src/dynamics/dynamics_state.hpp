@@ -1,9 +1,10 @@
 // What the context keeps for responsive grass (jahrmann2017 5, bakay2003 3.3): the wind and
 // its sources, the colliders of the next frames, the interaction map's configuration and its
-// scrolling state, and the clock. Nothing here is per blade: a field is tiled from one patch.
+// scrolling state, and the clock. Per blade, only the blade window's slots (the state itself is the backend's).
 #pragma once
 
 #include "foundation/allocator.hpp"
+#include "foundation/frame_plan.hpp"
 
 #include <grass/grass.h>
 
@@ -54,6 +55,11 @@ struct DynamicsState {
     uint32_t most_in_tile = 0;
     uint32_t most_level = 0;
     bool tile_cap_said = false; // GRASS_MSG_COLLIDER_TILE_CAP: once per context
+    // The blade window of the last frame that began (view 0's, plan/blade_window.hpp): which
+    // cell holds which slot, so that a cell that stays keeps its slot and its blades' state.
+    // Empty: no window then (the backend holds no state). window_used: the planner's scratch.
+    BladeWindowPlan window;
+    Vector<uint32_t> window_used;
 };
 
 } // namespace grass

@@ -9,6 +9,7 @@
 #include "entry/api_motion.hpp"
 #include "foundation/abi_sizes.hpp"
 #include "foundation/validate.hpp"
+#include "plan/blade_window.hpp"
 #include "plan/frame_planner.hpp"
 
 #include <cmath>
@@ -388,7 +389,10 @@ grass_result plan_view(grass_context* ctx, const char* fn, const grass_view_desc
     GRASS_TRY(check_plan(ctx, fn, plan));
     GRASS_TRY(upload_blade_curves(ctx, plan));
     GRASS_TRY(ctx->backend->begin_view(fn, index, plan));
-    if (index == 0) commit_dynamics(&ctx->dynamics); // one step per frame
+    if (index == 0) { // one step per frame
+        commit_dynamics(&ctx->dynamics);
+        keep_blade_window(plan.blade_window, &ctx->dynamics.window);
+    }
     ctx->views.commit();
     return GRASS_SUCCESS;
 }

@@ -238,13 +238,19 @@ struct InteractionPlan {
 
 // The blade window of a frame (plan/blade_window.hpp, api/shaders/blade_window.glsl):
 // view 0's plan holds it; empty dispatches: no pass and no buffers (still grass).
-constexpr uint64_t kBladeWindowPoseBytes = 32; // two vec4 per blade and slot
+// Per blade and slot, one record of six vec4 (kBladeWindowRecordBytes): the pose the draws
+// read, (v1, shade) and (v2, 0); the pose of the previous frame, likewise (motion vectors);
+// and the blade's state (dynamics/blade_state.hpp GpuBladeState, kBladeStateBytes).
+constexpr uint64_t kBladeWindowPoseBytes = 32;   // two vec4: (v1, shade), (v2, 0)
+constexpr uint64_t kBladeWindowRecordBytes = 96; // pose, previous pose, state
 constexpr uint32_t kNoWindowEntry = 0xffffffffu;
-// One dispatch of the pass: a geometry draw of view 0 (index into its draws) whose
-// instances take slots first_slot .. first_slot + instance_count - 1.
+constexpr uint32_t kWindowSlotEntered = 0x80000000u; // a work item's slot bit: the cell took the slot this frame
+// One dispatch of the pass: a geometry draw of view 0 (index into its draws) and its work
+// items first_item .. first_item + items - 1, one per instance the window holds.
 struct BladeWindowDispatch {
     uint32_t draw;
-    uint32_t first_slot;
+    uint32_t first_item;
+    uint32_t items;
 };
 
 // A field's table in the frame: its slot in the context, its side and first entry.
@@ -257,15 +263,23 @@ struct BladeWindowField {
 struct BladeWindowPlan {
     explicit BladeWindowPlan(HostAllocator* host)
         : table(StlAllocator<uint32_t>(host)), fields(StlAllocator<BladeWindowField>(host)),
-          dispatches(StlAllocator<BladeWindowDispatch>(host)) {}
-    Vector<uint32_t> table; // four words an entry: cell x, cell z, slot, blades (kNoWindowEntry: empty)
+          dispatches(StlAllocator<BladeWindowDispatch>(host)), work(StlAllocator<uint32_t>(host)) {}
+    Vector<uint32_t> table; // four words an entry: cell x, cell z, slot, stride (kNoWindowEntry: empty)
     Vector<BladeWindowField> fields;
     Vector<BladeWindowDispatch> dispatches; // none: no pass, no buffers
-    uint64_t pose_bytes = 0;                // the poses' buffer: sum of slots x blades x 32
+    // Two words a work item: the slot (| kWindowSlotEntered where the cell took it this frame:
+    // its blades start at the equilibrium pose), the instance (index into view 0's instances).
+    Vector<uint32_t> work;
+    uint32_t stride = 0;     // blades a slot holds: the most blades of the window's patches
+    uint32_t slots = 0;      // slots 0 .. slots - 1 (a slot keeps its cell while the cell stays)
+    uint64_t pose_bytes = 0; // the window's buffer: slots x stride x kBladeWindowRecordBytes
     void clear() {
         table.clear();
         fields.clear();
         dispatches.clear();
+        work.clear();
+        stride = 0;
+        slots = 0;
         pose_bytes = 0;
     }
 };

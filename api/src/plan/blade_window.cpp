@@ -66,21 +66,84 @@ uint32_t blade_window_side(double reach, double cell_size, uint32_t cells_x, uin
     return side >= double(cap) ? cap : std::max(static_cast<uint32_t>(side), 1u);
 }
 
-void plan_blade_window(FramePlan* plan_out, bool enabled, const HandlePool<Patch>& patches) {
+namespace {
+
+// The blades of `draw`'s patch when view 0's window may hold its instances, else 0.
+uint32_t window_blades(const TierDraw& draw, const HandlePool<Patch>& patches) {
+    if (!responsive_geometry(draw) || draw.instance_count == 0) return 0;
+    if (draw.instance_count > kMaxBladeWindowInstances) return 0; // computed in the vertex shader
+    const Patch* patch = patches.get(draw.patch_slot);
+    return patch ? static_cast<uint32_t>(patch->data.blade_curves.size() / 8) : 0;
+}
+
+// The slot `previous` gave the cell of `entry` (field `field_slot`), or kNoWindowEntry.
+uint32_t previous_slot(const BladeWindowPlan& previous, uint32_t field_slot, const uint32_t* entry) {
+    const BladeWindowField* f = find_field(previous, field_slot);
+    if (!f || f->side == 0) return kNoWindowEntry;
+    const uint32_t* was =
+        previous.table.data() +
+        (size_t(f->first_entry) + size_t(entry[1] % f->side) * f->side + entry[0] % f->side) * kEntryWords;
+    return was[0] == entry[0] && was[1] == entry[1] ? was[2] : kNoWindowEntry;
+}
+
+// Gives each entry of the table its slot: the one its cell held at the last frame (same
+// stride), else the lowest free one, marked entered in the work items.
+void assign_slots(BladeWindowPlan* window_out, const BladeWindowPlan& previous, Vector<uint32_t>* used_out) {
+    BladeWindowPlan& window = *window_out;
+    Vector<uint32_t>& used = *used_out;
+    const bool keep = previous.stride == window.stride;
+    used.assign(keep ? previous.slots : 0, 0u);
+    uint32_t held = 0;
+    for (uint32_t f = 0; f < window.fields.size(); ++f) {
+        const BladeWindowField& field = window.fields[f];
+        for (uint32_t e = 0; e < field.side * field.side; ++e) {
+            uint32_t* entry = window.table.data() + size_t(field.first_entry + e) * kEntryWords;
+            if (entry[0] == kNoWindowEntry) continue;
+            ++held;
+            const uint32_t slot = keep ? previous_slot(previous, field.field_slot, entry) : kNoWindowEntry;
+            entry[2] = slot < used.size() && used[slot] == 0 ? slot : kNoWindowEntry;
+            if (entry[2] != kNoWindowEntry) used[entry[2]] = 1;
+        }
+    }
+    // Kept slots may leave holes: past the byte cap, every cell starts afresh from slot 0.
+    if (uint64_t(std::max<size_t>(used.size(), held)) * window.stride * kBladeWindowRecordBytes >
+        kMaxBladeWindowPoseBytes) {
+        used.clear();
+        for (size_t w = 0; w < window.table.size(); w += kEntryWords) {
+            if (window.table[w] != kNoWindowEntry) window.table[w + 2] = kNoWindowEntry;
+        }
+    }
+    uint32_t next_free = 0;
+    uint32_t slots = 0;
+    for (size_t w = 0; w < window.table.size(); w += kEntryWords) {
+        uint32_t* entry = window.table.data() + w;
+        if (entry[0] == kNoWindowEntry) continue;
+        if (entry[2] == kNoWindowEntry) {
+            while (next_free < used.size() && used[next_free] != 0) ++next_free;
+            entry[2] = next_free++ | kWindowSlotEntered; // the flag is cleared once the work items have it
+        }
+        slots = std::max(slots, (entry[2] & ~kWindowSlotEntered) + 1);
+    }
+    window.slots = slots;
+    window.pose_bytes = uint64_t(slots) * window.stride * kBladeWindowRecordBytes;
+}
+
+} // namespace
+
+void plan_blade_window(FramePlan* plan_out, bool enabled, const HandlePool<Patch>& patches,
+                       const BladeWindowPlan& previous, Vector<uint32_t>* used) {
     FramePlan& plan = *plan_out;
     BladeWindowPlan& window = plan.blade_window;
     window.clear();
     if (!enabled || (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0) return; // debug boxes pose no blade
-    uint64_t slots = 0;
+    for (const TierDraw& draw : plan.draws) window.stride = std::max(window.stride, window_blades(draw, patches));
+    if (window.stride == 0) return;
+    uint64_t held = 0; // instances with an entry of their own
     for (uint32_t d = 0; d < plan.draws.size(); ++d) {
         TierDraw& draw = plan.draws[d];
-        if (!responsive_geometry(draw) || draw.instance_count == 0) continue;
-        if (draw.instance_count > kMaxBladeWindowInstances) continue; // computed in the vertex shader
-        const Patch* patch = patches.get(draw.patch_slot);
-        const uint32_t blades = patch ? static_cast<uint32_t>(patch->data.blade_curves.size() / 8) : 0;
-        if (blades == 0) continue;
-        const uint64_t bytes = uint64_t(draw.instance_count) * blades * kBladeWindowPoseBytes;
-        if (window.pose_bytes + bytes > kMaxBladeWindowPoseBytes) continue; // computed in the vertex shader
+        if (window_blades(draw, patches) == 0) continue;
+        const uint64_t bytes = uint64_t(draw.instance_count) * window.stride * kBladeWindowRecordBytes;
+        if ((held * window.stride * kBladeWindowRecordBytes) + bytes > kMaxBladeWindowPoseBytes) continue;
         const BladeWindowField* table = find_field(window, draw.field_slot);
         if (!table) { // the field's first responsive geometry draw: its table covers its geometry tiers' reach
             const FieldUniforms& u = draw.uniforms;
@@ -99,33 +162,55 @@ void plan_blade_window(FramePlan* plan_out, bool enabled, const HandlePool<Patch
             window.fields.push_back(f);
             table = &window.fields.back();
         }
-        // Each instance takes a slot; the table points at it unless another cell of the
-        // frame holds its entry (a reach wider than the table), which the vertex shader
-        // then poses itself.
-        const uint32_t first_slot = static_cast<uint32_t>(slots);
+        // Each instance whose cell finds its entry free takes it (a work item of this draw:
+        // the entry's index for now, its slot below); a cell whose entry another cell of the
+        // frame holds (a reach wider than the table, or the same cell in another tier's draw)
+        // is posed by the draw that holds it, or by the vertex shader.
+        BladeWindowDispatch dispatch{d, static_cast<uint32_t>(window.work.size() / 2), 0};
         for (uint32_t i = 0; i < draw.instance_count; ++i) {
             const TierInstance& instance = plan.instances[draw.first_instance + i];
             const uint32_t side = table->side;
-            uint32_t* entry = window.table.data() + (size_t(table->first_entry) +
-                                                     size_t(instance.cell[1] % side) * side + instance.cell[0] % side) *
-                                                        kEntryWords;
+            const size_t at =
+                size_t(table->first_entry) + size_t(instance.cell[1] % side) * side + instance.cell[0] % side;
+            uint32_t* entry = window.table.data() + at * kEntryWords;
             if (entry[0] != kNoWindowEntry) continue;
             entry[0] = instance.cell[0];
             entry[1] = instance.cell[1];
-            entry[2] = first_slot + i;
-            entry[3] = blades;
+            entry[3] = window.stride;
+            window.work.push_back(static_cast<uint32_t>(at));
+            window.work.push_back(draw.first_instance + i);
+            ++dispatch.items;
+            ++held;
         }
-        slots += draw.instance_count;
-        window.pose_bytes += bytes;
-        draw.uniforms.tiers[3] = first_slot;
-        draw.uniforms.transition[3] = static_cast<float>(draw.first_instance);
-        window.dispatches.push_back(BladeWindowDispatch{d, first_slot});
+        draw.uniforms.tiers[3] = dispatch.first_item;
+        draw.uniforms.transition[3] = static_cast<float>(window.stride);
+        if (dispatch.items > 0) window.dispatches.push_back(dispatch);
+    }
+    if (window.dispatches.empty()) {
+        window.clear();
+    } else {
+        assign_slots(&window, previous, used);
+        for (size_t w = 0; w < window.work.size(); w += 2) {
+            uint32_t* entry = window.table.data() + size_t(window.work[w]) * kEntryWords;
+            window.work[w] = entry[2];
+            entry[2] &= ~kWindowSlotEntered;
+        }
     }
     for (TierDraw& draw : plan.draws) {
         if ((draw.features & (kFeatureWind | kFeatureInteraction)) == 0 || draw.kind != GRASS_TIER_GEOMETRY) continue;
         if (const BladeWindowField* f = find_field(window, draw.field_slot)) set_table(&draw.uniforms, *f);
     }
     mark_held_draws(plan.blade_window, &plan);
+}
+
+void keep_blade_window(const BladeWindowPlan& frame, BladeWindowPlan* kept_out) {
+    BladeWindowPlan& kept = *kept_out;
+    kept.clear();
+    kept.table.assign(frame.table.begin(), frame.table.end());
+    kept.fields.assign(frame.fields.begin(), frame.fields.end());
+    kept.stride = frame.stride;
+    kept.slots = frame.slots;
+    kept.pose_bytes = frame.pose_bytes;
 }
 
 void apply_blade_window(const FramePlan& first, FramePlan* plan) {

@@ -23,8 +23,8 @@ struct Patch;
 // the lod origin (or an unbounded one) keeps slots only for the cells that fall in distinct
 // entries; the others compute their poses in the vertex shader.
 constexpr uint32_t kMaxBladeWindowSide = 256;
-// The most bytes the poses of one frame take (32 per blade and slot): the instances past it
-// get no slot (their poses are computed in the vertex shader).
+// The most bytes the window's records of one frame take (kBladeWindowRecordBytes per blade
+// and slot): the instances past it get no slot (their poses are computed in the vertex shader).
 constexpr uint64_t kMaxBladeWindowPoseBytes = 256ull << 20;
 // The most instances of one draw the pass takes (one work group row each: GL's and Vulkan's
 // least maximum dispatch size); a draw with more computes its poses in the vertex shader.
@@ -38,10 +38,17 @@ uint32_t blade_window_side(double reach, double cell_size, uint32_t cells_x, uin
 
 // View 0: plans the window from plan->draws (their features, uniforms and instances) and
 // writes each responsive draw's table (FieldUniforms::transition y, z) and, for the pass,
-// its first slot and instance (tiers[3], transition[3]), and gives the draws whose cells it
-// all holds the window variant (kFeatureBladeWindow). `enabled` false (a backend without
-// the pass) plans none.
-void plan_blade_window(FramePlan* plan, bool enabled, const HandlePool<Patch>& patches);
+// its first work item (tiers[3]), and gives the draws whose cells it all holds the window
+// variant (kFeatureBladeWindow). A cell that `previous` (the last frame's window,
+// keep_blade_window) held keeps its slot, and its blades their state; a cell new to the
+// window takes a free slot, marked entered (kWindowSlotEntered) in its work item: the pass
+// starts its blades at the equilibrium pose. `used`: scratch. `enabled` false (a backend
+// without the pass) plans none.
+void plan_blade_window(FramePlan* plan, bool enabled, const HandlePool<Patch>& patches, const BladeWindowPlan& previous,
+                       Vector<uint32_t>* used);
+
+// Once view 0's frame has begun: its window becomes the one the next frame's slots follow.
+void keep_blade_window(const BladeWindowPlan& frame, BladeWindowPlan* kept);
 
 // A later view of the frame: its responsive draws read view 0's tables; those whose cells
 // view 0's window all holds get the window variant.

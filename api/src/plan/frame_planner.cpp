@@ -706,7 +706,7 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     if (in.first_view) {
         apply_blade_window(*in.first_view, &plan);
     } else {
-        plan_blade_window(&plan, in.blade_window, in.patches);
+        plan_blade_window(&plan, in.blade_window, in.patches, in.dynamics.window, &in.dynamics.window_used);
     }
     plan_gbuffer(ext, &plan); // before the others: a G-buffer view receives no shadows nor lights
     plan_shadow_receive(view, ext, camera, &plan);
