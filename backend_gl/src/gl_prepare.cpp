@@ -1,5 +1,5 @@
 // grass_prepare_pipelines on GL: compiles (or loads from the seeded program binaries) every
-// program variant the core asks for, and the interaction pass's program; the program
+// program variant the core asks for, the interaction pass's and blade window pass's programs; the program
 // binaries' blob (gl_program_cache.hpp).
 #include "gl_backend.hpp"
 
@@ -48,6 +48,8 @@ grass_result GlBackend::pipeline_cache_data(const char* function, void* data, ui
         }
     }
     if (interaction_program_ != 0) records.push_back({kInteractionProgramKind, 0, interaction_program_});
+    for (uint32_t mask = 0; mask <= kBladeWindowPassFeatures; ++mask)
+        if (window_programs_[mask] != 0) records.push_back({kBladeWindowProgramKind, mask, window_programs_[mask]});
     return program_cache_.save(gl_, function, records.data(), static_cast<uint32_t>(records.size()), data, size);
 }
 

@@ -17,8 +17,11 @@ namespace grass {
 
 // The kind of the interaction pass's program in a blob (after the GlProgramKind values).
 constexpr uint32_t kInteractionProgramKind = 4;
+// The kind of a blade window pass's program (one per mask of kBladeWindowPassFeatures).
+constexpr uint32_t kBladeWindowProgramKind = 5;
 
-// A program to save: its kind (GlProgramKind or kInteractionProgramKind), mask and name.
+// A program to save: its kind (GlProgramKind, kInteractionProgramKind or kBladeWindowProgramKind), mask
+// and name.
 struct GlProgramRecord {
     uint32_t kind;
     uint32_t features;
