@@ -461,15 +461,17 @@ TEST_P(GlStateTest, ADepthPassRestoresTheHostsColourMasksAndPolygonOffset) {
     }
 }
 
-// Responsive grass touches more (grass_gl.h): shader storage bindings 0-3 and the generic
-// one, image unit 0, texture units 10-11 and their samplers. With wind and a collider (the
-// interaction pass runs and the draws read the map and the blade curves), every one of
-// them is back as the host left it.
+// Responsive grass touches more (grass_gl.h): shader storage bindings 0-7 and the generic
+// one, uniform buffer binding 2, image unit 0, texture units 10-11 and their samplers. With
+// wind and a collider (the interaction pass runs, the blade window pass steps and poses the
+// blades, and the draws read the map and the window), every one of them is back as the host
+// left it. Seen failing with the state guard's restore of storage bindings 4-7 left out.
 TEST_P(GlStateTest, ResponsiveRenderRestoresItsExtraState) {
     PFNGLGETINTEGERI_VPROC get_i = nullptr;
     PFNGLGETINTEGERVPROC get = nullptr;
     PFNGLCREATEBUFFERSPROC create_buffers = nullptr;
     PFNGLBINDBUFFERBASEPROC bind_base = nullptr;
+    PFNGLBINDBUFFERRANGEPROC bind_range = nullptr;
     PFNGLBINDBUFFERPROC bind = nullptr;
     PFNGLCREATETEXTURESPROC create_textures = nullptr;
     PFNGLTEXTURESTORAGE2DPROC storage = nullptr;
@@ -482,6 +484,7 @@ TEST_P(GlStateTest, ResponsiveRenderRestoresItsExtraState) {
     load(*host, &get, "glGetIntegerv");
     load(*host, &create_buffers, "glCreateBuffers");
     load(*host, &bind_base, "glBindBufferBase");
+    load(*host, &bind_range, "glBindBufferRange");
     load(*host, &bind, "glBindBuffer");
     load(*host, &create_textures, "glCreateTextures");
     load(*host, &storage, "glTextureStorage2D");
@@ -505,10 +508,14 @@ TEST_P(GlStateTest, ResponsiveRenderRestoresItsExtraState) {
     grass_view_desc v = view(eye, target);
     render(v);
 
-    GLuint buffers[5] = {}, textures[3] = {}, samplers[2] = {};
-    create_buffers(5, buffers);
-    for (GLuint i = 0; i < 4; ++i) bind_base(GL_SHADER_STORAGE_BUFFER, i, buffers[i]);
-    bind(GL_SHADER_STORAGE_BUFFER, buffers[4]);
+    GLuint buffers[10] = {}, textures[3] = {}, samplers[2] = {};
+    PFNGLNAMEDBUFFERDATAPROC buffer_data = nullptr;
+    load(*host, &buffer_data, "glNamedBufferData");
+    create_buffers(10, buffers);
+    for (GLuint i = 0; i < 8; ++i) bind_base(GL_SHADER_STORAGE_BUFFER, i, buffers[i]);
+    bind(GL_SHADER_STORAGE_BUFFER, buffers[8]);
+    buffer_data(buffers[9], 1024, nullptr, GL_STATIC_DRAW);
+    bind_range(GL_UNIFORM_BUFFER, 2, buffers[9], 256, 512); // a range, so its offset and size are checked too
     create_textures(GL_TEXTURE_2D, 3, textures);
     for (GLuint t : textures) storage(t, 1, GL_RGBA8, 2, 2);
     bind_image(0, textures[0], 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
@@ -520,12 +527,15 @@ TEST_P(GlStateTest, ResponsiveRenderRestoresItsExtraState) {
     }
     active(GL_TEXTURE2);
     struct Extra {
-        GLint storage[4], generic, image, image_access, image_format, unit_texture[2], unit_sampler[2], active;
+        GLint storage[8], generic, uniform2, uniform2_start, uniform2_size, image, image_access, image_format, unit_texture[2], unit_sampler[2], active;
     };
     const auto extra = [&] {
         Extra e{};
-        for (GLuint i = 0; i < 4; ++i) get_i(GL_SHADER_STORAGE_BUFFER_BINDING, i, &e.storage[i]);
+        for (GLuint i = 0; i < 8; ++i) get_i(GL_SHADER_STORAGE_BUFFER_BINDING, i, &e.storage[i]);
         get(GL_SHADER_STORAGE_BUFFER_BINDING, &e.generic);
+        get_i(GL_UNIFORM_BUFFER_BINDING, 2, &e.uniform2);
+        get_i(GL_UNIFORM_BUFFER_START, 2, &e.uniform2_start);
+        get_i(GL_UNIFORM_BUFFER_SIZE, 2, &e.uniform2_size);
         get_i(GL_IMAGE_BINDING_NAME, 0, &e.image);
         get_i(GL_IMAGE_BINDING_ACCESS, 0, &e.image_access);
         get_i(GL_IMAGE_BINDING_FORMAT, 0, &e.image_format);
@@ -548,13 +558,29 @@ TEST_P(GlStateTest, ResponsiveRenderRestoresItsExtraState) {
     EXPECT_GT(stats.interaction_texels, 0u) << "the interaction pass must have run";
     const Extra after = extra();
     EXPECT_EQ(std::memcmp(&before, &after, sizeof before), 0);
-    for (GLuint i = 0; i < 4; ++i) EXPECT_EQ(after.storage[i], GLint(buffers[i])) << "storage binding " << i;
-    EXPECT_EQ(after.generic, GLint(buffers[4]));
+    for (GLuint i = 0; i < 8; ++i) EXPECT_EQ(after.storage[i], GLint(buffers[i])) << "storage binding " << i;
+    EXPECT_EQ(after.generic, GLint(buffers[8]));
+    EXPECT_EQ(after.uniform2, GLint(buffers[9]));
+    EXPECT_EQ(after.uniform2_start, 256);
+    EXPECT_EQ(after.uniform2_size, 512);
     EXPECT_EQ(after.image, GLint(textures[0]));
     EXPECT_EQ(after.image_access, GL_READ_ONLY);
     EXPECT_EQ(after.unit_texture[1], GLint(textures[2]));
     EXPECT_EQ(after.unit_sampler[0], GLint(samplers[0]));
     EXPECT_EQ(after.active, GL_TEXTURE2);
+
+    // The blade window pass ran (else bindings 4-7 and uniform 2 were never touched): beyond
+    // the interaction map's levels and the blade curves, the 16 cells hold their blades'
+    // records (kBladeWindowRecordBytes = 96 a blade).
+    grass_memory_stats memory{};
+    ASSERT_EQ(grass_get_memory_stats(ctx, &memory), GRASS_SUCCESS);
+    grass_patch_info info{};
+    ASSERT_EQ(grass_get_patch_info(ctx, patch, &info), GRASS_SUCCESS);
+    const grass_interaction_desc map = grass_default_interaction_desc();
+    const uint64_t map_bytes = uint64_t(map.level_count) * map.resolution * map.resolution * 16u;
+    const uint64_t curve_bytes = uint64_t(info.blade_count) * 32u;
+    EXPECT_GE(memory.dynamics_gpu_bytes, map_bytes + curve_bytes + 16u * info.blade_count * 96u)
+        << "the blade window pass did not run";
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, GlStateTest, ::testing::Values(GRASS_BACKEND_GL),
