@@ -33,23 +33,33 @@ grass_host::TargetDesc target(uint32_t samples) {
     return t;
 }
 
+// A 6 m/s wind, the one both responsive scenes blow.
+void six_metre_wind(grass_context* ctx) {
+    grass_wind_desc wind = grass_default_wind_desc();
+    wind.speed = 6.0f;
+    ASSERT_EQ(grass_set_wind(ctx, &wind), GRASS_SUCCESS);
+}
+
+// A 0.3 m ball at x, rolling along +x at 2 m/s through the near rows.
+void rolling_ball(grass_context* ctx, double x) {
+    grass_collider ball{};
+    ball.shape = GRASS_COLLIDER_SPHERE;
+    ball.radius = 0.3f;
+    ball.center[0] = x;
+    ball.center[1] = 0.25;
+    ball.center[2] = 1.2;
+    ball.velocity[0] = 2.0f;
+    ASSERT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS);
+}
+
 // Responsive grass: a gusty wind, and a ball that rolled across the field (its trail crosses
 // the view). Both frames at the same time: time steps of 0, so GL's per-blade state (its
 // blade window pass, docs/responsive.md "Per-blade state") stays the stateless pose its
 // blades entered at: both backends draw the equilibrium (stepping_frame steps it).
 void responsive_frame(grass_context* ctx, int frame, grass_view_desc* view) {
     if (frame == 0) {
-        grass_wind_desc wind = grass_default_wind_desc();
-        wind.speed = 6.0f;
-        ASSERT_EQ(grass_set_wind(ctx, &wind), GRASS_SUCCESS);
-        grass_collider ball{};
-        ball.shape = GRASS_COLLIDER_SPHERE;
-        ball.radius = 0.3f;
-        ball.center[0] = 2.4;
-        ball.center[1] = 0.25;
-        ball.center[2] = 1.2;
-        ball.velocity[0] = 2.0f;
-        ASSERT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS);
+        six_metre_wind(ctx);
+        rolling_ball(ctx, 2.4);
     } else {
         ASSERT_EQ(grass_set_colliders(ctx, nullptr, 0), GRASS_SUCCESS);
     }
@@ -61,19 +71,8 @@ void responsive_frame(grass_context* ctx, int frame, grass_view_desc* view) {
 // step the same per-blade state).
 void stepping_frame(grass_context* ctx, int frame, grass_view_desc* view) {
     const double t = frame / 30.0;
-    if (frame == 0) {
-        grass_wind_desc wind = grass_default_wind_desc();
-        wind.speed = 6.0f;
-        ASSERT_EQ(grass_set_wind(ctx, &wind), GRASS_SUCCESS);
-    }
-    grass_collider ball{};
-    ball.shape = GRASS_COLLIDER_SPHERE;
-    ball.radius = 0.3f;
-    ball.center[0] = 1.6 + 2.0 * t;
-    ball.center[1] = 0.25;
-    ball.center[2] = 1.2;
-    ball.velocity[0] = 2.0f;
-    ASSERT_EQ(grass_set_colliders(ctx, &ball, 1), GRASS_SUCCESS);
+    if (frame == 0) six_metre_wind(ctx);
+    rolling_ball(ctx, 1.6 + 2.0 * t);
     view->time = 1.0 + t;
 }
 
