@@ -195,11 +195,11 @@ void compare(uint32_t samples, uint32_t block, double max_mean_difference, doubl
         EXPECT_GT(lag, 5.0) << "the stepped frames look like the stateless pose"; // stateless: 1.5
     }
     if (const char* dir = std::getenv("GRASS_TEST_IMAGE_DIR")) {
-        const std::string tag = std::string(scene == Scene::responsive ? "responsive_"
-                                            : scene == Scene::wind_map ? "wind_map_"
-                                            : scene == Scene::stepping ? "stepping_"
+        const std::string tag = std::string(scene == Scene::responsive    ? "responsive_"
+                                            : scene == Scene::wind_map    ? "wind_map_"
+                                            : scene == Scene::stepping    ? "stepping_"
                                             : scene == Scene::tessellated ? "tessellated_"
-                                                                       : "") +
+                                                                          : "") +
                                 std::to_string(samples) + ".png";
         grass_host::write_png(std::string(dir) + "/agreement_gl_" + tag, gl.image, nullptr);
         grass_host::write_png(std::string(dir) + "/agreement_vk_" + tag, vk.image, nullptr);

@@ -272,8 +272,8 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
     const grass_quality_desc& q = v.q;
     const bool is_reference = v.level == GRASS_QUALITY_REFERENCE && v.knob == "preset";
     Session session;
-    if (!open_session(opt, backend, ps, q, 0, opt.width, opt.height, &session, error,
-                      v.culled ? &v.culling : nullptr, opt.full_tessellation ? nullptr : &v.tessellation)) {
+    if (!open_session(opt, backend, ps, q, 0, opt.width, opt.height, &session, error, v.culled ? &v.culling : nullptr,
+                      opt.full_tessellation ? nullptr : &v.tessellation)) {
         *error += std::string(" (") + v.name + ")";
         return false;
     }

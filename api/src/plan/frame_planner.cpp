@@ -405,8 +405,8 @@ private:
             // Measured at the instance's nearest point: its centre less half its diagonal.
             const double half_diagonal =
                 0.5 * frame_.cell_size * std::hypot(double(cells.count_x), double(cells.count_z));
-            c.level = blade_level(field_.tessellation, patch_.data, frame_.cell_size,
-                                  screen_, std::max(std::sqrt(c.distance2) - half_diagonal, 0.0));
+            c.level = blade_level(field_.tessellation, patch_.data, frame_.cell_size, screen_,
+                                  std::max(std::sqrt(c.distance2) - half_diagonal, 0.0));
         }
         in_.scratch.per_tier[tier].push_back(c);
     }
