@@ -3,9 +3,9 @@
 // and the plan that splits each geometry draw's cells by level: near cells full, far cells
 // coarser, off (the default, NULL, REFERENCE's preset) always full, every index range inside
 // the patch's indices. Refusals name the argument and leave the earlier setting in place.
-// Seen failing: with blade_level() always answering 0 the plan kept one full draw
-// (FarCellsGetCoarserLevels: 1 draw, no level 2); with level k's rows taken every k-th
-// instead of every 2^k-th, LevelsAreRowSubsetsEndingAtTheTip failed on the 32-quad patch.
+// Seen failing: with every coarser draw's first index one quad past its level's, the index
+// ranges' check of FarCellsGetCoarserLevelsNearCellsTheFullBlades and
+// OneQuadHasNothingCoarserAndThirtyTwoReachOne failed.
 #include "core_fixture.hpp"
 #include "view_helpers.hpp"
 
