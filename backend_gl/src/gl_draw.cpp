@@ -7,6 +7,7 @@
 #include "gl_state_guard.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <optional>
 
@@ -141,8 +142,11 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
         }
         bind_field_maps(fields_[draw.field_slot], draw.features);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
+        // The indices of the blades' tessellation level the core chose (first_index 0: the full blades).
+        const void* first_index = reinterpret_cast<const void*>(uintptr_t(draw.first_index) * sizeof(uint32_t));
         gl_.DrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(draw.vertex_count), GL_UNSIGNED_INT,
-                                              nullptr, static_cast<GLsizei>(draw.instance_count), draw.first_instance);
+                                              first_index, static_cast<GLsizei>(draw.instance_count),
+                                              draw.first_instance);
     }
 }
 

@@ -389,7 +389,8 @@ grass_result VkBackend::record(const char* function, VkCommandBuffer cmd, uint32
             fn_.vkCmdBindIndexBuffer(cmd, p.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
             bound_patch = d.patch_slot;
         }
-        fn_.vkCmdDrawIndexed(cmd, d.vertex_count, d.instance_count, 0, 0, d.first_instance);
+        // The indices of the blades' tessellation level the core chose (first_index 0: the full blades).
+        fn_.vkCmdDrawIndexed(cmd, d.vertex_count, d.instance_count, d.first_index, 0, d.first_instance);
     }
     blades_label.reset();
     write_stamp(cmd, stamps, 1);

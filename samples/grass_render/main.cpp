@@ -41,6 +41,7 @@ struct Options {
     std::string wind, animation_dir;
     std::vector<std::string> colliders;
     std::vector<std::string> blade_culling;    // per-blade culling tests (grass_set_blade_culling)
+    float tessellation = 0.0f;                 // error pixels of the blades' dynamic tessellation; 0: off
     grass_sample::HostSceneOptions host_scene; // --box, --tree, --host-shadows
 };
 
@@ -86,6 +87,7 @@ void add_options(CLI::App& app, Options* o) {
             },
             "DX,DZ,SPEED[,GUST]"));
     grass_sample::add_blade_culling_option(app, &o->blade_culling, "in the geometry tier");
+    grass_sample::add_tessellation_option(app, &o->tessellation, "in the geometry tier");
     app.add_option("--collider", o->colliders,
                    "a collider (repeatable): sphere:X,Y,Z,R[,VX,VY,VZ] or capsule:AX,AY,AZ,BX,BY,BZ,R[,VX,VY,VZ], "
                    "metres, moving at the velocity in m/s from --time on")
@@ -259,6 +261,7 @@ int main(int argc, char** argv) {
             const grass_blade_culling_desc culling = grass_sample::blade_culling_desc(o.blade_culling);
             r = grass_set_blade_culling(ctx, field, &culling);
         }
+        if (r == GRASS_SUCCESS) r = grass_sample::set_tessellation(ctx, field, o.tessellation);
     }
     const double field_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t_field).count();

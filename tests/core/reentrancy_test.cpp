@@ -120,6 +120,8 @@ std::vector<Call> calls() {
         {"grass_set_interaction", [](Objects& o) { return grass_set_interaction(o.ctx, nullptr); }},
         {"grass_set_field_wind_map", [](Objects& o) { return grass_set_field_wind_map(o.ctx, o.field, nullptr); }},
         {"grass_set_blade_culling", [](Objects& o) { return grass_set_blade_culling(o.ctx, o.field, nullptr); }},
+        {"grass_set_blade_tessellation",
+         [](Objects& o) { return grass_set_blade_tessellation(o.ctx, o.field, nullptr); }},
         {"grass_gl_render", [](Objects& o) { return grass_gl_render(o.ctx); }},
         {"grass_vk_record",
          [](Objects& o) {

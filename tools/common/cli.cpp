@@ -135,6 +135,24 @@ CLI::Option* add_blade_culling_option(CLI::App& app, std::vector<std::string>* t
         ->check(CLI::IsMember({"orientation", "frustum", "distance-index", "distance-threshold"}));
 }
 
+CLI::Option* add_tessellation_option(CLI::App& app, float* error_pixels, const std::string& what) {
+    return app
+        .add_option("--tessellation", *error_pixels,
+                    "the blades' dynamic tessellation " + what +
+                        " (jahrmann2017 6.3): the most a coarser level may move a blade's outline on screen, "
+                        "pixels (DEFAULT's 0.5); 0: off")
+        ->capture_default_str()
+        ->check(closed_range(0.0, 16.0));
+}
+
+grass_result set_tessellation(grass_context* ctx, grass_field_id field, float error_pixels) {
+    if (error_pixels == 0.0f) return GRASS_SUCCESS;
+    grass_blade_tessellation_desc t = grass_default_blade_tessellation_desc();
+    t.enabled = 1;
+    t.error_pixels = error_pixels;
+    return grass_set_blade_tessellation(ctx, field, &t);
+}
+
 grass_blade_culling_desc blade_culling_desc(const std::vector<std::string>& tests) {
     grass_blade_culling_desc c = grass_default_blade_culling_desc();
     for (const std::string& t : tests) {

@@ -40,6 +40,12 @@ CLI::Option* add_blade_culling_option(CLI::App& app, std::vector<std::string>* t
 // geometry tiers); the rest at grass_default_blade_culling_desc().
 grass_blade_culling_desc blade_culling_desc(const std::vector<std::string>& tests);
 
+// --tessellation PX: the blades' dynamic tessellation (grass_set_blade_tessellation) `what`,
+// with error_pixels PX; 0 (the default): off.
+CLI::Option* add_tessellation_option(CLI::App& app, float* error_pixels, const std::string& what);
+// Sets it on `field` (nothing when error_pixels is 0).
+grass_result set_tessellation(grass_context* ctx, grass_field_id field, float error_pixels);
+
 // A value strictly between lo and hi (CLI::Range includes its ends).
 CLI::Validator open_range(double lo, double hi);
 // A value in lo..hi, ends included: CLI::Range, but NaN refused (CLI::Range lets it through:

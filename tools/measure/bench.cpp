@@ -54,11 +54,15 @@ struct Variant {
     // The sweep's blade_culling rows: per-blade culling (grass_set_blade_culling) on the field.
     bool culled = false;
     grass_blade_culling_desc culling = grass_default_blade_culling_desc();
+    // The blades' dynamic tessellation the preset means (grass_quality_blade_tessellation);
+    // off with --full-tessellation.
+    grass_blade_tessellation_desc tessellation = grass_default_blade_tessellation_desc();
 };
 
 Variant preset_variant(int level) {
     Variant v;
     v.q = grass_quality_preset(grass_quality_level(level));
+    v.tessellation = grass_quality_blade_tessellation(grass_quality_level(level));
     v.level = level;
     v.name = v.file = v.value = kLevelNames[level];
     v.knob = "preset";
@@ -96,7 +100,8 @@ struct Session {
 
 bool open_session(const Options& opt, grass_backend backend, const PreparedScene& ps, const grass_quality_desc& q,
                   uint64_t seed_offset, uint32_t width, uint32_t height, Session* session, std::string* error,
-                  const grass_blade_culling_desc* culling = nullptr) {
+                  const grass_blade_culling_desc* culling = nullptr,
+                  const grass_blade_tessellation_desc* tessellation = nullptr) {
     const char* be = grass_sample::backend_name(backend);
     const grass_sample::Scene& scene = ps.scene;
     grass_host::TargetDesc td = grass_sample::target_desc(scene);
@@ -145,6 +150,10 @@ bool open_session(const Options& opt, grass_backend backend, const PreparedScene
     if (r == GRASS_SUCCESS && culling) {
         call = "grass_set_blade_culling";
         r = grass_set_blade_culling(ctx, field, culling);
+    }
+    if (r == GRASS_SUCCESS && tessellation) {
+        call = "grass_set_blade_tessellation";
+        r = grass_set_blade_tessellation(ctx, field, tessellation);
     }
     session->field_ms = seconds_since(t_field) * 1e3;
     if (r != GRASS_SUCCESS) {
@@ -263,8 +272,8 @@ bool render_variant(const Options& opt, grass_backend backend, const PreparedSce
     const grass_quality_desc& q = v.q;
     const bool is_reference = v.level == GRASS_QUALITY_REFERENCE && v.knob == "preset";
     Session session;
-    if (!open_session(opt, backend, ps, q, 0, opt.width, opt.height, &session, error,
-                      v.culled ? &v.culling : nullptr)) {
+    if (!open_session(opt, backend, ps, q, 0, opt.width, opt.height, &session, error, v.culled ? &v.culling : nullptr,
+                      opt.full_tessellation ? nullptr : &v.tessellation)) {
         *error += std::string(" (") + v.name + ")";
         return false;
     }
@@ -681,6 +690,9 @@ Subcommand add_bench(CLI::App& measure) {
     app->add_option("--knob", o->knobs,
                     "--sweep: only this knob (repeatable): distance_scale, transition_scale, slice_scale, "
                     "macro_cell_scale, blade_subdivisions, blade_fraction, msaa_samples, blade_culling");
+    app->add_flag("--full-tessellation", o->full_tessellation,
+                  "every preset draws its blades with all their subdivisions at every distance (the frames "
+                  "before the blades' dynamic tessellation, grass_quality_blade_tessellation)");
     app->add_option("--frames", o->frames, "timed frames per preset after one warm-up (median)")
         ->capture_default_str()
         ->check(CLI::Range(1, 100));

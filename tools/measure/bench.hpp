@@ -60,6 +60,7 @@ struct Options {
     int frames = 3;
     bool sweep = false;             // --sweep: one knob at a time from DEFAULT instead of the presets
     std::vector<std::string> knobs; // --sweep --knob: the knobs to sweep; empty = all
+    bool full_tessellation = false; // --full-tessellation: no preset tessellates its blades dynamically
 };
 
 struct Row {

@@ -26,7 +26,7 @@
 // Usage: grass-measure popping [--backend gl|vk] [--scene FILE] [--frames N] [--size WxH]
 //                              [--samples N] [--canopy M] [--cell-budget N] [--max-reference-cells N]
 //                              [--cache DIR] [--no-agreement] [--wind S] [--wind-time T]
-//                              [--blade-culling TESTS]
+//                              [--blade-culling TESTS] [--tessellation PX]
 // A zone whose reference needs more than --max-reference-cells cells even in its narrowest
 // window (4 columns) is listed but not measured (the far zones: ~1500 cells for 8 pixels).
 #include <grass/grass.h>
@@ -71,6 +71,7 @@ struct Options {
     double wind_time = 2.0; // s: grass_view_desc.time of every frame
     // --blade-culling: per-blade culling of the lod setup's geometry tier (not the reference's)
     std::vector<std::string> blade_culling;
+    float tessellation = 0.0f; // --tessellation: the lod setup's blades' dynamic tessellation (pixels; 0: off)
 };
 
 double luma(const uint8_t* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
@@ -513,6 +514,10 @@ void measure_zone(const Options& o, const grass_sample::Scene& s, const LodSetup
         !set_blade_culling(o, lod, &error)) {
         throw grass_sample::Failure(error);
     }
+    if (grass_sample::set_tessellation(lod.ctx, lod.field, o.tessellation) != GRASS_SUCCESS) {
+        error = std::string("grass_set_blade_tessellation: ") + grass_get_last_error(lod.ctx);
+        throw grass_sample::Failure(error);
+    }
     std::vector<double> prev_lod, prev_ref;
     uint64_t zone_pixels = 0;
     for (int k = 0; k < o.frames; ++k) {
@@ -668,6 +673,7 @@ Subcommand add_popping(CLI::App& measure) {
         ->capture_default_str()
         ->check(grass_sample::closed_range(0.0, 1000.0));
     grass_sample::add_blade_culling_option(*app, &o->blade_culling, "of the lod setup's geometry tier");
+    grass_sample::add_tessellation_option(*app, &o->tessellation, "of the lod setup's geometry tier");
     app->add_option("--wind-time", o->wind_time, "seconds: grass_view_desc.time of every frame")
         ->capture_default_str()
         ->check(grass_sample::closed_range(0.0, 1e6));

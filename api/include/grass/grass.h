@@ -214,16 +214,17 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
     GRASS_STRUCT_TYPE_WIND_MAP_DESC = 0x6772000B,
     GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C,
-    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,       /* 0.5 */
-    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E,   /* 0.5 */
-    GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,    /* 0.5: stereo */
-    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,     /* 0.5 */
-    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,          /* 0.5: frames and views */
-    GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012,      /* 0.5: depth-only passes (shadows) */
-    GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC = 0x67720013, /* 0.5: the host's shadow maps, received */
-    GRASS_STRUCT_TYPE_VIEW_MOTION_DESC = 0x67720014,    /* 0.5: motion vectors */
-    GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC = 0x67720015,    /* 0.5: the host's lights */
-    GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC = 0x67720016    /* 0.5: G-buffer passes (deferred hosts) */
+    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,          /* 0.5 */
+    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E,      /* 0.5 */
+    GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,       /* 0.5: stereo */
+    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,        /* 0.5 */
+    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,             /* 0.5: frames and views */
+    GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012,         /* 0.5: depth-only passes (shadows) */
+    GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC = 0x67720013,    /* 0.5: the host's shadow maps, received */
+    GRASS_STRUCT_TYPE_VIEW_MOTION_DESC = 0x67720014,       /* 0.5: motion vectors */
+    GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC = 0x67720015,       /* 0.5: the host's lights */
+    GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC = 0x67720016,      /* 0.5: G-buffer passes (deferred hosts) */
+    GRASS_STRUCT_TYPE_BLADE_TESSELLATION_DESC = 0x67720017 /* 0.5: dynamic tessellation of the blades */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -1592,6 +1593,40 @@ GRASS_API grass_blade_culling_desc grass_default_blade_culling_desc(void);
  * grass_begin_frame on; NULL turns it off. */
 GRASS_API grass_result grass_set_blade_culling(grass_context* context, grass_field_id field,
                                                const grass_blade_culling_desc* culling);
+
+/* ---- Dynamic tessellation of the blades (0.5; jahrmann2017 6.3) ----------------------
+ * The geometry tier draws each cell's blades with fewer quads the smaller they are on
+ * screen: level k keeps every 2^k-th row of a blade's quad strip (and its tip), down to one
+ * quad a blade. Each level's error is the farthest any of the patch's blades strays from its
+ * full outline at that level (its curve cut into fewer straight pieces, its pointed width
+ * straightened), measured once when the patch is made. A cell takes the coarsest level whose
+ * error stays within error_pixels on screen at the cell's nearest point (the view's pixels per
+ * metre there), so a level changes where it moves an edge by error_pixels at most. The
+ * coarser levels are index ranges of the patch (no vertex data, no shader change): each
+ * level's cells are one more draw. Off by default and off in GRASS_QUALITY_REFERENCE: every
+ * blade is drawn with the patch's subdivisions. The error is the blades' rest shape's:
+ * blades bent further by wind or colliders stray more. docs/three-tiers.md measures what it
+ * saves and the error it adds. */
+typedef struct grass_blade_tessellation_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_BLADE_TESSELLATION_DESC */
+    const void* next;       /* NULL */
+    grass_bool enabled;     /* 0: full tessellation (the default) */
+    float
+        error_pixels; /* the most a coarser level may move a blade's outline on screen, pixels, 0.01..16; default 0.5 */
+} grass_blade_tessellation_desc;
+
+/* Off, error_pixels 0.5. */
+GRASS_API grass_blade_tessellation_desc grass_default_blade_tessellation_desc(void);
+
+/* The tessellation a quality preset means: off for GRASS_QUALITY_REFERENCE; on for the
+ * others, with error_pixels 0.25 (HIGH), 0.5 (DEFAULT), 0.75 (LOW) and 1 (FASTEST). An
+ * unknown level gives the default desc (off). */
+GRASS_API grass_blade_tessellation_desc grass_quality_blade_tessellation(grass_quality_level level);
+
+/* Sets the dynamic tessellation of `field`'s geometry tiers and all its grass types, from
+ * the next grass_begin_frame on; NULL turns it off. A refusal leaves the earlier one. */
+GRASS_API grass_result grass_set_blade_tessellation(grass_context* context, grass_field_id field,
+                                                    const grass_blade_tessellation_desc* tessellation);
 
 /* ---- Pipelines before the first frame (0.5) ----------------------------------------------
  * grass compiles a shader variant (a Vulkan pipeline, a GL program) the first time a draw

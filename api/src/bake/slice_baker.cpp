@@ -45,7 +45,7 @@ uint16_t quantise_threshold(float threshold) {
 }
 
 void prepare_triangles(const PatchData& patch, Vector<Triangle>* out) {
-    const size_t count = patch.indices.size() / 3;
+    const size_t count = patch.full_index_count() / 3; // level 0: the full blades
     out->resize(count);
     for (size_t k = 0; k < count; ++k) {
         Triangle& tri = (*out)[k];

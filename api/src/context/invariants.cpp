@@ -96,6 +96,18 @@ grass_result check_plan(grass_context* ctx, const char* fn, const FramePlan& pla
                              fn, draw.field_slot, draw.features, draw.uniforms.tiling[3], field->maps.features,
                              plan.interaction.levels);
         }
+        // A geometry draw's index range lies in its patch's indices (the blades' levels); the
+        // others have none.
+        const bool indices_ok = draw.kind == GRASS_TIER_GEOMETRY
+                                    ? (draw.vertex_count == 0 || (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0 ||
+                                       uint64_t(draw.first_index) + draw.vertex_count <= patch->data.indices.size())
+                                    : draw.first_index == 0 && draw.blade_level == 0;
+        if (!indices_ok) {
+            return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
+                             "%s: a %s draw of patch slot %u has the indices %u+%u of %zu (internal error)", fn,
+                             tier_kind_name(draw.kind), draw.patch_slot, draw.first_index, draw.vertex_count,
+                             patch->data.indices.size());
+        }
         if (drawing && draw.kind != GRASS_TIER_GEOMETRY && !patch->slices(draw_slice_set(draw))) {
             return ctx->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_INTERNAL_ERROR,
                              "%s: tier %u (%s) of field slot %u draws patch slot %u with %u slices per axis, but no "

@@ -75,7 +75,7 @@ grass_result create_patch(grass_context* ctx, const grass_patch_desc* desc, gras
     out->generation = ctx->patches.generation(slot);
     out->owner = ctx->owner;
     ctx->info(GRASS_MSG_PATCH_GENERATED, "%s: %u blades, %u triangles, hash %016llx", fn, patch->data.blade_count,
-              static_cast<unsigned>(patch->data.indices.size() / 3),
+              static_cast<unsigned>(patch->data.full_index_count() / 3),
               static_cast<unsigned long long>(patch->data.content_hash));
     return GRASS_SUCCESS;
 }
@@ -159,7 +159,7 @@ GRASS_API grass_result grass_get_patch_info(const grass_context* context, grass_
     grass_patch_info info{};
     info.blade_count = d.blade_count;
     info.vertex_count = static_cast<uint32_t>(d.vertices.size());
-    info.triangle_count = static_cast<uint32_t>(d.indices.size() / 3);
+    info.triangle_count = d.full_index_count() / 3;
     for (int c = 0; c < 3; ++c) {
         info.bounds_min[c] = d.bounds_min[c];
         info.bounds_max[c] = d.bounds_max[c];

@@ -166,12 +166,14 @@ struct TierDraw {
     uint32_t patch_slot;
     uint32_t first_instance; // into FramePlan::instances
     uint32_t instance_count;
-    uint32_t vertex_count;  // per instance: the patch's indices (geometry, an indexed draw; 0 for an empty
-                            // patch), the volume's cuboid or the image's quad, with skirts on a height map
-                            // (slice_tier_vertices); a debug box under GRASS_VIEW_FLAG_DEBUG_CELLS
-    uint32_t features;      // shader variant: the field's maps (bit = 1 << MapRole), then the responsive and
-                            // culling bits (foundation/shader_interface.hpp); equals uniforms.tiling[3]
-    FieldUniforms uniforms; // complete: a backend uploads it as it is
+    uint32_t vertex_count;    // per instance: the patch's indices (geometry, an indexed draw; 0 for an empty
+                              // patch), the volume's cuboid or the image's quad, with skirts on a height map
+                              // (slice_tier_vertices); a debug box under GRASS_VIEW_FLAG_DEBUG_CELLS
+    uint32_t first_index = 0; // geometry: the first index of the blades' level (patch/blade_levels.hpp), else 0
+    uint32_t blade_level = 0; // geometry: that level (0: the patch's full blades; vertex_count is its indices)
+    uint32_t features;        // shader variant: the field's maps (bit = 1 << MapRole), then the responsive and
+                              // culling bits (foundation/shader_interface.hpp); equals uniforms.tiling[3]
+    FieldUniforms uniforms;   // complete: a backend uploads it as it is
 };
 
 // The baked slice set a volume or image draw samples: its slices per axis for a volume

@@ -24,6 +24,12 @@ grass_result check_not_null(Log* log, const char* function, const char* name, co
     return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NULL_ARGUMENT, "%s: %s is NULL", function, name);
 }
 
+grass_result check_bool(Log* log, const char* function, const char* name, grass_bool b) {
+    if (b == 0 || b == 1) return GRASS_SUCCESS;
+    return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: %s is %u; it must be 0 or 1", function,
+                     name, static_cast<unsigned>(b));
+}
+
 grass_result check_finite(Log* log, const char* function, const char* name, double value) {
     if (std::isfinite(value)) return GRASS_SUCCESS;
     return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_NOT_FINITE, "%s: %s is %g; it must be finite", function,

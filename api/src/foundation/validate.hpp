@@ -22,6 +22,8 @@ grass_result check_desc_header(Log* log, const char* function, const char* name,
                                (desc) ? (desc)->next : nullptr, EXPECTED, #EXPECTED)
 
 grass_result check_not_null(Log* log, const char* function, const char* name, const void* p);
+// A grass_bool: 0 or 1 (GRASS_MSG_BAD_ENUM otherwise).
+grass_result check_bool(Log* log, const char* function, const char* name, grass_bool b);
 grass_result check_finite(Log* log, const char* function, const char* name, double value);
 // lo <= value <= hi, and finite.
 grass_result check_range(Log* log, const char* function, const char* name, double value, double lo, double hi);

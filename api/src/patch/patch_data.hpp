@@ -18,12 +18,21 @@ struct BladeVertex {
 };
 static_assert(sizeof(BladeVertex) == 48, "BladeVertex must match the shader's vertex layout");
 
+// One level of the blades' dynamic tessellation (blade_levels.hpp): its indices in
+// PatchData::indices, blade after blade, and how far its outline strays from the full one.
+struct BladeLevel {
+    uint32_t first_index = 0;       // the level's first index
+    uint32_t indices_per_blade = 0; // 6 per quad
+    float error = 0.0f;             // patch units: the farthest a full vertex lies from this level's outline
+};
+constexpr uint32_t kMaxBladeLevels = 6; // 32 subdivisions: 32, 16, 8, 4, 2 and 1 quads
+
 struct PatchData {
     explicit PatchData(HostAllocator* host)
         : vertices(StlAllocator<BladeVertex>(host)), indices(StlAllocator<uint32_t>(host)),
           thresholds(StlAllocator<float>(host)), blade_curves(StlAllocator<float>(host)) {}
     Vector<BladeVertex> vertices; // blade after blade, (subdivisions + 1) * 2 each
-    Vector<uint32_t> indices;     // triangle list, subdivisions * 6 per blade
+    Vector<uint32_t> indices;     // triangle lists: every level (levels), level 0 first (subdivisions * 6 per blade)
     Vector<float> thresholds;     // one per blade
     // Responsive grass (jahrmann2017 4): each blade's rest pose as a quadratic Bezier curve,
     // 8 floats per blade (two vec4 of the std430 buffer BladeCurves, binding 12), patch units
@@ -34,12 +43,16 @@ struct PatchData {
     Vector<float> blade_curves;
     uint32_t blade_count = 0;
     uint32_t vertices_per_blade = 0;
-    uint32_t indices_per_blade = 0;
+    uint32_t indices_per_blade = 0; // level 0's
+    BladeLevel levels[kMaxBladeLevels];
+    uint32_t level_count = 0; // 1 for a blade of one quad
     float bounds_min[3] = {0, 0, 0};
     float bounds_max[3] = {0, 0, 0};
     float ao_impact = 0;       // B_impact (lemme eq. 6.11)
     float ao_height = 0;       // B_height, patch units
-    uint64_t content_hash = 0; // FNV-1a 64 over vertices then indices
+    uint64_t content_hash = 0; // FNV-1a 64 over vertices then level 0's indices
+    // Level 0's indices: the full strip of every blade (the triangles the patch is made of).
+    uint32_t full_index_count() const { return blade_count * indices_per_blade; }
 };
 
 } // namespace grass

@@ -5,6 +5,7 @@
 // per-blade and per-vertex colour modulation. Thresholds (4.1.3): density_threshold.cpp.
 #include "patch/patch_generator.hpp"
 
+#include "patch/blade_levels.hpp"
 #include "patch/density_threshold.hpp"
 #include "patch/random.hpp"
 
@@ -171,6 +172,7 @@ void generate_patch(const grass_patch_desc& desc, HostAllocator* host, PatchData
     }
     uint64_t h = fnv1a64(out->vertices.data(), out->vertices.size() * sizeof(BladeVertex), kFnvOffset);
     out->content_hash = fnv1a64(out->indices.data(), out->indices.size() * sizeof(uint32_t), h);
+    add_blade_levels(n_sub, out); // after the hash: the coarser levels follow from level 0
 }
 
 } // namespace grass

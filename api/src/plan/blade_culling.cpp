@@ -21,12 +21,6 @@ grass_blade_culling_desc default_blade_culling_desc() {
 
 namespace {
 
-grass_result check_bool(Log* log, const char* fn, const char* name, grass_bool b) {
-    if (b == 0 || b == 1) return GRASS_SUCCESS;
-    return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_BAD_ENUM, "%s: %s is %u; it must be 0 or 1", fn, name,
-                     static_cast<unsigned>(b));
-}
-
 // The largest finite end of the field's geometry tiers' distance bands (metres); 0 if none.
 // Field::bands holds an infinite end (or a tier without a band) as 3e38.
 float geometry_end(const Field& field) {

@@ -10,6 +10,7 @@
 #include "foundation/shader_interface.hpp"
 #include "patch/patch_data.hpp"
 #include "plan/blade_culling.hpp"
+#include "plan/blade_tessellation.hpp"
 #include "plan/lod_setup_types.hpp"
 #include "plan/quadtree.hpp"
 
@@ -65,6 +66,7 @@ struct Field {
     double overhang = 0.0;                // how far blade tips may leave their cell, in cells
     FieldWindMap wind_map;                // responsive grass: the host's wind map (grass_set_field_wind_map)
     BladeCulling culling;                 // per-blade culling of its geometry tiers (grass_set_blade_culling)
+    BladeTessellation tessellation;       // dynamic tessellation of its geometry tiers (grass_set_blade_tessellation)
 };
 
 } // namespace grass

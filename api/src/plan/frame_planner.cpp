@@ -3,6 +3,7 @@
 #include "dynamics/dynamics_plan.hpp"
 #include "foundation/validate.hpp"
 #include "maps/design_map.hpp"
+#include "plan/blade_tessellation.hpp"
 #include "plan/blade_window.hpp"
 #include "plan/gbuffer_plan.hpp"
 #include "plan/lights_plan.hpp"
@@ -96,18 +97,16 @@ struct NodeBox {
     double terrain_lo = 0.0, terrain_hi = 0.0; // terrain height range under the node, cells
 };
 
-// The vertices of a geometry draw: the patch's indices (none for a patch without blades).
-uint32_t patch_indices(const PatchData& pd) {
-    return pd.vertices.empty() ? 0u : static_cast<uint32_t>(pd.indices.size());
-}
+// The vertices of a geometry draw: the patch's full blades (none for a patch without blades).
+uint32_t patch_indices(const PatchData& pd) { return pd.vertices.empty() ? 0u : pd.full_index_count(); }
 
 class FieldPlanner {
 public:
     FieldPlanner(const FramePlanning& in, uint32_t slot, const Field& field, const Patch& patch, const double camera[3],
                  const double lod_origin[3], const Frusta& culling, const DynamicsFrame& dynamics, uint32_t view_flags,
-                 bool depth_pass)
+                 bool depth_pass, const ScreenScale& screen)
         : in_(in), slot_(slot), field_(field), patch_(patch), culling_(culling),
-          frame_(field_frame(field, camera, lod_origin)) {
+          frame_(field_frame(field, camera, lod_origin)), screen_(screen) {
         for (int c = 0; c < 3; ++c) camera_[c] = camera[c];
         for (int c = 0; c < 3; ++c) lod_rel_[c] = lod_origin[c] - camera[c];
         // Responsive grass: the shader variant of every draw of the field (still grass: the
@@ -401,77 +400,107 @@ private:
         c.instance.terrain[3] = 0.0f;
         c.density =
             density_at(double(cells.x0) + 0.5 * double(cells.count_x), double(cells.z0) + 0.5 * double(cells.count_z));
+        c.level = 0;
+        if (field_.lod.tiers[tier].kind == GRASS_TIER_GEOMETRY && field_.tessellation.enabled) {
+            // Measured at the instance's nearest point: its centre less half its diagonal.
+            const double half_diagonal =
+                0.5 * frame_.cell_size * std::hypot(double(cells.count_x), double(cells.count_z));
+            c.level = blade_level(field_.tessellation, patch_.data, frame_.cell_size, screen_,
+                                  std::max(std::sqrt(c.distance2) - half_diagonal, 0.0));
+        }
         in_.scratch.per_tier[tier].push_back(c);
     }
 
     void emit_draws() {
-        FramePlan& plan = in_.plan;
         const LodSetup& lod = field_.lod;
-        const PatchData& pd = patch_.data;
         bool drew = false;
         for (uint32_t t = 0; t < lod.tier_count; ++t) {
             auto& candidates = in_.scratch.per_tier[t];
             if (candidates.empty()) continue;
             const grass_tier_kind kind = lod.tiers[t].kind;
             if (kind == GRASS_TIER_GEOMETRY) { // front to back: early depth rejects the rest
-                std::sort(candidates.begin(), candidates.end(),
-                          [](const PlanCandidate& a, const PlanCandidate& b) { return a.distance2 < b.distance2; });
+                // Each tessellation level in a run of its own (one draw), the finer first;
+                // the levels follow the distance, so the draws stay front to back.
+                std::sort(candidates.begin(), candidates.end(), [](const PlanCandidate& a, const PlanCandidate& b) {
+                    return a.level != b.level ? a.level < b.level : a.distance2 < b.distance2;
+                });
             }
-            TierDraw draw;
-            draw.kind = kind;
-            draw.tier = t;
-            draw.slices = lod.tiers[t].slices;
-            draw.field_slot = slot_;
-            draw.patch_slot = field_.patch_slot;
-            draw.first_instance = static_cast<uint32_t>(plan.instances.size());
-            draw.instance_count = static_cast<uint32_t>(candidates.size());
-            draw.features = features_;
-            if (kind == GRASS_TIER_GEOMETRY && field_.culling.enabled) draw.features |= kFeatureBladeCulling;
-            fill_uniforms(kind, t, &draw.uniforms);
-            draw.uniforms.tiling[3] = draw.features;
-            // Responsive variants find a vertex's blade from the patch's vertices per blade.
-            if ((draw.features & kBladeCurveFeatures) != 0) {
-                draw.uniforms.trample[3] = static_cast<float>(pd.vertices_per_blade);
+            for (size_t begin = 0, end = 0; begin < candidates.size(); begin = end) {
+                for (end = begin + 1; end < candidates.size() && candidates[end].level == candidates[begin].level;)
+                    ++end;
+                emit_draw(t, kind, begin, end);
             }
-            draw.vertex_count = debug_cells_                  ? kDebugBoxVertices
-                                : kind == GRASS_TIER_GEOMETRY ? patch_indices(pd)
-                                                              : slice_tier_vertices(kind, draw.features);
-            plan.draws.push_back(draw);
             drew = true;
-            const uint64_t triangles_per_blade = pd.indices_per_blade / 3;
-            TierBand bands[GRASS_MAX_TIERS];
-            for (uint32_t b = 0; b < lod.tier_count; ++b) {
-                bands[b] = {field_.bands[b][0], field_.bands[b][1], field_.bands[b][2], field_.bands[b][3]};
-            }
-            for (const PlanCandidate& c : candidates) {
-                plan.instances.push_back(c.instance);
-                const uint64_t cells = uint64_t(c.instance.count[0]) * c.instance.count[1];
-                plan.stats.instances[kind] += 1;
-                plan.stats.cells[kind] += cells;
-                plan.stats.macro_cells[kind] += cells > 1 ? 1 : 0;
-                if (kind == GRASS_TIER_GEOMETRY) {
-                    // The blades this tier draws at the cell's centre: those whose r =
-                    // threshold / density falls in its interval (tier_transitions.hpp).
-                    const float d = static_cast<float>(std::sqrt(c.distance2));
-                    float total = 0.0f, lo = 0.0f, self = 0.0f;
-                    for (uint32_t b = 0; b < lod.tier_count; ++b) {
-                        const float w = band_weight(bands[b], d);
-                        total += w;
-                        if (b > t) lo += w;
-                        if (b == t) self = w;
-                    }
-                    const double share_lo = total > 0.0f ? lo / total : 0.0,
-                                 share_hi = total > 0.0f ? (lo + self) / total : 0.0;
-                    const uint64_t passing = blades_passing(c.density * share_hi, pd.blade_count) -
-                                             blades_passing(c.density * share_lo, pd.blade_count);
-                    plan.stats.cells_drawn += 1;
-                    plan.stats.blades_submitted += pd.blade_count;
-                    plan.stats.blades_drawn += passing;
-                    plan.stats.triangles += passing * triangles_per_blade;
+        }
+        if (drew) in_.plan.stats.fields_drawn += 1;
+    }
+
+    // The draw of candidates [begin, end) of tier t: all of it but for a geometry tier with
+    // dynamic tessellation, whose candidates of one level it is.
+    void emit_draw(uint32_t t, grass_tier_kind kind, size_t begin, size_t end) {
+        FramePlan& plan = in_.plan;
+        const LodSetup& lod = field_.lod;
+        const PatchData& pd = patch_.data;
+        const auto& candidates = in_.scratch.per_tier[t];
+        const uint32_t level = candidates[begin].level;
+        TierDraw draw;
+        draw.kind = kind;
+        draw.tier = t;
+        draw.slices = lod.tiers[t].slices;
+        draw.field_slot = slot_;
+        draw.patch_slot = field_.patch_slot;
+        draw.first_instance = static_cast<uint32_t>(plan.instances.size());
+        draw.instance_count = static_cast<uint32_t>(end - begin);
+        draw.features = features_;
+        if (kind == GRASS_TIER_GEOMETRY && field_.culling.enabled) draw.features |= kFeatureBladeCulling;
+        fill_uniforms(kind, t, &draw.uniforms);
+        draw.uniforms.tiling[3] = draw.features;
+        // Responsive variants find a vertex's blade from the patch's vertices per blade.
+        if ((draw.features & kBladeCurveFeatures) != 0) {
+            draw.uniforms.trample[3] = static_cast<float>(pd.vertices_per_blade);
+        }
+        draw.vertex_count = debug_cells_                  ? kDebugBoxVertices
+                            : kind == GRASS_TIER_GEOMETRY ? patch_indices(pd)
+                                                          : slice_tier_vertices(kind, draw.features);
+        if (kind == GRASS_TIER_GEOMETRY && level > 0 && !debug_cells_) {
+            draw.blade_level = level;
+            draw.first_index = pd.levels[level].first_index;
+            draw.vertex_count = pd.blade_count * pd.levels[level].indices_per_blade;
+        }
+        plan.draws.push_back(draw);
+        const uint64_t triangles_per_blade = pd.levels[level].indices_per_blade / 3;
+        TierBand bands[GRASS_MAX_TIERS];
+        for (uint32_t b = 0; b < lod.tier_count; ++b) {
+            bands[b] = {field_.bands[b][0], field_.bands[b][1], field_.bands[b][2], field_.bands[b][3]};
+        }
+        for (size_t k = begin; k < end; ++k) {
+            const PlanCandidate& c = candidates[k];
+            plan.instances.push_back(c.instance);
+            const uint64_t cells = uint64_t(c.instance.count[0]) * c.instance.count[1];
+            plan.stats.instances[kind] += 1;
+            plan.stats.cells[kind] += cells;
+            plan.stats.macro_cells[kind] += cells > 1 ? 1 : 0;
+            if (kind == GRASS_TIER_GEOMETRY) {
+                // The blades this tier draws at the cell's centre: those whose r =
+                // threshold / density falls in its interval (tier_transitions.hpp).
+                const float d = static_cast<float>(std::sqrt(c.distance2));
+                float total = 0.0f, lo = 0.0f, self = 0.0f;
+                for (uint32_t b = 0; b < lod.tier_count; ++b) {
+                    const float w = band_weight(bands[b], d);
+                    total += w;
+                    if (b > t) lo += w;
+                    if (b == t) self = w;
                 }
+                const double share_lo = total > 0.0f ? lo / total : 0.0,
+                             share_hi = total > 0.0f ? (lo + self) / total : 0.0;
+                const uint64_t passing = blades_passing(c.density * share_hi, pd.blade_count) -
+                                         blades_passing(c.density * share_lo, pd.blade_count);
+                plan.stats.cells_drawn += 1;
+                plan.stats.blades_submitted += pd.blade_count;
+                plan.stats.blades_drawn += passing;
+                plan.stats.triangles += passing * triangles_per_blade;
             }
         }
-        if (drew) plan.stats.fields_drawn += 1;
     }
 
     void fill_uniforms(grass_tier_kind kind, uint32_t tier, FieldUniforms* u) const {
@@ -541,6 +570,7 @@ private:
     const Patch& patch_;
     const Frusta& culling_;
     FieldFrame frame_;
+    ScreenScale screen_; // the view's pixels per metre, for the blades' tessellation
     double camera_[3];
     double lod_rel_[3]; // the lod origin relative to the camera (metres)
     const DesignMap* density_map_ = nullptr;
@@ -692,11 +722,12 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     plan.frame.projection_centre[3] = 0.0f;
     const ViewCulling second_culling(stereo ? second_view_projection : view_projection, in.depth_mode);
     frusta.culling[1] = &second_culling;
+    const ScreenScale screen = screen_scale(view.projection, view.viewport[3], culling.orthographic());
     for (uint32_t slot = 0; slot < in.fields.capacity(); ++slot) {
         const Field* field = in.fields.get(slot);
         if (!field) continue;
         FieldPlanner planner(in, slot, *field, *in.patches.get(field->patch_slot), camera, lod_origin, frusta, dynamics,
-                             view.flags, plan.depth_pass);
+                             view.flags, plan.depth_pass, screen);
         const grass_result r = planner.run();
         if (r != GRASS_SUCCESS) {
             plan.clear();

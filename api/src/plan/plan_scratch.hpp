@@ -20,6 +20,7 @@ struct PlanNode {
 struct PlanCandidate {
     double distance2; // squared distance from the camera to the cell centre, metres^2
     float density;    // density at the cell centre, for the blade stats
+    uint32_t level;   // geometry: the blades' tessellation level (blade_tessellation.hpp), else 0
     TierInstance instance;
 };
 

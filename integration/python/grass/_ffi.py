@@ -66,6 +66,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_VIEW_MOTION_DESC": 0x67720014,
         "GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC": 0x67720015,
         "GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC": 0x67720016,
+        "GRASS_STRUCT_TYPE_BLADE_TESSELLATION_DESC": 0x67720017,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -382,6 +383,10 @@ class grass_interaction_desc(Structure):
                 ("level_count", c_uint32), ("texel_size", c_float * 2)]
 
 
+class grass_blade_tessellation_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("enabled", grass_bool), ("error_pixels", c_float)]
+
+
 class grass_blade_culling_desc(Structure):
     _fields_ = [("type", grass_enum), ("next", c_void_p), ("orientation", grass_bool),
                 ("orientation_limit", c_float), ("view_frustum", grass_bool), ("frustum_tolerance", c_float),
@@ -506,6 +511,9 @@ FUNCTIONS = {
     "grass_set_interaction": (grass_enum, [_ctx, _P(grass_interaction_desc)]),
     "grass_default_blade_culling_desc": (grass_blade_culling_desc, []),
     "grass_set_blade_culling": (grass_enum, [_ctx, grass_field_id, _P(grass_blade_culling_desc)]),
+    "grass_default_blade_tessellation_desc": (grass_blade_tessellation_desc, []),
+    "grass_quality_blade_tessellation": (grass_blade_tessellation_desc, [grass_enum]),
+    "grass_set_blade_tessellation": (grass_enum, [_ctx, grass_field_id, _P(grass_blade_tessellation_desc)]),
     "grass_default_pipeline_desc": (grass_pipeline_desc, []),
     "grass_prepare_pipelines": (grass_enum, [_ctx, _P(grass_pipeline_desc)]),
     "grass_get_pipeline_cache_data": (grass_enum, [_ctx, c_void_p, _P(c_uint64)]),
