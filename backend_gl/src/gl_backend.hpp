@@ -256,6 +256,7 @@ private:
     // draws and the draw's indirect arguments; draw_compacted draws them. Its programs per
     // feature mask (kBladeWindowPassFeatures and kFeatureBladeCulling), made on first use; the
     // buffers grow as a view needs and go with the window's.
+    grass_result blade_compaction_program(const char* function, uint32_t features, GLuint* out_program);
     bool compacts(const FramePlan& plan, const TierDraw& draw) const;
     grass_result compact_blade_window(const FramePlan& plan, const char* function);
     void draw_compacted(const TierDraw& draw, size_t index) const;

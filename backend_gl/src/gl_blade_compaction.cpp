@@ -31,9 +31,22 @@ size_t align_up(size_t value, size_t alignment) { return (value + alignment - 1)
 
 } // namespace
 
+grass_result GlBackend::blade_compaction_program(const char* function, uint32_t features, GLuint* out_program) {
+    const uint32_t mask = features & (kBladeWindowPassFeatures | kFeatureBladeCulling);
+    if (compaction_programs_[mask] == 0) {
+        const grass_result result =
+            create_blade_compaction_program(ctx_, gl_, function, mask, &compaction_programs_[mask]);
+        if (result != GRASS_SUCCESS) return result;
+        label(GL_PROGRAM, compaction_programs_[mask], "grass blade compaction program");
+    }
+    *out_program = compaction_programs_[mask];
+    return GRASS_SUCCESS;
+}
+
 bool GlBackend::compacts(const FramePlan& plan, const TierDraw& draw) const {
-    return plan.compact_blade_window && draw.kind == GRASS_TIER_GEOMETRY && (draw.features & kFeatureBladeWindow) != 0 &&
-           draw.instance_count > 0 && draw.vertex_count > 0 && patches_[draw.patch_slot].curve_bytes > 0;
+    return plan.compact_blade_window && draw.kind == GRASS_TIER_GEOMETRY &&
+           (draw.features & kFeatureBladeWindow) != 0 && draw.instance_count > 0 && draw.vertex_count > 0 &&
+           patches_[draw.patch_slot].curve_bytes > 0;
 }
 
 grass_result GlBackend::compact_blade_window(const FramePlan& plan, const char* function) {
@@ -91,14 +104,10 @@ grass_result GlBackend::compact_blade_window(const FramePlan& plan, const char* 
         if (compact_command_[i] < 0) continue;
         const TierDraw& draw = plan.draws[i];
         const PatchGpu& patch = patches_[draw.patch_slot];
-        const uint32_t mask = draw.features & (kBladeWindowPassFeatures | kFeatureBladeCulling);
-        if (compaction_programs_[mask] == 0) {
-            const grass_result result =
-                create_blade_compaction_program(ctx_, gl_, function, mask, &compaction_programs_[mask]);
-            if (result != GRASS_SUCCESS) return result;
-            label(GL_PROGRAM, compaction_programs_[mask], "grass blade compaction program");
-        }
-        gl_.UseProgram(compaction_programs_[mask]);
+        GLuint program = 0;
+        const grass_result result = blade_compaction_program(function, draw.features, &program);
+        if (result != GRASS_SUCCESS) return result;
+        gl_.UseProgram(program);
         gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kBladeCurvesStorageBinding, patch.curves);
         gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCompactVerticesStorageBinding, patch.vertices);
         bind_field_maps(fields_[draw.field_slot], draw.features);

@@ -40,7 +40,7 @@ namespace grass_test {
     X(PFNGLNAMEDBUFFERDATAPROC, NamedBufferData)                         \
     X(PFNGLBINDBUFFERRANGEPROC, BindBufferRange)                         \
     X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                             \
-    X(PFNGLGETUNIFORMBLOCKINDEXPROC, GetUniformBlockIndex)              \
+    X(PFNGLGETUNIFORMBLOCKINDEXPROC, GetUniformBlockIndex)               \
     X(PFNGLCREATEQUERIESPROC, CreateQueries)                             \
     X(PFNGLDELETEQUERIESPROC, DeleteQueries)                             \
     X(PFNGLBEGINQUERYPROC, BeginQuery)                                   \
