@@ -49,7 +49,8 @@ void load_compacted_vertex() {
     a_normal = vec3(compact_vertex_words[w + 3u], compact_vertex_words[w + 4u], compact_vertex_words[w + 5u]);
     a_root_shape = vec4(compact_vertex_words[w + 6u], compact_vertex_words[w + 7u], compact_vertex_words[w + 8u],
                         compact_vertex_words[w + 9u]);
-    a_color = unpackUnorm4x8(floatBitsToUint(compact_vertex_words[w + 10u]));
+    uint rgba = floatBitsToUint(compact_vertex_words[w + 10u]);
+    a_color = vec4((uvec4(rgba) >> uvec4(0u, 8u, 16u, 24u)) & 0xffu) / 255.0;
     a_threshold = compact_vertex_words[w + 11u];
     i_origin = compact_instance_words[3u * item.x];
     i_cell = floatBitsToUint(compact_instance_words[3u * item.x + 1u]);

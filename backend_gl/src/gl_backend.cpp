@@ -65,7 +65,8 @@ GlBackend::GlBackend(grass_context* ctx)
       field_uniform_offsets_(StlAllocator<GLintptr>(&ctx->host)), patches_(StlAllocator<PatchGpu>(&ctx->host)),
       slices_(StlAllocator<SliceGpu>(&ctx->host)), fields_(StlAllocator<FieldGpu>(&ctx->host)),
       maps_(StlAllocator<MapGpu>(&ctx->host)), compact_command_(StlAllocator<int32_t>(&ctx->host)),
-      command_staging_(StlAllocator<uint32_t>(&ctx->host)), compact_staging_(StlAllocator<unsigned char>(&ctx->host)) {}
+      compact_first_command_(StlAllocator<uint32_t>(&ctx->host)), command_staging_(StlAllocator<uint32_t>(&ctx->host)),
+      compact_staging_(StlAllocator<unsigned char>(&ctx->host)) {}
 
 grass_result GlBackend::create(grass_context* ctx, const grass_gl_desc& desc, Backend** out_backend) {
     GlBackend* backend = nullptr;

@@ -266,9 +266,10 @@ private:
     GLuint compaction_programs_[(kBladeWindowPassFeatures | kFeatureBladeCulling) + 1] = {};
     GLuint compact_items_ = 0; // (instance, blade) per drawn blade, the draws' items after each other
     uint64_t compact_item_capacity_ = 0;
-    GlStreamBuffer compact_commands_; // DrawElementsIndirectCommand per compacted draw of the view
-    GlStreamBuffer compact_blocks_;   // the CompactDraw block per compacted draw, at the uniform alignment
-    Vector<int32_t> compact_command_; // per draw of the view: its indirect arguments' index, or -1
+    GlStreamBuffer compact_commands_;        // DrawElementsIndirectCommand per instance of the view's compacted draws
+    GlStreamBuffer compact_blocks_;          // the CompactDraw block per compacted draw, at the uniform alignment
+    Vector<int32_t> compact_command_;        // per draw of the view: its block's index, or -1
+    Vector<uint32_t> compact_first_command_; // ... and its first indirect arguments (one per instance)
     Vector<uint32_t> command_staging_;
     Vector<unsigned char> compact_staging_;
 };

@@ -1,9 +1,10 @@
 // Culled blades compacted in the GL backend (docs/responsive.md "Culled blades compacted",
 // jahrmann2017 6.1-6.2): before a view's geometry draws, one dispatch of
 // blade_compaction.comp per draw that runs the window variant (kFeatureBladeWindow), which
-// appends the blades the view draws to the draw's items and counts them into its indirect
-// arguments; then glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT),
-// and each such draw is one glDrawElementsIndirect of one blade's indices per item. Nothing
+// writes the blades the view draws, in order, to the draw's items and counts them into the
+// indirect arguments of each of its instances; then glMemoryBarrier(GL_COMMAND_BARRIER_BIT |
+// GL_SHADER_STORAGE_BARRIER_BIT), and each such draw is one glMultiDrawElementsIndirect (a
+// command per instance) of one blade's indices per item. Nothing
 // here exists for a frame without the blade window.
 #include "gl_backend.hpp"
 
@@ -16,7 +17,6 @@ namespace grass {
 
 namespace {
 
-constexpr GLuint kCompactGroupSize = 64; // local_size_x of blade_compaction.comp
 // blade_compaction.glsl's and .comp's bindings: the patch's vertices at 3, the view's
 // instances at 4, the items at 5, the indirect arguments at 6 (shader storage); the draw's
 // block at uniform binding 2. The table and poses stay at 1 and 2 (bind_blade_window).
@@ -51,10 +51,12 @@ bool GlBackend::compacts(const FramePlan& plan, const TierDraw& draw) const {
 
 grass_result GlBackend::compact_blade_window(const FramePlan& plan, const char* function) {
     compact_command_.assign(plan.draws.size(), -1);
+    compact_first_command_.assign(plan.draws.size(), 0);
     // The draws' items, indirect arguments and blocks: a draw of n instances of b blades
     // may draw n b blades.
     size_t items = 0;
-    uint32_t commands = 0;
+    uint32_t commands = 0; // indirect arguments: one per instance of the compacted draws
+    uint32_t draws = 0;    // compacted draws (their blocks)
     const size_t block_stride = align_up(4 * sizeof(uint32_t), static_cast<size_t>(uniform_alignment_));
     compact_staging_.clear();
     command_staging_.clear();
@@ -64,16 +66,20 @@ grass_result GlBackend::compact_blade_window(const FramePlan& plan, const char* 
         const PatchGpu& patch = patches_[draw.patch_slot];
         const uint32_t blades = static_cast<uint32_t>(patch.curve_bytes / (8 * sizeof(float)));
         const uint32_t block[4] = {draw.first_instance, static_cast<uint32_t>(items), commands, 0};
-        compact_staging_.resize(size_t(commands + 1) * block_stride, 0);
-        std::memcpy(compact_staging_.data() + size_t(commands) * block_stride, block, sizeof(block));
-        // One blade's indices per instance: the draw's index count over the patch's blades.
-        const uint32_t command[kCommandWords] = {draw.vertex_count / std::max(blades, 1u), 0, 0, 0,
-                                                 static_cast<uint32_t>(items)};
-        command_staging_.insert(command_staging_.end(), command, command + kCommandWords);
-        compact_command_[i] = static_cast<int32_t>(commands++);
+        compact_staging_.resize(size_t(draws + 1) * block_stride, 0);
+        std::memcpy(compact_staging_.data() + size_t(draws) * block_stride, block, sizeof(block));
+        // Per instance, one blade's indices per item: the draw's index count over the patch's
+        // blades; the shader writes the count and the first item.
+        const uint32_t command[kCommandWords] = {draw.vertex_count / std::max(blades, 1u), 0, 0, 0, 0};
+        for (uint32_t k = 0; k < draw.instance_count; ++k) {
+            command_staging_.insert(command_staging_.end(), command, command + kCommandWords);
+        }
+        compact_command_[i] = static_cast<int32_t>(draws++);
+        compact_first_command_[i] = commands;
+        commands += draw.instance_count;
         items += size_t(draw.instance_count) * blades;
     }
-    if (commands == 0) return GRASS_SUCCESS;
+    if (draws == 0) return GRASS_SUCCESS;
     const size_t item_bytes = items * 2 * sizeof(uint32_t);
     if (compact_item_capacity_ < item_bytes) {
         if (compact_items_ == 0) {
@@ -114,8 +120,7 @@ grass_result GlBackend::compact_blade_window(const FramePlan& plan, const char* 
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, kCompactDrawUniformBinding, compact_blocks_.name(),
                             static_cast<GLintptr>(size_t(compact_command_[i]) * block_stride), 4 * sizeof(uint32_t));
-        const GLuint blades = static_cast<GLuint>(patch.curve_bytes / (8 * sizeof(float)));
-        gl_.DispatchCompute((blades + kCompactGroupSize - 1) / kCompactGroupSize, draw.instance_count, 1);
+        gl_.DispatchCompute(1, draw.instance_count, 1); // a work group per instance
     }
     // The draws read the arguments (indirect) and the items (storage).
     gl_.MemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -129,8 +134,9 @@ void GlBackend::draw_compacted(const TierDraw& draw, size_t index) const {
     gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCompactInstancesStorageBinding, instances_.name());
     gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCompactItemsStorageBinding, compact_items_);
     gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, compact_commands_.name());
-    const size_t offset = size_t(compact_command_[index]) * kCommandWords * sizeof(uint32_t);
-    gl_.DrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset));
+    const size_t offset = size_t(compact_first_command_[index]) * kCommandWords * sizeof(uint32_t);
+    gl_.MultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset),
+                                  static_cast<GLsizei>(draw.instance_count), 0);
 }
 
 uint64_t GlBackend::blade_compaction_bytes() const {

@@ -80,7 +80,7 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     view's geometry draws, the compaction of its window draws (docs/responsive.md
  *     "Culled blades compacted": a compute dispatch per draw of the view that reads the
  *     window) and glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT),
- *     after which each such draw is one glDrawElementsIndirect;
+ *     after which each such draw is one glMultiDrawElementsIndirect;
  *   - viewport 0 (from grass_view_desc.viewport, set with glViewportIndexedf: the host's
  *     other viewports are not touched), depth test/func/mask, cull face (off: no face is
  *     culled, so the front-face winding does not matter), draw buffer 0's blend enable
