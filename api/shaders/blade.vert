@@ -1,5 +1,9 @@
 #version 450
-// Blade tier (lemme2012 5.1): instanced patch geometry, one instance per planned cell.
+// Blade tier (lemme2012 5.1): instanced patch geometry, one instance per planned cell; the
+// compacted window variant (GRASS_BLADE_COMPACT): one instance per blade the view draws.
+#if defined(GRASS_BLADE_COMPACT) && !defined(VULKAN)
+#extension GL_ARB_shader_draw_parameters : require
+#endif
 #include "blade_interface.glsl"
 #include "lighting.glsl"
 #include "tier_transitions.glsl"
@@ -13,9 +17,45 @@
 #include "blade_culling.glsl"
 #ifdef GRASS_BLADE_WINDOW // the blade window's variant (kFeatureBladeWindow): poses read, not computed
 #include "blade_window.glsl"
+#ifdef GRASS_BLADE_COMPACT // the compacted window variant: one instance per drawn blade
+#include "blade_compaction.glsl"
+#endif
 #endif
 #endif
 
+#ifdef GRASS_BLADE_COMPACT
+// The vertex's inputs, read from storage (load_compacted_vertex) for the instance's item:
+// the blade's vertex of the same index in the blade's index pattern, and its cell.
+vec3 a_position;
+vec3 a_normal;
+vec4 a_root_shape;
+vec4 a_color;
+float a_threshold;
+vec4 i_origin;
+uvec4 i_cell;
+uint g_vertex; // the vertex's index in the patch
+
+void load_compacted_vertex() {
+#ifdef VULKAN
+    uvec2 item = compact_items[uint(gl_InstanceIndex)];
+    uint in_blade = uint(gl_VertexIndex);
+#else
+    uvec2 item = compact_items[uint(gl_BaseInstanceARB + gl_InstanceID)];
+    uint in_blade = uint(gl_VertexID);
+#endif
+    g_vertex = item.y * compact_vertices_per_blade() + in_blade;
+    uint w = g_vertex * kCompactVertexWords;
+    a_position = vec3(compact_vertex_words[w], compact_vertex_words[w + 1u], compact_vertex_words[w + 2u]);
+    a_normal = vec3(compact_vertex_words[w + 3u], compact_vertex_words[w + 4u], compact_vertex_words[w + 5u]);
+    a_root_shape = vec4(compact_vertex_words[w + 6u], compact_vertex_words[w + 7u], compact_vertex_words[w + 8u],
+                        compact_vertex_words[w + 9u]);
+    uint rgba = floatBitsToUint(compact_vertex_words[w + 10u]);
+    a_color = vec4((uvec4(rgba) >> uvec4(0u, 8u, 16u, 24u)) & 0xffu) / 255.0;
+    a_threshold = compact_vertex_words[w + 11u];
+    i_origin = compact_instance_words[3u * item.x];
+    i_cell = floatBitsToUint(compact_instance_words[3u * item.x + 1u]);
+}
+#else
 layout(location = 0) in vec3 a_position;     // patch units
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_root_shape;   // root x, root z, u across, v along
@@ -23,6 +63,7 @@ layout(location = 3) in vec4 a_color;        // unorm8 modulation, linear
 layout(location = 4) in float a_threshold;   // density threshold in (0, 1]
 layout(location = 5) in vec4 i_origin;        // xyz: cell corner relative to the camera (m)
 layout(location = 6) in uvec4 i_cell;         // xy: the cell, zw: size in cells (1, 1 here)
+#endif
 
 // The varyings, packed four to a slot. lavapipe (Mesa's Vulkan on llvmpipe; seen in 22.3)
 // neither packs varyings nor drops those the fragment shader does not read, and it copies, sets
@@ -48,6 +89,9 @@ const float kThresholdEpsilon = 1.0 / 1048576.0;
 
 void main() {
     load_blocks();
+#ifdef GRASS_BLADE_COMPACT
+    load_compacted_vertex();
+#endif
     // Mirrored aperiodic tiling (eq. 6.7): mirror about the cell centre; roots stay inside.
     vec2 s = mirror_signs(i_cell.xy);
     vec3 p = a_position;
@@ -75,7 +119,9 @@ void main() {
 #endif
 #ifdef GRASS_RESPONSIVE
     if (has_map(GRASS_WIND | GRASS_INTERACTION | GRASS_BLADE_CULLING)) {
-#ifdef VULKAN
+#if defined(GRASS_BLADE_COMPACT)
+        uint vertex = g_vertex;
+#elif defined(VULKAN)
         uint vertex = uint(gl_VertexIndex);
 #else
         uint vertex = uint(gl_VertexID);

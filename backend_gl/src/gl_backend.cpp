@@ -64,7 +64,9 @@ GlBackend::GlBackend(grass_context* ctx)
       uniform_staging_(StlAllocator<unsigned char>(&ctx->host)),
       field_uniform_offsets_(StlAllocator<GLintptr>(&ctx->host)), patches_(StlAllocator<PatchGpu>(&ctx->host)),
       slices_(StlAllocator<SliceGpu>(&ctx->host)), fields_(StlAllocator<FieldGpu>(&ctx->host)),
-      maps_(StlAllocator<MapGpu>(&ctx->host)) {}
+      maps_(StlAllocator<MapGpu>(&ctx->host)), compact_command_(StlAllocator<int32_t>(&ctx->host)),
+      compact_first_command_(StlAllocator<uint32_t>(&ctx->host)), command_staging_(StlAllocator<uint32_t>(&ctx->host)),
+      compact_staging_(StlAllocator<unsigned char>(&ctx->host)) {}
 
 grass_result GlBackend::create(grass_context* ctx, const grass_gl_desc& desc, Backend** out_backend) {
     GlBackend* backend = nullptr;
@@ -186,6 +188,7 @@ GlBackend::~GlBackend() {
     }
     release_interaction_map();
     release_blade_window();
+    release_blade_compaction();
     if (interaction_program_ != 0) gl_.DeleteProgram(interaction_program_);
     if (sampler_ != 0) gl_.DeleteSamplers(1, &sampler_);
     if (slice_sampler_ != 0) gl_.DeleteSamplers(1, &slice_sampler_);

@@ -54,6 +54,7 @@ public:
     grass_result upload_blade_curves(uint32_t slot, const PatchData& patch) override;
     uint64_t dynamics_gpu_bytes() const override;
     bool runs_blade_window() const override { return true; }
+    bool compacts_blade_window() const override { return true; } // gl_blade_compaction.cpp
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
     // The host's GL context of this grass context is current (gl_current.cpp).
     grass_result check_current(const char* function) override;
@@ -250,6 +251,27 @@ private:
     GLuint window_poses_ = 0;
     uint64_t window_pose_capacity_ = 0;
     bool window_ran_ = false; // this frame's blade window pass has run
+    // gl_blade_compaction.cpp: culled blades compacted. Before a view's geometry draws, one
+    // dispatch per draw that runs the window variant (compacts) writes the blades the view
+    // draws and the draw's indirect arguments; draw_compacted draws them. Its programs per
+    // feature mask (kBladeWindowPassFeatures and kFeatureBladeCulling), made on first use; the
+    // buffers grow as a view needs and go with the window's.
+    grass_result blade_compaction_program(const char* function, uint32_t features, GLuint* out_program);
+    bool compacts(const FramePlan& plan, const TierDraw& draw) const;
+    grass_result compact_blade_window(const FramePlan& plan, const char* function);
+    void draw_compacted(const TierDraw& draw, size_t index) const;
+    uint64_t blade_compaction_bytes() const;
+    void release_blade_compaction_buffers();
+    void release_blade_compaction();
+    GLuint compaction_programs_[(kBladeWindowPassFeatures | kFeatureBladeCulling) + 1] = {};
+    GLuint compact_items_ = 0; // (instance, blade) per drawn blade, the draws' items after each other
+    uint64_t compact_item_capacity_ = 0;
+    GlStreamBuffer compact_commands_;        // DrawElementsIndirectCommand per instance of the view's compacted draws
+    GlStreamBuffer compact_blocks_;          // the CompactDraw block per compacted draw, at the uniform alignment
+    Vector<int32_t> compact_command_;        // per draw of the view: its block's index, or -1
+    Vector<uint32_t> compact_first_command_; // ... and its first indirect arguments (one per instance)
+    Vector<uint32_t> command_staging_;
+    Vector<unsigned char> compact_staging_;
 };
 
 } // namespace grass

@@ -142,6 +142,10 @@ void GlBackend::draw_blades(const FramePlan& plan) const {
         }
         bind_field_maps(fields_[draw.field_slot], draw.features);
         gl_.BindBufferRange(GL_UNIFORM_BUFFER, 1, uniforms_.name(), field_uniform_offsets_[i], sizeof(FieldUniforms));
+        if (i < compact_command_.size() && compact_command_[i] >= 0) { // the window variant: compacted blades
+            draw_compacted(draw, i);
+            continue;
+        }
         // The indices of the blades' tessellation level the core chose (first_index 0: the full blades).
         const void* first_index = reinterpret_cast<const void*>(uintptr_t(draw.first_index) * sizeof(uint32_t));
         gl_.DrawElementsInstancedBaseInstance(GL_TRIANGLES, static_cast<GLsizei>(draw.vertex_count), GL_UNSIGNED_INT,
@@ -220,7 +224,10 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
     const bool pass_pending = first.interaction.pass && !interaction_ran_;
     // So does the blade window pass (gl_blade_window.cpp), after it. A frame without a
     // window keeps no buffers of it.
-    if (first.blade_window.dispatches.empty() && window_poses_ != 0) release_blade_window_buffers();
+    if (first.blade_window.dispatches.empty() && window_poses_ != 0) {
+        release_blade_window_buffers();
+        release_blade_compaction_buffers();
+    }
     const bool window_pending = !first.blade_window.dispatches.empty() && !window_ran_;
     if (plan.draws.empty() && !pass_pending && !window_pending) return GRASS_SUCCESS;
     const bool debug = (plan.flags & GRASS_VIEW_FLAG_DEBUG_CELLS) != 0;
@@ -295,6 +302,12 @@ grass_result GlBackend::render(const char* function, uint32_t view) {
     // another kind or with another clip convention.
     if (uploaded_view_ != view || frame_target_ != target) upload_frame(target, view);
     if (reads_map && interaction_maps_[0] != 0) bind_interaction_maps();
+    compact_command_.clear();
+    if (!debug && window_poses_ != 0) { // before the view's blocks take uniform binding 2
+        const DebugGroup group(*this, "grass blade compaction");
+        const grass_result result = compact_blade_window(plan, function);
+        if (result != GRASS_SUCCESS) return result;
+    }
     // Viewport 0 alone (glViewport would set every viewport): grass draws through it.
     gl_.ViewportIndexedf(0, static_cast<GLfloat>(plan.viewport[0]), static_cast<GLfloat>(plan.viewport[1]),
                          static_cast<GLfloat>(plan.viewport[2]), static_cast<GLfloat>(plan.viewport[3]));

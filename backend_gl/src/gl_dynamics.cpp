@@ -61,7 +61,7 @@ uint64_t GlBackend::dynamics_gpu_bytes() const {
     uint64_t bytes =
         uint64_t(interaction_levels_) * interaction_resolution_ * interaction_resolution_ * kInteractionTexelBytes;
     for (const PatchGpu& p : patches_) bytes += p.curve_bytes;
-    return bytes + blade_window_bytes();
+    return bytes + blade_window_bytes() + blade_compaction_bytes();
 }
 
 void GlBackend::release_interaction_map() {

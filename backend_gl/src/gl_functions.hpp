@@ -89,6 +89,7 @@
     /* drawing */                                                                    \
     X(PFNGLDRAWARRAYSINSTANCEDBASEINSTANCEPROC, DrawArraysInstancedBaseInstance)     \
     X(PFNGLDRAWELEMENTSINSTANCEDBASEINSTANCEPROC, DrawElementsInstancedBaseInstance) \
+    X(PFNGLMULTIDRAWELEMENTSINDIRECTPROC, MultiDrawElementsIndirect)                 \
     /* responsive grass: the interaction pass (gl_dynamics.cpp) */                   \
     X(PFNGLDISPATCHCOMPUTEPROC, DispatchCompute)                                     \
     X(PFNGLMEMORYBARRIERPROC, MemoryBarrier)                                         \

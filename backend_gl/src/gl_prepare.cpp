@@ -22,9 +22,12 @@ grass_result GlBackend::prepare_variants(const char* function, const ShaderVaria
         GLuint unused = 0;
         grass_result result =
             program(static_cast<GlProgramKind>(variants[i].program), variants[i].features, function, &unused);
-        // A window variant's draws are posed by the blade window pass of its maps and bits.
+        // A window variant's draws are posed by the blade window pass of its maps and bits,
+        // and compacted by the compaction pass of its maps and bits (gl_blade_compaction.cpp).
         if (result == GRASS_SUCCESS && (variants[i].features & kFeatureBladeWindow) != 0)
             result = blade_window_program(function, variants[i].features, &unused);
+        if (result == GRASS_SUCCESS && (variants[i].features & kFeatureBladeWindow) != 0)
+            result = blade_compaction_program(function, variants[i].features, &unused);
         if (result != GRASS_SUCCESS) return result;
     }
     if (interaction_pass && interaction_program_ == 0) {

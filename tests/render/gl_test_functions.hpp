@@ -40,7 +40,12 @@ namespace grass_test {
     X(PFNGLNAMEDBUFFERDATAPROC, NamedBufferData)                         \
     X(PFNGLBINDBUFFERRANGEPROC, BindBufferRange)                         \
     X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                             \
-    X(PFNGLGETUNIFORMBLOCKINDEXPROC, GetUniformBlockIndex)
+    X(PFNGLGETUNIFORMBLOCKINDEXPROC, GetUniformBlockIndex)               \
+    X(PFNGLCREATEQUERIESPROC, CreateQueries)                             \
+    X(PFNGLDELETEQUERIESPROC, DeleteQueries)                             \
+    X(PFNGLBEGINQUERYPROC, BeginQuery)                                   \
+    X(PFNGLENDQUERYPROC, EndQuery)                                       \
+    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
 
 struct GlTestFunctions {
 #define GRASS_TEST_GL_DECLARE(type, name) type name = nullptr;

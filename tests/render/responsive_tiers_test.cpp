@@ -360,13 +360,18 @@ TEST_P(ResponsiveTiersTest, TheExtremesDrawFiniteGrassInEveryTier) {
             far[k].velocity[0] = 1e5f;
         }
         ASSERT_EQ(grass_set_colliders(ctx, far, 2), GRASS_SUCCESS) << log;
-        EXPECT_EQ(mean_difference(still, frame(time += 10.0)), 0.0) << tier.name << ": colliders 1e7 m away";
+        // Still grass's frame, up to rounding: a geometry tier with colliders runs the window
+        // variant, which GL compacts (docs/responsive.md "Culled blades compacted"): another
+        // program and one draw per instance, whose rasterisation moved one edge pixel by one
+        // level here (mean 5.2e-5). A blade the colliders moved would change many pixels.
+        const double kRounding = 1e-4;
+        EXPECT_LE(mean_difference(still, frame(time += 10.0)), kRounding) << tier.name << ": colliders 1e7 m away";
         grass_collider zero{};
         zero.shape = GRASS_COLLIDER_SPHERE;
         zero.center[0] = 1.0;
         zero.center[2] = 1.0;
         ASSERT_EQ(grass_set_colliders(ctx, &zero, 1), GRASS_SUCCESS) << log;
-        EXPECT_EQ(mean_difference(still, frame(time += 10.0)), 0.0) << tier.name << ": a collider of radius 0";
+        EXPECT_LE(mean_difference(still, frame(time += 10.0)), kRounding) << tier.name << ": a collider of radius 0";
         grass_wind_desc w = grass_default_wind_desc();
         w.speed = 1e3f;
         w.gust_strength = 4.0f;

@@ -66,8 +66,9 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     samplers, texture units 6-9 (their 2D textures: the colour, ambient, diffuse and
  *     height maps) and their samplers, active texture;
  *   - responsive grass only (a frame with wind, gravity, colliders or a field's wind map,
- *     grass.h): shader storage buffer bindings 0-7 (and the generic one), uniform buffer
- *     binding 2 (the blade window pass's), image unit 0,
+ *     grass.h): shader storage buffer bindings 0-7 (and the generic one), the draw
+ *     indirect buffer binding, uniform buffer binding 2 (the blade window pass's), image
+ *     unit 0,
  *     texture units 10-11 (their 2D textures: the interaction map's levels) and 13 (its 2D
  *     texture: a field's wind map) and their samplers. The
  *     frame's first call runs the interaction pass (a compute dispatch per map level)
@@ -75,7 +76,11 @@ GRASS_API grass_result grass_gl_create_context(uint32_t header_version, const gr
  *     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT); it runs even when nothing is drawn; then the
  *     blade window pass (docs/responsive.md "The blade window": a compute dispatch per
  *     geometry draw of view 0 with responsive grass) and
- *     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+ *     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); and in every call, before the
+ *     view's geometry draws, the compaction of its window draws (docs/responsive.md
+ *     "Culled blades compacted": a compute dispatch per draw of the view that reads the
+ *     window) and glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT),
+ *     after which each such draw is one glMultiDrawElementsIndirect;
  *   - viewport 0 (from grass_view_desc.viewport, set with glViewportIndexedf: the host's
  *     other viewports are not touched), depth test/func/mask, cull face (off: no face is
  *     culled, so the front-face winding does not matter), draw buffer 0's blend enable

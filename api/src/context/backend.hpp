@@ -112,6 +112,11 @@ public:
     // Whether it runs the blade window pass (plan/blade_window.hpp) of view 0's plan and
     // its responsive geometry draws read the window: the core plans one only then.
     virtual bool runs_blade_window() const = 0;
+    // Whether its window variant draws only the blades each view draws, compacted by a
+    // pass before the view's geometry draws into indirect draws (docs/responsive.md "Culled
+    // blades compacted"): the core then marks the frame's plans (FramePlan::
+    // compact_blade_window). A backend without it draws every blade of a window draw.
+    virtual bool compacts_blade_window() const { return false; }
     // The device memory per heap (grass_memory_stats from heap_count on); a backend that
     // cannot tell leaves them 0.
     virtual void device_memory(grass_memory_stats* stats) const { (void)stats; }

@@ -384,7 +384,8 @@ grass_result plan_view(grass_context* ctx, const char* fn, const grass_view_desc
                                  ctx->backend ? ctx->backend->render_target() : RenderTarget{},
                                  ctx->host_frame.time,
                                  index > 0 ? &ctx->views.plan(0) : nullptr,
-                                 ctx->backend && ctx->backend->runs_blade_window()};
+                                 ctx->backend && ctx->backend->runs_blade_window(),
+                                 ctx->backend && ctx->backend->compacts_blade_window()};
     GRASS_TRY(build_frame_plan(planning, view, extensions));
     GRASS_TRY(check_plan(ctx, fn, plan));
     GRASS_TRY(upload_blade_curves(ctx, plan));

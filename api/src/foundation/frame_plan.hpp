@@ -377,6 +377,9 @@ struct FramePlan {
     grass_frame_stats stats{};
     InteractionPlan interaction;  // responsive grass: the interaction pass (levels = 0: none)
     BladeWindowPlan blade_window; // responsive grass: the poses once per frame (view 0's plan)
+    // The backend compacts the culled blades of this plan's window draws (kFeatureBladeWindow)
+    // and draws the rest indirectly (Backend::compacts_blade_window).
+    bool compact_blade_window = false;
     void clear() {
         instances.clear();
         draws.clear();

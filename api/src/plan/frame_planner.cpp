@@ -739,6 +739,7 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     } else {
         plan_blade_window(&plan, in.blade_window, in.patches, in.dynamics.window, &in.dynamics.window_used);
     }
+    plan.compact_blade_window = in.blade_window && in.compact_blade_window;
     plan_gbuffer(ext, &plan); // before the others: a G-buffer view receives no shadows nor lights
     plan_shadow_receive(view, ext, camera, &plan);
     plan_motion(view, ext, camera, in.time, dynamics.wind ? &in.dynamics.wind : nullptr, dynamics.map_up, &plan);

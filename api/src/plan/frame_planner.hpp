@@ -37,6 +37,8 @@ struct FramePlanning {
     // The backend runs the blade window pass (Backend::runs_blade_window): view 0 plans the
     // window (blade_window.hpp) and the draws whose cells it holds get its variant.
     bool blade_window = false;
+    // ... and compacts the culled blades of the window draws (Backend::compacts_blade_window).
+    bool compact_blade_window = false;
 };
 
 // The validated extensions chained on grass_view_desc.next (each may be absent).
