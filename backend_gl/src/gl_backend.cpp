@@ -5,6 +5,7 @@
 #include "gl_state_guard.hpp"
 
 #include <cstddef>
+#include <cstring>
 
 namespace grass {
 
@@ -82,6 +83,16 @@ grass_result GlBackend::create(grass_context* ctx, const grass_gl_desc& desc, Ba
     return GRASS_SUCCESS;
 }
 
+bool GlBackend::has_extension(const char* name) const {
+    GLint count = 0;
+    gl_.GetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const GLubyte* extension = gl_.GetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
+        if (extension != nullptr && std::strcmp(reinterpret_cast<const char*>(extension), name) == 0) return true;
+    }
+    return false;
+}
+
 grass_result GlBackend::init(const grass_gl_desc& desc) {
     if (const char* missing = gl_.load(desc.get_proc_address, desc.get_proc_address_user_data)) {
         return ctx_->fail(GRASS_ERROR_UNSUPPORTED, GRASS_MSG_DEVICE_UNSUPPORTED,
@@ -107,6 +118,7 @@ grass_result GlBackend::init(const grass_gl_desc& desc) {
     GLint flags = 0;
     gl_.GetIntegerv(GL_CONTEXT_FLAGS, &flags);
     debug_context_ = (flags & GL_CONTEXT_FLAG_DEBUG_BIT) != 0;
+    draw_parameters_ = has_extension("GL_ARB_shader_draw_parameters");
     program_cache_.init(gl_, shader_sources_hash());
     labels_ = ctx_->debug_labels == GRASS_DEBUG_LABELS_ON ||
               (ctx_->debug_labels == GRASS_DEBUG_LABELS_AUTO && debug_context_);

@@ -54,7 +54,9 @@ public:
     grass_result upload_blade_curves(uint32_t slot, const PatchData& patch) override;
     uint64_t dynamics_gpu_bytes() const override;
     bool runs_blade_window() const override { return true; }
-    bool compacts_blade_window() const override { return true; } // gl_blade_compaction.cpp
+    // gl_blade_compaction.cpp; its vertex shader needs GL_ARB_shader_draw_parameters (gl_DrawID's
+    // base instance), which a GL 4.5 driver may lack: then the window variant draws every blade.
+    bool compacts_blade_window() const override { return draw_parameters_; }
     bool tier_gpu_ms(double out_ms[GRASS_TIER_KIND_COUNT]) override;
     // The host's GL context of this grass context is current (gl_current.cpp).
     grass_result check_current(const char* function) override;
@@ -185,6 +187,8 @@ private:
     GLint uniform_alignment_ = 256;
     GLint max_texture_size_ = 0;
     GLint max_array_layers_ = 0;
+    bool draw_parameters_ = false; // GL_ARB_shader_draw_parameters (compacts_blade_window)
+    bool has_extension(const char* name) const; // in GL_EXTENSIONS (glGetStringi)
     bool debug_context_ = false; // GL_CONTEXT_FLAG_DEBUG_BIT: glGetError after every render
     // Debug labels and object names (grass.h, grass_debug_labels), decided at creation: ON,
     // or AUTO in a debug context.

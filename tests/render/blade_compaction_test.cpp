@@ -5,18 +5,39 @@
 #include "gl_test_functions.hpp"
 #include "render_fixture.hpp"
 
+#include <cstring>
+
 namespace grass_test {
 namespace {
+
+// A GL 4.5 driver without GL_ARB_shader_draw_parameters, made by hiding it from glGetStringi.
+PFNGLGETSTRINGIPROC g_real_get_stringi = nullptr;
+const GLubyte* GLAPIENTRY get_stringi_without_draw_parameters(GLenum name, GLuint index) {
+    const GLubyte* s = g_real_get_stringi(name, index);
+    if (name == GL_EXTENSIONS && s != nullptr &&
+        std::strcmp(reinterpret_cast<const char*>(s), "GL_ARB_shader_draw_parameters") == 0)
+        return reinterpret_cast<const GLubyte*>("GL_GRASS_TEST_hidden_extension");
+    return s;
+}
+void (*hide_draw_parameters(const char* name, void (*real)(void)))(void) {
+    if (std::strcmp(name, "glGetStringi") != 0) return real;
+    g_real_get_stringi = reinterpret_cast<PFNGLGETSTRINGIPROC>(real);
+    return reinterpret_cast<void (*)(void)>(&get_stringi_without_draw_parameters);
+}
 
 class BladeCompactionTest : public RenderTest {
 protected:
     void SetUp() override {
         blade_band.kind = GRASS_LOD_TEST_DISTANCE_BAND; // field_desc's geometry tier, out to 60 m
         blade_band.end = 60.0f;
+        start(target());
+    }
+
+    static grass_host::TargetDesc target() {
         grass_host::TargetDesc t;
         t.width = 160;
         t.height = 120;
-        start(t);
+        return t;
     }
 
     // The triangles the grass draws of a frame of `v` emit, with wind (`wind`) or still.
@@ -74,6 +95,35 @@ TEST_P(BladeCompactionTest, EmitsOnlyTheBladesThatPassTheirThreshold) {
     EXPECT_EQ(counts[0][1], counts[0][0]) << "at full density every blade passes its threshold";
     EXPECT_GT(half_share, 0.44);
     EXPECT_LT(half_share, 0.56);
+}
+
+// A GL 4.5 driver without GL_ARB_shader_draw_parameters (the compacted variant's base
+// instance) draws the window variant uncompacted: every blade's triangles at half density,
+// and the same picture as the compacting driver's. Seen failing with the extension check
+// left out: the frame failed to compile the compacted program.
+TEST_P(BladeCompactionTest, ADriverWithoutDrawParametersDrawsEveryBlade) {
+    const double eye[3] = {1.0, 1.6, -0.4}, look[3] = {1.0, 0.0, 1.1};
+    grass_host::Image images[2];
+    uint64_t counts[2][2] = {}; // [compacting, hidden][still, wind]
+    for (int hidden = 0; hidden < 2; ++hidden) {
+        grass_host::TargetDesc t = target();
+        if (hidden) t.gl_proc_filter = &hide_draw_parameters;
+        start(t);
+        ASSERT_FALSE(HasFatalFailure());
+        grass_patch_desc p = grass_default_patch_desc();
+        grass_field_desc fd = field_desc(8);
+        fd.density = 0.5f;
+        make_field(fd);
+        const grass_view_desc v = view(eye, look);
+        grass_host::Image still;
+        counts[hidden][0] = triangles(v, false, &still);
+        counts[hidden][1] = triangles(v, true, &images[hidden]);
+        expect_grass(images[hidden], host->target(), 0.2, hidden ? "wind, no draw parameters" : "wind");
+        (void)p;
+    }
+    EXPECT_LT(counts[0][1], counts[0][0]) << "the compacting driver should draw fewer blades with wind";
+    EXPECT_EQ(counts[1][1], counts[1][0]) << "without the extension every blade is drawn, as still grass draws them";
+    EXPECT_LT(mean_difference(images[0], images[1]), 0.01) << "the uncompacted window variant draws another picture";
 }
 
 // GL: a query counts the triangles (Vulkan does not compact: Backend::compacts_blade_window).
