@@ -9,6 +9,7 @@
 #include "context/context.hpp"
 #include "core_fixture.hpp"
 #include "plan/mesh_plan.hpp"
+#include "test_backend.hpp"
 #include "view_helpers.hpp"
 
 #include <gtest/gtest.h>
@@ -283,6 +284,36 @@ TEST_F(MeshFieldTest, EveryBadArgumentIsNamedWithItsValue) {
     // After all of it, the context still makes the good field.
     ASSERT_EQ(grass_create_mesh_field(ctx, &good, &f), GRASS_SUCCESS) << last_message();
     EXPECT_EQ(field_count(), 1u);
+}
+
+// A backend that pretends to be GL or Vulkan (test_backend.hpp).
+template <grass_backend Kind>
+class PretendBackend final : public HollowBackend {
+public:
+    grass_backend kind() const override { return Kind; }
+};
+
+// GL and Vulkan do not draw mesh fields yet: the field is made and planned, and a warning
+// says it is not drawn; a CPU-only context (nothing draws) gets no such warning. Seen
+// failing with the warning's condition inverted (no warning on the pretended GL context).
+TEST_F(MeshFieldTest, AGpuContextIsToldMeshFieldsAreNotDrawnYet) {
+    const HostMesh m = HostMesh::strip(4.0f, 2.0f);
+    grass_field_id f{};
+    grass_mesh_field_desc d = m.desc(make_patch());
+    log.clear();
+    ASSERT_EQ(grass_create_mesh_field(ctx, &d, &f), GRASS_SUCCESS) << last_message();
+    EXPECT_TRUE(log.empty()) << last_message();
+    remake_with<PretendBackend<GRASS_BACKEND_GL>>(&ctx);
+    d.patch = make_patch();
+    log.clear();
+    ASSERT_EQ(grass_create_mesh_field(ctx, &d, &f), GRASS_SUCCESS) << last_message();
+    EXPECT_EQ(last_id(), GRASS_MSG_MESH_FIELD);
+    EXPECT_EQ(log.back().level, GRASS_LOG_WARNING);
+    EXPECT_NE(last_message().find("this backend does not draw mesh fields yet"), std::string::npos) << last_message();
+    const double eye[3] = {0, 1.5, -1}, ahead[3] = {0, 1.0, 3};
+    plan_one(test_view(eye, ahead));
+    EXPECT_FALSE(ctx->plan.mesh_draws.empty());
+    ASSERT_EQ(grass_end_frame(ctx), GRASS_SUCCESS);
 }
 
 TEST_F(MeshFieldTest, GridOnlyCallsRefuseAMeshField) {

@@ -323,8 +323,9 @@ typedef enum grass_message_id {
     GRASS_MSG_GBUFFER_TARGET = 414,
     /* 0.5: a call that applies to a grid field only (its wind map, per-blade culling) was
      * given a mesh field (grass_create_mesh_field), refused with GRASS_ERROR_INVALID_ARGUMENT.
-     * Also a warning: grass_create_mesh_field skipped degenerate triangles (zero area); the
-     * field is made without them. */
+     * Also a warning: grass_create_mesh_field skipped degenerate triangles (zero area), the
+     * field made without them; or it made a mesh field on a GL or Vulkan context, whose
+     * backend does not draw mesh fields yet (docs/mesh-fields.md). */
     GRASS_MSG_MESH_FIELD = 415,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,

@@ -100,16 +100,7 @@ grass_result validate_mesh_field_desc(grass_context* ctx, const char* fn, const 
     GRASS_TRY(check_stride(ctx, fn, "desc->normal_stride", d.normal_stride, 12));
     GRASS_TRY(check_stride(ctx, fn, "desc->uv_stride", d.uv_stride, 8));
     GRASS_TRY(check_stride(ctx, fn, "desc->vertex_density_stride", d.vertex_density_stride, 4));
-    if (d.vertex_count < 1 || d.vertex_count > kMaxMeshVertices) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                         "%s: desc->vertex_count is %llu; it must be in [1, %llu]", fn,
-                         static_cast<u64>(d.vertex_count), static_cast<u64>(kMaxMeshVertices));
-    }
-    if (d.index_count < 3 || d.index_count > kMaxMeshIndices || d.index_count % 3 != 0) {
-        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                         "%s: desc->index_count is %llu; it must be a multiple of 3 in [3, %llu]", fn,
-                         static_cast<u64>(d.index_count), static_cast<u64>(kMaxMeshIndices));
-    }
+    GRASS_TRY(check_mesh_counts(ctx, fn, d.vertex_count, d.index_count));
     for (int c = 12; c < 15; ++c) {
         if (std::fabs(d.transform[c]) > 1e12) { // NaN passes here and is refused by build_mesh_surface
             return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
@@ -242,6 +233,12 @@ grass_result create_mesh_field(grass_context* ctx, const grass_mesh_field_desc* 
     out->index = slot + 1;
     out->generation = ctx->fields.generation(slot);
     out->owner = ctx->owner;
+    if (ctx->backend->kind() != GRASS_BACKEND_NONE) { // planned, not drawn: say so, not silently
+        ctx->warn(GRASS_MSG_MESH_FIELD,
+                  "%s: the field is made and planned, but this backend does not draw mesh fields yet "
+                  "(docs/mesh-fields.md, \"Known limits\")",
+                  fn);
+    }
     return GRASS_SUCCESS;
 }
 
