@@ -20,7 +20,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-20}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(api_sequence bake_cache scene png_map gltf gpu_sequence)
+[ ${#targets[@]} -eq 0 ] && targets=(api_sequence bake_cache scene png_map gltf gpu_sequence mesh_field)
 jobs=${FUZZ_BUILD_JOBS:-$(nproc)}
 build=${FUZZ_BUILD_DIR:-build-fuzz}
 

@@ -28,6 +28,7 @@ int main(void) {
 
     CHECK(grass_get_library_version() == GRASS_HEADER_VERSION);
     CHECK(grass_default_gl_desc().type == GRASS_STRUCT_TYPE_GL_DESC);
+    CHECK(grass_default_mesh_field_desc().type == GRASS_STRUCT_TYPE_MESH_FIELD_DESC);
     CHECK(grass_default_vk_desc().type == GRASS_STRUCT_TYPE_VK_DESC);
     CHECK(grass_default_vk_host_objects_desc().type == GRASS_STRUCT_TYPE_VK_HOST_OBJECTS_DESC);
     CHECK(grass_default_vk_host_objects_desc().allocation_callbacks == NULL);

@@ -224,7 +224,8 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_VIEW_MOTION_DESC = 0x67720014,       /* 0.5: motion vectors */
     GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC = 0x67720015,       /* 0.5: the host's lights */
     GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC = 0x67720016,      /* 0.5: G-buffer passes (deferred hosts) */
-    GRASS_STRUCT_TYPE_BLADE_TESSELLATION_DESC = 0x67720017 /* 0.5: dynamic tessellation of the blades */
+    GRASS_STRUCT_TYPE_BLADE_TESSELLATION_DESC = 0x67720017, /* 0.5: dynamic tessellation of the blades */
+    GRASS_STRUCT_TYPE_MESH_FIELD_DESC = 0x67720018          /* 0.5: grass on a host's triangle mesh */
 } grass_struct_type;
 
 /* ---- Logging ---------------------------------------------------------------------- */
@@ -321,6 +322,12 @@ typedef enum grass_message_id {
      * grass writes is GL_NONE; Vulkan: the context has no grass_vk_gbuffer_target_desc, or
      * the view's attachment count is not its), refused before anything is drawn. */
     GRASS_MSG_GBUFFER_TARGET = 414,
+    /* 0.5: a call that applies to a grid field only (its wind map, per-blade culling) was
+     * given a mesh field (grass_create_mesh_field), refused with GRASS_ERROR_INVALID_ARGUMENT.
+     * Also a warning: grass_create_mesh_field skipped degenerate triangles (zero area), the
+     * field made without them; or it made a mesh field on a GL or Vulkan context, whose
+     * backend does not draw mesh fields yet (docs/mesh-fields.md). */
+    GRASS_MSG_MESH_FIELD = 415,
     /* 5xx: information */
     GRASS_MSG_CONTEXT_CREATED = 500,
     GRASS_MSG_PATCH_GENERATED = 501
@@ -831,6 +838,76 @@ GRASS_API grass_result grass_create_field(grass_context* context, const grass_fi
                                           grass_field_id* out_field);
 GRASS_API grass_result grass_destroy_field(grass_context* context, grass_field_id field);
 
+/* ---- Mesh field: grass on a host's triangle mesh (jahrmann2017 4) ------------------ */
+
+/* 0.5: where a mesh field's density comes from (docs/mesh-fields.md). */
+typedef enum grass_mesh_density_source {
+    GRASS_MESH_DENSITY_UNIFORM = 0,    /* grass_mesh_field_desc.density everywhere */
+    GRASS_MESH_DENSITY_PER_VERTEX = 1, /* vertex_density, 0..1 per vertex, interpolated, times density */
+    GRASS_MESH_DENSITY_MAP = 2         /* maps.density sampled at the mesh's UVs, times density */
+} grass_mesh_density_source;
+
+/* 0.5: how blades are seeded on the mesh (jahrmann2017 4). */
+typedef enum grass_mesh_seeding {
+    GRASS_MESH_SEEDING_SINGLE_BLADES = 0, /* uniformly at random by area */
+    GRASS_MESH_SEEDING_TUFTS = 1          /* Poisson-disk tuft centres, blades around each */
+} grass_mesh_seeding;
+
+/* 0.5: grass on any triangle mesh: a planet, a cliff, an overhang's underside, a roof. The
+ * mesh's arrays are copied at creation (the host may free them after the call). Each blade
+ * grows along the normal interpolated at its root, with the shape of a blade of `patch`.
+ * The field id works where field ids do (grass_destroy_field destroys it); the calls of
+ * grid fields only (grass_set_field_wind_map, grass_set_blade_culling) refuse it with
+ * GRASS_MSG_MESH_FIELD. A triangle of zero area is skipped (not an error). Limits, costs and
+ * the update design (deforming meshes): docs/mesh-fields.md. */
+typedef struct grass_mesh_field_desc {
+    grass_struct_type type; /* GRASS_STRUCT_TYPE_MESH_FIELD_DESC */
+    const void* next;       /* NULL */
+    grass_patch_id patch;   /* required: the blades' shape and colour */
+    float patch_scale;      /* metres per patch unit (a blade's size), 1e-4..1e4; default 0.25 */
+    /* The mesh. Strides in bytes between consecutive vertices' values, 0 = tightly packed
+     * (12 for positions and normals, 8 for UVs, 4 for vertex_density); otherwise at least that
+     * and a multiple of 4. Positions and normals in mesh space, normals not zero. */
+    const float* positions;
+    uint32_t position_stride;
+    const float* normals;
+    uint32_t normal_stride;
+    const float* uvs; /* NULL: a mesh without UVs (no design maps then) */
+    uint32_t uv_stride;
+    uint64_t vertex_count;   /* 1 .. 2^31 - 1 */
+    const uint32_t* indices; /* triangles, each below vertex_count */
+    uint64_t index_count;    /* a multiple of 3, 3 .. 2^31 - 3 */
+    /* Mesh space to world, column-major, affine and invertible (scale included: the density
+     * counts blades per square metre of the transformed surface); the translation within
+     * +-1e12 m. Default identity. */
+    double transform[16];
+    float density;                            /* blades per square metre, (0, 1e5]; default 100 */
+    grass_mesh_density_source density_source; /* default GRASS_MESH_DENSITY_UNIFORM */
+    const float* vertex_density;              /* PER_VERTEX: one value 0..1 per vertex */
+    uint32_t vertex_density_stride;
+    /* The design maps sampled at the mesh's UVs (needs uvs): density (with
+     * GRASS_MESH_DENSITY_MAP) and colour; the other roles and cell_to_map are not used by
+     * mesh fields and must be none/zero. */
+    grass_map_stack maps;
+    grass_mesh_seeding seeding; /* default single blades */
+    float tuft_min_distance;    /* TUFTS: metres between tuft centres, (0, 1e4]; default 0.2 */
+    float tuft_radius;          /* TUFTS: metres from a tuft's centre to its blades, [0, 1e4]; default 0.05 */
+    uint32_t blades_per_tuft;   /* TUFTS: 1..4096; default 8 */
+    uint32_t patch_blades;      /* blades per culling patch, 64..16384; default 1024 */
+    uint32_t seed;              /* the scatter's seed: same seed and mesh, same blades; default 1 */
+} grass_mesh_field_desc;
+
+GRASS_API grass_mesh_field_desc grass_default_mesh_field_desc(void);
+
+/* 0.5: scatters blades on the mesh and makes a field of them. Refused, naming the argument
+ * and its value and leaving the context as it was: a NULL array, counts out of range, an
+ * index not below vertex_count (named with its position), a NaN or infinite position,
+ * normal, UV or vertex density, a zero normal, a transform that is not affine or not
+ * invertible, a mesh whose triangles are all degenerate, more than 2^26 blades, maps that do
+ * not fit. Between grass_begin_frame and grass_end_frame: GRASS_ERROR_INVALID_STATE. */
+GRASS_API grass_result grass_create_mesh_field(grass_context* context, const grass_mesh_field_desc* desc,
+                                               grass_field_id* out_field);
+
 /* ---- Frames ----------------------------------------------------------------------- */
 
 typedef enum grass_view_flags {
@@ -1301,7 +1378,7 @@ typedef struct grass_frame_stats {
     uint64_t fields_drawn;
     uint64_t nodes_visited;    /* quadtree nodes the traversal reached */
     uint64_t cells_drawn;      /* geometry-tier patch instances (cells) */
-    uint64_t blades_submitted; /* cells_drawn x blades per patch */
+    uint64_t blades_submitted; /* cells_drawn x blades per patch; plus the mesh fields' planned blades */
     uint64_t blades_drawn;     /* blades the geometry tier draws, from the density and the
                                     tier transitions at each cell's center: exact without a map
                                     and away from transition zones, an estimate elsewhere */
@@ -1624,7 +1701,8 @@ GRASS_API grass_blade_tessellation_desc grass_default_blade_tessellation_desc(vo
 GRASS_API grass_blade_tessellation_desc grass_quality_blade_tessellation(grass_quality_level level);
 
 /* Sets the dynamic tessellation of `field`'s geometry tiers and all its grass types, from
- * the next grass_begin_frame on; NULL turns it off. A refusal leaves the earlier one. */
+ * the next grass_begin_frame on; NULL turns it off. A refusal leaves the earlier one. A mesh
+ * field (grass_create_mesh_field) is refused with GRASS_MSG_MESH_FIELD. */
 GRASS_API grass_result grass_set_blade_tessellation(grass_context* context, grass_field_id field,
                                                     const grass_blade_tessellation_desc* tessellation);
 

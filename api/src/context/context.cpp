@@ -204,7 +204,8 @@ grass_result prepare_window_variants(grass_context* ctx, const char* function, c
 
 grass_result prepare_field_variants(grass_context* ctx, const char* function, uint32_t slot) {
     const Field* field = ctx->fields.get(slot);
-    if (ctx->prepared_features == 0 || field == nullptr) return GRASS_SUCCESS;
+    // A mesh field has no grid variants to make (docs/mesh-fields.md).
+    if (ctx->prepared_features == 0 || field == nullptr || field->mesh) return GRASS_SUCCESS;
     uint32_t tier_kinds = 0;
     for (uint32_t t = 0; t < field->lod.tier_count; ++t) tier_kinds |= 1u << field->lod.tiers[t].kind;
     const uint32_t declared = ctx->prepared_features;

@@ -37,6 +37,17 @@ grass_result check_field_id(grass_context* ctx, const char* function, const char
     return GRASS_SUCCESS;
 }
 
+grass_result check_grid_field_id(grass_context* ctx, const char* function, const char* name, grass_field_id id) {
+    GRASS_TRY(check_field_id(ctx, function, name, id));
+    if (ctx->fields.get(id.index - 1)->mesh) {
+        return ctx->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_MESH_FIELD,
+                         "%s: %s (index %u) is a mesh field (grass_create_mesh_field); this call applies to fields "
+                         "made by grass_create_field",
+                         function, name, id.index);
+    }
+    return GRASS_SUCCESS;
+}
+
 grass_result check_map_id(grass_context* ctx, const char* function, const char* name, grass_map_id id) {
     GRASS_TRY(check_id(ctx, function, name, ctx->maps, id.index, id.generation, id.owner));
     if (ctx->maps.get(id.index - 1)->field_private) {

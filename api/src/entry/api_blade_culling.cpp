@@ -19,7 +19,7 @@ GRASS_API grass_result grass_set_blade_culling(grass_context* context, grass_fie
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_set_blade_culling", [&] {
         const char* fn = "grass_set_blade_culling";
-        GRASS_TRY(grass::check_field_id(context, fn, "field", field));
+        GRASS_TRY(grass::check_grid_field_id(context, fn, "field", field));
         const grass_blade_culling_desc desc = culling ? *culling : grass::default_blade_culling_desc();
         if (culling) GRASS_TRY(GRASS_CHECK_DESC(context, fn, culling, GRASS_STRUCT_TYPE_BLADE_CULLING_DESC));
         grass::Field* host_field = context->fields.get(field.index - 1);

@@ -23,7 +23,7 @@ GRASS_API grass_result grass_set_blade_tessellation(grass_context* context, gras
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_set_blade_tessellation", [&] {
         const char* fn = "grass_set_blade_tessellation";
-        GRASS_TRY(grass::check_field_id(context, fn, "field", field));
+        GRASS_TRY(grass::check_grid_field_id(context, fn, "field", field));
         if (tessellation)
             GRASS_TRY(GRASS_CHECK_DESC(context, fn, tessellation, GRASS_STRUCT_TYPE_BLADE_TESSELLATION_DESC));
         grass::BladeTessellation resolved;

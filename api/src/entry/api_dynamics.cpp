@@ -95,7 +95,7 @@ GRASS_API grass_result grass_set_field_wind_map(grass_context* context, grass_fi
     if (!context) return GRASS_ERROR_INVALID_ARGUMENT;
     return guarded(context, "grass_set_field_wind_map", [&] {
         const char* fn = "grass_set_field_wind_map";
-        GRASS_TRY(grass::check_field_id(context, fn, "field", field));
+        GRASS_TRY(grass::check_grid_field_id(context, fn, "field", field));
         if (context->in_frame) {
             return context->fail(GRASS_ERROR_INVALID_STATE, GRASS_MSG_FRAME_ALREADY_BEGUN,
                                  "%s: cannot set a wind map between grass_begin_frame and grass_end_frame", fn);

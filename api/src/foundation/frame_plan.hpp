@@ -332,10 +332,18 @@ struct GBufferUniforms {
 };
 static_assert(sizeof(GBufferUniforms) == 16, "std140 GrassGBuffer block");
 
+// The blades one patch of a mesh field draws this frame (plan/mesh_plan.hpp): the first
+// `blade_count` of the patch's blades, its prefix (a prefix is spread over the whole patch).
+struct MeshPatchDraw {
+    uint32_t field_slot;
+    uint32_t first_blade; // into the field's blades (MeshField)
+    uint32_t blade_count;
+};
+
 struct FramePlan {
     explicit FramePlan(HostAllocator* host)
-        : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)), interaction(host),
-          blade_window(host) {}
+        : instances(StlAllocator<TierInstance>(host)), draws(StlAllocator<TierDraw>(host)),
+          mesh_draws(StlAllocator<MeshPatchDraw>(host)), interaction(host), blade_window(host) {}
     FrameUniforms frame{};
     double origin[3] = {0, 0, 0}; // world position every position of the plan is relative to (the camera)
     bool stereo = false;          // a stereo frame: `eyes` follows `frame` in the Frame block (RenderTarget::views 2)
@@ -372,8 +380,9 @@ struct FramePlan {
                                                     kNoGBufferOutput};
     uint32_t gbuffer_mask[kGBufferOutputs] = {0, 0, 0, 0};
     GBufferUniforms gbuffer_uniforms{};
-    Vector<TierInstance> instances; // geometry instances of a draw are ordered front to back
-    Vector<TierDraw> draws;         // per field, per tier that draws something
+    Vector<TierInstance> instances;   // geometry instances of a draw are ordered front to back
+    Vector<TierDraw> draws;           // per field, per tier that draws something
+    Vector<MeshPatchDraw> mesh_draws; // mesh fields: per patch in view, field after field
     grass_frame_stats stats{};
     InteractionPlan interaction;  // responsive grass: the interaction pass (levels = 0: none)
     BladeWindowPlan blade_window; // responsive grass: the poses once per frame (view 0's plan)
@@ -383,6 +392,7 @@ struct FramePlan {
     void clear() {
         instances.clear();
         draws.clear();
+        mesh_draws.clear();
         interaction.clear();
         blade_window.clear();
         stats = grass_frame_stats{};

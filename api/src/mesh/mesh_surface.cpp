@@ -81,21 +81,25 @@ grass_result check_counts(Log* log, const char* fn, const MeshSurfaceDesc& d) {
     GRASS_TRY(check_not_null(log, fn, "desc->positions", d.positions));
     GRASS_TRY(check_not_null(log, fn, "desc->normals", d.normals));
     GRASS_TRY(check_not_null(log, fn, "desc->indices", d.indices));
-    if (d.vertex_count < 1 || d.vertex_count > kMaxMeshVertices) {
-        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                         "%s: desc->vertex_count is %llu; it must be in [1, %llu]", fn,
-                         static_cast<u64>(d.vertex_count), static_cast<u64>(kMaxMeshVertices));
-    }
-    if (d.index_count < 3 || d.index_count > kMaxMeshIndices || d.index_count % 3 != 0) {
-        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
-                         "%s: desc->index_count is %llu; it must be a multiple of 3 in [3, %llu] (32-bit indices, "
-                         "fewer than 2^31)",
-                         fn, static_cast<u64>(d.index_count), static_cast<u64>(kMaxMeshIndices));
-    }
-    return GRASS_SUCCESS;
+    return check_mesh_counts(log, fn, d.vertex_count, d.index_count);
 }
 
 } // namespace
+
+grass_result check_mesh_counts(Log* log, const char* fn, uint64_t vertex_count, uint64_t index_count) {
+    if (vertex_count < 1 || vertex_count > kMaxMeshVertices) {
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: desc->vertex_count is %llu; it must be in [1, %llu]", fn, static_cast<u64>(vertex_count),
+                         static_cast<u64>(kMaxMeshVertices));
+    }
+    if (index_count < 3 || index_count > kMaxMeshIndices || index_count % 3 != 0) {
+        return log->fail(GRASS_ERROR_INVALID_ARGUMENT, GRASS_MSG_OUT_OF_RANGE,
+                         "%s: desc->index_count is %llu; it must be a multiple of 3 in [3, %llu] (32-bit indices, "
+                         "fewer than 2^31)",
+                         fn, static_cast<u64>(index_count), static_cast<u64>(kMaxMeshIndices));
+    }
+    return GRASS_SUCCESS;
+}
 
 uint32_t MeshSurface::triangle_at_area(double a) const {
     const auto it = std::upper_bound(cumulative_area_.begin(), cumulative_area_.end(), a);

@@ -61,6 +61,10 @@ private:
     uint32_t degenerate_count_ = 0;
 };
 
+// desc->vertex_count in [1, kMaxMeshVertices] and desc->index_count a multiple of 3 in
+// [3, kMaxMeshIndices], refused naming them (checked before any array is read).
+grass_result check_mesh_counts(Log* log, const char* fn, uint64_t vertex_count, uint64_t index_count);
+
 // Validates `desc` and fills `out` (built with the context's allocator, empty). Refused, with
 // a message naming the argument and the value and `out` left as it was: a NULL array, a count
 // of 0 or above the limits (checked before any array is read), an index count not a multiple

@@ -8,6 +8,7 @@
 #include "dynamics/wind_map.hpp"
 #include "foundation/allocator.hpp"
 #include "foundation/shader_interface.hpp"
+#include "mesh/mesh_field.hpp"
 #include "patch/patch_data.hpp"
 #include "plan/blade_culling.hpp"
 #include "plan/blade_tessellation.hpp"
@@ -46,6 +47,12 @@ struct Patch {
 };
 
 struct Field {
+    Field() = default;
+    ~Field() {
+        if (mesh) mesh_host->destroy(mesh);
+    }
+    Field(const Field&) = delete;
+    Field& operator=(const Field&) = delete;
     grass_field_desc desc{}; // pointers in it are cleared; maps are referenced below
     uint32_t patch_slot = 0;
     FieldMaps maps;                             // map slot per role (kNoMap: none) and the feature mask
@@ -67,6 +74,10 @@ struct Field {
     FieldWindMap wind_map;                // responsive grass: the host's wind map (grass_set_field_wind_map)
     BladeCulling culling;                 // per-blade culling of its geometry tiers (grass_set_blade_culling)
     BladeTessellation tessellation;       // dynamic tessellation of its geometry tiers (grass_set_blade_tessellation)
+    // A mesh field (grass_create_mesh_field): its blades, owned; nullptr for a grid field,
+    // whose desc, lod, tree and the grid's members above are then unused.
+    MeshField* mesh = nullptr;
+    HostAllocator* mesh_host = nullptr;
 };
 
 } // namespace grass

@@ -8,6 +8,7 @@
 #include "plan/gbuffer_plan.hpp"
 #include "plan/lights_plan.hpp"
 #include "plan/lod_setup.hpp"
+#include "plan/mesh_plan.hpp"
 #include "plan/motion_plan.hpp"
 #include "plan/tier_transitions.hpp"
 #include "plan/view_culling.hpp"
@@ -61,31 +62,6 @@ FieldFrame field_frame(const Field& field, const double camera[3], const double 
     f.cell_size = cs;
     return f;
 }
-
-// The frusta a node must meet one of: the camera's, or a stereo frame's two eyes', each
-// with the eye's position relative to the plan's origin (positions are tested relative to it).
-struct Frusta {
-    const ViewCulling* culling[2];
-    double eye[2][3];
-    uint32_t count;
-    bool sphere_may_be_visible(const double center[3], double radius) const {
-        for (uint32_t k = 0; k < count; ++k) {
-            const double c[3] = {center[0] - eye[k][0], center[1] - eye[k][1], center[2] - eye[k][2]};
-            if (culling[k]->sphere_may_be_visible(c, radius)) return true;
-        }
-        return false;
-    }
-    bool box_may_be_visible(const double corners[8][3]) const {
-        for (uint32_t k = 0; k < count; ++k) {
-            double c[8][3];
-            for (int i = 0; i < 8; ++i) {
-                for (int a = 0; a < 3; ++a) c[i][a] = corners[i][a] - eye[k][a];
-            }
-            if (culling[k]->box_may_be_visible(c)) return true;
-        }
-        return false;
-    }
-};
 
 // A point in field space (cells) relative to the camera (metres).
 void to_camera(const FieldFrame& f, double x, double y, double z, double out[3]) {
@@ -726,6 +702,11 @@ grass_result build_frame_plan(const FramePlanning& in, const grass_view_desc& vi
     for (uint32_t slot = 0; slot < in.fields.capacity(); ++slot) {
         const Field* field = in.fields.get(slot);
         if (!field) continue;
+        if (field->mesh) { // a mesh field: its patches (mesh_plan.hpp)
+            plan.stats.blades_submitted +=
+                plan_mesh_field(slot, *field->mesh, camera, lod_origin, frusta, &plan.mesh_draws);
+            continue;
+        }
         FieldPlanner planner(in, slot, *field, *in.patches.get(field->patch_slot), camera, lod_origin, frusta, dynamics,
                              view.flags, plan.depth_pass, screen);
         const grass_result r = planner.run();

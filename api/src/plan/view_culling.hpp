@@ -13,6 +13,8 @@
 
 #include <grass/grass.h>
 
+#include <cstdint>
+
 namespace grass {
 
 class ViewCulling {
@@ -49,6 +51,31 @@ private:
     bool has_sphere_ = false;
     double sphere_center_[3] = {0, 0, 0};
     double sphere_radius_ = 0.0;
+};
+
+// The frusta a node must meet one of: the camera's, or a stereo frame's two eyes', each
+// with the eye's position relative to the plan's origin (positions are tested relative to it).
+struct Frusta {
+    const ViewCulling* culling[2];
+    double eye[2][3];
+    uint32_t count;
+    bool sphere_may_be_visible(const double center[3], double radius) const {
+        for (uint32_t k = 0; k < count; ++k) {
+            const double c[3] = {center[0] - eye[k][0], center[1] - eye[k][1], center[2] - eye[k][2]};
+            if (culling[k]->sphere_may_be_visible(c, radius)) return true;
+        }
+        return false;
+    }
+    bool box_may_be_visible(const double corners[8][3]) const {
+        for (uint32_t k = 0; k < count; ++k) {
+            double c[8][3];
+            for (int i = 0; i < 8; ++i) {
+                for (int a = 0; a < 3; ++a) c[i][a] = corners[i][a] - eye[k][a];
+            }
+            if (culling[k]->box_may_be_visible(c)) return true;
+        }
+        return false;
+    }
 };
 
 } // namespace grass

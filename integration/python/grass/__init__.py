@@ -183,6 +183,25 @@ class Map(_Object):
         del keep
 
 
+def _flat_array(where, name, value, n, ctype):
+    """A flat ctypes array of a sequence of numbers, or of n-tuples; its length a multiple of n."""
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__"):
+        _checks.fail(where, name, value, f"it must be a sequence of numbers, {n} a vertex")
+    flat = []
+    for i, item in enumerate(value):
+        if hasattr(item, "__len__") and not isinstance(item, (str, bytes)):
+            flat.extend(item)
+        else:
+            flat.append(item)
+    if not flat or len(flat) % n != 0:
+        _checks.fail(where, name, f"{len(flat)} values", f"it must hold a positive multiple of {n} values")
+    try:
+        return (ctype * len(flat))(*flat)
+    except (TypeError, OverflowError) as e:
+        raise ArgumentError(f"{where}: {name} holds a value that is not a {ctype.__name__}: {e}",
+                            _ffi.ENUMS["grass_message_id"]["GRASS_MSG_OUT_OF_RANGE"]) from None
+
+
 def _map_kw(where, kw):
     for name in kw:
         if name not in ("width", "height", "format", "row_pitch"):
@@ -458,6 +477,50 @@ class Context:
         field = Field(self, out)
         field.keep = keep  # lod test callbacks are called at every grass_begin_frame
         return field
+
+    def create_mesh_field(self, patch, positions, normals, indices, uvs=None, vertex_density=None, maps=None,
+                          desc=None, **fields):
+        """A mesh field (grass_create_mesh_field): grass on a triangle mesh. `positions` and
+        `normals` hold 3 numbers a vertex, `uvs` 2, `vertex_density` 1 (each a flat sequence or
+        a sequence of tuples), `indices` 3 a triangle; `maps` a dict with density and/or color
+        (Map objects); `desc` a grass_mesh_field_desc to start from and `fields` set on it
+        (density, density_source, seeding, transform, ...). Arrays are copied by the call."""
+        where = "Context.create_mesh_field"
+        self._open(where)
+        desc = (_copy(where, "desc", desc, grass_mesh_field_desc) if desc is not None  # noqa: F405
+                else lib.grass_default_mesh_field_desc())
+        desc.patch = self._own(where, "patch", patch, Patch, grass_patch_id)  # noqa: F405
+        keep = []
+        vertex_count = None
+        for name, value, n in (("positions", positions, 3), ("normals", normals, 3), ("uvs", uvs, 2),
+                               ("vertex_density", vertex_density, 1)):
+            if value is None:
+                continue
+            array = _flat_array(where, name, value, n, ctypes.c_float)
+            count = len(array) // n
+            if vertex_count is not None and count != vertex_count:
+                _checks.fail(where, name, f"{count} vertices", f"it must hold {vertex_count} vertices, as positions")
+            vertex_count = count
+            keep.append(array)
+            setattr(desc, name, ctypes.cast(array, ctypes.POINTER(ctypes.c_float)))
+        index_array = _flat_array(where, "indices", indices, 3, ctypes.c_uint32)
+        keep.append(index_array)
+        desc.indices = ctypes.cast(index_array, ctypes.POINTER(ctypes.c_uint32))
+        desc.vertex_count, desc.index_count = vertex_count, len(index_array)
+        if vertex_density is not None and "density_source" not in fields:
+            desc.density_source = GRASS_MESH_DENSITY_PER_VERTEX  # noqa: F405
+        if maps is not None:
+            if not isinstance(maps, dict) or not set(maps) <= {"density", "color"}:
+                _checks.fail(where, "maps", maps, "it must be a dict with density and/or color")
+            for role, value in maps.items():
+                setattr(desc.maps, role, self._own(where, f"maps[{role!r}]", value, Map, grass_map_id))  # noqa
+            if "density" in maps and "density_source" not in fields:
+                desc.density_source = GRASS_MESH_DENSITY_MAP  # noqa: F405
+        _checks.fill(where, desc, fields)
+        out = grass_field_id()  # noqa: F405
+        self._call(where, lib.grass_create_mesh_field, ctypes.byref(desc), ctypes.byref(out),
+                   undo=lambda h: lib.grass_destroy_field(h, out))
+        return Field(self, out)
 
     def apply_quality(self, quality, cell_size, patch=None):
         """grass_apply_quality: returns (patch desc, tiers, lod tests) for fields of

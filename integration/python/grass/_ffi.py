@@ -67,6 +67,7 @@ ENUMS = {
         "GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC": 0x67720015,
         "GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC": 0x67720016,
         "GRASS_STRUCT_TYPE_BLADE_TESSELLATION_DESC": 0x67720017,
+        "GRASS_STRUCT_TYPE_MESH_FIELD_DESC": 0x67720018,
     },
     "grass_log_level": {"GRASS_LOG_ERROR": 0, "GRASS_LOG_WARNING": 1, "GRASS_LOG_INFO": 2},
     "grass_message_id": {
@@ -87,13 +88,17 @@ ENUMS = {
         "GRASS_MSG_DEBUG_LABELS_UNAVAILABLE": 410,
         "GRASS_MSG_FRAMES_IN_FLIGHT": 411,
         "GRASS_MSG_VELOCITY_TARGET": 412, "GRASS_MSG_COLLIDER_TILE_CAP": 413,
-        "GRASS_MSG_GBUFFER_TARGET": 414,
+        "GRASS_MSG_GBUFFER_TARGET": 414, "GRASS_MSG_MESH_FIELD": 415,
         "GRASS_MSG_CONTEXT_CREATED": 500, "GRASS_MSG_PATCH_GENERATED": 501,
     },
     "grass_depth_mode": {"GRASS_DEPTH_LESS": 0, "GRASS_DEPTH_GREATER": 1},
     "grass_debug_labels": {"GRASS_DEBUG_LABELS_AUTO": 0, "GRASS_DEBUG_LABELS_OFF": 1, "GRASS_DEBUG_LABELS_ON": 2},
     "grass_backend": {"GRASS_BACKEND_NONE": 0, "GRASS_BACKEND_GL": 1, "GRASS_BACKEND_VULKAN": 2},
     "grass_threshold_mode": {"GRASS_THRESHOLD_UNIFORM": 0, "GRASS_THRESHOLD_CLUSTERED": 1},
+    "grass_mesh_density_source": {
+        "GRASS_MESH_DENSITY_UNIFORM": 0, "GRASS_MESH_DENSITY_PER_VERTEX": 1, "GRASS_MESH_DENSITY_MAP": 2,
+    },
+    "grass_mesh_seeding": {"GRASS_MESH_SEEDING_SINGLE_BLADES": 0, "GRASS_MESH_SEEDING_TUFTS": 1},
     "grass_map_format": {
         "GRASS_MAP_FORMAT_R8_UNORM": 1, "GRASS_MAP_FORMAT_R16_UNORM": 2, "GRASS_MAP_FORMAT_R32_FLOAT": 3,
         "GRASS_MAP_FORMAT_RGBA8_UNORM": 4, "GRASS_MAP_FORMAT_RGBA16_UNORM": 5, "GRASS_MAP_FORMAT_RGBA32_FLOAT": 6,
@@ -259,6 +264,17 @@ class grass_field_desc(Structure):
                 ("mirror_seed", c_uint32), ("tiers", POINTER(grass_tier_desc)), ("tier_count", c_uint32),
                 ("lod_tests", POINTER(grass_lod_test)), ("lod_test_count", c_uint32),
                 ("transition_window", c_float), ("maps", grass_map_stack)]
+
+
+class grass_mesh_field_desc(Structure):
+    _fields_ = [("type", grass_enum), ("next", c_void_p), ("patch", grass_patch_id), ("patch_scale", c_float),
+                ("positions", POINTER(c_float)), ("position_stride", c_uint32), ("normals", POINTER(c_float)),
+                ("normal_stride", c_uint32), ("uvs", POINTER(c_float)), ("uv_stride", c_uint32),
+                ("vertex_count", c_uint64), ("indices", POINTER(c_uint32)), ("index_count", c_uint64),
+                ("transform", c_double * 16), ("density", c_float), ("density_source", grass_enum),
+                ("vertex_density", POINTER(c_float)), ("vertex_density_stride", c_uint32), ("maps", grass_map_stack),
+                ("seeding", grass_enum), ("tuft_min_distance", c_float), ("tuft_radius", c_float),
+                ("blades_per_tuft", c_uint32), ("patch_blades", c_uint32), ("seed", c_uint32)]
 
 
 class grass_grass_type_desc(Structure):
@@ -483,6 +499,8 @@ FUNCTIONS = {
     "grass_default_field_desc": (grass_field_desc, []),
     "grass_default_grass_type_desc": (grass_grass_type_desc, []),
     "grass_create_field": (grass_enum, [_ctx, _P(grass_field_desc), _P(grass_field_id)]),
+    "grass_default_mesh_field_desc": (grass_mesh_field_desc, []),
+    "grass_create_mesh_field": (grass_enum, [_ctx, _P(grass_mesh_field_desc), _P(grass_field_id)]),
     "grass_destroy_field": (grass_enum, [_ctx, grass_field_id]),
     "grass_default_view_desc": (grass_view_desc, []),
     "grass_default_stereo_view_desc": (grass_stereo_view_desc, []),

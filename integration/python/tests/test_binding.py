@@ -215,3 +215,32 @@ def test_responsive_grass_through_the_raw_binding():
             ctx.call(lib.grass_set_colliders, colliders, 2)
         assert e.value.message_id == grass.MessageId.GRASS_MSG_NOT_FINITE
         assert "colliders[1].velocity[1]" in e.value.message
+
+
+def test_a_mesh_field_plans_its_patches_and_names_bad_arguments():
+    # Seen failing with the binding's vertex-count check left out: 3 normals beside 4
+    # positions passed as a 3-vertex mesh (DID NOT RAISE).
+    with grass.Context() as ctx:
+        patch = ctx.create_patch()
+        # A 20 m x 2 m strip facing up along +z, in front of the overhead camera.
+        positions = [(7.0, 0.0, 0.0), (9.0, 0.0, 0.0), (9.0, 0.0, 20.0), (7.0, 0.0, 20.0)]
+        field = ctx.create_mesh_field(patch, positions=positions, normals=[(0, 1, 0)] * 4,
+                                      indices=[0, 2, 1, 0, 3, 2], density=64.0, patch_blades=64)
+        with ctx.frame(overhead_view()):
+            pass
+        assert ctx.frame_stats().blades_submitted > 0  # the mesh field's planned blades
+        with pytest.raises(grass.GrassError) as e:
+            ctx.create_mesh_field(patch, positions=positions, normals=[(0, 1, 0)] * 4, indices=[0, 2, 4])
+        assert "desc->indices[2] is 4" in str(e.value), str(e.value)
+        with pytest.raises(grass.GrassError) as e:
+            ctx.create_mesh_field(patch, positions=positions, normals=[(0, 1, 0)] * 3, indices=[0, 2, 1])
+        assert "normals" in str(e.value) and "as positions" in str(e.value), str(e.value)
+        with pytest.raises(grass.GrassError) as e:
+            ctx.create_mesh_field(patch, positions=positions, normals=[(0, 1, 0)] * 4, indices=[0, 2, 1],
+                                  density=-1.0)
+        assert "desc->density is -1" in str(e.value), str(e.value)
+        with pytest.raises(grass.GrassError) as e:
+            ctx.call(grass.lib.grass_set_field_wind_map, field.id, None)  # grid fields only
+        assert e.value.message_id == grass.MessageId.GRASS_MSG_MESH_FIELD
+        field.destroy()
+        patch.destroy()
