@@ -36,18 +36,21 @@ float horizontal_slice_alpha(float alpha, float lod) {
     return min(alpha * s, 1.0);
 }
 
-// The pixel the dither is read at, the same on both backends: GL's window y runs up the
-// picture, Vulkan's down, where a host drawing the same picture flips its projection's y, and
-// its gl_FragCoord.y is then the viewport's height minus GL's (a 4 x 4 dither read there
-// differed between the backends). Told apart by how the fragment's NDC y changes from row to
-// row (2 / height, negative when flipped). `position`: the fragment's point, camera-relative
-// world (metres). Call it where derivatives are defined: before any discard, outside loops.
+// The pixel the dither is read at, the same on both backends: GL's window rows run up the
+// picture from its bottom, Vulkan's down from its top (a host drawing the same picture there
+// flips its projection's y), so a dither read at gl_FragCoord differed between the backends.
+// Vulkan counts its rows from the bottom as GL does: the viewport's height (2 / the fragment's
+// NDC y step from row to row) minus gl_FragCoord.y. `position`: the fragment's point,
+// camera-relative world (metres). Call it where derivatives are defined: before any discard,
+// outside loops.
 vec2 g_pixel = vec2(0.0);
 void note_pixel(vec3 position) {
-    vec4 clip = GRASS_VIEW_PROJECTION * vec4(position, 1.0);
-    float per_row = dFdy(clip.y / clip.w);
     g_pixel = gl_FragCoord.xy;
-    if (per_row < 0.0) g_pixel.y = floor(2.0 / -per_row + 0.5) - gl_FragCoord.y;
+#ifdef VULKAN
+    vec4 clip = GRASS_VIEW_PROJECTION * vec4(position, 1.0);
+    float per_row = abs(dFdy(clip.y / clip.w));
+    if (per_row > 0.0) g_pixel.y = floor(2.0 / per_row + 0.5) - gl_FragCoord.y;
+#endif
 }
 
 // The 4 x 4 Bayer matrix at the pixel, (m + 1/2) / 16 with m's bits, high to low, x0^y0, y0,
