@@ -8,6 +8,7 @@
 // image, minus the mean of the two rows either side of it; its RMS over the rows. The
 // blades everywhere have some (their grain), with two patch and mirror seeds.
 #include "render_fixture.hpp"
+#include "row_green.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -52,11 +53,7 @@ protected:
 
 // RMS of each row's mean green level minus the mean of its four neighbours (two either side).
 double row_to_row(const grass_host::Image& image) {
-    std::vector<double> mean(image.height, 0.0);
-    for (uint32_t y = 0; y < image.height; ++y) {
-        for (uint32_t x = image.width / 4; x < 3 * image.width / 4; ++x) mean[y] += image.pixel(x, y)[1];
-        mean[y] /= image.width / 2;
-    }
+    const std::vector<double> mean = middle_row_green(image);
     double sum = 0.0;
     uint32_t rows = 0;
     for (uint32_t y = 2; y + 2 < image.height; ++y) {
