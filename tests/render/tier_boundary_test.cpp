@@ -14,7 +14,8 @@
 // 1.8 (GL) and 5.6 levels (Vulkan, whose samples lie elsewhere) apart, where the slices,
 // which have no grain, draw a step to within a few tenths. DEFAULT is held within 2.5 levels
 // of the truth. Measured: GL +0.51 (4 samples) and +0.14 (1) against the blades' -0.36 and
-// +1.44; Vulkan +0.46 and +0.33 against +4.67 and -0.90. Seen failing with the texel tiers
+// +1.44; Vulkan +0.46 and +0.33 against +4.67 and -0.90 (with the dither mirrored, before
+// note_pixel counted Vulkan's rows from the bottom). Seen failing with the texel tiers
 // drawing their shares as before (the core marking every tier as geometry): GL +5.27 and
 // +5.19, 4.7 and 4.6 levels from the truth.
 #include "render_fixture.hpp"
