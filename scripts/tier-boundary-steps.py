@@ -24,7 +24,8 @@ debug view's tier colours per band of rows (r geometry, y volume, b image).
 
 Usage: scripts/tier-boundary-steps.py --scene FILE --camera X,Y,Z --target X,Y,Z
          [--backend gl|vk] [--samples 1|4] [--size WxH] [--fov DEG] [--far M]
-         [--render build/samples/grass_render/grass-render] [--out DIR] [--no-truth]
+         [--render build/samples/grass_render/grass-render] [--out DIR] [--no-truth] [--no-ground]
+         [--reuse-truth] [--edge TEXT]
 """
 import argparse
 import json
@@ -71,7 +72,12 @@ def write_scene(scene, src, seed=None, mirror_seed=None, blades=False, directory
     return out
 
 
-def render(args, scene_file, out, camera, target, fov, size, extra=()):
+def render(args, scene_file, out, camera, target, fov, size, extra=(), reuse=False):
+    if reuse and Path(out).exists():  # --reuse-truth: a truth rendered by an earlier run into --out
+        w, h, c, rows = read_png(Path(out))
+        return np.frombuffer(b"".join(rows), dtype=np.uint8).reshape(h, w, c)[:, :, :3].astype(float)
+    if args.no_ground:
+        extra = (*extra, "--no-ground")
     cmd = [args.render, "--scene", str(scene_file), "--backend", args.backend, "--samples", str(args.samples),
            "--size", f"{size[0]}x{size[1]}", "--camera", ",".join(map(str, camera)), "--target",
            ",".join(map(str, target)), "--fov", str(fov), "--far", str(args.far), "--output", str(out), *extra]
@@ -159,6 +165,10 @@ def main():
     p.add_argument("--render", default="build/samples/grass_render/grass-render")
     p.add_argument("--out", default=None, help="keep every render in DIR")
     p.add_argument("--no-truth", action="store_true", help="DEFAULT only (no blades everywhere)")
+    p.add_argument("--edge", default="", help="only the zone edges whose label holds this text (e.g. 'image')")
+    p.add_argument("--no-ground", action="store_true", help="no ground under the grass (grass-render --no-ground)")
+    p.add_argument("--reuse-truth", action="store_true",
+                   help="read the blades' windows from --out where an earlier run left them")
     args = p.parse_args()
     camera = [float(x) for x in args.camera.split(",")]
     target = [float(x) for x in args.target.split(",")]
@@ -169,7 +179,7 @@ def main():
         sys.exit("tier-boundary-steps: the scene names its own tiers; only the default lod setup is known")
     out = Path(args.out) if args.out else Path(tempfile.mkdtemp(prefix="tier-steps-"))
     out.mkdir(parents=True, exist_ok=True)
-    tag = f"{Path(args.scene).stem}-{args.backend}-x{args.samples}"
+    tag = f"{Path(args.scene).stem}-{args.backend}-x{args.samples}{'-noground' if args.no_ground else ''}"
     base = write_scene(scene, args.scene, directory=out)
     full = render(args, base, out / f"{tag}.png", camera, target, args.fov, (width, height))
     tiers = render(args, base, out / f"{tag}-tiers.png", camera, target, args.fov, (width, height),
@@ -194,7 +204,7 @@ def main():
     print(f"  {'edge':30s} {'m':>5s} {'row':>4s} | {'DEFAULT step kink offset rows':30s} | "
           f"{'truth step kink rows':22s} | spread step kink | err/spread")
     for dist, label in zone_edges(cell):
-        if dist <= camera[1]:
+        if dist <= camera[1] or args.edge not in label:
             continue
         ys = [y for y in range(height) if row_distance(camera, target, args.fov, height, y) >= dist]
         if not ys or max(ys) < BAND or max(ys) > height - BAND:
@@ -214,7 +224,7 @@ def main():
             print(line.replace("{off}", "  -  "))
             continue
         t = [window_figures(render(args, s, out / f"{tag}-{name}-truth{i}.png", camera, aim, window_fov,
-                                   (WINDOW_COLS, WINDOW_ROWS))) for i, s in enumerate(truths)]
+                                   (WINDOW_COLS, WINDOW_ROWS), reuse=args.reuse_truth)) for i, s in enumerate(truths)]
         spread_step, spread_kink = abs(t[1]["step"] - t[0]["step"]), abs(t[1]["kink"] - t[0]["kink"])
         err_step, err_kink = abs(d["step"] - t[0]["step"]), abs(d["kink"] - t[0]["kink"])
         print(line.replace("{off}", f"{d['mean'] - t[0]['mean']:+5.1f}") +

@@ -93,7 +93,9 @@ struct FieldData {
                            // w: feature mask (the same as GRASS_FEATURES)
     vec4 bands[8];         // the field's tiers: begin, end, transition in, transition out (metres)
     uvec4 tiers;           // x: this draw's tier, y: the field's tier count, z: 1 = overlay tier (hilltops:
-                           // draws every blade the density passes, takes no share of the transitions)
+                           // draws every blade the density passes, takes no share of the transitions),
+                           // w: the geometry tiers' bits (texel_transition; a blade draw's pass: its
+                           // first work item, blade_window.comp)
     vec4 transition;       // x: crossover window (threshold units; 0 = exact)
     vec4 mechanics;        // x: stiffness (m/s^2), y: mass, z: wind response, w: per-blade variation
     vec4 trample;          // x: trample depth, y: recovery time (s), z: 1 = the field reads the interaction map

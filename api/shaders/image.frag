@@ -51,6 +51,7 @@ ShellBend image_bend(out float back) {
 
 void main() {
     load_blocks();
+    note_pixel(v_position); // the dither's pixel, while derivatives are defined
 #ifdef GRASS_VELOCITY
     vec3 before = v_position; // where the grass seen here was at the previous frame's time
 #endif
@@ -100,9 +101,12 @@ void main() {
     float density = local_density(cell_point);
     // The threshold view partitions whole texels by their threshold; the picture draws the
     // share of each texel's blades the density and the tier select.
+    // Between two texel tiers the quad draws the grass whole and takes its part of the samples.
     bool exact = debug_thresholds();
-    float share = exact ? 1.0 : tier_texel_share(lod_distance(v_position), thresholds, density);
-    float opacity = exact ? tier_blade_opacity(lod_distance(v_position), threshold, density) : 1.0;
+    float d = lod_distance(v_position);
+    bool parts = !exact && texel_transition(d);
+    float share = exact ? 1.0 : tier_texel_share(d, thresholds, density, false, parts);
+    float opacity = exact ? tier_blade_opacity(d, threshold, density) : 1.0;
     // The horizontal slice holds the coverage of the grass seen from above. Seen at an
     // elevation theta the view crosses the blade layer 1 / sin(theta) times as long, so the
     // layer is more opaque (Beer-Lambert along the slanted path): 1 - (1 - a)^(1 / sin).
@@ -110,7 +114,7 @@ void main() {
     float sin_elevation = max(abs(dot(to_viewer, normalize(mat3(field.patch_to_world)[1]))), 0.05);
     float coverage = 1.0 - pow(max(1.0 - albedo.a * share, 0.0), 1.0 / sin_elevation);
     float alpha = coverage * opacity;
-    if (!write_coverage(alpha)) discard;
+    if (!write_coverage(alpha, parts ? tier_texel_part(d, false) : 1.0, (field.tiers.x & 1u) != 0u)) discard;
     if (depth_pass()) return; // the coverage's depth alone: no lighting, no colour
 
     // Layers 1 and 2 hold what a grazing ray sees (slice_baker.cpp, apply_grazing): the

@@ -77,9 +77,10 @@ float coverage_curve(vec4 t, float x) {
 // blades whose thresholds lie in the tier's interval of (0, density] (the texel-level twin
 // of tier_blade_opacity: a texel thins with the density, and two tiers sharing a transition
 // zone draw complementary shares, instead of all or nothing per texel).
-float tier_texel_share(float d, vec4 t, float density, bool field_edge) {
+// `whole`: the share of every tier (texel_transition: the tier takes its part of the samples).
+float tier_texel_share(float d, vec4 t, float density, bool field_edge, bool whole) {
     if (!(density > 0.0) || t.r <= 0.0) return 0.0;
-    if (field.tiers.z != 0u) return coverage_curve(t, density);
+    if (field.tiers.z != 0u || whole) return coverage_curve(t, density);
     vec2 interval = tier_interval(d, field_edge);
     if (interval.x > interval.y) return 0.0;
     float a = interval.x, b = interval.y;
@@ -88,5 +89,29 @@ float tier_texel_share(float d, vec4 t, float density, bool field_edge) {
     return max(coverage_curve(t, b * density) - below, 0.0);
 }
 float tier_texel_share(float d, vec4 t, float density) {
-    return tier_texel_share(d, t, density, false);
+    return tier_texel_share(d, t, density, false, false);
+}
+
+// Between two texel tiers (a transition zone where no geometry tier draws: field.tiers.w
+// holds the geometry tiers' bits, set by the core) each tier draws the grass whole and takes
+// its part of the pixel's samples, its weight there (sample_coverage.glsl, write_coverage):
+// the parts of the two tiers at one distance add up to 1. Drawn as a thinner grass of its own
+// (its share), each texel tier covered nearly every sample even for a small share, and the
+// depth test chose between them: the nearer tier's colour showed across the zone, an arc where
+// the zone began (issue 32, item 5). Beside the blades, which fade blade by blade, a tier
+// still draws its share, and so does an overlay tier (the threshold view, whole texels, does
+// not call this).
+bool texel_transition(float d) {
+    if (field.tiers.z != 0u) return false;
+    for (uint t = 0u; t < field.tiers.y; ++t) {
+        if ((field.tiers.w & (1u << t)) != 0u && band_weight(field.bands[t], d) > 0.0) return false;
+    }
+    return true;
+}
+
+// The part of the samples this draw's tier takes at distance d (texel_transition): the
+// length of its interval of thresholds, 0 where it draws nothing, 1 outside transition zones.
+float tier_texel_part(float d, bool field_edge) {
+    vec2 interval = tier_interval(d, field_edge);
+    return max(interval.y - interval.x, 0.0);
 }

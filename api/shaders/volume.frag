@@ -88,10 +88,13 @@ vec3 g_shift_at[5];
 // The tiers' rays together let through what the whole grass would, and a texel the whole
 // grass makes opaque stays opaque in each: drawn as alpha x share, a thinned ray saw past
 // the tips to darker grass (a darker line where the volume hands over to the image tier).
+// Between two texel tiers (g_parts, texel_transition) the ray gathers the grass whole and the
+// tier takes its part of the samples (main()).
+bool g_parts = false;
 float tier_texel_alpha(float d, vec4 t, float density, bool field_edge, float alpha) {
     if (!(density > 0.0) || t.r <= 0.0) return 0.0;
     float full = coverage_curve(t, density);
-    if (field.tiers.z != 0u) return alpha * full;
+    if (field.tiers.z != 0u || g_parts) return alpha * full;
     vec2 interval = tier_interval(d, field_edge);
     if (interval.x > interval.y) return 0.0;
     if (interval.x <= 0.0 && interval.y >= 1.0) return alpha * full; // the whole tier: no share
@@ -311,6 +314,7 @@ float in_front_of_plane(float depth) {
 
 void main() {
     load_blocks();
+    note_pixel(mat3(field.patch_to_world) * (v_local - v_camera_local)); // the dither's pixel
     vec3 size = vec3(float(v_cell.z), field.blade_params.w, float(v_cell.w));
     // The carrier: the slices' height over a flat field; on a height map from the lowest
     // terrain under the instance to the slices' height above the highest (eq. 6.14).
@@ -414,6 +418,7 @@ void main() {
     g_eye = eye;
     g_descent_lod = log2(max(abs(dir.y) / (n * (g_abs_dir.x + g_abs_dir.y)) * texels.y / size.y, 1.0));
     g_depth_at[0] = v_local;
+    g_parts = !debug_thresholds() && texel_transition(lod_distance(g_to_world * start + g_origin));
     // The ray goes on past this carrier into the neighbouring cells (the same patch, mirrored
     // by their own cells' bits) until it leaves the blade layer: a ray that crosses several
     // carriers is then composited whole by the nearest of them, and no seam shows where each
@@ -514,7 +519,19 @@ void main() {
             composite_flat_ground(t_ground);
         }
     }
-    if (!write_coverage(g_alpha)) discard;
+    // Between two texel tiers: the part of the samples at the point the depth is written at
+    // (below). A field-edge instance stands in for the tiers after its own: their end of the
+    // samples.
+    int level = 0; // the last level at or below half the ray's alpha (1/2 for an opaque ray)
+    for (int i = 1; i < g_depth_reached; ++i) {
+        if (0.03125 * float(1 << i) <= (g_alpha >= 0.5 ? 0.5 : 0.5 * g_alpha)) level = i;
+    }
+    vec3 depth_point = g_to_world * g_depth_at[level] + g_origin;
+    bool from_last = ((field.tiers.x & 1u) != 0u) != (g_parts && v_field_edge > 0.5);
+    if (!write_coverage(g_alpha, g_parts ? tier_texel_part(lod_distance(depth_point), v_field_edge > 0.5) : 1.0,
+                        from_last)) {
+        discard;
+    }
 #ifdef GRASS_GBUFFER
     vec3 facing = dot(g_normal, g_normal) > 1e-12 ? normalize(g_normal) : normalize(g_to_world * -g_dir);
     write_gbuffer(g_albedo / g_alpha, facing, g_ao / g_alpha);
@@ -524,14 +541,9 @@ void main() {
                                        : output_color(vec4(debug_tint(g_color / g_alpha), g_alpha));
     }
 #endif
-    // The last level at or below half the ray's alpha (1/2 for an opaque ray).
-    int level = 0;
-    for (int i = 1; i < g_depth_reached; ++i) {
-        if (0.03125 * float(1 << i) <= (g_alpha >= 0.5 ? 0.5 : 0.5 * g_alpha)) level = i;
-    }
-    float depth = in_front_of_plane(window_depth(g_to_world * g_depth_at[level] + g_origin));
+    float depth = in_front_of_plane(window_depth(depth_point));
 #ifdef GRASS_VELOCITY
-    vec3 now = g_to_world * g_depth_at[level] + g_origin;
+    vec3 now = depth_point;
     write_velocity(clip_velocity(clip_now(now), clip_before(now - g_shift_at[level])));
 #endif
     // The depth pass's bias (glPolygonOffset, Vulkan's depth bias) moves the rasterised depth,

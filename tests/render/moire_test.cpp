@@ -8,6 +8,7 @@
 // image, minus the mean of the two rows either side of it; its RMS over the rows. The
 // blades everywhere have some (their grain), with two patch and mirror seeds.
 #include "render_fixture.hpp"
+#include "row_green.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,26 +26,6 @@ const double kEye[3] = {25.0, 20.0, -10.0}, kAt[3] = {25.0, 0.0, 16.8};
 
 class MoireTest : public RenderTest {
 protected:
-    // A patch like the football field's turf (dense, short and thin blades: the slices are
-    // nearly opaque, so no clear colour shows), with fewer blades so that the blades
-    // everywhere render in seconds.
-    grass_patch_id turf(uint64_t seed) {
-        grass_patch_desc pd = grass_default_patch_desc();
-        pd.blade_count = 1200;
-        pd.subdivisions = 3;
-        pd.length_min = 0.35f;
-        pd.length_max = 0.6f;
-        pd.width_min = 0.02f;
-        pd.width_max = 0.03f;
-        pd.tilt_min = 0.05f;
-        pd.tilt_max = 0.45f;
-        pd.threshold_mode = GRASS_THRESHOLD_UNIFORM;
-        pd.seed = seed;
-        grass_patch_id id{};
-        EXPECT_EQ(grass_create_patch(ctx, &pd, &id), GRASS_SUCCESS) << log;
-        return id;
-    }
-
     // One frame: blades everywhere (slices 0) or one volume tier of `slices` slices
     // everywhere, in macro-cells of up to 16 cells; 4 samples over a pure blue clear colour.
     static grass_host::TargetDesc target() {
@@ -60,7 +41,7 @@ protected:
         start(target());
         grass_field_desc d = slices == 0 ? field_desc(kCells) : solo_tier_field(kCells, GRASS_TIER_VOLUME, slices, 16);
         if (slices == 0) blade_band.end = INFINITY;
-        d.patch = turf(seed);
+        d.patch = create_turf_patch(ctx, seed, &log);
         d.mirror_seed = mirror_seed;
         const grass_field_id f = make_field(d);
         const grass_host::Image image = render(view(kEye, kAt, kFov));
@@ -72,11 +53,7 @@ protected:
 
 // RMS of each row's mean green level minus the mean of its four neighbours (two either side).
 double row_to_row(const grass_host::Image& image) {
-    std::vector<double> mean(image.height, 0.0);
-    for (uint32_t y = 0; y < image.height; ++y) {
-        for (uint32_t x = image.width / 4; x < 3 * image.width / 4; ++x) mean[y] += image.pixel(x, y)[1];
-        mean[y] /= image.width / 2;
-    }
+    const std::vector<double> mean = middle_row_green(image);
     double sum = 0.0;
     uint32_t rows = 0;
     for (uint32_t y = 2; y + 2 < image.height; ++y) {

@@ -332,4 +332,21 @@ bool project_point(const double eye[3], const double target[3], float fovy_degre
     return true;
 }
 
+grass_patch_id create_turf_patch(grass_context* ctx, uint64_t seed, std::string* log) {
+    grass_patch_desc pd = grass_default_patch_desc();
+    pd.blade_count = 1200;
+    pd.subdivisions = 3;
+    pd.length_min = 0.35f;
+    pd.length_max = 0.6f;
+    pd.width_min = 0.02f;
+    pd.width_max = 0.03f;
+    pd.tilt_min = 0.05f;
+    pd.tilt_max = 0.45f;
+    pd.threshold_mode = GRASS_THRESHOLD_UNIFORM;
+    pd.seed = seed;
+    grass_patch_id id{};
+    EXPECT_EQ(grass_create_patch(ctx, &pd, &id), GRASS_SUCCESS) << *log;
+    return id;
+}
+
 } // namespace grass_test

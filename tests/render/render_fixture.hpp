@@ -110,6 +110,10 @@ double share_apart(const grass_host::Image& a, const grass_host::Image& b, int l
 void look_at_basis(const double eye[3], const double target[3], double f[3], double r[3], double u[3]);
 bool project_point(const double eye[3], const double target[3], float fovy_degrees, uint32_t width, uint32_t height,
                    const double point[3], double* out_x, double* out_y);
+// A patch like the football field's turf (dense, short and thin blades: the slices are nearly
+// opaque, so no clear colour shows), with 1200 blades a cell so that the blades everywhere
+// render in seconds (MoireTest, TierBoundaryTest). Failures go to `log`'s test expectations.
+grass_patch_id create_turf_patch(grass_context* ctx, uint64_t seed, std::string* log);
 // Share of pixels in [x0, x1) x [y0, y1) that are grass.
 double grass_share(const grass_host::Image& image, const uint8_t sky[3], uint32_t x0, uint32_t y0, uint32_t x1,
                    uint32_t y1);

@@ -117,7 +117,8 @@ struct FieldUniforms {
                               // w = the draw's feature mask (maps bound, bit = 1 << MapRole)
     float bands[8][4];        // the field's tiers (GRASS_MAX_TIERS): begin, end, transition in, transition out (m)
     uint32_t tiers[4];        // x = this draw's tier, y = the field's tier count, z = 1 for an overlay tier
-                              // (a hilltop tier: draws every blade the density passes, takes no share)
+                              // (a hilltop tier: draws every blade the density passes, takes no share),
+                              // w = the geometry tiers' bits (texel tiers between them take parts of samples)
     float transition[4];      // x = crossover window (threshold units; 0 = exact partition)
     // Responsive grass: the draw's patch's grass_blade_mechanics and the field's up.
     float mechanics[4]; // x = stiffness (m/s^2), y = mass, z = wind response (m/s^2 per m/s), w = variation

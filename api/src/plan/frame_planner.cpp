@@ -513,7 +513,12 @@ private:
         u->tiers[0] = tier;
         u->tiers[1] = field_.lod.tier_count;
         u->tiers[2] = (field_.lod.overlay_tiers >> tier) & 1u;
+        // The geometry tiers' bits (tier_transitions.glsl, texel_transition); on a blade draw the
+        // blade window's pass puts its first work item there instead (blade_window.hpp).
         u->tiers[3] = 0u;
+        for (uint32_t t = 0; t < field_.lod.tier_count; ++t) {
+            if (field_.lod.tiers[t].kind == GRASS_TIER_GEOMETRY) u->tiers[3] |= 1u << t;
+        }
         u->transition[0] = d.transition_window;
         u->transition[1] = u->transition[2] = u->transition[3] = 0.0f;
         const grass_blade_mechanics& mech = patch_.mechanics;
