@@ -232,7 +232,7 @@ grass_result GlBackend::program(GlProgramKind kind, uint32_t features, const cha
         cached = program_cache_.load(gl_, function, kind, features);
         if (cached != 0) set_sampler_units(gl_, cached);
         if (cached == 0) {
-            const grass_result result = create_program(ctx_, gl_, function, kind, features, &cached);
+            const grass_result result = create_program(ctx_, gl_, function, kind, features, draw_parameters_, &cached);
             if (result != GRASS_SUCCESS) return result;
         }
         static const char* const kNames[kProgramKindCount] = {"grass blades program", "grass volume program",

@@ -187,9 +187,9 @@ private:
     GLint uniform_alignment_ = 256;
     GLint max_texture_size_ = 0;
     GLint max_array_layers_ = 0;
-    bool draw_parameters_ = false; // GL_ARB_shader_draw_parameters (compacts_blade_window)
+    bool draw_parameters_ = false;              // GL_ARB_shader_draw_parameters (compacts_blade_window)
     bool has_extension(const char* name) const; // in GL_EXTENSIONS (glGetStringi)
-    bool debug_context_ = false; // GL_CONTEXT_FLAG_DEBUG_BIT: glGetError after every render
+    bool debug_context_ = false;                // GL_CONTEXT_FLAG_DEBUG_BIT: glGetError after every render
     // Debug labels and object names (grass.h, grass_debug_labels), decided at creation: ON,
     // or AUTO in a debug context.
     bool labels_ = false;

@@ -11,7 +11,7 @@
     /* queries and global state */                                                   \
     X(PFNGLGETERRORPROC, GetError)                                                   \
     X(PFNGLGETSTRINGPROC, GetString)                                                 \
-    X(PFNGLGETSTRINGIPROC, GetStringi)                                                \
+    X(PFNGLGETSTRINGIPROC, GetStringi)                                               \
     X(PFNGLGETINTEGERVPROC, GetIntegerv)                                             \
     X(PFNGLGETINTEGERI_VPROC, GetIntegeri_v)                                         \
     X(PFNGLGETINTEGER64I_VPROC, GetInteger64i_v)                                     \

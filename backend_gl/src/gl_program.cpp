@@ -59,7 +59,8 @@ Vector<char> info_log(grass_context* ctx, GLuint object, GetIv get_iv, GetLog ge
 // Compiles `source` with the feature mask defined right after its #version line (which
 // must come first, so the define cannot precede it).
 grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* function, GLenum stage,
-                     const char* stage_name, const char* source, uint32_t features, GLuint* out_shader) {
+                     const char* stage_name, const char* source, uint32_t features, GLuint* out_shader,
+                     bool compact = true) {
     const char* newline = std::strchr(source, '\n');
     if (std::strncmp(source, "#version", 8) != 0 || newline == nullptr) {
         return ctx->fail(GRASS_ERROR_BACKEND, GRASS_MSG_BACKEND_CALL_FAILED,
@@ -68,15 +69,17 @@ grass_result compile(grass_context* ctx, const GlFunctions& gl, const char* func
     char define[320];
     const bool responsive = (features & kBladeCurveFeatures) != 0;
     // The blade window's variant (kFeatureBladeWindow): the poses read from the window only,
-    // one instance per blade the view draws (GL compacts every window draw: GRASS_BLADE_COMPACT).
+    // one instance per blade the view draws where the backend compacts (`compact`: a driver
+    // with GL_ARB_shader_draw_parameters, GlBackend::compacts_blade_window): GRASS_BLADE_COMPACT.
     const bool window = responsive && (features & kFeatureBladeWindow) != 0;
     const bool shadows = (features & kFeatureShadowReceive) != 0;
     const bool motion = (features & kFeatureMotion) != 0;
     const bool lights = (features & kFeatureHostLights) != 0;
     const bool gbuffer = (features & kFeatureGBuffer) != 0;
     std::snprintf(define, sizeof define, "#define GRASS_FEATURES %uu\n%s%s%s%s%s", features,
-                  responsive ? (window ? "#define GRASS_RESPONSIVE 1\n#define GRASS_BLADE_WINDOW 1\n"
-                                         "#define GRASS_BLADE_COMPACT 1\n"
+                  responsive ? (window ? (compact ? "#define GRASS_RESPONSIVE 1\n#define GRASS_BLADE_WINDOW 1\n"
+                                                    "#define GRASS_BLADE_COMPACT 1\n"
+                                                  : "#define GRASS_RESPONSIVE 1\n#define GRASS_BLADE_WINDOW 1\n")
                                        : "#define GRASS_RESPONSIVE 1\n")
                              : "",
                   shadows ? "#define GRASS_HOST_SHADOWS 1\n" : "", motion ? "#define GRASS_VELOCITY 1\n" : "",
@@ -203,13 +206,14 @@ grass_result create_blade_compaction_program(grass_context* ctx, const GlFunctio
 }
 
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
-                            uint32_t features, GLuint* out_program) {
+                            uint32_t features, bool compact, GLuint* out_program) {
     const ProgramSource source = program_source(kind);
     GLuint shaders[2] = {0, 0};
     grass_result result =
-        compile(ctx, gl, function, GL_VERTEX_SHADER, source.vert_name, source.vert, features, &shaders[0]);
+        compile(ctx, gl, function, GL_VERTEX_SHADER, source.vert_name, source.vert, features, &shaders[0], compact);
     if (result != GRASS_SUCCESS) return result;
-    result = compile(ctx, gl, function, GL_FRAGMENT_SHADER, source.frag_name, source.frag, features, &shaders[1]);
+    result =
+        compile(ctx, gl, function, GL_FRAGMENT_SHADER, source.frag_name, source.frag, features, &shaders[1], compact);
     if (result != GRASS_SUCCESS) {
         gl.DeleteShader(shaders[0]);
         return result;

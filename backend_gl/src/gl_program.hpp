@@ -89,12 +89,13 @@ constexpr GLuint kInteractionImageUnit = 0;
 // kFeatureVariants): the shaders get `#define GRASS_FEATURES <features>u` after their
 // #version line (and `#define GRASS_RESPONSIVE 1` when the mask has one of
 // kBladeCurveFeatures, with `#define GRASS_BLADE_WINDOW 1` when it also has
-// kFeatureBladeWindow, `#define GRASS_HOST_SHADOWS 1` when it has kFeatureShadowReceive,
+// kFeatureBladeWindow, and `#define GRASS_BLADE_COMPACT 1` with it where `compact`: the
+// compacted window variant), `#define GRASS_HOST_SHADOWS 1` when it has kFeatureShadowReceive,
 // `#define GRASS_VELOCITY 1` when it has kFeatureMotion, `#define GRASS_HOST_LIGHTS 1` when
 // it has kFeatureHostLights). On failure the driver's log is in the context's error message
 // (named after `function`) and nothing is left behind.
 grass_result create_program(grass_context* ctx, const GlFunctions& gl, const char* function, GlProgramKind kind,
-                            uint32_t features, GLuint* out_program);
+                            uint32_t features, bool compact, GLuint* out_program);
 
 // Points the sampler uniforms of `program` at their texture units (after linking, and after
 // glProgramBinary, which resets every uniform).

@@ -527,7 +527,8 @@ TEST_P(GlStateTest, ResponsiveRenderRestoresItsExtraState) {
     }
     active(GL_TEXTURE2);
     struct Extra {
-        GLint storage[8], generic, uniform2, uniform2_start, uniform2_size, image, image_access, image_format, unit_texture[2], unit_sampler[2], active;
+        GLint storage[8], generic, uniform2, uniform2_start, uniform2_size, image, image_access, image_format,
+            unit_texture[2], unit_sampler[2], active;
     };
     const auto extra = [&] {
         Extra e{};

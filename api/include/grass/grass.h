@@ -214,16 +214,16 @@ typedef enum grass_struct_type {
     GRASS_STRUCT_TYPE_INTERACTION_DESC = 0x6772000A,
     GRASS_STRUCT_TYPE_WIND_MAP_DESC = 0x6772000B,
     GRASS_STRUCT_TYPE_BLADE_CULLING_DESC = 0x6772000C,
-    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,          /* 0.5 */
-    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E,      /* 0.5 */
-    GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,       /* 0.5: stereo */
-    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,        /* 0.5 */
-    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,             /* 0.5: frames and views */
-    GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012,         /* 0.5: depth-only passes (shadows) */
-    GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC = 0x67720013,    /* 0.5: the host's shadow maps, received */
-    GRASS_STRUCT_TYPE_VIEW_MOTION_DESC = 0x67720014,       /* 0.5: motion vectors */
-    GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC = 0x67720015,       /* 0.5: the host's lights */
-    GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC = 0x67720016,      /* 0.5: G-buffer passes (deferred hosts) */
+    GRASS_STRUCT_TYPE_PIPELINE_DESC = 0x6772000D,           /* 0.5 */
+    GRASS_STRUCT_TYPE_DEBUG_LABELS_DESC = 0x6772000E,       /* 0.5 */
+    GRASS_STRUCT_TYPE_STEREO_VIEW_DESC = 0x6772000F,        /* 0.5: stereo */
+    GRASS_STRUCT_TYPE_LOD_ORIGIN_DESC = 0x67720010,         /* 0.5 */
+    GRASS_STRUCT_TYPE_FRAME_DESC = 0x67720011,              /* 0.5: frames and views */
+    GRASS_STRUCT_TYPE_VIEW_PASS_DESC = 0x67720012,          /* 0.5: depth-only passes (shadows) */
+    GRASS_STRUCT_TYPE_SHADOW_RECEIVE_DESC = 0x67720013,     /* 0.5: the host's shadow maps, received */
+    GRASS_STRUCT_TYPE_VIEW_MOTION_DESC = 0x67720014,        /* 0.5: motion vectors */
+    GRASS_STRUCT_TYPE_VIEW_LIGHTS_DESC = 0x67720015,        /* 0.5: the host's lights */
+    GRASS_STRUCT_TYPE_VIEW_GBUFFER_DESC = 0x67720016,       /* 0.5: G-buffer passes (deferred hosts) */
     GRASS_STRUCT_TYPE_BLADE_TESSELLATION_DESC = 0x67720017, /* 0.5: dynamic tessellation of the blades */
     GRASS_STRUCT_TYPE_MESH_FIELD_DESC = 0x67720018          /* 0.5: grass on a host's triangle mesh */
 } grass_struct_type;
