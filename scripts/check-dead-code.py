@@ -30,10 +30,8 @@ ALLOWED = {
     "grass::alpha_coverage": "the slice-mip test's measure of alpha coverage (slice_baking_test)",
     "grass::build_box_mips": "the plain box filter the slice-mip test compares the coverage-keeping mips with",
     "grass::rasterize_slice_layer": "one slice layer on its own, for the slice-mip test (slice_baking_test)",
-    "grass::build_mesh_surface": "a host's mesh validated (issue 36): the mesh field's C API is still to come; "
-                                 "mesh_scatter_test calls it",
-    "grass::scatter_mesh_blades": "blades on a host's mesh (issue 36): the mesh field's C API is still to come; "
-                                  "mesh_scatter_test calls it",
+    "grass::write_mesh_blades": "a mesh field's blades in their GPU layout (issue 36): the backends' mesh draw "
+                                "is still to come; mesh_field_test checks the layout",
     "grass::mirror_bits": "CPU reference of the shaders' mirrored tiling, checked by frame_plan_test",
     "grass::run_interaction_pass": "CPU reference of the interaction compute pass (interaction_pass_test, "
                                    "fuzz_responsive)",

@@ -245,6 +245,11 @@ private:
     // slots' state across the growth.
     grass_result run_blade_window_pass(const FramePlan& plan, const char* function);
     grass_result blade_window_program(const char* function, uint32_t features, GLuint* out_program);
+    // A compute pass's program of `mask` in `*slot`: from the seeded binaries (kind `kind`) or
+    // made by `make`, labelled `name` (gl_prepare.cpp).
+    using ComputeProgramMaker = grass_result (*)(grass_context*, const GlFunctions&, const char*, uint32_t, GLuint*);
+    grass_result compute_program(const char* function, uint32_t kind, uint32_t mask, ComputeProgramMaker make,
+                                 const char* name, GLuint* slot);
     void bind_blade_window() const; // for the responsive geometry draws: table and poses
     uint64_t blade_window_bytes() const;
     void release_blade_window_buffers(); // a frame without a window: still grass holds none

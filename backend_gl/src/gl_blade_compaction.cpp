@@ -33,14 +33,12 @@ size_t align_up(size_t value, size_t alignment) { return (value + alignment - 1)
 
 grass_result GlBackend::blade_compaction_program(const char* function, uint32_t features, GLuint* out_program) {
     const uint32_t mask = features & (kBladeWindowPassFeatures | kFeatureBladeCulling);
-    if (compaction_programs_[mask] == 0) {
-        const grass_result result =
-            create_blade_compaction_program(ctx_, gl_, function, mask, &compaction_programs_[mask]);
-        if (result != GRASS_SUCCESS) return result;
-        label(GL_PROGRAM, compaction_programs_[mask], "grass blade compaction program");
-    }
-    *out_program = compaction_programs_[mask];
-    return GRASS_SUCCESS;
+    *out_program = 0;
+    const grass_result result =
+        compute_program(function, kBladeCompactionProgramKind, mask, &create_blade_compaction_program,
+                        "grass blade compaction program", &compaction_programs_[mask]);
+    if (result == GRASS_SUCCESS) *out_program = compaction_programs_[mask];
+    return result;
 }
 
 bool GlBackend::compacts(const FramePlan& plan, const TierDraw& draw) const {

@@ -31,18 +31,11 @@ constexpr GLuint kWindowLevelUniformBinding = 2;
 
 grass_result GlBackend::blade_window_program(const char* function, uint32_t features, GLuint* out_program) {
     const uint32_t mask = features & kBladeWindowPassFeatures;
-    if (window_programs_[mask] == 0) {
-        // From the seeded program binaries (grass_pipeline_desc.cache_data) where they hold it.
-        GLuint program = program_cache_.load(gl_, function, kBladeWindowProgramKind, mask);
-        if (program == 0) {
-            const grass_result result = create_blade_window_program(ctx_, gl_, function, mask, &program);
-            if (result != GRASS_SUCCESS) return result;
-        }
-        label(GL_PROGRAM, program, "grass blade window program");
-        window_programs_[mask] = program;
-    }
-    *out_program = window_programs_[mask];
-    return GRASS_SUCCESS;
+    *out_program = 0;
+    const grass_result result = compute_program(function, kBladeWindowProgramKind, mask, &create_blade_window_program,
+                                                "grass blade window program", &window_programs_[mask]);
+    if (result == GRASS_SUCCESS) *out_program = window_programs_[mask];
+    return result;
 }
 
 grass_result GlBackend::run_blade_window_pass(const FramePlan& plan, const char* function) {

@@ -1,7 +1,8 @@
 // grass_prepare_pipelines on GL: compiles (or loads from the seeded program binaries) every
-// program variant the core asks for, the interaction pass's and blade window pass's programs; the program
-// binaries' blob (gl_program_cache.hpp).
+// program variant the core asks for and the compute programs of the interaction, blade
+// window and compaction passes; the program binaries' blob (gl_program_cache.hpp).
 #include "gl_backend.hpp"
+#include "gl_program.hpp"
 
 namespace grass {
 
@@ -26,7 +27,7 @@ grass_result GlBackend::prepare_variants(const char* function, const ShaderVaria
         // and compacted by the compaction pass of its maps and bits (gl_blade_compaction.cpp).
         if (result == GRASS_SUCCESS && (variants[i].features & kFeatureBladeWindow) != 0)
             result = blade_window_program(function, variants[i].features, &unused);
-        if (result == GRASS_SUCCESS && (variants[i].features & kFeatureBladeWindow) != 0)
+        if (result == GRASS_SUCCESS && draw_parameters_ && (variants[i].features & kFeatureBladeWindow) != 0)
             result = blade_compaction_program(function, variants[i].features, &unused);
         if (result != GRASS_SUCCESS) return result;
     }
@@ -34,6 +35,22 @@ grass_result GlBackend::prepare_variants(const char* function, const ShaderVaria
         const grass_result result = make_interaction_program(function);
         if (result != GRASS_SUCCESS) return result;
     }
+    return GRASS_SUCCESS;
+}
+
+grass_result GlBackend::compute_program(const char* function, uint32_t kind, uint32_t mask, ComputeProgramMaker make,
+                                        const char* name, GLuint* slot) {
+    if (*slot != 0) return GRASS_SUCCESS;
+    // From the seeded program binaries (grass_pipeline_desc.cache_data) where they hold it.
+    GLuint program = program_cache_.load(gl_, function, kind, mask);
+    if (program != 0) {
+        set_sampler_units(gl_, program); // glProgramBinary resets every uniform
+    } else {
+        const grass_result result = make(ctx_, gl_, function, mask, &program);
+        if (result != GRASS_SUCCESS) return result;
+    }
+    label(GL_PROGRAM, program, name);
+    *slot = program;
     return GRASS_SUCCESS;
 }
 
@@ -53,6 +70,10 @@ grass_result GlBackend::pipeline_cache_data(const char* function, void* data, ui
     if (interaction_program_ != 0) records.push_back({kInteractionProgramKind, 0, interaction_program_});
     for (uint32_t mask = 0; mask <= kBladeWindowPassFeatures; ++mask)
         if (window_programs_[mask] != 0) records.push_back({kBladeWindowProgramKind, mask, window_programs_[mask]});
+    for (uint32_t mask = 0; mask <= (kBladeWindowPassFeatures | kFeatureBladeCulling); ++mask) {
+        const GLuint program = compaction_programs_[mask];
+        if (program != 0) records.push_back({kBladeCompactionProgramKind, mask, program});
+    }
     return program_cache_.save(gl_, function, records.data(), static_cast<uint32_t>(records.size()), data, size);
 }
 

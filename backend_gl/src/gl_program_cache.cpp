@@ -56,7 +56,7 @@ void GlProgramCache::seed(const char* function, const void* data, uint64_t size)
         Entry e{read_u32(p + at), read_u32(p + at + 4), read_u32(p + at + 8), read_u32(p + at + 12),
                 at + kEntryHeaderBytes};
         const uint64_t padded = (uint64_t(e.length) + 3) & ~uint64_t(3);
-        ok = e.kind <= kBladeWindowProgramKind && e.features < kFeatureMaskCount && e.length > 0 &&
+        ok = e.kind <= kBladeCompactionProgramKind && e.features < kFeatureMaskCount && e.length > 0 &&
              padded <= bytes - e.offset;
         if (ok) entries.push_back(e);
         at = e.offset + padded;

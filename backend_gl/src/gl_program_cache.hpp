@@ -19,9 +19,11 @@ namespace grass {
 constexpr uint32_t kInteractionProgramKind = 4;
 // The kind of a blade window pass's program (one per mask of kBladeWindowPassFeatures).
 constexpr uint32_t kBladeWindowProgramKind = 5;
+// The kind of a blade compaction pass's program (one per mask, gl_blade_compaction.cpp).
+constexpr uint32_t kBladeCompactionProgramKind = 6;
 
-// A program to save: its kind (GlProgramKind, kInteractionProgramKind or kBladeWindowProgramKind), mask
-// and name.
+// A program to save: its kind (GlProgramKind, kInteractionProgramKind, kBladeWindowProgramKind or
+// kBladeCompactionProgramKind), mask and name.
 struct GlProgramRecord {
     uint32_t kind;
     uint32_t features;

@@ -514,10 +514,15 @@ private:
         u->tiers[1] = field_.lod.tier_count;
         u->tiers[2] = (field_.lod.overlay_tiers >> tier) & 1u;
         // The geometry tiers' bits (tier_transitions.glsl, texel_transition); on a blade draw the
-        // blade window's pass puts its first work item there instead (blade_window.hpp).
+        // blade window's pass puts its first work item there instead (blade_window.hpp). An
+        // orthographic view marks every tier: its texel tiers keep the thinned shares of each
+        // (docs/three-tiers.md "Transitions"), since their parts of the samples, measured at
+        // points that differ along its axis, left 1% of an oblique view's pixels uncovered
+        // (OrthographicTest.EveryTierCoversTheFieldWithTheBladesColours).
         u->tiers[3] = 0u;
         for (uint32_t t = 0; t < field_.lod.tier_count; ++t) {
-            if (field_.lod.tiers[t].kind == GRASS_TIER_GEOMETRY) u->tiers[3] |= 1u << t;
+            const bool geometry = field_.lod.tiers[t].kind == GRASS_TIER_GEOMETRY;
+            if (geometry || culling_.culling[0]->orthographic()) u->tiers[3] |= 1u << t;
         }
         u->transition[0] = d.transition_window;
         u->transition[1] = u->transition[2] = u->transition[3] = 0.0f;
